@@ -1,0 +1,72 @@
+"""Diagnostics that point at a place in an ``.osc`` file.
+
+Every problem a user can cause (bad syntax, an unknown name, a unit of the wrong kind, an
+impossible scenario) is reported as ``path:line:col: error: message`` with the offending line and
+a caret, never as a traceback, so that it reads like a compiler message and editors can jump to it.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+
+
+@dataclass(frozen=True)
+class SourceLocation:
+    """A position in a source file; line and column are 1-based, as editors count."""
+
+    path: str
+    line: int
+    column: int
+
+    def __str__(self) -> str:
+        return f"{self.path}:{self.line}:{self.column}"
+
+
+@dataclass(frozen=True)
+class Diagnostic:
+    location: SourceLocation
+    message: str
+    hint: str | None = None
+    severity: str = "error"
+
+    def format(self, source_text: str | None = None) -> str:
+        lines = [f"{self.location}: {self.severity}: {self.message}"]
+        text = source_text if source_text is not None else _read_quietly(self.location.path)
+        if text is not None:
+            source_lines = text.splitlines()
+            if 1 <= self.location.line <= len(source_lines):
+                line = source_lines[self.location.line - 1].replace("\t", " ")
+                lines.append(f"    {line}")
+                lines.append("    " + " " * max(0, self.location.column - 1) + "^")
+        if self.hint:
+            lines.append(f"    hint: {self.hint}")
+        return "\n".join(lines)
+
+
+def _read_quietly(path: str) -> str | None:
+    try:
+        return Path(path).read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError):
+        return None
+
+
+@dataclass
+class OscError(Exception):
+    """One or more errors in a scenario file; ``str()`` gives the formatted report."""
+
+    diagnostics: list[Diagnostic] = field(default_factory=list)
+    source_text: str | None = None
+
+    def __post_init__(self) -> None:
+        super().__init__(self.report())
+
+    def report(self) -> str:
+        return "\n".join(d.format(self.source_text) for d in self.diagnostics)
+
+    def __str__(self) -> str:
+        return self.report()
+
+
+def error_at(location: SourceLocation, message: str, hint: str | None = None) -> OscError:
+    return OscError([Diagnostic(location, message, hint)])
