@@ -1,0 +1,10 @@
+"""Stage 2: the symbolic automaton of a scenario (``build_automaton``) and its guard algebra."""
+
+from .construction import DEFAULT_LANES, build_automaton
+from .guards import LANE, POSITION, SPEED, TRUE, And, Bound, Guard, Not, Or, Term, conjunction
+from .model import Location, SymbolicAutomaton, Transition
+
+__all__ = [
+    "DEFAULT_LANES", "LANE", "POSITION", "SPEED", "TRUE", "And", "Bound", "Guard", "Location", "Not", "Or",
+    "SymbolicAutomaton", "Term", "Transition", "build_automaton", "conjunction",
+]

@@ -1,0 +1,211 @@
+"""Translating a scenario's behavior into a ``SymbolicAutomaton`` (the paper, section 3.2).
+
+- atomic ``drive`` with start guard g1 and end guard g2:  i --g1--> s --g2--> f
+- serial A . B: A's final and B's initial location are one instant, so every transition into
+  f_A is fused with every transition out of i_B into one transition guarded by both (the end of A
+  and the start of B happen at the same split point, as the semantics demands).
+- parallel A || B: the product, built only over reachable locations. All components leave their
+  initial locations together and reach their final locations together (``parallel`` without
+  ``overlap:`` starts and ends its members together); in between they move alone or jointly.
+- one_of A | B: the union, with a fresh initial and final location.
+Locations that cannot reach the final location are pruned.
+"""
+
+from __future__ import annotations
+
+import itertools
+from dataclasses import dataclass, field
+from typing import Hashable
+
+from ..frontend import model
+from ..frontend.errors import error_at
+from .guards import Guard, conjunction
+from .model import Location, SymbolicAutomaton, Transition
+from .modifiers import check_behavior_arguments, phase_guards
+
+DEFAULT_LANES = 3
+
+Key = Hashable
+
+
+@dataclass
+class _Edge:
+    source: Key
+    guard: Guard
+    events: tuple[str, ...]
+    target: Key
+
+
+@dataclass
+class _Fragment:
+    """An automaton under construction, with hashable location keys."""
+
+    initial: Key
+    final: Key
+    edges: list[_Edge]
+    names: dict[Key, tuple[str, bool]] = field(default_factory=dict)  # key -> (name, labelled)
+    drivers: dict[Key, frozenset[str]] = field(default_factory=dict)
+
+    def outgoing(self, key: Key) -> list[_Edge]:
+        return [e for e in self.edges if e.source == key]
+
+
+def build_automaton(scenario: model.Scenario, lanes: int = DEFAULT_LANES) -> SymbolicAutomaton:
+    """The automaton of ``scenario`` on a road with ``lanes`` lanes (needed for absolute lanes)."""
+    if scenario.behavior is None:
+        raise error_at(scenario.location, f"scenario {scenario.name!r} has no `do` behavior", hint="add do: with what the actors must do")
+    counter = itertools.count()
+    fragment = _translate(scenario.behavior, scenario, lanes, counter)
+    return _finish(fragment, tuple(a.name for a in scenario.actors))
+
+
+def _translate(behavior: model.Behavior, scenario: model.Scenario, lanes: int, counter) -> _Fragment:
+    if isinstance(behavior, model.Invocation):
+        return _atomic(behavior, scenario, lanes, counter)
+    check_behavior_arguments(behavior)
+    children = [_translate(child, scenario, lanes, counter) for child in behavior.children]
+    if not children:
+        raise error_at(behavior.location, f"{behavior.operator} has no members")
+    if behavior.operator == "serial":
+        result = children[0]
+        for child in children[1:]:
+            result = _serial(result, child)
+        return result
+    if behavior.operator == "parallel":
+        return _parallel(children) if len(children) > 1 else children[0]
+    return _one_of(children, next(counter))
+
+
+def _atomic(invocation: model.Invocation, scenario: model.Scenario, lanes: int, counter) -> _Fragment:
+    start, end = phase_guards(invocation, scenario, lanes)
+    uid = next(counter)
+    i, s, f = ("i", uid), ("s", uid), ("f", uid)
+    labelled = invocation.label is not None
+    name = invocation.label if labelled else f"{invocation.actor}.{invocation.action}"
+    return _Fragment(
+        initial=i,
+        final=f,
+        edges=[_Edge(i, start, (f"{name} start",), s), _Edge(s, end, (f"{name} end",), f)],
+        names={s: (name, labelled)},
+        drivers={s: frozenset([invocation.actor])},
+    )
+
+
+def _serial(first: _Fragment, second: _Fragment) -> _Fragment:
+    edges = [e for e in first.edges if e.target != first.final]
+    edges += [e for e in second.edges if e.source != second.initial]
+    for into in (e for e in first.edges if e.target == first.final):
+        for out in second.outgoing(second.initial):
+            edges.append(_Edge(into.source, conjunction([into.guard, out.guard]), into.events + out.events, out.target))
+    return _Fragment(
+        initial=first.initial,
+        final=second.final,
+        edges=edges,
+        names={**first.names, **second.names},
+        drivers={**first.drivers, **second.drivers},
+    )
+
+
+def _parallel(children: list[_Fragment]) -> _Fragment:
+    initial = tuple(c.initial for c in children)
+    final = tuple(c.final for c in children)
+    edges: list[_Edge] = []
+    seen = {initial}
+    frontier = [initial]
+    while frontier:
+        current = frontier.pop()
+        options = []
+        for child, key in zip(children, current):
+            moves: list[_Edge | None] = list(child.outgoing(key))
+            if current != initial:
+                moves.append(None)  # this component stays
+            options.append(moves)
+        for combination in itertools.product(*options):
+            if all(m is None for m in combination):
+                continue
+            target = tuple(m.target if m is not None else key for m, key in zip(combination, current))
+            finished = [t == c.final for t, c in zip(target, children)]
+            if any(finished) and not all(finished):
+                continue  # members of a parallel end together
+            moving = [m for m in combination if m is not None]
+            edges.append(_Edge(current, conjunction([m.guard for m in moving]), tuple(ev for m in moving for ev in m.events), target))
+            if target not in seen:
+                seen.add(target)
+                frontier.append(target)
+    names: dict[Key, tuple[str, bool]] = {}
+    drivers: dict[Key, frozenset[str]] = {}
+    for key in seen:
+        parts = [c.names[k] for c, k in zip(children, key) if k in c.names]
+        labelled = [n for n, is_labelled in parts if is_labelled]
+        chosen = labelled or [n for n, _ in parts]
+        if chosen:
+            names[key] = (" | ".join(chosen), bool(labelled))
+        drivers[key] = frozenset().union(*(c.drivers.get(k, frozenset()) for c, k in zip(children, key)))
+    return _Fragment(initial, final, edges, names, drivers)
+
+
+def _one_of(children: list[_Fragment], uid: int) -> _Fragment:
+    initial, final = ("oi", uid), ("of", uid)
+    edges: list[_Edge] = []
+    names: dict[Key, tuple[str, bool]] = {}
+    drivers: dict[Key, frozenset[str]] = {}
+    for child in children:
+        rename = {child.initial: initial, child.final: final}
+        for e in child.edges:
+            edges.append(_Edge(rename.get(e.source, e.source), e.guard, e.events, rename.get(e.target, e.target)))
+        names.update(child.names)
+        drivers.update(child.drivers)
+    return _Fragment(initial, final, edges, names, drivers)
+
+
+def _finish(fragment: _Fragment, actors: tuple[str, ...]) -> SymbolicAutomaton:
+    # Keep locations that are reachable from the initial one and can still reach the final one.
+    forward = _closure(fragment.initial, lambda k: [e.target for e in fragment.edges if e.source == k])
+    backward = _closure(fragment.final, lambda k: [e.source for e in fragment.edges if e.target == k])
+    useful = forward & backward
+    if fragment.initial not in useful:
+        raise ValueError("the behavior's automaton has no path from start to end")
+    order = _bfs_order(fragment, useful)
+    ids = {key: index for index, key in enumerate(order)}
+    used: dict[str, int] = {}
+    locations = []
+    for key in order:
+        if key == fragment.initial:
+            name = "init"
+        elif key == fragment.final:
+            name = "fin"
+        else:
+            name = fragment.names.get(key, ("phase", False))[0]
+        used[name] = used.get(name, 0) + 1
+        if used[name] > 1:
+            name = f"{name}#{used[name]}"
+        locations.append(Location(ids[key], name, fragment.drivers.get(key, frozenset())))
+    transitions = []
+    for edge in fragment.edges:
+        if edge.source in useful and edge.target in useful:
+            transitions.append(Transition(len(transitions), ids[edge.source], ids[edge.target], edge.guard, edge.events))
+    transitions.sort(key=lambda t: (t.source, t.target))
+    transitions = [Transition(i, t.source, t.target, t.guard, t.events) for i, t in enumerate(transitions)]
+    return SymbolicAutomaton(locations, transitions, ids[fragment.initial], ids[fragment.final], actors)
+
+
+def _closure(start: Key, neighbours) -> set[Key]:
+    seen = {start}
+    stack = [start]
+    while stack:
+        for nxt in neighbours(stack.pop()):
+            if nxt not in seen:
+                seen.add(nxt)
+                stack.append(nxt)
+    return seen
+
+
+def _bfs_order(fragment: _Fragment, useful: set[Key]) -> list[Key]:
+    order = [fragment.initial]
+    index = 0
+    while index < len(order):
+        for e in fragment.edges:
+            if e.source == order[index] and e.target in useful and e.target not in order:
+                order.append(e.target)
+        index += 1
+    return order

@@ -1,0 +1,198 @@
+"""Guards: predicates over the states of actors, closed under and / or / not.
+
+A guard is evaluated on a *snapshot* (actor name -> ``ActorState``) in three ways, one per consumer:
+``holds`` (the monitor's yes/no), ``robustness`` (a signed margin in the quantity's own units,
+positive when the guard holds, as in signal temporal logic; the monitor uses it to say how close a
+trace came) and, in ``pytest_roadlogic.planning``, as ASP rules. Keeping the three side by side on
+one small algebra is what lets the planner and the monitor agree on what a scenario means.
+
+Lanes are integers with 0 the leftmost lane (the paper's convention); the robustness of a lane
+bound counts half a lane of slack, so that "in the adjacent lane" has margin +0.5, not 0.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Mapping, Protocol
+
+from ..frontend.errors import SourceLocation
+
+POSITION = "position"
+LANE = "lane"
+SPEED = "speed"
+QUANTITIES = (POSITION, LANE, SPEED)
+SYMBOL = {POSITION: "p", LANE: "l", SPEED: "v"}
+UNIT = {POSITION: "m", LANE: "lanes", SPEED: "m/s"}
+
+
+class ActorState(Protocol):
+    position: float
+    lane: int
+    speed: float
+
+
+Snapshot = Mapping[str, ActorState]
+
+
+@dataclass(frozen=True)
+class Term:
+    """``x(actor)`` or the difference ``x(actor) - x(reference)`` for one quantity x."""
+
+    quantity: str
+    actor: str
+    reference: str | None = None
+
+    def value(self, snapshot: Snapshot) -> float:
+        value = getattr(snapshot[self.actor], self.quantity)
+        if self.reference is not None:
+            value -= getattr(snapshot[self.reference], self.quantity)
+        return value
+
+    @property
+    def actors(self) -> tuple[str, ...]:
+        return (self.actor,) if self.reference is None else (self.actor, self.reference)
+
+    def __str__(self) -> str:
+        s = SYMBOL[self.quantity]
+        text = f"{s}({self.actor})"
+        return text if self.reference is None else f"{text} - {s}({self.reference})"
+
+
+class Guard:
+    """Base of the algebra; subclasses are immutable dataclasses."""
+
+    def holds(self, snapshot: Snapshot) -> bool:
+        raise NotImplementedError
+
+    def robustness(self, snapshot: Snapshot) -> float:
+        raise NotImplementedError
+
+    def atoms(self) -> tuple["Bound", ...]:
+        """The bounds this guard is built from, in order."""
+        raise NotImplementedError
+
+    @property
+    def is_true(self) -> bool:
+        return False
+
+    def __and__(self, other: "Guard") -> "Guard":
+        return conjunction([self, other])
+
+
+@dataclass(frozen=True)
+class Bound(Guard):
+    """``low <= term <= high`` (either side may be infinite); the atomic predicate."""
+
+    term: Term
+    low: float = -math.inf
+    high: float = math.inf
+    source: SourceLocation | None = None
+
+    def holds(self, snapshot: Snapshot) -> bool:
+        value = self.term.value(snapshot)
+        return self.low <= value <= self.high
+
+    def robustness(self, snapshot: Snapshot) -> float:
+        value = self.term.value(snapshot)
+        slack = 0.5 if self.term.quantity == LANE else 0.0
+        return min(value - (self.low - slack), (self.high + slack) - value)
+
+    def atoms(self) -> tuple["Bound", ...]:
+        return (self,)
+
+    def __str__(self) -> str:
+        term = str(self.term)
+        if self.term.quantity == LANE and self.term.reference is not None and self.low == self.high == 0:
+            return f"{SYMBOL[LANE]}({self.term.actor}) = {SYMBOL[LANE]}({self.term.reference})"
+        if self.low == self.high:
+            return f"{term} = {_num(self.low)}"
+        if self.term.quantity == LANE and self.term.reference is not None:
+            # Paper style for lane relations: l(v1) < l(v2) rather than l(v1) - l(v2) <= -1.
+            a, b = f"{SYMBOL[LANE]}({self.term.actor})", f"{SYMBOL[LANE]}({self.term.reference})"
+            if self.low == -math.inf and self.high == -1:
+                return f"{a} < {b}"
+            if self.low == 1 and self.high == math.inf:
+                return f"{a} > {b}"
+        if self.low == -math.inf:
+            return f"{term} <= {_num(self.high)}"
+        if self.high == math.inf:
+            return f"{term} >= {_num(self.low)}"
+        return f"{_num(self.low)} <= {term} <= {_num(self.high)}"
+
+
+@dataclass(frozen=True)
+class And(Guard):
+    parts: tuple[Guard, ...]
+
+    def holds(self, snapshot: Snapshot) -> bool:
+        return all(p.holds(snapshot) for p in self.parts)
+
+    def robustness(self, snapshot: Snapshot) -> float:
+        return min((p.robustness(snapshot) for p in self.parts), default=math.inf)
+
+    def atoms(self) -> tuple[Bound, ...]:
+        return tuple(a for p in self.parts for a in p.atoms())
+
+    @property
+    def is_true(self) -> bool:
+        return not self.parts
+
+    def __str__(self) -> str:
+        return " and ".join(_wrap(p) for p in self.parts) if self.parts else "true"
+
+
+@dataclass(frozen=True)
+class Or(Guard):
+    parts: tuple[Guard, ...]
+
+    def holds(self, snapshot: Snapshot) -> bool:
+        return any(p.holds(snapshot) for p in self.parts)
+
+    def robustness(self, snapshot: Snapshot) -> float:
+        return max((p.robustness(snapshot) for p in self.parts), default=-math.inf)
+
+    def atoms(self) -> tuple[Bound, ...]:
+        return tuple(a for p in self.parts for a in p.atoms())
+
+    def __str__(self) -> str:
+        return " or ".join(_wrap(p) for p in self.parts) if self.parts else "false"
+
+
+@dataclass(frozen=True)
+class Not(Guard):
+    part: Guard
+
+    def holds(self, snapshot: Snapshot) -> bool:
+        return not self.part.holds(snapshot)
+
+    def robustness(self, snapshot: Snapshot) -> float:
+        return -self.part.robustness(snapshot)
+
+    def atoms(self) -> tuple[Bound, ...]:
+        return self.part.atoms()
+
+    def __str__(self) -> str:
+        return f"not {_wrap(self.part)}"
+
+
+TRUE = And(())
+
+
+def conjunction(guards: list[Guard] | tuple[Guard, ...]) -> Guard:
+    """Flattened conjunction; ``true`` parts disappear, a single part stands alone."""
+    parts: list[Guard] = []
+    for guard in guards:
+        if isinstance(guard, And):
+            parts.extend(p for p in guard.parts if p not in parts)
+        elif guard not in parts:
+            parts.append(guard)
+    return parts[0] if len(parts) == 1 else And(tuple(parts))
+
+
+def _wrap(guard: Guard) -> str:
+    return f"({guard})" if isinstance(guard, (And, Or)) and len(getattr(guard, "parts", ())) > 1 else str(guard)
+
+
+def _num(value: float) -> str:
+    return str(int(value)) if float(value).is_integer() else f"{value:g}"

@@ -1,0 +1,70 @@
+"""The symbolic finite automaton: the spine shared by the planner and the monitor.
+
+Locations are the phases of a scenario (a time interval in which each actor is doing one thing);
+transitions are instants at which guards must hold. A run takes its transitions at strictly
+increasing times, so every phase lasts a positive time, as the paper's semantics of serial
+composition demands (the split point lies strictly inside the interval).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from .guards import Guard
+
+
+@dataclass(frozen=True)
+class Location:
+    id: int
+    name: str
+    # Actors inside a ``drive`` phase here: each must make forward progress while the run stays.
+    drivers: frozenset[str] = frozenset()
+
+
+@dataclass(frozen=True)
+class Transition:
+    id: int
+    source: int
+    target: int
+    guard: Guard
+    # What happens at this instant, e.g. ("A end", "B start"), for reports and plots.
+    events: tuple[str, ...] = ()
+
+    @property
+    def label(self) -> str:
+        return ", ".join(self.events)
+
+
+@dataclass
+class SymbolicAutomaton:
+    locations: list[Location]
+    transitions: list[Transition]
+    initial: int
+    final: int
+    actors: tuple[str, ...] = field(default_factory=tuple)
+
+    def location(self, location_id: int) -> Location:
+        return self.locations[location_id]
+
+    def outgoing(self, location_id: int) -> list[Transition]:
+        return [t for t in self.transitions if t.source == location_id]
+
+    def depth(self) -> dict[int, int]:
+        """Fewest transitions from the initial location; used to say how far a run got."""
+        depth = {self.initial: 0}
+        frontier = [self.initial]
+        while frontier:
+            nxt = []
+            for loc in frontier:
+                for t in self.outgoing(loc):
+                    if t.target not in depth:
+                        depth[t.target] = depth[loc] + 1
+                        nxt.append(t.target)
+            frontier = nxt
+        return depth
+
+    def describe(self) -> str:
+        lines = [f"locations: {', '.join(loc.name for loc in self.locations)}"]
+        for t in self.transitions:
+            lines.append(f"  {self.locations[t.source].name} -> {self.locations[t.target].name}: {t.guard}")
+        return "\n".join(lines)
