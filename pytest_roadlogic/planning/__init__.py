@@ -1,0 +1,7 @@
+"""Stage 3: planning with clingo (``Planner``), from an automaton to ``Plan`` objects."""
+
+from .instance import PlanningSettings, build_instance
+from .plan import Plan, PlanState
+from .solver import NoPlanError, Planner, background_theory
+
+__all__ = ["NoPlanError", "Plan", "PlanState", "Planner", "PlanningSettings", "background_theory", "build_instance"]

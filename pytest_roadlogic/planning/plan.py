@@ -1,0 +1,79 @@
+"""A high-level plan: every vehicle's discrete state at every planning step."""
+
+from __future__ import annotations
+
+import json
+from dataclasses import asdict, dataclass, field
+
+
+@dataclass(frozen=True)
+class PlanState:
+    """One vehicle at one step, in SI units: longitudinal position of its centre, lane, speed."""
+
+    position: float
+    lane: int
+    speed: float
+
+
+@dataclass
+class Plan:
+    dt: float
+    lanes: int
+    # vehicle -> its state at steps 0..horizon
+    states: dict[str, list[PlanState]]
+    # (step, transition id) for every automaton transition the plan takes, in order
+    transitions: list[tuple[int, int]]
+    seed: int = 0
+    index: int = 0  # 0 for the first plan of a solve, 1 for the next one, ...
+    stats: dict[str, float] = field(default_factory=dict)
+
+    @property
+    def horizon(self) -> int:
+        return len(next(iter(self.states.values()))) - 1
+
+    @property
+    def vehicles(self) -> tuple[str, ...]:
+        return tuple(self.states)
+
+    def at(self, vehicle: str, step: int) -> PlanState:
+        return self.states[vehicle][step]
+
+    def to_dict(self) -> dict:
+        return {
+            "dt": self.dt,
+            "lanes": self.lanes,
+            "seed": self.seed,
+            "index": self.index,
+            "horizon": self.horizon,
+            "transitions": [{"step": s, "transition": t} for s, t in self.transitions],
+            "states": {v: [asdict(s) for s in states] for v, states in self.states.items()},
+            "stats": self.stats,
+        }
+
+    @classmethod
+    def from_dict(cls, data: dict) -> "Plan":
+        return cls(
+            dt=data["dt"],
+            lanes=data["lanes"],
+            states={v: [PlanState(**s) for s in states] for v, states in data["states"].items()},
+            transitions=[(t["step"], t["transition"]) for t in data["transitions"]],
+            seed=data.get("seed", 0),
+            index=data.get("index", 0),
+            stats=data.get("stats", {}),
+        )
+
+    def to_json(self) -> str:
+        return json.dumps(self.to_dict(), indent=2)
+
+    def table(self) -> str:
+        """The plan as a text table: one row per step, position/lane/speed per vehicle."""
+        header = ["step", "t[s]"] + [f"{v} pos/lane/speed" for v in self.vehicles]
+        rows = [header]
+        for step in range(self.horizon + 1):
+            row = [str(step), f"{step * self.dt:g}"]
+            for v in self.vehicles:
+                s = self.at(v, step)
+                row.append(f"{s.position:7.1f} / {s.lane} / {s.speed:4.1f}")
+            rows.append(row)
+        widths = [max(len(r[i]) for r in rows) for i in range(len(header))]
+        return "\n".join("  ".join(cell.rjust(w) for cell, w in zip(r, widths)) for r in rows)

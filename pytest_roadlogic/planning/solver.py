@@ -1,0 +1,150 @@
+"""Multi-shot (incremental) solving of a scenario's planning problem with clingo.
+
+The horizon grows one step at a time: each step grounds only the new ``dynamics(t)`` and
+``state(t)`` parts and moves the ``query(t)`` external that asks for acceptance at the last step,
+so nothing is re-grounded. The first horizon with an answer set gives the shortest plans. Further
+plans come from the same control: each plan found is excluded (projected on positions and lanes)
+and the solver is asked again, at the same horizon first and then at longer ones.
+
+One ``seed`` fixes the result: it seeds clingo's random decisions, which use random signs so that
+different seeds give different plans.
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Iterator
+from pathlib import Path
+
+import clingo
+
+from ..automaton.model import SymbolicAutomaton
+from .instance import PlanningSettings, build_instance
+from .plan import Plan, PlanState
+
+ASP_DIR = Path(__file__).resolve().parent.parent / "asp"
+if not ASP_DIR.is_dir():  # running from a source checkout: asp/ sits at the top level
+    ASP_DIR = Path(__file__).resolve().parents[2] / "asp"
+BACKGROUND = ("dynamics.lp", "domain.lp", "automaton.lp")
+
+
+class NoPlanError(Exception):
+    """No plan exists up to the horizon limit, or none was found within the time limit."""
+
+
+def background_theory() -> str:
+    return "\n".join((ASP_DIR / name).read_text(encoding="utf-8") for name in BACKGROUND)
+
+
+class Planner:
+    """Plans for one automaton; ``plans()`` yields them lazily, shortest horizon first."""
+
+    def __init__(self, automaton: SymbolicAutomaton, settings: PlanningSettings | None = None, seed: int = 0) -> None:
+        self.automaton = automaton
+        self.settings = settings or PlanningSettings()
+        self.seed = seed
+        self.base_program, self.state_program = build_instance(automaton, self.settings)
+        self.stats: dict[str, float] = {"ground_s": 0.0, "solve_s": 0.0}
+
+    def instance_program(self) -> str:
+        return "#program base.\n" + self.base_program + "\n#program state(t).\n" + self.state_program
+
+    def _control(self) -> clingo.Control:
+        control = clingo.Control(
+            [f"--seed={self.seed}", "--sign-def=rnd", "--rand-freq=0.02", "--warn=none", "--models=1"],
+            logger=lambda code, message: None,
+        )
+        control.add("base", [], background_theory())
+        control.add("base", [], self.base_program)
+        control.add("state", ["t"], self.state_program)
+        return control
+
+    def plans(self, limit: int | None = None) -> Iterator[Plan]:
+        deadline = time.monotonic() + self.settings.time_limit
+        control = self._control()
+        self._ground(control, [("base", []), ("state", [clingo.Number(0)]), ("check", [clingo.Number(0)])])
+        horizon = 0
+        found = 0
+        query = clingo.Function("query", [clingo.Number(0)])
+        control.assign_external(query, True)
+        while limit is None or found < limit:
+            symbols = self._solve(control, deadline)
+            if symbols is None:
+                if horizon >= self.settings.max_horizon:
+                    if found:
+                        return
+                    raise NoPlanError(
+                        f"no plan satisfies the scenario within {self.settings.max_horizon} steps "
+                        f"({self.settings.max_horizon * self.settings.dt:g} s)"
+                    )
+                control.assign_external(query, False)
+                horizon += 1
+                t = clingo.Number(horizon)
+                self._ground(control, [("dynamics", [t]), ("state", [t]), ("check", [t])])
+                query = clingo.Function("query", [t])
+                control.assign_external(query, True)
+                continue
+            plan = self._plan(symbols, horizon, found)
+            found += 1
+            yield plan
+            self._exclude(control, symbols, found)
+
+    def first(self) -> Plan:
+        for plan in self.plans(limit=1):
+            return plan
+        raise NoPlanError("no plan")
+
+    def _ground(self, control: clingo.Control, parts) -> None:
+        start = time.perf_counter()
+        control.ground(parts)
+        self.stats["ground_s"] += time.perf_counter() - start
+
+    def _solve(self, control: clingo.Control, deadline: float) -> list[clingo.Symbol] | None:
+        remaining = deadline - time.monotonic()
+        if remaining <= 0:
+            raise NoPlanError(f"planning ran out of its time limit ({self.settings.time_limit:g} s)")
+        start = time.perf_counter()
+        model_symbols: list[clingo.Symbol] | None = None
+        with control.solve(yield_=True, async_=True) as handle:
+            if not handle.wait(remaining):
+                handle.cancel()
+                raise NoPlanError(f"planning ran out of its time limit ({self.settings.time_limit:g} s)")
+            model = handle.model()
+            if model is not None:
+                model_symbols = list(model.symbols(shown=True))
+        self.stats["solve_s"] += time.perf_counter() - start
+        return model_symbols
+
+    def _exclude(self, control: clingo.Control, symbols: list[clingo.Symbol], count: int) -> None:
+        """Forbid this exact plan (its positions and lanes) from being found again."""
+        literals = [str(s) for s in symbols if s.name in ("pos", "lane")]
+        name = f"exclude_{count}"
+        control.add(name, [], ":- " + ", ".join(literals) + ".")
+        self._ground(control, [(name, [])])
+
+    def _plan(self, symbols: list[clingo.Symbol], horizon: int, index: int) -> Plan:
+        s = self.settings
+        cells: dict[tuple[str, int], dict[str, int]] = {}
+        transitions: list[tuple[int, int]] = []
+        for symbol in symbols:
+            if symbol.name in ("pos", "lane", "vel"):
+                vehicle, value, step = symbol.arguments
+                name = vehicle.string if vehicle.type == clingo.SymbolType.String else vehicle.name
+                cells.setdefault((name, step.number), {})[symbol.name] = value.number
+            elif symbol.name == "fire":
+                transitions.append((symbol.arguments[1].number, symbol.arguments[0].number))
+        states = {
+            v: [
+                PlanState(
+                    position=cells[(v, k)]["pos"] * s.grid,
+                    lane=cells[(v, k)]["lane"],
+                    speed=cells[(v, k)]["vel"] * s.grid / s.dt,
+                )
+                for k in range(horizon + 1)
+            ]
+            for v in self.automaton.actors
+        }
+        transitions.sort()
+        stats = dict(self.stats)
+        stats["horizon"] = horizon
+        return Plan(dt=s.dt, lanes=s.lanes, states=states, transitions=transitions, seed=self.seed, index=index, stats=stats)
