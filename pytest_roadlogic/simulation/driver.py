@@ -1,0 +1,216 @@
+"""Drivers: what moves a vehicle through its waypoints, one planning cycle at a time.
+
+A driver sees its own state, its reference (the waypoints) and the other vehicles' predicted
+trajectories, and returns a short trajectory; the simulator advances the vehicle along it by one
+time step. ``Driver`` is the whole interface, so a user can plug in their own planner for the
+vehicle under test; ``FrenetixDriver`` (the default for every vehicle) drives with the frenetix
+sampling planner: frenetix generates quintic/quartic Frenet trajectories and checks their
+feasibility, and this module ranks them by how well they track the waypoint schedule and rejects
+those that would collide or leave the road (frenetix checks neither).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Protocol
+
+import numpy as np
+
+from .reference import Reference
+from .road import Road
+
+CAR_LENGTH = 4.5
+CAR_WIDTH = 1.8
+WHEELBASE = 2.7
+
+
+@dataclass(frozen=True)
+class VehicleState:
+    """A vehicle's centre position, heading (rad), speed (m/s) and acceleration (m/s^2)."""
+
+    x: float
+    y: float
+    heading: float
+    speed: float
+    acceleration: float
+
+
+@dataclass(frozen=True)
+class Trajectory:
+    """A short future motion at the simulation time step, index 0 being now."""
+
+    x: np.ndarray
+    y: np.ndarray
+    heading: np.ndarray
+    speed: np.ndarray
+    acceleration: np.ndarray
+
+    def state(self, index: int) -> VehicleState:
+        index = min(index, len(self.x) - 1)
+        return VehicleState(float(self.x[index]), float(self.y[index]), float(self.heading[index]), float(self.speed[index]), float(self.acceleration[index]))
+
+    def shifted(self) -> "Trajectory":
+        """The same motion seen one time step later (a prediction for the next cycle)."""
+        if len(self.x) <= 1:
+            return self
+        return Trajectory(self.x[1:], self.y[1:], self.heading[1:], self.speed[1:], self.acceleration[1:])
+
+    @staticmethod
+    def standing(state: VehicleState, steps: int = 1) -> "Trajectory":
+        ones = np.ones(steps)
+        return Trajectory(state.x * ones, state.y * ones, state.heading * ones, state.speed * ones, 0 * ones)
+
+
+class Driver(Protocol):
+    """The interface every driver implements (see the README for a custom driver)."""
+
+    def start(self, vehicle: str, reference: Reference, road: Road, dt: float) -> None:
+        """Called once before the simulation, with the vehicle's reference and the road."""
+
+    def plan(self, time: float, state: VehicleState, others: dict[str, Trajectory]) -> Trajectory:
+        """Called every time step; returns a trajectory starting at ``state``."""
+
+
+def boxes_overlap(a: VehicleState, b: VehicleState, margin: float = 0.0) -> bool:
+    """Separating-axis test of two oriented vehicle rectangles."""
+    ca, cb = corners(a, margin), corners(b, margin)
+    for box in (ca, cb):
+        for i in range(2):
+            edge = box[i + 1] - box[i]
+            axis = np.array([-edge[1], edge[0]])
+            pa, pb = ca @ axis, cb @ axis
+            if pa.max() < pb.min() or pb.max() < pa.min():
+                return False
+    return True
+
+
+def corners(state: VehicleState, margin: float = 0.0) -> np.ndarray:
+    half_l, half_w = CAR_LENGTH / 2 + margin, CAR_WIDTH / 2 + margin
+    c, s = np.cos(state.heading), np.sin(state.heading)
+    local = np.array([[half_l, half_w], [-half_l, half_w], [-half_l, -half_w], [half_l, -half_w]])
+    return local @ np.array([[c, s], [-s, c]]) + np.array([state.x, state.y])
+
+
+_COORDINATE_SYSTEMS: dict[tuple[float, float], object] = {}
+
+
+def _coordinate_system(road: Road):
+    """The straight reference line y = 0 (the right road edge), shared by all drivers of a road.
+
+    Building one costs tens of milliseconds, so it is built once per road extent.
+    """
+    import frenetix
+
+    key = (road.x_start, road.x_end)
+    if key not in _COORDINATE_SYSTEMS:
+        xs = np.arange(road.x_start - 100.0, road.x_end + 200.0, 1.0)
+        path = np.stack([xs, np.zeros_like(xs)], axis=1)
+        _COORDINATE_SYSTEMS.clear()
+        _COORDINATE_SYSTEMS[key] = (frenetix.CoordinateSystemWrapper(path), float(xs[0]))
+    return _COORDINATE_SYSTEMS[key]
+
+
+class FrenetixDriver:
+    """Tracks the waypoint schedule with frenetix-generated trajectories."""
+
+    horizon = 3.0  # s
+    durations = (1.0, 2.0, 3.0)  # s, end times of the sampled trajectories
+    speed_offsets = (-3.0, -1.5, -0.5, 0.0, 0.5, 1.5, 3.0)  # m/s around the reference end speed
+    tracked = 2.0  # s of each trajectory compared with the reference
+    low_velocity = 2.0  # m/s; below it frenetix plans lateral motion over distance, not time
+
+    def start(self, vehicle: str, reference: Reference, road: Road, dt: float) -> None:
+        import frenetix
+        from frenetix.trajectory_functions import cost_functions as cf
+        from frenetix.trajectory_functions import feasability_functions as ff
+
+        self.vehicle = vehicle
+        self.reference = reference
+        self.road = road
+        self.dt = dt
+        self.coordinates, self.s_origin = _coordinate_system(road)
+        handler = frenetix.TrajectoryHandler(dt=dt)
+        handler.add_feasability_function(ff.CheckYawRateConstraint(deltaMax=0.4, wheelbase=WHEELBASE, wholeTrajectory=False))
+        handler.add_feasability_function(ff.CheckAccelerationConstraint(switchingVelocity=7.3, maxAcceleration=8.0, wholeTrajectory=False))
+        handler.add_feasability_function(ff.CheckCurvatureConstraint(deltaMax=0.6, wheelbase=WHEELBASE, wholeTrajectory=False))
+        handler.add_cost_function(cf.CalculateLateralJerkCost("lateral_jerk", 0.02))
+        handler.add_cost_function(cf.CalculateLongitudinalJerkCost("longitudinal_jerk", 0.02))
+        self.handler = handler
+        self.fallbacks = 0
+
+    def plan(self, time: float, state: VehicleState, others: dict[str, Trajectory]) -> Trajectory:
+        import frenetix
+        import frenetix.trajectory_functions as tf
+
+        low = bool(state.speed < self.low_velocity)
+        cos_h, sin_h = np.cos(state.heading), np.sin(state.heading)
+        rear = np.array([state.x - cos_h * WHEELBASE / 2, state.y - sin_h * WHEELBASE / 2])
+        cartesian = frenetix.CartesianPlannerState(rear, float(state.heading), float(state.speed), float(state.acceleration), 0.0)
+        initial = frenetix.compute_initial_state(coordinate_system=self.coordinates, x_0=cartesian, wheelbase=WHEELBASE, low_velocity_mode=low)
+        handler = self.handler
+        handler.add_function(tf.FillCoordinates(lowVelocityMode=low, initialOrientation=float(state.heading), coordinateSystem=self.coordinates, horizon=self.horizon))
+        handler.reset_Trajectories()
+        handler.generate_trajectories(self._samples(time, state, initial), low)
+        handler.evaluate_all_current_functions(True)
+        candidates = [t for t in handler.get_sorted_trajectories() if t.feasible]
+        if not candidates:
+            self.fallbacks += 1
+            return Trajectory.standing(state, 2)
+        ranked = sorted(candidates, key=lambda t: self._tracking_cost(time, t) + t.cost)
+        for candidate in ranked[:40]:
+            trajectory = self._copy(candidate)
+            if self._safe(trajectory, others):
+                return trajectory
+        self.fallbacks += 1
+        return self._copy(min(candidates, key=lambda t: float(np.array(t.cartesian.v)[-1])))
+
+    def _samples(self, time: float, state: VehicleState, initial) -> np.ndarray:
+        rows = []
+        d_now = float(initial.x0_lat[0])
+        for duration in self.durations:
+            v_ref = float(self.reference.v(time + duration))
+            d_ref = float(self.reference.d(time + duration))
+            ends = {max(0.0, v_ref + o) for o in self.speed_offsets} | {max(0.0, state.speed - 3.0 * duration)}
+            for v_end in sorted(ends):
+                for d_end in {d_ref, d_now}:
+                    rows.append([0.0, duration, *initial.x0_lon, v_end, 0.0, *initial.x0_lat, d_end, 0.0, 0.0])
+        return np.array(rows, dtype=float)
+
+    def _tracking_cost(self, time: float, candidate) -> float:
+        s = np.asarray(candidate.curvilinear.s)
+        d = np.asarray(candidate.curvilinear.d)
+        v = np.asarray(candidate.cartesian.v)
+        n = min(len(s), int(round(self.tracked / self.dt)) + 1)
+        times = time + np.arange(1, n) * self.dt
+        x = s[1:n] + self.s_origin + WHEELBASE / 2
+        return float(
+            np.mean((x - self.reference.s(times)) ** 2)
+            + 2.0 * np.mean((d[1:n] - self.reference.d(times)) ** 2)
+            + 0.2 * np.mean((v[1:n] - self.reference.v(times)) ** 2)
+        )
+
+    @staticmethod
+    def _copy(candidate) -> Trajectory:
+        # frenetix's arrays are views into memory freed with the sample: copy before keeping
+        heading = np.array(candidate.cartesian.theta, copy=True)
+        rear_x = np.array(candidate.cartesian.x, copy=True)
+        rear_y = np.array(candidate.cartesian.y, copy=True)
+        return Trajectory(
+            x=rear_x + np.cos(heading) * WHEELBASE / 2,
+            y=rear_y + np.sin(heading) * WHEELBASE / 2,
+            heading=heading,
+            speed=np.array(candidate.cartesian.v, copy=True),
+            acceleration=np.array(candidate.cartesian.a, copy=True),
+        )
+
+    def _safe(self, trajectory: Trajectory, others: dict[str, Trajectory]) -> bool:
+        steps = min(len(trajectory.x), int(round(self.tracked / self.dt)) + 1)
+        half_width = CAR_WIDTH / 2
+        if trajectory.y[:steps].min() - half_width < 0 or trajectory.y[:steps].max() + half_width > self.road.width:
+            return False
+        for other in others.values():
+            for k in range(1, steps):
+                j = min(k, len(other.x) - 1)
+                if abs(trajectory.x[k] - other.x[j]) < CAR_LENGTH + 0.5 and abs(trajectory.y[k] - other.y[j]) < CAR_WIDTH + 0.2:
+                    return False
+        return True

@@ -1,0 +1,82 @@
+"""The recorded simulation: every actor's state every ``dt`` seconds, plus incidents."""
+
+from __future__ import annotations
+
+import csv
+import io
+from dataclasses import dataclass, field
+
+import numpy as np
+
+COLUMNS = ("x", "y", "heading", "speed", "acceleration", "lane")
+
+
+@dataclass(frozen=True)
+class ActorSnapshot:
+    """An actor's state at one instant, as guards see it (``position`` is the centre's x)."""
+
+    position: float
+    lane: int
+    speed: float
+
+
+@dataclass(frozen=True)
+class Incident:
+    time: float
+    kind: str  # "collision" or "off-road"
+    actors: tuple[str, ...]
+
+    def __str__(self) -> str:
+        return f"{self.kind} of {' and '.join(self.actors)} at t={self.time:.1f} s"
+
+
+@dataclass
+class Trace:
+    """Time-stamped states (constant between samples, as the paper assumes)."""
+
+    times: np.ndarray
+    # actor -> column -> array aligned with ``times``
+    actors: dict[str, dict[str, np.ndarray]]
+    incidents: list[Incident] = field(default_factory=list)
+
+    def __len__(self) -> int:
+        return len(self.times)
+
+    @property
+    def names(self) -> tuple[str, ...]:
+        return tuple(self.actors)
+
+    def snapshot(self, index: int) -> dict[str, ActorSnapshot]:
+        return {
+            name: ActorSnapshot(float(c["x"][index]), int(c["lane"][index]), float(c["speed"][index]))
+            for name, c in self.actors.items()
+        }
+
+    def snapshots(self) -> list[dict[str, ActorSnapshot]]:
+        return [self.snapshot(k) for k in range(len(self))]
+
+    def to_csv(self) -> str:
+        out = io.StringIO()
+        writer = csv.writer(out, lineterminator="\n")
+        writer.writerow(["time", "actor", *COLUMNS])
+        for k, t in enumerate(self.times):
+            for name, c in self.actors.items():
+                row = [f"{t:.2f}", name]
+                row += [f"{c[col][k]:.4f}" if col != "lane" else str(int(c[col][k])) for col in COLUMNS]
+                writer.writerow(row)
+        return out.getvalue()
+
+    @classmethod
+    def from_csv(cls, text: str) -> "Trace":
+        rows = list(csv.DictReader(io.StringIO(text)))
+        times = sorted({float(r["time"]) for r in rows})
+        index = {t: i for i, t in enumerate(times)}
+        names = list(dict.fromkeys(r["actor"] for r in rows))
+        actors = {n: {c: np.zeros(len(times)) for c in COLUMNS} for n in names}
+        for r in rows:
+            k = index[float(r["time"])]
+            for c in COLUMNS:
+                actors[r["actor"]][c][k] = float(r[c])
+        for n in names:
+            actors[n]["lane"] = actors[n]["lane"].astype(int)
+        return cls(np.array(times), actors)
