@@ -1,0 +1,42 @@
+"""Writing what a run produced to a directory: plan, trace, CommonRoad scenario, plot, verdict.
+
+Every file is written to a temporary name and renamed into place, so an interrupted run never
+leaves a half-written artifact behind.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+from pathlib import Path
+
+from .pipeline import Outcome
+from .plotting import plot_simulation
+from .simulation.commonroad_export import write_commonroad_xml
+
+
+def write_text(path: Path, text: str) -> Path:
+    temporary = path.parent / f".{path.name}.{os.getpid()}.partial"
+    temporary.write_text(text, encoding="utf-8")
+    os.replace(temporary, path)
+    return path
+
+
+def write_artifacts(outcome: Outcome, directory: str | Path) -> dict[str, Path]:
+    directory = Path(directory)
+    directory.mkdir(parents=True, exist_ok=True)
+    name = outcome.scenario.name
+    verdict = {
+        "scenario": name,
+        "seed": outcome.plan.seed,
+        "tries": outcome.tries,
+        "seconds": outcome.seconds,
+        **outcome.verdict.to_dict(),
+    }
+    return {
+        "plan": write_text(directory / "plan.json", outcome.plan.to_json()),
+        "trace": write_text(directory / "trace.csv", outcome.simulation.trace.to_csv()),
+        "commonroad": write_commonroad_xml(outcome.simulation, directory / "scenario.xml", name),
+        "plot": plot_simulation(outcome.simulation, outcome.verdict, directory / "trajectories.png", title=name),
+        "verdict": write_text(directory / "verdict.json", json.dumps(verdict, indent=2)),
+    }

@@ -1,0 +1,66 @@
+"""A picture of one simulation: the road from above with every vehicle's path, and position over
+time, with the instants at which the monitor's run met each guard marked on both."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from .monitor import Verdict
+from .simulation import Simulation
+from .simulation.driver import CAR_LENGTH, CAR_WIDTH
+
+COLOURS = ("tab:purple", "tab:red", "tab:blue", "tab:green", "tab:orange", "tab:brown")
+
+
+def plot_simulation(simulation: Simulation, verdict: Verdict, path: str | Path, title: str = "") -> Path:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.patches import Rectangle
+
+    trace, road = simulation.trace, simulation.road
+    figure, (top, bottom) = plt.subplots(2, 1, figsize=(12, 7), gridspec_kw={"height_ratios": [1, 1.4]})
+    x_min = min(float(c["x"].min()) for c in trace.actors.values()) - 10
+    x_max = max(float(c["x"].max()) for c in trace.actors.values()) + 10
+    for boundary in range(road.lanes + 1):
+        style = "-" if boundary in (0, road.lanes) else "--"
+        top.plot([x_min, x_max], [boundary * road.lane_width] * 2, style, color="grey", linewidth=0.8)
+    for lane in range(road.lanes):
+        top.text(x_min + 1, road.center_y(lane), f"lane {road.lanes - lane}", va="center", fontsize=7, color="grey")
+    run_indices = [(int(round(t / simulation.dt)), events) for t, events in verdict.run]
+    for index, (name, columns) in enumerate(trace.actors.items()):
+        colour = COLOURS[index % len(COLOURS)]
+        top.plot(columns["x"], columns["y"], color=colour, linewidth=1.2, label=name)
+        top.text(columns["x"][-1], columns["y"][-1] + 0.6, name, color=colour, fontsize=9, weight="bold")
+        bottom.plot(trace.times, columns["x"], color=colour, label=name)
+        for k, _ in run_indices:
+            x, y, heading = columns["x"][k], columns["y"][k], columns["heading"][k]
+            top.add_patch(
+                Rectangle((x - CAR_LENGTH / 2, y - CAR_WIDTH / 2), CAR_LENGTH, CAR_WIDTH, angle=float(heading) * 57.2958,
+                          rotation_point="center", facecolor=colour, alpha=0.35, edgecolor=colour)
+            )
+    for number, (k, events) in enumerate(run_indices, start=1):
+        time = trace.times[k]
+        bottom.axvline(time, color="black", linewidth=0.6, linestyle=":")
+        bottom.text(time, bottom.get_ylim()[1], f" {number}: {events}", rotation=90, va="top", fontsize=7)
+        x_lead = max(float(c["x"][k]) for c in trace.actors.values())
+        top.text(x_lead + 3, road.width + 0.4, str(number), fontsize=8, ha="center")
+    for incident in verdict.incidents:
+        bottom.axvline(incident.time, color="red", linewidth=1.0)
+    top.set_xlim(x_min, x_max)
+    top.set_ylim(-0.5, road.width + 1.5)
+    top.set_aspect("auto")
+    top.set_ylabel("y [m]")
+    top.legend(loc="lower right", fontsize=8)
+    bottom.set_xlabel("time [s]")
+    bottom.set_ylabel("x [m]")
+    status = "accepted" if verdict.accepted else "REJECTED"
+    figure.suptitle(f"{title}  {status} (robustness {verdict.robustness:+.2f}); numbered marks: guards met", fontsize=10)
+    figure.tight_layout()
+    path = Path(path)
+    temporary = path.parent / f".{path.name}.partial.png"
+    figure.savefig(temporary, dpi=110)
+    plt.close(figure)
+    temporary.replace(path)
+    return path
