@@ -1,0 +1,120 @@
+"""The pytest plugin: every ``.osc`` file is a test module, every scenario in it a test item.
+
+An item runs the pipeline (plan, simulate, monitor, with the paper's bounded retries) and passes
+when the monitor accepts the simulation. A rejection fails the item with the monitor's
+explanation (which guard was not met, when it came closest, with which values) and the paths of
+the artifacts to look at. A file that does not parse is one collection error with the front end's
+message; the other files still run. Collection never runs a solver.
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import pytest
+
+from .frontend import OscError, Scenario, parse_file
+from .planning import NoPlanError, PlanningSettings
+
+DEFAULT_SEED = 1
+DEFAULT_ARTIFACTS = "roadlogic-artifacts"
+
+
+def pytest_addoption(parser: pytest.Parser) -> None:
+    group = parser.getgroup("roadlogic", "scenario-based testing with OpenSCENARIO DSL files")
+    group.addoption("--roadlogic-seed", type=int, default=None, help=f"seed fixing planning and simulation (ini: roadlogic_seed; default {DEFAULT_SEED})")
+    group.addoption("--roadlogic-artifacts", default=None, help=f"directory for plans, traces, scenarios and plots (ini: roadlogic_artifacts; default {DEFAULT_ARTIFACTS})")
+    group.addoption("--roadlogic-lanes", type=int, default=None, help="lanes of the road (ini: roadlogic_lanes; default 3)")
+    parser.addini("roadlogic_seed", "seed fixing planning and simulation", default=str(DEFAULT_SEED))
+    parser.addini("roadlogic_artifacts", "directory for the artifacts of every scenario run", default=DEFAULT_ARTIFACTS)
+    parser.addini("roadlogic_lanes", "lanes of the road", default="3")
+
+
+def pytest_configure(config: pytest.Config) -> None:
+    _CONFIG["config"] = config
+    config.addinivalue_line("markers", "roadlogic: a scenario collected from an .osc file")
+    config.addinivalue_line("markers", "slow: a long scenario or suite; deselect with -m 'not slow'")
+
+
+def pytest_collect_file(file_path: Path, parent: pytest.Collector):
+    if file_path.suffix == ".osc":
+        return OscFile.from_parent(parent, path=file_path)
+    return None
+
+
+def pytest_collectreport(report: pytest.CollectReport) -> None:
+    # A broken .osc file is reported, but must not stop the other scenarios from running (pytest
+    # interrupts the session on collection errors otherwise). Errors elsewhere keep pytest's rule.
+    if report.failed and report.nodeid.endswith(".osc"):
+        config = _CONFIG.get("config")
+        if config is not None:
+            config.option.continue_on_collection_errors = True
+
+
+_CONFIG: dict[str, pytest.Config] = {}
+
+
+def _option(config: pytest.Config, name: str, cast=str):
+    value = config.getoption(f"--roadlogic-{name}")
+    return cast(value if value is not None else config.getini(f"roadlogic_{name}"))
+
+
+class OscFile(pytest.File):
+    def collect(self):
+        try:
+            osc = parse_file(self.path)
+        except OscError as error:
+            raise self.CollectError(error.report()) from None
+        for scenario in osc.scenarios:
+            if scenario.behavior is not None:
+                item = ScenarioItem.from_parent(self, name=scenario.name, scenario=scenario)
+                item.add_marker("roadlogic")
+                yield item
+
+
+class ScenarioRejected(Exception):
+    """The monitor rejected every simulation the pipeline tried."""
+
+
+class ScenarioItem(pytest.Item):
+    def __init__(self, *, scenario: Scenario, **kwargs) -> None:
+        super().__init__(**kwargs)
+        self.scenario = scenario
+
+    def runtest(self) -> None:
+        from .artifacts import write_artifacts
+        from .pipeline import run_scenario
+
+        config = self.config
+        seed = _option(config, "seed", int)
+        settings = PlanningSettings(lanes=_option(config, "lanes", int))
+        outcome = run_scenario(self.scenario, seed=seed, settings=settings)
+        directory = Path(config.rootpath) / _option(config, "artifacts") / _safe_name(self.nodeid)
+        paths = write_artifacts(outcome, directory)
+        self.user_properties.append(("accepted", outcome.verdict.accepted))
+        self.user_properties.append(("robustness", round(outcome.verdict.robustness, 3)))
+        self.user_properties.append(("seed", seed))
+        if not outcome.verdict.accepted:
+            lines = [
+                f"scenario {self.scenario.name} was not reproduced in simulation ({outcome.tries} plans tried, seed {seed})",
+                outcome.verdict.explain(),
+                "artifacts of the last try:",
+                *(f"  {kind}: {path}" for kind, path in paths.items()),
+                f"replay: roadlogic run {self.path} --scenario {self.scenario.name} --seed {seed}",
+            ]
+            raise ScenarioRejected("\n".join(lines))
+
+    def repr_failure(self, excinfo, style=None):
+        if isinstance(excinfo.value, (ScenarioRejected, OscError)):
+            return str(excinfo.value)
+        if isinstance(excinfo.value, NoPlanError):
+            return f"{self.path}: scenario {self.scenario.name}: no plan: {excinfo.value}"
+        return super().repr_failure(excinfo, style=style)
+
+    def reportinfo(self):
+        return self.path, self.scenario.location.line - 1, f"scenario {self.scenario.name}"
+
+
+def _safe_name(nodeid: str) -> str:
+    return re.sub(r"[^A-Za-z0-9_.-]+", "_", nodeid).strip("_")

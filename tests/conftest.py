@@ -1,0 +1,19 @@
+from pathlib import Path
+
+import pytest
+
+from pytest_roadlogic.automaton import build_automaton
+from pytest_roadlogic.frontend import parse_file
+
+ROOT = Path(__file__).resolve().parent.parent
+OVERTAKE = ROOT / "scenarios" / "overtake.osc"
+
+
+@pytest.fixture(scope="session")
+def overtake():
+    return parse_file(OVERTAKE).scenarios[0]
+
+
+@pytest.fixture(scope="session")
+def overtake_automaton(overtake):
+    return build_automaton(overtake)

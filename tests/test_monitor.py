@@ -1,0 +1,70 @@
+"""The monitor accepts traces that realise the scenario and names the guard a bad trace misses."""
+
+import numpy as np
+import pytest
+
+from pytest_roadlogic.monitor import monitor
+from pytest_roadlogic.simulation import Trace
+from pytest_roadlogic.simulation.trace import Incident
+
+DT = 0.5
+
+
+def make_trace(v1_x, v1_lane, v2_x, v2_lane):
+    n = len(v1_x)
+    def columns(x, lane):
+        return {"x": np.array(x, float), "y": np.zeros(n), "heading": np.zeros(n), "speed": np.full(n, 10.0),
+                "acceleration": np.zeros(n), "lane": np.array(lane, int)}
+    return Trace(np.arange(n) * DT, {"v1": columns(v1_x, v1_lane), "v2": columns(v2_x, v2_lane)})
+
+
+def overtake_trace():
+    # v1 starts 15 m behind v2 in lane 1, moves left, passes, returns 7.5 m ahead
+    v2 = [100 + 10 * k for k in range(10)]
+    gaps = [-15, -12, -9, -5, 0, 4, 7, 7.5, 8, 8.5]
+    v1 = [b + g for b, g in zip(v2, gaps)]
+    lanes_v1 = [1, 1, 0, 0, 0, 0, 0, 1, 1, 1]
+    return make_trace(v1, lanes_v1, v2, [1] * 10)
+
+
+def test_a_real_overtake_is_accepted_with_positive_robustness(overtake_automaton):
+    verdict = monitor(overtake_automaton, overtake_trace())
+    assert verdict.accepted and verdict.robustness >= 0
+    assert [events for _, events in verdict.run][-1].endswith("C end")
+
+
+def test_staying_in_lane_fails_at_the_left_of_guard_with_values(overtake_automaton):
+    trace = overtake_trace()
+    trace.actors["v1"]["lane"][:] = 1  # v1 never leaves v2's lane
+    verdict = monitor(overtake_automaton, trace)
+    assert not verdict.accepted and verdict.robustness < 0
+    assert verdict.furthest == "A"
+    assert verdict.miss.guard == "l(v1) < l(v2)"
+    assert verdict.miss.target == "B"
+    assert verdict.miss.values == {"l(v1) - l(v2)": 0.0}
+    assert "stuck in A" in verdict.explain() and "l(v1) < l(v2)" in verdict.explain()
+
+
+def test_not_getting_far_enough_ahead_fails_at_the_final_guard(overtake_automaton):
+    trace = overtake_trace()
+    v2 = trace.actors["v2"]["x"]
+    trace.actors["v1"]["x"][:] = v2 + np.array([-15, -12, -9, -5, 0, 2, 3, 3.5, 4, 4.2])
+    verdict = monitor(overtake_automaton, trace)
+    assert not verdict.accepted
+    assert verdict.furthest == "C"
+    assert verdict.miss.target == "fin"
+    assert verdict.miss.values["p(v1) - p(v2)"] == pytest.approx(4.2)
+    assert verdict.miss.time == 4.5
+
+
+def test_a_driver_that_stops_breaks_forward_progress(overtake_automaton):
+    trace = overtake_trace()
+    trace.actors["v2"]["x"][3:] = trace.actors["v2"]["x"][3]  # v2 stands still from t=1.5 s
+    assert not monitor(overtake_automaton, trace).accepted
+
+
+def test_a_collision_rejects_an_otherwise_conformant_trace(overtake_automaton):
+    trace = overtake_trace()
+    trace.incidents.append(Incident(2.0, "collision", ("v1", "v2")))
+    verdict = monitor(overtake_automaton, trace)
+    assert not verdict.accepted and "collision of v1 and v2" in verdict.explain()

@@ -1,0 +1,86 @@
+"""Plans obey the background theory and take the automaton's guards in order.
+
+The checks here are written from the rules, independently of the ASP encoding.
+"""
+
+import pytest
+
+from pytest_roadlogic.planning import Planner, PlanningSettings
+
+SETTINGS = PlanningSettings()
+
+
+def check_plan(plan, automaton, settings=SETTINGS):
+    vehicles = plan.vehicles
+    for v in vehicles:
+        states = plan.states[v]
+        changes = [k for k in range(1, len(states)) if states[k].lane != states[k - 1].lane]
+        for k in range(len(states)):
+            s = states[k]
+            assert settings.min_speed <= s.speed <= settings.max_speed, f"{v} speed out of bounds at {k}"
+            assert 0 <= s.lane < settings.lanes, f"{v} off the road at {k}"
+            if k:
+                p = states[k - 1]
+                accel = s.speed - p.speed
+                assert accel in settings.accelerations, f"{v} acceleration {accel} at step {k}"
+                assert s.position == pytest.approx(p.position + (p.speed + s.speed) / 2), f"{v} kinematics at {k}"
+                assert abs(s.lane - p.lane) <= 1
+        for a, b in zip(changes, changes[1:]):
+            assert b - a >= settings.lane_change_gap, f"{v} changes lane at steps {a} and {b}"
+    for i, a in enumerate(vehicles):
+        for b in vehicles[i + 1 :]:
+            for k in range(plan.horizon + 1):
+                sa, sb = plan.at(a, k), plan.at(b, k)
+                lanes_a = {sa.lane} | ({plan.at(a, k - 1).lane} if k else set())
+                lanes_b = {sb.lane} | ({plan.at(b, k - 1).lane} if k else set())
+                if lanes_a & lanes_b:
+                    assert abs(sa.position - sb.position) >= settings.min_gap, f"{a} and {b} too close at {k}"
+    # the guards in order, at strictly increasing steps, ending in the final location
+    location = automaton.initial
+    last_step = -1
+    for step, tid in plan.transitions:
+        transition = automaton.transitions[tid]
+        assert transition.source == location
+        assert step > last_step or (step == 0 and last_step == -1)
+        snapshot = {v: plan.at(v, step) for v in vehicles}
+        assert transition.guard.holds(snapshot), f"guard {transition.guard} fails at step {step}"
+        location, last_step = transition.target, step
+    assert location == automaton.final
+
+
+@pytest.mark.parametrize("seed", range(1, 11))
+def test_overtake_plans_obey_the_rules_and_the_guards(overtake_automaton, seed):
+    plan = Planner(overtake_automaton, seed=seed).first()
+    check_plan(plan, overtake_automaton)
+
+
+def test_next_plans_differ_and_also_obey_the_rules(overtake_automaton):
+    plans = list(Planner(overtake_automaton, seed=1).plans(limit=5))
+    assert len(plans) == 5
+    signatures = {tuple((s.position, s.lane) for v in p.vehicles for s in p.states[v]) for p in plans}
+    assert len(signatures) == 5
+    for plan in plans:
+        check_plan(plan, overtake_automaton)
+
+
+def test_the_same_seed_gives_the_same_plan(overtake_automaton):
+    first = Planner(overtake_automaton, seed=7).first()
+    again = Planner(overtake_automaton, seed=7).first()
+    assert first.to_dict()["states"] == again.to_dict()["states"]
+
+
+def test_instance_program_lists_the_automaton_and_its_guards(overtake_automaton):
+    program = Planner(overtake_automaton).instance_program()
+    assert "transition(0,0,1)." in program
+    assert "pos(v1,S,t), pos(v2,S-D,t)" in program
+
+
+def test_an_impossible_scenario_has_no_plan():
+    from pytest_roadlogic.automaton import build_automaton
+    from pytest_roadlogic.frontend import parse_text
+    from pytest_roadlogic.planning import NoPlanError
+
+    text = "scenario s:\n  a: car\n  do a.drive() with:\n    speed([50..60]mps, at: end)\n"
+    automaton = build_automaton(parse_text(text).scenarios[0])
+    with pytest.raises(NoPlanError):
+        Planner(automaton, PlanningSettings(max_horizon=6)).first()
