@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import argparse
 import sys
+import time
 from pathlib import Path
 
 from .frontend import OscError
@@ -48,7 +49,9 @@ def _run(args: argparse.Namespace) -> int:
     except NoPlanError as error:
         print(f"{args.file}: no plan: {error}", file=sys.stderr)
         return EXIT_REJECTED
+    started = time.perf_counter()
     paths = write_artifacts(outcome, args.out)
+    outcome.seconds["artifacts"] = time.perf_counter() - started
     print(f"scenario {scenario.name} (seed {args.seed}): {outcome.tries} tr{'y' if outcome.tries == 1 else 'ies'}")
     for stage, seconds in outcome.seconds.items():
         print(f"  {stage:<11} {seconds:7.3f} s")
