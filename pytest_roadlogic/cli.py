@@ -1,9 +1,11 @@
 """The ``roadlogic`` command.
 
     roadlogic run FILE.osc [--scenario NAME] [--seed S] [--out DIR] [--lanes N] [--tries N]
+    roadlogic check PATH... [--syntax-only] [--lanes N]
 
-Exit codes: 0 the simulation was accepted; 1 it was rejected (or no plan exists);
+Exit codes of ``run``: 0 the simulation was accepted; 1 it was rejected (or no plan exists);
 2 the input is unusable (a file that does not parse or check, a bad option).
+Exit codes of ``check``: 0 every file is fine; 1 some file has an error; 2 a path does not exist.
 """
 
 from __future__ import annotations
@@ -29,8 +31,54 @@ def main(argv: list[str] | None = None) -> int:
     run.add_argument("--out", type=Path, default=Path("out"), help="artifact directory (default out/)")
     run.add_argument("--lanes", type=int, default=3, help="lanes of the road (default 3)")
     run.add_argument("--tries", type=int, default=5, help="plans to try when the monitor rejects (default 5)")
+    check = commands.add_parser("check", help="parse and check .osc files and folders; print every problem")
+    check.add_argument("paths", type=Path, nargs="+", help=".osc files or folders (searched recursively)")
+    check.add_argument("--syntax-only", action="store_true", help="stop after parsing (for files written for other tools)")
+    check.add_argument("--lanes", type=int, default=3, help="lanes of the road, for lane numbers (default 3)")
     args = parser.parse_args(argv)
-    return _run(args)
+    return _run(args) if args.command == "run" else _check(args)
+
+
+def osc_files(paths: list[Path]) -> list[Path]:
+    found: list[Path] = []
+    for path in paths:
+        found.extend(sorted(path.rglob("*.osc")) if path.is_dir() else [path])
+    return found
+
+
+def check_file(path: Path, syntax_only: bool = False, lanes: int = 3) -> list[str]:
+    """The formatted problems of one file (empty when it is fine); never raises for bad input."""
+    from .automaton import build_automaton
+    from .frontend import parse_file
+
+    try:
+        osc = parse_file(path)
+        if not syntax_only:
+            for scenario in osc.scenarios:
+                if scenario.behavior is not None:
+                    build_automaton(scenario, lanes)
+    except OscError as error:
+        return [error.report()]
+    except Exception as error:  # a bug of ours must not hide the other files' results
+        return [f"{path}:1:1: error: internal error while checking ({type(error).__name__}: {error}); please report it"]
+    return []
+
+
+def _check(args: argparse.Namespace) -> int:
+    missing = [p for p in args.paths if not p.exists()]
+    if missing:
+        for path in missing:
+            print(f"{path}: error: no such file or folder", file=sys.stderr)
+        return EXIT_INPUT
+    files = osc_files(args.paths)
+    failed = 0
+    for path in files:
+        problems = check_file(path, args.syntax_only, args.lanes)
+        if problems:
+            failed += 1
+            print("\n".join(problems))
+    print(f"{len(files)} files, {len(files) - failed} ok, {failed} with errors")
+    return 1 if failed else 0
 
 
 def _run(args: argparse.Namespace) -> int:

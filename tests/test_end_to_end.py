@@ -86,3 +86,25 @@ def test_a_rejected_scenario_fails_with_the_guard_the_time_and_the_values(tmp_pa
     assert "not reproduced in simulation" in result.stdout
     assert "closest at t =" in result.stdout
     assert "replay: roadlogic run" in result.stdout
+
+
+def test_roadlogic_check_reports_every_bad_file_with_a_summary(tmp_path):
+    (tmp_path / "good.osc").write_text(OVERTAKE.read_text())
+    (tmp_path / "sub").mkdir()
+    (tmp_path / "sub" / "unit.osc").write_text("scenario s:\n  a: car\n  b: car\n  do a.drive() with:\n    position(3s, behind: b, at: end)\n")
+    result = run_cli("check", str(tmp_path))
+    assert result.returncode == 1
+    assert f"{tmp_path / 'sub' / 'unit.osc'}:5:14: error: expected a length" in result.stdout
+    assert result.stdout.strip().endswith("2 files, 1 ok, 1 with errors")
+
+
+def test_roadlogic_check_of_the_benchmark_suite_exits_0():
+    result = run_cli("check", str(ROOT / "scenarios"))
+    assert result.returncode == 0, result.stdout
+    assert "0 with errors" in result.stdout
+
+
+def test_syntax_only_skips_the_checker(tmp_path):
+    (tmp_path / "other.osc").write_text("scenario s:\n  a: car\n  do a.fly()\n")
+    assert run_cli("check", str(tmp_path)).returncode == 1
+    assert run_cli("check", "--syntax-only", str(tmp_path)).returncode == 0

@@ -1,0 +1,58 @@
+"""Mutated scenario files either check or fail with the project's error and a location.
+
+Never any other exception: a user must always get `path:line:col: error: ...`, not a traceback.
+"""
+
+import re
+import time
+
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from pytest_roadlogic.automaton import build_automaton
+from pytest_roadlogic.frontend import OscError, parse_text
+from tests.conftest import OVERTAKE
+
+SOURCE = OVERTAKE.read_text()
+TOKENS = re.findall(r"\s+|\w+|[^\w\s]", SOURCE)
+LINES = SOURCE.splitlines(keepends=True)
+
+
+@st.composite
+def mutated(draw):
+    if draw(st.booleans()):
+        parts = list(TOKENS)
+    else:
+        parts = list(LINES)
+    for _ in range(draw(st.integers(1, 4))):
+        kind = draw(st.sampled_from(["delete", "duplicate", "swap", "insert", "indent"]))
+        i = draw(st.integers(0, len(parts) - 1))
+        if kind == "delete" and len(parts) > 1:
+            del parts[i]
+        elif kind == "duplicate":
+            parts.insert(i, parts[i])
+        elif kind == "swap":
+            j = draw(st.integers(0, len(parts) - 1))
+            parts[i], parts[j] = parts[j], parts[i]
+        elif kind == "insert":
+            parts.insert(i, draw(st.text(alphabet=st.characters(max_codepoint=0x2FF), min_size=1, max_size=4)))
+        else:
+            parts.insert(i, draw(st.sampled_from([" ", "\t", "\n   ", "\n\t ", "  \n"])))
+    return "".join(parts)
+
+
+@settings(max_examples=2000, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(mutated())
+def test_mutated_files_check_or_fail_with_a_located_error(text):
+    started = time.perf_counter()
+    try:
+        for scenario in parse_text(text, "m.osc").scenarios:
+            if scenario.behavior is not None:
+                build_automaton(scenario)
+    except OscError as error:
+        assert error.diagnostics, "an OscError must carry at least one diagnostic"
+        for diagnostic in error.diagnostics:
+            assert diagnostic.location.path == "m.osc"
+            assert diagnostic.location.line >= 1 and diagnostic.location.column >= 1
+        assert re.match(r"m\.osc:\d+:\d+: (error|warning): ", str(error))
+    assert time.perf_counter() - started < 1.0
