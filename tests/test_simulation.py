@@ -35,11 +35,17 @@ def test_vehicles_reach_their_waypoints_closely_and_without_incidents(simulation
             assert abs(sim.trace.actors[v]["x"][k] - waypoint.position) < 4.0, f"{v} misses {waypoint}"
 
 
-def test_run_up_keeps_the_planned_gaps(overtake_automaton):
-    plan = Planner(overtake_automaton, seed=2).first()
+@pytest.mark.parametrize("seed", range(1, 6))
+def test_run_up_from_standstill_keeps_vehicles_in_one_lane_apart(overtake_automaton, seed):
+    plan = Planner(overtake_automaton, seed=seed).first()
     refs = references(plan, Road())
-    gap_start = refs["v2"].start_position - refs["v1"].start_position
-    assert gap_start == pytest.approx(plan.at("v2", 0).position - plan.at("v1", 0).position)
+    times = np.linspace(0, plan.runup, 200)
+    for reference in refs.values():
+        assert reference.v(0.0) == 0.0
+        assert reference.s(plan.runup) == pytest.approx(reference.waypoints[0].position)
+    if plan.at("v1", 0).lane == plan.at("v2", 0).lane:
+        gaps = np.abs(refs["v2"].s(times) - refs["v1"].s(times))
+        assert gaps.min() >= 8.0 - 1e-6
 
 
 def test_the_commonroad_file_reads_back(simulation, tmp_path):

@@ -30,6 +30,7 @@ class PlanningSettings:
     initial_spread: float = 60.0  # m; other vehicles start within this distance of the first
     position_margin: float = 1.5  # m planned inside each side of a position range, when it fits
     speed_margin: float = 0.5  # m/s likewise for speed ranges
+    runup_acceleration: float = 2.0  # m/s^2 with which every vehicle leaves standstill
     max_horizon: int = 25  # steps
     time_limit: float = 60.0  # seconds for one solve, all horizons together
 
@@ -38,6 +39,15 @@ class PlanningSettings:
 
     def speeds(self) -> range:
         return range(math.ceil(self.cells_per_step(self.min_speed)), math.floor(self.cells_per_step(self.max_speed)) + 1)
+
+    @property
+    def runup(self) -> float:
+        """Seconds from standstill to the scenario's start: the fastest start speed at the run-up rate."""
+        return self.initial_speed[1] / self.runup_acceleration
+
+    def runup_distance(self, speed: float) -> float:
+        """Metres a vehicle covers in the run-up: it accelerates to ``speed``, then cruises."""
+        return speed * self.runup - speed**2 / (2 * self.runup_acceleration)
 
     def acceleration_cells(self) -> list[int]:
         cells = []
@@ -82,7 +92,10 @@ def build_instance(automaton: SymbolicAutomaton, settings: PlanningSettings) -> 
     v_hi = math.floor(settings.cells_per_step(settings.initial_speed[1]))
     spread = math.ceil(settings.initial_spread / settings.grid)
     gap = math.ceil(settings.min_gap / settings.grid)
-    reach = (speeds[-1] - speeds[0]) + max(abs(a) for a in accels) + gap
+    runup_spread = math.ceil(
+        (settings.runup_distance(v_hi * settings.grid / settings.dt) - settings.runup_distance(v_lo * settings.grid / settings.dt)) / settings.grid
+    )
+    reach = max((speeds[-1] - speeds[0]) + max(abs(a) for a in accels), runup_spread) + gap
     vehicles = automaton.actors
     base = [
         "% scenario instance (generated)",
@@ -100,6 +113,8 @@ def build_instance(automaton: SymbolicAutomaton, settings: PlanningSettings) -> 
         *(f"{{ pos({_atom(v)},S,0) : S = -{spread}..{spread} }} = 1." for v in vehicles[1:]),
         "{ lane(V,L,0) : lane_id(L) } = 1 :- vehicle(V).",
         f"{{ vel(V,X,0) : X = {v_lo}..{v_hi}, speed(X) }} = 1 :- vehicle(V).",
+        "% cells covered in the run-up from standstill by a vehicle starting the scenario at speed X",
+        *(_runup_fact(x, settings) for x in range(v_lo, v_hi + 1)),
         "",
         "% the automaton",
         *(f"location({loc.id}).  % {loc.name}" for loc in automaton.locations),
@@ -115,6 +130,11 @@ def build_instance(automaton: SymbolicAutomaton, settings: PlanningSettings) -> 
         state.append(f"% node {node}: {guard}")
         state.extend(_guard_rules(node, guard, numbering, settings))
     return "\n".join(base) + "\n", "\n".join(state) + "\n"
+
+
+def _runup_fact(cells_per_step: int, settings: PlanningSettings) -> str:
+    metres = settings.runup_distance(cells_per_step * settings.grid / settings.dt)
+    return f"runup({cells_per_step},{math.floor(metres / settings.grid)},{math.ceil(metres / settings.grid)})."
 
 
 def _atom(name: str) -> str:

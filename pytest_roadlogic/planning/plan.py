@@ -24,6 +24,9 @@ class Plan:
     # (step, transition id) for every automaton transition the plan takes, in order
     transitions: list[tuple[int, int]]
     seed: int = 0
+    # seconds and acceleration of the run-up from standstill that the plan was made safe for
+    runup: float = 7.0
+    runup_acceleration: float = 2.0
     index: int = 0  # 0 for the first plan of a solve, 1 for the next one, ...
     stats: dict[str, float] = field(default_factory=dict)
 
@@ -43,6 +46,8 @@ class Plan:
             "dt": self.dt,
             "lanes": self.lanes,
             "seed": self.seed,
+            "runup": self.runup,
+            "runup_acceleration": self.runup_acceleration,
             "index": self.index,
             "horizon": self.horizon,
             "transitions": [{"step": s, "transition": t} for s, t in self.transitions],
@@ -58,6 +63,8 @@ class Plan:
             states={v: [PlanState(**s) for s in states] for v, states in data["states"].items()},
             transitions=[(t["step"], t["transition"]) for t in data["transitions"]],
             seed=data.get("seed", 0),
+            runup=data.get("runup", 7.0),
+            runup_acceleration=data.get("runup_acceleration", 2.0),
             index=data.get("index", 0),
             stats=data.get("stats", {}),
         )

@@ -147,4 +147,5 @@ class Planner:
         transitions.sort()
         stats = dict(self.stats)
         stats["horizon"] = horizon
-        return Plan(dt=s.dt, lanes=s.lanes, states=states, transitions=transitions, seed=self.seed, index=index, stats=stats)
+        return Plan(dt=s.dt, lanes=s.lanes, states=states, transitions=transitions, seed=self.seed, index=index, stats=stats,
+                    runup=s.runup, runup_acceleration=s.runup_acceleration)

@@ -156,13 +156,15 @@ class FrenetixDriver:
         if not candidates:
             self.fallbacks += 1
             return Trajectory.standing(state, 2)
-        ranked = sorted(candidates, key=lambda t: self._tracking_cost(time, t) + t.cost)
-        for candidate in ranked[:40]:
-            trajectory = self._copy(candidate)
-            if self._safe(trajectory, others):
+        ranked = sorted(candidates, key=lambda t: self._tracking_cost(time, t) + t.cost)[:40]
+        trajectories = [self._copy(candidate) for candidate in ranked]
+        road_now = self._road_violation(Trajectory.standing(state))
+        for trajectory in trajectories:
+            if not self._collides(trajectory, others) and self._road_violation(trajectory) <= road_now + 0.02:
                 return trajectory
+        # Nothing fully safe: prefer not colliding, then the least road violation, then tracking.
         self.fallbacks += 1
-        return self._copy(min(candidates, key=lambda t: float(np.array(t.cartesian.v)[-1])))
+        return min(trajectories, key=lambda t: (self._collides(t, others), round(self._road_violation(t), 2)))
 
     def _samples(self, time: float, state: VehicleState, initial) -> np.ndarray:
         rows = []
@@ -203,14 +205,22 @@ class FrenetixDriver:
             acceleration=np.array(candidate.cartesian.a, copy=True),
         )
 
-    def _safe(self, trajectory: Trajectory, others: dict[str, Trajectory]) -> bool:
-        steps = min(len(trajectory.x), int(round(self.tracked / self.dt)) + 1)
-        half_width = CAR_WIDTH / 2
-        if trajectory.y[:steps].min() - half_width < 0 or trajectory.y[:steps].max() + half_width > self.road.width:
-            return False
+    def _steps(self, trajectory: Trajectory) -> int:
+        return min(len(trajectory.x), int(round(self.tracked / self.dt)) + 1)
+
+    def _road_violation(self, trajectory: Trajectory) -> float:
+        """How far (m) the rotated vehicle rectangle reaches beyond the road edges, at worst."""
+        steps = self._steps(trajectory)
+        heading = trajectory.heading[:steps]
+        half = CAR_WIDTH / 2 * np.abs(np.cos(heading)) + CAR_LENGTH / 2 * np.abs(np.sin(heading)) + 0.1
+        y = trajectory.y[:steps]
+        return float(max(0.0, (half - y).max(), (y + half - self.road.width).max()))
+
+    def _collides(self, trajectory: Trajectory, others: dict[str, Trajectory]) -> bool:
+        steps = self._steps(trajectory)
         for other in others.values():
             for k in range(1, steps):
                 j = min(k, len(other.x) - 1)
                 if abs(trajectory.x[k] - other.x[j]) < CAR_LENGTH + 0.5 and abs(trajectory.y[k] - other.y[j]) < CAR_WIDTH + 0.2:
-                    return False
-        return True
+                    return True
+        return False

@@ -2,13 +2,14 @@
 
 Every vehicle starts from standstill (as in the paper). The plan's step 0 is the moment the
 scenario starts, with the vehicles already moving, so the simulation begins with a *run-up*: all
-vehicles accelerate from rest and reach their planned step-0 states together at ``runup`` seconds.
-They all cover the same distance in the run-up, so the gaps at standstill equal the planned gaps
-at step 0 (which the planner already keeps safe).
+vehicles leave standstill together, accelerate at one common rate until each reaches its own
+step-0 speed, then cruise, arriving at their step-0 states together at ``runup`` seconds. Two
+vehicles are equally fast while both accelerate and one pulls away (or closes in) after, so every
+gap changes monotonically; the planner has made it safe at both ends (asp/domain.lp).
 
 After the run-up the reference passes through every plan waypoint (position and speed, by cubic
 Hermite interpolation) and moves laterally to the planned lane; a lane change between plan steps
-k-1 and k is a smooth 2 s move centred half-way between them, so the centre crosses the lane line
+k-1 and k is a smooth 3 s move centred half-way between them, so the centre crosses the lane line
 between the two steps, as the plan says.
 """
 
@@ -21,8 +22,7 @@ import numpy as np
 from ..planning.plan import Plan
 from .road import Road
 
-RUNUP_MAX_ACCELERATION = 2.5  # m/s^2
-LANE_CHANGE_DURATION = 2.0  # s
+LANE_CHANGE_DURATION = 3.0  # s; fits between two lane changes (3 planning steps apart)
 TAIL = 2.0  # s simulated after the plan's last step
 
 
@@ -42,7 +42,7 @@ class Reference:
 
     vehicle: str
     runup: float
-    runup_distance: float
+    runup_acceleration: float
     waypoints: list[Waypoint]
     road: Road
     dt: float
@@ -52,6 +52,9 @@ class Reference:
         self._pos = np.array([w.position for w in self.waypoints])
         self._vel = np.array([w.speed for w in self.waypoints])
         self._lanes = [w.lane for w in self.waypoints]
+        speed, rate = self._vel[0], self.runup_acceleration
+        self._cruise_from = speed / rate  # seconds into the run-up when the vehicle stops accelerating
+        self.runup_distance = speed * self.runup - speed**2 / (2 * rate)
         self.start_position = self._pos[0] - self.runup_distance
 
     @property
@@ -67,11 +70,15 @@ class Reference:
     def _evaluate(self, t: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         s = np.empty_like(t)
         v = np.empty_like(t)
-        # run-up: quintic from rest to (position, speed) of step 0 with zero end acceleration
         run = t < self.runup
         if run.any():
-            s[run], v[run] = _quintic(np.clip(t[run], 0, None), self.runup, self.runup_distance, self._vel[0])
-            s[run] += self.start_position
+            tr = np.clip(t[run], 0, None)
+            rate, speed = self.runup_acceleration, self._vel[0]
+            accelerating = tr < self._cruise_from
+            s[run] = self.start_position + np.where(
+                accelerating, rate * tr**2 / 2, speed**2 / (2 * rate) + speed * (tr - self._cruise_from)
+            )
+            v[run] = np.where(accelerating, rate * tr, speed)
         plan = (~run) & (t <= self._times[-1])
         if plan.any():
             s[plan], v[plan] = _hermite(t[plan], self._times, self._pos, self._vel)
@@ -95,49 +102,14 @@ class Reference:
         return y
 
 
-def _quintic(t: np.ndarray, duration: float, distance: float, end_speed: float) -> tuple[np.ndarray, np.ndarray]:
-    """Rest-to-rest-acceleration quintic: s(0)=v(0)=a(0)=0, s(T)=D, v(T)=v, a(T)=0."""
-    T, D, V = duration, distance, end_speed
-    # s = c3 t^3 + c4 t^4 + c5 t^5 solving the three end conditions
-    A = np.array([[T**3, T**4, T**5], [3 * T**2, 4 * T**3, 5 * T**4], [6 * T, 12 * T**2, 20 * T**3]])
-    c3, c4, c5 = np.linalg.solve(A, np.array([D, V, 0.0]))
-    return c3 * t**3 + c4 * t**4 + c5 * t**5, 3 * c3 * t**2 + 4 * c4 * t**3 + 5 * c5 * t**4
-
-
-def _quintic_ok(duration: float, distance: float, end_speed: float) -> bool:
-    t = np.linspace(0, duration, 60)
-    s, v = _quintic(t, duration, distance, end_speed)
-    a = np.gradient(v, t)
-    return bool(v.min() >= -1e-6 and a.max() <= RUNUP_MAX_ACCELERATION and a.min() >= -RUNUP_MAX_ACCELERATION)
-
-
-def runup(speeds: list[float]) -> tuple[float, float]:
-    """The shortest run-up time and a common distance that every vehicle can drive comfortably."""
-    for duration in np.arange(2.0, 40.0, 0.5):
-        feasible = None
-        for v in speeds:
-            ds = np.linspace(0, v * duration, 80)
-            ok = ds[[_quintic_ok(duration, d, v) for d in ds]]
-            if ok.size == 0:
-                feasible = None
-                break
-            interval = (ok.min(), ok.max())
-            feasible = interval if feasible is None else (max(feasible[0], interval[0]), min(feasible[1], interval[1]))
-            if feasible[0] > feasible[1]:
-                break
-        if feasible is not None and feasible[0] <= feasible[1]:
-            return float(duration), float((feasible[0] + feasible[1]) / 2)
-    raise ValueError(f"no comfortable run-up to the speeds {speeds}")
-
-
 def references(plan: Plan, road: Road) -> dict[str, Reference]:
-    duration, distance = runup([plan.at(v, 0).speed for v in plan.vehicles])
+    duration = plan.runup
     result = {}
     for vehicle in plan.vehicles:
         waypoints = [
             Waypoint(duration + k * plan.dt, s.position, s.lane, s.speed) for k, s in enumerate(plan.states[vehicle])
         ]
-        result[vehicle] = Reference(vehicle, duration, distance, waypoints, road, plan.dt)
+        result[vehicle] = Reference(vehicle, duration, plan.runup_acceleration, waypoints, road, plan.dt)
     return result
 
 
