@@ -12,7 +12,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from ..automaton.guards import LANE, POSITION, SPEED, And, Bound, Guard, Not, Or
+from ..automaton.guards import POSITION, SPEED, And, Bound, Guard, Not, Or
 from ..automaton.model import SymbolicAutomaton
 
 
