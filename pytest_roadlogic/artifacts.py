@@ -36,7 +36,7 @@ def write_artifacts(outcome: Outcome, directory: str | Path) -> dict[str, Path]:
     return {
         "plan": write_text(directory / "plan.json", outcome.plan.to_json()),
         "trace": write_text(directory / "trace.csv", outcome.simulation.trace.to_csv()),
-        "commonroad": write_commonroad_xml(outcome.simulation, directory / "scenario.xml", name),
+        "commonroad": write_commonroad_xml(outcome.simulation, directory / "scenario.xml"),
         "plot": plot_simulation(outcome.simulation, outcome.verdict, directory / "trajectories.png", title=name),
         "verdict": write_text(directory / "verdict.json", json.dumps(verdict, indent=2)),
     }

@@ -32,7 +32,6 @@ def pytest_addoption(parser: pytest.Parser) -> None:
 
 
 def pytest_configure(config: pytest.Config) -> None:
-    _CONFIG["config"] = config
     config.addinivalue_line("markers", "roadlogic: a scenario collected from an .osc file")
     config.addinivalue_line("markers", "slow: a long scenario or suite; deselect with -m 'not slow'")
 
@@ -41,18 +40,6 @@ def pytest_collect_file(file_path: Path, parent: pytest.Collector):
     if file_path.suffix == ".osc":
         return OscFile.from_parent(parent, path=file_path)
     return None
-
-
-def pytest_collectreport(report: pytest.CollectReport) -> None:
-    # A broken .osc file is reported, but must not stop the other scenarios from running (pytest
-    # interrupts the session on collection errors otherwise). Errors elsewhere keep pytest's rule.
-    if report.failed and report.nodeid.endswith(".osc"):
-        config = _CONFIG.get("config")
-        if config is not None:
-            config.option.continue_on_collection_errors = True
-
-
-_CONFIG: dict[str, pytest.Config] = {}
 
 
 def _option(config: pytest.Config, name: str, cast=str):
@@ -65,6 +52,10 @@ class OscFile(pytest.File):
         try:
             osc = parse_file(self.path)
         except OscError as error:
+            # A broken .osc file is reported, but must not stop the other scenarios from running
+            # (pytest interrupts the session on collection errors otherwise). Errors in other
+            # kinds of files keep pytest's rule.
+            self.config.option.continue_on_collection_errors = True
             raise self.CollectError(error.report()) from None
         for scenario in osc.scenarios:
             if scenario.behavior is not None:

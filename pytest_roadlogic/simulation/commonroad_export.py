@@ -15,7 +15,7 @@ FIRST_OBSTACLE_ID = 1000
 FIRST_PROBLEM_ID = 2000
 
 
-def commonroad_scenario(simulation: Simulation, name: str = "roadlogic"):
+def commonroad_scenario(simulation: Simulation):
     from commonroad.common.common_scenario import ScenarioID
     from commonroad.common.util import AngleInterval, Interval
     import shapely
@@ -62,14 +62,14 @@ def commonroad_scenario(simulation: Simulation, name: str = "roadlogic"):
     return scenario, problems
 
 
-def write_commonroad_xml(simulation: Simulation, path: str | Path, name: str = "roadlogic") -> Path:
+def write_commonroad_xml(simulation: Simulation, path: str | Path) -> Path:
     """Write the scenario as CommonRoad XML, atomically (never a half-written file)."""
     from commonroad.common.file_writer import CommonRoadFileWriter, OverwriteExistingFile
     from commonroad.common.util import FileFormat
     from commonroad.scenario.scenario import Tag
 
     path = Path(path)
-    scenario, problems = commonroad_scenario(simulation, name)
+    scenario, problems = commonroad_scenario(simulation)
     writer = CommonRoadFileWriter(
         scenario, problems, author="pytest-roadlogic", affiliation="", source="pytest-roadlogic",
         tags={Tag.HIGHWAY, Tag.MULTI_LANE}, file_format=FileFormat.XML,

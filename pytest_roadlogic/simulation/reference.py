@@ -45,7 +45,6 @@ class Reference:
     runup_acceleration: float
     waypoints: list[Waypoint]
     road: Road
-    dt: float
 
     def __post_init__(self) -> None:
         self._times = np.array([w.time for w in self.waypoints])
@@ -109,7 +108,7 @@ def references(plan: Plan, road: Road) -> dict[str, Reference]:
         waypoints = [
             Waypoint(duration + k * plan.dt, s.position, s.lane, s.speed) for k, s in enumerate(plan.states[vehicle])
         ]
-        result[vehicle] = Reference(vehicle, duration, plan.runup_acceleration, waypoints, road, plan.dt)
+        result[vehicle] = Reference(vehicle, duration, plan.runup_acceleration, waypoints, road)
     return result
 
 
