@@ -46,22 +46,34 @@ def osc_files(paths: list[Path]) -> list[Path]:
     return found
 
 
-def check_file(path: Path, syntax_only: bool = False, lanes: int = 3) -> list[str]:
-    """The formatted problems of one file (empty when it is fine); never raises for bad input."""
+def check_file(path: Path, syntax_only: bool = False, lanes: int = 3) -> tuple[bool, str]:
+    """Whether the file is free of errors, and the formatted report; never raises for bad input.
+
+    Beyond the front end's checks, each scenario's automaton is built, so that a construct the
+    automaton cannot translate is reported here rather than when the scenario runs.
+    """
     from .automaton import build_automaton
-    from .frontend import parse_file
+    from .frontend import check_file as check, parse_file
 
     try:
-        osc = parse_file(path)
-        if not syntax_only:
-            for scenario in osc.scenarios:
-                if scenario.behavior is not None:
-                    build_automaton(scenario, lanes)
+        if syntax_only:
+            parse_file(path)
+            return True, ""
+        checked = check(path, lanes)
+        reports = [checked.report()] if checked.diagnostics else []
+        ok = not checked.errors
+        for scenario in checked.scenarios if ok else ():
+            if scenario.behavior is not None:
+                try:
+                    build_automaton(scenario, lanes, space=checked.spaces[scenario.name])
+                except OscError as error:
+                    ok = False
+                    reports.append(OscError(error.diagnostics, sources=checked.sources).report())
+        return ok, "\n".join(reports)
     except OscError as error:
-        return [error.report()]
+        return False, error.report()
     except Exception as error:  # a bug of ours must not hide the other files' results
-        return [f"{path}:1:1: error: internal error while checking ({type(error).__name__}: {error}); please report it"]
-    return []
+        return False, f"{path}:1:1: error: internal error while checking ({type(error).__name__}: {error}); please report it"
 
 
 def _check(args: argparse.Namespace) -> int:
@@ -73,10 +85,11 @@ def _check(args: argparse.Namespace) -> int:
     files = osc_files(args.paths)
     failed = 0
     for path in files:
-        problems = check_file(path, args.syntax_only, args.lanes)
-        if problems:
+        ok, report = check_file(path, args.syntax_only, args.lanes)
+        if report:
+            print(report)
+        if not ok:
             failed += 1
-            print("\n".join(problems))
     print(f"{len(files)} files, {len(files) - failed} ok, {failed} with errors")
     return 1 if failed else 0
 
@@ -86,7 +99,7 @@ def _run(args: argparse.Namespace) -> int:
     from .pipeline import load_scenario, run_scenario
 
     try:
-        scenario = load_scenario(args.file, args.scenario)
+        scenario = load_scenario(args.file, args.scenario, args.lanes)
         outcome = run_scenario(scenario, seed=args.seed, settings=PlanningSettings(lanes=args.lanes), max_tries=args.tries)
     except OscError as error:
         print(error.report(), file=sys.stderr)

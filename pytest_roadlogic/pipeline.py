@@ -11,7 +11,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from .automaton import SymbolicAutomaton, build_automaton
-from .frontend import Scenario, parse_file
+from .frontend import Scenario, load_file
+from .frontend.errors import Diagnostic, OscError, SourceLocation
 from .monitor import Verdict, monitor
 from .planning import Plan, Planner, PlanningSettings
 from .simulation import Simulation, simulate
@@ -31,13 +32,13 @@ class Outcome:
     seconds: dict[str, float] = field(default_factory=dict)  # stage -> seconds, summed over tries
 
 
-def load_scenario(path: str | Path, name: str | None = None) -> Scenario:
-    osc = parse_file(path)
-    if not osc.scenarios:
-        from .frontend.errors import Diagnostic, OscError, SourceLocation
-
-        raise OscError([Diagnostic(SourceLocation(str(path), 1, 1), "the file declares no scenario")])
-    return osc.scenario(name) if name else osc.scenarios[0]
+def load_scenario(path: str | Path, name: str | None = None, lanes: int = 3) -> Scenario:
+    """A checked scenario of ``path`` (the first one with a behavior unless ``name`` is given)."""
+    checked = load_file(path, lanes)
+    runnable = [s for s in checked.scenarios if s.behavior is not None]
+    if not runnable:
+        raise OscError([Diagnostic(SourceLocation(str(path), 1, 1), "the file declares no scenario with a `do` behavior")])
+    return checked.file.scenario(name) if name else runnable[0]
 
 
 def run_scenario(

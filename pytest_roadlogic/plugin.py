@@ -14,7 +14,7 @@ from pathlib import Path
 
 import pytest
 
-from .frontend import OscError, Scenario, parse_file
+from .frontend import OscError, Scenario, check_file
 from .planning import NoPlanError, PlanningSettings
 
 DEFAULT_SEED = 1
@@ -47,17 +47,24 @@ def _option(config: pytest.Config, name: str, cast=str):
     return cast(value if value is not None else config.getini(f"roadlogic_{name}"))
 
 
+class OscWarning(pytest.PytestWarning):
+    """A checker warning about an .osc file (an unused parameter, an idle actor)."""
+
+
 class OscFile(pytest.File):
     def collect(self):
         try:
-            osc = parse_file(self.path)
+            checked = check_file(self.path, _option(self.config, "lanes", int))
+            checked.raise_for_errors()
         except OscError as error:
             # A broken .osc file is reported, but must not stop the other scenarios from running
             # (pytest interrupts the session on collection errors otherwise). Errors in other
             # kinds of files keep pytest's rule.
             self.config.option.continue_on_collection_errors = True
             raise self.CollectError(error.report()) from None
-        for scenario in osc.scenarios:
+        for warning in checked.warnings:
+            self.warn(OscWarning(OscError([warning], sources=checked.sources).report()))
+        for scenario in checked.scenarios:
             if scenario.behavior is not None:
                 item = ScenarioItem.from_parent(self, name=scenario.name, scenario=scenario)
                 item.add_marker("roadlogic")

@@ -3,7 +3,7 @@ from pathlib import Path
 import pytest
 
 from pytest_roadlogic.automaton import build_automaton
-from pytest_roadlogic.frontend import parse_file
+from pytest_roadlogic.frontend import check_file
 
 ROOT = Path(__file__).resolve().parent.parent
 OVERTAKE = ROOT / "scenarios" / "overtake.osc"
@@ -11,7 +11,7 @@ OVERTAKE = ROOT / "scenarios" / "overtake.osc"
 
 @pytest.fixture(scope="session")
 def overtake():
-    return parse_file(OVERTAKE).scenarios[0]
+    return check_file(OVERTAKE).scenarios[0]
 
 
 @pytest.fixture(scope="session")

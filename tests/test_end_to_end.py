@@ -94,7 +94,7 @@ def test_roadlogic_check_reports_every_bad_file_with_a_summary(tmp_path):
     (tmp_path / "sub" / "unit.osc").write_text("scenario s:\n  a: car\n  b: car\n  do a.drive() with:\n    position(3s, behind: b, at: end)\n")
     result = run_cli("check", str(tmp_path))
     assert result.returncode == 1
-    assert f"{tmp_path / 'sub' / 'unit.osc'}:5:14: error: expected a length" in result.stdout
+    assert f"{tmp_path / 'sub' / 'unit.osc'}:5:14: error: position() expects a length for distance, got a time" in result.stdout
     assert result.stdout.strip().endswith("2 files, 1 ok, 1 with errors")
 
 

@@ -10,7 +10,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from pytest_roadlogic.automaton import build_automaton
-from pytest_roadlogic.frontend import OscError, parse_text
+from pytest_roadlogic.frontend import OscError, check_text
 from tests.conftest import OVERTAKE
 
 SOURCE = OVERTAKE.read_text()
@@ -46,9 +46,11 @@ def mutated(draw):
 def test_mutated_files_check_or_fail_with_a_located_error(text):
     started = time.perf_counter()
     try:
-        for scenario in parse_text(text, "m.osc").scenarios:
+        checked = check_text(text, "m.osc")
+        checked.raise_for_errors()
+        for scenario in checked.scenarios:
             if scenario.behavior is not None:
-                build_automaton(scenario)
+                build_automaton(scenario, space=checked.spaces[scenario.name])
     except OscError as error:
         assert error.diagnostics, "an OscError must carry at least one diagnostic"
         for diagnostic in error.diagnostics:

@@ -77,10 +77,10 @@ def test_instance_program_lists_the_automaton_and_its_guards(overtake_automaton)
 
 def test_an_impossible_scenario_has_no_plan():
     from pytest_roadlogic.automaton import build_automaton
-    from pytest_roadlogic.frontend import parse_text
+    from pytest_roadlogic.frontend import check_text
     from pytest_roadlogic.planning import NoPlanError
 
     text = "scenario s:\n  a: car\n  do a.drive() with:\n    speed([50..60]mps, at: end)\n"
-    automaton = build_automaton(parse_text(text).scenarios[0])
+    automaton = build_automaton(check_text(text).scenarios[0])
     with pytest.raises(NoPlanError):
         Planner(automaton, PlanningSettings(max_horizon=6)).first()

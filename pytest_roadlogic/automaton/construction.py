@@ -18,7 +18,8 @@ from dataclasses import dataclass, field
 from typing import Hashable
 
 from ..frontend import model
-from ..frontend.errors import error_at
+from ..frontend.errors import OscError, error_at
+from ..frontend.parameters import ParameterSpace, parameter_space
 from .guards import Guard, conjunction
 from .model import Location, SymbolicAutomaton, Transition
 from .modifiers import check_behavior_arguments, phase_guards
@@ -50,20 +51,40 @@ class _Fragment:
         return [e for e in self.edges if e.source == key]
 
 
-def build_automaton(scenario: model.Scenario, lanes: int = DEFAULT_LANES) -> SymbolicAutomaton:
-    """The automaton of ``scenario`` on a road with ``lanes`` lanes (needed for absolute lanes)."""
+def build_automaton(
+    scenario: model.Scenario,
+    lanes: int = DEFAULT_LANES,
+    values: dict[str, object] | None = None,
+    space: ParameterSpace | None = None,
+) -> SymbolicAutomaton:
+    """The automaton of a checked ``scenario`` on a road with ``lanes`` lanes.
+
+    ``values`` fixes logical parameters (the refined strategy samples them); a parameter left out
+    keeps its range, which the planner then chooses within (the base strategy).
+    """
     if scenario.behavior is None:
         raise error_at(scenario.location, f"scenario {scenario.name!r} has no `do` behavior", hint="add do: with what the actors must do")
+    if scenario.fields and not scenario.actors and not scenario.parameters:
+        raise ValueError("build_automaton needs a checked scenario: load it with frontend.check_file or load_file")
+    if space is None:
+        space, diagnostics = parameter_space(scenario.parameters, scenario.constraints)
+        errors = [d for d in diagnostics if d.severity == "error"]
+        if errors:
+            raise OscError(errors)
+    env = space.environment(values)
     counter = itertools.count()
-    fragment = _translate(scenario.behavior, scenario, lanes, counter)
+    fragment = _translate(scenario.behavior, scenario, lanes, counter, env)
     return _finish(fragment, tuple(a.name for a in scenario.actors))
 
 
-def _translate(behavior: model.Behavior, scenario: model.Scenario, lanes: int, counter) -> _Fragment:
+def _translate(behavior: model.Behavior, scenario: model.Scenario, lanes: int, counter, env: dict) -> _Fragment:
     if isinstance(behavior, model.Invocation):
-        return _atomic(behavior, scenario, lanes, counter)
+        return _atomic(behavior, scenario, lanes, counter, env)
+    if not isinstance(behavior, model.Composition):
+        kind = type(behavior).__name__.lower()
+        raise error_at(behavior.location, f"not supported yet by the automaton: {kind}")
     check_behavior_arguments(behavior)
-    children = [_translate(child, scenario, lanes, counter) for child in behavior.children]
+    children = [_translate(child, scenario, lanes, counter, env) for child in behavior.children]
     if not children:
         raise error_at(behavior.location, f"{behavior.operator} has no members")
     if behavior.operator == "serial":
@@ -76,8 +97,8 @@ def _translate(behavior: model.Behavior, scenario: model.Scenario, lanes: int, c
     return _one_of(children, next(counter))
 
 
-def _atomic(invocation: model.Invocation, scenario: model.Scenario, lanes: int, counter) -> _Fragment:
-    start, end = phase_guards(invocation, scenario, lanes)
+def _atomic(invocation: model.Invocation, scenario: model.Scenario, lanes: int, counter, env: dict) -> _Fragment:
+    start, end = phase_guards(invocation, scenario, lanes, env)
     uid = next(counter)
     i, s, f = ("i", uid), ("s", uid), ("f", uid)
     labelled = invocation.label is not None

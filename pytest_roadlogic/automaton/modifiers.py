@@ -11,19 +11,21 @@ from __future__ import annotations
 import math
 
 from ..frontend import model
+from ..frontend.checker import LANE_CONVENTION
 from ..frontend.errors import OscError, error_at
 from ..frontend.units import LENGTH, SPEED
+from ..frontend.values import EvaluationError, Interval, evaluate
 from .guards import LANE, POSITION, SPEED as SPEED_Q, TRUE, Bound, Guard, Term, conjunction
 
-LANE_CONVENTION = "lanes are numbered from 1 on the right (lane(1) is the rightmost); lane(k, from: left) counts from the left"
 SUPPORTED_ACTIONS = ("drive",)
 SUPPORTED_MODIFIERS = ("lane", "position", "speed")
 # A single speed value cannot be met exactly by a continuous trace; it is read as value +- this.
 SPEED_TOLERANCE = 0.5
 
 
-def phase_guards(invocation: model.Invocation, scenario: model.Scenario, lanes: int) -> tuple[Guard, Guard]:
-    """The (start, end) guards of one atomic phase."""
+def phase_guards(invocation: model.Invocation, scenario: model.Scenario, lanes: int, env: dict | None = None) -> tuple[Guard, Guard]:
+    """The (start, end) guards of one atomic phase; ``env`` gives the parameters' values or ranges."""
+    env = env or {}
     actor = _actor(invocation, scenario)
     if invocation.action not in SUPPORTED_ACTIONS:
         raise error_at(
@@ -36,7 +38,7 @@ def phase_guards(invocation: model.Invocation, scenario: model.Scenario, lanes: 
     start: list[Guard] = []
     end: list[Guard] = []
     for modifier in invocation.modifiers:
-        anchor, guard = _modifier_guard(modifier, actor, scenario, lanes)
+        anchor, guard = _modifier_guard(modifier, actor, scenario, lanes, env)
         (start if anchor == "start" else end).append(guard)
     return conjunction(start) if start else TRUE, conjunction(end) if end else TRUE
 
@@ -54,16 +56,16 @@ def _check_actor(name: str, location, scenario: model.Scenario) -> None:
         raise error_at(location, f"unknown actor {name!r}", hint=f"the scenario declares: {known}")
 
 
-def _modifier_guard(modifier: model.Modifier, actor: str, scenario: model.Scenario, lanes: int) -> tuple[str, Guard]:
+def _modifier_guard(modifier: model.Modifier, actor: str, scenario: model.Scenario, lanes: int, env: dict) -> tuple[str, Guard]:
     if modifier.name not in SUPPORTED_MODIFIERS:
         raise error_at(modifier.location, f"not supported: modifier {modifier.name!r}", hint=f"supported: {', '.join(SUPPORTED_MODIFIERS)}")
     anchor = _anchor(modifier)
     if modifier.name == "lane":
-        guard = _lane(modifier, actor, scenario, lanes)
+        guard = _lane(modifier, actor, scenario, lanes, env)
     elif modifier.name == "position":
-        guard = _position(modifier, actor, scenario)
+        guard = _position(modifier, actor, scenario, env)
     else:
-        guard = _speed(modifier, actor, scenario)
+        guard = _speed(modifier, actor, scenario, env)
     return anchor, guard
 
 
@@ -107,7 +109,7 @@ def _check_arguments(modifier: model.Modifier, allowed: tuple[str, ...], positio
         raise error_at(modifier.positional()[positional].location, f"too many positional arguments to {modifier.name}()")
 
 
-def _lane(modifier: model.Modifier, actor: str, scenario: model.Scenario, lanes: int) -> Guard:
+def _lane(modifier: model.Modifier, actor: str, scenario: model.Scenario, lanes: int, env: dict) -> Guard:
     _check_arguments(modifier, ("same_as", "left_of", "right_of", "from", "at"), positional=1)
     relation = _reference(modifier, ("same_as", "left_of", "right_of"), scenario)
     positional = modifier.positional()
@@ -120,10 +122,10 @@ def _lane(modifier: model.Modifier, actor: str, scenario: model.Scenario, lanes:
         return Bound(term, low, high, modifier.location)
     if not positional:
         raise error_at(modifier.location, "lane() needs a lane number or same_as:/left_of:/right_of:", hint=LANE_CONVENTION)
-    value = positional[0].value
-    if not isinstance(value, model.Quantity) or value.dimension is not None or not float(value.value).is_integer():
-        raise error_at(positional[0].location, "a lane number must be a whole number", hint=LANE_CONVENTION)
-    number = int(value.value)
+    value = _evaluate(positional[0], env)
+    if value.dimension is not None or not value.is_point or not float(value.low).is_integer():
+        raise error_at(positional[0].location, "a lane number must be one whole number", hint=LANE_CONVENTION)
+    number = int(value.low)
     side = modifier.argument("from")
     from_left = side is not None and isinstance(side.value, model.Name) and side.value.name == "left"
     if side is not None and not (isinstance(side.value, model.Name) and side.value.name in ("left", "right")):
@@ -134,7 +136,7 @@ def _lane(modifier: model.Modifier, actor: str, scenario: model.Scenario, lanes:
     return Bound(Term(LANE, actor), index, index, modifier.location)
 
 
-def _position(modifier: model.Modifier, actor: str, scenario: model.Scenario) -> Guard:
+def _position(modifier: model.Modifier, actor: str, scenario: model.Scenario, env: dict) -> Guard:
     _check_arguments(modifier, ("behind", "ahead_of", "at"), positional=1)
     relation = _reference(modifier, ("behind", "ahead_of"), scenario)
     if relation is None:
@@ -142,7 +144,7 @@ def _position(modifier: model.Modifier, actor: str, scenario: model.Scenario) ->
     positional = modifier.positional()
     if not positional:
         raise error_at(modifier.location, "position() needs a distance, e.g. position([10..20]m, behind: v2)")
-    low, high = _interval(positional[0], LENGTH, "a length such as 10m or [10..20]m")
+    low, high = _interval(positional[0], LENGTH, "a length such as 10m or [10..20]m", env)
     if low < 0:
         raise error_at(positional[0].location, "a distance must not be negative", hint="use behind: instead of ahead_of: (or the reverse)")
     keyword, other = relation
@@ -151,30 +153,35 @@ def _position(modifier: model.Modifier, actor: str, scenario: model.Scenario) ->
     return Bound(term, low, high, modifier.location)
 
 
-def _speed(modifier: model.Modifier, actor: str, scenario: model.Scenario) -> Guard:
+def _speed(modifier: model.Modifier, actor: str, scenario: model.Scenario, env: dict) -> Guard:
     _check_arguments(modifier, ("at",), positional=1)
     positional = modifier.positional()
     if not positional:
         raise error_at(modifier.location, "speed() needs a speed, e.g. speed([20..30]kph)")
-    low, high = _interval(positional[0], SPEED, "a speed such as 20mps or [50..80]kph")
+    low, high = _interval(positional[0], SPEED, "a speed such as 20mps or [50..80]kph", env)
     if low == high:
         low, high = low - SPEED_TOLERANCE, high + SPEED_TOLERANCE
     return Bound(Term(SPEED_Q, actor), max(0.0, low), high, modifier.location)
 
 
-def _interval(argument: model.Argument, dimension: str, example: str) -> tuple[float, float]:
-    value = argument.value
-    if isinstance(value, model.Range):
-        low, high = value.low, value.high
-    elif isinstance(value, model.Quantity):
-        low = high = value
-    else:
-        raise error_at(argument.location, f"expected {example}")
-    for bound in (low, high):
-        if bound.dimension != dimension:
-            got = bound.dimension or "a plain number"
-            raise error_at(bound.location, f"expected {example}, got {got}", hint="add a unit of the right kind")
-    return low.value, high.value
+def _evaluate(argument: model.Argument, env: dict) -> Interval:
+    try:
+        value = evaluate(argument.value, env)
+    except EvaluationError as error:
+        raise error_at(error.location, error.message, error.hint) from None
+    if not isinstance(value, Interval):
+        raise error_at(argument.location, "expected a number or a quantity")
+    return value
+
+
+def _interval(argument: model.Argument, dimension: str, example: str, env: dict) -> tuple[float, float]:
+    value = _evaluate(argument, env)
+    if value.dimension != dimension:
+        got = value.dimension or "a plain number"
+        raise error_at(argument.location, f"expected {example}, got {got}", hint="add a unit of the right kind")
+    if not (math.isfinite(value.low) and math.isfinite(value.high)):
+        raise error_at(argument.location, f"expected {example}, got an unbounded value", hint="give the parameter a range")
+    return value.low, value.high
 
 
 def check_behavior_arguments(composition: model.Composition) -> None:

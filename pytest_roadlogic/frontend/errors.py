@@ -57,12 +57,18 @@ class OscError(Exception):
 
     diagnostics: list[Diagnostic] = field(default_factory=list)
     source_text: str | None = None
+    # path -> text, for reports that span several files (a file and its imports)
+    sources: dict[str, str] = field(default_factory=dict)
 
     def __post_init__(self) -> None:
         super().__init__(self.report())
 
     def report(self) -> str:
-        return "\n".join(d.format(self.source_text) for d in self.diagnostics)
+        return "\n".join(d.format(self.sources.get(d.location.path, self.source_text)) for d in self.diagnostics)
+
+    @property
+    def errors(self) -> list[Diagnostic]:
+        return [d for d in self.diagnostics if d.severity == "error"]
 
     def __str__(self) -> str:
         return self.report()

@@ -1,12 +1,18 @@
 """Reading ``.osc`` text into the scenario model.
 
 ``parse_text`` / ``parse_file`` run the generated ANTLR parser (through ``IndentingLexer``) and turn
-the parse tree into ``model`` dataclasses. Syntax errors are collected, not printed, and raised
-together as one ``OscError``.
+the parse tree into ``model`` dataclasses. Problems are collected, not printed, and raised together
+as one ``OscError``: a user fixing a file wants every mistake in one run, not one per run.
+
+The parser judges spelling only (syntax, units, literal forms). Whether names exist and values have
+the right kind is the checker's job, so that ``roadlogic check --syntax-only`` can read files
+written for other tools' libraries.
 """
 
 from __future__ import annotations
 
+import ast
+import math
 from pathlib import Path
 
 from antlr4 import CommonTokenStream, InputStream
@@ -18,6 +24,8 @@ from .generated.OpenScenario2Parser import OpenScenario2Parser as P
 from .lexer import IndentingLexer
 from .units import UNITS, split_physical_literal
 
+ACTOR_TYPES = ("car", "truck", "vehicle", "stationary_object")
+
 
 class _CollectingListener(ErrorListener):
     def __init__(self, path: str) -> None:
@@ -27,13 +35,20 @@ class _CollectingListener(ErrorListener):
     def syntaxError(self, recognizer, offendingSymbol, line, column, msg, e):  # noqa: N802 (ANTLR API)
         text = getattr(offendingSymbol, "text", None)
         shown = {"\n": "end of line", "<EOF>": "end of file", "": "end of block"}.get(text, text)
+        if text is not None and text.startswith((" ", "\t")):
+            shown = "an indented block"
         message = f"syntax error at {shown!r}: {msg}" if shown else f"syntax error: {msg}"
-        self.diagnostics.append(Diagnostic(SourceLocation(self.path, line, column + 1), message))
+        hint = None
+        if "INDENT" in msg or "DEDENT" in msg or shown == "an indented block":
+            hint = "check the indentation: a block starts after a line ending in ':' and is indented further"
+        self.diagnostics.append(Diagnostic(SourceLocation(self.path, line, column + 1), message, hint))
 
 
 def parse_text(text: str, path: str = "<string>") -> model.OscFile:
     """Parse OS2 source text; raise ``OscError`` naming every syntax error found."""
     text = text.replace("\r\n", "\n").replace("\r", "\n")
+    if text.startswith("\ufeff"):
+        text = text[1:]  # a byte-order mark some editors write
     lexer = IndentingLexer(InputStream(text), path)
     listener = _CollectingListener(path)
     lexer.removeErrorListeners()
@@ -44,9 +59,12 @@ def parse_text(text: str, path: str = "<string>") -> model.OscFile:
     tree = parser.oscFile()
     diagnostics = lexer.diagnostics + listener.diagnostics
     if diagnostics:
-        diagnostics.sort(key=lambda d: (d.location.line, d.location.column))
-        raise OscError(diagnostics, text)
-    return _Builder(path, text).file(tree)
+        raise OscError(_sorted(diagnostics), text)
+    builder = _Builder(path, text)
+    result = builder.file(tree)
+    if builder.diagnostics:
+        raise OscError(_sorted(builder.diagnostics), text)
+    return result
 
 
 def parse_file(path: str | Path) -> model.OscFile:
@@ -54,74 +72,280 @@ def parse_file(path: str | Path) -> model.OscFile:
     try:
         text = path.read_text(encoding="utf-8")
     except UnicodeDecodeError as exc:
-        raise OscError([Diagnostic(SourceLocation(str(path), 1, 1), f"the file is not valid UTF-8 ({exc.reason})")]) from None
+        raise OscError([Diagnostic(SourceLocation(str(path), 1, 1), f"the file is not valid UTF-8 ({exc.reason})", "save it as UTF-8")]) from None
     except OSError as exc:
         raise OscError([Diagnostic(SourceLocation(str(path), 1, 1), f"cannot read the file: {exc.strerror}")]) from None
     return parse_text(text, str(path))
 
 
+def _sorted(diagnostics: list[Diagnostic]) -> list[Diagnostic]:
+    unique = list(dict.fromkeys(diagnostics))
+    return sorted(unique, key=lambda d: (d.location.line, d.location.column))
+
+
 class _Builder:
-    """Turns parse-tree contexts into model nodes."""
+    """Turns parse-tree contexts into model nodes, collecting spelling problems as it goes."""
 
     def __init__(self, path: str, text: str) -> None:
         self.path = path
         self.text = text
+        self.diagnostics: list[Diagnostic] = []
+
+    def error(self, location: SourceLocation, message: str, hint: str | None = None) -> None:
+        self.diagnostics.append(Diagnostic(location, message, hint))
 
     def loc(self, ctx) -> SourceLocation:
-        token = ctx.start if hasattr(ctx, "start") else ctx.symbol
+        token = ctx.start if hasattr(ctx, "start") else (ctx.symbol if hasattr(ctx, "symbol") else ctx)
         return SourceLocation(self.path, token.line, token.column + 1)
 
-    def file(self, ctx: P.OscFileContext) -> model.OscFile:
-        scenarios = [self.scenario(d.scenarioDeclaration()) for d in ctx.declaration()]
-        return model.OscFile(self.path, tuple(scenarios), self.text)
+    # -------------------------------------------------------------- declarations
 
-    def scenario(self, ctx: P.ScenarioDeclarationContext) -> model.Scenario:
-        name_ctx = ctx.scenarioName()
-        actors: list[model.Actor] = []
-        behaviors: list[model.Behavior] = []
-        for member in ctx.scenarioMember():
-            if member.fieldDeclaration() is not None:
-                field = member.fieldDeclaration()
-                type_name = field.typeName().getText()
-                for ident in field.identifier():
-                    actors.append(model.Actor(ident.getText(), type_name, self.loc(ident)))
-            else:
-                behaviors.append(self.behavior(member.doDirective().behavior()))
-        if len(behaviors) > 1:
-            raise OscError(
-                [Diagnostic(behaviors[1].location, "a scenario has at most one `do`", "compose the behaviors with serial: or parallel: under one do")],
-                self.text,
-            )
-        return model.Scenario(
-            name=name_ctx.name.getText(),
-            actor_type=name_ctx.actorType.getText() if name_ctx.actorType is not None else None,
-            actors=tuple(actors),
-            behavior=behaviors[0] if behaviors else None,
-            location=self.loc(name_ctx.name),
+    def file(self, ctx: P.OscFileContext) -> model.OscFile:
+        imports: list[model.Import] = []
+        misplaced: list[model.Import] = []
+        scenarios: list[model.Scenario] = []
+        types: list[model.TypeDeclaration] = []
+        enums: list[model.EnumDeclaration] = []
+        globals_: list[model.Field] = []
+        extensions: list[model.Extension] = []
+        unsupported: list[model.Unsupported] = []
+        seen_declaration = False
+        for child in ctx.getChildren():
+            if isinstance(child, P.ImportStatementContext):
+                (misplaced if seen_declaration else imports).append(self.import_(child))
+            elif isinstance(child, P.DeclarationContext):
+                seen_declaration = True
+                decl = child.getChild(0)
+                if isinstance(decl, P.ScenarioDeclarationContext):
+                    scenarios.append(self.scenario(decl))
+                elif isinstance(decl, (P.ActorDeclarationContext, P.StructDeclarationContext)):
+                    types.append(self.type_declaration(decl))
+                elif isinstance(decl, P.EnumDeclarationContext):
+                    enums.append(
+                        model.EnumDeclaration(
+                            self.name(decl.identifier()),
+                            tuple(self.name(m.identifier()) for m in decl.enumMember()),
+                            self.loc(decl.identifier()),
+                        )
+                    )
+                elif isinstance(decl, P.GlobalDeclarationContext):
+                    globals_.extend(self.fields(decl.fieldDeclaration()))
+                elif isinstance(decl, P.ExtendDeclarationContext):
+                    target = decl.behaviorName()
+                    body = self.scenario_body(self.name(target.name), None, self.loc(target.name), decl.scenarioMember(), "scenario")
+                    extensions.append(model.Extension(body.name, body, self.loc(decl)))
+                elif isinstance(decl, P.ModifierDeclarationContext):
+                    unsupported.append(model.Unsupported("modifier declarations", self.loc(decl), "use the built-in modifiers (speed, position, lane, ...)"))
+                elif isinstance(decl, P.NamespaceStatementContext):
+                    unsupported.append(model.Unsupported("namespace", self.loc(decl), "declare names at the top level of the file"))
+                elif isinstance(decl, P.ExportStatementContext):
+                    unsupported.append(model.Unsupported("export", self.loc(decl), "every top-level declaration is visible to an importing file"))
+        return model.OscFile(
+            path=self.path,
+            scenarios=tuple(scenarios),
+            source_text=self.text,
+            imports=tuple(imports),
+            types=tuple(types),
+            enums=tuple(enums),
+            globals=tuple(globals_),
+            extensions=tuple(extensions),
+            unsupported=tuple(unsupported),
+            misplaced_imports=tuple(misplaced),
         )
 
-    def behavior(self, ctx: P.BehaviorContext) -> model.Behavior:
-        label = ctx.label.getText() if ctx.label is not None else None
+    def import_(self, ctx: P.ImportStatementContext) -> model.Import:
+        if ctx.StringLiteral() is not None:
+            return model.Import(self.string(ctx.StringLiteral().getText()), True, self.loc(ctx.StringLiteral()))
+        return model.Import(ctx.dottedName().getText(), False, self.loc(ctx.dottedName()))
+
+    def scenario(self, ctx: P.ScenarioDeclarationContext) -> model.Scenario:
+        name_ctx = ctx.behaviorName()
+        actor_type = self.name(name_ctx.actorType) if name_ctx.actorType is not None else None
+        scenario = self.scenario_body(
+            self.name(name_ctx.name), actor_type, self.loc(name_ctx.name), ctx.scenarioMember(), ctx.kind.text
+        )
+        if ctx.inheritance() is not None:
+            inheritance = ctx.inheritance()
+            parent = self.name(inheritance.parent.name)
+            extra = ()
+            if inheritance.condition is not None:
+                extra = (model.Unsupported("conditional inheritance", self.loc(inheritance.condition)),)
+            from dataclasses import replace
+
+            scenario = replace(scenario, parent=parent, unsupported=scenario.unsupported + extra)
+        return scenario
+
+    def scenario_body(self, name, actor_type, location, members, kind) -> model.Scenario:
+        fields: list[model.Field] = []
+        constraints: list = []
+        events: list[model.Event] = []
+        methods: list[model.Method] = []
+        behaviors: list[model.Behavior] = []
+        unsupported: list[model.Unsupported] = []
+        for member in members:
+            item = member.getChild(0)
+            if isinstance(item, P.FieldDeclarationContext):
+                fields.extend(self.fields(item))
+            elif isinstance(item, P.KeepConstraintContext):
+                constraints.append(self.keep(item))
+            elif isinstance(item, P.RemoveDefaultContext):
+                constraints.append(model.RemoveDefault(self.expression(item.expression()), self.loc(item)))
+            elif isinstance(item, P.EventDeclarationContext):
+                events.append(self.event(item))
+            elif isinstance(item, P.MethodDeclarationContext):
+                method = self.method(item)
+                methods.append(method)
+                if method.external:
+                    unsupported.append(model.Unsupported("external methods", method.location, "write the method as `def name() -> type is expression`"))
+            elif isinstance(item, P.DoDirectiveContext):
+                behaviors.append(self.do_member(item.doMember()))
+            elif isinstance(item, P.VariableDeclarationContext):
+                unsupported.append(model.Unsupported("var", self.loc(item), "use a parameter with a range: `x: length with: keep(it in [a..b]m)`"))
+            elif isinstance(item, P.CoverageDeclarationContext):
+                unsupported.append(model.Unsupported(f"{item.getChild(0).getText()}()", self.loc(item), "coverage is not collected; remove the line"))
+            elif isinstance(item, P.OnDirectiveContext):
+                unsupported.append(model.Unsupported("on", self.loc(item), "express the reaction as a serial phase instead"))
+            elif isinstance(item, P.ModifierInvocationContext):
+                unsupported.append(
+                    model.Unsupported("a modifier applied to the whole scenario", self.loc(item), "put it in the with: block of an invocation")
+                )
+        return model.Scenario(
+            name=name,
+            actor_type=actor_type,
+            actors=(),
+            behavior=behaviors[0] if behaviors else None,
+            location=location,
+            kind=kind,
+            fields=tuple(fields),
+            constraints=tuple(constraints),
+            events=tuple(events),
+            methods=tuple(methods),
+            behaviors=tuple(behaviors),
+            unsupported=tuple(unsupported),
+            path=self.path,
+        )
+
+    def type_declaration(self, ctx) -> model.TypeDeclaration:
+        fields: list[model.Field] = []
+        constraints: list = []
+        for member in ctx.structMember():
+            item = member.getChild(0)
+            if isinstance(item, P.FieldDeclarationContext):
+                fields.extend(self.fields(item))
+            elif isinstance(item, P.KeepConstraintContext):
+                constraints.append(self.keep(item))
+            elif isinstance(item, P.RemoveDefaultContext):
+                constraints.append(model.RemoveDefault(self.expression(item.expression()), self.loc(item)))
+        parent = self.name(ctx.inheritance().parent.name) if ctx.inheritance() is not None else None
+        kind = "actor" if isinstance(ctx, P.ActorDeclarationContext) else "struct"
+        return model.TypeDeclaration(kind, self.name(ctx.identifier()), parent, tuple(fields), tuple(constraints), self.loc(ctx.identifier()))
+
+    def fields(self, ctx: P.FieldDeclarationContext) -> list[model.Field]:
+        declarator = ctx.typeDeclarator()
+        type_name = self.name(declarator.identifier())
+        default = self.expression(ctx.defaultValue) if ctx.defaultValue is not None else None
+        result = []
+        for ident in ctx.identifier():
+            name = self.name(ident)
+            constraints = []
+            for constraint in ctx.fieldConstraint():
+                item = constraint.getChild(0)
+                if isinstance(item, P.KeepConstraintContext):
+                    constraints.append(self.keep(item, subject=name))
+                else:
+                    constraints.append(model.RemoveDefault(self.expression(item.expression()), self.loc(item)))
+            result.append(
+                model.Field(
+                    name=name,
+                    type=type_name,
+                    default=default,
+                    constraints=tuple(constraints),
+                    location=self.loc(ident),
+                    is_list=declarator.LIST() is not None,
+                    type_location=self.loc(declarator),
+                )
+            )
+        return result
+
+    def keep(self, ctx: P.KeepConstraintContext, subject: str | None = None) -> model.Keep:
+        strength = "default" if ctx.strength is not None and ctx.strength.text == "default" else "hard"
+        return model.Keep(self.expression(ctx.expression()), strength, self.loc(ctx), subject)
+
+    def event(self, ctx: P.EventDeclarationContext) -> model.Event:
+        spec = self.event_specification(ctx.eventSpecification()) if ctx.eventSpecification() is not None else None
+        return model.Event(self.name(ctx.identifier()), spec, self.loc(ctx.identifier()))
+
+    def event_specification(self, ctx: P.EventSpecificationContext) -> model.EventSpecification:
+        if ctx.AT_SIGN() is not None:
+            condition = self.expression(ctx.expression()) if ctx.expression() is not None else None
+            return model.EventReference(ctx.dottedName().getText(), condition, self.loc(ctx))
+        return self.expression(ctx.expression())
+
+    def method(self, ctx: P.MethodDeclarationContext) -> model.Method:
+        parameters = []
+        if ctx.parameterList() is not None:
+            for p in ctx.parameterList().parameter():
+                default = self.expression(p.expression()) if p.expression() is not None else None
+                parameters.append(model.Field(self.name(p.identifier()), p.typeDeclarator().getText(), default, (), self.loc(p)))
+        body = self.expression(ctx.expression()) if ctx.expression() is not None else None
+        return_type = ctx.typeDeclarator().getText() if ctx.typeDeclarator() is not None else None
+        return model.Method(self.name(ctx.identifier()), tuple(parameters), return_type, body, ctx.EXTERNAL() is not None, self.loc(ctx.identifier()))
+
+    # -------------------------------------------------------------- behavior
+
+    def do_member(self, ctx: P.DoMemberContext) -> model.Behavior:
+        label = self.name(ctx.label) if ctx.label is not None else None
+        location = self.loc(ctx)
         if ctx.composition() is not None:
             comp = ctx.composition()
             return model.Composition(
                 operator=comp.compositionOperator().getText(),
                 arguments=self.arguments(comp.argumentList()),
-                children=tuple(self.behavior(child) for child in comp.behavior()),
+                children=tuple(self.do_member(child) for child in comp.doMember()),
                 label=label,
-                location=self.loc(ctx),
+                location=location,
             )
-        inv = ctx.invocation()
+        if ctx.waitDirective() is not None:
+            return model.Wait(self.event_specification(ctx.waitDirective().eventSpecification()), label, location)
+        if ctx.emitDirective() is not None:
+            emit = ctx.emitDirective()
+            return model.Emit(self.name(emit.identifier()), self.arguments(emit.argumentList()), label, location)
+        if ctx.callDirective() is not None:
+            return model.CallStatement(self.expression(ctx.callDirective().expression()), label, location)
+        return self.invocation(ctx.behaviorInvocation(), label)
+
+    def invocation(self, ctx: P.BehaviorInvocationContext, label: str | None) -> model.Invocation:
+        parts = [self.name(i) for i in ctx.target.identifier()]
+        modifiers: list[model.Modifier] = []
+        constraints: list = []
+        until = None
+        for member in ctx.behaviorWithMember():
+            item = member.getChild(0)
+            if isinstance(item, P.ModifierInvocationContext):
+                names = [self.name(i) for i in item.target.identifier()]
+                modifiers.append(
+                    model.Modifier(
+                        names[-1],
+                        self.arguments(item.argumentList()),
+                        self.loc(item.target.identifier()[-1]),
+                        actor=".".join(names[:-1]) or None,
+                    )
+                )
+            elif isinstance(item, P.KeepConstraintContext):
+                constraints.append(self.keep(item, subject="it"))
+            elif isinstance(item, P.RemoveDefaultContext):
+                constraints.append(model.RemoveDefault(self.expression(item.expression()), self.loc(item)))
+            elif isinstance(item, P.UntilDirectiveContext):
+                until = self.event_specification(item.eventSpecification())
         return model.Invocation(
-            actor=inv.actor.getText() if inv.actor is not None else None,
-            action=inv.action.getText(),
-            arguments=self.arguments(inv.argumentList()),
-            modifiers=tuple(
-                model.Modifier(m.name.getText(), self.arguments(m.argumentList()), self.loc(m))
-                for m in inv.modifierInvocation()
-            ),
+            actor=".".join(parts[:-1]) or None,
+            action=parts[-1],
+            arguments=self.arguments(ctx.argumentList()),
+            modifiers=tuple(modifiers),
             label=label,
-            location=self.loc(inv),
+            location=self.loc(ctx),
+            constraints=tuple(constraints),
+            until=until,
         )
 
     def arguments(self, ctx: P.ArgumentListContext | None) -> tuple[model.Argument, ...]:
@@ -130,64 +354,100 @@ class _Builder:
         result = []
         seen_named = False
         for arg in ctx.argument():
-            name = arg.name.getText() if arg.name is not None else None
+            name = self.name(arg.name) if arg.name is not None else None
             if name is None and seen_named:
-                raise OscError(
-                    [Diagnostic(self.loc(arg), "a positional argument follows a named one", "put positional arguments first")],
-                    self.text,
-                )
+                self.error(self.loc(arg), "a positional argument follows a named one", "put positional arguments first")
             seen_named = seen_named or name is not None
             result.append(model.Argument(name, self.expression(arg.expression()), self.loc(arg)))
         return tuple(result)
 
-    def expression(self, ctx) -> model.Value:
+    # -------------------------------------------------------------- expressions
+
+    def expression(self, ctx) -> model.Expression:
+        location = self.loc(ctx)
+        if isinstance(ctx, P.PrimaryExpressionContext):
+            return self.primary(ctx.primary())
+        if isinstance(ctx, P.MemberAccessContext):
+            base = self.expression(ctx.expression())
+            if isinstance(base, model.Name) and base.enum is None:
+                return model.Name(f"{base.name}.{self.name(ctx.identifier())}", base.location)
+            self.error(location, "a field can only be read from a name, e.g. it.speed or v1.length")
+            return base
+        if isinstance(ctx, P.CallContext):
+            function = self.expression(ctx.expression())
+            arguments = self.arguments(ctx.argumentList())
+            if not isinstance(function, model.Name):
+                self.error(location, "only a named function can be called")
+                return function
+            if function.name == "range" and len(arguments) == 2 and all(a.name is None for a in arguments):
+                return self.range(arguments[0].value, arguments[1].value, None, location)
+            return model.Call(function.name, arguments, location)
+        if isinstance(ctx, P.UnaryContext):
+            operand = self.expression(ctx.expression())
+            if ctx.op.text == "+":
+                return operand
+            if isinstance(operand, model.Quantity):
+                return model.Quantity(-operand.value, operand.dimension, location)
+            return model.Unary("-", operand, location)
+        if isinstance(ctx, P.LogicalNotContext):
+            return model.Unary("not", self.expression(ctx.expression()), location)
+        if isinstance(ctx, (P.MultiplicativeContext, P.AdditiveContext, P.RelationContext)):
+            left, right = ctx.expression()
+            return model.Binary(ctx.op.text, self.expression(left), self.expression(right), self.loc(ctx.op))
+        if isinstance(ctx, (P.LogicalAndContext, P.LogicalOrContext, P.ImplicationContext)):
+            left, right = ctx.expression()
+            operator = {P.LogicalAndContext: "and", P.LogicalOrContext: "or"}.get(type(ctx), "=>")
+            return model.Binary(operator, self.expression(left), self.expression(right), location)
+        self.error(location, f"unsupported expression {ctx.getText()!r}")
+        return model.Literal(ctx.getText(), location)
+
+    def primary(self, ctx) -> model.Expression:
         location = self.loc(ctx)
         if isinstance(ctx, P.ParenthesisedContext):
             return self.expression(ctx.expression())
-        if isinstance(ctx, P.NegationContext):
-            inner = self.expression(ctx.expression())
-            if isinstance(inner, model.Quantity):
-                return model.Quantity(-inner.value, inner.dimension, location)
-            raise OscError([Diagnostic(location, "only a number can be negated here")], self.text)
-        if isinstance(ctx, P.PhysicalExpressionContext):
-            return self.physical(ctx.PhysicalLiteral().getText(), location)
-        if isinstance(ctx, P.NumberExpressionContext):
+        if isinstance(ctx, P.PhysicalLiteralContext):
+            return self.physical(ctx.getText(), location)
+        if isinstance(ctx, P.NumberLiteralContext):
             text = ctx.getText()
             value = float(int(text, 16)) if text.lower().startswith("0x") else float(text)
             return model.Quantity(value, None, location)
-        if isinstance(ctx, P.StringExpressionContext):
-            return model.Literal(ctx.getText()[1:-1], location)
-        if isinstance(ctx, P.BoolExpressionContext):
+        if isinstance(ctx, P.StringLiteralContext):
+            return model.Literal(self.string(ctx.getText()), location)
+        if isinstance(ctx, P.BoolLiteralContext):
             return model.Literal(ctx.getText() == "true", location)
-        if isinstance(ctx, P.NameExpressionContext):
-            return model.Name(ctx.getText(), location)
-        if isinstance(ctx, P.RangeExpressionContext):
-            return self.range(ctx.rangeLiteral(), location)
-        raise OscError([Diagnostic(location, f"unsupported expression {ctx.getText()!r}")], self.text)
+        if isinstance(ctx, P.NamePrimaryContext):
+            name = self.name(ctx.identifier())
+            if name in ("inf", "nan"):
+                return model.Quantity(math.inf if name == "inf" else math.nan, None, location)
+            return model.Name(name, location)
+        if isinstance(ctx, P.EnumValueContext):
+            return model.Name(self.name(ctx.member), location, enum=self.name(ctx.enumType))
+        if isinstance(ctx, P.ListLiteralContext):
+            return model.ListValue(tuple(self.expression(e) for e in ctx.expression()), location)
+        if isinstance(ctx, P.RangePrimaryContext):
+            literal = ctx.rangeLiteral()
+            unit = literal.unit
+            return self.range(self.expression(literal.low), self.expression(literal.high), unit, location)
+        self.error(location, f"unsupported expression {ctx.getText()!r}")
+        return model.Literal(ctx.getText(), location)
 
-    def range(self, ctx: P.RangeLiteralContext, location: SourceLocation) -> model.Range:
-        low = self.expression(ctx.low)
-        high = self.expression(ctx.high)
+    def range(self, low, high, unit_token, location: SourceLocation) -> model.Expression:
         for bound in (low, high):
             if not isinstance(bound, model.Quantity):
-                raise OscError([Diagnostic(bound.location, "a range bound must be a number")], self.text)
-        if ctx.unit is not None:
+                self.error(bound.location, "a range bound must be a number, with its unit", "write [10m..20m] or [10..20]m")
+                return model.Literal("<bad range>", location)
+        if unit_token is not None:
             # The paper's spelling `[10..20]m`: the unit after the bracket applies to both bounds.
-            unit_loc = self.loc(ctx.unit)
-            for bound in (low, high):
-                if bound.dimension is not None:
-                    raise OscError(
-                        [Diagnostic(unit_loc, "a unit after the range, but a bound already has one", "write [10..20]m or [10m..20m], not both")],
-                        self.text,
-                    )
-            dimension, factor = self.unit(ctx.unit.getText(), unit_loc)
+            unit_loc = SourceLocation(self.path, unit_token.line, unit_token.column + 1)
+            if low.dimension is not None or high.dimension is not None:
+                self.error(unit_loc, "a unit after the range, but a bound already has one", "write [10..20]m or [10m..20m], not both")
+                return model.Literal("<bad range>", location)
+            dimension, factor = self.unit(unit_token.text, unit_loc)
             low = model.Quantity(low.value * factor, dimension, low.location)
             high = model.Quantity(high.value * factor, dimension, high.location)
         elif low.dimension != high.dimension:
-            raise OscError(
-                [Diagnostic(location, f"the range's bounds differ in kind ({low.dimension or 'number'} and {high.dimension or 'number'})")],
-                self.text,
-            )
+            self.error(location, f"the range's bounds differ in kind ({low.dimension or 'number'} and {high.dimension or 'number'})", "give both bounds a unit of the same kind")
+            return model.Literal("<bad range>", location)
         if low.value > high.value:
             low, high = high, low  # the standard accepts either order
         return model.Range(low, high, location)
@@ -197,8 +457,24 @@ class _Builder:
         dimension, factor = self.unit(unit, location)
         return model.Quantity(number * factor, dimension, location)
 
-    def unit(self, unit: str, location: SourceLocation) -> tuple[str, float]:
+    def unit(self, unit: str, location: SourceLocation) -> tuple[str | None, float]:
         if unit not in UNITS:
             known = ", ".join(sorted(UNITS))
-            raise OscError([Diagnostic(location, f"unknown unit {unit!r}", f"known units: {known}")], self.text)
+            self.error(location, f"unknown unit {unit!r}", f"known units: {known}")
+            return None, 1.0
         return UNITS[unit]
+
+    def string(self, text: str) -> str:
+        for quote in ('"""', "'''"):
+            if text.startswith(quote) and text.endswith(quote) and len(text) >= 6:
+                return text[3:-3]
+        try:
+            return ast.literal_eval(text)
+        except (ValueError, SyntaxError):
+            return text[1:-1]
+
+    def name(self, ctx) -> str:
+        text = ctx.getText() if hasattr(ctx, "getText") else ctx.text
+        if text.startswith("|") and text.endswith("|"):
+            return text[1:-1]
+        return text

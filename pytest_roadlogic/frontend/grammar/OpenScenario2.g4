@@ -1,7 +1,11 @@
-// Grammar of the ASAM OpenSCENARIO DSL subset that pytest-roadlogic reads.
+// Grammar of the ASAM OpenSCENARIO DSL that pytest-roadlogic reads.
 //
 // Written for this project from the language description in the standard (section 7.2) and
-// docs/os2-subset.md. The layout is Python-like: the lexer emits NEWLINE tokens, and
+// docs/os2-subset.md. It covers the syntax of tiers 1, 2 and 3 of that document: tier-3
+// constructs (on, call, cover/record, namespace/export, var, external methods, user modifiers)
+// parse here so that the checker can refuse them by name and place instead of a syntax error.
+//
+// The layout is Python-like: the lexer emits NEWLINE tokens, and
 // pytest_roadlogic.frontend.lexer.IndentingLexer turns leading whitespace into the INDENT and
 // DEDENT tokens declared below and drops line breaks inside (...) and [...]. Keeping that logic in
 // Python (not in target-specific @members) keeps this file free of target code.
@@ -14,10 +18,11 @@ grammar OpenScenario2;
 
 tokens { INDENT, DEDENT }
 
-// ---------------------------------------------------------------- parser
+// ---------------------------------------------------------------- files and declarations
 
+// Imports belong before the declarations; the checker says so rather than the parser.
 oscFile
-    : NEWLINE* importStatement* (declaration | NEWLINE)* EOF
+    : (importStatement | declaration | NEWLINE)* EOF
     ;
 
 importStatement
@@ -26,40 +31,160 @@ importStatement
 
 declaration
     : scenarioDeclaration
+    | actorDeclaration
+    | structDeclaration
+    | enumDeclaration
+    | globalDeclaration
+    | extendDeclaration
+    | modifierDeclaration
+    | namespaceStatement
+    | exportStatement
     ;
 
+// `scenario vehicle.overtake:` ties the scenario to an actor type; it is not a namespace.
+// `action` declares a user behavior with the same members.
 scenarioDeclaration
-    : SCENARIO scenarioName COLON NEWLINE INDENT scenarioMember+ DEDENT
+    : kind=(SCENARIO | ACTION) behaviorName inheritance? (COLON NEWLINE INDENT scenarioMember+ DEDENT | NEWLINE)
     ;
 
-// `scenario traffic.overtake:` ties the scenario to an actor type; it is not a namespace.
-scenarioName
+behaviorName
     : (actorType=identifier DOT)? name=identifier
     ;
 
+inheritance
+    : INHERITS parent=behaviorName (LPAREN condition=expression RPAREN)?
+    ;
+
+actorDeclaration
+    : ACTOR identifier inheritance? (COLON NEWLINE INDENT structMember+ DEDENT | NEWLINE)
+    ;
+
+structDeclaration
+    : STRUCT identifier inheritance? (COLON NEWLINE INDENT structMember+ DEDENT | NEWLINE)
+    ;
+
+structMember
+    : fieldDeclaration
+    | keepConstraint
+    | removeDefault
+    | eventDeclaration
+    | methodDeclaration
+    | coverageDeclaration
+    ;
+
+enumDeclaration
+    : ENUM identifier COLON LBRACK enumMember (COMMA enumMember)* COMMA? RBRACK NEWLINE
+    ;
+
+enumMember
+    : identifier (ASSIGN (IntLiteral | HexLiteral))?
+    ;
+
+globalDeclaration
+    : GLOBAL fieldDeclaration
+    ;
+
+extendDeclaration
+    : EXTEND behaviorName COLON NEWLINE INDENT scenarioMember+ DEDENT
+    ;
+
+modifierDeclaration
+    : MODIFIER behaviorName (OF identifier)? (COLON NEWLINE INDENT scenarioMember+ DEDENT | NEWLINE)
+    ;
+
+namespaceStatement
+    : NAMESPACE identifier (USE identifier (COMMA identifier)*)? NEWLINE
+    ;
+
+exportStatement
+    : EXPORT dottedName (COMMA dottedName)* NEWLINE
+    ;
+
+// ---------------------------------------------------------------- members
+
 scenarioMember
     : fieldDeclaration
+    | variableDeclaration
+    | keepConstraint
+    | removeDefault
+    | eventDeclaration
+    | methodDeclaration
+    | coverageDeclaration
+    | onDirective
     | doDirective
+    | modifierInvocation
     ;
 
+// `v1, v2: car`, `gap: length = 10m`, `gap: length with: keep(it in [10..20]m)`.
 fieldDeclaration
-    : identifier (COMMA identifier)* COLON typeName (ASSIGN expression)? NEWLINE
+    : identifier (COMMA identifier)* COLON typeDeclarator (ASSIGN defaultValue=expression)?
+      (WITH COLON (NEWLINE INDENT fieldConstraint+ DEDENT | fieldConstraint) | NEWLINE)
     ;
 
-typeName
-    : identifier
+fieldConstraint
+    : keepConstraint
+    | removeDefault
+    ;
+
+typeDeclarator
+    : LIST OF identifier
+    | identifier
+    ;
+
+variableDeclaration
+    : VAR identifier (COMMA identifier)* (COLON typeDeclarator)? (ASSIGN expression)? NEWLINE
+    ;
+
+keepConstraint
+    : KEEP LPAREN strength=(DEFAULT | HARD)? expression RPAREN NEWLINE
+    ;
+
+removeDefault
+    : REMOVE_DEFAULT LPAREN expression RPAREN NEWLINE
+    ;
+
+eventDeclaration
+    : EVENT identifier (LPAREN parameterList? RPAREN)? (IS eventSpecification)? NEWLINE
+    ;
+
+// `@e`, `@e if cond`, or an expression such as `elapsed(3s)` or a boolean condition.
+eventSpecification
+    : AT_SIGN dottedName (IF expression)?
+    | expression
+    ;
+
+methodDeclaration
+    : DEF identifier LPAREN parameterList? RPAREN (ARROW typeDeclarator)? IS (EXTERNAL? expression | UNDEFINED) NEWLINE
+    ;
+
+parameterList
+    : parameter (COMMA parameter)*
+    ;
+
+parameter
+    : identifier COLON typeDeclarator (ASSIGN expression)?
+    ;
+
+coverageDeclaration
+    : (COVER | RECORD) LPAREN argumentList? RPAREN NEWLINE
+    ;
+
+onDirective
+    : ON eventSpecification COLON NEWLINE INDENT doMember+ DEDENT
     ;
 
 doDirective
-    : DO behavior
+    : DO doMember
     ;
 
-behavior
-    : (label=identifier COLON)? (composition | invocation)
+// ---------------------------------------------------------------- behavior
+
+doMember
+    : (label=identifier COLON)? (composition | behaviorInvocation | waitDirective | emitDirective | callDirective)
     ;
 
 composition
-    : compositionOperator (LPAREN argumentList? RPAREN)? COLON NEWLINE INDENT behavior+ DEDENT
+    : compositionOperator (LPAREN argumentList? RPAREN)? COLON NEWLINE INDENT doMember+ DEDENT
     ;
 
 compositionOperator
@@ -68,72 +193,166 @@ compositionOperator
     | ONE_OF
     ;
 
-invocation
-    : (actor=identifier DOT)? action=identifier LPAREN argumentList? RPAREN
-      (WITH COLON NEWLINE INDENT modifierInvocation+ DEDENT | NEWLINE)
+// `v1.drive()`, `v1.change_lane(side: left) with: ...`; the last name is the action.
+behaviorInvocation
+    : target=dottedName LPAREN argumentList? RPAREN
+      (WITH COLON (NEWLINE INDENT behaviorWithMember+ DEDENT | behaviorWithMember) | NEWLINE)
+    ;
+
+behaviorWithMember
+    : modifierInvocation
+    | keepConstraint
+    | removeDefault
+    | untilDirective
     ;
 
 modifierInvocation
-    : (actor=identifier DOT)? name=identifier LPAREN argumentList? RPAREN NEWLINE
+    : target=dottedName LPAREN argumentList? RPAREN NEWLINE
+    ;
+
+untilDirective
+    : UNTIL eventSpecification NEWLINE
+    ;
+
+waitDirective
+    : WAIT eventSpecification NEWLINE
+    ;
+
+emitDirective
+    : EMIT identifier (LPAREN argumentList? RPAREN)? NEWLINE
+    ;
+
+callDirective
+    : CALL expression NEWLINE
     ;
 
 argumentList
-    : argument (COMMA argument)*
+    : argument (COMMA argument)* COMMA?
     ;
 
 argument
     : (name=identifier COLON)? expression
     ;
 
+// ---------------------------------------------------------------- expressions
+
+// Alternatives are listed from the tightest binding to the loosest.
 expression
-    : MINUS expression                                   # negation
-    | rangeLiteral                                       # rangeExpression
-    | PhysicalLiteral                                    # physicalExpression
-    | number                                             # numberExpression
-    | StringLiteral                                      # stringExpression
-    | (TRUE | FALSE)                                     # boolExpression
-    | dottedName                                         # nameExpression
-    | LPAREN expression RPAREN                           # parenthesised
+    : expression DOT identifier                                   # memberAccess
+    | expression LPAREN argumentList? RPAREN                      # call
+    | op=(MINUS | PLUS) expression                                # unary
+    | expression op=(STAR | SLASH | PERCENT) expression           # multiplicative
+    | expression op=(PLUS | MINUS) expression                     # additive
+    | expression op=(EQ | NE | LT | LE | GT | GE | IN) expression # relation
+    | NOT expression                                              # logicalNot
+    | expression AND expression                                   # logicalAnd
+    | expression OR expression                                    # logicalOr
+    | <assoc=right> expression IMPLIES expression                 # implication
+    | primary                                                     # primaryExpression
     ;
 
-// `[10..20]m` (the paper's spelling, unit after the range) and `[10m..20m]` (the standard's).
+primary
+    : PhysicalLiteral                                             # physicalLiteral
+    | (IntLiteral | FloatLiteral | HexLiteral)                    # numberLiteral
+    | StringLiteral                                               # stringLiteral
+    | (TRUE | FALSE)                                              # boolLiteral
+    | rangeLiteral                                                # rangePrimary
+    | LBRACK (expression (COMMA expression)* COMMA?)? RBRACK      # listLiteral
+    | enumType=identifier BANG member=identifier                  # enumValue
+    | identifier                                                  # namePrimary
+    | LPAREN expression RPAREN                                    # parenthesised
+    ;
+
+// `[10..20]m` (the paper's spelling, one unit after the range) and `[10m..20m]` (the standard's).
 rangeLiteral
-    : LBRACK low=expression DOUBLEDOT high=expression RBRACK unit=identifier?
-    ;
-
-number
-    : IntLiteral
-    | FloatLiteral
-    | HexLiteral
+    : LBRACK low=expression DOUBLEDOT high=expression RBRACK unit=Identifier?
     ;
 
 dottedName
     : identifier (DOT identifier)*
     ;
 
-// Words that are keywords elsewhere but usable as names here.
+// Keywords that only start a construct in one place may still name things elsewhere.
 identifier
     : Identifier
+    | QuotedIdentifier
+    | ACTION
+    | MODIFIER
+    | EVENT
+    | HARD
+    | LIST
+    | OF
+    | EXTERNAL
+    | UNDEFINED
     ;
 
 // ---------------------------------------------------------------- lexer
 
-IMPORT    : 'import' ;
-SCENARIO  : 'scenario' ;
-DO        : 'do' ;
-SERIAL    : 'serial' ;
-PARALLEL  : 'parallel' ;
-ONE_OF    : 'one_of' ;
-WITH      : 'with' ;
-TRUE      : 'true' ;
-FALSE     : 'false' ;
+IMPORT         : 'import' ;
+SCENARIO       : 'scenario' ;
+ACTION         : 'action' ;
+ACTOR          : 'actor' ;
+STRUCT         : 'struct' ;
+ENUM           : 'enum' ;
+GLOBAL         : 'global' ;
+EXTEND         : 'extend' ;
+MODIFIER       : 'modifier' ;
+NAMESPACE      : 'namespace' ;
+USE            : 'use' ;
+EXPORT         : 'export' ;
+INHERITS       : 'inherits' ;
+VAR            : 'var' ;
+KEEP           : 'keep' ;
+DEFAULT        : 'default' ;
+HARD           : 'hard' ;
+REMOVE_DEFAULT : 'remove_default' ;
+EVENT          : 'event' ;
+IS             : 'is' ;
+IF             : 'if' ;
+DEF            : 'def' ;
+EXTERNAL       : 'external' ;
+UNDEFINED      : 'undefined' ;
+COVER          : 'cover' ;
+RECORD         : 'record' ;
+ON             : 'on' ;
+DO             : 'do' ;
+SERIAL         : 'serial' ;
+PARALLEL       : 'parallel' ;
+ONE_OF         : 'one_of' ;
+WITH           : 'with' ;
+UNTIL          : 'until' ;
+WAIT           : 'wait' ;
+EMIT           : 'emit' ;
+CALL           : 'call' ;
+LIST           : 'list' ;
+OF             : 'of' ;
+IN             : 'in' ;
+AND            : 'and' ;
+OR             : 'or' ;
+NOT            : 'not' ;
+TRUE           : 'true' ;
+FALSE          : 'false' ;
 
 DOUBLEDOT : '..' ;
 DOT       : '.' ;
 COMMA     : ',' ;
 COLON     : ':' ;
+ARROW     : '->' ;
+IMPLIES   : '=>' ;
+EQ        : '==' ;
+NE        : '!=' ;
+LE        : '<=' ;
+GE        : '>=' ;
+LT        : '<' ;
+GT        : '>' ;
 ASSIGN    : '=' ;
+BANG      : '!' ;
+AT_SIGN   : '@' ;
+PLUS      : '+' ;
 MINUS     : '-' ;
+STAR      : '*' ;
+SLASH     : '/' ;
+PERCENT   : '%' ;
 LPAREN    : '(' ;
 RPAREN    : ')' ;
 LBRACK    : '[' ;
@@ -157,12 +376,19 @@ IntLiteral
     ;
 
 StringLiteral
-    : '"' (~["\\\r\n] | '\\' .)* '"'
+    : '"""' .*? '"""'
+    | '\'\'\'' .*? '\'\'\''
+    | '"' (~["\\\r\n] | '\\' .)* '"'
     | '\'' (~['\\\r\n] | '\\' .)* '\''
     ;
 
 Identifier
     : [a-zA-Z_] [a-zA-Z0-9_]*
+    ;
+
+// `|any name|` names something that is not a valid identifier.
+QuotedIdentifier
+    : '|' ~[|\r\n]+ '|'
     ;
 
 // One NEWLINE per logical line end; IndentingLexer measures the whitespace that follows it.

@@ -1,0 +1,542 @@
+"""Resolving names and types: what makes a parsed file a scenario this tool can run.
+
+``check_file`` loads a file and its imports, applies ``extend`` blocks, sorts fields into actors and
+parameters, resolves parameter domains, and checks every invocation against the library's
+signatures. It reports everything it finds (errors and warnings, each ``path:line:col``) rather
+than stopping at the first, because a person fixing a file wants the whole list.
+Tier-3 constructs are refused here by name: ``not supported: <construct>``.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field, replace
+from pathlib import Path
+
+from . import library, model
+from .errors import Diagnostic, OscError, SourceLocation
+from .parameters import ParameterSpace, parameter_space
+from .parser import parse_file, parse_text
+from .units import SPEED, TIME
+from .values import EvaluationError, Interval, calls_in, describe, evaluate, names_in
+
+DEFAULT_LANES = 3
+LANE_CONVENTION = "lanes are numbered from 1 on the right (lane(1) is the rightmost); lane(k, from: left) counts from the left"
+
+
+@dataclass
+class CheckedFile:
+    """A file with its imports resolved: the scenarios it declares, ready for the automaton."""
+
+    file: model.OscFile
+    diagnostics: list[Diagnostic]
+    sources: dict[str, str]
+    spaces: dict[str, ParameterSpace] = field(default_factory=dict)
+
+    @property
+    def scenarios(self) -> tuple[model.Scenario, ...]:
+        return self.file.scenarios
+
+    @property
+    def errors(self) -> list[Diagnostic]:
+        return [d for d in self.diagnostics if d.severity == "error"]
+
+    @property
+    def warnings(self) -> list[Diagnostic]:
+        return [d for d in self.diagnostics if d.severity == "warning"]
+
+    def raise_for_errors(self) -> None:
+        if self.errors:
+            raise OscError(self.errors, sources=self.sources)
+
+    def report(self) -> str:
+        return OscError(self.diagnostics, sources=self.sources).report() if self.diagnostics else ""
+
+
+def check_file(path: str | Path, lanes: int = DEFAULT_LANES) -> CheckedFile:
+    """Parse and check ``path`` and the files it imports. Syntax errors raise ``OscError``."""
+    return _Checker(lanes).run(parse_file(path))
+
+
+def check_text(text: str, path: str = "<string>", lanes: int = DEFAULT_LANES) -> CheckedFile:
+    return _Checker(lanes).run(parse_text(text, path))
+
+
+def load_file(path: str | Path, lanes: int = DEFAULT_LANES) -> CheckedFile:
+    """``check_file`` that raises ``OscError`` when the file has errors (warnings pass)."""
+    checked = check_file(path, lanes)
+    checked.raise_for_errors()
+    return checked
+
+
+class _Checker:
+    def __init__(self, lanes: int) -> None:
+        self.lanes = lanes
+        self.diagnostics: list[Diagnostic] = []
+        self.sources: dict[str, str] = {}
+        self.files: dict[str, model.OscFile] = {}
+        self.enums: dict[str, tuple[str, ...]] = dict(library.ENUMS)
+        self.enum_declarations: dict[str, model.EnumDeclaration] = {}
+        self.types: dict[str, model.TypeDeclaration] = {}
+        self.scenarios: dict[str, model.Scenario] = {}
+
+    def error(self, location: SourceLocation, message: str, hint: str | None = None) -> None:
+        self.diagnostics.append(Diagnostic(location, message, hint))
+
+    def warning(self, location: SourceLocation, message: str, hint: str | None = None) -> None:
+        self.diagnostics.append(Diagnostic(location, message, hint, "warning"))
+
+    # -------------------------------------------------------------- files
+
+    def run(self, main: model.OscFile) -> CheckedFile:
+        self.sources[main.path] = main.source_text
+        self._load_imports(main, stack=(str(Path(main.path).resolve()),))
+        self._declarations(main)
+        for misplaced in main.misplaced_imports:
+            self.error(misplaced.location, "an import after a declaration", "put every import at the top of the file")
+        for item in main.unsupported:
+            self._unsupported(item)
+        scenarios = []
+        spaces = {}
+        own = {s.name for s in main.scenarios}
+        extensions = [e for f in (*self.files.values(), main) for e in f.extensions]
+        for extension in extensions:
+            if extension.target not in self.scenarios and extension.target not in own:
+                self.error(extension.location, f"extend names an unknown scenario {extension.target!r}", self._known("scenarios", [*self.scenarios, *own]))
+        seen: dict[str, model.Scenario] = {}
+        for scenario in main.scenarios:
+            if scenario.name in seen:
+                first = seen[scenario.name].location
+                self.error(scenario.location, f"scenario {scenario.name!r} is already declared on line {first.line}", "give each scenario its own name")
+                continue
+            if scenario.name in self.scenarios and self.scenarios[scenario.name].path != main.path:
+                other = self.scenarios[scenario.name].location
+                self.error(scenario.location, f"scenario {scenario.name!r} is already declared in {other.path}:{other.line}", "rename one of them")
+            seen[scenario.name] = scenario
+            for extension in extensions:
+                if extension.target == scenario.name:
+                    scenario = _extend(scenario, extension.scenario)
+            checked, space = self._scenario(scenario, main.globals)
+            scenarios.append(checked)
+            spaces[checked.name] = space
+        self.diagnostics = list(dict.fromkeys(self.diagnostics))
+        self.diagnostics.sort(key=lambda d: (d.location.path != main.path, d.location.path, d.location.line, d.location.column))
+        checked_file = replace(main, scenarios=tuple(scenarios))
+        return CheckedFile(checked_file, self.diagnostics, self.sources, spaces)
+
+    def _load_imports(self, osc: model.OscFile, stack: tuple[str, ...]) -> None:
+        for item in osc.imports:
+            if not item.is_file:
+                if item.target != "osc" and not item.target.startswith("osc."):
+                    self.error(item.location, f"unknown library {item.target!r}", 'the standard library is osc.standard; import a file by its path in quotes: import "lib.osc"')
+                continue
+            target = (Path(osc.path).parent / item.target).resolve()
+            if str(target) in stack:
+                self.error(item.location, f"{item.target!r} imports itself (through {' -> '.join(Path(s).name for s in stack)})", "remove the circular import")
+                continue
+            if str(target) in {str(Path(p).resolve()) for p in self.files}:
+                continue
+            if not target.is_file():
+                self.error(item.location, f"cannot find the imported file {item.target!r}", f"looked for {target}; paths are relative to the importing file")
+                continue
+            try:
+                imported = parse_file(target)
+            except OscError as error:
+                self.diagnostics.extend(error.diagnostics)
+                self.sources.update(error.sources)
+                self.error(item.location, f"the imported file {item.target!r} has errors (listed with it)")
+                continue
+            self.sources[imported.path] = imported.source_text
+            self.files[imported.path] = imported
+            self._load_imports(imported, stack + (str(target),))
+            self._declarations(imported)
+            for unsupported in imported.unsupported:
+                self._unsupported(unsupported)
+            for scenario in imported.scenarios:
+                if scenario.name in self.scenarios:
+                    other = self.scenarios[scenario.name].location
+                    self.error(scenario.location, f"scenario {scenario.name!r} is already declared in {other.path}:{other.line}", "rename one of them")
+                self.scenarios[scenario.name] = scenario
+
+    def _declarations(self, osc: model.OscFile) -> None:
+        for enum in osc.enums:
+            if enum.name in self.enums or enum.name in self.types:
+                self.error(enum.location, f"type {enum.name!r} is already declared", "rename the enum")
+                continue
+            members: list[str] = []
+            for member in enum.members:
+                if member in members:
+                    self.error(enum.location, f"enum {enum.name!r} lists {member!r} twice")
+                members.append(member)
+            self.enums[enum.name] = tuple(members)
+            self.enum_declarations[enum.name] = enum
+        for declared in osc.types:
+            if declared.name in self.types or declared.name in self.enums or declared.name in library.SCALAR_TYPES or declared.name in library.ACTOR_TYPES:
+                self.error(declared.location, f"type {declared.name!r} is already declared", "rename the declaration")
+                continue
+            self.types[declared.name] = declared
+
+    def _unsupported(self, item: model.Unsupported) -> None:
+        self.error(item.location, f"not supported: {item.construct}", item.hint)
+
+    # -------------------------------------------------------------- scenarios
+
+    def _scenario(self, scenario: model.Scenario, globals_: tuple[model.Field, ...]) -> tuple[model.Scenario, ParameterSpace]:
+        for item in scenario.unsupported:
+            self._unsupported(item)
+        if scenario.kind == "action":
+            self.error(scenario.location, "not supported: action declarations", "declare a scenario instead")
+        if scenario.parent is not None:
+            self.error(scenario.location, "not supported: scenario inheritance", "copy the members, or use extend to add to a scenario")
+        owner = scenario.actor_type
+        if owner is not None and owner not in library.SCENARIO_OWNERS and self._actor_base(owner) is None:
+            self.error(scenario.location, f"unknown actor type {owner!r}", self._known("actor types", [*library.SCENARIO_OWNERS, *self._actor_type_names()]))
+
+        actors: list[model.Actor] = []
+        parameters: list[model.Field] = []
+        declared: dict[str, SourceLocation] = {}
+        for item in (*globals_, *scenario.fields):
+            if item.name in declared:
+                self.error(item.location, f"{item.name!r} is already declared on line {declared[item.name].line}", "give each field its own name")
+                continue
+            declared[item.name] = item.location
+            kind = self._field_kind(item)
+            if kind == "actor":
+                base = self._actor_base(item.type)
+                actors.append(model.Actor(item.name, item.type, item.location, base))
+                if item.constraints or item.default is not None:
+                    where = item.constraints[0].location if item.constraints else item.default.location
+                    self.error(where, "not supported: constraints on an actor's fields", "constrain the actor through modifiers (speed, position, lane)")
+            elif kind == "parameter":
+                parameters.append(item)
+        space, diagnostics = parameter_space(tuple(parameters), tuple(c for c in scenario.constraints), self.enums)
+        self.diagnostics.extend(diagnostics)
+        checked = replace(scenario, actors=tuple(actors), parameters=tuple(parameters))
+
+        if len(scenario.behaviors) > 1:
+            for extra in scenario.behaviors[1:]:
+                self.error(extra.location, "a scenario has at most one `do`", "compose the behaviors with serial: or parallel: under one do")
+        for event in scenario.events:
+            if event.specification is not None:
+                self._event_specification(event.specification, checked, space, event.location)
+        for method in scenario.methods:
+            if method.parameters:
+                self.error(method.location, "not supported: methods with parameters", "write the value as an expression where it is used")
+        labels: dict[str, SourceLocation] = {}
+        used_actors: set[str] = set()
+        used_names: set[str] = set()
+        for behavior in scenario.behaviors:
+            for node in model.walk(behavior):
+                label = getattr(node, "label", None)
+                if label is not None:
+                    if label in labels:
+                        self.error(node.location, f"label {label!r} is already used on line {labels[label].line}", "give each phase its own label")
+                    else:
+                        labels[label] = node.location
+                self._behavior(node, checked, space, used_actors, used_names)
+        for name, domain in space.domains.items():
+            if name in used_names and not domain.bounded:
+                self.error(
+                    domain.location,
+                    f"parameter {name!r} has no range or value",
+                    f"give it a value ({name}: {domain.type} = ...) or a range (with: keep(it in [a..b]...))",
+                )
+        for relation in space.relations:
+            used_names.update(n.name for n in names_in(relation.expression))
+        for parameter in parameters:
+            if parameter.name not in used_names and parameter.location.path == scenario.path:
+                self.warning(parameter.location, f"parameter {parameter.name!r} is never used")
+        if scenario.behaviors:
+            for actor in actors:
+                if actor.name not in used_actors:
+                    self.warning(actor.location, f"actor {actor.name!r} takes no part in the behavior", "give it an action, or remove it")
+        return checked, space
+
+    def _field_kind(self, item: model.Field) -> str | None:
+        location = item.type_location or item.location
+        if item.is_list:
+            self.error(location, "not supported: list parameters", "use one parameter per value")
+            return None
+        if self._actor_base(item.type) is not None:
+            return "actor"
+        if item.type in library.SCALAR_TYPES or item.type in self.enums:
+            return "parameter"
+        if item.type in library.UNSUPPORTED_ACTOR_TYPES:
+            self.error(location, f"not supported: actor type {item.type!r} (the road is a highway)", f"use one of {', '.join(library.ACTOR_TYPES)}")
+            return None
+        if item.type in self.types:
+            declared = self.types[item.type]
+            if declared.kind == "actor":
+                self.error(location, f"actor type {item.type!r} does not derive from a road user", f"declare it as `actor {item.type} inherits vehicle`")
+            else:
+                self.error(location, "not supported: parameters of struct type", "use scalar parameters (length, speed, ...)")
+            return None
+        known = [*library.ACTOR_TYPES, *library.SCALAR_TYPES, *sorted(set(self.enums) - set(library.ENUMS)), *sorted(self.types)]
+        self.error(location, f"unknown type {item.type!r}", self._known("types", known))
+        return None
+
+    def _actor_base(self, type_name: str, seen: frozenset[str] = frozenset()) -> str | None:
+        if type_name in library.ACTOR_TYPES:
+            return type_name
+        declared = self.types.get(type_name)
+        if declared is None or declared.kind != "actor" or declared.parent is None or type_name in seen:
+            return None
+        return self._actor_base(declared.parent, seen | {type_name})
+
+    def _actor_type_names(self) -> list[str]:
+        return [*library.ACTOR_TYPES, *(n for n, d in self.types.items() if d.kind == "actor")]
+
+    @staticmethod
+    def _known(what: str, names) -> str:
+        names = list(dict.fromkeys(names))
+        return f"known {what}: {', '.join(names)}" if names else f"there are no {what}"
+
+    # -------------------------------------------------------------- behavior
+
+    def _behavior(self, node: model.Behavior, scenario: model.Scenario, space: ParameterSpace, used_actors: set[str], used_names: set[str]) -> None:
+        env = self._environment(scenario, space)
+        if isinstance(node, model.Composition):
+            signature = library.COMPOSITIONS[node.operator]
+            self._arguments(signature, node.arguments, node.location, scenario, env, used_actors, used_names, what=node.operator)
+            if not node.children:
+                self.error(node.location, f"{node.operator} has no members")
+            overlap = node.argument("overlap")
+            if overlap is not None and isinstance(overlap.value, model.Name) and overlap.value.name not in ("start", "equal"):
+                self.error(overlap.location, f"not supported: overlap: {overlap.value.name}", "parallel supports overlap: start (the default) and equal")
+            return
+        if isinstance(node, model.Invocation):
+            self._invocation(node, scenario, space, env, used_actors, used_names)
+            return
+        if isinstance(node, model.Wait):
+            used_names.update(n.name for n in names_in(node.condition) if not isinstance(node.condition, model.EventReference))
+            self._event_specification(node.condition, scenario, space, node.location)
+            return
+        if isinstance(node, model.Emit):
+            if node.event not in {e.name for e in scenario.events}:
+                self.error(node.location, f"emit names an undeclared event {node.event!r}", f"declare it in the scenario: event {node.event}")
+            return
+        self.error(node.location, "not supported: call", "methods with side effects cannot be planned; remove the call")
+
+    def _invocation(self, node: model.Invocation, scenario, space, env, used_actors, used_names) -> None:
+        actor = node.actor
+        if actor is None:
+            self.error(node.location, f"{node.action}() needs an actor", f"write it as {scenario.actors[0].name if scenario.actors else 'v1'}.{node.action}()")
+        elif scenario.actor(actor) is None:
+            self.error(node.location, f"unknown actor {actor!r}", self._known("actors", [a.name for a in scenario.actors]))
+        else:
+            used_actors.add(actor)
+        signature = library.ACTIONS.get(node.action)
+        if signature is None:
+            self.error(node.location, f"unknown action {node.action!r}", self._known("actions", library.ACTIONS))
+        else:
+            self._arguments(signature, node.arguments, node.location, scenario, env, used_actors, used_names, what=f"{node.action}()")
+            if actor is not None and scenario.actor(actor) is not None:
+                stationary = scenario.actor(actor).stationary
+                if stationary and node.action != "remain_stationary":
+                    self.error(node.location, f"{actor!r} is a stationary_object: it can only remain_stationary()", "declare it as a car if it should move")
+        for modifier in node.modifiers:
+            if modifier.actor is not None and modifier.actor != actor:
+                self.error(modifier.location, f"this modifier names {modifier.actor!r} but the invocation is {actor!r}'s", "put it in a with: block of that actor's invocation")
+            modifier_signature = library.MODIFIERS.get(modifier.name)
+            if modifier_signature is None:
+                self.error(modifier.location, f"unknown modifier {modifier.name!r}", self._known("modifiers", library.MODIFIERS))
+                continue
+            self._arguments(modifier_signature, modifier.arguments, modifier.location, scenario, env, used_actors, used_names, what=f"{modifier.name}()")
+            self._lane_numbers(modifier, env)
+        if node.action == "change_lane":
+            self._lane_count(node, env)
+        local = dict(env)
+        local["it.duration"] = Interval(0.0, math.inf, TIME)
+        for constraint in node.constraints:
+            if isinstance(constraint, model.RemoveDefault):
+                continue
+            for name in names_in(constraint.expression):
+                if name.name != "it.duration" and name.name not in local and name.enum is None:
+                    self.error(name.location, f"unknown name {name.name!r}", "inside an invocation's with:, keep() can constrain it.duration")
+                    break
+            else:
+                try:
+                    value = evaluate(constraint.expression, local)
+                except EvaluationError as error:
+                    self.error(error.location, error.message, error.hint)
+                    continue
+                if not isinstance(value, bool):
+                    self.error(constraint.location, "keep() needs a condition, e.g. keep(it.duration <= 5s)")
+            used_names.update(n.name for n in names_in(constraint.expression))
+        if node.until is not None:
+            self._event_specification(node.until, scenario, space, node.location)
+
+    def _arguments(self, signature, arguments, location, scenario, env, used_actors, used_names, what: str) -> None:
+        given: dict[str, model.Argument] = {}
+        positional = list(signature.positional)
+        for argument in arguments:
+            if argument.name is None:
+                if not positional:
+                    self.error(argument.location, f"too many positional arguments to {what}", f"usage: {signature.usage()}")
+                    continue
+                parameter = positional.pop(0)
+            else:
+                parameter = signature.parameter(argument.name)
+                if parameter is None:
+                    self.error(argument.location, f"unknown argument {argument.name!r} of {what}", f"usage: {signature.usage()}")
+                    continue
+                if parameter in positional:
+                    positional.remove(parameter)
+            if parameter.name in given:
+                self.error(argument.location, f"{what} is given {parameter.name!r} twice")
+                continue
+            if not parameter.supported:
+                self.error(argument.location, f"not supported: argument {parameter.name!r} of {what}", f"usage: {signature.usage()}")
+                continue
+            given[parameter.name] = argument
+            used_names.update(n.name for n in names_in(argument.value))
+            self._value(argument, parameter, scenario, env, used_actors, what)
+        for group in signature.exclusive:
+            present = [given[name] for name in group if name in given]
+            if len(present) > 1:
+                self.error(present[1].location, f"{what} takes only one of {', '.join(group)}")
+        for group in signature.required:
+            if not any(name in given for name in group):
+                options = " or ".join(f"{name}:" if signature.parameter(name) and not signature.parameter(name).positional else name for name in group)
+                self.error(location, f"{what} needs {options}", f"usage: {signature.usage()}")
+
+    def _value(self, argument: model.Argument, parameter: library.Parameter, scenario, env, used_actors, what: str) -> None:
+        value = argument.value
+        kind = parameter.kind
+        if kind == "actor":
+            if not isinstance(value, model.Name) or value.enum is not None:
+                self.error(value.location, f"{parameter.name}: takes an actor", self._known("actors", [a.name for a in scenario.actors]))
+            elif scenario.actor(value.name) is None:
+                self.error(value.location, f"unknown actor {value.name!r}", self._known("actors", [a.name for a in scenario.actors]))
+            else:
+                used_actors.add(value.name)
+            return
+        if kind.startswith("enum:"):
+            enum = kind[5:]
+            members = self.enums[enum]
+            if isinstance(value, model.Name) and scenario.parameter(value.name) is not None:
+                if scenario.parameter(value.name).type != enum:
+                    self.error(value.location, f"{parameter.name}: takes a {enum}, but {value.name!r} is a {scenario.parameter(value.name).type}")
+                return
+            if not isinstance(value, model.Name) or value.name not in members or (value.enum is not None and value.enum != enum):
+                self.error(value.location, f"{parameter.name}: takes {', '.join(members[:-1])} or {members[-1]}" if len(members) > 1 else f"{parameter.name}: takes {members[0]}")
+            return
+        for call in calls_in(value):
+            self.error(call.location, f"a function call is not allowed in {parameter.name}:", "write the value, or a parameter")
+            return
+        try:
+            result = evaluate(value, env)
+        except EvaluationError as error:
+            self.error(error.location, error.message, error.hint)
+            return
+        expected = library.PHYSICAL_TYPES.get(kind)
+        example = {"length": "10m", "time": "3s", "speed": "20mps", "acceleration": "2mpss"}.get(kind, "1")
+        if isinstance(result, model.Name):
+            if scenario.actor(result.name) is not None:
+                self.error(value.location, f"{parameter.name}: takes {describe(expected)}, not the actor {result.name!r}")
+            else:
+                self.error(value.location, f"unknown name {result.name!r}", "declare it as a parameter of the scenario")
+            return
+        if not isinstance(result, Interval):
+            self.error(value.location, f"{parameter.name}: takes {describe(expected)}, e.g. {example}")
+            return
+        if result.dimension != expected:
+            if expected is None:
+                hint = "write a plain number, without a unit"
+            elif result.dimension is None:
+                hint = f"write it with a unit of {expected}, e.g. {example}"
+            else:
+                hint = f"use a unit of {expected}, e.g. {example}"
+            self.error(value.location, f"{what} expects {describe(expected)} for {parameter.name}, got {describe(result.dimension)}", hint)
+            return
+        if kind == "uint":
+            if result.low < 0 or (result.is_point and not float(result.low).is_integer()):
+                self.error(value.location, f"{parameter.name}: takes a whole number from 0 up")
+
+    def _lane_numbers(self, modifier: model.Modifier, env) -> None:
+        if modifier.name != "lane":
+            return
+        positional = modifier.argument("lane") or next(iter(modifier.positional()), None)
+        if positional is None:
+            return
+        try:
+            value = evaluate(positional.value, env)
+        except EvaluationError:
+            return
+        if isinstance(value, Interval) and value.dimension is None and (value.low < 1 or value.high > self.lanes):
+            shown = f"{value.low:g}" if value.is_point else str(value)
+            self.error(positional.value.location, f"lane {shown} is outside the road's {self.lanes} lanes", LANE_CONVENTION)
+        relative = [a for a in modifier.arguments if a.name in ("same_as", "left_of", "right_of", "side_of")]
+        side = modifier.argument("from")
+        if relative and side is not None:
+            self.error(side.location, "from: goes with a lane number, not with a relative lane", LANE_CONVENTION)
+
+    def _lane_count(self, node: model.Invocation, env) -> None:
+        count = node.argument("num_of_lanes") or next(iter(a for a in node.arguments if a.name is None), None)
+        if count is None:
+            return
+        try:
+            value = evaluate(count.value, env)
+        except EvaluationError:
+            return
+        if isinstance(value, Interval) and value.dimension is None and (value.low < 1 or value.high > self.lanes - 1):
+            self.error(count.value.location, f"a change of {value} lanes is impossible on a road of {self.lanes} lanes", f"num_of_lanes must be between 1 and {self.lanes - 1}")
+
+    def _event_specification(self, spec, scenario: model.Scenario, space: ParameterSpace, location: SourceLocation) -> None:
+        if isinstance(spec, model.EventReference):
+            events = {e.name for e in scenario.events}
+            last = spec.name.split(".")[-1]
+            if spec.name not in events and last not in ("start", "end"):
+                self.error(spec.location, f"unknown event {spec.name!r}", f"declare it: event {spec.name}")
+            return
+        for call in calls_in(spec):
+            if call.function in library.UNSUPPORTED_FUNCTIONS:
+                self.error(call.location, f"not supported: {call.function}()", "use elapsed(t) or a condition")
+                return
+            if call.function != "elapsed":
+                self.error(call.location, f"unknown function {call.function!r}", "conditions use elapsed(t) or comparisons")
+                return
+            if len(call.arguments) != 1 or call.arguments[0].name is not None:
+                self.error(call.location, "elapsed() takes one time, e.g. elapsed(3s) or elapsed([2..4]s)")
+                return
+            try:
+                value = evaluate(call.arguments[0].value, self._environment(scenario, space))
+            except EvaluationError as error:
+                self.error(error.location, error.message, error.hint)
+                return
+            if not isinstance(value, Interval) or value.dimension != TIME:
+                got = describe(value.dimension) if isinstance(value, Interval) else "a name"
+                self.error(call.arguments[0].location, f"elapsed() expects a time, got {got}", "write it with a unit, e.g. 3s")
+            return
+        env = self._environment(scenario, space)
+        for name in names_in(spec):
+            if name.name not in env and name.enum is None:
+                self.error(name.location, f"unknown name {name.name!r}", "a condition can read parameters and actors' speed, e.g. v1.speed > 20mps")
+                return
+        try:
+            value = evaluate(spec, env)
+        except EvaluationError as error:
+            self.error(error.location, error.message, error.hint)
+            return
+        if not isinstance(value, bool):
+            self.error(location, "expected a condition, e.g. elapsed(3s) or v1.speed >= 20mps")
+
+    def _environment(self, scenario: model.Scenario, space: ParameterSpace) -> dict[str, object]:
+        env = space.environment()
+        for actor in scenario.actors:
+            env[f"{actor.name}.speed"] = Interval(0.0, math.inf, SPEED)
+            env[f"{actor.name}.lane"] = Interval(1.0, float(self.lanes), None)
+        return env
+
+
+def _extend(scenario: model.Scenario, extra: model.Scenario) -> model.Scenario:
+    return replace(
+        scenario,
+        fields=scenario.fields + extra.fields,
+        constraints=scenario.constraints + extra.constraints,
+        events=scenario.events + extra.events,
+        methods=scenario.methods + extra.methods,
+        behaviors=scenario.behaviors + extra.behaviors,
+        behavior=scenario.behavior if scenario.behavior is not None else (extra.behaviors[0] if extra.behaviors else None),
+        unsupported=scenario.unsupported + extra.unsupported,
+    )

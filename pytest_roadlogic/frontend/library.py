@@ -1,0 +1,151 @@
+"""The part of the OS2 standard library this tool knows: actor types, actions, modifiers, enums.
+
+The checker validates every invocation against these signatures, so a misspelt argument or a
+speed given where a length belongs is reported with its place before anything runs. A signature's
+``tier`` follows docs/os2-subset.md: tier-2 entries check, but the automaton may still refuse to
+translate them (it says so by name); arguments marked unsupported are refused by the checker.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from .units import ACCELERATION, LENGTH, SPEED, TIME
+
+# Built-in actor types that can drive on (or stand on) the highway.
+ACTOR_TYPES = ("car", "truck", "vehicle", "stationary_object")
+# Standard actors that own scenarios (`scenario traffic.overtake:`) but do not drive.
+SCENARIO_OWNERS = ("traffic", "env", "osc_actor")
+# Standard actor types that cannot appear on a highway-only road.
+UNSUPPORTED_ACTOR_TYPES = ("person", "pedestrian", "animal", "cyclist", "bicycle", "traffic_light", "environment")
+
+NUMBER_TYPES = ("int", "uint", "float")
+PHYSICAL_TYPES = {"length": LENGTH, "time": TIME, "speed": SPEED, "acceleration": ACCELERATION}
+SCALAR_TYPES = (*PHYSICAL_TYPES, *NUMBER_TYPES, "bool", "string")
+
+ENUMS: dict[str, tuple[str, ...]] = {
+    "at": ("start", "end", "all"),
+    "side": ("left", "right"),
+    "overlap": ("start", "equal", "end", "initial", "final", "inside", "full", "any"),
+    "direction": ("longitudinal", "lateral"),
+    "rate_profile": ("constant", "smooth", "asap"),
+}
+
+
+@dataclass(frozen=True)
+class Parameter:
+    """One parameter of an action or modifier.
+
+    ``kind`` is a physical type name (``length``...), ``uint``/``int``/``float``, ``actor`` or
+    ``enum:<name>``. ``positional`` parameters may be given without a name, in declaration order.
+    """
+
+    name: str
+    kind: str
+    positional: bool = False
+    supported: bool = True
+
+
+@dataclass(frozen=True)
+class Signature:
+    name: str
+    parameters: tuple[Parameter, ...]
+    tier: int = 1
+    # Each group lists alternatives of which at most one may be given ...
+    exclusive: tuple[tuple[str, ...], ...] = ()
+    # ... and of which at least one must be given.
+    required: tuple[tuple[str, ...], ...] = ()
+    description: str = ""
+
+    def parameter(self, name: str) -> Parameter | None:
+        for parameter in self.parameters:
+            if parameter.name == name:
+                return parameter
+        return None
+
+    @property
+    def positional(self) -> tuple[Parameter, ...]:
+        return tuple(p for p in self.parameters if p.positional)
+
+    def usage(self) -> str:
+        names = [p.name for p in self.parameters if p.supported]
+        return f"{self.name}({', '.join(names)})" if names else f"{self.name}()"
+
+
+AT = Parameter("at", "enum:at")
+DURATION = Parameter("duration", "time")
+RATE = (Parameter("rate_profile", "enum:rate_profile", supported=False), Parameter("rate_peak", "speed", supported=False))
+
+
+def _signatures(*items: Signature) -> dict[str, Signature]:
+    return {s.name: s for s in items}
+
+
+ACTIONS: dict[str, Signature] = _signatures(
+    Signature("drive", (DURATION,), description="drive forward for the phase"),
+    Signature(
+        "change_lane",
+        (Parameter("num_of_lanes", "uint", positional=True), Parameter("side", "enum:side", positional=True), Parameter("reference", "actor"), DURATION, *RATE),
+        description="move num_of_lanes lanes (default 1) to the side",
+    ),
+    Signature("change_speed", (Parameter("target", "speed", positional=True), DURATION, *RATE), required=(("target",),), description="reach the target speed"),
+    Signature("keep_speed", (DURATION,), description="hold the speed from the phase's start"),
+    Signature("follow_lane", (DURATION, Parameter("offset", "length", supported=False)), description="stay in the lane"),
+    Signature("remain_stationary", (DURATION,), description="stand still (obstacles)"),
+    Signature("keep_space_gap", (Parameter("gap", "length", positional=True), Parameter("direction", "enum:direction"), Parameter("reference", "actor"), DURATION), tier=2),
+    Signature("keep_time_gap", (Parameter("gap", "time", positional=True), Parameter("direction", "enum:direction"), Parameter("reference", "actor"), DURATION), tier=2),
+    Signature("change_space_gap", (Parameter("target", "length", positional=True), Parameter("direction", "enum:direction"), Parameter("reference", "actor"), DURATION), tier=2),
+    Signature("change_time_gap", (Parameter("target", "time", positional=True), Parameter("direction", "enum:direction"), Parameter("reference", "actor"), DURATION), tier=2),
+    Signature("assign_speed", (Parameter("target", "speed", positional=True), DURATION), tier=2),
+)
+
+MODIFIERS: dict[str, Signature] = _signatures(
+    Signature(
+        "speed",
+        (Parameter("speed", "speed", positional=True), Parameter("faster_than", "actor"), Parameter("slower_than", "actor"), Parameter("same_as", "actor"), AT),
+        exclusive=(("faster_than", "slower_than", "same_as"),),
+        required=(("speed", "same_as"),),
+        description="absolute speed, or relative to another actor's",
+    ),
+    Signature(
+        "position",
+        (Parameter("distance", "length", positional=True), Parameter("time", "time"), Parameter("ahead_of", "actor"), Parameter("behind", "actor"), AT),
+        exclusive=(("ahead_of", "behind"), ("distance", "time")),
+        required=(("ahead_of", "behind"), ("distance", "time")),
+        description="longitudinal gap to another actor",
+    ),
+    Signature(
+        "lane",
+        (
+            Parameter("lane", "uint", positional=True),
+            Parameter("right_of", "actor"),
+            Parameter("left_of", "actor"),
+            Parameter("same_as", "actor"),
+            Parameter("side_of", "actor"),
+            Parameter("side", "enum:side"),
+            Parameter("from", "enum:side"),
+            AT,
+        ),
+        exclusive=(("lane", "right_of", "left_of", "same_as", "side_of"),),
+        required=(("lane", "right_of", "left_of", "same_as", "side_of"),),
+        description="lane occupancy, absolute or relative",
+    ),
+    Signature("keep_lane", (), description="stay in the lane held at the phase's start"),
+    Signature("keep_speed", (), description="hold the speed from the phase's start"),
+    Signature("change_lane", (Parameter("num_of_lanes", "uint", positional=True), Parameter("side", "enum:side", positional=True)), description="change lanes during the phase"),
+    Signature("acceleration", (Parameter("acceleration", "acceleration", positional=True), AT), required=(("acceleration",),), tier=2),
+    Signature("lateral", (Parameter("distance", "length", positional=True), Parameter("side_of", "actor"), Parameter("side", "enum:side"), AT), tier=2),
+)
+
+COMPOSITIONS: dict[str, Signature] = _signatures(
+    Signature("serial", (DURATION,)),
+    Signature(
+        "parallel",
+        (DURATION, Parameter("overlap", "enum:overlap"), Parameter("start_to_start", "time"), Parameter("end_to_end", "time")),
+    ),
+    Signature("one_of", (DURATION,)),
+)
+
+# Functions usable in expressions, and those refused by name (tier 3).
+FUNCTIONS = ("elapsed", "range")
+UNSUPPORTED_FUNCTIONS = ("rise", "fall", "every", "sample", "random")

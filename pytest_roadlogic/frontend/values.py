@@ -1,0 +1,225 @@
+"""Evaluating OS2 expressions to intervals with physical dimensions.
+
+A logical parameter is an interval until sampling fixes it, and a concrete value is an interval of
+width zero; evaluating over intervals lets one function serve both the base strategy (ranges go to
+the planner) and the refined strategy (sampled points), and checks dimensions on the way: adding a
+speed to a length is an error wherever it is written.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Mapping, Union
+
+from . import model
+from .errors import SourceLocation
+from .units import ACCELERATION, LENGTH, SPEED, TIME
+
+# dimension -> exponents of (metre, second)
+_EXPONENTS: dict[str | None, tuple[int, int]] = {
+    None: (0, 0),
+    LENGTH: (1, 0),
+    TIME: (0, 1),
+    SPEED: (1, -1),
+    ACCELERATION: (1, -2),
+}
+_DIMENSIONS = {v: k for k, v in _EXPONENTS.items()}
+
+
+def describe(dimension: str | None) -> str:
+    return f"a {dimension}" if dimension is not None else "a plain number"
+
+
+@dataclass(frozen=True)
+class Interval:
+    """``[low, high]`` in SI units of ``dimension``; a point when ``low == high``."""
+
+    low: float
+    high: float
+    dimension: str | None
+
+    @property
+    def is_point(self) -> bool:
+        return self.low == self.high
+
+    def intersect(self, other: "Interval") -> "Interval":
+        return Interval(max(self.low, other.low), min(self.high, other.high), self.dimension)
+
+    @property
+    def empty(self) -> bool:
+        return self.low > self.high
+
+    def __str__(self) -> str:
+        unit = {LENGTH: "m", TIME: "s", SPEED: "m/s", ACCELERATION: "m/s^2"}.get(self.dimension, "")
+        if self.is_point:
+            return f"{self.low:g}{unit}"
+        return f"[{self.low:g}..{self.high:g}]{unit}"
+
+
+class EvaluationError(Exception):
+    def __init__(self, location: SourceLocation, message: str, hint: str | None = None) -> None:
+        super().__init__(message)
+        self.location = location
+        self.message = message
+        self.hint = hint
+
+
+Value = Union[Interval, bool, model.Name, model.Literal, model.Call, model.ListValue]
+
+
+def evaluate(expression: model.Expression, env: Mapping[str, object]) -> Value:
+    """The value of ``expression`` where ``env`` gives parameters (Intervals) and other names.
+
+    Names not in ``env`` evaluate to themselves (actors, enum members); the caller decides whether
+    that is right where they appear.
+    """
+    if isinstance(expression, model.Quantity):
+        return Interval(expression.value, expression.value, expression.dimension)
+    if isinstance(expression, model.Range):
+        return Interval(expression.low.value, expression.high.value, expression.dimension)
+    if isinstance(expression, model.Name):
+        if expression.enum is None and expression.name in env:
+            return env[expression.name]
+        return expression
+    if isinstance(expression, (model.Literal, model.Call, model.ListValue)):
+        if isinstance(expression, model.Literal) and isinstance(expression.value, bool):
+            return expression.value
+        return expression
+    if isinstance(expression, model.Unary):
+        operand = evaluate(expression.operand, env)
+        if expression.operator == "not":
+            return not _boolean(operand, expression.operand)
+        interval = _interval(operand, expression.operand)
+        return Interval(-interval.high, -interval.low, interval.dimension)
+    if isinstance(expression, model.Binary):
+        return _binary(expression, env)
+    raise EvaluationError(getattr(expression, "location", SourceLocation("?", 1, 1)), "cannot evaluate this expression")
+
+
+def _binary(expression: model.Binary, env: Mapping[str, object]) -> Value:
+    op = expression.operator
+    if op in ("and", "or", "=>"):
+        left = _boolean(evaluate(expression.left, env), expression.left)
+        right = _boolean(evaluate(expression.right, env), expression.right)
+        return {"and": left and right, "or": left or right, "=>": (not left) or right}[op]
+    left_value = evaluate(expression.left, env)
+    right_value = evaluate(expression.right, env)
+    if op in ("==", "!=") and not isinstance(left_value, Interval) and not isinstance(right_value, Interval):
+        equal = _symbol(left_value) == _symbol(right_value)
+        return equal if op == "==" else not equal
+    left = _interval(left_value, expression.left)
+    right = _interval(right_value, expression.right)
+    if op in ("+", "-"):
+        _same_dimension(left, right, expression)
+        if op == "+":
+            return Interval(left.low + right.low, left.high + right.high, left.dimension)
+        return Interval(left.low - right.high, left.high - right.low, left.dimension)
+    if op in ("*", "/", "%"):
+        if op == "%":
+            _same_dimension(left, right, expression)
+            if not (left.is_point and right.is_point) or right.low == 0:
+                raise EvaluationError(expression.location, "% needs two fixed values and a non-zero divisor")
+            return Interval(math.fmod(left.low, right.low), math.fmod(left.low, right.low), left.dimension)
+        dimension = _combine(left.dimension, right.dimension, +1 if op == "*" else -1, expression)
+        if op == "/":
+            if right.low <= 0 <= right.high:
+                raise EvaluationError(expression.right.location, "division by a value that can be zero")
+            right = Interval(1 / right.high, 1 / right.low, right.dimension)
+        products = [left.low * right.low, left.low * right.high, left.high * right.low, left.high * right.high]
+        products = [0.0 if math.isnan(p) else p for p in products]
+        return Interval(min(products), max(products), dimension)
+    # comparisons: meaningful on points (sampled values); on intervals they hold for every member
+    _same_dimension(left, right, expression)
+    if op == "in":
+        return right.low <= left.low and left.high <= right.high
+    if op == "==":
+        return left.is_point and right.is_point and left.low == right.low
+    if op == "!=":
+        return left.high < right.low or right.high < left.low
+    if op == "<":
+        return left.high < right.low
+    if op == "<=":
+        return left.high <= right.low
+    if op == ">":
+        return left.low > right.high
+    if op == ">=":
+        return left.low >= right.high
+    raise EvaluationError(expression.location, f"unknown operator {op!r}")
+
+
+def _symbol(value: object) -> object:
+    if isinstance(value, model.Name):
+        return value.name
+    if isinstance(value, model.Literal):
+        return value.value
+    return value
+
+
+def _interval(value: Value, expression: model.Expression) -> Interval:
+    if isinstance(value, Interval):
+        return value
+    if isinstance(value, model.Name):
+        raise EvaluationError(expression.location, f"{value.name!r} is not a number here", "only numbers and parameters of a numeric type can be computed with")
+    raise EvaluationError(expression.location, "expected a number or a quantity with a unit")
+
+
+def _boolean(value: Value, expression: model.Expression) -> bool:
+    if isinstance(value, bool):
+        return value
+    raise EvaluationError(expression.location, "expected a condition (true or false)")
+
+
+def _same_dimension(left: Interval, right: Interval, expression: model.Binary) -> None:
+    if left.dimension != right.dimension:
+        raise EvaluationError(
+            expression.location,
+            f"{expression.operator!r} between {describe(left.dimension)} and {describe(right.dimension)}",
+            "both sides need units of the same kind",
+        )
+
+
+def _combine(left: str | None, right: str | None, sign: int, expression: model.Binary) -> str | None:
+    a, b = _EXPONENTS[left], _EXPONENTS[right]
+    exponents = (a[0] + sign * b[0], a[1] + sign * b[1])
+    if exponents not in _DIMENSIONS:
+        raise EvaluationError(expression.location, f"{describe(left)} {expression.operator} {describe(right)} has no supported unit")
+    return _DIMENSIONS[exponents]
+
+
+def names_in(expression: model.Expression | None) -> list[model.Name]:
+    """Every name an expression mentions (to find the parameters a constraint is about)."""
+    if expression is None:
+        return []
+    if isinstance(expression, model.Name):
+        return [expression]
+    if isinstance(expression, model.Unary):
+        return names_in(expression.operand)
+    if isinstance(expression, model.Binary):
+        return names_in(expression.left) + names_in(expression.right)
+    if isinstance(expression, model.Call):
+        return [n for a in expression.arguments for n in names_in(a.value)]
+    if isinstance(expression, model.ListValue):
+        return [n for item in expression.items for n in names_in(item)]
+    return []
+
+
+def calls_in(expression: model.Expression | None) -> list[model.Call]:
+    if expression is None:
+        return []
+    if isinstance(expression, model.Call):
+        return [expression, *(c for a in expression.arguments for c in calls_in(a.value))]
+    if isinstance(expression, model.Unary):
+        return calls_in(expression.operand)
+    if isinstance(expression, model.Binary):
+        return calls_in(expression.left) + calls_in(expression.right)
+    if isinstance(expression, model.ListValue):
+        return [c for item in expression.items for c in calls_in(item)]
+    return []
+
+
+def to_expression(value: Interval, location: SourceLocation) -> model.Quantity | model.Range:
+    """An evaluated interval back as a model value, for stages that read Quantity and Range."""
+    if value.is_point:
+        return model.Quantity(value.low, value.dimension, location)
+    return model.Range(model.Quantity(value.low, value.dimension, location), model.Quantity(value.high, value.dimension, location), location)
