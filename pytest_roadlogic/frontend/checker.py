@@ -92,6 +92,7 @@ class _Checker:
         self.sources[main.path] = main.source_text
         self._load_imports(main, stack=(str(Path(main.path).resolve()),))
         self._declarations(main)
+        globals_ = tuple(g for f in self.files.values() for g in f.globals) + main.globals
         for misplaced in main.misplaced_imports:
             self.error(misplaced.location, "an import after a declaration", "put every import at the top of the file")
         for item in main.unsupported:
@@ -116,7 +117,7 @@ class _Checker:
             for extension in extensions:
                 if extension.target == scenario.name:
                     scenario = _extend(scenario, extension.scenario)
-            checked, space = self._scenario(scenario, main.globals)
+            checked, space = self._scenario(scenario, globals_)
             scenarios.append(checked)
             spaces[checked.name] = space
         self.diagnostics = list(dict.fromkeys(self.diagnostics))
@@ -209,6 +210,8 @@ class _Checker:
                     self.error(where, "not supported: constraints on an actor's fields", "constrain the actor through modifiers (speed, position, lane)")
             elif kind == "parameter":
                 parameters.append(item)
+        if library.DUT_ACTOR not in declared and _mentions(scenario, library.DUT_ACTOR):
+            actors.append(model.Actor(library.DUT_ACTOR, "vehicle", scenario.location, "vehicle"))
         space, diagnostics = parameter_space(tuple(parameters), tuple(c for c in scenario.constraints), self.enums)
         self.diagnostics.extend(diagnostics)
         checked = replace(scenario, actors=tuple(actors), parameters=tuple(parameters))
@@ -244,7 +247,7 @@ class _Checker:
         for relation in space.relations:
             used_names.update(n.name for n in names_in(relation.expression))
         for parameter in parameters:
-            if parameter.name not in used_names and parameter.location.path == scenario.path:
+            if parameter.name not in used_names and parameter in scenario.fields:
                 self.warning(parameter.location, f"parameter {parameter.name!r} is never used")
         if scenario.behaviors:
             for actor in actors:
@@ -527,6 +530,18 @@ class _Checker:
             env[f"{actor.name}.speed"] = Interval(0.0, math.inf, SPEED)
             env[f"{actor.name}.lane"] = Interval(1.0, float(self.lanes), None)
         return env
+
+
+def _mentions(scenario: model.Scenario, actor: str) -> bool:
+    for behavior in scenario.behaviors:
+        for node in model.walk(behavior):
+            if isinstance(node, model.Invocation):
+                if node.actor == actor:
+                    return True
+                arguments = [*node.arguments, *(a for m in node.modifiers for a in m.arguments)]
+                if any(isinstance(a.value, model.Name) and a.value.name == actor for a in arguments):
+                    return True
+    return False
 
 
 def _extend(scenario: model.Scenario, extra: model.Scenario) -> model.Scenario:

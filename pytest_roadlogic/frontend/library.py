@@ -15,7 +15,10 @@ from .units import ACCELERATION, LENGTH, SPEED, TIME
 # Built-in actor types that can drive on (or stand on) the highway.
 ACTOR_TYPES = ("car", "truck", "vehicle", "stationary_object")
 # Standard actors that own scenarios (`scenario traffic.overtake:`) but do not drive.
-SCENARIO_OWNERS = ("traffic", "env", "osc_actor")
+SCENARIO_OWNERS = ("traffic", "env", "osc_actor", "dut")
+# The standard library's device under test: usable without a declaration, as the standard's
+# own examples do (`dut.car.drive()`).
+DUT_ACTOR = "dut.car"
 # Standard actor types that cannot appear on a highway-only road.
 UNSUPPORTED_ACTOR_TYPES = ("person", "pedestrian", "animal", "cyclist", "bicycle", "traffic_light", "environment")
 

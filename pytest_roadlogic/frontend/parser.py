@@ -17,6 +17,8 @@ from pathlib import Path
 
 from antlr4 import CommonTokenStream, InputStream
 from antlr4.error.ErrorListener import ErrorListener
+from antlr4.Token import Token
+from antlr4.tree.Tree import TerminalNode
 
 from . import model
 from .errors import Diagnostic, OscError, SourceLocation
@@ -95,7 +97,12 @@ class _Builder:
         self.diagnostics.append(Diagnostic(location, message, hint))
 
     def loc(self, ctx) -> SourceLocation:
-        token = ctx.start if hasattr(ctx, "start") else (ctx.symbol if hasattr(ctx, "symbol") else ctx)
+        if isinstance(ctx, Token):
+            token = ctx
+        elif isinstance(ctx, TerminalNode):
+            token = ctx.symbol
+        else:
+            token = ctx.start
         return SourceLocation(self.path, token.line, token.column + 1)
 
     # -------------------------------------------------------------- declarations
