@@ -11,19 +11,24 @@ from hypothesis import strategies as st
 
 from pytest_roadlogic.automaton import build_automaton
 from pytest_roadlogic.frontend import OscError, check_text
-from tests.conftest import OVERTAKE
+from tests.conftest import ROOT
 
-SOURCE = OVERTAKE.read_text()
-TOKENS = re.findall(r"\s+|\w+|[^\w\s]", SOURCE)
-LINES = SOURCE.splitlines(keepends=True)
+# Seeds: the benchmark scenarios and a spread of corpus files (parameters, keeps, events, imports).
+SEEDS = sorted((ROOT / "scenarios").glob("*.osc")) + [
+    ROOT / "tests" / "corpus" / name
+    for name in ("04_cut_in_dut.osc", "06_defaults.osc", "27_wait.osc", "31_line_joining.osc", "34_literals.osc",
+                 "35_expressions.osc", "39_events.osc", "40_actor_struct_decl.osc", "43_one_of_duration_overlap.osc")
+]
+SOURCES = [path.read_text() for path in SEEDS]
 
 
 @st.composite
 def mutated(draw):
+    source = draw(st.sampled_from(SOURCES))
     if draw(st.booleans()):
-        parts = list(TOKENS)
+        parts = re.findall(r"\s+|\w+|[^\w\s]", source)
     else:
-        parts = list(LINES)
+        parts = source.splitlines(keepends=True)
     for _ in range(draw(st.integers(1, 4))):
         kind = draw(st.sampled_from(["delete", "duplicate", "swap", "insert", "indent"]))
         i = draw(st.integers(0, len(parts) - 1))
@@ -35,7 +40,8 @@ def mutated(draw):
             j = draw(st.integers(0, len(parts) - 1))
             parts[i], parts[j] = parts[j], parts[i]
         elif kind == "insert":
-            parts.insert(i, draw(st.text(alphabet=st.characters(max_codepoint=0x2FF), min_size=1, max_size=4)))
+            raw = draw(st.binary(min_size=1, max_size=4)).decode("utf-8", errors="replace")
+            parts.insert(i, draw(st.sampled_from([raw, draw(st.text(min_size=1, max_size=4))])))
         else:
             parts.insert(i, draw(st.sampled_from([" ", "\t", "\n   ", "\n\t ", "  \n"])))
     return "".join(parts)

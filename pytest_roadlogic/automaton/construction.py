@@ -74,7 +74,7 @@ def build_automaton(
     env = space.environment(values)
     counter = itertools.count()
     fragment = _translate(scenario.behavior, scenario, lanes, counter, env)
-    return _finish(fragment, tuple(a.name for a in scenario.actors))
+    return _finish(fragment, tuple(a.name for a in scenario.actors), scenario)
 
 
 def _translate(behavior: model.Behavior, scenario: model.Scenario, lanes: int, counter, env: dict) -> _Fragment:
@@ -179,13 +179,13 @@ def _one_of(children: list[_Fragment], uid: int) -> _Fragment:
     return _Fragment(initial, final, edges, names, drivers)
 
 
-def _finish(fragment: _Fragment, actors: tuple[str, ...]) -> SymbolicAutomaton:
+def _finish(fragment: _Fragment, actors: tuple[str, ...], scenario: model.Scenario) -> SymbolicAutomaton:
     # Keep locations that are reachable from the initial one and can still reach the final one.
     forward = _closure(fragment.initial, lambda k: [e.target for e in fragment.edges if e.source == k])
     backward = _closure(fragment.final, lambda k: [e.source for e in fragment.edges if e.target == k])
     useful = forward & backward
     if fragment.initial not in useful:
-        raise ValueError("the behavior's automaton has no path from start to end")
+        raise error_at(scenario.location, f"scenario {scenario.name!r} can never finish: its phases cannot all end", hint="check that the members of each parallel can end together")
     order = _bfs_order(fragment, useful)
     ids = {key: index for index, key in enumerate(order)}
     used: dict[str, int] = {}

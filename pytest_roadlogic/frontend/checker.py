@@ -339,7 +339,7 @@ class _Checker:
                     self.error(node.location, f"{actor!r} is a stationary_object: it can only remain_stationary()", "declare it as a car if it should move")
         for modifier in node.modifiers:
             if modifier.actor is not None and modifier.actor != actor:
-                self.error(modifier.location, f"this modifier names {modifier.actor!r} but the invocation is {actor!r}'s", "put it in a with: block of that actor's invocation")
+                self.error(modifier.location, f"this modifier names {modifier.actor!r} but the invocation is for {actor!r}", "put it in a with: block of that actor's invocation")
             modifier_signature = library.MODIFIERS.get(modifier.name)
             if modifier_signature is None:
                 self.error(modifier.location, f"unknown modifier {modifier.name!r}", self._known("modifiers", library.MODIFIERS))
@@ -371,6 +371,7 @@ class _Checker:
 
     def _arguments(self, signature, arguments, location, scenario, env, used_actors, used_names, what: str) -> None:
         given: dict[str, model.Argument] = {}
+        unknown = False
         positional = list(signature.positional)
         for argument in arguments:
             if argument.name is None:
@@ -382,6 +383,7 @@ class _Checker:
                 parameter = signature.parameter(argument.name)
                 if parameter is None:
                     self.error(argument.location, f"unknown argument {argument.name!r} of {what}", f"usage: {signature.usage()}")
+                    unknown = True
                     continue
                 if parameter in positional:
                     positional.remove(parameter)
@@ -398,7 +400,7 @@ class _Checker:
             present = [given[name] for name in group if name in given]
             if len(present) > 1:
                 self.error(present[1].location, f"{what} takes only one of {', '.join(group)}")
-        for group in signature.required:
+        for group in signature.required if not unknown else ():
             if not any(name in given for name in group):
                 options = " or ".join(f"{name}:" if signature.parameter(name) and not signature.parameter(name).positional else name for name in group)
                 self.error(location, f"{what} needs {options}", f"usage: {signature.usage()}")
@@ -459,6 +461,10 @@ class _Checker:
     def _lane_numbers(self, modifier: model.Modifier, env) -> None:
         if modifier.name != "lane":
             return
+        relative = [a for a in modifier.arguments if a.name in ("same_as", "left_of", "right_of", "side_of")]
+        side = modifier.argument("from")
+        if relative and side is not None:
+            self.error(side.location, "from: goes with a lane number, not with a relative lane", LANE_CONVENTION)
         positional = modifier.argument("lane") or next(iter(modifier.positional()), None)
         if positional is None:
             return
@@ -469,10 +475,6 @@ class _Checker:
         if isinstance(value, Interval) and value.dimension is None and (value.low < 1 or value.high > self.lanes):
             shown = f"{value.low:g}" if value.is_point else str(value)
             self.error(positional.value.location, f"lane {shown} is outside the road's {self.lanes} lanes", LANE_CONVENTION)
-        relative = [a for a in modifier.arguments if a.name in ("same_as", "left_of", "right_of", "side_of")]
-        side = modifier.argument("from")
-        if relative and side is not None:
-            self.error(side.location, "from: goes with a lane number, not with a relative lane", LANE_CONVENTION)
 
     def _lane_count(self, node: model.Invocation, env) -> None:
         count = node.argument("num_of_lanes") or next(iter(a for a in node.arguments if a.name is None), None)
@@ -482,7 +484,7 @@ class _Checker:
             value = evaluate(count.value, env)
         except EvaluationError:
             return
-        if isinstance(value, Interval) and value.dimension is None and (value.low < 1 or value.high > self.lanes - 1):
+        if isinstance(value, Interval) and value.dimension is None and value.low >= 0 and (value.low < 1 or value.high > self.lanes - 1):
             self.error(count.value.location, f"a change of {value} lanes is impossible on a road of {self.lanes} lanes", f"num_of_lanes must be between 1 and {self.lanes - 1}")
 
     def _event_specification(self, spec, scenario: model.Scenario, space: ParameterSpace, location: SourceLocation) -> None:

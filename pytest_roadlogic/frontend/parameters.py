@@ -285,7 +285,7 @@ def _bound(name, operator, other, atom, constraint, by_name, hard, hard_sources,
     if value.dimension != hard[name].dimension:
         add_error(
             other.location,
-            f"{name!r} is {describe(hard[name].dimension)} ({parameter.type}) but this is {describe(value.dimension)}",
+            f"{name!r} is {_kind(parameter)} but this is {describe(value.dimension)}",
             "use a unit of the parameter's kind",
         )
         return
@@ -310,7 +310,7 @@ def _value_for(parameter: model.Field, expression, env, enums, add_error, allow_
         dimension = library.PHYSICAL_TYPES.get(parameter.type)
         if not isinstance(value, Interval) or value.dimension != dimension:
             got = describe(value.dimension) if isinstance(value, Interval) else "a name"
-            add_error(expression.location, f"{parameter.name!r} is {describe(dimension)} ({parameter.type}) but this is {got}", "use a unit of the parameter's kind")
+            add_error(expression.location, f"{parameter.name!r} is {_kind(parameter)} but this is {got}", "use a unit of the parameter's kind")
             return None
         if not value.is_point and not allow_range:
             add_error(expression.location, "expected a single value, not a range")
@@ -333,3 +333,8 @@ def _value_for(parameter: model.Field, expression, env, enums, add_error, allow_
         return expression.name
     add_error(expression.location, f"{parameter.name!r} is a {parameter.type}: write one of its values")
     return None
+
+
+def _kind(parameter: model.Field) -> str:
+    dimension = library.PHYSICAL_TYPES.get(parameter.type)
+    return describe(dimension) if dimension is not None else f"{describe(None)} ({parameter.type})"

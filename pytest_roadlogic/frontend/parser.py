@@ -23,27 +23,48 @@ from antlr4.tree.Tree import TerminalNode
 from . import model
 from .errors import Diagnostic, OscError, SourceLocation
 from .generated.OpenScenario2Parser import OpenScenario2Parser as P
-from .lexer import IndentingLexer
+from .lexer import DEDENT, INDENT, IndentingLexer
 from .units import UNITS, split_physical_literal
 
 ACTOR_TYPES = ("car", "truck", "vehicle", "stationary_object")
 
 
 class _CollectingListener(ErrorListener):
+    """Collects syntax errors as diagnostics, worded for people rather than for grammar authors."""
+
     def __init__(self, path: str) -> None:
         self.path = path
         self.diagnostics: list[Diagnostic] = []
 
     def syntaxError(self, recognizer, offendingSymbol, line, column, msg, e):  # noqa: N802 (ANTLR API)
+        kind = getattr(offendingSymbol, "type", None)
+        if kind == DEDENT and self.diagnostics:
+            return  # the end of a block already in error: a cascade, not news
+        if any(d.location.line == line for d in self.diagnostics):
+            return  # one syntax error per line is enough to act on
+        location = SourceLocation(self.path, line, column + 1)
+        if kind == INDENT:
+            self.diagnostics.append(Diagnostic(location, "unexpected indented block", "is the line before it missing a ':' at its end?"))
+            return
         text = getattr(offendingSymbol, "text", None)
         shown = {"\n": "end of line", "<EOF>": "end of file", "": "end of block"}.get(text, text)
-        if text is not None and text.startswith((" ", "\t")):
-            shown = "an indented block"
-        message = f"syntax error at {shown!r}: {msg}" if shown else f"syntax error: {msg}"
+        message = f"syntax error at {shown!r}: {_shorten(msg)}" if shown else f"syntax error: {_shorten(msg)}"
         hint = None
-        if "INDENT" in msg or "DEDENT" in msg or shown == "an indented block":
+        if kind == DEDENT or "INDENT" in msg or "DEDENT" in msg:
             hint = "check the indentation: a block starts after a line ending in ':' and is indented further"
-        self.diagnostics.append(Diagnostic(SourceLocation(self.path, line, column + 1), message, hint))
+        self.diagnostics.append(Diagnostic(location, message, hint))
+
+
+def _shorten(message: str) -> str:
+    """ANTLR lists every expected token; beyond a handful that hides more than it tells."""
+    if "expecting {" not in message:
+        return message
+    head, expected = message.split("expecting {", 1)
+    options = [o.strip() for o in expected.rstrip("}").split(",")]
+    options = [{"INDENT": "an indented block", "DEDENT": "the end of the block", "NEWLINE": "end of line"}.get(o, o) for o in options]
+    if len(options) > 6:
+        options = options[:6] + ["..."]
+    return f"{head}expecting one of {', '.join(options)}"
 
 
 def parse_text(text: str, path: str = "<string>") -> model.OscFile:
@@ -59,7 +80,8 @@ def parse_text(text: str, path: str = "<string>") -> model.OscFile:
     parser.removeErrorListeners()
     parser.addErrorListener(listener)
     tree = parser.oscFile()
-    diagnostics = lexer.diagnostics + listener.diagnostics
+    lexer_lines = {d.location.line for d in lexer.diagnostics}
+    diagnostics = lexer.diagnostics + [d for d in listener.diagnostics if d.location.line not in lexer_lines]
     if diagnostics:
         raise OscError(_sorted(diagnostics), text)
     builder = _Builder(path, text)
