@@ -20,7 +20,7 @@ from typing import Hashable
 from ..frontend import model
 from ..frontend.errors import OscError, error_at
 from ..frontend.parameters import ParameterSpace, parameter_space
-from .guards import Guard, conjunction
+from .guards import TRUE, Guard, conjunction
 from .model import Location, SymbolicAutomaton, Transition
 from .modifiers import check_behavior_arguments, phase_guards
 
@@ -46,6 +46,7 @@ class _Fragment:
     edges: list[_Edge]
     names: dict[Key, tuple[str, bool]] = field(default_factory=dict)  # key -> (name, labelled)
     drivers: dict[Key, frozenset[str]] = field(default_factory=dict)
+    invariants: dict[Key, Guard] = field(default_factory=dict)
 
     def outgoing(self, key: Key) -> list[_Edge]:
         return [e for e in self.edges if e.source == key]
@@ -98,18 +99,28 @@ def _translate(behavior: model.Behavior, scenario: model.Scenario, lanes: int, c
 
 
 def _atomic(invocation: model.Invocation, scenario: model.Scenario, lanes: int, counter, env: dict) -> _Fragment:
-    start, end = phase_guards(invocation, scenario, lanes, env)
-    uid = next(counter)
-    i, s, f = ("i", uid), ("s", uid), ("f", uid)
+    phase = phase_guards(invocation, scenario, lanes, env)
     labelled = invocation.label is not None
     name = invocation.label if labelled else f"{invocation.actor}.{invocation.action}"
-    return _Fragment(
-        initial=i,
-        final=f,
-        edges=[_Edge(i, start, (f"{name} start",), s), _Edge(s, end, (f"{name} end",), f)],
-        names={s: (name, labelled)},
-        drivers={s: frozenset([invocation.actor])},
-    )
+    drivers = frozenset([invocation.actor]) if phase.drives else frozenset()
+    fragments = []
+    for variant in phase.variants:
+        uid = next(counter)
+        i, s, f = ("i", uid), ("s", uid), ("f", uid)
+        # An invariant holds throughout the phase, its first and last instants included.
+        start = conjunction([variant.start, variant.invariant])
+        end = conjunction([variant.end, variant.invariant])
+        fragments.append(
+            _Fragment(
+                initial=i,
+                final=f,
+                edges=[_Edge(i, start, (f"{name} start",), s), _Edge(s, end, (f"{name} end",), f)],
+                names={s: (name, labelled)},
+                drivers={s: drivers},
+                invariants={s: variant.invariant} if not variant.invariant.is_true else {},
+            )
+        )
+    return fragments[0] if len(fragments) == 1 else _one_of(fragments, next(counter))
 
 
 def _serial(first: _Fragment, second: _Fragment) -> _Fragment:
@@ -124,6 +135,7 @@ def _serial(first: _Fragment, second: _Fragment) -> _Fragment:
         edges=edges,
         names={**first.names, **second.names},
         drivers={**first.drivers, **second.drivers},
+        invariants={**first.invariants, **second.invariants},
     )
 
 
@@ -155,6 +167,7 @@ def _parallel(children: list[_Fragment]) -> _Fragment:
                 frontier.append(target)
     names: dict[Key, tuple[str, bool]] = {}
     drivers: dict[Key, frozenset[str]] = {}
+    invariants: dict[Key, Guard] = {}
     for key in seen:
         parts = [c.names[k] for c, k in zip(children, key) if k in c.names]
         labelled = [n for n, is_labelled in parts if is_labelled]
@@ -162,7 +175,10 @@ def _parallel(children: list[_Fragment]) -> _Fragment:
         if chosen:
             names[key] = (" | ".join(chosen), bool(labelled))
         drivers[key] = frozenset().union(*(c.drivers.get(k, frozenset()) for c, k in zip(children, key)))
-    return _Fragment(initial, final, edges, names, drivers)
+        parts = [c.invariants[k] for c, k in zip(children, key) if k in c.invariants]
+        if parts:
+            invariants[key] = conjunction(parts)
+    return _Fragment(initial, final, edges, names, drivers, invariants)
 
 
 def _one_of(children: list[_Fragment], uid: int) -> _Fragment:
@@ -170,13 +186,15 @@ def _one_of(children: list[_Fragment], uid: int) -> _Fragment:
     edges: list[_Edge] = []
     names: dict[Key, tuple[str, bool]] = {}
     drivers: dict[Key, frozenset[str]] = {}
+    invariants: dict[Key, Guard] = {}
     for child in children:
         rename = {child.initial: initial, child.final: final}
         for e in child.edges:
             edges.append(_Edge(rename.get(e.source, e.source), e.guard, e.events, rename.get(e.target, e.target)))
         names.update(child.names)
         drivers.update(child.drivers)
-    return _Fragment(initial, final, edges, names, drivers)
+        invariants.update(child.invariants)
+    return _Fragment(initial, final, edges, names, drivers, invariants)
 
 
 def _finish(fragment: _Fragment, actors: tuple[str, ...], scenario: model.Scenario) -> SymbolicAutomaton:
@@ -200,14 +218,15 @@ def _finish(fragment: _Fragment, actors: tuple[str, ...], scenario: model.Scenar
         used[name] = used.get(name, 0) + 1
         if used[name] > 1:
             name = f"{name}#{used[name]}"
-        locations.append(Location(ids[key], name, fragment.drivers.get(key, frozenset())))
+        locations.append(Location(ids[key], name, fragment.drivers.get(key, frozenset()), fragment.invariants.get(key, TRUE)))
     transitions = []
     for edge in fragment.edges:
         if edge.source in useful and edge.target in useful:
             transitions.append(Transition(len(transitions), ids[edge.source], ids[edge.target], edge.guard, edge.events))
     transitions.sort(key=lambda t: (t.source, t.target))
     transitions = [Transition(i, t.source, t.target, t.guard, t.events) for i, t in enumerate(transitions)]
-    return SymbolicAutomaton(locations, transitions, ids[fragment.initial], ids[fragment.final], actors)
+    stationary = frozenset(a.name for a in scenario.actors if a.stationary)
+    return SymbolicAutomaton(locations, transitions, ids[fragment.initial], ids[fragment.final], actors, stationary)
 
 
 def _closure(start: Key, neighbours) -> set[Key]:

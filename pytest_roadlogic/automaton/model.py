@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from .guards import Guard
+from .guards import TRUE, Guard
 
 
 @dataclass(frozen=True)
@@ -19,6 +19,8 @@ class Location:
     name: str
     # Actors inside a ``drive`` phase here: each must make forward progress while the run stays.
     drivers: frozenset[str] = frozenset()
+    # What must hold at every instant the run spends here (modifiers with ``at: all``).
+    invariant: Guard = TRUE
 
 
 @dataclass(frozen=True)
@@ -42,6 +44,8 @@ class SymbolicAutomaton:
     initial: int
     final: int
     actors: tuple[str, ...] = field(default_factory=tuple)
+    # Actors that never move (stationary_object): the planner pins them, the simulator does not drive them.
+    stationary: frozenset[str] = frozenset()
 
     def location(self, location_id: int) -> Location:
         return self.locations[location_id]
@@ -65,6 +69,9 @@ class SymbolicAutomaton:
 
     def describe(self) -> str:
         lines = [f"locations: {', '.join(loc.name for loc in self.locations)}"]
+        for loc in self.locations:
+            if not loc.invariant.is_true:
+                lines.append(f"  {loc.name} invariant: {loc.invariant}")
         for t in self.transitions:
             lines.append(f"  {self.locations[t.source].name} -> {self.locations[t.target].name}: {t.guard}")
         return "\n".join(lines)

@@ -1,167 +1,285 @@
-"""From an invocation's modifiers to its start and end guards.
+"""From an invocation (action + modifiers) to the guards of its phase.
 
 This is where OS2's spelling meets the guard algebra: ``position([10..20]m, behind: v2, at: start)``
-becomes ``10 <= p(v2) - p(v1) <= 20`` on the phase's start transition. The lane convention lives
-here too: ``lane(k)`` counts 1-based from the right (the standard), ``lane(k, from: left)`` from the
-left, and internally 0 is the leftmost lane (the paper).
+becomes ``10 <= p(v2) - p(v1) <= 20`` on the phase's start transition, and ``lane(1)`` (no ``at:``,
+so ``at: all``) becomes an invariant of the phase's location. The lane convention lives here too:
+``lane(k)`` counts 1-based from the right (the standard), ``lane(k, from: left)`` from the left, and
+internally 0 is the leftmost lane (the paper).
+
+Some constraints refer to the value a quantity had when the phase started (``keep_lane()``,
+``change_lane(1, left)``). Guards only see the current state, so such a phase becomes a choice
+over the road's lanes: one variant per starting lane, each with plain guards. The road is finite,
+so the choice is too.
+
+The front-end checker has already validated names, argument kinds and lane numbers; the errors
+raised here are for what the automaton cannot express.
 """
 
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass, field
 
 from ..frontend import model
 from ..frontend.checker import LANE_CONVENTION
-from ..frontend.errors import OscError, error_at
+from ..frontend.errors import error_at
 from ..frontend.units import LENGTH, SPEED
 from ..frontend.values import EvaluationError, Interval, evaluate
 from .guards import LANE, POSITION, SPEED as SPEED_Q, TRUE, Bound, Guard, Term, conjunction
 
-SUPPORTED_ACTIONS = ("drive",)
-SUPPORTED_MODIFIERS = ("lane", "position", "speed")
-# A single speed value cannot be met exactly by a continuous trace; it is read as value +- this.
+SUPPORTED_ACTIONS = ("drive", "change_lane", "change_speed", "follow_lane", "remain_stationary")
+SUPPORTED_MODIFIERS = ("lane", "position", "speed", "keep_lane", "change_lane")
+# A single value cannot be met exactly by a continuous trace; speeds are read as value +- 0.5 m/s
+# and distances as value +- 1 m (one planning cell).
 SPEED_TOLERANCE = 0.5
+POSITION_TOLERANCE = 1.0
+# What "standing still" means for a trace's speed, in m/s.
+STANDSTILL = 0.1
 
 
-def phase_guards(invocation: model.Invocation, scenario: model.Scenario, lanes: int, env: dict | None = None) -> tuple[Guard, Guard]:
-    """The (start, end) guards of one atomic phase; ``env`` gives the parameters' values or ranges."""
+@dataclass(frozen=True)
+class Variant:
+    """One way the phase can go: the guard at its start, at its end, and throughout."""
+
+    start: Guard = TRUE
+    end: Guard = TRUE
+    invariant: Guard = TRUE
+
+
+@dataclass
+class Phase:
+    """The guards of one atomic phase; several variants when it depends on a starting lane."""
+
+    actor: str
+    variants: list[Variant] = field(default_factory=lambda: [Variant()])
+    drives: bool = True  # whether the actor must make forward progress in this phase
+
+    def add(self, start: Guard = TRUE, end: Guard = TRUE, invariant: Guard = TRUE) -> None:
+        self.variants = [
+            Variant(conjunction([v.start, start]), conjunction([v.end, end]), conjunction([v.invariant, invariant]))
+            for v in self.variants
+        ]
+
+    def branch(self, options: list[Variant]) -> None:
+        """Multiply the variants by ``options`` (each existing variant combined with each option)."""
+        self.variants = [
+            Variant(conjunction([v.start, o.start]), conjunction([v.end, o.end]), conjunction([v.invariant, o.invariant]))
+            for v in self.variants
+            for o in options
+        ]
+
+
+def phase_guards(invocation: model.Invocation, scenario: model.Scenario, lanes: int, env: dict | None = None) -> Phase:
+    """The guards of one atomic phase; ``env`` gives the parameters' values or ranges."""
     env = env or {}
     actor = _actor(invocation, scenario)
     if invocation.action not in SUPPORTED_ACTIONS:
         raise error_at(
             invocation.location,
-            f"not supported: action {invocation.action!r}",
-            hint=f"this version supports {', '.join(SUPPORTED_ACTIONS)}() with modifiers {', '.join(SUPPORTED_MODIFIERS)}",
+            f"not supported yet by the automaton: action {invocation.action!r}",
+            hint=f"this version translates {', '.join(a + '()' for a in SUPPORTED_ACTIONS)}",
         )
-    if invocation.arguments:
-        raise error_at(invocation.arguments[0].location, f"not supported: arguments to {invocation.action}()")
-    start: list[Guard] = []
-    end: list[Guard] = []
+    for argument in invocation.arguments:
+        if argument.name == "duration":
+            raise error_at(argument.location, "not supported yet by the automaton: duration", hint="bound the phase with position or speed modifiers")
+    if invocation.until is not None:
+        raise error_at(invocation.location, "not supported yet by the automaton: until")
+    if invocation.constraints:
+        raise error_at(invocation.constraints[0].location, "not supported yet by the automaton: keep() on an invocation")
+    phase = Phase(actor)
+    _action(invocation, phase, scenario, lanes, env)
     for modifier in invocation.modifiers:
-        anchor, guard = _modifier_guard(modifier, actor, scenario, lanes, env)
-        (start if anchor == "start" else end).append(guard)
-    return conjunction(start) if start else TRUE, conjunction(end) if end else TRUE
+        _modifier(modifier, phase, scenario, lanes, env)
+    return phase
 
 
 def _actor(invocation: model.Invocation, scenario: model.Scenario) -> str:
     if invocation.actor is None:
         raise error_at(invocation.location, f"{invocation.action}() needs an actor", hint="write it as v1.drive()")
-    _check_actor(invocation.actor, invocation.location, scenario)
+    if scenario.actor(invocation.actor) is None:
+        known = ", ".join(a.name for a in scenario.actors) or "none"
+        raise error_at(invocation.location, f"unknown actor {invocation.actor!r}", hint=f"the scenario declares: {known}")
     return invocation.actor
 
 
-def _check_actor(name: str, location, scenario: model.Scenario) -> None:
-    if scenario.actor(name) is None:
-        known = ", ".join(a.name for a in scenario.actors) or "none"
-        raise error_at(location, f"unknown actor {name!r}", hint=f"the scenario declares: {known}")
+# ---------------------------------------------------------------- actions
 
 
-def _modifier_guard(modifier: model.Modifier, actor: str, scenario: model.Scenario, lanes: int, env: dict) -> tuple[str, Guard]:
+def _action(invocation: model.Invocation, phase: Phase, scenario: model.Scenario, lanes: int, env: dict) -> None:
+    actor = phase.actor
+    action = invocation.action
+    if action == "remain_stationary":
+        phase.drives = False
+        phase.add(invariant=Bound(Term(SPEED_Q, actor), -STANDSTILL, STANDSTILL, invocation.location))
+    elif action == "follow_lane":
+        phase.branch(_keep_lane_variants(actor, lanes, invocation.location))
+    elif action == "change_speed":
+        target = invocation.argument("target") or _positional(invocation.arguments, 0)
+        if target is None:
+            raise error_at(invocation.location, "change_speed() needs a target speed, e.g. change_speed(target: 20mps)")
+        low, high = _interval(target, SPEED, "a speed such as 20mps", env)
+        if low == high:
+            low, high = low - SPEED_TOLERANCE, high + SPEED_TOLERANCE
+        phase.add(end=Bound(Term(SPEED_Q, actor), max(0.0, low), high, invocation.location))
+    elif action == "change_lane":
+        count = invocation.argument("num_of_lanes") or _positional(invocation.arguments, 0)
+        side = invocation.argument("side") or _positional(invocation.arguments, 1)
+        reference = invocation.argument("reference")
+        phase.branch(_lane_change_variants(actor, count, side, reference, lanes, invocation.location, env))
+
+
+def _positional(arguments: tuple[model.Argument, ...], index: int) -> model.Argument | None:
+    positional = [a for a in arguments if a.name is None]
+    return positional[index] if index < len(positional) else None
+
+
+def _keep_lane_variants(actor: str, lanes: int, source) -> list[Variant]:
+    return [Variant(invariant=Bound(Term(LANE, actor), lane, lane, source)) for lane in range(lanes)]
+
+
+def _lane_change_variants(actor, count_arg, side_arg, reference_arg, lanes, source, env) -> list[Variant]:
+    count = 1
+    if count_arg is not None:
+        value = _evaluate(count_arg, env)
+        if not value.is_point or not float(value.low).is_integer():
+            raise error_at(count_arg.location, "the number of lanes to change must be one whole number")
+        count = int(value.low)
+    sides = ("left", "right") if side_arg is None else (_name(side_arg),)
+    variants = []
+    for side in sides:
+        step = -count if side == "left" else count  # internal lanes grow to the right
+        if reference_arg is not None and _name(reference_arg) != actor:
+            other = _name(reference_arg)
+            variants.append(Variant(end=Bound(Term(LANE, actor, other), step, step, source)))
+            continue
+        for lane in range(lanes):
+            if 0 <= lane + step < lanes:
+                variants.append(
+                    Variant(start=Bound(Term(LANE, actor), lane, lane, source), end=Bound(Term(LANE, actor), lane + step, lane + step, source))
+                )
+    if not variants:
+        raise error_at(source, f"a change of {count} lanes is impossible on a road of {lanes} lanes")
+    return variants
+
+
+def _name(argument: model.Argument) -> str:
+    value = argument.value
+    if not isinstance(value, model.Name):
+        raise error_at(argument.location, f"`{argument.name or 'this argument'}` takes a name")
+    return value.name
+
+
+# ---------------------------------------------------------------- modifiers
+
+
+def _modifier(modifier: model.Modifier, phase: Phase, scenario: model.Scenario, lanes: int, env: dict) -> None:
+    actor = phase.actor
     if modifier.name not in SUPPORTED_MODIFIERS:
-        raise error_at(modifier.location, f"not supported: modifier {modifier.name!r}", hint=f"supported: {', '.join(SUPPORTED_MODIFIERS)}")
-    anchor = _anchor(modifier)
+        raise error_at(modifier.location, f"not supported yet by the automaton: modifier {modifier.name!r}", hint=f"supported: {', '.join(SUPPORTED_MODIFIERS)}")
+    if modifier.name == "keep_lane":
+        phase.branch(_keep_lane_variants(actor, lanes, modifier.location))
+        return
+    if modifier.name == "change_lane":
+        count = modifier.argument("num_of_lanes") or _positional(modifier.arguments, 0)
+        side = modifier.argument("side") or _positional(modifier.arguments, 1)
+        phase.branch(_lane_change_variants(actor, count, side, None, lanes, modifier.location, env))
+        return
     if modifier.name == "lane":
-        guard = _lane(modifier, actor, scenario, lanes, env)
+        guard = _lane(modifier, actor, lanes, env)
     elif modifier.name == "position":
-        guard = _position(modifier, actor, scenario, env)
+        guard = _position(modifier, actor, env)
     else:
-        guard = _speed(modifier, actor, scenario, env)
-    return anchor, guard
+        guard = _speed(modifier, actor, env)
+    anchor = _anchor(modifier)
+    if anchor == "start":
+        phase.add(start=guard)
+    elif anchor == "end":
+        phase.add(end=guard)
+    else:
+        phase.add(invariant=guard)
 
 
 def _anchor(modifier: model.Modifier) -> str:
     argument = modifier.argument("at")
     if argument is None:
-        raise error_at(
-            modifier.location,
-            f"not supported: {modifier.name}() without `at:` (it means `at: all`, an invariant)",
-            hint="write at: start or at: end",
-        )
+        return "all"  # the standard's default: the modifier holds throughout the phase
     value = argument.value
     if not isinstance(value, model.Name) or value.name not in ("start", "end", "all"):
         raise error_at(argument.location, "`at:` takes start, end or all")
-    if value.name == "all":
-        raise error_at(argument.location, "not supported: at: all", hint="write at: start or at: end")
     return value.name
 
 
-def _reference(modifier: model.Modifier, names: tuple[str, ...], scenario: model.Scenario) -> tuple[str, str] | None:
+def _reference(modifier: model.Modifier, names: tuple[str, ...]) -> tuple[str, str] | None:
     """The relation keyword used (e.g. ``same_as``) and the actor it names, if any."""
     found = [a for a in modifier.arguments if a.name in names]
-    if len(found) > 1:
-        raise error_at(found[1].location, f"{modifier.name}() takes only one of {', '.join(names)}")
     if not found:
         return None
-    argument = found[0]
-    if not isinstance(argument.value, model.Name):
-        raise error_at(argument.location, f"`{argument.name}:` takes an actor")
-    _check_actor(argument.value.name, argument.value.location, scenario)
-    return argument.name, argument.value.name
+    return found[0].name, _name(found[0])
 
 
-def _check_arguments(modifier: model.Modifier, allowed: tuple[str, ...], positional: int) -> None:
-    for argument in modifier.arguments:
-        if argument.name is None:
-            continue
-        if argument.name not in allowed:
-            raise error_at(argument.location, f"unknown argument {argument.name!r} of {modifier.name}()", hint=f"it takes: {', '.join(allowed)}")
-    if len(modifier.positional()) > positional:
-        raise error_at(modifier.positional()[positional].location, f"too many positional arguments to {modifier.name}()")
-
-
-def _lane(modifier: model.Modifier, actor: str, scenario: model.Scenario, lanes: int, env: dict) -> Guard:
-    _check_arguments(modifier, ("same_as", "left_of", "right_of", "from", "at"), positional=1)
-    relation = _reference(modifier, ("same_as", "left_of", "right_of"), scenario)
-    positional = modifier.positional()
+def _lane(modifier: model.Modifier, actor: str, lanes: int, env: dict) -> Guard:
+    relation = _reference(modifier, ("same_as", "left_of", "right_of", "side_of"))
     if relation is not None:
-        if positional:
-            raise error_at(positional[0].location, "not supported: a lane count together with a relative lane", hint=LANE_CONVENTION)
         keyword, other = relation
-        term = Term(LANE, actor, other)
+        if keyword == "side_of":
+            side = modifier.argument("side")
+            keyword = "left_of" if side is None or _name(side) == "left" else "right_of"
         low, high = {"same_as": (0, 0), "left_of": (-math.inf, -1), "right_of": (1, math.inf)}[keyword]
-        return Bound(term, low, high, modifier.location)
-    if not positional:
+        return Bound(Term(LANE, actor, other), low, high, modifier.location)
+    number_arg = modifier.argument("lane") or _positional(modifier.arguments, 0)
+    if number_arg is None:
         raise error_at(modifier.location, "lane() needs a lane number or same_as:/left_of:/right_of:", hint=LANE_CONVENTION)
-    value = _evaluate(positional[0], env)
-    if value.dimension is not None or not value.is_point or not float(value.low).is_integer():
-        raise error_at(positional[0].location, "a lane number must be one whole number", hint=LANE_CONVENTION)
-    number = int(value.low)
+    value = _evaluate(number_arg, env)
+    if value.dimension is not None or not float(value.low).is_integer() or not float(value.high).is_integer():
+        raise error_at(number_arg.location, "a lane number must be a whole number", hint=LANE_CONVENTION)
+    low, high = int(value.low), int(value.high)
+    if low < 1 or high > lanes:
+        raise error_at(number_arg.location, f"lane {value} is outside the road's {lanes} lanes", hint=LANE_CONVENTION)
     side = modifier.argument("from")
-    from_left = side is not None and isinstance(side.value, model.Name) and side.value.name == "left"
-    if side is not None and not (isinstance(side.value, model.Name) and side.value.name in ("left", "right")):
-        raise error_at(side.location, "`from:` takes left or right", hint=LANE_CONVENTION)
-    if not 1 <= number <= lanes:
-        raise error_at(positional[0].location, f"lane {number} is outside the road's {lanes} lanes", hint=LANE_CONVENTION)
-    index = number - 1 if from_left else lanes - number
-    return Bound(Term(LANE, actor), index, index, modifier.location)
+    from_left = side is not None and _name(side) == "left"
+    first, last = (low - 1, high - 1) if from_left else (lanes - high, lanes - low)
+    return Bound(Term(LANE, actor), first, last, modifier.location)
 
 
-def _position(modifier: model.Modifier, actor: str, scenario: model.Scenario, env: dict) -> Guard:
-    _check_arguments(modifier, ("behind", "ahead_of", "at"), positional=1)
-    relation = _reference(modifier, ("behind", "ahead_of"), scenario)
+def _position(modifier: model.Modifier, actor: str, env: dict) -> Guard:
+    if modifier.argument("time") is not None:
+        raise error_at(modifier.argument("time").location, "not supported yet by the automaton: position(time: ...)", hint="give the gap as a distance")
+    relation = _reference(modifier, ("behind", "ahead_of"))
     if relation is None:
         raise error_at(modifier.location, "position() needs behind: or ahead_of: another actor")
-    positional = modifier.positional()
-    if not positional:
+    distance = modifier.argument("distance") or _positional(modifier.arguments, 0)
+    if distance is None:
         raise error_at(modifier.location, "position() needs a distance, e.g. position([10..20]m, behind: v2)")
-    low, high = _interval(positional[0], LENGTH, "a length such as 10m or [10..20]m", env)
+    low, high = _interval(distance, LENGTH, "a length such as 10m or [10..20]m", env)
     if low < 0:
-        raise error_at(positional[0].location, "a distance must not be negative", hint="use behind: instead of ahead_of: (or the reverse)")
+        raise error_at(distance.location, "a distance must not be negative", hint="use behind: instead of ahead_of: (or the reverse)")
+    if low == high:
+        low, high = max(0.0, low - POSITION_TOLERANCE), high + POSITION_TOLERANCE
     keyword, other = relation
     # behind: the other actor is ahead by the distance; ahead_of: this actor is.
     term = Term(POSITION, other, actor) if keyword == "behind" else Term(POSITION, actor, other)
     return Bound(term, low, high, modifier.location)
 
 
-def _speed(modifier: model.Modifier, actor: str, scenario: model.Scenario, env: dict) -> Guard:
-    _check_arguments(modifier, ("at",), positional=1)
-    positional = modifier.positional()
-    if not positional:
-        raise error_at(modifier.location, "speed() needs a speed, e.g. speed([20..30]kph)")
-    low, high = _interval(positional[0], SPEED, "a speed such as 20mps or [50..80]kph", env)
+def _speed(modifier: model.Modifier, actor: str, env: dict) -> Guard:
+    value = modifier.argument("speed") or _positional(modifier.arguments, 0)
+    relation = _reference(modifier, ("faster_than", "slower_than", "same_as"))
+    if value is None:
+        if relation is None or relation[0] != "same_as":
+            raise error_at(modifier.location, "speed() needs a speed, e.g. speed([20..30]kph)")
+        low = high = 0.0
+    else:
+        low, high = _interval(value, SPEED, "a speed such as 20mps or [50..80]kph", env)
     if low == high:
         low, high = low - SPEED_TOLERANCE, high + SPEED_TOLERANCE
-    return Bound(Term(SPEED_Q, actor), max(0.0, low), high, modifier.location)
+    if relation is None:
+        return Bound(Term(SPEED_Q, actor), max(0.0, low), high, modifier.location)
+    keyword, other = relation
+    if keyword == "slower_than":
+        return Bound(Term(SPEED_Q, other, actor), low, high, modifier.location)
+    if keyword == "faster_than":
+        return Bound(Term(SPEED_Q, actor, other), low, high, modifier.location)
+    return Bound(Term(SPEED_Q, actor, other), low, high, modifier.location)  # same_as: within the given difference
 
 
 def _evaluate(argument: model.Argument, env: dict) -> Interval:
@@ -185,8 +303,10 @@ def _interval(argument: model.Argument, dimension: str, example: str, env: dict)
 
 
 def check_behavior_arguments(composition: model.Composition) -> None:
-    if composition.arguments:
-        raise error_at(composition.arguments[0].location, f"not supported: arguments to {composition.operator}")
+    for argument in composition.arguments:
+        if argument.name == "overlap" and isinstance(argument.value, model.Name) and argument.value.name in ("start", "equal"):
+            continue  # members start (and here also end) together: what the product builds
+        raise error_at(argument.location, f"not supported yet by the automaton: {argument.name or 'arguments'} on {composition.operator}")
 
 
-__all__ = ["phase_guards", "check_behavior_arguments", "LANE_CONVENTION", "OscError"]
+__all__ = ["Phase", "Variant", "phase_guards", "check_behavior_arguments", "LANE_CONVENTION", "STANDSTILL"]

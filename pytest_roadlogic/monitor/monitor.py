@@ -2,8 +2,8 @@
 
 Semantics (the paper's, on a sampled trace with constant interpolation): a run of the automaton
 takes its transitions at strictly increasing sample instants, each when its guard holds; while the
-run stays in a location, every actor driving there makes forward progress (its position increases
-from each sample to the next). The scenario may start after the trace does (vehicles start from
+run stays in a location, the location's invariant holds at every sample and every actor driving
+there makes forward progress (its position increases from each sample to the next). The scenario may start after the trace does (vehicles start from
 standstill and need a run-up), so the initial location may be left at any sample. The trace is
 accepted when some run reaches the final location and no incident (collision, off-road) occurred.
 
@@ -96,6 +96,8 @@ def monitor(automaton: SymbolicAutomaton, trace: Trace) -> Verdict:
     first_met = [None] * n_loc  # first sample at which a run with all guards met is in the location
     best_final, best_final_run = NONE, ()
     outgoing = [automaton.outgoing(q) for q in range(n_loc)]
+    invariants = [loc.invariant for loc in automaton.locations]
+    invariant_locations = [q for q in range(n_loc) if not invariants[q].is_true]
     for k, snapshot in enumerate(snapshots):
         # staying: the run was in q at k-1 and q's drivers progressed over (k-1, k]
         alive = [False] * n_loc
@@ -105,6 +107,10 @@ def monitor(automaton: SymbolicAutomaton, trace: Trace) -> Verdict:
             elif value[q] != NONE and k > 0 and all(positions[a][k] > positions[a][k - 1] for a in drivers[q]):
                 alive[q] = True
         new_value = [value[q] if alive[q] and q != init else NONE for q in range(n_loc)]
+        for q in invariant_locations:
+            if new_value[q] != NONE:
+                # staying in q: its invariant must hold at this sample too
+                new_value[q] = min(new_value[q], invariants[q].robustness(snapshot))
         new_value[init] = math.inf
         new_run = list(run)
         for q in range(n_loc):

@@ -60,7 +60,11 @@ class PlanningSettings:
 
 
 def guard_nodes(automaton: SymbolicAutomaton) -> tuple[dict[int, int], dict[Guard, int]]:
-    """Number every distinct guard node, children first: (transition id -> node, guard -> node)."""
+    """Number every distinct guard node, children first: (transition id -> node, guard -> node).
+
+    Location invariants are numbered too (after the transitions' guards); ``invariant_nodes``
+    looks them up.
+    """
     numbering: dict[Guard, int] = {}
 
     def visit(guard: Guard) -> int:
@@ -71,7 +75,16 @@ def guard_nodes(automaton: SymbolicAutomaton) -> tuple[dict[int, int], dict[Guar
         numbering[guard] = len(numbering)
         return numbering[guard]
 
-    return {t.id: visit(t.guard) for t in automaton.transitions}, numbering
+    transitions = {t.id: visit(t.guard) for t in automaton.transitions}
+    for location in automaton.locations:
+        if not location.invariant.is_true:
+            visit(location.invariant)
+    return transitions, numbering
+
+
+def invariant_nodes(automaton: SymbolicAutomaton, numbering: dict[Guard, int]) -> dict[int, int]:
+    """location id -> guard node of its invariant, for locations that have one."""
+    return {loc.id: numbering[loc.invariant] for loc in automaton.locations if not loc.invariant.is_true}
 
 
 def _children(guard: Guard) -> tuple[Guard, ...]:
@@ -100,6 +113,7 @@ def build_instance(automaton: SymbolicAutomaton, settings: PlanningSettings) -> 
     base = [
         "% scenario instance (generated)",
         *(f"vehicle({_atom(v)})." for v in vehicles),
+        *(f"stationary({_atom(v)})." for v in vehicles if v in automaton.stationary),
         f"lane_id(0..{settings.lanes - 1}).",
         f"speed({speeds[0]}..{speeds[-1]}).",
         *(f"accel({a})." for a in accels),
@@ -112,9 +126,11 @@ def build_instance(automaton: SymbolicAutomaton, settings: PlanningSettings) -> 
         f"pos({_atom(vehicles[0])},0,0).",
         *(f"{{ pos({_atom(v)},S,0) : S = -{spread}..{spread} }} = 1." for v in vehicles[1:]),
         "{ lane(V,L,0) : lane_id(L) } = 1 :- vehicle(V).",
-        f"{{ vel(V,X,0) : X = {v_lo}..{v_hi}, speed(X) }} = 1 :- vehicle(V).",
+        f"{{ vel(V,X,0) : X = {v_lo}..{v_hi}, speed(X) }} = 1 :- vehicle(V), not stationary(V).",
+        "vel(V,0,0) :- stationary(V).",
         "% cells covered in the run-up from standstill by a vehicle starting the scenario at speed X",
         *(_runup_fact(x, settings) for x in range(v_lo, v_hi + 1)),
+        "runup(0,0,0).  % a stationary object has no run-up",
         "",
         "% the automaton",
         *(f"location({loc.id}).  % {loc.name}" for loc in automaton.locations),
@@ -125,6 +141,8 @@ def build_instance(automaton: SymbolicAutomaton, settings: PlanningSettings) -> 
     for t in automaton.transitions:
         base.append(f"transition({t.id},{t.source},{t.target}).  % {t.guard}")
         base.append(f"guard_of({t.id},{transition_node[t.id]}).")
+    for location, node in invariant_nodes(automaton, numbering).items():
+        base.append(f"invariant_of({location},{node}).  % {automaton.location(location).invariant}")
     state = ["% guards: g(N,t) holds when guard node N holds at step t (generated)"]
     for guard, node in numbering.items():
         state.append(f"% node {node}: {guard}")

@@ -29,6 +29,8 @@ class Plan:
     runup_acceleration: float = 2.0
     index: int = 0  # 0 for the first plan of a solve, 1 for the next one, ...
     stats: dict[str, float] = field(default_factory=dict)
+    # vehicles that never move (stationary objects): simulated as standing obstacles
+    stationary: tuple[str, ...] = ()
 
     @property
     def horizon(self) -> int:
@@ -53,6 +55,7 @@ class Plan:
             "transitions": [{"step": s, "transition": t} for s, t in self.transitions],
             "states": {v: [asdict(s) for s in states] for v, states in self.states.items()},
             "stats": self.stats,
+            "stationary": list(self.stationary),
         }
 
     @classmethod
@@ -67,6 +70,7 @@ class Plan:
             runup_acceleration=data.get("runup_acceleration", 2.0),
             index=data.get("index", 0),
             stats=data.get("stats", {}),
+            stationary=tuple(data.get("stationary", ())),
         )
 
     def to_json(self) -> str:

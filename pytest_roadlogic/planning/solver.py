@@ -148,4 +148,5 @@ class Planner:
         stats = dict(self.stats)
         stats["horizon"] = horizon
         return Plan(dt=s.dt, lanes=s.lanes, states=states, transitions=transitions, seed=self.seed, index=index, stats=stats,
-                    runup=s.runup, runup_acceleration=s.runup_acceleration)
+                    runup=s.runup, runup_acceleration=s.runup_acceleration,
+                    stationary=tuple(v for v in self.automaton.actors if v in self.automaton.stationary))

@@ -1,5 +1,6 @@
 """The concrete scenario as a CommonRoad file: the road, every vehicle's driven trajectory as a
-dynamic obstacle, and each vehicle's planning problem (standstill start, its final waypoint as goal)."""
+dynamic obstacle, each vehicle's planning problem (standstill start, its final waypoint as goal),
+and stationary objects as static obstacles."""
 
 from __future__ import annotations
 
@@ -24,7 +25,7 @@ def commonroad_scenario(simulation: Simulation):
     from commonroad.planning.goal import GoalRegion
     from commonroad.planning.planning_problem import PlanningProblem, PlanningProblemSet
     from commonroad.prediction.prediction import TrajectoryPrediction
-    from commonroad.scenario.obstacle import DynamicObstacle, ObstacleType
+    from commonroad.scenario.obstacle import DynamicObstacle, ObstacleType, StaticObstacle
     from commonroad.scenario.scenario import Scenario
     from commonroad.scenario.state import CustomState, InitialState
     from commonroad.scenario.trajectory import Trajectory
@@ -49,6 +50,9 @@ def commonroad_scenario(simulation: Simulation):
             time_step=0, position=states[0].position, orientation=states[0].orientation,
             velocity=0.0, acceleration=0.0, yaw_rate=0.0, slip_angle=0.0,
         )
+        if vehicle in simulation.stationary:
+            scenario.add_objects(StaticObstacle(FIRST_OBSTACLE_ID + index, ObstacleType.PARKED_VEHICLE, shape, initial))
+            continue
         prediction = TrajectoryPrediction(Trajectory(1, states[1:]), shape)
         scenario.add_objects(DynamicObstacle(FIRST_OBSTACLE_ID + index, ObstacleType.CAR, shape, initial, prediction))
         goal = simulation.references[vehicle].waypoints[-1]

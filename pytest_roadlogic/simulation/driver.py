@@ -71,6 +71,16 @@ class Driver(Protocol):
         """Called every time step; returns a trajectory starting at ``state``."""
 
 
+class StationaryDriver:
+    """Holds a stationary object where it stands: the plan's obstacles are not driven."""
+
+    def start(self, vehicle: str, reference: Reference, road: Road, dt: float) -> None:
+        self.steps = max(1, int(round(3.0 / dt)))
+
+    def plan(self, time: float, state: VehicleState, others: dict[str, Trajectory]) -> Trajectory:
+        return Trajectory.standing(VehicleState(state.x, state.y, state.heading, 0.0, 0.0), self.steps)
+
+
 def boxes_overlap(a: VehicleState, b: VehicleState, margin: float = 0.0) -> bool:
     """Separating-axis test of two oriented vehicle rectangles."""
     ca, cb = corners(a, margin), corners(b, margin)

@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..planning.plan import Plan
-from .driver import Driver, FrenetixDriver, Trajectory, VehicleState, boxes_overlap, corners
+from .driver import Driver, FrenetixDriver, StationaryDriver, Trajectory, VehicleState, boxes_overlap, corners
 from .reference import TAIL, Reference, references
 from .road import Road
 from .trace import Incident, Trace
@@ -31,6 +31,7 @@ class Simulation:
     references: dict[str, Reference]
     dt: float
     fallbacks: dict[str, int] = field(default_factory=dict)
+    stationary: tuple[str, ...] = ()  # standing obstacles, not driven
 
 
 def road_for(plan: Plan, lanes: int | None = None) -> Road:
@@ -44,13 +45,17 @@ def road_for(plan: Plan, lanes: int | None = None) -> Road:
 def simulate(plan: Plan, dt: float = 0.1, drivers: DriverFactory | None = None, lanes: int | None = None) -> Simulation:
     """Drive every vehicle of ``plan`` from standstill through its waypoints.
 
-    ``drivers`` maps a vehicle name to a custom driver (or ``None`` for the default frenetix one).
+    ``drivers`` maps a vehicle name to a custom driver (or ``None`` for the default frenetix one);
+    stationary objects are never driven.
     """
     road = road_for(plan, lanes)
     refs = references(plan, road)
     active: dict[str, Driver] = {}
     for vehicle, reference in refs.items():
-        driver = (drivers(vehicle) if drivers else None) or FrenetixDriver()
+        if vehicle in plan.stationary:
+            driver = StationaryDriver()
+        else:
+            driver = (drivers(vehicle) if drivers else None) or FrenetixDriver()
         driver.start(vehicle, reference, road, dt)
         active[vehicle] = driver
     end_time = max(r.end_time for r in refs.values()) + TAIL
@@ -89,7 +94,7 @@ def simulate(plan: Plan, dt: float = 0.1, drivers: DriverFactory | None = None, 
         columns[v]["lane"] = columns[v]["lane"].astype(int)
     trace = Trace(np.round(np.arange(steps + 1) * dt, 6), columns, _merge(incidents))
     fallbacks = {v: getattr(d, "fallbacks", 0) for v, d in active.items()}
-    return Simulation(trace, road, refs, dt, fallbacks)
+    return Simulation(trace, road, refs, dt, fallbacks, tuple(plan.stationary))
 
 
 def _merge(incidents: list[Incident]) -> list[Incident]:
