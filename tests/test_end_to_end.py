@@ -47,13 +47,19 @@ def test_a_broken_file_is_a_clear_error_not_a_traceback(tmp_path):
 def test_pytest_collects_osc_files_runs_them_and_reports_broken_ones(tmp_path):
     (tmp_path / "overtake.osc").write_text(OVERTAKE.read_text())
     (tmp_path / "broken.osc").write_text("scenario s:\n  v1 car\n")
+    (tmp_path / "unknown.osc").write_text("scenario u:\n  v1: car\n  do v1.drive() with:\n    lane(same_as: v7, at: end)\n")
     result = subprocess.run(
         [sys.executable, "-m", "pytest", str(tmp_path), "-p", "no:cacheprovider", "--roadlogic-artifacts", str(tmp_path / "art"), "-q", "--rootdir", str(tmp_path)],
         capture_output=True, text=True, cwd=tmp_path,
     )
-    assert "1 passed" in result.stdout and "1 error" in result.stdout, result.stdout
+    assert "1 passed" in result.stdout and "2 errors" in result.stdout, result.stdout
     assert "broken.osc:2:" in result.stdout
     assert (tmp_path / "art").is_dir()
+    # a checker error is reported at collection with the same words as `roadlogic check`
+    check = run_cli("check", str(tmp_path / "unknown.osc"))
+    first_line = check.stdout.splitlines()[0]
+    assert first_line.endswith("unknown.osc:4:19: error: unknown actor 'v7'")
+    assert first_line in result.stdout
 
 
 def test_a_rejected_scenario_fails_with_the_guard_the_time_and_the_values(tmp_path):

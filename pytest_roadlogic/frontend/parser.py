@@ -218,7 +218,7 @@ class _Builder:
             elif isinstance(item, P.KeepConstraintContext):
                 constraints.append(self.keep(item))
             elif isinstance(item, P.RemoveDefaultContext):
-                constraints.append(model.RemoveDefault(self.expression(item.expression()), self.loc(item)))
+                constraints.append(self.remove_default(item))
             elif isinstance(item, P.EventDeclarationContext):
                 events.append(self.event(item))
             elif isinstance(item, P.MethodDeclarationContext):
@@ -264,7 +264,7 @@ class _Builder:
             elif isinstance(item, P.KeepConstraintContext):
                 constraints.append(self.keep(item))
             elif isinstance(item, P.RemoveDefaultContext):
-                constraints.append(model.RemoveDefault(self.expression(item.expression()), self.loc(item)))
+                constraints.append(self.remove_default(item))
         parent = self.name(ctx.inheritance().parent.name) if ctx.inheritance() is not None else None
         kind = "actor" if isinstance(ctx, P.ActorDeclarationContext) else "struct"
         return model.TypeDeclaration(kind, self.name(ctx.identifier()), parent, tuple(fields), tuple(constraints), self.loc(ctx.identifier()))
@@ -282,7 +282,7 @@ class _Builder:
                 if isinstance(item, P.KeepConstraintContext):
                     constraints.append(self.keep(item, subject=name))
                 else:
-                    constraints.append(model.RemoveDefault(self.expression(item.expression()), self.loc(item)))
+                    constraints.append(self.remove_default(item))
             result.append(
                 model.Field(
                     name=name,
@@ -299,6 +299,9 @@ class _Builder:
     def keep(self, ctx: P.KeepConstraintContext, subject: str | None = None) -> model.Keep:
         strength = "default" if ctx.strength is not None and ctx.strength.text == "default" else "hard"
         return model.Keep(self.expression(ctx.expression()), strength, self.loc(ctx), subject)
+
+    def remove_default(self, ctx: P.RemoveDefaultContext) -> model.RemoveDefault:
+        return model.RemoveDefault(self.expression(ctx.expression()), self.loc(ctx))
 
     def event(self, ctx: P.EventDeclarationContext) -> model.Event:
         spec = self.event_specification(ctx.eventSpecification()) if ctx.eventSpecification() is not None else None
@@ -363,7 +366,7 @@ class _Builder:
             elif isinstance(item, P.KeepConstraintContext):
                 constraints.append(self.keep(item, subject="it"))
             elif isinstance(item, P.RemoveDefaultContext):
-                constraints.append(model.RemoveDefault(self.expression(item.expression()), self.loc(item)))
+                constraints.append(self.remove_default(item))
             elif isinstance(item, P.UntilDirectiveContext):
                 until = self.event_specification(item.eventSpecification())
         return model.Invocation(
