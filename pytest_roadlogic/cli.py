@@ -2,10 +2,12 @@
 
     roadlogic run FILE.osc [--scenario NAME] [--seed S] [--out DIR] [--lanes N] [--tries N]
     roadlogic check PATH... [--syntax-only] [--lanes N]
+    roadlogic automaton FILE.osc [--scenario NAME] [--out FILE.dot] [--lanes N]
 
 Exit codes of ``run``: 0 the simulation was accepted; 1 it was rejected (or no plan exists);
 2 the input is unusable (a file that does not parse or check, a bad option).
 Exit codes of ``check``: 0 every file is fine; 1 some file has an error; 2 a path does not exist.
+Exit codes of ``automaton``: 0 written; 2 the input is unusable.
 """
 
 from __future__ import annotations
@@ -35,8 +37,37 @@ def main(argv: list[str] | None = None) -> int:
     check.add_argument("paths", type=Path, nargs="+", help=".osc files or folders (searched recursively)")
     check.add_argument("--syntax-only", action="store_true", help="stop after parsing (for files written for other tools)")
     check.add_argument("--lanes", type=int, default=3, help="lanes of the road, for lane numbers (default 3)")
+    automaton = commands.add_parser("automaton", help="write a scenario's symbolic automaton as Graphviz DOT (and PNG when dot is installed)")
+    automaton.add_argument("file", type=Path, help="an .osc file")
+    automaton.add_argument("--scenario", help="the scenario when the file declares several (default: the first)")
+    automaton.add_argument("--out", type=Path, default=None, help="the DOT file to write (default: <scenario>.dot)")
+    automaton.add_argument("--lanes", type=int, default=3, help="lanes of the road (default 3)")
     args = parser.parse_args(argv)
-    return _run(args) if args.command == "run" else _check(args)
+    return {"run": _run, "check": _check, "automaton": _automaton}[args.command](args)
+
+
+def _automaton(args: argparse.Namespace) -> int:
+    from .automaton import build_automaton
+    from .automaton.dot import write_dot
+    from .pipeline import load_scenario
+
+    try:
+        scenario = load_scenario(args.file, args.scenario, args.lanes)
+        automaton = build_automaton(scenario, args.lanes)
+    except OscError as error:
+        print(error.report(), file=sys.stderr)
+        return EXIT_INPUT
+    except KeyError as error:
+        print(f"{args.file}: error: no scenario named {error.args[0]!r} in the file", file=sys.stderr)
+        return EXIT_INPUT
+    written = write_dot(automaton, args.out or Path(f"{scenario.name}.dot"), title=f"{scenario.name} ({args.file})")
+    print(automaton.describe())
+    print(f"{len(automaton.locations)} locations, {len(automaton.transitions)} transitions")
+    for kind, path in written.items():
+        print(f"  {kind:<4} {path}")
+    if "png" not in written:
+        print("  (no PNG: Graphviz's dot is not installed)")
+    return 0
 
 
 def osc_files(paths: list[Path]) -> list[Path]:

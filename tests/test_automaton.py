@@ -6,6 +6,7 @@ import pytest
 
 from pytest_roadlogic.automaton import LANE, POSITION, Bound, Term, build_automaton
 from pytest_roadlogic.frontend import OscError, check_text
+from tests.conftest import OVERTAKE
 
 
 def test_overtake_automaton_is_the_papers_figure_4(overtake_automaton):
@@ -123,3 +124,26 @@ def test_guard_robustness_is_a_signed_margin_in_the_quantitys_units():
     left = Bound(Term(LANE, "v1", "v2"), -math.inf, -1)
     assert left.robustness({"v1": _S(0, 0, 0), "v2": _S(0, 1, 0)}) == pytest.approx(0.5)
     assert left.robustness({"v1": _S(0, 1, 0), "v2": _S(0, 1, 0)}) == pytest.approx(-0.5)
+
+
+def test_roadlogic_automaton_writes_valid_dot_with_the_papers_guards(tmp_path):
+    import pydot
+
+    from pytest_roadlogic.cli import main
+
+    out = tmp_path / "overtake.dot"
+    assert main(["automaton", str(OVERTAKE), "--out", str(out)]) == 0
+    graph = pydot.graph_from_dot_data(out.read_text())[0]
+    labels = {e.get_label().strip('"') for e in graph.get_edges() if e.get_label()}
+    assert "l(v1) = l(v2) and 10 <= p(v2) - p(v1) <= 20" in labels
+    assert "l(v1) < l(v2)" in labels
+    assert len(graph.get_nodes()) >= 5
+
+
+def test_roadlogic_automaton_of_a_bad_file_is_a_located_error_and_exit_2(tmp_path, capsys):
+    from pytest_roadlogic.cli import main
+
+    bad = tmp_path / "bad.osc"
+    bad.write_text("scenario s:\n  a: car\n  do a.fly()\n")
+    assert main(["automaton", str(bad), "--out", str(tmp_path / "x.dot")]) == 2
+    assert f"{bad}:3:6: error: unknown action 'fly'" in capsys.readouterr().err
