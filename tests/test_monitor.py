@@ -68,3 +68,19 @@ def test_a_collision_rejects_an_otherwise_conformant_trace(overtake_automaton):
     trace.incidents.append(Incident(2.0, "collision", ("v1", "v2")))
     verdict = monitor(overtake_automaton, trace)
     assert not verdict.accepted and "collision of v1 and v2" in verdict.explain()
+
+
+def test_a_wait_must_last_its_time():
+    from pytest_roadlogic.automaton import build_automaton
+    from pytest_roadlogic.frontend import check_text
+
+    text = "scenario s:\n  v1: car\n  do serial:\n    v1.drive()\n    wait elapsed(2s)\n    v1.drive() with:\n      lane(0 + 1, at: end)\n"
+    automaton = build_automaton(check_text(text).scenarios[0])
+    def trace(lanes):
+        n = len(lanes)
+        columns = {"x": np.arange(n) * 5.0, "y": np.zeros(n), "heading": np.zeros(n), "speed": np.full(n, 10.0),
+                   "acceleration": np.zeros(n), "lane": np.array(lanes)}
+        return Trace(np.arange(n) * DT, {"v1": columns})
+    # at 0.5 s per sample, the wait needs 3 to 5 samples (1.5..2.5 s) between its start and end
+    assert monitor(automaton, trace([0, 0, 0, 0, 0, 0, 0, 2])).accepted
+    assert not monitor(automaton, trace([0, 0, 0, 0, 2])).accepted

@@ -6,7 +6,8 @@ at strictly increasing samples; a placement is a run when, while the run stays i
 (after entering it, up to and including the sample that leaves it), every actor driving there
 moves forward at each sample. Its margin is the smallest of: each guard's robustness at its
 sample, and the location's invariant at every sample strictly between entering and leaving (the
-instants of entering and leaving are covered by the guards, which include the invariant). The
+instants of entering and leaving are covered by the guards, which include the invariant). A timed
+phase must last, from the transition that starts it to the one that ends it, within its bounds. The
 trace's robustness is the largest margin of any run (minus infinity without one); it is accepted
 when that is at least zero.
 """
@@ -26,7 +27,11 @@ from pytest_roadlogic.frontend import load_file
 from pytest_roadlogic.monitor import monitor
 from pytest_roadlogic.simulation import Trace
 
-SCENARIOS = sorted((Path(__file__).resolve().parent.parent / "scenarios").glob("*.osc"))
+ROOT = Path(__file__).resolve().parent.parent
+# The benchmark suite, and corpus files that add what it lacks: waits, durations, one_of, side_of.
+SCENARIOS = sorted((ROOT / "scenarios").glob("*.osc")) + [
+    ROOT / "tests" / "corpus" / name for name in ("16_one_of.osc", "19_lane_relative.osc", "27_wait.osc", "28_durations.osc")
+]
 DT = 0.5
 # Placements enumerated per example at most: keeps the brute force to about a second.
 BUDGET = 40_000
@@ -51,8 +56,14 @@ def brute_force_robustness(automaton: SymbolicAutomaton, trace: Trace) -> float:
         for samples in itertools.combinations(range(len(snapshots)), len(path)):
             margin = math.inf
             is_run = True
+            started = {}
             for j, (transition, k) in enumerate(zip(path, samples)):
                 margin = min(margin, transition.guard.robustness(snapshots[k]))
+                for phase in transition.starts & automaton.timings.keys():
+                    started[phase] = k
+                for phase in transition.ends & automaton.timings.keys():
+                    if not automaton.timings[phase].admits(trace.times[k] - trace.times[started.pop(phase, k)]):
+                        is_run = False
                 if j + 1 == len(path):
                     break
                 location = automaton.location(transition.target)

@@ -3,6 +3,8 @@
 The checks here are written from the rules, independently of the ASP encoding.
 """
 
+from pathlib import Path
+
 import pytest
 
 from pytest_roadlogic.planning import Planner, PlanningSettings
@@ -84,3 +86,17 @@ def test_an_impossible_scenario_has_no_plan():
     automaton = build_automaton(check_text(text).scenarios[0])
     with pytest.raises(NoPlanError):
         Planner(automaton, PlanningSettings(max_horizon=6)).first()
+
+
+def test_timed_phases_last_as_long_as_their_durations_allow():
+    from pytest_roadlogic.automaton import build_automaton
+    from pytest_roadlogic.frontend import load_file
+
+    automaton = build_automaton(load_file(Path(__file__).parent / "corpus" / "28_durations.osc").scenarios[0])
+    plan = Planner(automaton, seed=3).first()
+    fired = {tid: step for step, tid in plan.transitions}
+    for timing in automaton.timings.values():
+        begin = [step for tid, step in fired.items() if timing.phase in automaton.transitions[tid].starts]
+        end = [step for tid, step in fired.items() if timing.phase in automaton.transitions[tid].ends]
+        assert len(begin) == len(end) == 1, timing
+        assert timing.low <= (end[0] - begin[0]) * plan.dt <= timing.high, timing

@@ -2,9 +2,9 @@
 
 from .construction import DEFAULT_LANES, build_automaton
 from .guards import LANE, POSITION, SPEED, TRUE, And, Bound, Guard, Not, Or, Term, conjunction
-from .model import Location, SymbolicAutomaton, Transition
+from .model import Location, SymbolicAutomaton, Timing, Transition
 
 __all__ = [
     "DEFAULT_LANES", "LANE", "POSITION", "SPEED", "TRUE", "And", "Bound", "Guard", "Location", "Not", "Or",
-    "SymbolicAutomaton", "Term", "Transition", "build_automaton", "conjunction",
+    "SymbolicAutomaton", "Term", "Timing", "Transition", "build_automaton", "conjunction",
 ]

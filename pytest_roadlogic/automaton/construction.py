@@ -21,8 +21,8 @@ from ..frontend import model
 from ..frontend.errors import OscError, error_at
 from ..frontend.parameters import ParameterSpace, parameter_space
 from .guards import TRUE, Guard, conjunction
-from .model import Location, SymbolicAutomaton, Transition
-from .modifiers import check_behavior_arguments, phase_guards
+from .model import Location, SymbolicAutomaton, Timing, Transition
+from .modifiers import check_behavior_arguments, condition_guard, duration_interval, phase_guards
 
 DEFAULT_LANES = 3
 
@@ -35,6 +35,8 @@ class _Edge:
     guard: Guard
     events: tuple[str, ...]
     target: Key
+    starts: frozenset[int] = frozenset()
+    ends: frozenset[int] = frozenset()
 
 
 @dataclass
@@ -73,29 +75,93 @@ def build_automaton(
         if errors:
             raise OscError(errors)
     env = space.environment(values)
-    counter = itertools.count()
-    fragment = _translate(scenario.behavior, scenario, lanes, counter, env)
-    return _finish(fragment, tuple(a.name for a in scenario.actors), scenario)
+    builder = _Builder(scenario, lanes, env)
+    fragment = builder.translate(scenario.behavior)
+    return _finish(fragment, tuple(a.name for a in scenario.actors), scenario, builder.timings)
 
 
-def _translate(behavior: model.Behavior, scenario: model.Scenario, lanes: int, counter, env: dict) -> _Fragment:
+class _Builder:
+    """Walks the behavior tree; numbers fragments and collects the timed phases on the way."""
+
+    def __init__(self, scenario: model.Scenario, lanes: int, env: dict) -> None:
+        self.scenario = scenario
+        self.lanes = lanes
+        self.env = env
+        self.counter = itertools.count()
+        self.timings: dict[int, Timing] = {}
+
+    def translate(self, behavior: model.Behavior) -> _Fragment:
+        if isinstance(behavior, model.Invocation):
+            fragment = _atomic(behavior, self.scenario, self.lanes, self.counter, self.env)
+            duration = behavior.argument("duration")
+        elif isinstance(behavior, model.Wait):
+            return self.wait(behavior)
+        elif isinstance(behavior, model.Composition):
+            fragment = self.composition(behavior)
+            duration = behavior.argument("duration")
+        else:
+            kind = type(behavior).__name__.lower()
+            raise error_at(behavior.location, f"not supported yet by the automaton: {kind}", hint="events (emit, wait @e, until) and call are not translated")
+        if duration is not None:
+            low, high = duration_interval(duration, self.env)
+            name = getattr(behavior, "label", None) or _phase_name(behavior)
+            fragment = self.timed(fragment, name, low, high, duration.location)
+        return fragment
+
+    def composition(self, behavior: model.Composition) -> _Fragment:
+        check_behavior_arguments(behavior)
+        children = [self.translate(child) for child in behavior.children]
+        if not children:
+            raise error_at(behavior.location, f"{behavior.operator} has no members")
+        if behavior.operator == "serial":
+            result = children[0]
+            for child in children[1:]:
+                result = _serial(result, child)
+            return result
+        if behavior.operator == "parallel":
+            return _parallel(children) if len(children) > 1 else children[0]
+        return _one_of(children, next(self.counter))
+
+    def wait(self, wait: model.Wait) -> _Fragment:
+        """A phase in which nothing is asked of anyone: it lasts the given time, or until the condition."""
+        uid = next(self.counter)
+        i, s, f = ("i", uid), ("s", uid), ("f", uid)
+        name = wait.label or "wait"
+        condition = wait.condition
+        end: Guard = TRUE
+        timed = None
+        if isinstance(condition, model.Call) and condition.function == "elapsed":
+            timed = duration_interval(condition.arguments[0], self.env)
+        elif isinstance(condition, model.EventReference):
+            raise error_at(wait.location, "not supported yet by the automaton: wait @event", hint="wait elapsed(t) or wait on a condition")
+        else:
+            end = condition_guard(condition, self.env)
+        fragment = _Fragment(
+            initial=i, final=f,
+            edges=[_Edge(i, TRUE, (f"{name} start",), s), _Edge(s, end, (f"{name} end",), f)],
+            names={s: (name, wait.label is not None)},
+            drivers={s: frozenset()},
+        )
+        if timed is not None:
+            fragment = self.timed(fragment, name, timed[0], timed[1], wait.location)
+        return fragment
+
+    def timed(self, fragment: _Fragment, name: str, low: float, high: float, source) -> _Fragment:
+        """Mark the fragment's first and last instants as one timed phase lasting low..high seconds."""
+        phase = next(self.counter)
+        self.timings[phase] = Timing(phase, name, low, high, source)
+        for edge in fragment.edges:
+            if edge.source == fragment.initial:
+                edge.starts = edge.starts | {phase}
+            if edge.target == fragment.final:
+                edge.ends = edge.ends | {phase}
+        return fragment
+
+
+def _phase_name(behavior: model.Behavior) -> str:
     if isinstance(behavior, model.Invocation):
-        return _atomic(behavior, scenario, lanes, counter, env)
-    if not isinstance(behavior, model.Composition):
-        kind = type(behavior).__name__.lower()
-        raise error_at(behavior.location, f"not supported yet by the automaton: {kind}")
-    check_behavior_arguments(behavior)
-    children = [_translate(child, scenario, lanes, counter, env) for child in behavior.children]
-    if not children:
-        raise error_at(behavior.location, f"{behavior.operator} has no members")
-    if behavior.operator == "serial":
-        result = children[0]
-        for child in children[1:]:
-            result = _serial(result, child)
-        return result
-    if behavior.operator == "parallel":
-        return _parallel(children) if len(children) > 1 else children[0]
-    return _one_of(children, next(counter))
+        return f"{behavior.actor}.{behavior.action}"
+    return getattr(behavior, "operator", "phase")
 
 
 def _atomic(invocation: model.Invocation, scenario: model.Scenario, lanes: int, counter, env: dict) -> _Fragment:
@@ -128,7 +194,10 @@ def _serial(first: _Fragment, second: _Fragment) -> _Fragment:
     edges += [e for e in second.edges if e.source != second.initial]
     for into in (e for e in first.edges if e.target == first.final):
         for out in second.outgoing(second.initial):
-            edges.append(_Edge(into.source, conjunction([into.guard, out.guard]), into.events + out.events, out.target))
+            edges.append(
+                _Edge(into.source, conjunction([into.guard, out.guard]), into.events + out.events, out.target,
+                      into.starts | out.starts, into.ends | out.ends)
+            )
     return _Fragment(
         initial=first.initial,
         final=second.final,
@@ -161,7 +230,10 @@ def _parallel(children: list[_Fragment]) -> _Fragment:
             if any(finished) and not all(finished):
                 continue  # members of a parallel end together
             moving = [m for m in combination if m is not None]
-            edges.append(_Edge(current, conjunction([m.guard for m in moving]), tuple(ev for m in moving for ev in m.events), target))
+            edges.append(
+                _Edge(current, conjunction([m.guard for m in moving]), tuple(ev for m in moving for ev in m.events), target,
+                      frozenset().union(*(m.starts for m in moving)), frozenset().union(*(m.ends for m in moving)))
+            )
             if target not in seen:
                 seen.add(target)
                 frontier.append(target)
@@ -190,14 +262,14 @@ def _one_of(children: list[_Fragment], uid: int) -> _Fragment:
     for child in children:
         rename = {child.initial: initial, child.final: final}
         for e in child.edges:
-            edges.append(_Edge(rename.get(e.source, e.source), e.guard, e.events, rename.get(e.target, e.target)))
+            edges.append(_Edge(rename.get(e.source, e.source), e.guard, e.events, rename.get(e.target, e.target), e.starts, e.ends))
         names.update(child.names)
         drivers.update(child.drivers)
         invariants.update(child.invariants)
     return _Fragment(initial, final, edges, names, drivers, invariants)
 
 
-def _finish(fragment: _Fragment, actors: tuple[str, ...], scenario: model.Scenario) -> SymbolicAutomaton:
+def _finish(fragment: _Fragment, actors: tuple[str, ...], scenario: model.Scenario, timings: dict[int, Timing]) -> SymbolicAutomaton:
     # Keep locations that are reachable from the initial one and can still reach the final one.
     forward = _closure(fragment.initial, lambda k: [e.target for e in fragment.edges if e.source == k])
     backward = _closure(fragment.final, lambda k: [e.source for e in fragment.edges if e.target == k])
@@ -222,11 +294,11 @@ def _finish(fragment: _Fragment, actors: tuple[str, ...], scenario: model.Scenar
     transitions = []
     for edge in fragment.edges:
         if edge.source in useful and edge.target in useful:
-            transitions.append(Transition(len(transitions), ids[edge.source], ids[edge.target], edge.guard, edge.events))
+            transitions.append(Transition(len(transitions), ids[edge.source], ids[edge.target], edge.guard, edge.events, edge.starts, edge.ends))
     transitions.sort(key=lambda t: (t.source, t.target))
-    transitions = [Transition(i, t.source, t.target, t.guard, t.events) for i, t in enumerate(transitions)]
+    transitions = [Transition(i, t.source, t.target, t.guard, t.events, t.starts, t.ends) for i, t in enumerate(transitions)]
     stationary = frozenset(a.name for a in scenario.actors if a.stationary)
-    return SymbolicAutomaton(locations, transitions, ids[fragment.initial], ids[fragment.final], actors, stationary)
+    return SymbolicAutomaton(locations, transitions, ids[fragment.initial], ids[fragment.final], actors, stationary, timings)
 
 
 def _closure(start: Key, neighbours) -> set[Key]:

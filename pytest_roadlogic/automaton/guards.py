@@ -16,6 +16,8 @@ import math
 from dataclasses import dataclass
 from typing import Mapping, Protocol
 
+import numpy as np
+
 from ..frontend.errors import SourceLocation
 
 POSITION = "position"
@@ -59,6 +61,10 @@ class Term:
         return text if self.reference is None else f"{text} - {s}({self.reference})"
 
 
+# quantity -> trace column
+COLUMN = {POSITION: "x", LANE: "lane", SPEED: "speed"}
+
+
 class Guard:
     """Base of the algebra; subclasses are immutable dataclasses."""
 
@@ -66,6 +72,10 @@ class Guard:
         raise NotImplementedError
 
     def robustness(self, snapshot: Snapshot) -> float:
+        raise NotImplementedError
+
+    def robustness_series(self, columns: Mapping[str, Mapping[str, np.ndarray]]) -> np.ndarray:
+        """``robustness`` at every sample of a trace at once (``columns``: actor -> column -> array)."""
         raise NotImplementedError
 
     def atoms(self) -> tuple["Bound", ...]:
@@ -92,6 +102,14 @@ class Bound(Guard):
     def holds(self, snapshot: Snapshot) -> bool:
         value = self.term.value(snapshot)
         return self.low <= value <= self.high
+
+    def robustness_series(self, columns) -> np.ndarray:
+        column = COLUMN[self.term.quantity]
+        value = np.asarray(columns[self.term.actor][column], dtype=float)
+        if self.term.reference is not None:
+            value = value - np.asarray(columns[self.term.reference][column], dtype=float)
+        slack = 0.5 if self.term.quantity == LANE else 0.0
+        return np.minimum(value - (self.low - slack), (self.high + slack) - value)
 
     def robustness(self, snapshot: Snapshot) -> float:
         value = self.term.value(snapshot)
@@ -131,6 +149,12 @@ class And(Guard):
     def robustness(self, snapshot: Snapshot) -> float:
         return min((p.robustness(snapshot) for p in self.parts), default=math.inf)
 
+    def robustness_series(self, columns) -> np.ndarray:
+        if not self.parts:
+            length = len(next(iter(next(iter(columns.values())).values())))
+            return np.full(length, math.inf)
+        return np.minimum.reduce([p.robustness_series(columns) for p in self.parts])
+
     def atoms(self) -> tuple[Bound, ...]:
         return tuple(a for p in self.parts for a in p.atoms())
 
@@ -152,6 +176,12 @@ class Or(Guard):
     def robustness(self, snapshot: Snapshot) -> float:
         return max((p.robustness(snapshot) for p in self.parts), default=-math.inf)
 
+    def robustness_series(self, columns) -> np.ndarray:
+        if not self.parts:
+            length = len(next(iter(next(iter(columns.values())).values())))
+            return np.full(length, -math.inf)
+        return np.maximum.reduce([p.robustness_series(columns) for p in self.parts])
+
     def atoms(self) -> tuple[Bound, ...]:
         return tuple(a for p in self.parts for a in p.atoms())
 
@@ -168,6 +198,9 @@ class Not(Guard):
 
     def robustness(self, snapshot: Snapshot) -> float:
         return -self.part.robustness(snapshot)
+
+    def robustness_series(self, columns) -> np.ndarray:
+        return -self.part.robustness_series(columns)
 
     def atoms(self) -> tuple[Bound, ...]:
         return self.part.atoms()

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+from ..frontend.errors import SourceLocation
 from .guards import TRUE, Guard
 
 
@@ -24,6 +25,27 @@ class Location:
 
 
 @dataclass(frozen=True)
+class Timing:
+    """How long a phase may last, in seconds: from the transition that starts it to the one that ends it."""
+
+    phase: int
+    name: str
+    low: float
+    high: float
+    source: SourceLocation | None = None
+
+    def admits(self, seconds: float, tolerance: float = 1e-6) -> bool:
+        return self.low - tolerance <= seconds <= self.high + tolerance
+
+    def admits_start(self, seconds: float, tolerance: float = 1e-6) -> bool:
+        """Whether a phase that has run ``seconds`` so far can still end in time."""
+        return seconds <= self.high + tolerance
+
+    def __str__(self) -> str:
+        return f"{self.name} lasts {self.low:g}..{self.high:g} s"
+
+
+@dataclass(frozen=True)
 class Transition:
     id: int
     source: int
@@ -31,6 +53,9 @@ class Transition:
     guard: Guard
     # What happens at this instant, e.g. ("A end", "B start"), for reports and plots.
     events: tuple[str, ...] = ()
+    # Timed phases (keys of SymbolicAutomaton.timings) that start / end at this instant.
+    starts: frozenset[int] = frozenset()
+    ends: frozenset[int] = frozenset()
 
     @property
     def label(self) -> str:
@@ -46,6 +71,8 @@ class SymbolicAutomaton:
     actors: tuple[str, ...] = field(default_factory=tuple)
     # Actors that never move (stationary_object): the planner pins them, the simulator does not drive them.
     stationary: frozenset[str] = frozenset()
+    # Duration bounds of phases (``duration:``, ``wait elapsed(...)``), by phase id.
+    timings: dict[int, Timing] = field(default_factory=dict)
 
     def location(self, location_id: int) -> Location:
         return self.locations[location_id]
@@ -74,4 +101,6 @@ class SymbolicAutomaton:
                 lines.append(f"  {loc.name} invariant: {loc.invariant}")
         for t in self.transitions:
             lines.append(f"  {self.locations[t.source].name} -> {self.locations[t.target].name}: {t.guard}")
+        for timing in self.timings.values():
+            lines.append(f"  {timing}")
         return "\n".join(lines)

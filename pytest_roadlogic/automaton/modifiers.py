@@ -22,8 +22,8 @@ from dataclasses import dataclass, field
 
 from ..frontend import model
 from ..frontend.checker import LANE_CONVENTION
-from ..frontend.errors import error_at
-from ..frontend.units import LENGTH, SPEED
+from ..frontend.errors import SourceLocation, error_at
+from ..frontend.units import LENGTH, SPEED, TIME
 from ..frontend.values import EvaluationError, Interval, evaluate
 from .guards import LANE, POSITION, SPEED as SPEED_Q, TRUE, Bound, Guard, Term, conjunction
 
@@ -33,6 +33,8 @@ SUPPORTED_MODIFIERS = ("lane", "position", "speed", "keep_lane", "change_lane")
 # and distances as value +- 1 m (one planning cell).
 SPEED_TOLERANCE = 0.5
 POSITION_TOLERANCE = 1.0
+# and a single duration as value +- 0.5 s (the planner's time step is 1 s)
+DURATION_TOLERANCE = 0.5
 # What "standing still" means for a trace's speed, in m/s.
 STANDSTILL = 0.1
 
@@ -79,9 +81,6 @@ def phase_guards(invocation: model.Invocation, scenario: model.Scenario, lanes: 
             f"not supported yet by the automaton: action {invocation.action!r}",
             hint=f"this version translates {', '.join(a + '()' for a in SUPPORTED_ACTIONS)}",
         )
-    for argument in invocation.arguments:
-        if argument.name == "duration":
-            raise error_at(argument.location, "not supported yet by the automaton: duration", hint="bound the phase with position or speed modifiers")
     if invocation.until is not None:
         raise error_at(invocation.location, "not supported yet by the automaton: until")
     if invocation.constraints:
@@ -302,11 +301,55 @@ def _interval(argument: model.Argument, dimension: str, example: str, env: dict)
     return value.low, value.high
 
 
+def duration_interval(argument: model.Argument, env: dict) -> tuple[float, float]:
+    """A ``duration:`` or ``elapsed(...)`` value in seconds; a single value gets the tolerance."""
+    low, high = _interval(argument, TIME, "a time such as 5s or [2..4]s", env)
+    if low < 0:
+        raise error_at(argument.location, "a duration must not be negative")
+    if low == high:
+        low, high = max(0.0, low - DURATION_TOLERANCE), high + DURATION_TOLERANCE
+    return low, high
+
+
+_COMPARISONS = {"<": "<=", "<=": "<=", ">": ">=", ">=": ">=", "==": "=="}
+
+
+def condition_guard(condition: model.Expression, env: dict) -> Guard:
+    """A ``wait`` condition as a guard: comparisons of an actor's speed with a value, joined by and."""
+    if isinstance(condition, model.Binary) and condition.operator == "and":
+        return conjunction([condition_guard(condition.left, env), condition_guard(condition.right, env)])
+    if isinstance(condition, model.Binary) and condition.operator in _COMPARISONS:
+        left, right, operator = condition.left, condition.right, condition.operator
+        if not (isinstance(left, model.Name) and left.name.endswith(".speed")):
+            left, right = right, left
+            operator = {"<": ">", "<=": ">=", ">": "<", ">=": "<=", "==": "=="}[operator]
+        if isinstance(left, model.Name) and left.name.endswith(".speed"):
+            actor = left.name[: -len(".speed")]
+            value = _evaluate(model.Argument(None, right, right.location), env)
+            if value.dimension == SPEED:
+                operator = _COMPARISONS[operator]
+                low = value.low if operator in (">=", "==") else -math.inf
+                high = value.high if operator in ("<=", "==") else math.inf
+                if operator == "==" and low == high:
+                    low, high = low - SPEED_TOLERANCE, high + SPEED_TOLERANCE
+                return Bound(Term(SPEED_Q, actor), low, high, condition.location)
+    raise error_at(
+        getattr(condition, "location", None) or SourceLocation("?", 1, 1),
+        "not supported yet by the automaton: this wait condition",
+        hint="wait elapsed(t), or compare an actor's speed: wait v1.speed >= 20mps",
+    )
+
+
 def check_behavior_arguments(composition: model.Composition) -> None:
     for argument in composition.arguments:
         if argument.name == "overlap" and isinstance(argument.value, model.Name) and argument.value.name in ("start", "equal"):
             continue  # members start (and here also end) together: what the product builds
+        if argument.name == "duration":
+            continue  # a timed phase, handled by the construction
         raise error_at(argument.location, f"not supported yet by the automaton: {argument.name or 'arguments'} on {composition.operator}")
 
 
-__all__ = ["Phase", "Variant", "phase_guards", "check_behavior_arguments", "LANE_CONVENTION", "STANDSTILL"]
+__all__ = [
+    "Phase", "Variant", "phase_guards", "check_behavior_arguments", "condition_guard", "duration_interval",
+    "LANE_CONVENTION", "STANDSTILL",
+]

@@ -17,6 +17,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
+import numpy as np
+
 from ..automaton.guards import Bound, Guard
 from ..automaton.model import SymbolicAutomaton
 from ..frontend.errors import SourceLocation
@@ -85,61 +87,92 @@ class Verdict:
 
 
 def monitor(automaton: SymbolicAutomaton, trace: Trace) -> Verdict:
-    snapshots = trace.snapshots()
+    times = trace.times
     n_loc = len(automaton.locations)
     drivers = [sorted(loc.drivers) for loc in automaton.locations]
     positions = {a: trace.actors[a]["x"] for a in trace.names}
     init, final = automaton.initial, automaton.final
+    timings = automaton.timings
     NONE = -math.inf
-    value = [NONE] * n_loc  # best smallest-robustness of a run in each location, at the current sample
-    run: list[tuple] = [()] * n_loc
+    outgoing = [automaton.outgoing(q) for q in range(n_loc)]
+    invariant_locations = [q for q in range(n_loc) if not automaton.location(q).invariant.is_true]
+    # every guard's robustness at every sample, computed column-wise up front
+    guard_margin = {t.id: t.guard.robustness_series(trace.actors).tolist() for t in automaton.transitions}
+    invariant_margin = {q: automaton.location(q).invariant.robustness_series(trace.actors).tolist() for q in invariant_locations}
+    progress = {a: (np.diff(positions[a]) > 0).tolist() for a in trace.names}
+    # A run's state in a location: the samples at which its open timed phases started (empty when
+    # the scenario has no durations). states[q]: that key -> (smallest robustness so far, run).
+    Key = tuple  # sorted ((phase, start sample), ...)
+    states: list[dict[Key, tuple[float, tuple]]] = [{} for _ in range(n_loc)]
+    best_location = [NONE] * n_loc
     first_met = [None] * n_loc  # first sample at which a run with all guards met is in the location
     best_final, best_final_run = NONE, ()
-    outgoing = [automaton.outgoing(q) for q in range(n_loc)]
-    invariants = [loc.invariant for loc in automaton.locations]
-    invariant_locations = [q for q in range(n_loc) if not invariants[q].is_true]
-    for k, snapshot in enumerate(snapshots):
-        # staying: the run was in q at k-1 and q's drivers progressed over (k-1, k]
-        alive = [False] * n_loc
+    for k in range(len(times)):
+        # staying: the run was in q at k-1, q's drivers progressed over (k-1, k], no timed phase overran
+        surviving: list[dict[Key, tuple[float, tuple]]] = [{} for _ in range(n_loc)]
+        surviving[init] = {(): (math.inf, ())}
         for q in range(n_loc):
-            if q == init:
-                alive[q] = True
-            elif value[q] != NONE and k > 0 and all(positions[a][k] > positions[a][k - 1] for a in drivers[q]):
-                alive[q] = True
-        new_value = [value[q] if alive[q] and q != init else NONE for q in range(n_loc)]
-        for q in invariant_locations:
-            if new_value[q] != NONE:
-                # staying in q: its invariant must hold at this sample too
-                new_value[q] = min(new_value[q], invariants[q].robustness(snapshot))
-        new_value[init] = math.inf
-        new_run = list(run)
-        for q in range(n_loc):
-            if not alive[q]:
+            if q == init or not states[q] or k == 0:
                 continue
-            source_value = math.inf if q == init else value[q]
-            for transition in outgoing[q]:
-                candidate = min(source_value, transition.guard.robustness(snapshot))
-                if candidate > new_value[transition.target]:
-                    new_value[transition.target] = candidate
-                    new_run[transition.target] = run[q] + ((k, transition.id),)
-        value, run = new_value, new_run
+            if not all(progress[a][k - 1] for a in drivers[q]):
+                continue
+            for key, entry in states[q].items():
+                if all(timings[p].admits_start(times[k] - times[start]) for p, start in key):
+                    surviving[q][key] = entry
+        new_states = [dict(s) for s in surviving]
+        for q in invariant_locations:
+            margin = invariant_margin[q][k]
+            for key, (value, run) in new_states[q].items():
+                new_states[q][key] = (min(value, margin), run)
         for q in range(n_loc):
-            if value[q] >= 0 and first_met[q] is None:
-                first_met[q] = k
-        if value[final] > best_final:
-            best_final, best_final_run = value[final], run[final]
+            if not surviving[q]:
+                continue
+            for transition in outgoing[q]:
+                margin = guard_margin[transition.id][k]
+                for key, (value, run) in surviving[q].items():
+                    next_key = _advance(key, transition, k, times, timings)
+                    if next_key is None:
+                        continue
+                    candidate = min(value, margin)
+                    target = new_states[transition.target]
+                    if next_key not in target or candidate > target[next_key][0]:
+                        target[next_key] = (candidate, run + ((k, transition.id),))
+        states = new_states
+        for q in range(n_loc):
+            if states[q]:
+                value = max(v for v, _ in states[q].values())
+                best_location[q] = max(best_location[q], value)
+                if value >= 0 and first_met[q] is None:
+                    first_met[q] = k
+        for value, run in states[final].values():
+            if value > best_final:
+                best_final, best_final_run = value, run
 
     depth = automaton.depth()
     met = [q for q in range(n_loc) if first_met[q] is not None] or [init]
     furthest = max(met, key=lambda q: (depth.get(q, 0), -(first_met[q] or 0)))
     accepted = best_final >= 0 and not trace.incidents
-    times = trace.times
     events = {t.id: t.label for t in automaton.transitions}
     best_run = [(float(times[k]), events[tid]) for k, tid in best_final_run]
     miss = None
     if best_final < 0:
-        miss = _closest_miss(automaton, furthest, first_met[furthest] or 0, snapshots, times)
+        miss = _closest_miss(automaton, furthest, first_met[furthest] or 0, trace.snapshots(), times)
     return Verdict(accepted, float(best_final), automaton.location(furthest).name, best_run, miss, list(trace.incidents))
+
+
+def _advance(key: tuple, transition, k: int, times, timings) -> tuple | None:
+    """The timed-phase state after taking ``transition`` at sample ``k``; None if a duration is broken."""
+    if not timings or (not transition.starts and not transition.ends):
+        return key
+    started = dict(key)
+    for phase in transition.starts:
+        if phase in timings:
+            started[phase] = k
+    for phase in transition.ends:
+        if phase in timings:
+            if not timings[phase].admits(times[k] - times[started.pop(phase, k)]):
+                return None
+    return tuple(sorted(started.items()))
 
 
 def _closest_miss(automaton: SymbolicAutomaton, location: int, entered: int, snapshots, times) -> GuardMiss | None:

@@ -143,6 +143,13 @@ def build_instance(automaton: SymbolicAutomaton, settings: PlanningSettings) -> 
         base.append(f"guard_of({t.id},{transition_node[t.id]}).")
     for location, node in invariant_nodes(automaton, numbering).items():
         base.append(f"invariant_of({location},{node}).  % {automaton.location(location).invariant}")
+    for t in automaton.transitions:
+        base.extend(f"starts({t.id},{p})." for p in sorted(t.starts) if p in automaton.timings)
+        base.extend(f"ends({t.id},{p})." for p in sorted(t.ends) if p in automaton.timings)
+    for phase, timing in automaton.timings.items():
+        low = math.ceil(timing.low / settings.dt - 1e-9)
+        high = math.floor(timing.high / settings.dt + 1e-9)
+        base.append(f"timing({phase},{low},{high}).  % {timing}")
     state = ["% guards: g(N,t) holds when guard node N holds at step t (generated)"]
     for guard, node in numbering.items():
         state.append(f"% node {node}: {guard}")

@@ -1,0 +1,58 @@
+"""Monitor speed: the time to judge a 60 s trace sampled at 0.1 s, per benchmark scenario.
+
+    python benchmarks/monitor.py
+
+The traces are synthetic (no simulation needed): every actor cruises in its lane, the first one
+faster, changing lanes now and then, so that runs get deep into the automaton. The target is
+under 50 ms for three actors; the automaton's size is printed too, since the monitor's cost is
+linear in samples x transitions.
+"""
+
+from __future__ import annotations
+
+import statistics
+import time
+from pathlib import Path
+
+import numpy as np
+
+from pytest_roadlogic.automaton import build_automaton
+from pytest_roadlogic.frontend import load_file
+from pytest_roadlogic.monitor import monitor
+from pytest_roadlogic.simulation import Trace
+
+ROOT = Path(__file__).resolve().parent.parent
+DURATION, DT, REPEATS = 60.0, 0.1, 15
+
+
+def synthetic_trace(actors: tuple[str, ...], stationary: frozenset[str]) -> Trace:
+    times = np.arange(0.0, DURATION + DT / 2, DT)
+    n = len(times)
+    columns = {}
+    for index, actor in enumerate(actors):
+        speed = 0.0 if actor in stationary else 20.0 - 2.0 * index
+        x = -15.0 * index + speed * times if actor not in stationary else np.full(n, 300.0)
+        lane = np.where((times // 10).astype(int) % 3 == 1, 0, 1) if index == 0 else np.full(n, 1 + index % 2)
+        columns[actor] = {"x": x, "y": np.zeros(n), "heading": np.zeros(n), "speed": np.full(n, speed),
+                          "acceleration": np.zeros(n), "lane": lane}
+    return Trace(times, columns)
+
+
+def main() -> int:
+    print(f"monitor on a {DURATION:.0f} s trace at {DT} s ({int(DURATION / DT) + 1} samples), median of {REPEATS}")
+    print(f"{'scenario':24} {'actors':>6} {'locations':>9} {'transitions':>11} {'ms':>8}")
+    for path in sorted((ROOT / "scenarios").glob("*.osc")):
+        scenario = load_file(path).scenarios[0]
+        automaton = build_automaton(scenario)
+        trace = synthetic_trace(automaton.actors, automaton.stationary)
+        samples = []
+        for _ in range(REPEATS):
+            started = time.perf_counter()
+            monitor(automaton, trace)
+            samples.append((time.perf_counter() - started) * 1000)
+        print(f"{path.stem:24} {len(automaton.actors):6d} {len(automaton.locations):9d} {len(automaton.transitions):11d} {statistics.median(samples):8.1f}")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
