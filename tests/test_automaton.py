@@ -147,3 +147,24 @@ def test_roadlogic_automaton_of_a_bad_file_is_a_located_error_and_exit_2(tmp_pat
     bad.write_text("scenario s:\n  a: car\n  do a.fly()\n")
     assert main(["automaton", str(bad), "--out", str(tmp_path / "x.dot")]) == 2
     assert f"{bad}:3:6: error: unknown action 'fly'" in capsys.readouterr().err
+
+
+def test_keep_speed_is_a_choice_of_one_metre_per_second_bands_held_throughout():
+    text = "scenario s:\n  a: car\n  do a.keep_speed()\n"
+    a = build_automaton(check_text(text).scenarios[0])
+    starts = {str(t.guard) for t in a.outgoing(a.initial)}
+    assert "11.5 <= v(a) <= 12.5 and 11 <= v(a) <= 13" in starts and len(starts) == 41
+    band = [loc for loc in a.locations if str(loc.invariant) == "11 <= v(a) <= 13"]
+    assert len(band) == 1
+
+
+def test_durations_and_waits_become_timed_phases():
+    text = (
+        "scenario s:\n  a: car\n  do serial(duration: [8..12]s):\n    a.drive(duration: 3s)\n"
+        "    wait elapsed([1..2]s)\n    a.drive()\n"
+    )
+    a = build_automaton(check_text(text).scenarios[0])
+    assert sorted(str(t) for t in a.timings.values()) == ["a.drive lasts 2.5..3.5 s", "serial lasts 8..12 s", "wait lasts 1..2 s"]
+    serial = next(p for p, t in a.timings.items() if t.name == "serial")
+    assert [t.id for t in a.transitions if serial in t.starts] == [a.outgoing(a.initial)[0].id]
+    assert all(serial in t.ends for t in a.transitions if t.target == a.final)

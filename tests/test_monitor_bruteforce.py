@@ -7,7 +7,8 @@ at strictly increasing samples; a placement is a run when, while the run stays i
 moves forward at each sample. Its margin is the smallest of: each guard's robustness at its
 sample, and the location's invariant at every sample strictly between entering and leaving (the
 instants of entering and leaving are covered by the guards, which include the invariant). A timed
-phase must last, from the transition that starts it to the one that ends it, within its bounds. The
+phase must last, from the transition that starts it to the one that ends it, within its bounds,
+and its margin to them counts like a guard's. The
 trace's robustness is the largest margin of any run (minus infinity without one); it is accepted
 when that is at least zero.
 """
@@ -62,8 +63,11 @@ def brute_force_robustness(automaton: SymbolicAutomaton, trace: Trace) -> float:
                 for phase in transition.starts & automaton.timings.keys():
                     started[phase] = k
                 for phase in transition.ends & automaton.timings.keys():
-                    if not automaton.timings[phase].admits(trace.times[k] - trace.times[started.pop(phase, k)]):
+                    timing = automaton.timings[phase]
+                    seconds = trace.times[k] - trace.times[started.pop(phase, k)]
+                    if not timing.admits(seconds):
                         is_run = False
+                    margin = min(margin, seconds - timing.low, timing.high - seconds)
                 if j + 1 == len(path):
                     break
                 location = automaton.location(transition.target)

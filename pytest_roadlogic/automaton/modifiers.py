@@ -7,9 +7,10 @@ so ``at: all``) becomes an invariant of the phase's location. The lane conventio
 internally 0 is the leftmost lane (the paper).
 
 Some constraints refer to the value a quantity had when the phase started (``keep_lane()``,
-``change_lane(1, left)``). Guards only see the current state, so such a phase becomes a choice
-over the road's lanes: one variant per starting lane, each with plain guards. The road is finite,
-so the choice is too.
+``change_lane(1, left)``, ``keep_speed()``). Guards only see the current state, so such a phase
+becomes a choice: one variant per starting lane (the road is finite), or per 1 m/s speed band
+from 0 to 40 m/s for ``keep_speed`` (the speed starts within 0.5 m/s of the band's value and stays
+within 1 m/s of it), each with plain guards.
 
 The front-end checker has already validated names, argument kinds and lane numbers; the errors
 raised here are for what the automaton cannot express.
@@ -27,8 +28,8 @@ from ..frontend.units import LENGTH, SPEED, TIME
 from ..frontend.values import EvaluationError, Interval, evaluate
 from .guards import LANE, POSITION, SPEED as SPEED_Q, TRUE, Bound, Guard, Term, conjunction
 
-SUPPORTED_ACTIONS = ("drive", "change_lane", "change_speed", "follow_lane", "remain_stationary")
-SUPPORTED_MODIFIERS = ("lane", "position", "speed", "keep_lane", "change_lane")
+SUPPORTED_ACTIONS = ("drive", "change_lane", "change_speed", "follow_lane", "keep_speed", "remain_stationary")
+SUPPORTED_MODIFIERS = ("lane", "position", "speed", "keep_lane", "keep_speed", "change_lane")
 # A single value cannot be met exactly by a continuous trace; speeds are read as value +- 0.5 m/s
 # and distances as value +- 1 m (one planning cell).
 SPEED_TOLERANCE = 0.5
@@ -37,6 +38,10 @@ POSITION_TOLERANCE = 1.0
 DURATION_TOLERANCE = 0.5
 # What "standing still" means for a trace's speed, in m/s.
 STANDSTILL = 0.1
+# keep_speed(): the speed at the phase's start lies within half a band of one of these values,
+# and stays within a band of it throughout (so it varies by 1.5 m/s at most).
+KEEP_SPEED_CENTRES = tuple(float(v) for v in range(0, 41))
+KEEP_SPEED_BAND = 1.0
 
 
 @dataclass(frozen=True)
@@ -112,6 +117,8 @@ def _action(invocation: model.Invocation, phase: Phase, scenario: model.Scenario
         phase.add(invariant=Bound(Term(SPEED_Q, actor), -STANDSTILL, STANDSTILL, invocation.location))
     elif action == "follow_lane":
         phase.branch(_keep_lane_variants(actor, lanes, invocation.location))
+    elif action == "keep_speed":
+        phase.branch(_keep_speed_variants(actor, invocation.location))
     elif action == "change_speed":
         target = invocation.argument("target") or _positional(invocation.arguments, 0)
         if target is None:
@@ -134,6 +141,16 @@ def _positional(arguments: tuple[model.Argument, ...], index: int) -> model.Argu
 
 def _keep_lane_variants(actor: str, lanes: int, source) -> list[Variant]:
     return [Variant(invariant=Bound(Term(LANE, actor), lane, lane, source)) for lane in range(lanes)]
+
+
+def _keep_speed_variants(actor: str, source) -> list[Variant]:
+    return [
+        Variant(
+            start=Bound(Term(SPEED_Q, actor), max(0.0, c - KEEP_SPEED_BAND / 2), c + KEEP_SPEED_BAND / 2, source),
+            invariant=Bound(Term(SPEED_Q, actor), max(0.0, c - KEEP_SPEED_BAND), c + KEEP_SPEED_BAND, source),
+        )
+        for c in KEEP_SPEED_CENTRES
+    ]
 
 
 def _lane_change_variants(actor, count_arg, side_arg, reference_arg, lanes, source, env) -> list[Variant]:
@@ -177,6 +194,9 @@ def _modifier(modifier: model.Modifier, phase: Phase, scenario: model.Scenario, 
         raise error_at(modifier.location, f"not supported yet by the automaton: modifier {modifier.name!r}", hint=f"supported: {', '.join(SUPPORTED_MODIFIERS)}")
     if modifier.name == "keep_lane":
         phase.branch(_keep_lane_variants(actor, lanes, modifier.location))
+        return
+    if modifier.name == "keep_speed":
+        phase.branch(_keep_speed_variants(actor, modifier.location))
         return
     if modifier.name == "change_lane":
         count = modifier.argument("num_of_lanes") or _positional(modifier.arguments, 0)

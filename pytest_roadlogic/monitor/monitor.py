@@ -3,7 +3,9 @@
 Semantics (the paper's, on a sampled trace with constant interpolation): a run of the automaton
 takes its transitions at strictly increasing sample instants, each when its guard holds; while the
 run stays in a location, the location's invariant holds at every sample and every actor driving
-there makes forward progress (its position increases from each sample to the next). The scenario may start after the trace does (vehicles start from
+there makes forward progress (its position increases from each sample to the next); a timed phase
+lasts within its bounds from the transition that starts it to the one that ends it, and the
+margin to those bounds (in seconds) counts in the robustness like a guard's. The scenario may start after the trace does (vehicles start from
 standstill and need a run-up), so the initial location may be left at any sample. The trace is
 accepted when some run reaches the final location and no incident (collision, off-road) occurred.
 
@@ -130,10 +132,11 @@ def monitor(automaton: SymbolicAutomaton, trace: Trace) -> Verdict:
             for transition in outgoing[q]:
                 margin = guard_margin[transition.id][k]
                 for key, (value, run) in surviving[q].items():
-                    next_key = _advance(key, transition, k, times, timings)
-                    if next_key is None:
+                    advanced = _advance(key, transition, k, times, timings)
+                    if advanced is None:
                         continue
-                    candidate = min(value, margin)
+                    next_key, timing_margin = advanced
+                    candidate = min(value, margin, timing_margin)
                     target = new_states[transition.target]
                     if next_key not in target or candidate > target[next_key][0]:
                         target[next_key] = (candidate, run + ((k, transition.id),))
@@ -160,19 +163,24 @@ def monitor(automaton: SymbolicAutomaton, trace: Trace) -> Verdict:
     return Verdict(accepted, float(best_final), automaton.location(furthest).name, best_run, miss, list(trace.incidents))
 
 
-def _advance(key: tuple, transition, k: int, times, timings) -> tuple | None:
-    """The timed-phase state after taking ``transition`` at sample ``k``; None if a duration is broken."""
+def _advance(key: tuple, transition, k: int, times, timings) -> tuple[tuple, float] | None:
+    """The timed-phase state after taking ``transition`` at sample ``k``, and the smallest margin (s)
+    of the durations it ends; None when a duration is broken (that is no run, like a missed progress)."""
     if not timings or (not transition.starts and not transition.ends):
-        return key
+        return key, math.inf
     started = dict(key)
+    margin = math.inf
     for phase in transition.starts:
         if phase in timings:
             started[phase] = k
     for phase in transition.ends:
         if phase in timings:
-            if not timings[phase].admits(times[k] - times[started.pop(phase, k)]):
+            timing = timings[phase]
+            seconds = times[k] - times[started.pop(phase, k)]
+            if not timing.admits(seconds):
                 return None
-    return tuple(sorted(started.items()))
+            margin = min(margin, seconds - timing.low, timing.high - seconds)
+    return tuple(sorted(started.items())), margin
 
 
 def _closest_miss(automaton: SymbolicAutomaton, location: int, entered: int, snapshots, times) -> GuardMiss | None:
