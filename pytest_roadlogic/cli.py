@@ -49,17 +49,15 @@ def main(argv: list[str] | None = None) -> int:
 def _automaton(args: argparse.Namespace) -> int:
     from .automaton import build_automaton
     from .automaton.dot import write_dot
-    from .pipeline import load_scenario
 
-    try:
-        scenario = load_scenario(args.file, args.scenario, args.lanes)
-        automaton = build_automaton(scenario, args.lanes)
-    except OscError as error:
-        print(error.report(), file=sys.stderr)
-        return EXIT_INPUT
-    except KeyError as error:
-        print(f"{args.file}: error: no scenario named {error.args[0]!r} in the file", file=sys.stderr)
-        return EXIT_INPUT
+    def build():
+        scenario = _load(args)
+        return scenario, build_automaton(scenario, args.lanes)
+
+    loaded = _reporting_input_errors(args, build)
+    if isinstance(loaded, int):
+        return loaded
+    scenario, automaton = loaded
     written = write_dot(automaton, args.out or Path(f"{scenario.name}.dot"), title=f"{scenario.name} ({args.file})")
     print(automaton.describe())
     print(f"{len(automaton.locations)} locations, {len(automaton.transitions)} transitions")
@@ -125,13 +123,16 @@ def _check(args: argparse.Namespace) -> int:
     return 1 if failed else 0
 
 
-def _run(args: argparse.Namespace) -> int:
-    from .artifacts import write_artifacts
-    from .pipeline import load_scenario, run_scenario
+def _load(args: argparse.Namespace):
+    from .pipeline import load_scenario
 
+    return load_scenario(args.file, args.scenario, args.lanes)
+
+
+def _reporting_input_errors(args: argparse.Namespace, action):
+    """``action()``, or the exit code after printing why the input is unusable (never a traceback)."""
     try:
-        scenario = load_scenario(args.file, args.scenario, args.lanes)
-        outcome = run_scenario(scenario, seed=args.seed, settings=PlanningSettings(lanes=args.lanes), max_tries=args.tries)
+        return action()
     except OscError as error:
         print(error.report(), file=sys.stderr)
         return EXIT_INPUT
@@ -141,6 +142,20 @@ def _run(args: argparse.Namespace) -> int:
     except NoPlanError as error:
         print(f"{args.file}: no plan: {error}", file=sys.stderr)
         return EXIT_REJECTED
+
+
+def _run(args: argparse.Namespace) -> int:
+    from .artifacts import write_artifacts
+    from .pipeline import run_scenario
+
+    def plan_and_simulate():
+        scenario = _load(args)
+        return scenario, run_scenario(scenario, seed=args.seed, settings=PlanningSettings(lanes=args.lanes), max_tries=args.tries)
+
+    loaded = _reporting_input_errors(args, plan_and_simulate)
+    if isinstance(loaded, int):
+        return loaded
+    scenario, outcome = loaded
     started = time.perf_counter()
     paths = write_artifacts(outcome, args.out)
     outcome.seconds["artifacts"] = time.perf_counter() - started
