@@ -84,6 +84,7 @@ class Planner:
                 query = clingo.Function("query", [t])
                 control.assign_external(query, True)
                 continue
+            self.stats["rules"] = float(control.statistics.get("problem", {}).get("lp", {}).get("rules", 0))
             plan = self._plan(symbols, horizon, found)
             found += 1
             yield plan
