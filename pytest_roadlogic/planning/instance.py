@@ -108,7 +108,10 @@ def build_instance(automaton: SymbolicAutomaton, settings: PlanningSettings) -> 
     runup_spread = math.ceil(
         (settings.runup_distance(v_hi * settings.grid / settings.dt) - settings.runup_distance(v_lo * settings.grid / settings.dt)) / settings.grid
     )
-    reach = max((speeds[-1] - speeds[0]) + max(abs(a) for a in accels), runup_spread) + gap
+    # how far apart two vehicles can be and still collide or swap within one step; at step 0 also
+    # within the run-up from standstill, whose spread grows with the square of the start speed
+    reach = (speeds[-1] - speeds[0]) + max(abs(a) for a in accels) + gap
+    reach0 = max(reach, runup_spread + gap)
     vehicles = automaton.actors
     base = [
         "% scenario instance (generated)",
@@ -121,6 +124,7 @@ def build_instance(automaton: SymbolicAutomaton, settings: PlanningSettings) -> 
         f"lane_change_gap({settings.lane_change_gap}).",
         f"min_gap({gap}).",
         f"reach({reach}).",
+        f"reach0({reach0}).",
         "",
         "% initial state: the first vehicle at cell 0, the others within the spread",
         f"pos({_atom(vehicles[0])},0,0).",
