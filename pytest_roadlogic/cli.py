@@ -3,11 +3,13 @@
     roadlogic run FILE.osc [--scenario NAME] [--seed S] [--out DIR] [--lanes N] [--tries N]
     roadlogic check PATH... [--syntax-only] [--lanes N]
     roadlogic automaton FILE.osc [--scenario NAME] [--out FILE.dot] [--lanes N]
+    roadlogic plan FILE.osc [--scenario NAME] [--plans N] [--seed S] [--lanes N] [--show-asp]
 
 Exit codes of ``run``: 0 the simulation was accepted; 1 it was rejected (or no plan exists);
 2 the input is unusable (a file that does not parse or check, a bad option).
 Exit codes of ``check``: 0 every file is fine; 1 some file has an error; 2 a path does not exist.
 Exit codes of ``automaton``: 0 written; 2 the input is unusable.
+Exit codes of ``plan``: 0 at least one plan; 1 no plan exists; 2 the input is unusable.
 """
 
 from __future__ import annotations
@@ -18,7 +20,7 @@ import time
 from pathlib import Path
 
 from .frontend import OscError
-from .planning import NoPlanError, PlanningSettings
+from .planning import NoPlanError, PlanningSettings, UnsatisfiableScenario
 
 EXIT_ACCEPTED, EXIT_REJECTED, EXIT_INPUT = 0, 1, 2
 
@@ -42,8 +44,43 @@ def main(argv: list[str] | None = None) -> int:
     automaton.add_argument("--scenario", help="the scenario when the file declares several (default: the first)")
     automaton.add_argument("--out", type=Path, default=None, help="the DOT file to write (default: <scenario>.dot)")
     automaton.add_argument("--lanes", type=int, default=3, help="lanes of the road (default 3)")
+    plan = commands.add_parser("plan", help="solve a scenario's planning problem and print the plans as tables")
+    plan.add_argument("file", type=Path, help="an .osc file")
+    plan.add_argument("--scenario", help="the scenario when the file declares several (default: the first)")
+    plan.add_argument("--plans", type=int, default=1, help="how many plans to enumerate (default 1)")
+    plan.add_argument("--seed", type=int, default=1, help="fixes the plans found (default 1)")
+    plan.add_argument("--lanes", type=int, default=3, help="lanes of the road (default 3)")
+    plan.add_argument("--show-asp", action="store_true", help="also print the generated instance program")
     args = parser.parse_args(argv)
-    return {"run": _run, "check": _check, "automaton": _automaton}[args.command](args)
+    return {"run": _run, "check": _check, "automaton": _automaton, "plan": _plan}[args.command](args)
+
+
+def _plan(args: argparse.Namespace) -> int:
+    from .automaton import build_automaton
+    from .planning import Planner
+
+    def solve():
+        scenario = _load(args)
+        automaton = build_automaton(scenario, args.lanes)
+        planner = Planner(automaton, PlanningSettings(lanes=args.lanes), args.seed)
+        if args.show_asp:
+            print(planner.instance_program())
+        started = time.perf_counter()
+        plans = list(planner.plans(limit=args.plans))
+        return scenario, automaton, plans, time.perf_counter() - started
+
+    solved = _reporting_input_errors(args, solve)
+    if isinstance(solved, int):
+        return solved
+    scenario, automaton, plans, seconds = solved
+    events = {t.id: t.label for t in automaton.transitions}
+    for plan in plans:
+        print(f"plan {plan.index + 1} of scenario {scenario.name} (seed {args.seed}): horizon {plan.horizon} steps of {plan.dt:g} s")
+        print(plan.table())
+        for step, transition in plan.transitions:
+            print(f"  step {step}: {events[transition]}")
+    print(f"{len(plans)} plan{'s' if len(plans) != 1 else ''} in {seconds:.3f} s")
+    return 0
 
 
 def _automaton(args: argparse.Namespace) -> int:
@@ -139,6 +176,9 @@ def _reporting_input_errors(args: argparse.Namespace, action):
     except KeyError as error:
         print(f"{args.file}: error: no scenario named {error.args[0]!r} in the file", file=sys.stderr)
         return EXIT_INPUT
+    except UnsatisfiableScenario as error:
+        print(error.report(), file=sys.stderr)
+        return EXIT_REJECTED
     except NoPlanError as error:
         print(f"{args.file}: no plan: {error}", file=sys.stderr)
         return EXIT_REJECTED

@@ -15,7 +15,7 @@ from pathlib import Path
 import pytest
 
 from .frontend import OscError, Scenario, check_file
-from .planning import NoPlanError, PlanningSettings
+from .planning import NoPlanError, PlanningSettings, UnsatisfiableScenario
 
 DEFAULT_SEED = 1
 DEFAULT_ARTIFACTS = "roadlogic-artifacts"
@@ -106,6 +106,8 @@ class ScenarioItem(pytest.Item):
     def repr_failure(self, excinfo, style=None):
         if isinstance(excinfo.value, (ScenarioRejected, OscError)):
             return str(excinfo.value)
+        if isinstance(excinfo.value, UnsatisfiableScenario):
+            return excinfo.value.report()
         if isinstance(excinfo.value, NoPlanError):
             return f"{self.path}: scenario {self.scenario.name}: no plan: {excinfo.value}"
         return super().repr_failure(excinfo, style=style)

@@ -100,3 +100,27 @@ def test_timed_phases_last_as_long_as_their_durations_allow():
         end = [step for tid, step in fired.items() if timing.phase in automaton.transitions[tid].ends]
         assert len(begin) == len(end) == 1, timing
         assert timing.low <= (end[0] - begin[0]) * plan.dt <= timing.high, timing
+
+
+def test_an_impossible_scenario_is_reported_with_both_conflicting_modifiers(tmp_path, capsys):
+    from pytest_roadlogic.cli import main
+
+    path = tmp_path / "impossible.osc"
+    path.write_text(
+        "scenario s:\n  a: car\n  b: car\n  do parallel:\n    b.drive()\n    a.drive() with:\n"
+        "      position([30..40]m, ahead_of: b, at: end)\n      position([10..20]m, behind: b, at: end)\n"
+    )
+    assert main(["plan", str(path)]) == 1
+    err = capsys.readouterr().err
+    assert f"{path}:7:7: error: 30 <= p(a) - p(b) <= 40 cannot hold together with 10 <= p(b) - p(a) <= 20 (line 8)" in err
+    assert f"{path}:8:7: error:" in err and "Traceback" not in err
+
+
+def test_roadlogic_plan_prints_each_plan_as_a_table_and_the_instance_on_request(capsys):
+    from pytest_roadlogic.cli import main
+
+    assert main(["plan", str(Path(__file__).parent.parent / "scenarios" / "overtake.osc"), "--plans", "2", "--show-asp"]) == 0
+    out = capsys.readouterr().out
+    assert "#program state(t)." in out and "transition(0," in out
+    assert "plan 1 of scenario overtake" in out and "plan 2 of scenario overtake" in out
+    assert "v1 pos/lane/speed" in out and "2 plans in" in out

@@ -229,3 +229,32 @@ def _wrap(guard: Guard) -> str:
 
 def _num(value: float) -> str:
     return str(int(value)) if float(value).is_integer() else f"{value:g}"
+
+
+def _normalised(bound: Bound) -> tuple[tuple[str, str, str | None], float, float]:
+    """The bound over a canonical term: differences always as x(first) - x(second) by name."""
+    term = bound.term
+    if term.reference is not None and term.reference < term.actor:
+        return (term.quantity, term.reference, term.actor), -bound.high, -bound.low
+    return (term.quantity, term.actor, term.reference), bound.low, bound.high
+
+
+def contradiction(guard: Guard) -> tuple[Bound, Bound] | None:
+    """Two bounds of a conjunction that no state can meet together (e.g. ahead by 30 m and behind
+    by 10 m), or None. Only plain conjunctions are examined: enough to name the usual mistakes."""
+    parts = guard.parts if isinstance(guard, And) else (guard,)
+    if not all(isinstance(p, Bound) for p in parts):
+        return None
+    by_term: dict[tuple, list[tuple[Bound, float, float]]] = {}
+    for bound in parts:
+        key, low, high = _normalised(bound)
+        by_term.setdefault(key, []).append((bound, low, high))
+    for key, bounds in by_term.items():
+        slack = 0.5 if key[0] == LANE else 0.0
+        for i, (a, a_low, a_high) in enumerate(bounds):
+            for b, b_low, b_high in bounds[i + 1 :]:
+                if max(a_low, b_low) > min(a_high, b_high) + (1e-9 if key[0] != LANE else 0.0) and not (
+                    key[0] == LANE and max(a_low, b_low) - min(a_high, b_high) < slack
+                ):
+                    return a, b
+    return None

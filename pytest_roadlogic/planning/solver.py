@@ -32,6 +32,55 @@ class NoPlanError(Exception):
     """No plan exists up to the horizon limit, or none was found within the time limit."""
 
 
+class UnsatisfiableScenario(NoPlanError):
+    """The scenario cannot be met by any plan, for a reason found before solving; ``conflicts``
+    holds the pairs of contradicting bounds, each with the source location of its modifier."""
+
+    def __init__(self, message: str, conflicts: list) -> None:
+        super().__init__(message)
+        self.conflicts = conflicts
+
+    def report(self) -> str:
+        """Each conflicting modifier as ``path:line:col: error:`` with its line and a caret."""
+        from ..frontend.errors import Diagnostic, OscError
+
+        diagnostics = []
+        for a, b in self.conflicts:
+            if a.source is None or b.source is None:
+                continue
+            diagnostics.append(Diagnostic(a.source, f"{a} cannot hold together with {b} (line {b.source.line})", "the scenario can never be met; widen or remove one of them"))
+            diagnostics.append(Diagnostic(b.source, f"{b} cannot hold together with {a} (line {a.source.line})"))
+        return OscError(diagnostics).report() if diagnostics else str(self)
+
+
+def check_satisfiable(automaton: SymbolicAutomaton) -> None:
+    """Raise ``UnsatisfiableScenario`` when every path to the end crosses a self-contradicting guard."""
+    from ..automaton.guards import contradiction
+
+    blocked = {}
+    for transition in automaton.transitions:
+        pair = contradiction(transition.guard)
+        if pair is not None:
+            blocked[transition.id] = pair
+    if not blocked:
+        return
+    reachable = {automaton.initial}
+    frontier = [automaton.initial]
+    while frontier:
+        location = frontier.pop()
+        for transition in automaton.outgoing(location):
+            if transition.id not in blocked and transition.target not in reachable:
+                reachable.add(transition.target)
+                frontier.append(transition.target)
+    if automaton.final in reachable:
+        return
+    conflicts = list(dict.fromkeys(blocked.values()))
+    lines = ["the scenario can never be met: these constraints cannot hold at the same time"]
+    for a, b in conflicts:
+        lines.append(f"  {a} (at {a.source}) contradicts {b} (at {b.source})")
+    raise UnsatisfiableScenario("\n".join(lines), conflicts)
+
+
 def background_theory() -> str:
     return "\n".join((ASP_DIR / name).read_text(encoding="utf-8") for name in BACKGROUND)
 
@@ -60,6 +109,7 @@ class Planner:
         return control
 
     def plans(self, limit: int | None = None) -> Iterator[Plan]:
+        check_satisfiable(self.automaton)
         deadline = time.monotonic() + self.settings.time_limit
         control = self._control()
         self._ground(control, [("base", []), ("state", [clingo.Number(0)]), ("check", [clingo.Number(0)])])
