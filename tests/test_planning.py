@@ -16,6 +16,9 @@ def check_plan(plan, automaton, settings=SETTINGS):
     vehicles = plan.vehicles
     for v in vehicles:
         states = plan.states[v]
+        if v in automaton.stationary:
+            assert all(s.speed == 0 and s.position == states[0].position and s.lane == states[0].lane for s in states), f"{v} moved"
+            continue
         changes = [k for k in range(1, len(states)) if states[k].lane != states[k - 1].lane]
         for k in range(len(states)):
             s = states[k]
@@ -37,17 +40,44 @@ def check_plan(plan, automaton, settings=SETTINGS):
                 lanes_b = {sb.lane} | ({plan.at(b, k - 1).lane} if k else set())
                 if lanes_a & lanes_b:
                     assert abs(sa.position - sb.position) >= settings.min_gap, f"{a} and {b} too close at {k}"
-    # the guards in order, at strictly increasing steps, ending in the final location
+    # the guards in order, at strictly increasing steps, ending in the final location; every
+    # invariant at every step spent in its location; every timed phase within its bounds
     location = automaton.initial
     last_step = -1
+    started = {}
     for step, tid in plan.transitions:
         transition = automaton.transitions[tid]
         assert transition.source == location
         assert step > last_step or (step == 0 and last_step == -1)
+        for k in range(last_step + 1, step):
+            invariant = automaton.location(location).invariant
+            assert invariant.holds({v: plan.at(v, k) for v in vehicles}), f"invariant {invariant} fails at step {k}"
         snapshot = {v: plan.at(v, step) for v in vehicles}
         assert transition.guard.holds(snapshot), f"guard {transition.guard} fails at step {step}"
+        for phase in transition.starts & automaton.timings.keys():
+            started[phase] = step
+        for phase in transition.ends & automaton.timings.keys():
+            timing = automaton.timings[phase]
+            assert timing.admits((step - started.pop(phase, step)) * plan.dt), f"{timing} broken at step {step}"
         location, last_step = transition.target, step
     assert location == automaton.final
+
+
+BENCHMARK = sorted((Path(__file__).resolve().parent.parent / "scenarios").glob("*.osc"))
+
+
+@pytest.mark.parametrize("path", BENCHMARK, ids=[p.stem for p in BENCHMARK])
+def test_thirty_plans_of_every_benchmark_scenario_obey_the_rules_and_the_guards(path):
+    from pytest_roadlogic.automaton import build_automaton
+    from pytest_roadlogic.frontend import load_file
+
+    automaton = build_automaton(load_file(path).scenarios[0])
+    checked = 0
+    for seed in (1, 2, 3):
+        for plan in Planner(automaton, seed=seed).plans(limit=10):
+            check_plan(plan, automaton)
+            checked += 1
+    assert checked == 30
 
 
 @pytest.mark.parametrize("seed", range(1, 11))
