@@ -3,8 +3,10 @@
 The horizon grows one step at a time: each step grounds only the new ``dynamics(t)`` and
 ``state(t)`` parts and moves the ``query(t)`` external that asks for acceptance at the last step,
 so nothing is re-grounded. The first horizon with an answer set gives the shortest plans. Further
-plans come from the same control: each plan found is excluded (projected on positions and lanes)
-and the solver is asked again, at the same horizon first and then at longer ones.
+plans come from the same control: each plan found is excluded (projected on positions and lanes),
+a domain heuristic makes the search prefer cells no earlier plan occupied (so plans spread out
+instead of being near neighbours), and the solver is asked again, at the same horizon first and
+then at longer ones.
 
 One ``seed`` fixes the result: it seeds clingo's random decisions, which use random signs so that
 different seeds give different plans.
@@ -100,7 +102,7 @@ class Planner:
 
     def _control(self) -> clingo.Control:
         control = clingo.Control(
-            [f"--seed={self.seed}", "--sign-def=rnd", "--rand-freq=0.02", "--warn=none", "--models=1"],
+            [f"--seed={self.seed}", "--sign-def=rnd", "--rand-freq=0.02", "--heuristic=Domain", "--warn=none", "--models=1"],
             logger=lambda code, message: None,
         )
         control.add("base", [], background_theory())
@@ -170,7 +172,10 @@ class Planner:
         """Forbid this exact plan (its positions and lanes) from being found again."""
         literals = [str(s) for s in symbols if s.name in ("pos", "lane")]
         name = f"exclude_{count}"
-        control.add(name, [], ":- " + ", ".join(literals) + ".")
+        # never this plan again, and prefer cells no earlier plan used: spread plans out instead of
+        # enumerating near neighbours (a domain heuristic steers the search, it adds no constraint)
+        steer = [f"#heuristic {s}. [{count},false]" for s in symbols if s.name == "pos"]
+        control.add(name, [], ":- " + ", ".join(literals) + ".\n" + "\n".join(steer))
         self._ground(control, [(name, [])])
 
     def _plan(self, symbols: list[clingo.Symbol], horizon: int, index: int) -> Plan:
