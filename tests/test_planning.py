@@ -154,3 +154,13 @@ def test_roadlogic_plan_prints_each_plan_as_a_table_and_the_instance_on_request(
     assert "#program state(t)." in out and "transition(0," in out
     assert "plan 1 of scenario overtake" in out and "plan 2 of scenario overtake" in out
     assert "v1 pos/lane/speed" in out and "2 plans in" in out
+
+
+def test_enumerated_plans_are_spread_out_not_near_neighbours(overtake_automaton):
+    import itertools
+    import statistics
+
+    plans = list(Planner(overtake_automaton, seed=1).plans(limit=10))
+    cells = [{(v, k, s.lane, round(s.position)) for v in p.vehicles for k, s in enumerate(p.states[v])} for p in plans]
+    similarity = statistics.mean(len(a & b) / len(a | b) for a, b in itertools.combinations(cells, 2))
+    assert similarity < 0.3, f"mean pairwise Jaccard similarity of occupied cells is {similarity:.2f}"
