@@ -92,7 +92,6 @@ def monitor(automaton: SymbolicAutomaton, trace: Trace) -> Verdict:
     times = trace.times
     n_loc = len(automaton.locations)
     drivers = [sorted(loc.drivers) for loc in automaton.locations]
-    positions = {a: trace.actors[a]["x"] for a in trace.names}
     init, final = automaton.initial, automaton.final
     timings = automaton.timings
     NONE = -math.inf
@@ -101,12 +100,11 @@ def monitor(automaton: SymbolicAutomaton, trace: Trace) -> Verdict:
     # every guard's robustness at every sample, computed column-wise up front
     guard_margin = {t.id: t.guard.robustness_series(trace.actors).tolist() for t in automaton.transitions}
     invariant_margin = {q: automaton.location(q).invariant.robustness_series(trace.actors).tolist() for q in invariant_locations}
-    progress = {a: (np.diff(positions[a]) > 0).tolist() for a in trace.names}
+    progress = {a: (np.diff(trace.actors[a]["x"]) > 0).tolist() for a in trace.names}
     # A run's state in a location: the samples at which its open timed phases started (empty when
     # the scenario has no durations). states[q]: that key -> (smallest robustness so far, run).
     Key = tuple  # sorted ((phase, start sample), ...)
     states: list[dict[Key, tuple[float, tuple]]] = [{} for _ in range(n_loc)]
-    best_location = [NONE] * n_loc
     first_met = [None] * n_loc  # first sample at which a run with all guards met is in the location
     best_final, best_final_run = NONE, ()
     for k in range(len(times)):
@@ -142,11 +140,8 @@ def monitor(automaton: SymbolicAutomaton, trace: Trace) -> Verdict:
                         target[next_key] = (candidate, run + ((k, transition.id),))
         states = new_states
         for q in range(n_loc):
-            if states[q]:
-                value = max(v for v, _ in states[q].values())
-                best_location[q] = max(best_location[q], value)
-                if value >= 0 and first_met[q] is None:
-                    first_met[q] = k
+            if states[q] and first_met[q] is None and max(v for v, _ in states[q].values()) >= 0:
+                first_met[q] = k
         for value, run in states[final].values():
             if value > best_final:
                 best_final, best_final_run = value, run
