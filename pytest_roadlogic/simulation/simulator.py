@@ -36,10 +36,14 @@ class Simulation:
 
 def road_for(plan: Plan, lanes: int | None = None) -> Road:
     """A road long enough for the run-up, the plan and its tail."""
-    refs = references(plan, Road(lanes or plan.lanes))
+    lanes = lanes or plan.lanes
+    return _road_around(references(plan, Road(lanes)), lanes)
+
+
+def _road_around(refs: dict[str, Reference], lanes: int) -> Road:
     start = min(r.start_position for r in refs.values())
     end = max(r.s(r.end_time + TAIL) for r in refs.values())
-    return Road(lanes or plan.lanes, x_start=math.floor(start - 30.0), x_end=math.ceil(float(end) + 60.0))
+    return Road(lanes, x_start=math.floor(start - 30.0), x_end=math.ceil(float(end) + 60.0))
 
 
 def simulate(plan: Plan, dt: float = 0.1, drivers: DriverFactory | None = None, lanes: int | None = None) -> Simulation:
@@ -48,8 +52,11 @@ def simulate(plan: Plan, dt: float = 0.1, drivers: DriverFactory | None = None, 
     ``drivers`` maps a vehicle name to a custom driver (or ``None`` for the default frenetix one);
     stationary objects are never driven.
     """
-    road = road_for(plan, lanes)
-    refs = references(plan, road)
+    lanes = lanes or plan.lanes
+    # a reference reads only the lanes' centre lines, not the road's extent: build them once and
+    # size the road around them
+    refs = references(plan, Road(lanes))
+    road = _road_around(refs, lanes)
     active: dict[str, Driver] = {}
     for vehicle, reference in refs.items():
         if vehicle in plan.stationary:
