@@ -21,7 +21,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-from ..frontend import model
+from ..frontend import library, model
 from ..frontend.checker import LANE_CONVENTION
 from ..frontend.errors import SourceLocation, error_at
 from ..frontend.units import LENGTH, SPEED, TIME
@@ -112,6 +112,7 @@ def _actor(invocation: model.Invocation, scenario: model.Scenario) -> str:
 def _action(invocation: model.Invocation, phase: Phase, scenario: model.Scenario, lanes: int, env: dict) -> None:
     actor = phase.actor
     action = invocation.action
+    args = library.bind(library.ACTIONS[action], invocation.arguments)
     if action == "remain_stationary":
         phase.drives = False
         phase.add(invariant=Bound(Term(SPEED_Q, actor), -STANDSTILL, STANDSTILL, invocation.location))
@@ -120,7 +121,7 @@ def _action(invocation: model.Invocation, phase: Phase, scenario: model.Scenario
     elif action == "keep_speed":
         phase.branch(_keep_speed_variants(actor, invocation.location))
     elif action == "change_speed":
-        target = invocation.argument("target") or _positional(invocation.arguments, 0)
+        target = args["target"]
         if target is None:
             raise error_at(invocation.location, "change_speed() needs a target speed, e.g. change_speed(target: 20mps)")
         low, high = _interval(target, SPEED, "a speed such as 20mps", env)
@@ -128,15 +129,7 @@ def _action(invocation: model.Invocation, phase: Phase, scenario: model.Scenario
             low, high = low - SPEED_TOLERANCE, high + SPEED_TOLERANCE
         phase.add(end=Bound(Term(SPEED_Q, actor), max(0.0, low), high, invocation.location))
     elif action == "change_lane":
-        count = invocation.argument("num_of_lanes") or _positional(invocation.arguments, 0)
-        side = invocation.argument("side") or _positional(invocation.arguments, 1)
-        reference = invocation.argument("reference")
-        phase.branch(_lane_change_variants(actor, count, side, reference, lanes, invocation.location, env))
-
-
-def _positional(arguments: tuple[model.Argument, ...], index: int) -> model.Argument | None:
-    positional = [a for a in arguments if a.name is None]
-    return positional[index] if index < len(positional) else None
+        phase.branch(_lane_change_variants(actor, args["num_of_lanes"], args["side"], args["reference"], lanes, invocation.location, env))
 
 
 def _keep_lane_variants(actor: str, lanes: int, source) -> list[Variant]:
@@ -198,18 +191,17 @@ def _modifier(modifier: model.Modifier, phase: Phase, scenario: model.Scenario, 
     if modifier.name == "keep_speed":
         phase.branch(_keep_speed_variants(actor, modifier.location))
         return
+    args = library.bind(library.MODIFIERS[modifier.name], modifier.arguments)
     if modifier.name == "change_lane":
-        count = modifier.argument("num_of_lanes") or _positional(modifier.arguments, 0)
-        side = modifier.argument("side") or _positional(modifier.arguments, 1)
-        phase.branch(_lane_change_variants(actor, count, side, None, lanes, modifier.location, env))
+        phase.branch(_lane_change_variants(actor, args["num_of_lanes"], args["side"], None, lanes, modifier.location, env))
         return
     if modifier.name == "lane":
-        guard = _lane(modifier, actor, lanes, env)
+        guard = _lane(args, modifier.location, actor, lanes, env)
     elif modifier.name == "position":
-        guard = _position(modifier, actor, env)
+        guard = _position(args, modifier.location, actor, env)
     else:
-        guard = _speed(modifier, actor, env)
-    anchor = _anchor(modifier)
+        guard = _speed(args, modifier.location, actor, env)
+    anchor = _anchor(args)
     if anchor == "start":
         phase.add(start=guard)
     elif anchor == "end":
@@ -218,8 +210,8 @@ def _modifier(modifier: model.Modifier, phase: Phase, scenario: model.Scenario, 
         phase.add(invariant=guard)
 
 
-def _anchor(modifier: model.Modifier) -> str:
-    argument = modifier.argument("at")
+def _anchor(args: library.Binding) -> str:
+    argument = args["at"]
     if argument is None:
         return "all"  # the standard's default: the modifier holds throughout the phase
     value = argument.value
@@ -228,47 +220,47 @@ def _anchor(modifier: model.Modifier) -> str:
     return value.name
 
 
-def _reference(modifier: model.Modifier, names: tuple[str, ...]) -> tuple[str, str] | None:
+def _reference(args: library.Binding, names: tuple[str, ...]) -> tuple[str, str] | None:
     """The relation keyword used (e.g. ``same_as``) and the actor it names, if any."""
-    found = [a for a in modifier.arguments if a.name in names]
-    if not found:
-        return None
-    return found[0].name, _name(found[0])
+    for name in names:
+        if args[name] is not None:
+            return name, _name(args[name])
+    return None
 
 
-def _lane(modifier: model.Modifier, actor: str, lanes: int, env: dict) -> Guard:
-    relation = _reference(modifier, ("same_as", "left_of", "right_of", "side_of"))
+def _lane(args: library.Binding, source, actor: str, lanes: int, env: dict) -> Guard:
+    relation = _reference(args, ("same_as", "left_of", "right_of", "side_of"))
     if relation is not None:
         keyword, other = relation
         if keyword == "side_of":
-            side = modifier.argument("side")
+            side = args["side"]
             keyword = "left_of" if side is None or _name(side) == "left" else "right_of"
         low, high = {"same_as": (0, 0), "left_of": (-math.inf, -1), "right_of": (1, math.inf)}[keyword]
-        return Bound(Term(LANE, actor, other), low, high, modifier.location)
-    number_arg = modifier.argument("lane") or _positional(modifier.arguments, 0)
+        return Bound(Term(LANE, actor, other), low, high, source)
+    number_arg = args["lane"]
     if number_arg is None:
-        raise error_at(modifier.location, "lane() needs a lane number or same_as:/left_of:/right_of:", hint=LANE_CONVENTION)
+        raise error_at(source, "lane() needs a lane number or same_as:/left_of:/right_of:", hint=LANE_CONVENTION)
     value = _evaluate(number_arg, env)
     if value.dimension is not None or not float(value.low).is_integer() or not float(value.high).is_integer():
         raise error_at(number_arg.location, "a lane number must be a whole number", hint=LANE_CONVENTION)
     low, high = int(value.low), int(value.high)
     if low < 1 or high > lanes:
         raise error_at(number_arg.location, f"lane {value} is outside the road's {lanes} lanes", hint=LANE_CONVENTION)
-    side = modifier.argument("from")
+    side = args["from"]
     from_left = side is not None and _name(side) == "left"
     first, last = (low - 1, high - 1) if from_left else (lanes - high, lanes - low)
-    return Bound(Term(LANE, actor), first, last, modifier.location)
+    return Bound(Term(LANE, actor), first, last, source)
 
 
-def _position(modifier: model.Modifier, actor: str, env: dict) -> Guard:
-    if modifier.argument("time") is not None:
-        raise error_at(modifier.argument("time").location, "not supported yet by the automaton: position(time: ...)", hint="give the gap as a distance")
-    relation = _reference(modifier, ("behind", "ahead_of"))
+def _position(args: library.Binding, source, actor: str, env: dict) -> Guard:
+    if args["time"] is not None:
+        raise error_at(args["time"].location, "not supported yet by the automaton: position(time: ...)", hint="give the gap as a distance")
+    relation = _reference(args, ("behind", "ahead_of"))
     if relation is None:
-        raise error_at(modifier.location, "position() needs behind: or ahead_of: another actor")
-    distance = modifier.argument("distance") or _positional(modifier.arguments, 0)
+        raise error_at(source, "position() needs behind: or ahead_of: another actor")
+    distance = args["distance"]
     if distance is None:
-        raise error_at(modifier.location, "position() needs a distance, e.g. position([10..20]m, behind: v2)")
+        raise error_at(source, "position() needs a distance, e.g. position([10..20]m, behind: v2)")
     low, high = _interval(distance, LENGTH, "a length such as 10m or [10..20]m", env)
     if low < 0:
         raise error_at(distance.location, "a distance must not be negative", hint="use behind: instead of ahead_of: (or the reverse)")
@@ -277,28 +269,28 @@ def _position(modifier: model.Modifier, actor: str, env: dict) -> Guard:
     keyword, other = relation
     # behind: the other actor is ahead by the distance; ahead_of: this actor is.
     term = Term(POSITION, other, actor) if keyword == "behind" else Term(POSITION, actor, other)
-    return Bound(term, low, high, modifier.location)
+    return Bound(term, low, high, source)
 
 
-def _speed(modifier: model.Modifier, actor: str, env: dict) -> Guard:
-    value = modifier.argument("speed") or _positional(modifier.arguments, 0)
-    relation = _reference(modifier, ("faster_than", "slower_than", "same_as"))
+def _speed(args: library.Binding, source, actor: str, env: dict) -> Guard:
+    value = args["speed"]
+    relation = _reference(args, ("faster_than", "slower_than", "same_as"))
     if value is None:
         if relation is None or relation[0] != "same_as":
-            raise error_at(modifier.location, "speed() needs a speed, e.g. speed([20..30]kph)")
+            raise error_at(source, "speed() needs a speed, e.g. speed([20..30]kph)")
         low = high = 0.0
     else:
         low, high = _interval(value, SPEED, "a speed such as 20mps or [50..80]kph", env)
     if low == high:
         low, high = low - SPEED_TOLERANCE, high + SPEED_TOLERANCE
     if relation is None:
-        return Bound(Term(SPEED_Q, actor), max(0.0, low), high, modifier.location)
+        return Bound(Term(SPEED_Q, actor), max(0.0, low), high, source)
     keyword, other = relation
     if keyword == "slower_than":
-        return Bound(Term(SPEED_Q, other, actor), low, high, modifier.location)
+        return Bound(Term(SPEED_Q, other, actor), low, high, source)
     if keyword == "faster_than":
-        return Bound(Term(SPEED_Q, actor, other), low, high, modifier.location)
-    return Bound(Term(SPEED_Q, actor, other), low, high, modifier.location)  # same_as: within the given difference
+        return Bound(Term(SPEED_Q, actor, other), low, high, source)
+    return Bound(Term(SPEED_Q, actor, other), low, high, source)  # same_as: within the given difference
 
 
 def _evaluate(argument: model.Argument, env: dict) -> Interval:

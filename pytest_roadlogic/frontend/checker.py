@@ -332,7 +332,9 @@ class _Checker:
         if signature is None:
             self.error(node.location, f"unknown action {node.action!r}", self._known("actions", library.ACTIONS))
         else:
-            self._arguments(signature, node.arguments, node.location, scenario, env, used_actors, used_names, what=f"{node.action}()")
+            binding = self._arguments(signature, node.arguments, node.location, scenario, env, used_actors, used_names, what=f"{node.action}()")
+            if node.action == "change_lane":
+                self._lane_count(binding["num_of_lanes"], env)
             if actor is not None and scenario.actor(actor) is not None:
                 stationary = scenario.actor(actor).stationary
                 if stationary and node.action != "remain_stationary":
@@ -344,10 +346,9 @@ class _Checker:
             if modifier_signature is None:
                 self.error(modifier.location, f"unknown modifier {modifier.name!r}", self._known("modifiers", library.MODIFIERS))
                 continue
-            self._arguments(modifier_signature, modifier.arguments, modifier.location, scenario, env, used_actors, used_names, what=f"{modifier.name}()")
-            self._lane_numbers(modifier, env)
-        if node.action == "change_lane":
-            self._lane_count(node, env)
+            binding = self._arguments(modifier_signature, modifier.arguments, modifier.location, scenario, env, used_actors, used_names, what=f"{modifier.name}()")
+            if modifier.name == "lane":
+                self._lane_numbers(binding, env)
         local = dict(env)
         local["it.duration"] = Interval(0.0, math.inf, TIME)
         for constraint in node.constraints:
@@ -369,41 +370,32 @@ class _Checker:
         if node.until is not None:
             self._event_specification(node.until, scenario, space, node.location)
 
-    def _arguments(self, signature, arguments, location, scenario, env, used_actors, used_names, what: str) -> None:
+    def _arguments(self, signature, arguments, location, scenario, env, used_actors, used_names, what: str) -> library.Binding:
+        binding = library.bind(signature, arguments)
+        for argument in binding.surplus:
+            self.error(argument.location, f"too many positional arguments to {what}", f"usage: {signature.usage()}")
+        for argument in binding.unknown:
+            self.error(argument.location, f"unknown argument {argument.name!r} of {what}", f"usage: {signature.usage()}")
+        for argument, parameter in binding.repeated:
+            self.error(argument.location, f"{what} is given {parameter.name!r} twice")
         given: dict[str, model.Argument] = {}
-        unknown = False
-        positional = list(signature.positional)
-        for argument in arguments:
-            if argument.name is None:
-                if not positional:
-                    self.error(argument.location, f"too many positional arguments to {what}", f"usage: {signature.usage()}")
-                    continue
-                parameter = positional.pop(0)
-            else:
-                parameter = signature.parameter(argument.name)
-                if parameter is None:
-                    self.error(argument.location, f"unknown argument {argument.name!r} of {what}", f"usage: {signature.usage()}")
-                    unknown = True
-                    continue
-                if parameter in positional:
-                    positional.remove(parameter)
-            if parameter.name in given:
-                self.error(argument.location, f"{what} is given {parameter.name!r} twice")
-                continue
+        for name, argument in binding.arguments.items():
+            parameter = signature.parameter(name)
             if not parameter.supported:
                 self.error(argument.location, f"not supported: argument {parameter.name!r} of {what}", f"usage: {signature.usage()}")
                 continue
-            given[parameter.name] = argument
+            given[name] = argument
             used_names.update(n.name for n in names_in(argument.value))
             self._value(argument, parameter, scenario, env, used_actors, what)
         for group in signature.exclusive:
             present = [given[name] for name in group if name in given]
             if len(present) > 1:
                 self.error(present[1].location, f"{what} takes only one of {', '.join(group)}")
-        for group in signature.required if not unknown else ():
+        for group in signature.required if not binding.unknown else ():
             if not any(name in given for name in group):
                 options = " or ".join(f"{name}:" if signature.parameter(name) and not signature.parameter(name).positional else name for name in group)
                 self.error(location, f"{what} needs {options}", f"usage: {signature.usage()}")
+        return binding
 
     def _value(self, argument: model.Argument, parameter: library.Parameter, scenario, env, used_actors, what: str) -> None:
         value = argument.value
@@ -458,14 +450,12 @@ class _Checker:
             if result.low < 0 or (result.is_point and not float(result.low).is_integer()):
                 self.error(value.location, f"{parameter.name}: takes a whole number from 0 up")
 
-    def _lane_numbers(self, modifier: model.Modifier, env) -> None:
-        if modifier.name != "lane":
-            return
-        relative = [a for a in modifier.arguments if a.name in ("same_as", "left_of", "right_of", "side_of")]
-        side = modifier.argument("from")
+    def _lane_numbers(self, binding: library.Binding, env) -> None:
+        relative = [binding[name] for name in ("same_as", "left_of", "right_of", "side_of") if binding[name] is not None]
+        side = binding["from"]
         if relative and side is not None:
             self.error(side.location, "from: goes with a lane number, not with a relative lane", LANE_CONVENTION)
-        positional = modifier.argument("lane") or next(iter(modifier.positional()), None)
+        positional = binding["lane"]
         if positional is None:
             return
         try:
@@ -476,8 +466,7 @@ class _Checker:
             shown = f"{value.low:g}" if value.is_point else str(value)
             self.error(positional.value.location, f"lane {shown} is outside the road's {self.lanes} lanes", LANE_CONVENTION)
 
-    def _lane_count(self, node: model.Invocation, env) -> None:
-        count = node.argument("num_of_lanes") or next(iter(a for a in node.arguments if a.name is None), None)
+    def _lane_count(self, count: model.Argument | None, env) -> None:
         if count is None:
             return
         try:

@@ -8,8 +8,9 @@ translate them (it says so by name); arguments marked unsupported are refused by
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
+from . import model
 from .units import ACCELERATION, LENGTH, SPEED, TIME
 
 # Built-in actor types that can drive on (or stand on) the highway.
@@ -73,6 +74,43 @@ class Signature:
     def usage(self) -> str:
         names = [p.name for p in self.parameters if p.supported]
         return f"{self.name}({', '.join(names)})" if names else f"{self.name}()"
+
+
+@dataclass
+class Binding:
+    """Arguments matched to a signature's parameters, and those that matched none."""
+
+    arguments: dict[str, model.Argument] = field(default_factory=dict)  # parameter name -> argument
+    unknown: list[model.Argument] = field(default_factory=list)  # named, but no such parameter
+    surplus: list[model.Argument] = field(default_factory=list)  # positional, beyond the signature's
+    repeated: list[tuple[model.Argument, Parameter]] = field(default_factory=list)  # a parameter given again
+
+    def __getitem__(self, name: str) -> model.Argument | None:
+        return self.arguments.get(name)
+
+
+def bind(signature: Signature, arguments: tuple[model.Argument, ...]) -> Binding:
+    """Match arguments to parameters: named ones by name, positional ones in the signature's order."""
+    binding = Binding()
+    positional = list(signature.positional)
+    for argument in arguments:
+        if argument.name is None:
+            if not positional:
+                binding.surplus.append(argument)
+                continue
+            parameter = positional.pop(0)
+        else:
+            parameter = signature.parameter(argument.name)
+            if parameter is None:
+                binding.unknown.append(argument)
+                continue
+            if parameter in positional:
+                positional.remove(parameter)
+        if parameter.name in binding.arguments:
+            binding.repeated.append((argument, parameter))
+            continue
+        binding.arguments[parameter.name] = argument
+    return binding
 
 
 AT = Parameter("at", "enum:at")
