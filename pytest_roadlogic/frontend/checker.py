@@ -76,7 +76,6 @@ class _Checker:
         self.sources: dict[str, str] = {}
         self.files: dict[str, model.OscFile] = {}
         self.enums: dict[str, tuple[str, ...]] = dict(library.ENUMS)
-        self.enum_declarations: dict[str, model.EnumDeclaration] = {}
         self.types: dict[str, model.TypeDeclaration] = {}
         self.scenarios: dict[str, model.Scenario] = {}
 
@@ -135,7 +134,7 @@ class _Checker:
             if str(target) in stack:
                 self.error(item.location, f"{item.target!r} imports itself (through {' -> '.join(Path(s).name for s in stack)})", "remove the circular import")
                 continue
-            if str(target) in {str(Path(p).resolve()) for p in self.files}:
+            if str(target) in self.files:  # keyed by resolved path: parse_file was given ``target``
                 continue
             if not target.is_file():
                 self.error(item.location, f"cannot find the imported file {item.target!r}", f"looked for {target}; paths are relative to the importing file")
@@ -170,7 +169,6 @@ class _Checker:
                     self.error(enum.location, f"enum {enum.name!r} lists {member!r} twice")
                 members.append(member)
             self.enums[enum.name] = tuple(members)
-            self.enum_declarations[enum.name] = enum
         for declared in osc.types:
             if declared.name in self.types or declared.name in self.enums or declared.name in library.SCALAR_TYPES or declared.name in library.ACTOR_TYPES:
                 self.error(declared.location, f"type {declared.name!r} is already declared", "rename the declaration")
@@ -215,13 +213,14 @@ class _Checker:
         space, diagnostics = parameter_space(tuple(parameters), tuple(c for c in scenario.constraints), self.enums)
         self.diagnostics.extend(diagnostics)
         checked = replace(scenario, actors=tuple(actors), parameters=tuple(parameters))
+        env = self._environment(checked, space)
 
         if len(scenario.behaviors) > 1:
             for extra in scenario.behaviors[1:]:
                 self.error(extra.location, "a scenario has at most one `do`", "compose the behaviors with serial: or parallel: under one do")
         for event in scenario.events:
             if event.specification is not None:
-                self._event_specification(event.specification, checked, space, event.location)
+                self._event_specification(event.specification, checked, env, event.location)
         for method in scenario.methods:
             if method.parameters:
                 self.error(method.location, "not supported: methods with parameters", "write the value as an expression where it is used")
@@ -236,7 +235,7 @@ class _Checker:
                         self.error(node.location, f"label {label!r} is already used on line {labels[label].line}", "give each phase its own label")
                     else:
                         labels[label] = node.location
-                self._behavior(node, checked, space, used_actors, used_names)
+                self._behavior(node, checked, env, used_actors, used_names)
         for name, domain in space.domains.items():
             if name in used_names and not domain.bounded:
                 self.error(
@@ -296,8 +295,7 @@ class _Checker:
 
     # -------------------------------------------------------------- behavior
 
-    def _behavior(self, node: model.Behavior, scenario: model.Scenario, space: ParameterSpace, used_actors: set[str], used_names: set[str]) -> None:
-        env = self._environment(scenario, space)
+    def _behavior(self, node: model.Behavior, scenario: model.Scenario, env: dict, used_actors: set[str], used_names: set[str]) -> None:
         if isinstance(node, model.Composition):
             signature = library.COMPOSITIONS[node.operator]
             self._arguments(signature, node.arguments, node.location, scenario, env, used_actors, used_names, what=node.operator)
@@ -308,11 +306,11 @@ class _Checker:
                 self.error(overlap.location, f"not supported: overlap: {overlap.value.name}", "parallel supports overlap: start (the default) and equal")
             return
         if isinstance(node, model.Invocation):
-            self._invocation(node, scenario, space, env, used_actors, used_names)
+            self._invocation(node, scenario, env, used_actors, used_names)
             return
         if isinstance(node, model.Wait):
             used_names.update(n.name for n in names_in(node.condition) if not isinstance(node.condition, model.EventReference))
-            self._event_specification(node.condition, scenario, space, node.location)
+            self._event_specification(node.condition, scenario, env, node.location)
             return
         if isinstance(node, model.Emit):
             if node.event not in {e.name for e in scenario.events}:
@@ -320,7 +318,7 @@ class _Checker:
             return
         self.error(node.location, "not supported: call", "methods with side effects cannot be planned; remove the call")
 
-    def _invocation(self, node: model.Invocation, scenario, space, env, used_actors, used_names) -> None:
+    def _invocation(self, node: model.Invocation, scenario, env, used_actors, used_names) -> None:
         actor = node.actor
         if actor is None:
             self.error(node.location, f"{node.action}() needs an actor", f"write it as {scenario.actors[0].name if scenario.actors else 'v1'}.{node.action}()")
@@ -368,7 +366,7 @@ class _Checker:
                     self.error(constraint.location, "keep() needs a condition, e.g. keep(it.duration <= 5s)")
             used_names.update(n.name for n in names_in(constraint.expression))
         if node.until is not None:
-            self._event_specification(node.until, scenario, space, node.location)
+            self._event_specification(node.until, scenario, env, node.location)
 
     def _arguments(self, signature, arguments, location, scenario, env, used_actors, used_names, what: str) -> library.Binding:
         binding = library.bind(signature, arguments)
@@ -476,7 +474,7 @@ class _Checker:
         if isinstance(value, Interval) and value.dimension is None and value.low >= 0 and (value.low < 1 or value.high > self.lanes - 1):
             self.error(count.value.location, f"a change of {value} lanes is impossible on a road of {self.lanes} lanes", f"num_of_lanes must be between 1 and {self.lanes - 1}")
 
-    def _event_specification(self, spec, scenario: model.Scenario, space: ParameterSpace, location: SourceLocation) -> None:
+    def _event_specification(self, spec, scenario: model.Scenario, env: dict, location: SourceLocation) -> None:
         if isinstance(spec, model.EventReference):
             events = {e.name for e in scenario.events}
             last = spec.name.split(".")[-1]
@@ -494,7 +492,7 @@ class _Checker:
                 self.error(call.location, "elapsed() takes one time, e.g. elapsed(3s) or elapsed([2..4]s)")
                 return
             try:
-                value = evaluate(call.arguments[0].value, self._environment(scenario, space))
+                value = evaluate(call.arguments[0].value, env)
             except EvaluationError as error:
                 self.error(error.location, error.message, error.hint)
                 return
@@ -502,7 +500,6 @@ class _Checker:
                 got = describe(value.dimension) if isinstance(value, Interval) else "a name"
                 self.error(call.arguments[0].location, f"elapsed() expects a time, got {got}", "write it with a unit, e.g. 3s")
             return
-        env = self._environment(scenario, space)
         for name in names_in(spec):
             if name.name not in env and name.enum is None:
                 self.error(name.location, f"unknown name {name.name!r}", "a condition can read parameters and actors' speed, e.g. v1.speed > 20mps")
@@ -516,6 +513,7 @@ class _Checker:
             self.error(location, "expected a condition, e.g. elapsed(3s) or v1.speed >= 20mps")
 
     def _environment(self, scenario: model.Scenario, space: ParameterSpace) -> dict[str, object]:
+        """Names an expression of this scenario may read: parameters (their ranges) and actors' speed and lane."""
         env = space.environment()
         for actor in scenario.actors:
             env[f"{actor.name}.speed"] = Interval(0.0, math.inf, SPEED)
