@@ -14,7 +14,7 @@ when a parameter is left open (the base strategy: the planner picks within the r
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 from . import library, model
 from .errors import Diagnostic, SourceLocation
@@ -98,79 +98,74 @@ def _choice_value(value: object, location: SourceLocation) -> object:
     return model.Literal(value, location)
 
 
-@dataclass
-class _Resolution:
-    space_domains: dict[str, ParameterDomain] = field(default_factory=dict)
-    relations: list[model.Keep] = field(default_factory=list)
-    diagnostics: list[Diagnostic] = field(default_factory=list)
-
-
 def parameter_space(
     parameters: tuple[model.Field, ...],
     constraints: tuple[model.Keep | model.RemoveDefault, ...],
     enums: dict[str, tuple[str, ...]] | None = None,
 ) -> tuple[ParameterSpace, list[Diagnostic]]:
     """Resolve parameter fields and the constraints on them; diagnostics are errors and warnings."""
-    enums = {**library.ENUMS, **(enums or {})}
-    result = _Resolution()
-    by_name = {p.name: p for p in parameters}
-    hard: dict[str, Interval] = {}
-    hard_sources: dict[str, list[SourceLocation]] = {}
-    overridden: set[str] = set()
-    defaults: dict[str, tuple[object, SourceLocation]] = {}
-    choices: dict[str, tuple[object, ...]] = {}
+    resolver = _Resolver(parameters, {**library.ENUMS, **(enums or {})})
+    return resolver.resolve(constraints), resolver.diagnostics
 
-    for parameter in parameters:
-        if parameter.type in library.PHYSICAL_TYPES or parameter.type in library.NUMBER_TYPES:
-            dimension = library.PHYSICAL_TYPES.get(parameter.type)
-            low = 0.0 if parameter.type == "uint" else -math.inf
-            hard[parameter.name] = Interval(low, math.inf, dimension)
-        elif parameter.type == "bool":
-            choices[parameter.name] = (False, True)
-        elif parameter.type in enums:
-            choices[parameter.name] = enums[parameter.type]
-        else:
-            choices[parameter.name] = ()  # strings: only a given value
 
-    env = {name: interval for name, interval in hard.items()}
+class _Resolver:
+    """The state of one resolution: what is known of each parameter as constraints are read."""
 
-    def add_error(location, message, hint=None, severity="error"):
-        result.diagnostics.append(Diagnostic(location, message, hint, severity))
-
-    def set_default(name: str, value_expr: model.Expression, location: SourceLocation) -> None:
-        parameter = by_name[name]
-        value = _value_for(parameter, value_expr, env, enums, add_error)
-        if value is not None:
-            defaults[name] = (value, location)
-
-    for parameter in parameters:
-        if parameter.default is not None:
-            set_default(parameter.name, parameter.default, parameter.default.location)
-
-    all_constraints = [c for p in parameters for c in p.constraints] + list(constraints)
-    for constraint in all_constraints:
-        if isinstance(constraint, model.RemoveDefault):
-            target = constraint.target
-            if isinstance(target, model.Name) and target.name in by_name:
-                defaults.pop(target.name, None)
-            elif isinstance(target, model.Name) and target.name == "it":
-                pass
+    def __init__(self, parameters: tuple[model.Field, ...], enums: dict[str, tuple[str, ...]]) -> None:
+        self.parameters = parameters
+        self.enums = enums
+        self.by_name = {p.name: p for p in parameters}
+        self.hard: dict[str, Interval] = {}  # numeric parameters: the intersection of hard bounds
+        self.hard_sources: dict[str, list[SourceLocation]] = {}
+        self.overridden: set[str] = set()  # a hard == or in overrides the default
+        self.defaults: dict[str, tuple[object, SourceLocation]] = {}
+        self.choices: dict[str, tuple[object, ...]] = {}  # bool, enum and string parameters
+        self.relations: list[model.Keep] = []
+        self.diagnostics: list[Diagnostic] = []
+        for parameter in parameters:
+            if parameter.type in library.PHYSICAL_TYPES or parameter.type in library.NUMBER_TYPES:
+                dimension = library.PHYSICAL_TYPES.get(parameter.type)
+                low = 0.0 if parameter.type == "uint" else -math.inf
+                self.hard[parameter.name] = Interval(low, math.inf, dimension)
+            elif parameter.type == "bool":
+                self.choices[parameter.name] = (False, True)
+            elif parameter.type in enums:
+                self.choices[parameter.name] = enums[parameter.type]
             else:
-                add_error(constraint.location, "remove_default() takes the name of a parameter")
-            continue
-        for atom in _conjuncts(constraint.expression):
-            _apply_atom(atom, constraint, by_name, hard, hard_sources, overridden, defaults, choices, env, enums, result, add_error)
+                self.choices[parameter.name] = ()  # strings: only a given value
+        # for evaluating constraints: every numeric parameter unbounded, so only units are checked
+        self.env = dict(self.hard)
 
-    domains: dict[str, ParameterDomain] = {}
-    for parameter in parameters:
+    def add_error(self, location, message, hint=None, severity="error") -> None:
+        self.diagnostics.append(Diagnostic(location, message, hint, severity))
+
+    def resolve(self, constraints: tuple[model.Keep | model.RemoveDefault, ...]) -> ParameterSpace:
+        for parameter in self.parameters:
+            if parameter.default is not None:
+                value = self.value_for(parameter, parameter.default)
+                if value is not None:
+                    self.defaults[parameter.name] = (value, parameter.default.location)
+        for constraint in [c for p in self.parameters for c in p.constraints] + list(constraints):
+            if isinstance(constraint, model.RemoveDefault):
+                target = constraint.target
+                if isinstance(target, model.Name) and target.name in self.by_name:
+                    self.defaults.pop(target.name, None)
+                elif not (isinstance(target, model.Name) and target.name == "it"):
+                    self.add_error(constraint.location, "remove_default() takes the name of a parameter")
+                continue
+            for atom in _conjuncts(constraint.expression):
+                self.apply_atom(atom, constraint)
+        return ParameterSpace({p.name: self.domain(p) for p in self.parameters}, tuple(self.relations))
+
+    def domain(self, parameter: model.Field) -> ParameterDomain:
         name = parameter.name
-        default = defaults.get(name) if name not in overridden else None
-        if name in hard:
-            interval = hard[name]
+        default = self.defaults.get(name) if name not in self.overridden else None
+        if name in self.hard:
+            interval = self.hard[name]
             if interval.empty:
-                lines = ", ".join(str(loc.line) for loc in hard_sources.get(name, []))
-                location = hard_sources.get(name, [parameter.location])[-1]
-                add_error(
+                lines = ", ".join(str(loc.line) for loc in self.hard_sources.get(name, []))
+                location = self.hard_sources.get(name, [parameter.location])[-1]
+                self.add_error(
                     location,
                     f"parameter {name!r} is constrained to an empty range",
                     f"the constraints on lines {lines} contradict each other" if lines else "widen the range",
@@ -181,20 +176,145 @@ def parameter_space(
                 if isinstance(value, Interval):
                     narrowed = interval.intersect(value)
                     if narrowed.empty:
-                        add_error(default[1], f"the default of {name!r} ({value}) lies outside its range {interval}; it is ignored", severity="warning")
+                        self.add_error(default[1], f"the default of {name!r} ({value}) lies outside its range {interval}; it is ignored", severity="warning")
                     else:
                         interval = narrowed
-            domains[name] = ParameterDomain(name, parameter.type, parameter.location, interval=interval)
-        else:
-            options = choices[name]
-            if default is not None:
-                value = default[0]
+            return ParameterDomain(name, parameter.type, parameter.location, interval=interval)
+        options = self.choices[name]
+        if default is not None:
+            value = default[0]
+            if options and value not in options:
+                self.add_error(default[1], f"the default of {name!r} is not one of its values ({', '.join(map(str, options))})")
+            else:
+                options = (value,)
+        return ParameterDomain(name, parameter.type, parameter.location, choices=options)
+
+    def subject(self, expression: model.Expression, constraint: model.Keep) -> str | None:
+        if isinstance(expression, model.Name) and expression.enum is None:
+            if expression.name == "it" and constraint.subject in self.by_name:
+                return constraint.subject
+            if expression.name in self.by_name:
+                return expression.name
+        return None
+
+    def apply_atom(self, atom: model.Expression, constraint: model.Keep) -> None:
+        by_name = self.by_name
+        mentioned = {
+            (constraint.subject if n.name == "it" else n.name)
+            for n in names_in(atom)
+            if (n.name == "it" and constraint.subject in by_name) or n.name in by_name
+        }
+        for name in names_in(atom):
+            if name.enum is None and name.name not in by_name and not (name.name == "it" and constraint.subject in by_name):
+                if not any(name.name in members for members in self.enums.values()):
+                    self.add_error(name.location, f"unknown name {name.name!r} in a constraint", "a keep() constrains parameters of this scenario")
+                    return
+        if not mentioned:
+            self.add_error(constraint.location, "this constraint mentions no parameter", "a keep() constrains parameters of this scenario")
+            return
+        if isinstance(atom, model.Binary) and atom.operator in _BOUND_OPERATORS:
+            left, right = self.subject(atom.left, constraint), self.subject(atom.right, constraint)
+            operator = atom.operator
+            other = atom.right
+            name = left
+            if left is None and right is not None and operator != "in":
+                name, other, operator = right, atom.left, _MIRRORED[operator]
+            if name is not None and not (set(n.name for n in names_in(other)) & set(by_name)):
+                self.bound(name, operator, other, atom, constraint)
+                return
+        # A relation between parameters (or a form with or/not/=>): checked on samples.
+        if constraint.strength == "default":
+            self.add_error(constraint.location, "not supported: a default constraint relating several parameters", "make it a hard keep()")
+            return
+        try:
+            evaluate(atom, self.env)
+        except EvaluationError as error:
+            self.add_error(error.location, error.message, error.hint)
+            return
+        self.relations.append(model.Keep(atom, constraint.strength, constraint.location, constraint.subject))
+
+    def bound(self, name: str, operator: str, other: model.Expression, atom: model.Expression, constraint: model.Keep) -> None:
+        parameter = self.by_name[name]
+        if constraint.strength == "default":
+            if operator not in ("==", "in"):
+                self.add_error(constraint.location, "not supported: a default constraint other than == or in")
+                return
+            value = self.value_for(parameter, other, allow_range=operator == "in")
+            if value is not None:
+                self.defaults[name] = (value, constraint.location)
+            return
+        if operator in ("==", "in"):
+            self.overridden.add(name)
+        if name not in self.hard:
+            if operator != "==":
+                self.add_error(atom.location, f"{operator!r} does not apply to {parameter.type} parameter {name!r}")
+                return
+            value = self.value_for(parameter, other)
+            if value is not None:
+                options = self.choices[name]
                 if options and value not in options:
-                    add_error(default[1], f"the default of {name!r} is not one of its values ({', '.join(map(str, options))})")
+                    self.add_error(other.location, f"{value!r} is not a value of {parameter.type}", f"its values: {', '.join(map(str, options))}")
                 else:
-                    options = (value,)
-            domains[name] = ParameterDomain(name, parameter.type, parameter.location, choices=options)
-    return ParameterSpace(domains, tuple(result.relations)), result.diagnostics
+                    self.choices[name] = (value,)
+            return
+        try:
+            value = evaluate(other, self.env)
+        except EvaluationError as error:
+            self.add_error(error.location, error.message, error.hint)
+            return
+        if not isinstance(value, Interval):
+            self.add_error(other.location, f"expected {describe(self.hard[name].dimension)} for {name!r}")
+            return
+        if value.dimension != self.hard[name].dimension:
+            self.add_error(
+                other.location,
+                f"{name!r} is {_kind(parameter)} but this is {describe(value.dimension)}",
+                "use a unit of the parameter's kind",
+            )
+            return
+        if operator in ("==", "in"):
+            bound = value
+        elif operator in ("<", "<="):
+            bound = Interval(-math.inf, value.high, value.dimension)
+        else:
+            bound = Interval(value.low, math.inf, value.dimension)
+        self.hard[name] = self.hard[name].intersect(bound)
+        self.hard_sources.setdefault(name, []).append(constraint.location)
+
+    def value_for(self, parameter: model.Field, expression, allow_range: bool = True):
+        """A default or fixed value of the parameter's type, or None after reporting why not."""
+        if parameter.type in library.PHYSICAL_TYPES or parameter.type in library.NUMBER_TYPES:
+            try:
+                value = evaluate(expression, self.env)
+            except EvaluationError as error:
+                self.add_error(error.location, error.message, error.hint)
+                return None
+            dimension = library.PHYSICAL_TYPES.get(parameter.type)
+            if not isinstance(value, Interval) or value.dimension != dimension:
+                got = describe(value.dimension) if isinstance(value, Interval) else "a name"
+                self.add_error(expression.location, f"{parameter.name!r} is {_kind(parameter)} but this is {got}", "use a unit of the parameter's kind")
+                return None
+            if not value.is_point and not allow_range:
+                self.add_error(expression.location, "expected a single value, not a range")
+                return None
+            return value
+        if parameter.type == "bool":
+            if isinstance(expression, model.Literal) and isinstance(expression.value, bool):
+                return expression.value
+            self.add_error(expression.location, f"{parameter.name!r} is a bool: write true or false")
+            return None
+        if parameter.type == "string":
+            if isinstance(expression, model.Literal) and isinstance(expression.value, str):
+                return expression.value
+            self.add_error(expression.location, f"{parameter.name!r} is a string: write it in quotes")
+            return None
+        if isinstance(expression, model.Name):
+            if expression.enum is not None and expression.enum != parameter.type:
+                self.add_error(expression.location, f"{expression.enum}!{expression.name} is not a value of {parameter.type}")
+                return None
+            return expression.name
+        self.add_error(expression.location, f"{parameter.name!r} is a {parameter.type}: write one of its values")
+        return None
 
 
 def _conjuncts(expression: model.Expression):
@@ -203,136 +323,6 @@ def _conjuncts(expression: model.Expression):
         yield from _conjuncts(expression.right)
     else:
         yield expression
-
-
-def _subject(expression: model.Expression, constraint: model.Keep, by_name) -> str | None:
-    if isinstance(expression, model.Name) and expression.enum is None:
-        if expression.name == "it" and constraint.subject in by_name:
-            return constraint.subject
-        if expression.name in by_name:
-            return expression.name
-    return None
-
-
-def _apply_atom(atom, constraint, by_name, hard, hard_sources, overridden, defaults, choices, env, enums, result, add_error) -> None:
-    mentioned = {
-        (constraint.subject if n.name == "it" else n.name)
-        for n in names_in(atom)
-        if (n.name == "it" and constraint.subject in by_name) or n.name in by_name
-    }
-    for name in names_in(atom):
-        if name.enum is None and name.name not in by_name and not (name.name == "it" and constraint.subject in by_name):
-            if not any(name.name in members for members in enums.values()):
-                add_error(name.location, f"unknown name {name.name!r} in a constraint", "a keep() constrains parameters of this scenario")
-                return
-    if not mentioned:
-        add_error(constraint.location, "this constraint mentions no parameter", "a keep() constrains parameters of this scenario")
-        return
-    if isinstance(atom, model.Binary) and atom.operator in _BOUND_OPERATORS:
-        left, right = _subject(atom.left, constraint, by_name), _subject(atom.right, constraint, by_name)
-        operator = atom.operator
-        other = atom.right
-        name = left
-        if left is None and right is not None and operator != "in":
-            name, other, operator = right, atom.left, _MIRRORED[operator]
-        if name is not None and not (set(n.name for n in names_in(other)) & set(by_name)):
-            _bound(name, operator, other, atom, constraint, by_name, hard, hard_sources, overridden, defaults, choices, env, enums, add_error)
-            return
-    # A relation between parameters (or a form with or/not/=>): checked on samples.
-    if constraint.strength == "default":
-        add_error(constraint.location, "not supported: a default constraint relating several parameters", "make it a hard keep()")
-        return
-    try:
-        evaluate(atom, env)
-    except EvaluationError as error:
-        add_error(error.location, error.message, error.hint)
-        return
-    result.relations.append(model.Keep(atom, constraint.strength, constraint.location, constraint.subject))
-
-
-def _bound(name, operator, other, atom, constraint, by_name, hard, hard_sources, overridden, defaults, choices, env, enums, add_error) -> None:
-    parameter = by_name[name]
-    if constraint.strength == "default":
-        if operator not in ("==", "in"):
-            add_error(constraint.location, "not supported: a default constraint other than == or in")
-            return
-        value = _value_for(parameter, other, env, enums, add_error, allow_range=operator == "in")
-        if value is not None:
-            defaults[name] = (value, constraint.location)
-        return
-    if operator in ("==", "in"):
-        overridden.add(name)
-    if name not in hard:
-        if operator != "==":
-            add_error(atom.location, f"{operator!r} does not apply to {parameter.type} parameter {name!r}")
-            return
-        value = _value_for(parameter, other, env, enums, add_error)
-        if value is not None:
-            options = choices[name]
-            if options and value not in options:
-                add_error(other.location, f"{value!r} is not a value of {parameter.type}", f"its values: {', '.join(map(str, options))}")
-            else:
-                choices[name] = (value,)
-        return
-    try:
-        value = evaluate(other, env)
-    except EvaluationError as error:
-        add_error(error.location, error.message, error.hint)
-        return
-    if not isinstance(value, Interval):
-        add_error(other.location, f"expected {describe(hard[name].dimension)} for {name!r}")
-        return
-    if value.dimension != hard[name].dimension:
-        add_error(
-            other.location,
-            f"{name!r} is {_kind(parameter)} but this is {describe(value.dimension)}",
-            "use a unit of the parameter's kind",
-        )
-        return
-    if operator in ("==", "in"):
-        bound = value
-    elif operator in ("<", "<="):
-        bound = Interval(-math.inf, value.high, value.dimension)
-    else:
-        bound = Interval(value.low, math.inf, value.dimension)
-    hard[name] = hard[name].intersect(bound)
-    hard_sources.setdefault(name, []).append(constraint.location)
-
-
-def _value_for(parameter: model.Field, expression, env, enums, add_error, allow_range: bool = True):
-    """A default or fixed value of the parameter's type, or None after reporting why not."""
-    if parameter.type in library.PHYSICAL_TYPES or parameter.type in library.NUMBER_TYPES:
-        try:
-            value = evaluate(expression, env)
-        except EvaluationError as error:
-            add_error(error.location, error.message, error.hint)
-            return None
-        dimension = library.PHYSICAL_TYPES.get(parameter.type)
-        if not isinstance(value, Interval) or value.dimension != dimension:
-            got = describe(value.dimension) if isinstance(value, Interval) else "a name"
-            add_error(expression.location, f"{parameter.name!r} is {_kind(parameter)} but this is {got}", "use a unit of the parameter's kind")
-            return None
-        if not value.is_point and not allow_range:
-            add_error(expression.location, "expected a single value, not a range")
-            return None
-        return value
-    if parameter.type == "bool":
-        if isinstance(expression, model.Literal) and isinstance(expression.value, bool):
-            return expression.value
-        add_error(expression.location, f"{parameter.name!r} is a bool: write true or false")
-        return None
-    if parameter.type == "string":
-        if isinstance(expression, model.Literal) and isinstance(expression.value, str):
-            return expression.value
-        add_error(expression.location, f"{parameter.name!r} is a string: write it in quotes")
-        return None
-    if isinstance(expression, model.Name):
-        if expression.enum is not None and expression.enum != parameter.type:
-            add_error(expression.location, f"{expression.enum}!{expression.name} is not a value of {parameter.type}")
-            return None
-        return expression.name
-    add_error(expression.location, f"{parameter.name!r} is a {parameter.type}: write one of its values")
-    return None
 
 
 def _kind(parameter: model.Field) -> str:
