@@ -22,7 +22,7 @@ from ..frontend.errors import OscError, error_at
 from ..frontend.parameters import ParameterSpace, parameter_space
 from .guards import TRUE, Guard, conjunction
 from .model import Location, SymbolicAutomaton, Timing, Transition
-from .modifiers import check_behavior_arguments, condition_guard, duration_interval, phase_guards
+from .modifiers import Variant, check_behavior_arguments, condition_guard, duration_interval, phase_guards
 
 DEFAULT_LANES = 3
 
@@ -124,8 +124,6 @@ class _Builder:
 
     def wait(self, wait: model.Wait) -> _Fragment:
         """A phase in which nothing is asked of anyone: it lasts the given time, or until the condition."""
-        uid = next(self.counter)
-        i, s, f = ("i", uid), ("s", uid), ("f", uid)
         name = wait.label or "wait"
         condition = wait.condition
         end: Guard = TRUE
@@ -136,12 +134,7 @@ class _Builder:
             raise error_at(wait.location, "not supported yet by the automaton: wait @event", hint="wait elapsed(t) or wait on a condition")
         else:
             end = condition_guard(condition, self.env)
-        fragment = _Fragment(
-            initial=i, final=f,
-            edges=[_Edge(i, TRUE, (f"{name} start",), s), _Edge(s, end, (f"{name} end",), f)],
-            names={s: (name, wait.label is not None)},
-            drivers={s: frozenset()},
-        )
+        fragment = _phase(next(self.counter), name, wait.label is not None, Variant(end=end), frozenset())
         if timed is not None:
             fragment = self.timed(fragment, name, timed[0], timed[1], wait.location)
         return fragment
@@ -167,26 +160,26 @@ def _phase_name(behavior: model.Behavior) -> str:
 def _atomic(invocation: model.Invocation, scenario: model.Scenario, lanes: int, counter, env: dict) -> _Fragment:
     phase = phase_guards(invocation, scenario, lanes, env)
     labelled = invocation.label is not None
-    name = invocation.label if labelled else f"{invocation.actor}.{invocation.action}"
+    name = invocation.label if labelled else _phase_name(invocation)
     drivers = frozenset([invocation.actor]) if phase.drives else frozenset()
-    fragments = []
-    for variant in phase.variants:
-        uid = next(counter)
-        i, s, f = ("i", uid), ("s", uid), ("f", uid)
-        # An invariant holds throughout the phase, its first and last instants included.
-        start = conjunction([variant.start, variant.invariant])
-        end = conjunction([variant.end, variant.invariant])
-        fragments.append(
-            _Fragment(
-                initial=i,
-                final=f,
-                edges=[_Edge(i, start, (f"{name} start",), s), _Edge(s, end, (f"{name} end",), f)],
-                names={s: (name, labelled)},
-                drivers={s: drivers},
-                invariants={s: variant.invariant} if not variant.invariant.is_true else {},
-            )
-        )
+    fragments = [_phase(next(counter), name, labelled, variant, drivers) for variant in phase.variants]
     return fragments[0] if len(fragments) == 1 else _one_of(fragments, next(counter))
+
+
+def _phase(uid: int, name: str, labelled: bool, variant: Variant, drivers: frozenset[str]) -> _Fragment:
+    """``init --start--> phase --end--> fin`` for one phase (of an action, or a wait)."""
+    i, s, f = ("i", uid), ("s", uid), ("f", uid)
+    # An invariant holds throughout the phase, its first and last instants included.
+    start = conjunction([variant.start, variant.invariant])
+    end = conjunction([variant.end, variant.invariant])
+    return _Fragment(
+        initial=i,
+        final=f,
+        edges=[_Edge(i, start, (f"{name} start",), s), _Edge(s, end, (f"{name} end",), f)],
+        names={s: (name, labelled)},
+        drivers={s: drivers},
+        invariants={s: variant.invariant} if not variant.invariant.is_true else {},
+    )
 
 
 def _serial(first: _Fragment, second: _Fragment) -> _Fragment:
