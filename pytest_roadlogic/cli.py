@@ -28,40 +28,38 @@ EXIT_ACCEPTED, EXIT_REJECTED, EXIT_INPUT = 0, 1, 2
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(prog="roadlogic", description="Concrete, monitored simulations from OpenSCENARIO DSL scenarios.")
     commands = parser.add_subparsers(dest="command", required=True)
-    run = commands.add_parser("run", help="plan, simulate and monitor one scenario; write the artifacts")
-    run.add_argument("file", type=Path, help="an .osc file")
-    run.add_argument("--scenario", help="the scenario to run when the file declares several (default: the first)")
+    run = _scenario_command(commands, "run", "plan, simulate and monitor one scenario; write the artifacts")
     run.add_argument("--seed", type=int, default=1, help="fixes planning and simulation (default 1)")
     run.add_argument("--out", type=Path, default=Path("out"), help="artifact directory (default out/)")
-    run.add_argument("--lanes", type=int, default=3, help="lanes of the road (default 3)")
     run.add_argument("--tries", type=int, default=5, help="plans to try when the monitor rejects (default 5)")
     check = commands.add_parser("check", help="parse and check .osc files and folders; print every problem")
     check.add_argument("paths", type=Path, nargs="+", help=".osc files or folders (searched recursively)")
     check.add_argument("--syntax-only", action="store_true", help="stop after parsing (for files written for other tools)")
     check.add_argument("--lanes", type=int, default=3, help="lanes of the road, for lane numbers (default 3)")
-    automaton = commands.add_parser("automaton", help="write a scenario's symbolic automaton as Graphviz DOT (and PNG when dot is installed)")
-    automaton.add_argument("file", type=Path, help="an .osc file")
-    automaton.add_argument("--scenario", help="the scenario when the file declares several (default: the first)")
+    automaton = _scenario_command(commands, "automaton", "write a scenario's symbolic automaton as Graphviz DOT (and PNG when dot is installed)")
     automaton.add_argument("--out", type=Path, default=None, help="the DOT file to write (default: <scenario>.dot)")
-    automaton.add_argument("--lanes", type=int, default=3, help="lanes of the road (default 3)")
-    plan = commands.add_parser("plan", help="solve a scenario's planning problem and print the plans as tables")
-    plan.add_argument("file", type=Path, help="an .osc file")
-    plan.add_argument("--scenario", help="the scenario when the file declares several (default: the first)")
+    plan = _scenario_command(commands, "plan", "solve a scenario's planning problem and print the plans as tables")
     plan.add_argument("--plans", type=int, default=1, help="how many plans to enumerate (default 1)")
     plan.add_argument("--seed", type=int, default=1, help="fixes the plans found (default 1)")
-    plan.add_argument("--lanes", type=int, default=3, help="lanes of the road (default 3)")
     plan.add_argument("--show-asp", action="store_true", help="also print the generated instance program")
     args = parser.parse_args(argv)
     return {"run": _run, "check": _check, "automaton": _automaton, "plan": _plan}[args.command](args)
 
 
+def _scenario_command(commands, name: str, help: str) -> argparse.ArgumentParser:
+    """A subcommand about one scenario of one file, on a road of some lanes."""
+    command = commands.add_parser(name, help=help)
+    command.add_argument("file", type=Path, help="an .osc file")
+    command.add_argument("--scenario", help="the scenario when the file declares several (default: the first)")
+    command.add_argument("--lanes", type=int, default=3, help="lanes of the road (default 3)")
+    return command
+
+
 def _plan(args: argparse.Namespace) -> int:
-    from .automaton import build_automaton
     from .planning import Planner
 
     def solve():
-        scenario = _load(args)
-        automaton = build_automaton(scenario, args.lanes)
+        scenario, automaton = _load_automaton(args)
         planner = Planner(automaton, PlanningSettings(lanes=args.lanes), args.seed)
         if args.show_asp:
             print(planner.instance_program())
@@ -84,14 +82,9 @@ def _plan(args: argparse.Namespace) -> int:
 
 
 def _automaton(args: argparse.Namespace) -> int:
-    from .automaton import build_automaton
     from .automaton.dot import write_dot
 
-    def build():
-        scenario = _load(args)
-        return scenario, build_automaton(scenario, args.lanes)
-
-    loaded = _reporting_input_errors(args, build)
+    loaded = _reporting_input_errors(args, lambda: _load_automaton(args))
     if isinstance(loaded, int):
         return loaded
     scenario, automaton = loaded
@@ -164,6 +157,13 @@ def _load(args: argparse.Namespace):
     from .pipeline import load_scenario
 
     return load_scenario(args.file, args.scenario, args.lanes)
+
+
+def _load_automaton(args: argparse.Namespace):
+    from .automaton import build_automaton
+
+    scenario = _load(args)
+    return scenario, build_automaton(scenario, args.lanes)
 
 
 def _reporting_input_errors(args: argparse.Namespace, action):
