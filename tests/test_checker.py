@@ -48,6 +48,8 @@ CASES = [
      '4:5: error: not supported: cover()'),
     ('record', HEAD + "    record(a)\n",
      '4:5: error: not supported: record()'),
+    ('cover_in_actor_declaration', "actor robot inherits car:\n    cover(speed)\n" + HEAD,
+     '2:5: error: not supported: cover()'),
     ('namespace', "namespace mine\n" + HEAD,
      '1:1: error: not supported: namespace'),
     ('export', "export s\n" + HEAD,

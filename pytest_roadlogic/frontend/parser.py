@@ -148,7 +148,9 @@ class _Builder:
                 if isinstance(decl, P.ScenarioDeclarationContext):
                     scenarios.append(self.scenario(decl))
                 elif isinstance(decl, (P.ActorDeclarationContext, P.StructDeclarationContext)):
-                    types.append(self.type_declaration(decl))
+                    declaration, refused = self.type_declaration(decl)
+                    types.append(declaration)
+                    unsupported.extend(refused)
                 elif isinstance(decl, P.EnumDeclarationContext):
                     enums.append(
                         model.EnumDeclaration(
@@ -254,20 +256,13 @@ class _Builder:
             path=self.path,
         )
 
-    def type_declaration(self, ctx) -> model.TypeDeclaration:
-        fields: list[model.Field] = []
-        constraints: list = []
-        for member in ctx.structMember():
-            item = member.getChild(0)
-            if isinstance(item, P.FieldDeclarationContext):
-                fields.extend(self.fields(item))
-            elif isinstance(item, P.KeepConstraintContext):
-                constraints.append(self.keep(item))
-            elif isinstance(item, P.RemoveDefaultContext):
-                constraints.append(self.remove_default(item))
+    def type_declaration(self, ctx) -> tuple[model.TypeDeclaration, tuple[model.Unsupported, ...]]:
+        """An actor or struct declaration, and the constructs in it that the checker must refuse."""
+        name = self.name(ctx.identifier())
+        body = self.scenario_body(name, None, self.loc(ctx.identifier()), ctx.structMember(), "type")
         parent = self.name(ctx.inheritance().parent.name) if ctx.inheritance() is not None else None
         kind = "actor" if isinstance(ctx, P.ActorDeclarationContext) else "struct"
-        return model.TypeDeclaration(kind, self.name(ctx.identifier()), parent, tuple(fields), tuple(constraints), self.loc(ctx.identifier()))
+        return model.TypeDeclaration(kind, name, parent, body.fields, body.constraints, body.location), body.unsupported
 
     def fields(self, ctx: P.FieldDeclarationContext) -> list[model.Field]:
         declarator = ctx.typeDeclarator()
