@@ -187,35 +187,31 @@ def _combine(left: str | None, right: str | None, sign: int, expression: model.B
     return _DIMENSIONS[exponents]
 
 
+def subexpressions(expression: model.Expression | None):
+    """The expression and everything inside it, parents before children, left before right."""
+    if expression is None:
+        return
+    yield expression
+    if isinstance(expression, model.Unary):
+        yield from subexpressions(expression.operand)
+    elif isinstance(expression, model.Binary):
+        yield from subexpressions(expression.left)
+        yield from subexpressions(expression.right)
+    elif isinstance(expression, model.Call):
+        for argument in expression.arguments:
+            yield from subexpressions(argument.value)
+    elif isinstance(expression, model.ListValue):
+        for item in expression.items:
+            yield from subexpressions(item)
+
+
 def names_in(expression: model.Expression | None) -> list[model.Name]:
     """Every name an expression mentions (to find the parameters a constraint is about)."""
-    if expression is None:
-        return []
-    if isinstance(expression, model.Name):
-        return [expression]
-    if isinstance(expression, model.Unary):
-        return names_in(expression.operand)
-    if isinstance(expression, model.Binary):
-        return names_in(expression.left) + names_in(expression.right)
-    if isinstance(expression, model.Call):
-        return [n for a in expression.arguments for n in names_in(a.value)]
-    if isinstance(expression, model.ListValue):
-        return [n for item in expression.items for n in names_in(item)]
-    return []
+    return [e for e in subexpressions(expression) if isinstance(e, model.Name)]
 
 
 def calls_in(expression: model.Expression | None) -> list[model.Call]:
-    if expression is None:
-        return []
-    if isinstance(expression, model.Call):
-        return [expression, *(c for a in expression.arguments for c in calls_in(a.value))]
-    if isinstance(expression, model.Unary):
-        return calls_in(expression.operand)
-    if isinstance(expression, model.Binary):
-        return calls_in(expression.left) + calls_in(expression.right)
-    if isinstance(expression, model.ListValue):
-        return [c for item in expression.items for c in calls_in(item)]
-    return []
+    return [e for e in subexpressions(expression) if isinstance(e, model.Call)]
 
 
 def to_expression(value: Interval, location: SourceLocation) -> model.Quantity | model.Range:
