@@ -249,12 +249,9 @@ def contradiction(guard: Guard) -> tuple[Bound, Bound] | None:
     for bound in parts:
         key, low, high = _normalised(bound)
         by_term.setdefault(key, []).append((bound, low, high))
-    for key, bounds in by_term.items():
-        slack = 0.5 if key[0] == LANE else 0.0
+    for bounds in by_term.values():
         for i, (a, a_low, a_high) in enumerate(bounds):
             for b, b_low, b_high in bounds[i + 1 :]:
-                if max(a_low, b_low) > min(a_high, b_high) + (1e-9 if key[0] != LANE else 0.0) and not (
-                    key[0] == LANE and max(a_low, b_low) - min(a_high, b_high) < slack
-                ):
+                if max(a_low, b_low) > min(a_high, b_high) + 1e-9:
                     return a, b
     return None

@@ -20,6 +20,7 @@ from pathlib import Path
 
 import clingo
 
+from ..automaton.guards import contradiction
 from ..automaton.model import SymbolicAutomaton
 from .instance import PlanningSettings, build_instance
 from .plan import Plan, PlanState
@@ -57,8 +58,6 @@ class UnsatisfiableScenario(NoPlanError):
 
 def check_satisfiable(automaton: SymbolicAutomaton) -> None:
     """Raise ``UnsatisfiableScenario`` when every path to the end crosses a self-contradicting guard."""
-    from ..automaton.guards import contradiction
-
     blocked = {}
     for transition in automaton.transitions:
         pair = contradiction(transition.guard)
