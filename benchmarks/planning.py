@@ -11,6 +11,7 @@ cell; lower is more diverse). Targets: first plan under 0.2 s; similarity under 
 from __future__ import annotations
 
 import argparse
+import dataclasses
 import itertools
 import statistics
 import time
@@ -43,9 +44,14 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--plans", type=int, default=10)
     parser.add_argument("--repeats", type=int, default=5)
     parser.add_argument("--max-speed", type=float, default=None)
+    parser.add_argument("--initial-speed", type=float, nargs=2, default=None, metavar=("LOW", "HIGH"))
     parser.add_argument("paths", nargs="*", type=Path)
     args = parser.parse_args(argv)
-    settings = PlanningSettings() if args.max_speed is None else PlanningSettings(max_speed=args.max_speed)
+    settings = PlanningSettings()
+    if args.max_speed is not None:
+        settings = dataclasses.replace(settings, max_speed=args.max_speed)
+    if args.initial_speed is not None:
+        settings = dataclasses.replace(settings, initial_speed=tuple(args.initial_speed))
     paths = args.paths or sorted((ROOT / "scenarios").glob("*.osc"))
     print(f"max speed {settings.max_speed:g} m/s, grid {settings.grid:g} m, step {settings.dt:g} s; first plan: median of {args.repeats} seeds")
     print(f"{'scenario':24} {'horizon':>7} {'ground s':>8} {'solve s':>8} {'rules':>8} {'first s':>8} {f'{args.plans} plans s':>10} {'jaccard':>8} {'distinct':>8}")

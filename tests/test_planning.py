@@ -104,7 +104,33 @@ def test_the_same_seed_gives_the_same_plan(overtake_automaton):
 def test_instance_program_lists_the_automaton_and_its_guards(overtake_automaton):
     program = Planner(overtake_automaton).instance_program()
     assert "transition(0,0,1)." in program
-    assert "pos(v1,S,t), pos(v2,S-D,t)" in program
+    # v1 starts 10-20 m behind v2, planned 1.5 m inside the range: a difference constraint per side
+    assert "&diff{ p(v2,t) - p(v1,t) } <= 18 :- g(1,t)." in program
+    assert "&diff{ p(v1,t) - p(v2,t) } <= -12 :- g(1,t)." in program
+
+
+@pytest.mark.parametrize("seed", range(1, 6))
+@pytest.mark.parametrize("quantity, low, high, margin", [("position", 0.0, 30.0, 1.5), ("speed", -3.0, 3.0, 0.5)])
+def test_a_negated_guard_puts_the_value_outside_the_range_with_a_margin(seed, quantity, low, high, margin):
+    """``not (a within [low, high] of b)``: positions are solver variables, not atoms, and bounds
+    are planned with a margin inside; the negation must force the value out of the range, with
+    the margin outside it, not merely leave the range unenforced."""
+    from pytest_roadlogic.automaton.guards import Bound, Not, Term
+    from pytest_roadlogic.automaton.model import Location, SymbolicAutomaton, Transition
+
+    near = Bound(Term(quantity, "a", "b"), low, high)
+    automaton = SymbolicAutomaton(
+        locations=[Location(0, "init"), Location(1, "end")],
+        transitions=[Transition(0, 0, 1, Not(near))],
+        initial=0,
+        final=1,
+        actors=("a", "b"),
+    )
+    plan = Planner(automaton, seed=seed).first()
+    check_plan(plan, automaton)
+    step = plan.transitions[0][0]
+    difference = getattr(plan.at("a", step), quantity) - getattr(plan.at("b", step), quantity)
+    assert not low - margin <= difference <= high + margin, f"a - b = {difference}: the negated range is not kept clear"
 
 
 def test_an_impossible_scenario_has_no_plan():

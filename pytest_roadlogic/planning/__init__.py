@@ -2,9 +2,9 @@
 
 from .instance import PlanningSettings, build_instance
 from .plan import Plan, PlanState
-from .solver import NoPlanError, Planner, UnsatisfiableScenario, background_theory, check_satisfiable
+from .solver import NoPlanError, Planner, PlanningTimeout, UnsatisfiableScenario, background_theory, check_satisfiable
 
 __all__ = [
-    "NoPlanError", "Plan", "PlanState", "Planner", "PlanningSettings", "UnsatisfiableScenario", "background_theory",
+    "NoPlanError", "Plan", "PlanState", "Planner", "PlanningSettings", "PlanningTimeout", "UnsatisfiableScenario", "background_theory",
     "build_instance", "check_satisfiable",
 ]

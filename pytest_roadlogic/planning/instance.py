@@ -22,12 +22,19 @@ class PlanningSettings:
     grid: float = 1.0  # metres per cell
     lanes: int = 3
     min_speed: float = 2.0  # m/s; positive, so that no vehicle stops (domain rule 1)
-    max_speed: float = 20.0  # m/s
-    initial_speed: tuple[float, float] = (8.0, 14.0)  # m/s, the speeds the plan may start with
+    max_speed: float = 40.0  # m/s
+    # m/s the plan starts with: a moderate start keeps the run-up short and the plan easy for a
+    # motion planner to track; a scenario that cannot start so is planned with any allowed start
+    # speed instead (widen_initial_speed)
+    initial_speed: tuple[float, float] = (8.0, 14.0)
+    widen_initial_speed: bool = True
     accelerations: tuple[float, ...] = (-2.0, 0.0, 2.0)  # m/s^2, applied for a whole step
     min_gap: float = 8.0  # m between the centres of two vehicles sharing a lane
     lane_change_gap: int = 3  # steps from one lane change of a vehicle to its next
     initial_spread: float = 60.0  # m; other vehicles start within this distance of the first
+    # m; start positions are chosen as a zone of this width (an atom the search can vary and a
+    # plan be excluded by), the cell within it by the difference-logic solver
+    start_zone: float = 5.0
     position_margin: float = 1.5  # m planned inside each side of a position range, when it fits
     speed_margin: float = 0.5  # m/s likewise for speed ranges
     runup_acceleration: float = 2.0  # m/s^2 with which every vehicle leaves standstill
@@ -40,14 +47,18 @@ class PlanningSettings:
     def speeds(self) -> range:
         return range(math.ceil(self.cells_per_step(self.min_speed)), math.floor(self.cells_per_step(self.max_speed)) + 1)
 
-    @property
-    def runup(self) -> float:
-        """Seconds from standstill to the scenario's start: the fastest start speed at the run-up rate."""
-        return self.initial_speed[1] / self.runup_acceleration
+    def initial_speeds(self) -> range:
+        """The start speeds in cells per step."""
+        low, high = self.initial_speed
+        return range(max(math.ceil(self.cells_per_step(low) - 1e-9), self.speeds()[0]), min(math.floor(self.cells_per_step(high) + 1e-9), self.speeds()[-1]) + 1)
 
-    def runup_distance(self, speed: float) -> float:
-        """Metres a vehicle covers in the run-up: it accelerates to ``speed``, then cruises."""
-        return speed * self.runup - speed**2 / (2 * self.runup_acceleration)
+    def runup_steps(self, cells_per_step: int) -> int:
+        """Steps a vehicle needs from standstill to ``cells_per_step`` at the run-up rate."""
+        return math.ceil(cells_per_step * self.grid / self.dt / self.runup_acceleration / self.dt - 1e-9)
+
+    def runup_distance(self, speed: float, duration: float) -> float:
+        """Metres a vehicle covers in a run-up of ``duration`` s: it accelerates to ``speed``, then cruises."""
+        return speed * duration - speed**2 / (2 * self.runup_acceleration)
 
     def acceleration_cells(self) -> list[int]:
         cells = []
@@ -75,16 +86,36 @@ def guard_nodes(automaton: SymbolicAutomaton) -> tuple[dict[int, int], dict[Guar
         numbering[guard] = len(numbering)
         return numbering[guard]
 
-    transitions = {t.id: visit(t.guard) for t in automaton.transitions}
+    transitions = {t.id: visit(negation_normal(t.guard)) for t in automaton.transitions}
     for location in automaton.locations:
         if not location.invariant.is_true:
-            visit(location.invariant)
+            visit(negation_normal(location.invariant))
     return transitions, numbering
 
 
 def invariant_nodes(automaton: SymbolicAutomaton, numbering: dict[Guard, int]) -> dict[int, int]:
     """location id -> guard node of its invariant, for locations that have one."""
-    return {loc.id: numbering[loc.invariant] for loc in automaton.locations if not loc.invariant.is_true}
+    return {loc.id: numbering[negation_normal(loc.invariant)] for loc in automaton.locations if not loc.invariant.is_true}
+
+
+def negation_normal(guard: Guard) -> Guard:
+    """The guard with every ``not`` pushed down onto a bound.
+
+    A bound is planned with a margin inside its range; its negation must be planned with the
+    margin outside, which only a negation that sits directly on the bound can know.
+    """
+    if isinstance(guard, Not):
+        part = guard.part
+        if isinstance(part, Not):
+            return negation_normal(part.part)
+        if isinstance(part, And):
+            return Or(tuple(negation_normal(Not(p)) for p in part.parts))
+        if isinstance(part, Or):
+            return And(tuple(negation_normal(Not(p)) for p in part.parts))
+        return guard
+    if isinstance(guard, (And, Or)):
+        return type(guard)(tuple(negation_normal(p) for p in guard.parts))
+    return guard
 
 
 def _children(guard: Guard) -> tuple[Guard, ...]:
@@ -101,17 +132,12 @@ def build_instance(automaton: SymbolicAutomaton, settings: PlanningSettings) -> 
     if not speeds or speeds[0] < 1:
         raise ValueError("the speed bounds leave no positive speed on the grid")
     accels = settings.acceleration_cells()
-    v_lo = math.ceil(settings.cells_per_step(settings.initial_speed[0]))
-    v_hi = math.floor(settings.cells_per_step(settings.initial_speed[1]))
-    spread = math.ceil(settings.initial_spread / settings.grid)
+    starts = settings.initial_speeds()
+    if not starts:
+        raise ValueError("the initial speed range leaves no allowed speed on the grid")
+    width = max(1, round(settings.start_zone / settings.grid))
+    zones = math.ceil(settings.initial_spread / settings.grid / width)
     gap = math.ceil(settings.min_gap / settings.grid)
-    runup_spread = math.ceil(
-        (settings.runup_distance(v_hi * settings.grid / settings.dt) - settings.runup_distance(v_lo * settings.grid / settings.dt)) / settings.grid
-    )
-    # how far apart two vehicles can be and still collide or swap within one step; at step 0 also
-    # within the run-up from standstill, whose spread grows with the square of the start speed
-    reach = (speeds[-1] - speeds[0]) + max(abs(a) for a in accels) + gap
-    reach0 = max(reach, runup_spread + gap)
     vehicles = automaton.actors
     base = [
         "% scenario instance (generated)",
@@ -123,18 +149,23 @@ def build_instance(automaton: SymbolicAutomaton, settings: PlanningSettings) -> 
         "lateral(-1;0;1).",
         f"lane_change_gap({settings.lane_change_gap}).",
         f"min_gap({gap}).",
-        f"reach({reach}).",
-        f"reach0({reach0}).",
         "",
-        "% initial state: the first vehicle at cell 0, the others within the spread",
-        f"pos({_atom(vehicles[0])},0,0).",
-        *(f"{{ pos({_atom(v)},S,0) : S = -{spread}..{spread} }} = 1." for v in vehicles[1:]),
+        "% initial state: the first vehicle at cell 0 (positions are relative to it), the others in a",
+        "% zone within the spread",
+        f"zone_width({width}).",
+        f"&diff{{ p({_atom(vehicles[0])},0) - 0 }} = 0.",
+        f"{{ zone(V,Z) : Z = {-zones}..{zones} }} = 1 :- vehicle(V), V != {_atom(vehicles[0])}.",
+        "&diff{ p(V,0) - 0 } <= Z*W+W-1 :- zone(V,Z), zone_width(W).",
+        "&diff{ 0 - p(V,0) } <= -Z*W :- zone(V,Z), zone_width(W).",
         "{ lane(V,L,0) : lane_id(L) } = 1 :- vehicle(V).",
-        f"{{ vel(V,X,0) : X = {v_lo}..{v_hi}, speed(X) }} = 1 :- vehicle(V), not stationary(V).",
+        f"{{ vel(V,X,0) : X = {starts[0]}..{starts[-1]} }} = 1 :- vehicle(V), not stationary(V).",
         "vel(V,0,0) :- stationary(V).",
-        "% cells covered in the run-up from standstill by a vehicle starting the scenario at speed X",
-        *(_runup_fact(x, settings) for x in range(v_lo, v_hi + 1)),
-        "runup(0,0,0).  % a stationary object has no run-up",
+        "% the run-up from standstill: runup_steps(X,S), the steps to reach speed X; runup(X,T,Lo,Hi),",
+        "% the cells covered when the run-up lasts T steps (bounds of the exact distance)",
+        *(f"runup_steps({x},{settings.runup_steps(x)})." for x in starts),
+        *(_runup_fact(x, duration, settings) for x in starts for duration in range(settings.runup_steps(x), settings.runup_steps(starts[-1]) + 1)),
+        "runup_steps(0,0).",
+        f"runup(0,0..{settings.runup_steps(starts[-1])},0,0).  % a stationary object has no run-up",
         "",
         "% the automaton",
         *(f"location({loc.id}).  % {loc.name}" for loc in automaton.locations),
@@ -161,9 +192,9 @@ def build_instance(automaton: SymbolicAutomaton, settings: PlanningSettings) -> 
     return "\n".join(base) + "\n", "\n".join(state) + "\n"
 
 
-def _runup_fact(cells_per_step: int, settings: PlanningSettings) -> str:
-    metres = settings.runup_distance(cells_per_step * settings.grid / settings.dt)
-    return f"runup({cells_per_step},{math.floor(metres / settings.grid)},{math.ceil(metres / settings.grid)})."
+def _runup_fact(cells_per_step: int, steps: int, settings: PlanningSettings) -> str:
+    metres = settings.runup_distance(cells_per_step * settings.grid / settings.dt, steps * settings.dt)
+    return f"runup({cells_per_step},{steps},{math.floor(metres / settings.grid + 1e-9)},{math.ceil(metres / settings.grid - 1e-9)})."
 
 
 def _atom(name: str) -> str:
@@ -179,43 +210,103 @@ def _guard_rules(node: int, guard: Guard, numbering: dict[Guard, int], settings:
         return [f"{head} :- " + ", ".join(f"g({numbering[p]},t)" for p in guard.parts) + "."]
     if isinstance(guard, Or):
         return [f"{head} :- g({numbering[p]},t)." for p in guard.parts]
-    if isinstance(guard, Not):
-        return [f"{head} :- not g({numbering[guard.part]},t)."]
+    if isinstance(guard, Not):  # on a bound (negation normal form): outside the range, with a margin
+        assert isinstance(guard.part, Bound)
+        return _outside_rules(node, guard.part, settings)
     assert isinstance(guard, Bound)
+    if guard.term.quantity == POSITION:
+        return _position_rules(node, guard, settings)
     return _bound_rule(head, guard, settings)
 
 
-def _bound_rule(head: str, bound: Bound, settings: PlanningSettings) -> list[str]:
-    term = bound.term
-    low, high = bound.low, bound.high
-    if term.quantity == POSITION:
-        low, high = _inset(low, high, settings.position_margin)
-        scale = settings.grid
-        fluent = "pos"
-    elif term.quantity == SPEED:
-        low, high = _inset(low, high, settings.speed_margin)
-        scale = settings.grid / settings.dt
-        fluent = "vel"
-    else:
-        scale = 1.0
-        fluent = "lane"
+def _margin_and_scale(bound: Bound, settings: PlanningSettings) -> tuple[float, float, str]:
+    """(margin, metres or m/s per grid unit, fluent) of a bound's quantity."""
+    quantity = bound.term.quantity
+    if quantity == POSITION:
+        return settings.position_margin, settings.grid, "pos"
+    if quantity == SPEED:
+        return settings.speed_margin, settings.grid / settings.dt, "vel"
+    return 0.0, 1.0, "lane"
+
+
+def _grid_range(low: float, high: float, scale: float) -> tuple[float, float]:
+    """The whole grid units within [low, high] (infinite sides stay infinite)."""
     lo = -math.inf if low == -math.inf else math.ceil(low / scale - 1e-9)
     hi = math.inf if high == math.inf else math.floor(high / scale + 1e-9)
+    return lo, hi
+
+
+def _position_rules(node: int, bound: Bound, settings: PlanningSettings) -> list[str]:
+    """A position bound as difference constraints on the position variables.
+
+    Positions are not atoms, so the guard cannot be derived from them: the solver chooses
+    ``g(N,t)`` and its truth imposes the bound. Guards are only used positively (negations sit on
+    bounds, ``_outside_rules``), so a false ``g`` needs no meaning.
+    """
+    lo, hi = _grid_range(*_inset(bound.low, bound.high, settings.position_margin), settings.grid)
+    head = f"g({node},t)"
     if lo > hi:
         return [f"% {head} cannot hold on this grid"]
-    a = _atom(term.actor)
-    if term.reference is None:
-        conditions = [f"{fluent}({a},X,t)"]
-        conditions += [f"X >= {lo}"] if lo != -math.inf else []
-        conditions += [f"X <= {hi}"] if hi != math.inf else []
-        return [f"{head} :- " + ", ".join(conditions) + "."]
-    b = _atom(term.reference)
-    if term.quantity == POSITION and lo != -math.inf and hi != math.inf:
-        # direct look-up of the other vehicle's cell: no join over all position pairs
-        return [f"{head} :- pos({a},S,t), pos({b},S-D,t), D = {lo}..{hi}."]
-    conditions = [f"{fluent}({a},X,t)", f"{fluent}({b},Y,t)"]
-    conditions += [f"X-Y >= {lo}"] if lo != -math.inf else []
-    conditions += [f"X-Y <= {hi}"] if hi != math.inf else []
+    a, b = _position_terms(bound)
+    rules = [f"{{ {head} }}."]
+    if hi != math.inf:
+        rules.append(f"&diff{{ {a} - {b} }} <= {hi} :- {head}.")
+    if lo != -math.inf:
+        rules.append(f"&diff{{ {b} - {a} }} <= {-lo} :- {head}.")
+    return rules
+
+
+def _position_terms(bound: Bound) -> tuple[str, str]:
+    term = bound.term
+    return f"p({_atom(term.actor)},t)", "0" if term.reference is None else f"p({_atom(term.reference)},t)"
+
+
+def _outside_rules(node: int, bound: Bound, settings: PlanningSettings) -> list[str]:
+    """``not bound``: the value below or above the range, planned with the margin outside it."""
+    margin, scale, fluent = _margin_and_scale(bound, settings)
+    head = f"g({node},t)"
+    # the largest grid value below low - margin and the smallest above high + margin
+    below = None if bound.low == -math.inf else math.ceil((bound.low - margin) / scale - 1e-9) - 1
+    above = None if bound.high == math.inf else math.floor((bound.high + margin) / scale + 1e-9) + 1
+    if below is None and above is None:
+        return [f"% {head} never holds"]
+    if fluent == "pos":
+        a, b = _position_terms(bound)
+        sides = [f"below({node},t)"] * (below is not None) + [f"above({node},t)"] * (above is not None)
+        rules = [f"{{ {'; '.join(sides)} }} = 1 :- {head}.", f"{{ {head} }}."]
+        if below is not None:
+            rules.append(f"&diff{{ {a} - {b} }} <= {below} :- below({node},t).")
+        if above is not None:
+            rules.append(f"&diff{{ {b} - {a} }} <= {-above} :- above({node},t).")
+        return rules
+    term = bound.term
+    values = [f"{fluent}({_atom(term.actor)},X,t)"]
+    value = "X"
+    if term.reference is not None:
+        values.append(f"{fluent}({_atom(term.reference)},Y,t)")
+        value = "X-Y"
+    rules = []
+    if below is not None:
+        rules.append(f"{head} :- " + ", ".join(values + [f"{value} <= {below}"]) + ".")
+    if above is not None:
+        rules.append(f"{head} :- " + ", ".join(values + [f"{value} >= {above}"]) + ".")
+    return rules
+
+
+def _bound_rule(head: str, bound: Bound, settings: PlanningSettings) -> list[str]:
+    """A speed or lane bound, derived from the vel/lane atoms (speeds with a margin inside)."""
+    margin, scale, fluent = _margin_and_scale(bound, settings)
+    lo, hi = _grid_range(*_inset(bound.low, bound.high, margin), scale)
+    if lo > hi:
+        return [f"% {head} cannot hold on this grid"]
+    term = bound.term
+    conditions = [f"{fluent}({_atom(term.actor)},X,t)"]
+    value = "X"
+    if term.reference is not None:
+        conditions.append(f"{fluent}({_atom(term.reference)},Y,t)")
+        value = "X-Y"
+    conditions += [f"{value} >= {lo}"] if lo != -math.inf else []
+    conditions += [f"{value} <= {hi}"] if hi != math.inf else []
     return [f"{head} :- " + ", ".join(conditions) + "."]
 
 

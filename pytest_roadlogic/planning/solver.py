@@ -14,11 +14,14 @@ different seeds give different plans.
 
 from __future__ import annotations
 
+import dataclasses
 import time
 from collections.abc import Iterator
 from pathlib import Path
 
 import clingo
+from clingo.ast import ProgramBuilder, parse_string
+from clingodl import ClingoDLTheory
 
 from ..automaton.guards import contradiction
 from ..automaton.model import SymbolicAutomaton
@@ -33,6 +36,12 @@ BACKGROUND = ("dynamics.lp", "domain.lp", "automaton.lp")
 
 class NoPlanError(Exception):
     """No plan exists up to the horizon limit, or none was found within the time limit."""
+
+
+class PlanningTimeout(NoPlanError):
+    """The time limit ran out before a plan was found (a plan may still exist)."""
+
+    timed_out = True
 
 
 class UnsatisfiableScenario(NoPlanError):
@@ -99,20 +108,41 @@ class Planner:
     def instance_program(self) -> str:
         return "#program base.\n" + self.base_program + "\n#program state(t).\n" + self.state_program
 
-    def _control(self) -> clingo.Control:
+    def _control(self, base_program: str, state_program: str) -> clingo.Control:
         control = clingo.Control(
             [f"--seed={self.seed}", "--sign-def=rnd", "--rand-freq=0.02", "--heuristic=Domain", "--warn=none", "--models=1"],
             logger=lambda code, message: None,
         )
-        control.add("base", [], background_theory())
-        control.add("base", [], self.base_program)
-        control.add("state", ["t"], self.state_program)
+        self.theory = ClingoDLTheory()
+        self.theory.register(control)
+        self._add(control, background_theory() + "\n#program base.\n" + base_program + "\n#program state(t).\n" + state_program)
         return control
 
+    def _add(self, control: clingo.Control, program: str) -> None:
+        """Add a program, its ``&diff`` constraints rewritten for the difference-logic theory."""
+        with ProgramBuilder(control) as builder:
+            parse_string(program, lambda statement: self.theory.rewrite_ast(statement, builder.add))
+
     def plans(self, limit: int | None = None) -> Iterator[Plan]:
+        """Plans with start speeds in ``initial_speed`` first; when there is none up to the horizon
+        limit, plans that start at any allowed speed (``widen_initial_speed``)."""
         check_satisfiable(self.automaton)
         deadline = time.monotonic() + self.settings.time_limit
-        control = self._control()
+        found = 0
+        try:
+            for plan in self._plans(self.base_program, self.state_program, limit, deadline):
+                found += 1
+                yield plan
+        except NoPlanError as error:
+            if found or not self.settings.widen_initial_speed or getattr(error, "timed_out", False):
+                raise
+            wide = dataclasses.replace(self.settings, initial_speed=(self.settings.min_speed, self.settings.max_speed))
+            if wide.initial_speeds() == self.settings.initial_speeds():
+                raise
+            yield from self._plans(*build_instance(self.automaton, wide), limit, deadline)
+
+    def _plans(self, base_program: str, state_program: str, limit: int | None, deadline: float) -> Iterator[Plan]:
+        control = self._control(base_program, state_program)
         self._ground(control, [("base", []), ("state", [clingo.Number(0)]), ("check", [clingo.Number(0)])])
         horizon = 0
         found = 0
@@ -149,6 +179,7 @@ class Planner:
     def _ground(self, control: clingo.Control, parts) -> None:
         start = time.perf_counter()
         control.ground(parts)
+        self.theory.prepare(control)
         self.stats["ground_s"] += time.perf_counter() - start
 
     def _solve(self, control: clingo.Control, deadline: float) -> list[clingo.Symbol] | None:
@@ -160,28 +191,41 @@ class Planner:
         with control.solve(yield_=True, async_=True) as handle:
             if not handle.wait(remaining):
                 handle.cancel()
-                raise NoPlanError(f"planning ran out of its time limit ({self.settings.time_limit:g} s)")
+                raise PlanningTimeout(f"planning ran out of its time limit ({self.settings.time_limit:g} s)")
             model = handle.model()
             if model is not None:
+                self.theory.on_model(model)
                 model_symbols = list(model.symbols(shown=True))
+                model_symbols += [
+                    clingo.Function("pos", [symbol.arguments[0], clingo.Number(int(value)), symbol.arguments[1]])
+                    for symbol, value in self.theory.assignment(model.thread_id)
+                    if symbol.name == "p"
+                ]
         self.stats["solve_s"] += time.perf_counter() - start
         return model_symbols
 
     def _exclude(self, control: clingo.Control, symbols: list[clingo.Symbol], count: int) -> None:
-        """Forbid this exact plan (its positions and lanes) from being found again."""
-        literals = [str(s) for s in symbols if s.name in ("pos", "lane")]
+        """Forbid this exact plan from being found again.
+
+        A plan is a function of its start cells, start speeds, accelerations and lanes, so
+        excluding that combination excludes the plan (and only it).
+        """
+        literals = [s for s in symbols if s.name in ("lane", "acc", "zone") or (s.name == "vel" and s.arguments[-1].number == 0)]
         name = f"exclude_{count}"
-        # never this plan again, and prefer cells no earlier plan used: spread plans out instead of
+        # never this plan again, and prefer choices no earlier plan made: spread plans out instead of
         # enumerating near neighbours (a domain heuristic steers the search, it adds no constraint)
-        steer = [f"#heuristic {s}. [{count},false]" for s in symbols if s.name == "pos"]
-        control.add(name, [], ":- " + ", ".join(literals) + ".\n" + "\n".join(steer))
+        steer = [f"#heuristic {s}. [{count},false]" for s in literals if s.name != "lane" or s.arguments[-1].number == 0]
+        control.add(name, [], ":- " + ", ".join(map(str, literals)) + ".\n" + "\n".join(steer))
         self._ground(control, [(name, [])])
 
     def _plan(self, symbols: list[clingo.Symbol], horizon: int, index: int) -> Plan:
         s = self.settings
         cells: dict[tuple[str, int], dict[str, int]] = {}
         transitions: list[tuple[int, int]] = []
+        runup_steps = 0
         for symbol in symbols:
+            if symbol.name == "runup_time":
+                runup_steps = symbol.arguments[0].number
             if symbol.name in ("pos", "lane", "vel"):
                 vehicle, value, step = symbol.arguments
                 name = vehicle.string if vehicle.type == clingo.SymbolType.String else vehicle.name
@@ -203,5 +247,5 @@ class Planner:
         stats = dict(self.stats)
         stats["horizon"] = horizon
         return Plan(dt=s.dt, lanes=s.lanes, states=states, transitions=transitions, seed=self.seed, index=index, stats=stats,
-                    runup=s.runup, runup_acceleration=s.runup_acceleration,
+                    runup=runup_steps * s.dt, runup_acceleration=s.runup_acceleration,
                     stationary=tuple(v for v in self.automaton.actors if v in self.automaton.stationary))
