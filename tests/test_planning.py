@@ -172,6 +172,53 @@ def test_an_impossible_scenario_is_reported_with_both_conflicting_modifiers(tmp_
     assert f"{path}:8:7: error:" in err and "Traceback" not in err
 
 
+SWAP = """\
+scenario s:
+  a: car
+  b: car
+  do serial:
+    p1: parallel:
+      b.drive()
+      a.drive() with:
+        position([30..40]m, ahead_of: b, at: end)
+    p2: parallel(duration: [1s..2s]):
+      b.drive() with:
+        speed([10..12]mps)
+      a.drive() with:
+        speed([10..12]mps)
+        position([10..20]m, behind: b, at: end)
+"""
+
+
+def test_constraints_that_conflict_across_phases_are_named_by_an_unsatisfiable_core(tmp_path, capsys):
+    """a cannot fall from 30 m ahead of b to 10 m behind it within 2 s while b keeps 10-12 m/s:
+    the report names exactly those four constraints (not a's own speed, which is not needed for
+    the contradiction), each at its line and column."""
+    from pytest_roadlogic.cli import main
+
+    path = tmp_path / "swap.osc"
+    path.write_text(SWAP)
+    assert main(["plan", str(path)]) == 1
+    err = capsys.readouterr().err
+    named = {line.split(": error:")[0] for line in err.splitlines() if ": error:" in line}
+    assert named == {f"{path}:8:9", f"{path}:9:18", f"{path}:11:9", f"{path}:14:9"}, err
+    assert "30 <= p(a) - p(b) <= 40 cannot hold together with" in err and "p2 lasts 1..2 s (line 9)" in err
+    assert "Traceback" not in err
+
+
+def test_a_constraint_the_domain_rules_forbid_is_named_with_those_rules():
+    from pytest_roadlogic.automaton import build_automaton
+    from pytest_roadlogic.frontend import check_text
+    from pytest_roadlogic.planning import UnsatisfiableScenario
+
+    text = "scenario s:\n  a: car\n  do a.drive() with:\n    speed([50..60]mps, at: end)\n"
+    automaton = build_automaton(check_text(text, "fast.osc").scenarios[0])
+    with pytest.raises(UnsatisfiableScenario) as caught:
+        Planner(automaton, PlanningSettings(max_horizon=8)).first()
+    report = caught.value.report()
+    assert "fast.osc:4:5: error: 50 <= v(a) <= 60 cannot hold in any plan under the domain rules (speeds 2..40 m/s" in report
+
+
 def test_roadlogic_plan_prints_each_plan_as_a_table_and_the_instance_on_request(capsys):
     from pytest_roadlogic.cli import main
 

@@ -41,6 +41,13 @@ class PlanningSettings:
     max_horizon: int = 25  # steps
     time_limit: float = 60.0  # seconds for one solve, all horizons together
 
+    def summary(self) -> str:
+        """The domain rules' numbers, for messages that blame them."""
+        return (
+            f"speeds {self.min_speed:g}..{self.max_speed:g} m/s, accelerations {min(self.accelerations):g}..{max(self.accelerations):g} m/s^2, "
+            f"{self.lanes} lanes, {self.min_gap:g} m gaps, at most {self.max_horizon} steps of {self.dt:g} s"
+        )
+
     def cells_per_step(self, speed: float) -> float:
         return speed * self.dt / self.grid
 
@@ -126,8 +133,27 @@ def _children(guard: Guard) -> tuple[Guard, ...]:
     return ()
 
 
-def build_instance(automaton: SymbolicAutomaton, settings: PlanningSettings) -> tuple[str, str]:
-    """Returns (base program, state(t) program) of the scenario instance."""
+def relaxable_constraints(automaton: SymbolicAutomaton) -> list:
+    """The scenario's constraints that a diagnosis may relax, each once: every bound and duration
+    with a source location (one modifier's bounds share it and are relaxed together)."""
+    found: dict = {}
+    _, numbering = guard_nodes(automaton)
+    for guard in numbering:
+        bound = guard.part if isinstance(guard, Not) else guard
+        if isinstance(bound, Bound) and bound.source is not None:
+            found.setdefault(bound.source, bound)
+    for timing in automaton.timings.values():
+        if timing.source is not None:
+            found.setdefault(timing.source, timing)
+    return list(found.values())
+
+
+def build_instance(automaton: SymbolicAutomaton, settings: PlanningSettings, relaxable: bool = False) -> tuple[str, str]:
+    """Returns (base program, state(t) program) of the scenario instance.
+
+    With ``relaxable``, each constraint of ``relaxable_constraints`` (numbered in that order) is
+    switched off by an external ``relaxed(K)``: a diagnosis asks which of them cannot hold together.
+    """
     speeds = settings.speeds()
     if not speeds or speeds[0] < 1:
         raise ValueError("the speed bounds leave no positive speed on the grid")
@@ -181,15 +207,29 @@ def build_instance(automaton: SymbolicAutomaton, settings: PlanningSettings) -> 
     for t in automaton.transitions:
         base.extend(f"starts({t.id},{p})." for p in sorted(t.starts) if p in automaton.timings)
         base.extend(f"ends({t.id},{p})." for p in sorted(t.ends) if p in automaton.timings)
+    relax = {c.source: k for k, c in enumerate(relaxable_constraints(automaton))} if relaxable else {}
+    base.extend(f"#external relaxed({k})." for k in relax.values())
     for phase, timing in automaton.timings.items():
         low = math.ceil(timing.low / settings.dt - 1e-9)
         high = math.floor(timing.high / settings.dt + 1e-9)
-        base.append(f"timing({phase},{low},{high}).  % {timing}")
+        condition = f" :- not relaxed({relax[timing.source]})" if timing.source in relax else ""
+        base.append(f"timing({phase},{low},{high}){condition}.  % {timing}")
     state = ["% guards: g(N,t) holds when guard node N holds at step t (generated)"]
     for guard, node in numbering.items():
         state.append(f"% node {node}: {guard}")
-        state.extend(_guard_rules(node, guard, numbering, settings))
+        rules = _guard_rules(node, guard, numbering, settings)
+        bound = guard.part if isinstance(guard, Not) else guard
+        if isinstance(bound, Bound) and bound.source in relax:
+            rules = _relaxed(node, rules, relax[bound.source])
+        state.extend(rules)
     return "\n".join(base) + "\n", "\n".join(state) + "\n"
+
+
+def _relaxed(node: int, rules: list[str], k: int) -> list[str]:
+    """A bound's rules that stand down when ``relaxed(K)`` holds: the guard holds, and the
+    constraints it imposes on positions are off."""
+    switched = [r[:-1] + f", not relaxed({k})." if r.startswith(("&diff", "{ below", "{ above")) else r for r in rules]
+    return switched + [f"g({node},t) :- relaxed({k})."]
 
 
 def _runup_fact(cells_per_step: int, steps: int, settings: PlanningSettings) -> str:

@@ -25,7 +25,7 @@ from clingodl import ClingoDLTheory
 
 from ..automaton.guards import contradiction
 from ..automaton.model import SymbolicAutomaton
-from .instance import PlanningSettings, build_instance
+from .instance import PlanningSettings, build_instance, relaxable_constraints
 from .plan import Plan, PlanState
 
 ASP_DIR = Path(__file__).resolve().parent.parent / "asp"
@@ -45,24 +45,40 @@ class PlanningTimeout(NoPlanError):
 
 
 class UnsatisfiableScenario(NoPlanError):
-    """The scenario cannot be met by any plan, for a reason found before solving; ``conflicts``
-    holds the pairs of contradicting bounds, each with the source location of its modifier."""
+    """The scenario cannot be met by any plan. ``conflicts`` holds groups of the scenario's
+    constraints (bounds, durations) that cannot hold together, each with its source location; a
+    group of one cannot hold on its own under the domain rules (speed limits, lanes, no collision)."""
 
-    def __init__(self, message: str, conflicts: list) -> None:
+    def __init__(self, message: str, conflicts: list[tuple], rules: str = "") -> None:
         super().__init__(message)
         self.conflicts = conflicts
+        self.rules = rules
 
     def report(self) -> str:
         """Each conflicting modifier as ``path:line:col: error:`` with its line and a caret."""
         from ..frontend.errors import Diagnostic, OscError
 
         diagnostics = []
-        for a, b in self.conflicts:
-            if a.source is None or b.source is None:
-                continue
-            diagnostics.append(Diagnostic(a.source, f"{a} cannot hold together with {b} (line {b.source.line})", "the scenario can never be met; widen or remove one of them"))
-            diagnostics.append(Diagnostic(b.source, f"{b} cannot hold together with {a} (line {a.source.line})"))
+        for group in self.conflicts:
+            for member in group:
+                if member.source is None:
+                    continue
+                others = [o for o in group if o is not member]
+                if others:
+                    together = ", ".join(f"{o} (line {o.source.line})" if o.source else str(o) for o in others)
+                    message = f"{member} cannot hold together with {together}"
+                else:
+                    message = f"{member} cannot hold in any plan under the domain rules" + (f" ({self.rules})" if self.rules else "")
+                hint = "the scenario can never be met; widen or remove one of them" if member is group[0] else None
+                diagnostics.append(Diagnostic(member.source, message, hint))
         return OscError(diagnostics).report() if diagnostics else str(self)
+
+
+def _conflict_message(conflicts: list[tuple]) -> str:
+    lines = ["the scenario can never be met: these constraints cannot hold at the same time"]
+    for group in conflicts:
+        lines.append("  " + " and ".join(f"{c} (at {c.source})" for c in group))
+    return "\n".join(lines)
 
 
 def check_satisfiable(automaton: SymbolicAutomaton) -> None:
@@ -85,10 +101,7 @@ def check_satisfiable(automaton: SymbolicAutomaton) -> None:
     if automaton.final in reachable:
         return
     conflicts = list(dict.fromkeys(blocked.values()))
-    lines = ["the scenario can never be met: these constraints cannot hold at the same time"]
-    for a, b in conflicts:
-        lines.append(f"  {a} (at {a.source}) contradicts {b} (at {b.source})")
-    raise UnsatisfiableScenario("\n".join(lines), conflicts)
+    raise UnsatisfiableScenario(_conflict_message(conflicts), conflicts)
 
 
 def background_theory() -> str:
@@ -134,12 +147,91 @@ class Planner:
                 found += 1
                 yield plan
         except NoPlanError as error:
-            if found or not self.settings.widen_initial_speed or getattr(error, "timed_out", False):
+            if found or getattr(error, "timed_out", False):
                 raise
-            wide = dataclasses.replace(self.settings, initial_speed=(self.settings.min_speed, self.settings.max_speed))
-            if wide.initial_speeds() == self.settings.initial_speeds():
-                raise
-            yield from self._plans(*build_instance(self.automaton, wide), limit, deadline)
+            wide = self._widened()
+            if wide is None:
+                self._explain(error, deadline)
+            try:
+                yield from self._plans(*build_instance(self.automaton, wide), limit, deadline)
+            except NoPlanError as error:
+                if getattr(error, "timed_out", False):
+                    raise
+                self._explain(error, deadline)
+
+    def _widened(self) -> PlanningSettings | None:
+        """The settings with any allowed start speed, when that is wider than the first try."""
+        wide = dataclasses.replace(self.settings, initial_speed=(self.settings.min_speed, self.settings.max_speed))
+        if not self.settings.widen_initial_speed or wide.initial_speeds() == self.settings.initial_speeds():
+            return None
+        return wide
+
+    def _explain(self, error: NoPlanError, deadline: float) -> None:
+        """Raise the reason there is no plan: the constraints that cannot hold together, when a
+        diagnosis finds them in time, else ``error`` as it is."""
+        conflict = self.explain(deadline)
+        if conflict:
+            raise UnsatisfiableScenario(f"{error}\n" + _conflict_message([conflict]), [conflict], self.settings.summary()) from None
+        raise error
+
+    def explain(self, deadline: float | None = None) -> tuple | None:
+        """A smallest group of the scenario's constraints that no plan up to the horizon limit meets.
+
+        Every bound and duration gets an external that relaxes it, and each horizon is solved as in
+        planning, assuming none is relaxed: clingo's unsatisfiable cores name the assumptions that
+        failed, and their union over the horizons is a group that cannot hold together. Removing
+        one member at a time, and keeping it out whenever the rest still fail at every horizon,
+        makes the group minimal. None when relaxing everything still leaves no plan (the settings
+        alone forbid one), or when time runs out.
+        """
+        constraints = relaxable_constraints(self.automaton)
+        if not constraints:
+            return None
+        deadline = deadline if deadline is not None else time.monotonic() + self.settings.time_limit
+        settings = self._widened() or self.settings
+        program = build_instance(self.automaton, settings, relaxable=True)
+        try:
+            if self._failing(program, settings, [], len(constraints), deadline) is not None:
+                return None  # no plan even with every constraint relaxed
+            core = self._failing(program, settings, list(range(len(constraints))), len(constraints), deadline)
+            if not core:
+                return None
+            for k in list(core):
+                if k in core:
+                    smaller = self._failing(program, settings, [c for c in core if c != k], len(constraints), deadline)
+                    if smaller is not None:
+                        core = smaller
+        except PlanningTimeout:
+            return None
+        return tuple(constraints[k] for k in core)
+
+    def _failing(self, program: tuple[str, str], settings: PlanningSettings, kept: list[int], count: int, deadline: float) -> list[int] | None:
+        """Grow the horizon as in planning with the constraints ``kept`` (the rest may be relaxed):
+        None when some horizon has a plan, else the union of the unsatisfiable cores."""
+        control = self._control(*program)
+        relaxed = [clingo.Function("relaxed", [clingo.Number(k)]) for k in range(count)]
+        union: set[int] = set()
+        for horizon in range(settings.max_horizon + 1):
+            t = clingo.Number(horizon)
+            self._ground(control, [("base", []), ("state", [t]), ("check", [t])] if horizon == 0 else [("dynamics", [t]), ("state", [t]), ("check", [t])])
+            if horizon == 0:
+                for atom in relaxed:
+                    control.assign_external(atom, None)  # free: what is not kept may be relaxed
+                literal = {control.symbolic_atoms[atom].literal: k for k, atom in enumerate(relaxed)}
+            else:
+                control.assign_external(clingo.Function("query", [clingo.Number(horizon - 1)]), False)
+            control.assign_external(clingo.Function("query", [t]), True)
+            remaining = deadline - time.monotonic()
+            if remaining <= 0:
+                raise PlanningTimeout("no time left to explain why there is no plan")
+            with control.solve(assumptions=[(relaxed[k], False) for k in kept], async_=True) as handle:
+                if not handle.wait(remaining):
+                    handle.cancel()
+                    raise PlanningTimeout("no time left to explain why there is no plan")
+                if handle.get().satisfiable:
+                    return None
+                union.update(literal[abs(lit)] for lit in handle.core() if abs(lit) in literal)
+        return sorted(union)
 
     def _plans(self, base_program: str, state_program: str, limit: int | None, deadline: float) -> Iterator[Plan]:
         control = self._control(base_program, state_program)
