@@ -166,12 +166,18 @@ class FrenetixDriver:
         if not candidates:
             self.fallbacks += 1
             return Trajectory.standing(state, 2)
-        ranked = sorted(candidates, key=lambda t: self._tracking_cost(time, t) + t.cost)[:40]
-        trajectories = [self._copy(candidate) for candidate in ranked]
+        # the reference over the tracked window, evaluated once for all candidates
+        n = int(round(self.tracked / self.dt)) + 1
+        times = time + np.arange(1, n) * self.dt
+        target = (self.reference.s(times) - self.s_origin - WHEELBASE / 2, self.reference.d(times), self.reference.v(times))
+        ranked = sorted(candidates, key=lambda t: self._tracking_cost(target, t) + t.cost)[:40]
         road_now = self._road_violation(Trajectory.standing(state))
-        for trajectory in trajectories:
+        trajectories = []
+        for candidate in ranked:  # copied one by one: the first safe one is usually the best ranked
+            trajectory = self._copy(candidate)
             if not self._collides(trajectory, others) and self._road_violation(trajectory) <= road_now + 0.02:
                 return trajectory
+            trajectories.append(trajectory)
         # Nothing fully safe: prefer not colliding, then the least road violation, then tracking.
         self.fallbacks += 1
         return min(trajectories, key=lambda t: (self._collides(t, others), round(self._road_violation(t), 2)))
@@ -188,17 +194,17 @@ class FrenetixDriver:
                     rows.append([0.0, duration, *initial.x0_lon, v_end, 0.0, *initial.x0_lat, d_end, 0.0, 0.0])
         return np.array(rows, dtype=float)
 
-    def _tracking_cost(self, time: float, candidate) -> float:
+    @staticmethod
+    def _tracking_cost(target: tuple[np.ndarray, np.ndarray, np.ndarray], candidate) -> float:
+        """Mean squared distance from the reference (s of the rear axle, d, v) over the tracked window."""
+        s_ref, d_ref, v_ref = target
         s = np.asarray(candidate.curvilinear.s)
-        d = np.asarray(candidate.curvilinear.d)
-        v = np.asarray(candidate.cartesian.v)
-        n = min(len(s), int(round(self.tracked / self.dt)) + 1)
-        times = time + np.arange(1, n) * self.dt
-        x = s[1:n] + self.s_origin + WHEELBASE / 2
+        n = min(len(s), len(s_ref) + 1)
+        m = n - 1
         return float(
-            np.mean((x - self.reference.s(times)) ** 2)
-            + 2.0 * np.mean((d[1:n] - self.reference.d(times)) ** 2)
-            + 0.2 * np.mean((v[1:n] - self.reference.v(times)) ** 2)
+            np.mean((s[1:n] - s_ref[:m]) ** 2)
+            + 2.0 * np.mean((np.asarray(candidate.curvilinear.d)[1:n] - d_ref[:m]) ** 2)
+            + 0.2 * np.mean((np.asarray(candidate.cartesian.v)[1:n] - v_ref[:m]) ** 2)
         )
 
     @staticmethod
