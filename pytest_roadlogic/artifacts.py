@@ -11,6 +11,7 @@ import os
 from pathlib import Path
 
 from .pipeline import Outcome
+from .animation import animate_simulation
 from .plotting import plot_simulation
 from .simulation.commonroad_export import write_commonroad_xml
 
@@ -38,5 +39,6 @@ def write_artifacts(outcome: Outcome, directory: str | Path) -> dict[str, Path]:
         "trace": write_text(directory / "trace.csv", outcome.simulation.trace.to_csv()),
         "commonroad": write_commonroad_xml(outcome.simulation, directory / "scenario.xml"),
         "plot": plot_simulation(outcome.simulation, outcome.verdict, directory / "trajectories.png", title=name),
+        "animation": animate_simulation(outcome.simulation, outcome.verdict, directory / "simulation.gif", title=name),
         "verdict": write_text(directory / "verdict.json", json.dumps(verdict, indent=2)),
     }

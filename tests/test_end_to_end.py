@@ -15,8 +15,14 @@ def run_cli(*args):
 def test_roadlogic_run_writes_every_artifact_and_accepts(tmp_path):
     result = run_cli("run", str(OVERTAKE), "--seed", "1", "--out", str(tmp_path))
     assert result.returncode == 0, result.stdout + result.stderr
-    for name in ("plan.json", "trace.csv", "scenario.xml", "trajectories.png", "verdict.json"):
+    for name in ("plan.json", "trace.csv", "scenario.xml", "trajectories.png", "simulation.gif", "verdict.json"):
         assert (tmp_path / name).stat().st_size > 0, name
+    assert not [p.name for p in tmp_path.iterdir() if "partial" in p.name], "a temporary file was left behind"
+    from PIL import Image
+
+    samples = {line.split(",")[0] for line in (tmp_path / "trace.csv").read_text().splitlines()[1:]}
+    with Image.open(tmp_path / "simulation.gif") as gif:
+        assert gif.n_frames >= len(samples) // 2, "the animation shows the whole run, a frame every 0.2 s"
     verdict = json.loads((tmp_path / "verdict.json").read_text())
     assert verdict["accepted"] is True
     for stage in ("planning", "simulation", "monitoring"):
