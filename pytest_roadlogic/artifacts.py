@@ -31,6 +31,8 @@ def write_artifacts(outcome: Outcome, directory: str | Path) -> dict[str, Path]:
         "scenario": name,
         "seed": outcome.plan.seed,
         "tries": outcome.tries,
+        # when each vehicle reached each of its waypoints (null: missed)
+        "goals": {v: [g.reached_at for g in records] for v, records in outcome.simulation.goals.items()},
         "seconds": outcome.seconds,
         **outcome.verdict.to_dict(),
     }

@@ -54,6 +54,62 @@ def test_the_commonroad_file_reads_back(simulation, tmp_path):
     _, sim = simulation
     path = write_commonroad_xml(sim, tmp_path / "scenario.xml")
     scenario, problems = CommonRoadFileReader(str(path)).open()
-    assert len(scenario.dynamic_obstacles) == 2
+    assert len(scenario.dynamic_obstacles) == 2, "one trajectory per moving vehicle"
     assert len(scenario.lanelet_network.lanelets) == 3
-    assert len(problems.planning_problem_dict) == 2
+    for obstacle in scenario.dynamic_obstacles:
+        assert len(obstacle.prediction.trajectory.state_list) == len(sim.trace) - 1
+    # one planning problem per waypoint, chained from standstill
+    waypoints = {v: r.waypoints for v, r in sim.references.items()}
+    assert len(problems.planning_problem_dict) == sum(len(w) for w in waypoints.values())
+    first = problems.planning_problem_dict[2000]
+    assert first.initial_state.velocity == 0.0
+    goal = first.goal.state_list[0]
+    assert goal.time_step.start <= round(waypoints["v1"][0].time / sim.dt) <= goal.time_step.end
+
+
+def test_every_vehicle_reaches_each_goal_in_its_time_window(simulation):
+    plan, sim = simulation
+    assert set(sim.goals) == set(plan.vehicles)
+    for vehicle, records in sim.goals.items():
+        assert len(records) == len(plan.states[vehicle])
+        for record in records:
+            assert record.reached_at is not None, f"{vehicle} missed {record.waypoint}"
+            assert record.waypoint.earliest - 1e-9 <= record.reached_at <= record.waypoint.latest + 1e-9
+
+
+class _Misbehaving:
+    """A plug-in driver (the ``Driver`` interface) that drives v2 with frenetix until the plan is
+    over, then leaves the road or jumps onto v1: the scenario's guards have all held by then."""
+
+    def __init__(self, incident):
+        from pytest_roadlogic.simulation.driver import FrenetixDriver
+
+        self.incident = incident
+        self.inner = FrenetixDriver()
+
+    def start(self, vehicle, reference, road, dt):
+        self.inner.start(vehicle, reference, road, dt)
+        self.end = reference.end_time
+        self.dt = dt
+
+    def plan(self, time, state, others):
+        from pytest_roadlogic.simulation.driver import Trajectory, VehicleState
+
+        if time < self.end + 0.3:
+            return self.inner.plan(time, state, others)
+        if self.incident == "collision":
+            return Trajectory.standing(others["v1"].state(0), 2)
+        drifted = VehicleState(state.x + state.speed * self.dt, state.y + 1.0, state.heading, state.speed, 0.0)
+        return Trajectory.standing(drifted, 2)
+
+
+@pytest.mark.parametrize("incident", ["off-road", "collision"])
+def test_a_collision_or_leaving_the_road_is_never_accepted_even_when_the_guards_hold(overtake, incident):
+    from pytest_roadlogic.pipeline import run_scenario
+
+    outcome = run_scenario(overtake, seed=3, max_tries=1, drivers=lambda v: _Misbehaving(incident) if v == "v2" else None)
+    verdict = outcome.verdict
+    assert verdict.robustness >= 0, "the guards should hold: the incident comes after the plan's end"
+    assert [i.kind for i in verdict.incidents] == [incident]
+    assert not verdict.accepted
+    assert incident in verdict.explain()

@@ -1,9 +1,16 @@
 """The concrete scenario as a CommonRoad file: the road, every vehicle's driven trajectory as a
-dynamic obstacle, each vehicle's planning problem (standstill start, its final waypoint as goal),
-and stationary objects as static obstacles."""
+dynamic obstacle, the planning problems the vehicles were driven through, and stationary objects as
+static obstacles.
+
+A CommonRoad goal region is reached by reaching *any* of its states, so a sequence of waypoints
+cannot be one problem's goal. Each waypoint is its own planning problem instead, chained: the
+first starts from standstill, each later one from the planned state at the previous waypoint, and
+its goal is the waypoint's region (a cell of the lane, ``reach`` metres either way) in its time
+window. Problem ids are ``2000 + 100 * vehicle index + waypoint index``."""
 
 from __future__ import annotations
 
+import math
 import os
 from pathlib import Path
 
@@ -55,14 +62,20 @@ def commonroad_scenario(simulation: Simulation):
             continue
         prediction = TrajectoryPrediction(Trajectory(1, states[1:]), shape)
         scenario.add_objects(DynamicObstacle(FIRST_OBSTACLE_ID + index, ObstacleType.CAR, shape, initial, prediction))
-        goal = simulation.references[vehicle].waypoints[-1]
-        steps = int(round(goal.time / simulation.dt))
-        goal_state = CustomState(
-            time_step=Interval(max(0, steps - 20), steps + 20),
-            position=RectOccupancy(shapely.Point(goal.position, simulation.road.center_y(goal.lane)), simulation.road.lane_width, 8.0, 0.0),
-            orientation=AngleInterval(-0.3, 0.3),
-        )
-        problems.add_planning_problem(PlanningProblem(FIRST_PROBLEM_ID + index, initial, GoalRegion([goal_state])))
+        start = initial
+        road, dt = simulation.road, simulation.dt
+        for k, goal in enumerate(simulation.references[vehicle].waypoints):
+            goal_state = CustomState(
+                time_step=Interval(max(0, math.ceil(goal.earliest / dt - 1e-9)), math.floor(goal.latest / dt + 1e-9)),
+                position=RectOccupancy(shapely.Point(goal.position, road.center_y(goal.lane)), road.lane_width, 2 * goal.reach, 0.0),
+                orientation=AngleInterval(-0.3, 0.3),
+            )
+            problem_id = FIRST_PROBLEM_ID + 100 * index + k
+            problems.add_planning_problem(PlanningProblem(problem_id, start, GoalRegion([goal_state])))
+            start = InitialState(
+                time_step=int(round(goal.time / dt)), position=np.array([goal.position, road.center_y(goal.lane)]), orientation=0.0,
+                velocity=goal.speed, acceleration=0.0, yaw_rate=0.0, slip_angle=0.0,
+            )
     return scenario, problems
 
 

@@ -28,12 +28,30 @@ TAIL = 2.0  # s simulated after the plan's last step
 
 @dataclass(frozen=True)
 class Waypoint:
-    """Where a vehicle should be at a time: a goal of its driver."""
+    """Where a vehicle should be at a time: a goal of its driver.
+
+    The goal is reached when the vehicle's centre is within ``reach`` metres of ``position`` in
+    ``lane`` at some instant of the time window ``time ± window``: half a planning step either way,
+    so that consecutive windows meet but do not overlap.
+    """
 
     time: float
     position: float
     lane: int
     speed: float
+    window: float = 0.5  # s
+    reach: float = 2.0  # m
+
+    @property
+    def earliest(self) -> float:
+        return self.time - self.window
+
+    @property
+    def latest(self) -> float:
+        return self.time + self.window
+
+    def reached(self, time: float, x: float, lane: int) -> bool:
+        return self.earliest - 1e-9 <= time <= self.latest + 1e-9 and lane == self.lane and abs(x - self.position) <= self.reach
 
 
 @dataclass
@@ -106,7 +124,7 @@ def references(plan: Plan, road: Road) -> dict[str, Reference]:
     result = {}
     for vehicle in plan.vehicles:
         waypoints = [
-            Waypoint(duration + k * plan.dt, s.position, s.lane, s.speed) for k, s in enumerate(plan.states[vehicle])
+            Waypoint(duration + k * plan.dt, s.position, s.lane, s.speed, window=plan.dt / 2) for k, s in enumerate(plan.states[vehicle])
         ]
         result[vehicle] = Reference(vehicle, duration, plan.runup_acceleration, waypoints, road)
     return result

@@ -15,11 +15,19 @@ import numpy as np
 
 from ..planning.plan import Plan
 from .driver import Driver, FrenetixDriver, StationaryDriver, Trajectory, VehicleState, boxes_overlap, corners
-from .reference import TAIL, Reference, references
+from .reference import TAIL, Reference, Waypoint, references
 from .road import Road
 from .trace import Incident, Trace
 
 DriverFactory = Callable[[str], Driver | None]
+
+
+@dataclass(frozen=True)
+class GoalRecord:
+    """One waypoint of a vehicle and when it was reached (None: its time window passed first)."""
+
+    waypoint: Waypoint
+    reached_at: float | None
 
 
 @dataclass
@@ -32,6 +40,32 @@ class Simulation:
     dt: float
     fallbacks: dict[str, int] = field(default_factory=dict)
     stationary: tuple[str, ...] = ()  # standing obstacles, not driven
+    goals: dict[str, list[GoalRecord]] = field(default_factory=dict)  # per driven vehicle, in order
+
+    def missed_goals(self) -> list[tuple[str, GoalRecord]]:
+        return [(v, g) for v, records in self.goals.items() for g in records if g.reached_at is None]
+
+
+class _GoalSequence:
+    """A vehicle's waypoints as a sequence of goals: the current one is replaced by the next as
+    soon as it is reached, or when its time window has passed (a miss)."""
+
+    def __init__(self, waypoints: list[Waypoint]) -> None:
+        self.waypoints = waypoints
+        self.records: list[GoalRecord] = []
+
+    @property
+    def current(self) -> Waypoint | None:
+        return self.waypoints[len(self.records)] if len(self.records) < len(self.waypoints) else None
+
+    def update(self, time: float, x: float, lane: int) -> None:
+        while (goal := self.current) is not None:
+            if goal.reached(time, x, lane):
+                self.records.append(GoalRecord(goal, round(time, 6)))
+            elif time > goal.latest + 1e-9:
+                self.records.append(GoalRecord(goal, None))
+            else:
+                return
 
 
 def road_for(plan: Plan, lanes: int | None = None) -> Road:
@@ -71,13 +105,16 @@ def simulate(plan: Plan, dt: float = 0.1, drivers: DriverFactory | None = None, 
     predictions = {v: Trajectory.standing(s) for v, s in states.items()}
     columns = {v: {c: np.zeros(steps + 1) for c in ("x", "y", "heading", "speed", "acceleration", "lane")} for v in refs}
     incidents: list[Incident] = []
+    goals = {v: _GoalSequence(r.waypoints) for v, r in refs.items() if v not in plan.stationary}
 
     def record(k: int) -> None:
+        time = k * dt
         for v, s in states.items():
             col = columns[v]
             col["x"][k], col["y"][k], col["heading"][k] = s.x, s.y, s.heading
             col["speed"][k], col["acceleration"][k], col["lane"][k] = s.speed, s.acceleration, road.lane_at(s.y)
-        time = k * dt
+            if v in goals:
+                goals[v].update(time, s.x, int(col["lane"][k]))
         names = list(states)
         for i, a in enumerate(names):
             if not road.on_road(corners(states[a])):
@@ -101,7 +138,9 @@ def simulate(plan: Plan, dt: float = 0.1, drivers: DriverFactory | None = None, 
         columns[v]["lane"] = columns[v]["lane"].astype(int)
     trace = Trace(np.round(np.arange(steps + 1) * dt, 6), columns, _merge(incidents))
     fallbacks = {v: getattr(d, "fallbacks", 0) for v, d in active.items()}
-    return Simulation(trace, road, refs, dt, fallbacks, tuple(plan.stationary))
+    for sequence in goals.values():
+        sequence.update(math.inf, math.nan, -1)  # windows still open at the end are misses
+    return Simulation(trace, road, refs, dt, fallbacks, tuple(plan.stationary), {v: g.records for v, g in goals.items()})
 
 
 def _merge(incidents: list[Incident]) -> list[Incident]:
