@@ -170,7 +170,8 @@ class FrenetixDriver:
         n = int(round(self.tracked / self.dt)) + 1
         times = time + np.arange(1, n) * self.dt
         target = (self.reference.s(times) - self.s_origin - WHEELBASE / 2, self.reference.d(times), self.reference.v(times))
-        ranked = sorted(candidates, key=lambda t: self._tracking_cost(target, t) + t.cost)[:40]
+        costs = self._tracking_costs(target, candidates) + np.array([c.cost for c in candidates])
+        ranked = [candidates[i] for i in np.argsort(costs, kind="stable")[:40]]
         road_now = self._road_violation(Trajectory.standing(state))
         trajectories = []
         for candidate in ranked:  # copied one by one: the first safe one is usually the best ranked
@@ -195,17 +196,16 @@ class FrenetixDriver:
         return np.array(rows, dtype=float)
 
     @staticmethod
-    def _tracking_cost(target: tuple[np.ndarray, np.ndarray, np.ndarray], candidate) -> float:
-        """Mean squared distance from the reference (s of the rear axle, d, v) over the tracked window."""
+    def _tracking_costs(target: tuple[np.ndarray, np.ndarray, np.ndarray], candidates: list) -> np.ndarray:
+        """Mean squared distance from the reference (s of the rear axle, d, v) over the tracked
+        window, for all candidates at once (they share the planning horizon, hence the length)."""
         s_ref, d_ref, v_ref = target
-        s = np.asarray(candidate.curvilinear.s)
-        n = min(len(s), len(s_ref) + 1)
+        n = min(len(s_ref) + 1, min(len(c.curvilinear.s) for c in candidates))
         m = n - 1
-        return float(
-            np.mean((s[1:n] - s_ref[:m]) ** 2)
-            + 2.0 * np.mean((np.asarray(candidate.curvilinear.d)[1:n] - d_ref[:m]) ** 2)
-            + 0.2 * np.mean((np.asarray(candidate.cartesian.v)[1:n] - v_ref[:m]) ** 2)
-        )
+        s = np.array([c.curvilinear.s[1:n] for c in candidates])
+        d = np.array([c.curvilinear.d[1:n] for c in candidates])
+        v = np.array([c.cartesian.v[1:n] for c in candidates])
+        return ((s - s_ref[:m]) ** 2).mean(axis=1) + 2.0 * ((d - d_ref[:m]) ** 2).mean(axis=1) + 0.2 * ((v - v_ref[:m]) ** 2).mean(axis=1)
 
     @staticmethod
     def _copy(candidate) -> Trajectory:
