@@ -301,6 +301,14 @@ def _position_terms(bound: Bound) -> tuple[str, str]:
     return f"p({_atom(term.actor)},t)", "0" if term.reference is None else f"p({_atom(term.reference)},t)"
 
 
+def _fluent_terms(bound: Bound, fluent: str) -> tuple[list[str], str]:
+    """The body atoms reading a speed or lane bound's term, and the term's value in them."""
+    term = bound.term
+    if term.reference is None:
+        return [f"{fluent}({_atom(term.actor)},X,t)"], "X"
+    return [f"{fluent}({_atom(term.actor)},X,t)", f"{fluent}({_atom(term.reference)},Y,t)"], "X-Y"
+
+
 def _outside_rules(node: int, bound: Bound, settings: PlanningSettings) -> list[str]:
     """``not bound``: the value below or above the range, planned with the margin outside it."""
     margin, scale, fluent = _margin_and_scale(bound, settings)
@@ -319,12 +327,7 @@ def _outside_rules(node: int, bound: Bound, settings: PlanningSettings) -> list[
         if above is not None:
             rules.append(f"&diff{{ {b} - {a} }} <= {-above} :- above({node},t).")
         return rules
-    term = bound.term
-    values = [f"{fluent}({_atom(term.actor)},X,t)"]
-    value = "X"
-    if term.reference is not None:
-        values.append(f"{fluent}({_atom(term.reference)},Y,t)")
-        value = "X-Y"
+    values, value = _fluent_terms(bound, fluent)
     rules = []
     if below is not None:
         rules.append(f"{head} :- " + ", ".join(values + [f"{value} <= {below}"]) + ".")
@@ -339,12 +342,7 @@ def _bound_rule(head: str, bound: Bound, settings: PlanningSettings) -> list[str
     lo, hi = _grid_range(*_inset(bound.low, bound.high, margin), scale)
     if lo > hi:
         return [f"% {head} cannot hold on this grid"]
-    term = bound.term
-    conditions = [f"{fluent}({_atom(term.actor)},X,t)"]
-    value = "X"
-    if term.reference is not None:
-        conditions.append(f"{fluent}({_atom(term.reference)},Y,t)")
-        value = "X-Y"
+    conditions, value = _fluent_terms(bound, fluent)
     conditions += [f"{value} >= {lo}"] if lo != -math.inf else []
     conditions += [f"{value} <= {hi}"] if hi != math.inf else []
     return [f"{head} :- " + ", ".join(conditions) + "."]
