@@ -23,7 +23,8 @@ def write_text(path: Path, text: str) -> Path:
     return path
 
 
-def write_artifacts(outcome: Outcome, directory: str | Path) -> dict[str, Path]:
+def write_artifacts(outcome: Outcome, directory: str | Path, animation: bool = True) -> dict[str, Path]:
+    """Every artifact of a run; the GIF (seconds to render) only when ``animation`` is set."""
     directory = Path(directory)
     directory.mkdir(parents=True, exist_ok=True)
     name = outcome.scenario.name
@@ -36,11 +37,13 @@ def write_artifacts(outcome: Outcome, directory: str | Path) -> dict[str, Path]:
         "seconds": outcome.seconds,
         **outcome.verdict.to_dict(),
     }
-    return {
+    paths = {
         "plan": write_text(directory / "plan.json", outcome.plan.to_json()),
         "trace": write_text(directory / "trace.csv", outcome.simulation.trace.to_csv()),
         "commonroad": write_commonroad_xml(outcome.simulation, directory / "scenario.xml"),
         "plot": plot_simulation(outcome.simulation, outcome.verdict, directory / "trajectories.png", title=name),
-        "animation": animate_simulation(outcome.simulation, outcome.verdict, directory / "simulation.gif", title=name),
         "verdict": write_text(directory / "verdict.json", json.dumps(verdict, indent=2)),
     }
+    if animation:
+        paths["animation"] = animate_simulation(outcome.simulation, outcome.verdict, directory / "simulation.gif", title=name)
+    return paths

@@ -89,7 +89,8 @@ class ScenarioItem(pytest.Item):
         settings = PlanningSettings(lanes=_option(config, "lanes", int))
         outcome = run_scenario(self.scenario, seed=seed, settings=settings)
         directory = Path(config.rootpath) / _option(config, "artifacts") / _safe_name(self.nodeid)
-        paths = write_artifacts(outcome, directory)
+        # the animation takes seconds to render: only for a scenario that failed, where it helps
+        paths = write_artifacts(outcome, directory, animation=not outcome.verdict.accepted)
         self.user_properties.append(("accepted", outcome.verdict.accepted))
         self.user_properties.append(("robustness", round(outcome.verdict.robustness, 3)))
         self.user_properties.append(("seed", seed))

@@ -98,6 +98,7 @@ def test_a_rejected_scenario_fails_with_the_guard_the_time_and_the_values(tmp_pa
     assert "not reproduced in simulation" in result.stdout
     assert "closest at t =" in result.stdout
     assert "replay: roadlogic run" in result.stdout
+    assert "animation:" in result.stdout and list((tmp_path / "art").rglob("simulation.gif")), "a failing scenario gets its animation"
 
 
 def test_roadlogic_check_reports_every_bad_file_with_a_summary(tmp_path):
