@@ -41,8 +41,6 @@ class NoPlanError(Exception):
 class PlanningTimeout(NoPlanError):
     """The time limit ran out before a plan was found (a plan may still exist)."""
 
-    timed_out = True
-
 
 class UnsatisfiableScenario(NoPlanError):
     """The scenario cannot be met by any plan. ``conflicts`` holds groups of the scenario's
@@ -141,23 +139,19 @@ class Planner:
         limit, plans that start at any allowed speed (``widen_initial_speed``)."""
         check_satisfiable(self.automaton)
         deadline = time.monotonic() + self.settings.time_limit
-        found = 0
-        try:
-            for plan in self._plans(self.base_program, self.state_program, limit, deadline):
-                found += 1
-                yield plan
-        except NoPlanError as error:
-            if found or getattr(error, "timed_out", False):
-                raise
-            wide = self._widened()
-            if wide is None:
-                self._explain(error, deadline)
+        programs = [lambda: (self.base_program, self.state_program)]
+        if (wide := self._widened()) is not None:
+            programs.append(lambda: build_instance(self.automaton, wide))
+        for program in programs:
             try:
-                yield from self._plans(*build_instance(self.automaton, wide), limit, deadline)
+                # a program that yields any plan ends without NoPlanError, so this is the last try
+                yield from self._plans(*program(), limit, deadline)
+                return
+            except PlanningTimeout:
+                raise
             except NoPlanError as error:
-                if getattr(error, "timed_out", False):
-                    raise
-                self._explain(error, deadline)
+                last = error
+        self._explain(last, deadline)
 
     def _widened(self) -> PlanningSettings | None:
         """The settings with any allowed start speed, when that is wider than the first try."""
@@ -212,34 +206,41 @@ class Planner:
         relaxed = [clingo.Function("relaxed", [clingo.Number(k)]) for k in range(count)]
         union: set[int] = set()
         for horizon in range(settings.max_horizon + 1):
-            t = clingo.Number(horizon)
-            self._ground(control, [("base", []), ("state", [t]), ("check", [t])] if horizon == 0 else [("dynamics", [t]), ("state", [t]), ("check", [t])])
+            self._advance(control, horizon)
             if horizon == 0:
                 for atom in relaxed:
                     control.assign_external(atom, None)  # free: what is not kept may be relaxed
                 literal = {control.symbolic_atoms[atom].literal: k for k, atom in enumerate(relaxed)}
-            else:
-                control.assign_external(clingo.Function("query", [clingo.Number(horizon - 1)]), False)
-            control.assign_external(clingo.Function("query", [t]), True)
-            remaining = deadline - time.monotonic()
-            if remaining <= 0:
-                raise PlanningTimeout("no time left to explain why there is no plan")
             with control.solve(assumptions=[(relaxed[k], False) for k in kept], async_=True) as handle:
-                if not handle.wait(remaining):
-                    handle.cancel()
-                    raise PlanningTimeout("no time left to explain why there is no plan")
+                self._wait(handle, deadline, "no time left to explain why there is no plan")
                 if handle.get().satisfiable:
                     return None
                 union.update(literal[abs(lit)] for lit in handle.core() if abs(lit) in literal)
         return sorted(union)
 
+    def _advance(self, control: clingo.Control, horizon: int) -> None:
+        """Ground step ``horizon`` (with the base program at 0) and ask for acceptance there only."""
+        t = clingo.Number(horizon)
+        if horizon == 0:
+            self._ground(control, [("base", []), ("state", [t]), ("check", [t])])
+        else:
+            self._ground(control, [("dynamics", [t]), ("state", [t]), ("check", [t])])
+            control.assign_external(clingo.Function("query", [clingo.Number(horizon - 1)]), False)
+        control.assign_external(clingo.Function("query", [t]), True)
+
+    @staticmethod
+    def _wait(handle: clingo.SolveHandle, deadline: float, message: str) -> None:
+        """Wait for a solve until the deadline; past it, cancel and raise ``PlanningTimeout``."""
+        remaining = deadline - time.monotonic()
+        if remaining <= 0 or not handle.wait(remaining):
+            handle.cancel()
+            raise PlanningTimeout(message)
+
     def _plans(self, base_program: str, state_program: str, limit: int | None, deadline: float) -> Iterator[Plan]:
         control = self._control(base_program, state_program)
-        self._ground(control, [("base", []), ("state", [clingo.Number(0)]), ("check", [clingo.Number(0)])])
         horizon = 0
         found = 0
-        query = clingo.Function("query", [clingo.Number(0)])
-        control.assign_external(query, True)
+        self._advance(control, horizon)
         while limit is None or found < limit:
             symbols = self._solve(control, deadline)
             if symbols is None:
@@ -250,12 +251,8 @@ class Planner:
                         f"no plan satisfies the scenario within {self.settings.max_horizon} steps "
                         f"({self.settings.max_horizon * self.settings.dt:g} s)"
                     )
-                control.assign_external(query, False)
                 horizon += 1
-                t = clingo.Number(horizon)
-                self._ground(control, [("dynamics", [t]), ("state", [t]), ("check", [t])])
-                query = clingo.Function("query", [t])
-                control.assign_external(query, True)
+                self._advance(control, horizon)
                 continue
             self.stats["rules"] = float(control.statistics.get("problem", {}).get("lp", {}).get("rules", 0))
             plan = self._plan(symbols, horizon, found)
@@ -275,15 +272,10 @@ class Planner:
         self.stats["ground_s"] += time.perf_counter() - start
 
     def _solve(self, control: clingo.Control, deadline: float) -> list[clingo.Symbol] | None:
-        remaining = deadline - time.monotonic()
-        if remaining <= 0:
-            raise NoPlanError(f"planning ran out of its time limit ({self.settings.time_limit:g} s)")
         start = time.perf_counter()
         model_symbols: list[clingo.Symbol] | None = None
         with control.solve(yield_=True, async_=True) as handle:
-            if not handle.wait(remaining):
-                handle.cancel()
-                raise PlanningTimeout(f"planning ran out of its time limit ({self.settings.time_limit:g} s)")
+            self._wait(handle, deadline, f"planning ran out of its time limit ({self.settings.time_limit:g} s)")
             model = handle.model()
             if model is not None:
                 self.theory.on_model(model)
@@ -318,7 +310,7 @@ class Planner:
         for symbol in symbols:
             if symbol.name == "runup_time":
                 runup_steps = symbol.arguments[0].number
-            if symbol.name in ("pos", "lane", "vel"):
+            elif symbol.name in ("pos", "lane", "vel"):
                 vehicle, value, step = symbol.arguments
                 name = vehicle.string if vehicle.type == clingo.SymbolType.String else vehicle.name
                 cells.setdefault((name, step.number), {})[symbol.name] = value.number
