@@ -133,14 +133,20 @@ def _children(guard: Guard) -> tuple[Guard, ...]:
     return ()
 
 
+def _bound_of(guard: Guard) -> Bound | None:
+    """The bound a guard node stands for: itself, or the one its negation sits on (negation normal form)."""
+    bound = guard.part if isinstance(guard, Not) else guard
+    return bound if isinstance(bound, Bound) else None
+
+
 def relaxable_constraints(automaton: SymbolicAutomaton) -> list:
     """The scenario's constraints that a diagnosis may relax, each once: every bound and duration
     with a source location (one modifier's bounds share it and are relaxed together)."""
     found: dict = {}
     _, numbering = guard_nodes(automaton)
     for guard in numbering:
-        bound = guard.part if isinstance(guard, Not) else guard
-        if isinstance(bound, Bound) and bound.source is not None:
+        bound = _bound_of(guard)
+        if bound is not None and bound.source is not None:
             found.setdefault(bound.source, bound)
     for timing in automaton.timings.values():
         if timing.source is not None:
@@ -217,19 +223,15 @@ def build_instance(automaton: SymbolicAutomaton, settings: PlanningSettings, rel
     state = ["% guards: g(N,t) holds when guard node N holds at step t (generated)"]
     for guard, node in numbering.items():
         state.append(f"% node {node}: {guard}")
-        rules = _guard_rules(node, guard, numbering, settings)
-        bound = guard.part if isinstance(guard, Not) else guard
-        if isinstance(bound, Bound) and bound.source in relax:
-            rules = _relaxed(node, rules, relax[bound.source])
-        state.extend(rules)
+        bound = _bound_of(guard)
+        if bound is not None and bound.source in relax:
+            # relaxed: the guard holds, and the constraints it imposes on positions stand down
+            k = relax[bound.source]
+            state.extend(_guard_rules(node, guard, numbering, settings, f", not relaxed({k})"))
+            state.append(f"g({node},t) :- relaxed({k}).")
+        else:
+            state.extend(_guard_rules(node, guard, numbering, settings))
     return "\n".join(base) + "\n", "\n".join(state) + "\n"
-
-
-def _relaxed(node: int, rules: list[str], k: int) -> list[str]:
-    """A bound's rules that stand down when ``relaxed(K)`` holds: the guard holds, and the
-    constraints it imposes on positions are off."""
-    switched = [r[:-1] + f", not relaxed({k})." if r.startswith(("&diff", "{ below", "{ above")) else r for r in rules]
-    return switched + [f"g({node},t) :- relaxed({k})."]
 
 
 def _runup_fact(cells_per_step: int, steps: int, settings: PlanningSettings) -> str:
@@ -242,7 +244,9 @@ def _atom(name: str) -> str:
     return name if name[:1].islower() and name.replace("_", "").isalnum() else f'"{name}"'
 
 
-def _guard_rules(node: int, guard: Guard, numbering: dict[Guard, int], settings: PlanningSettings) -> list[str]:
+def _guard_rules(node: int, guard: Guard, numbering: dict[Guard, int], settings: PlanningSettings, switch: str = "") -> list[str]:
+    """The rules of one guard node; ``switch`` is a body condition (``, not relaxed(K)``) under
+    which the difference constraints of a position bound apply."""
     head = f"g({node},t)"
     if isinstance(guard, And):
         if not guard.parts:
@@ -252,10 +256,10 @@ def _guard_rules(node: int, guard: Guard, numbering: dict[Guard, int], settings:
         return [f"{head} :- g({numbering[p]},t)." for p in guard.parts]
     if isinstance(guard, Not):  # on a bound (negation normal form): outside the range, with a margin
         assert isinstance(guard.part, Bound)
-        return _outside_rules(node, guard.part, settings)
+        return _outside_rules(node, guard.part, settings, switch)
     assert isinstance(guard, Bound)
     if guard.term.quantity == POSITION:
-        return _position_rules(node, guard, settings)
+        return _position_rules(node, guard, settings, switch)
     return _bound_rule(head, guard, settings)
 
 
@@ -276,7 +280,7 @@ def _grid_range(low: float, high: float, scale: float) -> tuple[float, float]:
     return lo, hi
 
 
-def _position_rules(node: int, bound: Bound, settings: PlanningSettings) -> list[str]:
+def _position_rules(node: int, bound: Bound, settings: PlanningSettings, switch: str = "") -> list[str]:
     """A position bound as difference constraints on the position variables.
 
     Positions are not atoms, so the guard cannot be derived from them: the solver chooses
@@ -290,9 +294,9 @@ def _position_rules(node: int, bound: Bound, settings: PlanningSettings) -> list
     a, b = _position_terms(bound)
     rules = [f"{{ {head} }}."]
     if hi != math.inf:
-        rules.append(f"&diff{{ {a} - {b} }} <= {hi} :- {head}.")
+        rules.append(f"&diff{{ {a} - {b} }} <= {hi} :- {head}{switch}.")
     if lo != -math.inf:
-        rules.append(f"&diff{{ {b} - {a} }} <= {-lo} :- {head}.")
+        rules.append(f"&diff{{ {b} - {a} }} <= {-lo} :- {head}{switch}.")
     return rules
 
 
@@ -309,7 +313,7 @@ def _fluent_terms(bound: Bound, fluent: str) -> tuple[list[str], str]:
     return [f"{fluent}({_atom(term.actor)},X,t)", f"{fluent}({_atom(term.reference)},Y,t)"], "X-Y"
 
 
-def _outside_rules(node: int, bound: Bound, settings: PlanningSettings) -> list[str]:
+def _outside_rules(node: int, bound: Bound, settings: PlanningSettings, switch: str = "") -> list[str]:
     """``not bound``: the value below or above the range, planned with the margin outside it."""
     margin, scale, fluent = _margin_and_scale(bound, settings)
     head = f"g({node},t)"
@@ -321,7 +325,7 @@ def _outside_rules(node: int, bound: Bound, settings: PlanningSettings) -> list[
     if fluent == "pos":
         a, b = _position_terms(bound)
         sides = [f"below({node},t)"] * (below is not None) + [f"above({node},t)"] * (above is not None)
-        rules = [f"{{ {'; '.join(sides)} }} = 1 :- {head}.", f"{{ {head} }}."]
+        rules = [f"{{ {'; '.join(sides)} }} = 1 :- {head}{switch}.", f"{{ {head} }}."]
         if below is not None:
             rules.append(f"&diff{{ {a} - {b} }} <= {below} :- below({node},t).")
         if above is not None:
