@@ -10,8 +10,8 @@ import json
 import os
 from pathlib import Path
 
-from .pipeline import Outcome
 from .animation import animate_simulation
+from .pipeline import Outcome
 from .plotting import plot_simulation
 from .simulation.commonroad_export import write_commonroad_xml
 

@@ -42,6 +42,7 @@ def commonroad_scenario(simulation: Simulation):
     trace = simulation.trace
     shape = RectObstacleShape(width=CAR_WIDTH, length=CAR_LENGTH)
     problems = PlanningProblemSet()
+    road, dt = simulation.road, simulation.dt
     for index, (vehicle, columns) in enumerate(trace.actors.items()):
         states = [
             CustomState(
@@ -63,7 +64,6 @@ def commonroad_scenario(simulation: Simulation):
         prediction = TrajectoryPrediction(Trajectory(1, states[1:]), shape)
         scenario.add_objects(DynamicObstacle(FIRST_OBSTACLE_ID + index, ObstacleType.CAR, shape, initial, prediction))
         start = initial
-        road, dt = simulation.road, simulation.dt
         for k, goal in enumerate(simulation.references[vehicle].waypoints):
             goal_state = CustomState(
                 time_step=Interval(max(0, math.ceil(goal.earliest / dt - 1e-9)), math.floor(goal.latest / dt + 1e-9)),

@@ -147,6 +147,7 @@ class FrenetixDriver:
         handler.add_cost_function(cf.CalculateLongitudinalJerkCost("longitudinal_jerk", 0.02))
         self.handler = handler
         self.fallbacks = 0
+        self.tracked_steps = int(round(self.tracked / dt)) + 1  # samples compared: now and the tracked window
 
     def plan(self, time: float, state: VehicleState, others: dict[str, Trajectory]) -> Trajectory:
         import frenetix
@@ -167,8 +168,7 @@ class FrenetixDriver:
             self.fallbacks += 1
             return Trajectory.standing(state, 2)
         # the reference over the tracked window, evaluated once for all candidates
-        n = int(round(self.tracked / self.dt)) + 1
-        times = time + np.arange(1, n) * self.dt
+        times = time + np.arange(1, self.tracked_steps) * self.dt
         target = (self.reference.s(times) - self.s_origin - WHEELBASE / 2, self.reference.d(times), self.reference.v(times))
         costs = self._tracking_costs(target, candidates) + np.array([c.cost for c in candidates])
         ranked = [candidates[i] for i in np.argsort(costs, kind="stable")[:40]]
@@ -222,7 +222,7 @@ class FrenetixDriver:
         )
 
     def _steps(self, trajectory: Trajectory) -> int:
-        return min(len(trajectory.x), int(round(self.tracked / self.dt)) + 1)
+        return min(len(trajectory.x), self.tracked_steps)
 
     def _road_violation(self, trajectory: Trajectory) -> float:
         """How far (m) the rotated vehicle rectangle reaches beyond the road edges, at worst."""
