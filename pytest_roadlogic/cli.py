@@ -23,6 +23,7 @@ from .frontend import OscError
 from .planning import NoPlanError, PlanningSettings, UnsatisfiableScenario
 
 EXIT_ACCEPTED, EXIT_REJECTED, EXIT_INPUT = 0, 1, 2
+LANES_HELP = "lanes of the road (default: from the scenario: its path_min_driving_lanes/path_max_lanes and the lanes it names, at least 3)"
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -35,7 +36,7 @@ def main(argv: list[str] | None = None) -> int:
     check = commands.add_parser("check", help="parse and check .osc files and folders; print every problem")
     check.add_argument("paths", type=Path, nargs="+", help=".osc files or folders (searched recursively)")
     check.add_argument("--syntax-only", action="store_true", help="stop after parsing (for files written for other tools)")
-    check.add_argument("--lanes", type=int, default=3, help="lanes of the road, for lane numbers (default 3)")
+    check.add_argument("--lanes", type=lane_count, default=None, help=LANES_HELP)
     automaton = _scenario_command(commands, "automaton", "write a scenario's symbolic automaton as Graphviz DOT (and PNG when dot is installed)")
     automaton.add_argument("--out", type=Path, default=None, help="the DOT file to write (default: <scenario>.dot)")
     plan = _scenario_command(commands, "plan", "solve a scenario's planning problem and print the plans as tables")
@@ -46,12 +47,23 @@ def main(argv: list[str] | None = None) -> int:
     return {"run": _run, "check": _check, "automaton": _automaton, "plan": _plan}[args.command](args)
 
 
+def lane_count(text: str) -> int:
+    """A lanes option's value: a whole number from 1 up (argparse reports the error)."""
+    try:
+        lanes = int(text)
+    except ValueError:
+        lanes = 0
+    if lanes < 1:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a lane count; give a whole number from 1 up")
+    return lanes
+
+
 def _scenario_command(commands, name: str, help: str) -> argparse.ArgumentParser:
     """A subcommand about one scenario of one file, on a road of some lanes."""
     command = commands.add_parser(name, help=help)
     command.add_argument("file", type=Path, help="an .osc file")
     command.add_argument("--scenario", help="the scenario when the file declares several (default: the first)")
-    command.add_argument("--lanes", type=int, default=3, help="lanes of the road (default 3)")
+    command.add_argument("--lanes", type=lane_count, default=None, help=LANES_HELP)
     return command
 
 
@@ -60,7 +72,7 @@ def _plan(args: argparse.Namespace) -> int:
 
     def solve():
         scenario, automaton = _load_automaton(args)
-        planner = Planner(automaton, PlanningSettings(lanes=args.lanes), args.seed)
+        planner = Planner(automaton, PlanningSettings(), args.seed)
         if args.show_asp:
             print(planner.instance_program())
         started = time.perf_counter()
@@ -105,7 +117,7 @@ def osc_files(paths: list[Path]) -> list[Path]:
     return found
 
 
-def check_file(path: Path, syntax_only: bool = False, lanes: int = 3) -> tuple[bool, str]:
+def check_file(path: Path, syntax_only: bool = False, lanes: int | None = None) -> tuple[bool, str]:
     """Whether the file is free of errors, and the formatted report; never raises for bad input.
 
     Beyond the front end's checks, each scenario's automaton is built, so that a construct the
@@ -124,7 +136,7 @@ def check_file(path: Path, syntax_only: bool = False, lanes: int = 3) -> tuple[b
         for scenario in checked.scenarios if ok else ():
             if scenario.behavior is not None:
                 try:
-                    build_automaton(scenario, lanes, space=checked.spaces[scenario.name])
+                    build_automaton(scenario, space=checked.spaces[scenario.name])
                 except OscError as error:
                     ok = False
                     reports.append(OscError(error.diagnostics, sources=checked.sources).report())
@@ -163,7 +175,7 @@ def _load_automaton(args: argparse.Namespace):
     from .automaton import build_automaton
 
     scenario = _load(args)
-    return scenario, build_automaton(scenario, args.lanes)
+    return scenario, build_automaton(scenario)
 
 
 def _reporting_input_errors(args: argparse.Namespace, action):
@@ -190,7 +202,7 @@ def _run(args: argparse.Namespace) -> int:
 
     def plan_and_simulate():
         scenario = _load(args)
-        return scenario, run_scenario(scenario, seed=args.seed, settings=PlanningSettings(lanes=args.lanes), max_tries=args.tries)
+        return scenario, run_scenario(scenario, seed=args.seed, max_tries=args.tries)
 
     loaded = _reporting_input_errors(args, plan_and_simulate)
     if isinstance(loaded, int):

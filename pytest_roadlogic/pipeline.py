@@ -32,8 +32,11 @@ class Outcome:
     seconds: dict[str, float] = field(default_factory=dict)  # stage -> seconds, summed over tries
 
 
-def load_scenario(path: str | Path, name: str | None = None, lanes: int = 3) -> Scenario:
-    """A checked scenario of ``path`` (the first one with a behavior unless ``name`` is given)."""
+def load_scenario(path: str | Path, name: str | None = None, lanes: int | None = None) -> Scenario:
+    """A checked scenario of ``path`` (the first one with a behavior unless ``name`` is given).
+
+    ``lanes`` overrides the road's lane count, which otherwise comes from the scenario.
+    """
     checked = load_file(path, lanes)
     runnable = [s for s in checked.scenarios if s.behavior is not None]
     if not runnable:
@@ -51,7 +54,7 @@ def run_scenario(
     settings = settings or PlanningSettings()
     seconds = {"automaton": 0.0, "planning": 0.0, "simulation": 0.0, "monitoring": 0.0}
     start = time.perf_counter()
-    automaton = build_automaton(scenario, settings.lanes)
+    automaton = build_automaton(scenario)
     seconds["automaton"] += time.perf_counter() - start
     planner = Planner(automaton, settings, seed)
     plans = planner.plans(limit=max_tries)
@@ -63,7 +66,7 @@ def run_scenario(
         if plan is None:
             break
         start = time.perf_counter()
-        simulation = simulate(plan, drivers=drivers, lanes=settings.lanes)
+        simulation = simulate(plan, drivers=drivers)
         seconds["simulation"] += time.perf_counter() - start
         start = time.perf_counter()
         verdict = monitor(automaton, simulation.trace)

@@ -10,12 +10,14 @@ message; the other files still run. Collection never runs a solver.
 from __future__ import annotations
 
 import re
+from argparse import ArgumentTypeError
 from pathlib import Path
 
 import pytest
 
+from .cli import lane_count
 from .frontend import OscError, Scenario, check_file
-from .planning import NoPlanError, PlanningSettings, UnsatisfiableScenario
+from .planning import NoPlanError, UnsatisfiableScenario
 
 DEFAULT_SEED = 1
 DEFAULT_ARTIFACTS = "roadlogic-artifacts"
@@ -25,15 +27,16 @@ def pytest_addoption(parser: pytest.Parser) -> None:
     group = parser.getgroup("roadlogic", "scenario-based testing with OpenSCENARIO DSL files")
     group.addoption("--roadlogic-seed", type=int, default=None, help=f"seed fixing planning and simulation (ini: roadlogic_seed; default {DEFAULT_SEED})")
     group.addoption("--roadlogic-artifacts", default=None, help=f"directory for plans, traces, scenarios and plots (ini: roadlogic_artifacts; default {DEFAULT_ARTIFACTS})")
-    group.addoption("--roadlogic-lanes", type=int, default=None, help="lanes of the road (ini: roadlogic_lanes; default 3)")
+    group.addoption("--roadlogic-lanes", type=int, default=None, help="lanes of the road (ini: roadlogic_lanes; default: from each scenario, at least 3)")
     parser.addini("roadlogic_seed", "seed fixing planning and simulation", default=str(DEFAULT_SEED))
     parser.addini("roadlogic_artifacts", "directory for the artifacts of every scenario run", default=DEFAULT_ARTIFACTS)
-    parser.addini("roadlogic_lanes", "lanes of the road", default="3")
+    parser.addini("roadlogic_lanes", "lanes of the road (default: from each scenario)", default="")
 
 
 def pytest_configure(config: pytest.Config) -> None:
     config.addinivalue_line("markers", "roadlogic: a scenario collected from an .osc file")
     config.addinivalue_line("markers", "slow: a long scenario or suite; deselect with -m 'not slow'")
+    _option(config, "lanes", _whole_or_none)  # a bad lanes value stops the session before collection
 
 
 def pytest_collect_file(file_path: Path, parent: pytest.Collector):
@@ -47,6 +50,16 @@ def _option(config: pytest.Config, name: str, cast=str):
     return cast(value if value is not None else config.getini(f"roadlogic_{name}"))
 
 
+def _whole_or_none(text) -> int | None:
+    """A lanes option or ini value: a count from 1 up, or nothing (the scenario's own road)."""
+    if not str(text).strip():
+        return None
+    try:
+        return lane_count(str(text))
+    except ArgumentTypeError as error:
+        raise pytest.UsageError(f"roadlogic lanes: {error}") from None
+
+
 class OscWarning(pytest.PytestWarning):
     """A checker warning about an .osc file (an unused parameter, an idle actor)."""
 
@@ -54,7 +67,7 @@ class OscWarning(pytest.PytestWarning):
 class OscFile(pytest.File):
     def collect(self):
         try:
-            checked = check_file(self.path, _option(self.config, "lanes", int))
+            checked = check_file(self.path, _option(self.config, "lanes", _whole_or_none))
             checked.raise_for_errors()
         except OscError as error:
             # A broken .osc file is reported, but must not stop the other scenarios from running
@@ -86,8 +99,7 @@ class ScenarioItem(pytest.Item):
 
         config = self.config
         seed = _option(config, "seed", int)
-        settings = PlanningSettings(lanes=_option(config, "lanes", int))
-        outcome = run_scenario(self.scenario, seed=seed, settings=settings)
+        outcome = run_scenario(self.scenario, seed=seed)
         directory = Path(config.rootpath) / _option(config, "artifacts") / _safe_name(self.nodeid)
         # the animation takes seconds to render: only for a scenario that failed, where it helps
         paths = write_artifacts(outcome, directory, animation=not outcome.verdict.accepted)

@@ -10,12 +10,14 @@ import pytest
 from pytest_roadlogic.frontend import OscError, check_text
 
 HEAD = "scenario s:\n    a: car\n    b: car\n"
+# The same scenario on a road of at most three lanes: two lines more, so errors move down by two.
+ROAD3 = "scenario s:\n    road: Path\n    road.path_max_lanes(3)\n    a: car\n    b: car\n"
 
 
-def drive(modifiers: list[str]) -> str:
+def drive(modifiers: list[str], head: str = HEAD) -> str:
     """Scenario s where b drives and a drives with the given modifier lines."""
     body = "".join(f"            {m}\n" for m in modifiers)
-    return HEAD + "    do parallel:\n        b.drive()\n        a.drive() with:\n" + body
+    return head + "    do parallel:\n        b.drive()\n        a.drive() with:\n" + body
 
 
 def diagnostics(text: str):
@@ -67,7 +69,7 @@ CASES = [
     ('inherits', "scenario base:\n    a: car\nscenario s inherits base:\n    b: car\n",
      '3:10: error: not supported: scenario inheritance'),
     ('scenario_modifier', HEAD + "    a.speed(10mps)\n",
-     '4:5: error: not supported: a modifier applied to the whole scenario'),
+     '4:7: error: not supported: a modifier applied to the whole scenario'),
     ('import_late', HEAD + "import osc.standard\n",
      '4:8: error: an import after a declaration'),
     ('unknown_library', "import foo.bar\n" + HEAD,
@@ -132,12 +134,26 @@ CASES = [
      '7:34: error: at: takes start, end or all'),
     ('negative_uint', HEAD + "    do a.change_lane(-1, left)\n",
      '4:22: error: num_of_lanes: takes a whole number from 0 up'),
-    ('lane_outside', drive(["lane(4, at: start)"]),
-     "7:18: error: lane 4 is outside the road's 3 lanes"),
+    ('lane_outside', drive(["lane(4, at: start)"], head=ROAD3),
+     "9:18: error: lane 4 is outside the road's 3 lanes (path_max_lanes(3) on line 3)"),
     ('lane_zero', drive(["lane(0, at: start)"]),
      "7:18: error: lane 0 is outside the road's 3 lanes"),
-    ('lane_change_too_far', HEAD + "    do a.change_lane(3, left)\n",
-     '4:22: error: a change of 3 lanes is impossible on a road of 3 lanes'),
+    ('lane_change_too_far', ROAD3 + "    do a.change_lane(3, left)\n",
+     '6:22: error: a change of 3 lanes is impossible on a road of 3 lanes (path_max_lanes(3) on line 3)'),
+    ('road_map', HEAD + "    road: Path\n    road.set_map(\"Town04\")\n",
+     '5:10: error: not supported: set_map() of the road'),
+    ('road_bounds_contradict', HEAD + "    road: Path\n    road.path_max_lanes(2)\n    road.path_min_driving_lanes(4)\n",
+     '5:10: error: at most 2 lanes contradicts at least 4 (line 6)'),
+    ('road_lanes_not_whole', HEAD + "    road: Path\n    road.path_min_driving_lanes(2.5)\n",
+     '5:33: error: lanes: takes a whole number from 0 up'),
+    ('road_lanes_zero', HEAD + "    road: Path\n    road.path_max_lanes(0)\n",
+     '5:25: error: path_max_lanes() takes one whole number of lanes from 1 up, e.g. path_max_lanes(3)'),
+    ('road_lanes_unit', HEAD + "    road: Path\n    road.path_max_lanes(3m)\n",
+     '5:25: error: path_max_lanes() expects a plain number for lanes, got a length'),
+    ('road_unknown', HEAD + "    lanes.path_max_lanes(3)\n",
+     "4:11: error: unknown road 'lanes'"),
+    ('road_with_value', HEAD + "    road: Path with:\n        keep(it == 3)\n",
+     '4:11: error: a road takes no value or keep()'),
     ('from_with_relative', drive(["lane(same_as: b, from: left, at: start)"]),
      '7:30: error: from: goes with a lane number, not with a relative lane'),
     ('stationary_drives', "scenario s:\n    o: stationary_object\n    do o.drive()\n",

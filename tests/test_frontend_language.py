@@ -228,10 +228,10 @@ def test_extend_adds_members_to_a_scenario():
 
 
 def test_every_error_of_a_file_is_reported_not_just_the_first():
-    text = PAIR + "    do parallel:\n        ghost.drive()\n        a.fly()\n        b.drive() with:\n            lane(9, at: start)\n"
+    text = PAIR + "    do parallel:\n        ghost.drive()\n        a.fly()\n        b.drive() with:\n            lane(0, at: start)\n"
     result = check_text(text, "t.osc")
     messages = [f"{d.location.line}: {d.message}" for d in result.errors]
-    assert messages == ["5: unknown actor 'ghost'", "6: unknown action 'fly'", "8: lane 9 is outside the road's 3 lanes"]
+    assert messages == ["5: unknown actor 'ghost'", "6: unknown action 'fly'", "8: lane 0 is outside the road's 3 lanes"]
 
 
 def test_an_import_loads_declarations_relative_to_the_importing_file(tmp_path):

@@ -23,7 +23,7 @@ def check_plan(plan, automaton, settings=SETTINGS):
         for k in range(len(states)):
             s = states[k]
             assert settings.min_speed <= s.speed <= settings.max_speed, f"{v} speed out of bounds at {k}"
-            assert 0 <= s.lane < settings.lanes, f"{v} off the road at {k}"
+            assert 0 <= s.lane < automaton.lanes, f"{v} off the road at {k}"
             if k:
                 p = states[k - 1]
                 accel = s.speed - p.speed

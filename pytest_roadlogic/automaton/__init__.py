@@ -1,10 +1,10 @@
 """Stage 2: the symbolic automaton of a scenario (``build_automaton``) and its guard algebra."""
 
-from .construction import DEFAULT_LANES, build_automaton
+from .construction import build_automaton
 from .guards import LANE, POSITION, SPEED, TRUE, And, Bound, Guard, Not, Or, Term, conjunction
 from .model import Location, SymbolicAutomaton, Timing, Transition
 
 __all__ = [
-    "DEFAULT_LANES", "LANE", "POSITION", "SPEED", "TRUE", "And", "Bound", "Guard", "Location", "Not", "Or",
+    "LANE", "POSITION", "SPEED", "TRUE", "And", "Bound", "Guard", "Location", "Not", "Or",
     "SymbolicAutomaton", "Term", "Timing", "Transition", "build_automaton", "conjunction",
 ]

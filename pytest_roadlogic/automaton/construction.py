@@ -24,8 +24,6 @@ from .guards import TRUE, Guard, conjunction
 from .model import Location, SymbolicAutomaton, Timing, Transition
 from .modifiers import Variant, check_behavior_arguments, condition_guard, duration_interval, phase_guards
 
-DEFAULT_LANES = 3
-
 Key = Hashable
 
 
@@ -56,11 +54,11 @@ class _Fragment:
 
 def build_automaton(
     scenario: model.Scenario,
-    lanes: int = DEFAULT_LANES,
+    lanes: int | None = None,
     values: dict[str, object] | None = None,
     space: ParameterSpace | None = None,
 ) -> SymbolicAutomaton:
-    """The automaton of a checked ``scenario`` on a road with ``lanes`` lanes.
+    """The automaton of a checked ``scenario`` on a road with ``lanes`` lanes (default: the scenario's road).
 
     ``values`` fixes logical parameters (the refined strategy samples them); a parameter left out
     keeps its range, which the planner then chooses within (the base strategy).
@@ -75,9 +73,10 @@ def build_automaton(
         if errors:
             raise OscError(errors)
     env = space.environment(values)
+    lanes = lanes or scenario.lanes
     builder = _Builder(scenario, lanes, env)
     fragment = builder.translate(scenario.behavior)
-    return _finish(fragment, tuple(a.name for a in scenario.actors), scenario, builder.timings)
+    return _finish(fragment, tuple(a.name for a in scenario.actors), scenario, builder.timings, lanes)
 
 
 class _Builder:
@@ -262,7 +261,7 @@ def _one_of(children: list[_Fragment], uid: int) -> _Fragment:
     return _Fragment(initial, final, edges, names, drivers, invariants)
 
 
-def _finish(fragment: _Fragment, actors: tuple[str, ...], scenario: model.Scenario, timings: dict[int, Timing]) -> SymbolicAutomaton:
+def _finish(fragment: _Fragment, actors: tuple[str, ...], scenario: model.Scenario, timings: dict[int, Timing], lanes: int) -> SymbolicAutomaton:
     # Keep locations that are reachable from the initial one and can still reach the final one.
     forward = _closure(fragment.initial, lambda k: [e.target for e in fragment.edges if e.source == k])
     backward = _closure(fragment.final, lambda k: [e.source for e in fragment.edges if e.target == k])
@@ -291,7 +290,7 @@ def _finish(fragment: _Fragment, actors: tuple[str, ...], scenario: model.Scenar
     transitions.sort(key=lambda t: (t.source, t.target))
     transitions = [Transition(i, t.source, t.target, t.guard, t.events, t.starts, t.ends) for i, t in enumerate(transitions)]
     stationary = frozenset(a.name for a in scenario.actors if a.stationary)
-    return SymbolicAutomaton(locations, transitions, ids[fragment.initial], ids[fragment.final], actors, stationary, timings)
+    return SymbolicAutomaton(locations, transitions, ids[fragment.initial], ids[fragment.final], actors, stationary, timings, lanes)
 
 
 def _closure(start: Key, neighbours) -> set[Key]:

@@ -73,6 +73,8 @@ class SymbolicAutomaton:
     stationary: frozenset[str] = frozenset()
     # Duration bounds of phases (``duration:``, ``wait elapsed(...)``), by phase id.
     timings: dict[int, Timing] = field(default_factory=dict)
+    # Lanes of the road the guards were built for (keep_lane and change_lane enumerate them).
+    lanes: int = 3
 
     def location(self, location_id: int) -> Location:
         return self.locations[location_id]

@@ -53,16 +53,19 @@ class CheckedFile:
         return OscError(self.diagnostics, sources=self.sources).report() if self.diagnostics else ""
 
 
-def check_file(path: str | Path, lanes: int = DEFAULT_LANES) -> CheckedFile:
-    """Parse and check ``path`` and the files it imports. Syntax errors raise ``OscError``."""
+def check_file(path: str | Path, lanes: int | None = None) -> CheckedFile:
+    """Parse and check ``path`` and the files it imports. Syntax errors raise ``OscError``.
+
+    ``lanes`` fixes the road's lane count; ``None`` takes it from each scenario (see ``_road_lanes``).
+    """
     return _Checker(lanes).run(parse_file(path))
 
 
-def check_text(text: str, path: str = "<string>", lanes: int = DEFAULT_LANES) -> CheckedFile:
+def check_text(text: str, path: str = "<string>", lanes: int | None = None) -> CheckedFile:
     return _Checker(lanes).run(parse_text(text, path))
 
 
-def load_file(path: str | Path, lanes: int = DEFAULT_LANES) -> CheckedFile:
+def load_file(path: str | Path, lanes: int | None = None) -> CheckedFile:
     """``check_file`` that raises ``OscError`` when the file has errors (warnings pass)."""
     checked = check_file(path, lanes)
     checked.raise_for_errors()
@@ -70,8 +73,11 @@ def load_file(path: str | Path, lanes: int = DEFAULT_LANES) -> CheckedFile:
 
 
 class _Checker:
-    def __init__(self, lanes: int) -> None:
-        self.lanes = lanes
+    def __init__(self, lanes: int | None) -> None:
+        self.requested_lanes = lanes
+        # The road of the scenario being checked, and why it has that many lanes (for error messages).
+        self.lanes = lanes or DEFAULT_LANES
+        self.lanes_origin = ""
         self.diagnostics: list[Diagnostic] = []
         self.sources: dict[str, str] = {}
         self.files: dict[str, model.OscFile] = {}
@@ -193,6 +199,7 @@ class _Checker:
 
         actors: list[model.Actor] = []
         parameters: list[model.Field] = []
+        roads: list[str] = []
         declared: dict[str, SourceLocation] = {}
         for item in (*globals_, *scenario.fields):
             if item.name in declared:
@@ -208,12 +215,16 @@ class _Checker:
                     self.error(where, "not supported: constraints on an actor's fields", "constrain the actor through modifiers (speed, position, lane)")
             elif kind == "parameter":
                 parameters.append(item)
+            elif kind == "road":
+                roads.append(item.name)
         if library.DUT_ACTOR not in declared and _mentions(scenario, library.DUT_ACTOR):
             actors.append(model.Actor(library.DUT_ACTOR, "vehicle", scenario.location, "vehicle"))
         space, diagnostics = parameter_space(tuple(parameters), tuple(c for c in scenario.constraints), self.enums)
         self.diagnostics.extend(diagnostics)
         checked = replace(scenario, actors=tuple(actors), parameters=tuple(parameters))
         env = self._environment(checked, space)
+        checked = replace(checked, lanes=self._road_lanes(checked, env, roads))
+        env.update({f"{actor.name}.lane": Interval(1.0, float(self.lanes), None) for actor in actors})
 
         if len(scenario.behaviors) > 1:
             for extra in scenario.behaviors[1:]:
@@ -263,6 +274,10 @@ class _Checker:
             return "actor"
         if item.type in library.SCALAR_TYPES or item.type in self.enums:
             return "parameter"
+        if item.type == library.ROAD_TYPE:
+            if item.constraints or item.default is not None:
+                self.error(location, "a road takes no value or keep()", "constrain it with path_min_driving_lanes(n) or path_max_lanes(n)")
+            return "road"
         if item.type in library.UNSUPPORTED_ACTOR_TYPES:
             self.error(location, f"not supported: actor type {item.type!r} (the road is a highway)", f"use one of {', '.join(library.ACTOR_TYPES)}")
             return None
@@ -462,7 +477,7 @@ class _Checker:
             return
         if isinstance(value, Interval) and value.dimension is None and (value.low < 1 or value.high > self.lanes):
             shown = f"{value.low:g}" if value.is_point else str(value)
-            self.error(positional.value.location, f"lane {shown} is outside the road's {self.lanes} lanes", LANE_CONVENTION)
+            self.error(positional.value.location, f"lane {shown} is outside the road's {self.lanes} lanes{self.lanes_origin}", LANE_CONVENTION)
 
     def _lane_count(self, count: model.Argument | None, env) -> None:
         if count is None:
@@ -472,7 +487,96 @@ class _Checker:
         except EvaluationError:
             return
         if isinstance(value, Interval) and value.dimension is None and value.low >= 0 and (value.low < 1 or value.high > self.lanes - 1):
-            self.error(count.value.location, f"a change of {value} lanes is impossible on a road of {self.lanes} lanes", f"num_of_lanes must be between 1 and {self.lanes - 1}")
+            self.error(count.value.location, f"a change of {value} lanes is impossible on a road of {self.lanes} lanes{self.lanes_origin}", f"num_of_lanes must be between 1 and {self.lanes - 1}")
+
+    # -------------------------------------------------------------- road
+
+    def _road_lanes(self, scenario: model.Scenario, env: dict, roads: list[str]) -> int:
+        """The lane count of the road ``scenario`` runs on, also kept in ``self.lanes`` for the lane checks.
+
+        The lanes option wins when given (a conflict with the scenario's own bounds is an error).
+        Otherwise the road is as wide as the scenario needs: at least DEFAULT_LANES, at least its
+        ``path_min_driving_lanes``, at least its highest lane number or lane change plus one, and at most
+        its ``path_max_lanes``, so that a file states its road and runs the same from every entry point.
+        """
+        bounds = self._road_bounds(scenario, env, roads)
+        least, most = bounds.get("path_min_driving_lanes"), bounds.get("path_max_lanes")
+        if least and most and least[0] > most[0]:
+            self.error(most[1], f"at most {most[0]} lanes contradicts at least {least[0]} (line {least[1].line})", "make path_max_lanes at least path_min_driving_lanes")
+        if self.requested_lanes is not None:
+            lanes = self.requested_lanes
+            self.lanes_origin = " (set by the lanes option)"
+            for name, (value, location) in bounds.items():
+                if (name == "path_min_driving_lanes" and lanes < value) or (name == "path_max_lanes" and lanes > value):
+                    bound = "at least" if name == "path_min_driving_lanes" else "at most"
+                    self.error(location, f"the scenario asks for {bound} {value} lanes, but the lanes option sets {lanes}", "leave out the lanes option (--lanes, roadlogic_lanes) to take the road from the scenario")
+        else:
+            lanes = max(DEFAULT_LANES, least[0] if least else 1, self._lanes_used(scenario, env))
+            self.lanes_origin = ""
+            if most and lanes > most[0]:
+                lanes = most[0]
+                self.lanes_origin = f" (path_max_lanes({lanes}) on line {most[1].line})"
+        self.lanes = lanes
+        return lanes
+
+    def _road_bounds(self, scenario: model.Scenario, env: dict, roads: list[str]) -> dict[str, tuple[int, SourceLocation]]:
+        """The lane bounds the scenario's road modifiers state, by modifier name; other scenario-wide modifiers are refused."""
+        bounds: dict[str, tuple[int, SourceLocation]] = {}
+        for modifier in scenario.modifiers:
+            on_road = modifier.actor in roads or (modifier.actor is None and modifier.name in library.ROAD_MODIFIERS)
+            if not on_road:
+                if modifier.actor is None or scenario.actor(modifier.actor) is not None:
+                    self.error(modifier.location, "not supported: a modifier applied to the whole scenario", "put it in the with: block of an invocation")
+                else:
+                    self.error(modifier.location, f"unknown road {modifier.actor!r}", f"declare it in the scenario: {modifier.actor}: {library.ROAD_TYPE}")
+                continue
+            signature = library.ROAD_MODIFIERS.get(modifier.name)
+            if signature is None:
+                self.error(modifier.location, f"not supported: {modifier.name}() of the road", f"the road is one straight highway; {self._known('road modifiers', library.ROAD_MODIFIERS)}")
+                continue
+            before = len(self.diagnostics)
+            binding = self._arguments(signature, modifier.arguments, modifier.location, scenario, env, set(), set(), what=f"{modifier.name}()")
+            argument = binding["lanes"]
+            if argument is None or any(d.severity == "error" for d in self.diagnostics[before:]):
+                continue
+            value = evaluate(argument.value, env)
+            if not (isinstance(value, Interval) and value.is_point and float(value.low).is_integer() and value.low >= 1):
+                self.error(argument.value.location, f"{modifier.name}() takes one whole number of lanes from 1 up, e.g. {modifier.name}(3)")
+            elif modifier.name in bounds:
+                self.error(modifier.location, f"{modifier.name}() is already given on line {bounds[modifier.name][1].line}", "give it once")
+            else:
+                bounds[modifier.name] = (int(value.low), modifier.location)
+        return bounds
+
+    @staticmethod
+    def _lanes_used(scenario: model.Scenario, env: dict) -> int:
+        """The fewest lanes on which every lane number and lane change the scenario writes exists."""
+        needed = 1
+
+        def highest(argument: model.Argument | None, extra: int) -> int:
+            try:
+                value = evaluate(argument.value, env) if argument is not None else None
+            except EvaluationError:
+                return 1  # reported by the main pass
+            if isinstance(value, Interval) and value.dimension is None and math.isfinite(value.high):
+                return int(math.floor(value.high)) + extra
+            return 1
+
+        for behavior in scenario.behaviors:
+            for node in model.walk(behavior):
+                if not isinstance(node, model.Invocation):
+                    continue
+                if node.action == "change_lane":
+                    needed = max(needed, highest(library.bind(library.ACTIONS["change_lane"], node.arguments)["num_of_lanes"], 1))
+                for modifier in node.modifiers:
+                    signature = library.MODIFIERS.get(modifier.name)
+                    if modifier.name == "lane" and signature is not None:
+                        binding = library.bind(signature, modifier.arguments)
+                        relative = any(binding[name] is not None for name in ("left_of", "right_of", "side_of"))
+                        needed = max(needed, highest(binding["lane"], 0), 2 if relative else 1)
+                    elif modifier.name == "change_lane" and signature is not None:
+                        needed = max(needed, highest(library.bind(signature, modifier.arguments)["num_of_lanes"], 1))
+        return needed
 
     def _event_specification(self, spec, scenario: model.Scenario, env: dict, location: SourceLocation) -> None:
         if isinstance(spec, model.EventReference):

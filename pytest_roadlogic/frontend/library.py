@@ -23,6 +23,10 @@ DUT_ACTOR = "dut.car"
 # Standard actor types that cannot appear on a highway-only road.
 UNSUPPORTED_ACTOR_TYPES = ("person", "pedestrian", "animal", "cyclist", "bicycle", "traffic_light", "environment")
 
+# The road a scenario runs on, in the dialect of public OS2 scenario runners: a field of this type,
+# constrained by modifiers applied to the whole scenario (`path: Path`, `path.path_min_driving_lanes(4)`).
+ROAD_TYPE = "Path"
+
 NUMBER_TYPES = ("int", "uint", "float")
 PHYSICAL_TYPES = {"length": LENGTH, "time": TIME, "speed": SPEED, "acceleration": ACCELERATION}
 SCALAR_TYPES = (*PHYSICAL_TYPES, *NUMBER_TYPES, "bool", "string")
@@ -185,6 +189,13 @@ COMPOSITIONS: dict[str, Signature] = _signatures(
         (DURATION, Parameter("overlap", "enum:overlap"), Parameter("start_to_start", "time"), Parameter("end_to_end", "time")),
     ),
     Signature("one_of", (DURATION,)),
+)
+
+# Modifiers of the road (ROAD_TYPE), applied to the whole scenario. The road is always one straight
+# highway, so only its lane count can be asked for.
+ROAD_MODIFIERS: dict[str, Signature] = _signatures(
+    Signature("path_min_driving_lanes", (Parameter("lanes", "uint", positional=True),), required=(("lanes",),), description="the road has at least this many lanes"),
+    Signature("path_max_lanes", (Parameter("lanes", "uint", positional=True),), required=(("lanes",),), description="the road has at most this many lanes"),
 )
 
 # Functions usable in expressions, and those refused by name (tier 3).

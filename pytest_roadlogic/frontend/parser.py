@@ -213,6 +213,7 @@ class _Builder:
         methods: list[model.Method] = []
         behaviors: list[model.Behavior] = []
         unsupported: list[model.Unsupported] = []
+        modifiers: list[model.Modifier] = []
         for member in members:
             item = member.getChild(0)
             if isinstance(item, P.FieldDeclarationContext):
@@ -237,9 +238,7 @@ class _Builder:
             elif isinstance(item, P.OnDirectiveContext):
                 unsupported.append(model.Unsupported("on", self.loc(item), "express the reaction as a serial phase instead"))
             elif isinstance(item, P.ModifierInvocationContext):
-                unsupported.append(
-                    model.Unsupported("a modifier applied to the whole scenario", self.loc(item), "put it in the with: block of an invocation")
-                )
+                modifiers.append(self.modifier(item))
         return model.Scenario(
             name=name,
             actor_type=actor_type,
@@ -254,6 +253,7 @@ class _Builder:
             behaviors=tuple(behaviors),
             unsupported=tuple(unsupported),
             path=self.path,
+            modifiers=tuple(modifiers),
         )
 
     def type_declaration(self, ctx) -> tuple[model.TypeDeclaration, tuple[model.Unsupported, ...]]:
@@ -262,7 +262,8 @@ class _Builder:
         body = self.scenario_body(name, None, self.loc(ctx.identifier()), ctx.structMember(), "type")
         parent = self.name(ctx.inheritance().parent.name) if ctx.inheritance() is not None else None
         kind = "actor" if isinstance(ctx, P.ActorDeclarationContext) else "struct"
-        return model.TypeDeclaration(kind, name, parent, body.fields, body.constraints, body.location), body.unsupported
+        refused = body.unsupported + tuple(model.Unsupported("a modifier in a type declaration", m.location, "put it in the with: block of an invocation") for m in body.modifiers)
+        return model.TypeDeclaration(kind, name, parent, body.fields, body.constraints, body.location), refused
 
     def fields(self, ctx: P.FieldDeclarationContext) -> list[model.Field]:
         declarator = ctx.typeDeclarator()
@@ -349,15 +350,7 @@ class _Builder:
         for member in ctx.behaviorWithMember():
             item = member.getChild(0)
             if isinstance(item, P.ModifierInvocationContext):
-                names = [self.name(i) for i in item.target.identifier()]
-                modifiers.append(
-                    model.Modifier(
-                        names[-1],
-                        self.arguments(item.argumentList()),
-                        self.loc(item.target.identifier()[-1]),
-                        actor=".".join(names[:-1]) or None,
-                    )
-                )
+                modifiers.append(self.modifier(item))
             elif isinstance(item, P.KeepConstraintContext):
                 constraints.append(self.keep(item, subject="it"))
             elif isinstance(item, P.RemoveDefaultContext):
@@ -374,6 +367,10 @@ class _Builder:
             constraints=tuple(constraints),
             until=until,
         )
+
+    def modifier(self, ctx: P.ModifierInvocationContext) -> model.Modifier:
+        names = [self.name(i) for i in ctx.target.identifier()]
+        return model.Modifier(names[-1], self.arguments(ctx.argumentList()), self.loc(ctx.target.identifier()[-1]), actor=".".join(names[:-1]) or None)
 
     def arguments(self, ctx: P.ArgumentListContext | None) -> tuple[model.Argument, ...]:
         if ctx is None:

@@ -19,8 +19,7 @@ from ..automaton.model import SymbolicAutomaton
 @dataclass(frozen=True)
 class PlanningSettings:
     dt: float = 1.0  # seconds per planning step
-    grid: float = 1.0  # metres per cell
-    lanes: int = 3
+    grid: float = 1.0  # metres per cell (the road's lanes come with the automaton)
     min_speed: float = 2.0  # m/s; positive, so that no vehicle stops (domain rule 1)
     max_speed: float = 40.0  # m/s
     # m/s the plan starts with: a moderate start keeps the run-up short and the plan easy for a
@@ -41,11 +40,11 @@ class PlanningSettings:
     max_horizon: int = 25  # steps
     time_limit: float = 60.0  # seconds for one solve, all horizons together
 
-    def summary(self) -> str:
-        """The domain rules' numbers, for messages that blame them."""
+    def summary(self, lanes: int) -> str:
+        """The domain rules' numbers on a road of ``lanes`` lanes, for messages that blame them."""
         return (
             f"speeds {self.min_speed:g}..{self.max_speed:g} m/s, accelerations {min(self.accelerations):g}..{max(self.accelerations):g} m/s^2, "
-            f"{self.lanes} lanes, {self.min_gap:g} m gaps, at most {self.max_horizon} steps of {self.dt:g} s"
+            f"{lanes} lanes, {self.min_gap:g} m gaps, at most {self.max_horizon} steps of {self.dt:g} s"
         )
 
     def cells_per_step(self, speed: float) -> float:
@@ -175,7 +174,7 @@ def build_instance(automaton: SymbolicAutomaton, settings: PlanningSettings, rel
         "% scenario instance (generated)",
         *(f"vehicle({_atom(v)})." for v in vehicles),
         *(f"stationary({_atom(v)})." for v in vehicles if v in automaton.stationary),
-        f"lane_id(0..{settings.lanes - 1}).",
+        f"lane_id(0..{automaton.lanes - 1}).",
         f"speed({speeds[0]}..{speeds[-1]}).",
         *(f"accel({a})." for a in accels),
         "lateral(-1;0;1).",

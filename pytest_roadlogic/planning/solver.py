@@ -165,7 +165,7 @@ class Planner:
         diagnosis finds them in time, else ``error`` as it is."""
         conflict = self.explain(deadline)
         if conflict:
-            raise UnsatisfiableScenario(f"{error}\n" + _conflict_message([conflict]), [conflict], self.settings.summary()) from None
+            raise UnsatisfiableScenario(f"{error}\n" + _conflict_message([conflict]), [conflict], self.settings.summary(self.automaton.lanes)) from None
         raise error
 
     def explain(self, deadline: float | None = None) -> tuple | None:
@@ -330,6 +330,6 @@ class Planner:
         transitions.sort()
         stats = dict(self.stats)
         stats["horizon"] = horizon
-        return Plan(dt=s.dt, lanes=s.lanes, states=states, transitions=transitions, seed=self.seed, index=index, stats=stats,
+        return Plan(dt=s.dt, lanes=self.automaton.lanes, states=states, transitions=transitions, seed=self.seed, index=index, stats=stats,
                     runup=runup_steps * s.dt, runup_acceleration=s.runup_acceleration,
                     stationary=tuple(v for v in self.automaton.actors if v in self.automaton.stationary))
