@@ -7,14 +7,17 @@ its next plan, up to ``max_tries`` times. Every stage is timed.
 from __future__ import annotations
 
 import time
+from collections.abc import Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
 
 from .automaton import SymbolicAutomaton, build_automaton
 from .frontend import Scenario, load_file
 from .frontend.errors import Diagnostic, OscError, SourceLocation
+from .frontend.parameters import ParameterSpace
 from .monitor import Verdict, monitor
 from .planning import Plan, Planner, PlanningSettings
+from .sampling import guided
 from .simulation import Simulation, simulate
 from .simulation.simulator import DriverFactory
 
@@ -30,6 +33,7 @@ class Outcome:
     verdict: Verdict
     tries: int
     seconds: dict[str, float] = field(default_factory=dict)  # stage -> seconds, summed over tries
+    values: dict[str, object] = field(default_factory=dict)  # the sampled logical parameters (refined strategy)
 
 
 def load_scenario(path: str | Path, name: str | None = None, lanes: int | None = None) -> Scenario:
@@ -50,29 +54,64 @@ def run_scenario(
     settings: PlanningSettings | None = None,
     max_tries: int = MAX_TRIES,
     drivers: DriverFactory | None = None,
+    values: dict[str, object] | None = None,
+    space: ParameterSpace | None = None,
+    simulation_time_limit: float | None = None,
 ) -> Outcome:
+    """One concrete instance of ``scenario``: plan, simulate, monitor, and retry with the next plan on rejection.
+
+    ``values`` (the refined strategy) is a sample of the scenario's logical parameters: the planner
+    solves the scenario narrowed to those values, the monitor checks the scenario as written.
+    Without it (the base strategy) the planner chooses every open value itself.
+    """
+    return next(run_instances(scenario, 1, seed, settings, max_tries, drivers, values, space, simulation_time_limit))
+
+
+def run_instances(
+    scenario: Scenario,
+    count: int,
+    seed: int = 1,
+    settings: PlanningSettings | None = None,
+    max_tries: int = MAX_TRIES,
+    drivers: DriverFactory | None = None,
+    values: dict[str, object] | None = None,
+    space: ParameterSpace | None = None,
+    simulation_time_limit: float | None = None,
+) -> Iterator[Outcome]:
+    """Up to ``count`` instances from one planner, each plan different from all before it (the base strategy).
+
+    Each instance takes plans until the monitor accepts one or ``max_tries`` were rejected; it ends
+    early when the planner has no further plan. Planning errors (no plan, a timeout) propagate.
+    """
     settings = settings or PlanningSettings()
-    seconds = {"automaton": 0.0, "planning": 0.0, "simulation": 0.0, "monitoring": 0.0}
     start = time.perf_counter()
-    automaton = build_automaton(scenario)
-    seconds["automaton"] += time.perf_counter() - start
-    planner = Planner(automaton, settings, seed)
-    plans = planner.plans(limit=max_tries)
-    outcome = None
-    for tries in range(1, max_tries + 1):
-        start = time.perf_counter()
-        plan = next(plans, None)
-        seconds["planning"] += time.perf_counter() - start
-        if plan is None:
-            break
-        start = time.perf_counter()
-        simulation = simulate(plan, drivers=drivers)
-        seconds["simulation"] += time.perf_counter() - start
-        start = time.perf_counter()
-        verdict = monitor(automaton, simulation.trace)
-        seconds["monitoring"] += time.perf_counter() - start
-        outcome = Outcome(scenario, automaton, plan, simulation, verdict, tries, seconds)
-        if verdict.accepted:
-            break
-    assert outcome is not None, "the planner yields at least one plan or raises NoPlanError"
-    return outcome
+    specification = build_automaton(scenario)
+    guide = specification
+    if values:
+        narrowed, declared = guided(scenario, values, settings.resolution(), settings.margins(), space)
+        guide = build_automaton(narrowed, values=declared, space=space)
+    automaton_seconds = time.perf_counter() - start
+    planner = Planner(guide, settings, seed)
+    plans = planner.plans(limit=count * max_tries)
+    for _ in range(count):
+        seconds = {"automaton": automaton_seconds, "planning": 0.0, "simulation": 0.0, "monitoring": 0.0}
+        automaton_seconds = 0.0
+        outcome = None
+        for tries in range(1, max_tries + 1):
+            start = time.perf_counter()
+            plan = next(plans, None)
+            seconds["planning"] += time.perf_counter() - start
+            if plan is None:
+                break
+            start = time.perf_counter()
+            simulation = simulate(plan, drivers=drivers, time_limit=simulation_time_limit)
+            seconds["simulation"] += time.perf_counter() - start
+            start = time.perf_counter()
+            verdict = monitor(specification, simulation.trace)
+            seconds["monitoring"] += time.perf_counter() - start
+            outcome = Outcome(scenario, specification, plan, simulation, verdict, tries, seconds, dict(values or {}))
+            if verdict.accepted:
+                break
+        if outcome is None:
+            return  # the planner has no plan left; the first call raises NoPlanError instead
+        yield outcome

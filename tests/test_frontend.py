@@ -33,8 +33,8 @@ def test_standard_range_spelling_and_units_convert_to_si():
 
 def test_nodes_keep_their_source_location(overtake):
     phase_b = overtake.behavior.children[1].children[1]
-    assert (phase_b.location.line, phase_b.location.column) == (12, 10)
-    assert phase_b.modifiers[0].location.line == 13
+    assert (phase_b.location.line, phase_b.location.column) == (13, 10)
+    assert phase_b.modifiers[0].location.line == 14
 
 
 def test_line_breaks_inside_brackets_and_crlf_and_no_final_newline_are_fine():

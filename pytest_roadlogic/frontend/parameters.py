@@ -84,6 +84,8 @@ class ParameterSpace:
 
 
 def as_value(domain: ParameterDomain, value: object) -> object:
+    if isinstance(value, Interval):  # a band the refined strategy plans within
+        return value
     if domain.interval is not None:
         number = float(value)  # type: ignore[arg-type]
         return Interval(number, number, domain.interval.dimension)

@@ -47,6 +47,14 @@ class PlanningSettings:
             f"{lanes} lanes, {self.min_gap:g} m gaps, at most {self.max_horizon} steps of {self.dt:g} s"
         )
 
+    def resolution(self) -> dict[str | None, float]:
+        """The smallest difference the plan can express, per physical dimension (for sampled values)."""
+        return {"length": self.grid, "speed": self.grid / self.dt, "time": self.dt, "acceleration": self.grid / self.dt**2}
+
+    def margins(self) -> dict[str | None, float]:
+        """How far inside a range's edges the plan keeps, per physical dimension."""
+        return {"length": self.position_margin, "speed": self.speed_margin}
+
     def cells_per_step(self, speed: float) -> float:
         return speed * self.dt / self.grid
 
@@ -167,7 +175,7 @@ def build_instance(automaton: SymbolicAutomaton, settings: PlanningSettings, rel
     if not starts:
         raise ValueError("the initial speed range leaves no allowed speed on the grid")
     width = max(1, round(settings.start_zone / settings.grid))
-    zones = math.ceil(settings.initial_spread / settings.grid / width)
+    zones = math.ceil(max(settings.initial_spread, _farthest_position(automaton)) / settings.grid / width)
     gap = math.ceil(settings.min_gap / settings.grid)
     vehicles = automaton.actors
     base = [
@@ -286,7 +294,7 @@ def _position_rules(node: int, bound: Bound, settings: PlanningSettings, switch:
     ``g(N,t)`` and its truth imposes the bound. Guards are only used positively (negations sit on
     bounds, ``_outside_rules``), so a false ``g`` needs no meaning.
     """
-    lo, hi = _grid_range(*_inset(bound.low, bound.high, settings.position_margin), settings.grid)
+    lo, hi = _planned_range(bound.low, bound.high, settings.position_margin, settings.grid)
     head = f"g({node},t)"
     if lo > hi:
         return [f"% {head} cannot hold on this grid"]
@@ -342,13 +350,39 @@ def _outside_rules(node: int, bound: Bound, settings: PlanningSettings, switch: 
 def _bound_rule(head: str, bound: Bound, settings: PlanningSettings) -> list[str]:
     """A speed or lane bound, derived from the vel/lane atoms (speeds with a margin inside)."""
     margin, scale, fluent = _margin_and_scale(bound, settings)
-    lo, hi = _grid_range(*_inset(bound.low, bound.high, margin), scale)
+    lo, hi = _planned_range(bound.low, bound.high, margin, scale)
     if lo > hi:
         return [f"% {head} cannot hold on this grid"]
     conditions, value = _fluent_terms(bound, fluent)
     conditions += [f"{value} >= {lo}"] if lo != -math.inf else []
     conditions += [f"{value} <= {hi}"] if hi != math.inf else []
     return [f"{head} :- " + ", ".join(conditions) + "."]
+
+
+def _farthest_position(automaton: SymbolicAutomaton) -> float:
+    """How far apart the scenario's position bounds may need vehicles to start: per pair of
+    vehicles the largest finite distance bounding them, summed over the pairs (a chain of them
+    can put the last vehicle that far from the first)."""
+    guards = [t.guard for t in automaton.transitions] + [loc.invariant for loc in automaton.locations]
+    farthest: dict[frozenset[str], float] = {}
+    for guard in guards:
+        for bound in guard.atoms():
+            if bound.term.quantity != POSITION:
+                continue
+            pair = frozenset((bound.term.actor, bound.term.reference or ""))
+            ends = [abs(end) for end in (bound.low, bound.high) if math.isfinite(end)]
+            farthest[pair] = max([farthest.get(pair, 0.0), *ends])
+    return sum(farthest.values())
+
+
+def _planned_range(low: float, high: float, margin: float, scale: float) -> tuple[float, float]:
+    """The grid values a plan may use for [low, high]: inset by the margin, unless that leaves none.
+
+    A narrow range (a sampled value's one-cell band, say) can hold a grid value that every inset
+    misses: [23, 24] inset to [23.25, 23.75] has no whole metre, so the plan uses the range itself.
+    """
+    lo, hi = _grid_range(*_inset(low, high, margin), scale)
+    return (lo, hi) if lo <= hi else _grid_range(low, high, scale)
 
 
 def _inset(low: float, high: float, margin: float) -> tuple[float, float]:

@@ -3,10 +3,10 @@
 from .driver import Driver, FrenetixDriver, Trajectory, VehicleState
 from .reference import Reference, Waypoint, references
 from .road import Road
-from .simulator import Simulation, road_for, simulate
+from .simulator import Simulation, SimulationTimeout, road_for, simulate
 from .trace import ActorSnapshot, Incident, Trace
 
 __all__ = [
-    "ActorSnapshot", "Driver", "FrenetixDriver", "Incident", "Reference", "Road", "Simulation", "Trace",
+    "ActorSnapshot", "Driver", "FrenetixDriver", "Incident", "Reference", "Road", "Simulation", "SimulationTimeout", "Trace",
     "Trajectory", "VehicleState", "Waypoint", "references", "road_for", "simulate",
 ]

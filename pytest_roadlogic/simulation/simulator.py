@@ -8,6 +8,7 @@ recorded in the trace as incidents rather than stopping the run, so that the mon
 from __future__ import annotations
 
 import math
+import time as clock
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
@@ -80,12 +81,20 @@ def _road_around(refs: dict[str, Reference], lanes: int) -> Road:
     return Road(lanes, x_start=math.floor(start - 30.0), x_end=math.ceil(float(end) + 60.0))
 
 
-def simulate(plan: Plan, dt: float = 0.1, drivers: DriverFactory | None = None, lanes: int | None = None) -> Simulation:
+class SimulationTimeout(RuntimeError):
+    """The simulation took longer than its time limit (wall clock)."""
+
+
+def simulate(
+    plan: Plan, dt: float = 0.1, drivers: DriverFactory | None = None, lanes: int | None = None, time_limit: float | None = None
+) -> Simulation:
     """Drive every vehicle of ``plan`` from standstill through its waypoints.
 
     ``drivers`` maps a vehicle name to a custom driver (or ``None`` for the default frenetix one);
-    stationary objects are never driven.
+    stationary objects are never driven. ``time_limit`` (seconds of wall clock) bounds a run whose
+    driver (a plugged-in one, say) is far slower than expected; it raises ``SimulationTimeout``.
     """
+    deadline = clock.monotonic() + time_limit if time_limit is not None else math.inf
     lanes = lanes or plan.lanes
     # a reference reads only the lanes' centre lines, not the road's extent: build them once and
     # size the road around them
@@ -125,6 +134,8 @@ def simulate(plan: Plan, dt: float = 0.1, drivers: DriverFactory | None = None, 
 
     record(0)
     for k in range(1, steps + 1):
+        if clock.monotonic() > deadline:
+            raise SimulationTimeout(f"the simulation took over its limit of {time_limit:g} s at {k * dt:.1f} s of {steps * dt:.1f} s simulated")
         time = (k - 1) * dt
         chosen = {}
         for v, driver in active.items():

@@ -1,0 +1,280 @@
+"""The refined strategy: a scenario's logical parameters, sampled with Hypothesis, and the guidance they give.
+
+A logical parameter is any value the scenario leaves open: a declared parameter with a range
+(``gap: length with: keep(it in [10..20]m)``) or an inline range (``position([10..20]m, ...)``).
+The base strategy leaves them all to the planner, which picks whatever its search reaches first;
+sampling them instead spreads the instances over the whole logical scenario, and lets Hypothesis
+shrink a failure to the simplest values that still fail.
+
+A sample does not replace the scenario: the monitor still checks the simulation against the
+scenario as written. The sample only *guides* the planner: each sampled range is narrowed to one
+planning cell around the sampled value (kept a margin inside the range where it fits, so that
+tracking error in simulation does not cross the range's edge).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import json
+import math
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from .frontend import model
+from .frontend.errors import SourceLocation
+from .frontend.library import ACTIONS, MODIFIERS, bind
+from .frontend.parameters import ParameterSpace, parameter_space
+from .frontend.units import ACCELERATION, LENGTH, SPEED, TIME
+from .frontend.values import EvaluationError, Interval, evaluate
+
+UNIT = {LENGTH: "m", SPEED: "m/s", TIME: "s", ACCELERATION: "m/s^2", None: ""}
+# Samples of physical values lie on a 0.1 grid (in SI units): readable in reports, and a shrunk
+# failure lands on a round value instead of 12.000000000000002.
+STEP = 0.1
+
+Values = dict[str, Any]
+
+
+@dataclass(frozen=True)
+class LogicalParameter:
+    """One open value of a scenario: its name in samples and reports, and the range it is drawn from."""
+
+    name: str
+    location: SourceLocation
+    dimension: str | None = None
+    low: float = 0.0
+    high: float = 0.0
+    integer: bool = False  # lane numbers, int/uint parameters
+    choices: tuple[Any, ...] = ()  # bool and enum parameters (then low/high are unused)
+    declared: bool = True  # a declared parameter, not an inline range
+
+    def show(self, value: Any) -> str:
+        if self.choices:
+            return str(value).lower() if isinstance(value, bool) else str(value)
+        number = f"{value:g}" if self.integer else f"{value:.1f}".rstrip("0").rstrip(".")
+        return f"{number} {UNIT[self.dimension]}".rstrip()
+
+    def describe(self) -> str:
+        if self.choices:
+            return " | ".join(self.show(c) for c in self.choices)
+        return f"[{self.show(self.low)} .. {self.show(self.high)}]"
+
+
+def logical_parameters(scenario: model.Scenario, space: ParameterSpace | None = None) -> list[LogicalParameter]:
+    """Every open value of ``scenario``, declared parameters first, then inline ranges in source order."""
+    space = space or _space(scenario)
+    found: list[LogicalParameter] = []
+    for domain in space.domains.values():
+        if domain.fixed or not domain.bounded:
+            continue
+        if domain.interval is not None:
+            integer = domain.type in ("int", "uint")
+            low, high = domain.interval.low, domain.interval.high
+            if integer:
+                low, high = math.ceil(low), math.floor(high)
+            found.append(LogicalParameter(domain.name, domain.location, domain.interval.dimension, low, high, integer))
+        elif domain.choices:
+            found.append(LogicalParameter(domain.name, domain.location, choices=tuple(domain.choices)))
+    inline = list(_inline_ranges(scenario))
+    counts: dict[str, int] = {}
+    for name, _ in inline:
+        counts[name] = counts.get(name, 0) + 1
+    for name, node in inline:
+        if counts[name] > 1:
+            name = f"{name}@{node.location.line}"
+        low, high = sorted((node.low.value, node.high.value))
+        integer = node.dimension is None and float(low).is_integer() and float(high).is_integer()
+        found.append(LogicalParameter(name, node.location, node.dimension, low, high, integer, declared=False))
+    return found
+
+
+def _space(scenario: model.Scenario) -> ParameterSpace:
+    space, _ = parameter_space(scenario.parameters, scenario.constraints)
+    return space
+
+
+def _inline_ranges(scenario: model.Scenario):
+    """(name, Range) for every range written in the behavior, named after where it stands."""
+    if scenario.behavior is None:
+        return
+    for node in model.walk(scenario.behavior):
+        if isinstance(node, model.Invocation):
+            phase = node.label or f"{node.actor}.{node.action}"
+            signature = ACTIONS.get(node.action)
+            yield from _ranges_of(phase, node.arguments, signature)
+            for modifier in node.modifiers:
+                yield from _ranges_of(f"{phase}.{modifier.name}", modifier.arguments, MODIFIERS.get(modifier.name))
+        elif isinstance(node, model.Composition):
+            yield from _ranges_of(node.label or node.operator, node.arguments, None)
+        elif isinstance(node, model.Wait) and isinstance(node.condition, model.Call):
+            for argument in node.condition.arguments:
+                if isinstance(argument.value, model.Range):
+                    yield f"{node.label or 'wait'}.{node.condition.function}", argument.value
+
+
+def _ranges_of(prefix: str, arguments: tuple[model.Argument, ...], signature):
+    named = {id(a): n for n, a in bind(signature, arguments).arguments.items()} if signature is not None else {}
+    for argument in arguments:
+        if isinstance(argument.value, model.Range):
+            yield f"{prefix}.{argument.name or named.get(id(argument), 'value')}", argument.value
+
+
+# ------------------------------------------------------------------ sampling
+
+
+def strategy(scenario: model.Scenario, space: ParameterSpace | None = None):
+    """A Hypothesis strategy of samples: dicts from parameter name to value (SI units).
+
+    Relations between declared parameters (``keep(b_gap > a_gap + 5m)``) are met by construction
+    where they bound one parameter by others drawn before it; any other relation filters samples.
+    """
+    from hypothesis import assume, strategies as st
+
+    space = space or _space(scenario)
+    parameters = logical_parameters(scenario, space)
+
+    @st.composite
+    def samples(draw):
+        values: Values = {}
+        for parameter in parameters:
+            if parameter.choices:
+                values[parameter.name] = draw(st.sampled_from(parameter.choices))
+                continue
+            low, high = _bounded_by_relations(parameter, space, values)
+            assume(low <= high)
+            step = 1.0 if parameter.integer else STEP
+            first, last = math.ceil(low / step - 1e-9), math.floor(high / step + 1e-9)
+            assume(first <= last)
+            index = draw(st.integers(0, last - first))
+            value = (first + index) * step
+            values[parameter.name] = int(round(value)) if parameter.integer else round(value, 6)
+        assume(space.accepts({k: v for k, v in values.items() if k in space.domains}))
+        return values
+
+    return samples()
+
+
+def _bounded_by_relations(parameter: LogicalParameter, space: ParameterSpace, drawn: Values) -> tuple[float, float]:
+    """The parameter's range, narrowed by every relation that bounds it by parameters already drawn."""
+    low, high = parameter.low, parameter.high
+    if not parameter.declared:
+        return low, high
+    env = space.environment({k: v for k, v in drawn.items() if k in space.domains})
+    for relation in space.relations:
+        atom = relation.expression
+        if not (isinstance(atom, model.Binary) and atom.operator in ("<", "<=", ">", ">=", "==")):
+            continue
+        for this, other, operator in ((atom.left, atom.right, atom.operator), (atom.right, atom.left, _MIRROR[atom.operator])):
+            if not (isinstance(this, model.Name) and this.name == parameter.name):
+                continue
+            try:
+                bound = evaluate(other, env)
+            except EvaluationError:
+                continue
+            if not (isinstance(bound, Interval) and bound.is_point):
+                continue  # depends on a parameter not drawn yet
+            value = bound.low
+            strict = STEP if operator in ("<", ">") and not parameter.integer else (1.0 if operator in ("<", ">") else 0.0)
+            if operator in ("<", "<=", "=="):
+                high = min(high, value - strict)
+            if operator in (">", ">=", "=="):
+                low = max(low, value + strict)
+    return low, high
+
+
+_MIRROR = {"<": ">", "<=": ">=", ">": "<", ">=": "<=", "==": "=="}
+
+
+# ------------------------------------------------------------------ guidance
+
+
+def guided(
+    scenario: model.Scenario,
+    values: Values,
+    resolution: dict[str | None, float],
+    margins: dict[str | None, float],
+    space: ParameterSpace | None = None,
+) -> tuple[model.Scenario, dict[str, object]]:
+    """The scenario the planner solves for a sample: each sampled range narrowed to one cell around its value.
+
+    Returns the scenario with its inline ranges narrowed, and the declared parameters' narrowed
+    ranges (for ``build_automaton(values=...)``). ``resolution`` is the planning grid per dimension
+    (1 m, 1 m/s, 1 s); ``margins`` what the planner keeps inside a range's edges.
+    """
+    space = space or _space(scenario)
+    by_name = {p.name: p for p in logical_parameters(scenario, space)}
+    unknown = sorted(set(values) - set(by_name))
+    if unknown:
+        raise KeyError(f"no logical parameter named {', '.join(map(repr, unknown))}; the scenario has {', '.join(by_name) or 'none'}")
+    declared: dict[str, object] = {}
+    narrowed: dict[SourceLocation, tuple[float, float]] = {}
+    for name, value in values.items():
+        parameter = by_name[name]
+        if parameter.choices or parameter.integer:
+            band: Any = value
+        else:
+            band = _band(parameter, float(value), resolution.get(parameter.dimension, 0.0), margins.get(parameter.dimension, 0.0))
+        if parameter.declared:
+            declared[name] = Interval(band[0], band[1], parameter.dimension) if isinstance(band, tuple) else band
+        else:
+            narrowed[parameter.location] = band if isinstance(band, tuple) else (float(band), float(band))
+    if narrowed:
+        scenario = dataclasses.replace(scenario, behavior=_narrow(scenario.behavior, narrowed))
+    return scenario, declared
+
+
+def _band(parameter: LogicalParameter, value: float, cell: float, margin: float) -> tuple[float, float]:
+    low, high = parameter.low, parameter.high
+    if high - low > 2 * margin:
+        value = min(max(value, low + margin), high - margin)
+    return max(low, value - cell / 2), min(high, value + cell / 2)
+
+
+def _narrow(node: Any, narrowed: dict[SourceLocation, tuple[float, float]]) -> Any:
+    """A copy of a behavior tree with the ranges at the given places narrowed."""
+    if isinstance(node, model.Range):
+        if node.location in narrowed:
+            low, high = narrowed[node.location]
+            return dataclasses.replace(node, low=dataclasses.replace(node.low, value=low), high=dataclasses.replace(node.high, value=high))
+        return node
+    if isinstance(node, tuple):
+        return tuple(_narrow(item, narrowed) for item in node)
+    if dataclasses.is_dataclass(node) and not isinstance(node, (SourceLocation, type)):
+        changes = {f.name: _narrow(getattr(node, f.name), narrowed) for f in dataclasses.fields(node)}
+        return dataclasses.replace(node, **{k: v for k, v in changes.items() if v is not getattr(node, k)})
+    return node
+
+
+# ------------------------------------------------------------------ public helpers
+
+
+def describe_values(parameters: list[LogicalParameter], values: Values) -> list[str]:
+    """``name = value unit (line L)`` for every sampled value, for reports."""
+    by_name = {p.name: p for p in parameters}
+    return [f"{name} = {by_name[name].show(value)} (line {by_name[name].location.line})" for name, value in values.items() if name in by_name]
+
+
+def parameters(path: str | Path, scenario: str | None = None, lanes: int | None = None):
+    """The Hypothesis strategy of a scenario file's logical parameters, for ``@given`` tests.
+
+    ``scenario`` names one of the file's scenarios (default: the first with a behavior).
+    """
+    from .frontend import load_file
+
+    checked = load_file(path, lanes)
+    chosen = _chosen(checked, path, scenario)
+    return strategy(chosen, checked.spaces[chosen.name])
+
+
+def _chosen(checked, path, name: str | None) -> model.Scenario:
+    runnable = [s for s in checked.scenarios if s.behavior is not None]
+    if name is not None:
+        return checked.file.scenario(name)
+    if not runnable:
+        raise ValueError(f"{path} declares no scenario with a behavior")
+    return runnable[0]
+
+
+def values_json(values: Values) -> str:
+    return json.dumps(values, sort_keys=True)
