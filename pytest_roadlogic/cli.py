@@ -4,23 +4,30 @@
     roadlogic check PATH... [--syntax-only] [--lanes N]
     roadlogic automaton FILE.osc [--scenario NAME] [--out FILE.dot] [--lanes N]
     roadlogic plan FILE.osc [--scenario NAME] [--plans N] [--seed S] [--lanes N] [--show-asp]
+    roadlogic replay CASE.json [--out DIR]
+    roadlogic replay FILE.osc [--scenario NAME] [--seed S] [--values JSON | --strategy base --instance K] [--out DIR]
 
 Exit codes of ``run``: 0 the simulation was accepted; 1 it was rejected (or no plan exists);
 2 the input is unusable (a file that does not parse or check, a bad option).
 Exit codes of ``check``: 0 every file is fine; 1 some file has an error; 2 a path does not exist.
 Exit codes of ``automaton``: 0 written; 2 the input is unusable.
 Exit codes of ``plan``: 0 at least one plan; 1 no plan exists; 2 the input is unusable.
+Exit codes of ``replay``: as ``run``.
 """
 
 from __future__ import annotations
 
 import argparse
+import json
 import sys
 import time
 from pathlib import Path
 
 from .frontend import OscError
+from .frontend.errors import Diagnostic, SourceLocation
+from .case import CaseFileError
 from .planning import NoPlanError, PlanningSettings, UnsatisfiableScenario
+from .sampling import UnknownParameter
 
 EXIT_ACCEPTED, EXIT_REJECTED, EXIT_INPUT = 0, 1, 2
 LANES_HELP = "lanes of the road (default: from the scenario: its path_min_driving_lanes/path_max_lanes and the lanes it names, at least 3)"
@@ -33,6 +40,17 @@ def main(argv: list[str] | None = None) -> int:
     run.add_argument("--seed", type=int, default=1, help="fixes planning and simulation (default 1)")
     run.add_argument("--out", type=Path, default=Path("out"), help="artifact directory (default out/)")
     run.add_argument("--tries", type=int, default=5, help="plans to try when the monitor rejects (default 5)")
+    run.add_argument("--values", type=_values, default=None, help='logical parameter values as JSON, e.g. \'{"start_gap": 12.5}\' (SI units)')
+    replay = commands.add_parser("replay", help="run one case again exactly: from the case.json of a failure, or from a file and values")
+    replay.add_argument("case", type=Path, help="a case.json written for a failure, or an .osc file")
+    replay.add_argument("--scenario", help="with an .osc file: the scenario (default: the first)")
+    replay.add_argument("--seed", type=int, default=1, help="with an .osc file: the seed (default 1)")
+    replay.add_argument("--strategy", choices=("refined", "base"), default="refined", help="with an .osc file: how the case was made")
+    replay.add_argument("--values", type=_values, default=None, help="with an .osc file: the sampled values as JSON (refined)")
+    replay.add_argument("--instance", type=int, default=0, help="with an .osc file: which plan, from 0 (base)")
+    replay.add_argument("--lanes", type=lane_count, default=None, help=LANES_HELP)
+    replay.add_argument("--horizon", type=int, default=None, help="planning horizon limit in steps (default 25)")
+    replay.add_argument("--out", type=Path, default=Path("out"), help="artifact directory (default out/)")
     check = commands.add_parser("check", help="parse and check .osc files and folders; print every problem")
     check.add_argument("paths", type=Path, nargs="+", help=".osc files or folders (searched recursively)")
     check.add_argument("--syntax-only", action="store_true", help="stop after parsing (for files written for other tools)")
@@ -44,7 +62,18 @@ def main(argv: list[str] | None = None) -> int:
     plan.add_argument("--seed", type=int, default=1, help="fixes the plans found (default 1)")
     plan.add_argument("--show-asp", action="store_true", help="also print the generated instance program")
     args = parser.parse_args(argv)
-    return {"run": _run, "check": _check, "automaton": _automaton, "plan": _plan}[args.command](args)
+    return {"run": _run, "check": _check, "automaton": _automaton, "plan": _plan, "replay": _replay}[args.command](args)
+
+
+def _values(text: str) -> dict:
+    """A ``--values`` option: a JSON object from parameter names to values."""
+    try:
+        values = json.loads(text)
+    except json.JSONDecodeError as error:
+        raise argparse.ArgumentTypeError(f"not JSON ({error.msg}); write e.g. '{{\"start_gap\": 12.5}}'") from None
+    if not isinstance(values, dict):
+        raise argparse.ArgumentTypeError("give a JSON object of parameter names to values")
+    return values
 
 
 def lane_count(text: str) -> int:
@@ -185,8 +214,14 @@ def _reporting_input_errors(args: argparse.Namespace, action):
     except OscError as error:
         print(error.report(), file=sys.stderr)
         return EXIT_INPUT
+    except UnknownParameter as error:
+        print(f"{args.file}: error: {error}", file=sys.stderr)
+        return EXIT_INPUT
     except KeyError as error:
         print(f"{args.file}: error: no scenario named {error.args[0]!r} in the file", file=sys.stderr)
+        return EXIT_INPUT
+    except CaseFileError as error:
+        print(f"{args.file}: error: {error}", file=sys.stderr)
         return EXIT_INPUT
     except UnsatisfiableScenario as error:
         print(error.report(), file=sys.stderr)
@@ -202,12 +237,45 @@ def _run(args: argparse.Namespace) -> int:
 
     def plan_and_simulate():
         scenario = _load(args)
-        return scenario, run_scenario(scenario, seed=args.seed, max_tries=args.tries)
+        return scenario, run_scenario(scenario, seed=args.seed, max_tries=args.tries, values=args.values)
 
     loaded = _reporting_input_errors(args, plan_and_simulate)
     if isinstance(loaded, int):
         return loaded
+    return _show(*loaded, args.out, args.seed)
+
+
+def _replay(args: argparse.Namespace) -> int:
+    from .case import Case
+
+    def replay():
+        if args.case.suffix == ".json":
+            case = Case.load(args.case)
+        else:
+            from .frontend import load_file
+
+            checked = load_file(args.case, args.lanes)
+            runnable = [s for s in checked.scenarios if s.behavior is not None]
+            name = args.scenario or (runnable[0].name if runnable else None)
+            if name is None:
+                raise OscError([Diagnostic(SourceLocation(str(args.case), 1, 1), "the file declares no scenario with a `do` behavior")])
+            case = Case(str(args.case), name, args.seed, args.strategy, args.values or {}, args.instance, args.lanes, args.horizon)
+        outcome = case.run()
+        return outcome.scenario, outcome
+
+    args.file = args.case
+    loaded = _reporting_input_errors(args, replay)
+    if isinstance(loaded, int):
+        return loaded
     scenario, outcome = loaded
+    return _show(scenario, outcome, args.out, outcome.plan.seed)
+
+
+def _show(scenario, outcome, out: Path, seed: int) -> int:
+    """Write the artifacts of a run and print its stages, verdict and files; the exit code of ``run``."""
+    from .artifacts import write_artifacts
+
+    args = argparse.Namespace(out=out, seed=seed)
     started = time.perf_counter()
     paths = write_artifacts(outcome, args.out)
     outcome.seconds["artifacts"] = time.perf_counter() - started

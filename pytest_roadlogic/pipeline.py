@@ -34,6 +34,7 @@ class Outcome:
     tries: int
     seconds: dict[str, float] = field(default_factory=dict)  # stage -> seconds, summed over tries
     values: dict[str, object] = field(default_factory=dict)  # the sampled logical parameters (refined strategy)
+    instance: int = 0  # its index among the instances of one planner (base strategy)
 
 
 def load_scenario(path: str | Path, name: str | None = None, lanes: int | None = None) -> Scenario:
@@ -93,7 +94,7 @@ def run_instances(
     automaton_seconds = time.perf_counter() - start
     planner = Planner(guide, settings, seed)
     plans = planner.plans(limit=count * max_tries)
-    for _ in range(count):
+    for instance in range(count):
         seconds = {"automaton": automaton_seconds, "planning": 0.0, "simulation": 0.0, "monitoring": 0.0}
         automaton_seconds = 0.0
         outcome = None
@@ -109,7 +110,7 @@ def run_instances(
             start = time.perf_counter()
             verdict = monitor(specification, simulation.trace)
             seconds["monitoring"] += time.perf_counter() - start
-            outcome = Outcome(scenario, specification, plan, simulation, verdict, tries, seconds, dict(values or {}))
+            outcome = Outcome(scenario, specification, plan, simulation, verdict, tries, seconds, dict(values or {}), instance)
             if verdict.accepted:
                 break
         if outcome is None:

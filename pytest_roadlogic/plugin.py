@@ -1,42 +1,68 @@
 """The pytest plugin: every ``.osc`` file is a test module, every scenario in it a test item.
 
-An item runs the pipeline (plan, simulate, monitor, with the paper's bounded retries) and passes
-when the monitor accepts the simulation. A rejection fails the item with the monitor's
-explanation (which guard was not met, when it came closest, with which values) and the paths of
-the artifacts to look at. A file that does not parse is one collection error with the front end's
-message; the other files still run. Collection never runs a solver.
+An item is a property: *every* concrete instance of the scenario can be generated and conforms
+to it. The refined strategy (default) lets Hypothesis sample the logical parameters, runs the
+pipeline (plan, simulate, monitor, with the paper's bounded retries) for each sample, feeds the
+monitor's robustness to ``hypothesis.target`` so the search drifts toward near-failures, and
+shrinks a failure to the simplest values that still fail. The base strategy leaves the
+parameters to the planner and checks its first N different plans.
+
+A failure shows the values, the monitor's or planner's explanation, the artifacts of the shrunk
+case and the command that replays it. A file that does not parse is one collection error with the
+front end's message; the other files still run. Collection never runs a solver.
 """
 
 from __future__ import annotations
 
+import json
 import re
+import time
 from argparse import ArgumentTypeError
+from collections import Counter
 from pathlib import Path
 
 import pytest
 
+from .case import BASE, REFINED, Case
 from .cli import lane_count
 from .frontend import OscError, Scenario, check_file
-from .planning import NoPlanError, UnsatisfiableScenario
+from .planning import NoPlanError, PlanningTimeout, UnsatisfiableScenario
 
 DEFAULT_SEED = 1
 DEFAULT_ARTIFACTS = "roadlogic-artifacts"
+DEFAULT_EXAMPLES = 10
+STAGES = ("automaton", "planning", "simulation", "monitoring", "artifacts")
+
+
+def pytest_addhooks(pluginmanager) -> None:
+    from . import hooks
+
+    pluginmanager.add_hookspecs(hooks)
 
 
 def pytest_addoption(parser: pytest.Parser) -> None:
     group = parser.getgroup("roadlogic", "scenario-based testing with OpenSCENARIO DSL files")
-    group.addoption("--roadlogic-seed", type=int, default=None, help=f"seed fixing planning and simulation (ini: roadlogic_seed; default {DEFAULT_SEED})")
-    group.addoption("--roadlogic-artifacts", default=None, help=f"directory for plans, traces, scenarios and plots (ini: roadlogic_artifacts; default {DEFAULT_ARTIFACTS})")
-    group.addoption("--roadlogic-lanes", type=int, default=None, help="lanes of the road (ini: roadlogic_lanes; default: from each scenario, at least 3)")
-    parser.addini("roadlogic_seed", "seed fixing planning and simulation", default=str(DEFAULT_SEED))
-    parser.addini("roadlogic_artifacts", "directory for the artifacts of every scenario run", default=DEFAULT_ARTIFACTS)
-    parser.addini("roadlogic_lanes", "lanes of the road (default: from each scenario)", default="")
+
+    def option(name: str, help: str, default: str, **kwargs) -> None:
+        ini = f"roadlogic_{name.replace('-', '_')}"
+        group.addoption(f"--roadlogic-{name}", default=None, help=f"{help} (ini: {ini}; default {default or 'see README'})", **kwargs)
+        parser.addini(ini, help, default=default)
+
+    option("strategy", "refined: sample the logical parameters with Hypothesis; base: the planner's first N plans", REFINED, choices=(REFINED, BASE))
+    option("examples", "samples (refined) or plans (base) per scenario; default the Hypothesis profile's max_examples when --hypothesis-profile is given, else", str(DEFAULT_EXAMPLES))
+    option("seed", "seed fixing sampling, planning and simulation", str(DEFAULT_SEED))
+    option("artifacts", "directory for the artifacts of failing cases", DEFAULT_ARTIFACTS)
+    option("lanes", "lanes of the road for every scenario (default: each scenario's own)", "")
+    option("horizon", "planning horizon limit in steps", "25")
+    option("plan-timeout", "seconds one planning may take", "60")
+    option("sim-timeout", "seconds (wall clock) one simulation may take", "120")
 
 
 def pytest_configure(config: pytest.Config) -> None:
     config.addinivalue_line("markers", "roadlogic: a scenario collected from an .osc file")
     config.addinivalue_line("markers", "slow: a long scenario or suite; deselect with -m 'not slow'")
     _option(config, "lanes", _whole_or_none)  # a bad lanes value stops the session before collection
+    config.pluginmanager.register(SessionSummary(), "roadlogic-summary")
 
 
 def pytest_collect_file(file_path: Path, parent: pytest.Collector):
@@ -47,7 +73,7 @@ def pytest_collect_file(file_path: Path, parent: pytest.Collector):
 
 def _option(config: pytest.Config, name: str, cast=str):
     value = config.getoption(f"--roadlogic-{name}")
-    return cast(value if value is not None else config.getini(f"roadlogic_{name}"))
+    return cast(value if value is not None else config.getini(f"roadlogic_{name.replace('-', '_')}"))
 
 
 def _whole_or_none(text) -> int | None:
@@ -79,54 +105,209 @@ class OscFile(pytest.File):
             self.warn(OscWarning(OscError([warning], sources=checked.sources).report()))
         for scenario in checked.scenarios:
             if scenario.behavior is not None:
-                item = ScenarioItem.from_parent(self, name=scenario.name, scenario=scenario)
+                item = ScenarioItem.from_parent(self, name=scenario.name, scenario=scenario, space=checked.spaces[scenario.name])
                 item.add_marker("roadlogic")
                 yield item
 
 
-class ScenarioRejected(Exception):
-    """The monitor rejected every simulation the pipeline tried."""
+class ScenarioFailed(Exception):
+    """One concrete case of the scenario failed: rejected by the monitor, or without a plan or in time.
+
+    Carries what the report needs; the artifacts are written once, for the final (shrunk) case.
+    """
+
+    def __init__(self, case: Case, why: str, outcome=None, kind: str = "rejected") -> None:
+        super().__init__(why)
+        self.case, self.why, self.outcome, self.kind = case, why, outcome, kind
 
 
 class ScenarioItem(pytest.Item):
-    def __init__(self, *, scenario: Scenario, **kwargs) -> None:
+    def __init__(self, *, scenario: Scenario, space=None, **kwargs) -> None:
         super().__init__(**kwargs)
         self.scenario = scenario
+        self.space = space
+        self.counts: Counter[str] = Counter()
+        self.seconds: Counter[str] = Counter()
+
+    # ---------------------------------------------------------------- running
 
     def runtest(self) -> None:
-        from .artifacts import write_artifacts
-        from .pipeline import run_scenario
-
         config = self.config
-        seed = _option(config, "seed", int)
-        outcome = run_scenario(self.scenario, seed=seed)
-        directory = Path(config.rootpath) / _option(config, "artifacts") / _safe_name(self.nodeid)
-        # the animation takes seconds to render: only for a scenario that failed, where it helps
-        paths = write_artifacts(outcome, directory, animation=not outcome.verdict.accepted)
-        self.user_properties.append(("accepted", outcome.verdict.accepted))
-        self.user_properties.append(("robustness", round(outcome.verdict.robustness, 3)))
-        self.user_properties.append(("seed", seed))
-        if not outcome.verdict.accepted:
-            lines = [
-                f"scenario {self.scenario.name} was not reproduced in simulation ({outcome.tries} plans tried, seed {seed})",
-                outcome.verdict.explain(),
-                "artifacts of the last try:",
-                *(f"  {kind}: {path}" for kind, path in paths.items()),
-                f"replay: roadlogic run {self.path} --scenario {self.scenario.name} --seed {seed}",
-            ]
-            raise ScenarioRejected("\n".join(lines))
+        strategy = _option(config, "strategy")
+        self.user_properties += [("strategy", strategy), ("seed", _option(config, "seed", int))]
+        try:
+            if strategy == BASE:
+                self._base()
+            else:
+                self._refined()
+        except ScenarioFailed as failure:
+            self._report_failure(failure)
+        finally:
+            self.user_properties += [(k, self.counts[k]) for k in ("examples", "accepted", "rejected", "no_plan", "timed_out")]
+            self.user_properties += [(f"seconds_{stage}", round(self.seconds[stage], 3)) for stage in STAGES]
+
+    def _case(self, **kwargs) -> Case:
+        config = self.config
+        return Case(
+            path=str(self.path), scenario=self.scenario.name, seed=_option(config, "seed", int),
+            lanes=_option(config, "lanes", _whole_or_none), max_horizon=_option(config, "horizon", int),
+            planning_time_limit=_option(config, "plan-timeout", float), simulation_time_limit=_option(config, "sim-timeout", float),
+            **kwargs,
+        )
+
+    def _drivers(self):
+        hook = self.config.hook.pytest_roadlogic_driver
+        return lambda vehicle: hook(config=self.config, scenario=self.scenario, vehicle=vehicle)
+
+    def _examples(self) -> int:
+        value = self.config.getoption("--roadlogic-examples")
+        if value is None and self.config.getoption("hypothesis_profile", None) is not None:
+            from hypothesis import settings
+
+            return settings().max_examples
+        return int(value if value is not None else self.config.getini("roadlogic_examples"))
+
+    def _refined(self) -> None:
+        import hypothesis
+        from hypothesis import HealthCheck
+
+        from .pipeline import run_scenario
+        from .sampling import strategy
+
+        drivers = self._drivers()
+
+        def example(values):
+            case = self._case(values=values)
+            self.counts["examples"] += 1
+            try:
+                outcome = run_scenario(
+                    self.scenario, seed=case.seed, settings=case.settings(), drivers=drivers, values=values, space=self.space,
+                    simulation_time_limit=case.simulation_time_limit,
+                )
+            except PlanningTimeout as error:
+                self.counts["timed_out"] += 1
+                raise ScenarioFailed(case, f"planning timed out: {error}", kind="timed out") from None
+            except UnsatisfiableScenario as error:
+                self.counts["no_plan"] += 1
+                raise ScenarioFailed(case, error.report(), kind="no plan") from None
+            except NoPlanError as error:
+                self.counts["no_plan"] += 1
+                raise ScenarioFailed(case, f"no plan: {error}", kind="no plan") from None
+            self._count(outcome)
+            hypothesis.target(-outcome.verdict.robustness, label="closeness to failure (-robustness)")
+            if not outcome.verdict.accepted:
+                raise ScenarioFailed(case, outcome.verdict.explain(), outcome)
+
+        # one database entry per item, though every item runs this same function (the attribute
+        # Hypothesis's own pytest integration sets for parametrized tests)
+        example._hypothesis_internal_add_digest = self.nodeid.encode()
+        profile = hypothesis.settings()
+        settings = hypothesis.settings(
+            profile, max_examples=self._examples(), deadline=None, print_blob=False,
+            suppress_health_check=[*profile.suppress_health_check, HealthCheck.too_slow, HealthCheck.filter_too_much],
+        )
+        test = hypothesis.seed(_option(self.config, "seed", int))(settings(hypothesis.given(strategy(self.scenario, self.space))(example)))
+        test()
+
+    def _base(self) -> None:
+        from .pipeline import run_instances
+
+        case = self._case(strategy=BASE)
+        try:
+            for outcome in run_instances(
+                self.scenario, self._examples(), seed=case.seed, settings=case.settings(), drivers=self._drivers(),
+                space=self.space, simulation_time_limit=case.simulation_time_limit,
+            ):
+                self.counts["examples"] += 1
+                self._count(outcome)
+                if not outcome.verdict.accepted:
+                    raise ScenarioFailed(self._case(strategy=BASE, instance=outcome.instance), outcome.verdict.explain(), outcome)
+        except PlanningTimeout as error:
+            self.counts["timed_out"] += 1
+            raise ScenarioFailed(case, f"planning timed out: {error}", kind="timed out") from None
+        except UnsatisfiableScenario as error:
+            self.counts["no_plan"] += 1
+            raise ScenarioFailed(case, error.report(), kind="no plan") from None
+
+    def _count(self, outcome) -> None:
+        self.counts["accepted" if outcome.verdict.accepted else "rejected"] += 1
+        for stage in STAGES:
+            self.seconds[stage] += outcome.seconds.get(stage, 0.0)
+
+    # ---------------------------------------------------------------- reporting
+
+    def _report_failure(self, failure: ScenarioFailed) -> None:
+        from .artifacts import write_artifacts
+        from .sampling import describe_values, logical_parameters
+
+        case = failure.case
+        directory = Path(self.config.rootpath) / _option(self.config, "artifacts") / _safe_name(self.nodeid)
+        paths: dict[str, Path] = {}
+        if failure.outcome is not None:
+            started = time.perf_counter()
+            paths = write_artifacts(failure.outcome, directory)
+            self.seconds["artifacts"] += time.perf_counter() - started
+        paths["case"] = case.save(directory / "case.json")
+        what = f"{failure.kind} at" if case.strategy == REFINED else f"{failure.kind} at instance {case.instance} of"
+        lines = [f"scenario {self.scenario.name}: {what} these values (seed {case.seed}, {self.counts['examples']} examples run):"]
+        if case.values:
+            lines += [f"  {line}" for line in describe_values(logical_parameters(self.scenario, self.space), case.values)]
+        else:
+            lines.append("  (no logical parameters: the planner chose every value)")
+        if failure.outcome is not None:
+            lines.append(f"after {failure.outcome.tries} plans tried, the last simulation was {failure.why}")
+        else:
+            lines.append(failure.why)
+        lines += ["artifacts:", *(f"  {kind}: {path}" for kind, path in paths.items())]
+        lines.append(f"replay: {case.command(paths['case'])}")
+        lines.append(f"    or: {case.command()}")
+        self.user_properties.append(("verdict", failure.kind))
+        self.user_properties.append(("failing_values", json.dumps(case.values, sort_keys=True)))
+        self.user_properties.append(("explanation", failure.why.splitlines()[0] if failure.why else ""))
+        raise ScenarioFailed(case, "\n".join(lines), failure.outcome, failure.kind)
 
     def repr_failure(self, excinfo, style=None):
-        if isinstance(excinfo.value, (ScenarioRejected, OscError)):
+        if isinstance(excinfo.value, ScenarioFailed):
             return str(excinfo.value)
-        if isinstance(excinfo.value, UnsatisfiableScenario):
-            return excinfo.value.report()
-        if isinstance(excinfo.value, NoPlanError):
-            return f"{self.path}: scenario {self.scenario.name}: no plan: {excinfo.value}"
+        if isinstance(excinfo.value, OscError):
+            return str(excinfo.value)
         return super().repr_failure(excinfo, style=style)
 
     def reportinfo(self):
         return self.path, self.scenario.location.line - 1, f"scenario {self.scenario.name}"
+
+
+class SessionSummary:
+    """Totals over every scenario item, also from pytest-xdist workers (their reports carry the counts)."""
+
+    def __init__(self) -> None:
+        self.items = 0
+        self.counts: Counter[str] = Counter()
+
+    @pytest.hookimpl
+    def pytest_runtest_logreport(self, report) -> None:
+        if report.when != "call":
+            return
+        properties = dict(report.user_properties)
+        if "strategy" not in properties:
+            return
+        self.items += 1
+        for key, value in properties.items():
+            if isinstance(value, (int, float)) and not isinstance(value, bool) and key != "seed":
+                self.counts[key] += value
+
+    @pytest.hookimpl
+    def pytest_terminal_summary(self, terminalreporter) -> None:
+        if not self.items:
+            return
+        c = self.counts
+        seconds = ", ".join(f"{stage} {c[f'seconds_{stage}']:.1f} s" for stage in STAGES)
+        terminalreporter.write_sep("-", "roadlogic")
+        terminalreporter.write_line(
+            f"{self.items} scenarios, {c['examples']} examples: {c['accepted']} accepted, {c['rejected']} rejected, "
+            f"{c['no_plan']} without a plan, {c['timed_out']} timed out"
+        )
+        terminalreporter.write_line(f"time per stage: {seconds}")
 
 
 def _safe_name(nodeid: str) -> str:

@@ -36,6 +36,10 @@ STEP = 0.1
 Values = dict[str, Any]
 
 
+class UnknownParameter(ValueError):
+    """A sample names a value the scenario does not leave open."""
+
+
 @dataclass(frozen=True)
 class LogicalParameter:
     """One open value of a scenario: its name in samples and reports, and the range it is drawn from."""
@@ -206,7 +210,7 @@ def guided(
     by_name = {p.name: p for p in logical_parameters(scenario, space)}
     unknown = sorted(set(values) - set(by_name))
     if unknown:
-        raise KeyError(f"no logical parameter named {', '.join(map(repr, unknown))}; the scenario has {', '.join(by_name) or 'none'}")
+        raise UnknownParameter(f"no logical parameter named {', '.join(map(repr, unknown))}; the scenario has {', '.join(by_name) or 'none'}")
     declared: dict[str, object] = {}
     narrowed: dict[SourceLocation, tuple[float, float]] = {}
     for name, value in values.items():

@@ -1,0 +1,13 @@
+"""Hooks a user's ``conftest.py`` can implement to take part in scenario runs."""
+
+import pytest
+
+
+@pytest.hookspec(firstresult=True)
+def pytest_roadlogic_driver(config, scenario, vehicle):
+    """Return the driver of ``vehicle`` in ``scenario`` (an object with the
+    ``pytest_roadlogic.simulation.Driver`` methods ``start`` and ``plan``), or ``None`` to let the
+    default frenetix driver drive it. This is where the vehicle under test gets its own planner.
+
+    Called once per vehicle and simulation, so a driver may keep state for one run.
+    """
