@@ -33,6 +33,7 @@ class Case:
     max_horizon: int | None = None
     planning_time_limit: float | None = None
     simulation_time_limit: float | None = None
+    max_tries: int = 5
 
     def settings(self):
         from .planning import PlanningSettings
@@ -50,7 +51,7 @@ class Case:
         count = self.instance + 1 if self.strategy == BASE else 1
         outcome = None
         for outcome in run_instances(
-            scenario, count, seed=self.seed, settings=self.settings(), drivers=drivers, values=self.values or None,
+            scenario, count, seed=self.seed, settings=self.settings(), max_tries=self.max_tries, drivers=drivers, values=self.values or None,
             space=checked.spaces[scenario.name], simulation_time_limit=self.simulation_time_limit,
         ):
             pass
@@ -66,6 +67,7 @@ class Case:
     def save(self, path: str | Path) -> Path:
         from .artifacts import write_text
 
+        Path(path).parent.mkdir(parents=True, exist_ok=True)
         return write_text(Path(path), self.to_json())
 
     @classmethod
@@ -86,7 +88,7 @@ class Case:
             parts += ["--strategy", BASE, "--instance", str(self.instance)]
         if self.values:
             parts += ["--values", json.dumps(self.values, sort_keys=True)]
-        for option, value in (("--lanes", self.lanes), ("--horizon", self.max_horizon)):
+        for option, value in (("--lanes", self.lanes), ("--horizon", self.max_horizon), ("--tries", self.max_tries)):
             if value is not None:
                 parts += [option, str(value)]
         return shlex.join(parts)

@@ -50,6 +50,7 @@ def main(argv: list[str] | None = None) -> int:
     replay.add_argument("--instance", type=int, default=0, help="with an .osc file: which plan, from 0 (base)")
     replay.add_argument("--lanes", type=lane_count, default=None, help=LANES_HELP)
     replay.add_argument("--horizon", type=int, default=None, help="planning horizon limit in steps (default 25)")
+    replay.add_argument("--tries", type=int, default=5, help="plans to try when the monitor rejects (default 5)")
     replay.add_argument("--out", type=Path, default=Path("out"), help="artifact directory (default out/)")
     check = commands.add_parser("check", help="parse and check .osc files and folders; print every problem")
     check.add_argument("paths", type=Path, nargs="+", help=".osc files or folders (searched recursively)")
@@ -259,7 +260,7 @@ def _replay(args: argparse.Namespace) -> int:
             name = args.scenario or (runnable[0].name if runnable else None)
             if name is None:
                 raise OscError([Diagnostic(SourceLocation(str(args.case), 1, 1), "the file declares no scenario with a `do` behavior")])
-            case = Case(str(args.case), name, args.seed, args.strategy, args.values or {}, args.instance, args.lanes, args.horizon)
+            case = Case(str(args.case), name, args.seed, args.strategy, args.values or {}, args.instance, args.lanes, args.horizon, max_tries=args.tries)
         outcome = case.run()
         return outcome.scenario, outcome
 

@@ -53,6 +53,8 @@ def pytest_addoption(parser: pytest.Parser) -> None:
     option("seed", "seed fixing sampling, planning and simulation", str(DEFAULT_SEED))
     option("artifacts", "directory for the artifacts of failing cases", DEFAULT_ARTIFACTS)
     option("lanes", "lanes of the road for every scenario (default: each scenario's own)", "")
+    option("tries", "plans to try per case when the monitor rejects the simulation", "5")
+    option("replay", "run only the case in this case.json (written for a failure), with this session's drivers", "")
     option("horizon", "planning horizon limit in steps", "25")
     option("plan-timeout", "seconds one planning may take", "60")
     option("sim-timeout", "seconds (wall clock) one simulation may take", "120")
@@ -136,7 +138,9 @@ class ScenarioItem(pytest.Item):
         strategy = _option(config, "strategy")
         self.user_properties += [("strategy", strategy), ("seed", _option(config, "seed", int))]
         try:
-            if strategy == BASE:
+            if _option(config, "replay"):
+                self._replay(Case.load(_option(config, "replay")))
+            elif strategy == BASE:
                 self._base()
             else:
                 self._refined()
@@ -152,7 +156,7 @@ class ScenarioItem(pytest.Item):
             path=str(self.path), scenario=self.scenario.name, seed=_option(config, "seed", int),
             lanes=_option(config, "lanes", _whole_or_none), max_horizon=_option(config, "horizon", int),
             planning_time_limit=_option(config, "plan-timeout", float), simulation_time_limit=_option(config, "sim-timeout", float),
-            **kwargs,
+            max_tries=_option(config, "tries", int), **kwargs,
         )
 
     def _drivers(self):
@@ -181,8 +185,8 @@ class ScenarioItem(pytest.Item):
             self.counts["examples"] += 1
             try:
                 outcome = run_scenario(
-                    self.scenario, seed=case.seed, settings=case.settings(), drivers=drivers, values=values, space=self.space,
-                    simulation_time_limit=case.simulation_time_limit,
+                    self.scenario, seed=case.seed, settings=case.settings(), max_tries=case.max_tries, drivers=drivers, values=values,
+                    space=self.space, simulation_time_limit=case.simulation_time_limit,
                 )
             except PlanningTimeout as error:
                 self.counts["timed_out"] += 1
@@ -215,7 +219,7 @@ class ScenarioItem(pytest.Item):
         case = self._case(strategy=BASE)
         try:
             for outcome in run_instances(
-                self.scenario, self._examples(), seed=case.seed, settings=case.settings(), drivers=self._drivers(),
+                self.scenario, self._examples(), seed=case.seed, settings=case.settings(), max_tries=case.max_tries, drivers=self._drivers(),
                 space=self.space, simulation_time_limit=case.simulation_time_limit,
             ):
                 self.counts["examples"] += 1
@@ -228,6 +232,26 @@ class ScenarioItem(pytest.Item):
         except UnsatisfiableScenario as error:
             self.counts["no_plan"] += 1
             raise ScenarioFailed(case, error.report(), kind="no plan") from None
+
+    def _replay(self, case: Case) -> None:
+        """The one case of a case file, when it is this item's (other items are skipped)."""
+        if Path(case.path).resolve() != self.path.resolve() or case.scenario != self.scenario.name:
+            pytest.skip(f"--roadlogic-replay runs {case.path}::{case.scenario} only")
+        self.counts["examples"] += 1
+        try:
+            outcome = case.run(drivers=self._drivers())
+        except PlanningTimeout as error:
+            self.counts["timed_out"] += 1
+            raise ScenarioFailed(case, f"planning timed out: {error}", kind="timed out") from None
+        except UnsatisfiableScenario as error:
+            self.counts["no_plan"] += 1
+            raise ScenarioFailed(case, error.report(), kind="no plan") from None
+        except NoPlanError as error:
+            self.counts["no_plan"] += 1
+            raise ScenarioFailed(case, f"no plan: {error}", kind="no plan") from None
+        self._count(outcome)
+        if not outcome.verdict.accepted:
+            raise ScenarioFailed(case, outcome.verdict.explain(), outcome)
 
     def _count(self, outcome) -> None:
         self.counts["accepted" if outcome.verdict.accepted else "rejected"] += 1
@@ -259,7 +283,8 @@ class ScenarioItem(pytest.Item):
         else:
             lines.append(failure.why)
         lines += ["artifacts:", *(f"  {kind}: {path}" for kind, path in paths.items())]
-        lines.append(f"replay: {case.command(paths['case'])}")
+        lines.append(f"replay: pytest '{self.nodeid}' --roadlogic-replay {paths['case']}   (with this session's drivers)")
+        lines.append(f"    or: {case.command(paths['case'])}")
         lines.append(f"    or: {case.command()}")
         self.user_properties.append(("verdict", failure.kind))
         self.user_properties.append(("failing_values", json.dumps(case.values, sort_keys=True)))

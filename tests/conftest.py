@@ -6,7 +6,7 @@ from pytest_roadlogic.automaton import build_automaton
 from pytest_roadlogic.frontend import check_file
 
 # The corpus is data for test_corpus.py, not scenarios to simulate.
-collect_ignore = ["corpus"]
+collect_ignore = ["corpus", "scenarios"]
 
 ROOT = Path(__file__).resolve().parent.parent
 OVERTAKE = ROOT / "scenarios" / "overtake.osc"

@@ -1,0 +1,145 @@
+"""The pytest plugin as a user meets it: collection, sampling and shrinking, reports, replay, hooks, xdist.
+
+Each test runs pytest in a subprocess on scenario files in a temporary directory (pytester), with
+few examples and a short horizon so that the suite stays quick.
+"""
+
+import json
+import re
+import subprocess
+import sys
+import xml.etree.ElementTree as ET
+
+import pytest
+
+from tests.conftest import ROOT
+
+pytest_plugins = ["pytester"]
+
+SCENARIOS = ROOT / "scenarios"
+SQUEEZE = ROOT / "tests" / "scenarios" / "squeeze.osc"
+QUIET = ["-p", "no:cacheprovider", "-p", "no:randomly"]
+
+
+def copy(pytester, *paths):
+    for path in paths:
+        (pytester.path / path.name).write_text(path.read_text())
+
+
+def test_collect_only_lists_one_item_per_scenario_and_never_plans(pytester):
+    pytester.makefile(".osc", two=SQUEEZE.read_text() + "\n" + SQUEEZE.read_text().replace("scenario traffic.squeeze", "scenario traffic.other"))
+    # planning during collection would raise here
+    pytester.makeconftest("import pytest_roadlogic.planning.solver as s\ns.Planner.plans = None\n")
+    result = pytester.runpytest_subprocess("--collect-only", "-q", *QUIET)
+    assert result.ret == 0, result.stdout.str()
+    result.stdout.fnmatch_lines(["two.osc::squeeze", "two.osc::other"])
+
+
+def test_a_band_of_failing_values_shrinks_to_its_boundary_and_replays(pytester):
+    # the middle car fits between back and front (30 m apart, 8 m between centres) only for gaps
+    # up to 22.5 m (or from 38 m): Hypothesis must find the band and shrink to its lower edge
+    copy(pytester, SQUEEZE)
+    result = pytester.runpytest_subprocess("--roadlogic-horizon", "6", "--roadlogic-examples", "10", *QUIET)
+    result.assert_outcomes(failed=1)
+    report = result.stdout.str()
+    gap = float(re.search(r"gap = ([\d.]+) m \(line 7\)", report).group(1))
+    assert 22.0 <= gap <= 24.0, f"the shrunk gap {gap} m is not at the band's edge (22.5 m):\n{report}"
+    assert "no plan at these values" in report and "cannot hold together" in report
+    case_file = pytester.path / "roadlogic-artifacts" / "squeeze.osc_squeeze" / "case.json"
+    assert f"roadlogic replay {case_file}" in report
+    assert json.loads(case_file.read_text())["values"]["gap"] == gap
+    replay = subprocess.run([sys.executable, "-m", "pytest_roadlogic.cli", "replay", str(case_file), "--out", str(pytester.path / "r")],
+                            capture_output=True, text=True)
+    assert replay.returncode == 1, replay.stdout + replay.stderr
+    assert f"{gap - 0.5:g} <= p(middle) - p(back)" in replay.stderr, "replay plans the same narrowed scenario"
+
+
+DRIVER_CONFTEST = f"""
+import sys
+sys.path.insert(0, {str(ROOT)!r})
+from tests.drivers import NeverChangesLane
+
+def pytest_roadlogic_driver(config, scenario, vehicle):
+    return NeverChangesLane() if vehicle == "v1" else None
+"""
+
+
+def test_the_driver_hook_drives_the_vehicle_under_test_and_a_bad_one_fails_with_a_replayable_report(pytester):
+    copy(pytester, SCENARIOS / "overtake.osc")
+    pytester.makeconftest(DRIVER_CONFTEST)
+    result = pytester.runpytest_subprocess("--roadlogic-examples", "2", "--roadlogic-tries", "1", *QUIET)
+    result.assert_outcomes(failed=1)
+    report = result.stdout.str()
+    assert "scenario overtake: rejected at these values" in report
+    assert "A.position.distance = " in report, "the failing values are listed"
+    assert "rejected (robustness" in report, "the monitor's explanation is shown"
+    artifacts = pytester.path / "roadlogic-artifacts" / "overtake.osc_overtake"
+    for name in ("plan.json", "trace.csv", "scenario.xml", "trajectories.png", "simulation.gif", "case.json"):
+        assert (artifacts / name).is_file(), name
+    assert f"pytest 'overtake.osc::overtake' --roadlogic-replay {artifacts / 'case.json'}" in report
+
+    # the case replays exactly, with the same driver: same plan, same trace
+    from pytest_roadlogic.case import Case
+    from tests.drivers import NeverChangesLane
+
+    outcome = Case.load(artifacts / "case.json").run(drivers=lambda v: NeverChangesLane() if v == "v1" else None)
+    assert json.loads(outcome.plan.to_json())["states"] == json.loads((artifacts / "plan.json").read_text())["states"]
+    assert outcome.simulation.trace.to_csv() == (artifacts / "trace.csv").read_text()
+    assert not outcome.verdict.accepted
+
+    again = pytester.runpytest_subprocess("--roadlogic-replay", str(artifacts / "case.json"), *QUIET)
+    again.assert_outcomes(failed=1)
+    assert "1 examples" in again.stdout.str()
+
+
+def test_ini_options_the_base_strategy_the_summary_and_junit_properties(pytester):
+    copy(pytester, SCENARIOS / "follow.osc")
+    pytester.makeini("[pytest]\nroadlogic_strategy = base\nroadlogic_examples = 2\n")
+    result = pytester.runpytest_subprocess("--junitxml", "junit.xml", *QUIET)
+    result.assert_outcomes(passed=1)
+    result.stdout.fnmatch_lines(["*1 scenarios, 2 examples: 2 accepted, 0 rejected, 0 without a plan, 0 timed out*", "time per stage: *"])
+    properties = {p.get("name"): p.get("value") for p in ET.parse(pytester.path / "junit.xml").iter("property")}
+    assert properties["strategy"] == "base" and properties["examples"] == "2" and properties["accepted"] == "2"
+
+
+def test_an_error_inside_one_example_fails_that_item_only(pytester):
+    copy(pytester, SCENARIOS / "follow.osc", SCENARIOS / "change_lane.osc")
+    pytester.makeconftest(
+        "def pytest_roadlogic_driver(config, scenario, vehicle):\n"
+        "    if scenario.name == 'follow':\n"
+        "        raise RuntimeError('the driver under test crashed')\n"
+    )
+    result = pytester.runpytest_subprocess("--roadlogic-examples", "1", *QUIET)
+    result.assert_outcomes(failed=1, passed=1)
+    assert "the driver under test crashed" in result.stdout.str()
+
+
+def test_pytest_xdist_gives_the_same_outcomes_as_a_serial_run(pytester):
+    copy(pytester, SCENARIOS / "follow.osc", SCENARIOS / "change_lane.osc", SQUEEZE)
+    options = ["--roadlogic-examples", "3", "--roadlogic-horizon", "6", "-rA", *QUIET]
+    serial = pytester.runpytest_subprocess(*options)
+    parallel = pytester.runpytest_subprocess("-n", "2", *options)
+
+    def outcomes(result):
+        lines = result.stdout.lines
+        verdicts = sorted(line.split(" - ")[0] for line in lines if line.startswith(("PASSED", "FAILED")))
+        summary = [line for line in lines if " scenarios, " in line]
+        return verdicts, summary
+
+    assert outcomes(serial) == outcomes(parallel)
+    assert outcomes(serial)[0] == ["FAILED squeeze.osc::squeeze", "PASSED change_lane.osc::change_lane", "PASSED follow.osc::follow"]
+
+
+def test_the_strategy_is_public_for_ordinary_given_tests():
+    from hypothesis import given, settings
+
+    import pytest_roadlogic
+
+    @settings(max_examples=25, deadline=None)
+    @given(pytest_roadlogic.parameters(SCENARIOS / "overtake.osc"))
+    def check(values):
+        assert set(values) == {"A.position.distance", "B.position.distance", "C.position.distance"}
+        assert 10 <= values["A.position.distance"] <= 20
+        assert 8 <= values["C.position.distance"] <= 13
+
+    check()
