@@ -17,6 +17,7 @@ from __future__ import annotations
 import json
 import re
 import time
+from dataclasses import replace
 from argparse import ArgumentTypeError
 from collections import Counter
 from pathlib import Path
@@ -118,9 +119,10 @@ class ScenarioFailed(Exception):
     Carries what the report needs; the artifacts are written once, for the final (shrunk) case.
     """
 
-    def __init__(self, case: Case, why: str, outcome=None, kind: str = "rejected") -> None:
+    def __init__(self, case: Case, why: str, outcome=None, kind: str = "rejected", explain: bool = False) -> None:
         super().__init__(why)
         self.case, self.why, self.outcome, self.kind = case, why, outcome, kind
+        self.explain = explain  # the planner was not asked why there is no plan: ask for the report
 
 
 class ScenarioItem(pytest.Item):
@@ -185,7 +187,8 @@ class ScenarioItem(pytest.Item):
             self.counts["examples"] += 1
             try:
                 outcome = run_scenario(
-                    self.scenario, seed=case.seed, settings=case.settings(), max_tries=case.max_tries, drivers=drivers, values=values,
+                    self.scenario, seed=case.seed, settings=replace(case.settings(), explain_unsatisfiable=False), max_tries=case.max_tries,
+                    drivers=drivers, values=values,
                     space=self.space, simulation_time_limit=case.simulation_time_limit,
                 )
             except PlanningTimeout as error:
@@ -196,7 +199,7 @@ class ScenarioItem(pytest.Item):
                 raise ScenarioFailed(case, error.report(), kind="no plan") from None
             except NoPlanError as error:
                 self.counts["no_plan"] += 1
-                raise ScenarioFailed(case, f"no plan: {error}", kind="no plan") from None
+                raise ScenarioFailed(case, f"no plan: {error}", kind="no plan", explain=True) from None
             self._count(outcome)
             hypothesis.target(-outcome.verdict.robustness, label="closeness to failure (-robustness)")
             if not outcome.verdict.accepted:
@@ -207,7 +210,8 @@ class ScenarioItem(pytest.Item):
         example._hypothesis_internal_add_digest = self.nodeid.encode()
         profile = hypothesis.settings()
         settings = hypothesis.settings(
-            profile, max_examples=self._examples(), deadline=None, print_blob=False,
+            # one failure per item: the report is about its shrunk case, whatever kind it is
+            profile, max_examples=self._examples(), deadline=None, print_blob=False, report_multiple_bugs=False,
             suppress_health_check=[*profile.suppress_health_check, HealthCheck.too_slow, HealthCheck.filter_too_much],
         )
         test = hypothesis.seed(_option(self.config, "seed", int))(settings(hypothesis.given(strategy(self.scenario, self.space))(example)))
@@ -265,6 +269,8 @@ class ScenarioItem(pytest.Item):
         from .sampling import describe_values, logical_parameters
 
         case = failure.case
+        if failure.explain:
+            failure.why = _why_no_plan(case, failure.why)
         directory = Path(self.config.rootpath) / _option(self.config, "artifacts") / _safe_name(self.nodeid)
         paths: dict[str, Path] = {}
         if failure.outcome is not None:
@@ -333,6 +339,17 @@ class SessionSummary:
             f"{c['no_plan']} without a plan, {c['timed_out']} timed out"
         )
         terminalreporter.write_line(f"time per stage: {seconds}")
+
+
+def _why_no_plan(case: Case, fallback: str) -> str:
+    """The planner's explanation of a case without a plan: the constraints that cannot hold together."""
+    try:
+        case.run()
+    except UnsatisfiableScenario as error:
+        return error.report()
+    except NoPlanError:
+        pass
+    return fallback
 
 
 def _safe_name(nodeid: str) -> str:

@@ -3,7 +3,6 @@
 import json
 import subprocess
 import sys
-import textwrap
 
 from tests.conftest import OVERTAKE, ROOT
 
@@ -60,45 +59,12 @@ def test_pytest_collects_osc_files_runs_them_and_reports_broken_ones(tmp_path):
     )
     assert "1 passed" in result.stdout and "2 errors" in result.stdout, result.stdout
     assert "broken.osc:2:" in result.stdout
-    assert (tmp_path / "art").is_dir()
+    assert not (tmp_path / "art").exists(), "artifacts are written for failing cases only"
     # a checker error is reported at collection with the same words as `roadlogic check`
     check = run_cli("check", str(tmp_path / "unknown.osc"))
     first_line = check.stdout.splitlines()[0]
     assert first_line.endswith("unknown.osc:4:19: error: unknown actor 'v7'")
     assert first_line in result.stdout
-
-
-def test_a_rejected_scenario_fails_with_the_guard_the_time_and_the_values(tmp_path):
-    # The plan is fine, but drivers that never change lane cannot realise it. (Every vehicle gets
-    # one: the overtake as written also accepts v2 moving right, the paper's "unknown".)
-    (tmp_path / "overtake.osc").write_text(OVERTAKE.read_text())
-    (tmp_path / "conftest.py").write_text(textwrap.dedent('''
-        import pytest_roadlogic.pipeline as pipeline
-        from pytest_roadlogic.simulation.driver import FrenetixDriver
-
-        class LaneKeeper(FrenetixDriver):
-            """Tracks the plan longitudinally but never leaves its starting lane."""
-            def start(self, vehicle, reference, road, dt):
-                super().start(vehicle, reference, road, dt)
-                lane_y = road.center_y(reference.waypoints[0].lane)
-                self.reference.d = lambda t: lane_y + 0 * t
-
-        original = pipeline.run_scenario
-        def run_scenario(scenario, **kwargs):
-            kwargs["drivers"] = lambda v: LaneKeeper()
-            kwargs["max_tries"] = 1
-            return original(scenario, **kwargs)
-        pipeline.run_scenario = run_scenario
-    '''))
-    result = subprocess.run(
-        [sys.executable, "-m", "pytest", str(tmp_path), "-p", "no:cacheprovider", "--roadlogic-artifacts", str(tmp_path / "art"), "-q", "--rootdir", str(tmp_path)],
-        capture_output=True, text=True, cwd=tmp_path,
-    )
-    assert "1 failed" in result.stdout, result.stdout
-    assert "not reproduced in simulation" in result.stdout
-    assert "closest at t =" in result.stdout
-    assert "replay: roadlogic run" in result.stdout
-    assert "animation:" in result.stdout and list((tmp_path / "art").rglob("simulation.gif")), "a failing scenario gets its animation"
 
 
 def test_roadlogic_check_reports_every_bad_file_with_a_summary(tmp_path):

@@ -6,6 +6,7 @@ few examples and a short horizon so that the suite stays quick.
 
 import json
 import re
+import shutil
 import subprocess
 import sys
 import xml.etree.ElementTree as ET
@@ -64,10 +65,30 @@ def pytest_roadlogic_driver(config, scenario, vehicle):
 """
 
 
+REPLAY_SCRIPT = """
+import sys
+sys.path.insert(0, {root!r})
+from pathlib import Path
+from pytest_roadlogic.case import Case
+from tests.drivers import NeverChangesLane
+outcome = Case.load({case!r}).run(drivers=lambda v: NeverChangesLane() if v == "v1" else None)
+assert not outcome.verdict.accepted
+Path({out!r}).mkdir()
+Path({out!r}, "plan.json").write_text(outcome.plan.to_json())
+Path({out!r}, "trace.csv").write_text(outcome.simulation.trace.to_csv())
+"""
+
+PROFILE = """
+from hypothesis import Phase, settings
+settings.register_profile("quick", max_examples=2, phases=[Phase.explicit, Phase.reuse, Phase.generate])
+"""
+
+
 def test_the_driver_hook_drives_the_vehicle_under_test_and_a_bad_one_fails_with_a_replayable_report(pytester):
     copy(pytester, SCENARIOS / "overtake.osc")
-    pytester.makeconftest(DRIVER_CONFTEST)
-    result = pytester.runpytest_subprocess("--roadlogic-examples", "2", "--roadlogic-tries", "1", *QUIET)
+    # a Hypothesis profile is respected: two examples, no shrinking (each would be a simulation)
+    pytester.makeconftest(DRIVER_CONFTEST + PROFILE)
+    result = pytester.runpytest_subprocess("--hypothesis-profile", "quick", "--roadlogic-tries", "1", *QUIET)
     result.assert_outcomes(failed=1)
     report = result.stdout.str()
     assert "scenario overtake: rejected at these values" in report
@@ -78,16 +99,18 @@ def test_the_driver_hook_drives_the_vehicle_under_test_and_a_bad_one_fails_with_
         assert (artifacts / name).is_file(), name
     assert f"pytest 'overtake.osc::overtake' --roadlogic-replay {artifacts / 'case.json'}" in report
 
-    # the case replays exactly, with the same driver: same plan, same trace
-    from pytest_roadlogic.case import Case
-    from tests.drivers import NeverChangesLane
+    assert "closest at t =" in report, "the monitor says when the run came closest"
 
-    outcome = Case.load(artifacts / "case.json").run(drivers=lambda v: NeverChangesLane() if v == "v1" else None)
-    assert json.loads(outcome.plan.to_json())["states"] == json.loads((artifacts / "plan.json").read_text())["states"]
-    assert outcome.simulation.trace.to_csv() == (artifacts / "trace.csv").read_text()
-    assert not outcome.verdict.accepted
+    # the case replays exactly, with the same driver: same plan, same trace (in a fresh process:
+    # pytester restores sys.modules after a test, which frenetix's extension does not survive)
+    replay = REPLAY_SCRIPT.format(root=str(ROOT), case=str(artifacts / "case.json"), out=str(pytester.path / "replayed"))
+    done = subprocess.run([sys.executable, "-c", replay], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    replayed = pytester.path / "replayed"
+    assert json.loads((replayed / "plan.json").read_text())["states"] == json.loads((artifacts / "plan.json").read_text())["states"]
+    assert (replayed / "trace.csv").read_text() == (artifacts / "trace.csv").read_text()
 
-    again = pytester.runpytest_subprocess("--roadlogic-replay", str(artifacts / "case.json"), *QUIET)
+    again = pytester.runpytest_subprocess("--roadlogic-replay", str(artifacts / "case.json"), "--roadlogic-tries", "1", *QUIET)
     again.assert_outcomes(failed=1)
     assert "1 examples" in again.stdout.str()
 
@@ -115,9 +138,12 @@ def test_an_error_inside_one_example_fails_that_item_only(pytester):
 
 
 def test_pytest_xdist_gives_the_same_outcomes_as_a_serial_run(pytester):
-    copy(pytester, SCENARIOS / "follow.osc", SCENARIOS / "change_lane.osc", SQUEEZE)
+    copy(pytester, SCENARIOS / "follow.osc", SCENARIOS / "change_lane.osc")
+    # every gap of this range is infeasible: a failing item whose examples are quick
+    pytester.makefile(".osc", squeeze=SQUEEZE.read_text().replace("keep(it in [10..40]m)", "keep(it in [25..35]m)"))
     options = ["--roadlogic-examples", "3", "--roadlogic-horizon", "6", "-rA", *QUIET]
     serial = pytester.runpytest_subprocess(*options)
+    shutil.rmtree(pytester.path / ".hypothesis")  # the second run must not start from the first one's failures
     parallel = pytester.runpytest_subprocess("-n", "2", *options)
 
     def outcomes(result):

@@ -39,6 +39,9 @@ class PlanningSettings:
     runup_acceleration: float = 2.0  # m/s^2 with which every vehicle leaves standstill
     max_horizon: int = 25  # steps
     time_limit: float = 60.0  # seconds for one solve, all horizons together
+    # when no plan exists, find the constraints that cannot hold together (UnsatisfiableScenario);
+    # a search over many samples turns it off and asks only for the one it reports
+    explain_unsatisfiable: bool = True
 
     def summary(self, lanes: int) -> str:
         """The domain rules' numbers on a road of ``lanes`` lanes, for messages that blame them."""

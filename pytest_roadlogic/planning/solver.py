@@ -151,6 +151,8 @@ class Planner:
                 raise
             except NoPlanError as error:
                 last = error
+        if not self.settings.explain_unsatisfiable:
+            raise last
         self._explain(last, deadline)
 
     def _widened(self) -> PlanningSettings | None:
