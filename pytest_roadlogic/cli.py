@@ -1,6 +1,6 @@
 """The ``roadlogic`` command.
 
-    roadlogic run FILE.osc [--scenario NAME] [--seed S] [--out DIR] [--lanes N] [--tries N]
+    roadlogic run FILE.osc [--scenario NAME] [--seed S] [--out DIR] [--lanes N] [--tries N] [--instances N | --values JSON]
     roadlogic check PATH... [--syntax-only] [--lanes N]
     roadlogic automaton FILE.osc [--scenario NAME] [--out FILE.dot] [--lanes N]
     roadlogic plan FILE.osc [--scenario NAME] [--plans N] [--seed S] [--lanes N] [--show-asp]
@@ -40,6 +40,7 @@ def main(argv: list[str] | None = None) -> int:
     run.add_argument("--seed", type=int, default=1, help="fixes planning and simulation (default 1)")
     run.add_argument("--out", type=Path, default=Path("out"), help="artifact directory (default out/)")
     run.add_argument("--tries", type=int, default=5, help="plans to try when the monitor rejects (default 5)")
+    run.add_argument("--instances", type=int, default=1, help="run the planner's first N different plans, artifacts in --out/instance-NNN (default 1)")
     run.add_argument("--values", type=_values, default=None, help='logical parameter values as JSON, e.g. \'{"start_gap": 12.5}\' (SI units)')
     replay = commands.add_parser("replay", help="run one case again exactly: from the case.json of a failure, or from a file and values")
     replay.add_argument("case", type=Path, help="a case.json written for a failure, or an .osc file")
@@ -233,8 +234,10 @@ def _reporting_input_errors(args: argparse.Namespace, action):
 
 
 def _run(args: argparse.Namespace) -> int:
-    from .artifacts import write_artifacts
     from .pipeline import run_scenario
+
+    if args.instances > 1:
+        return _run_many(args)
 
     def plan_and_simulate():
         scenario = _load(args)
@@ -244,6 +247,36 @@ def _run(args: argparse.Namespace) -> int:
     if isinstance(loaded, int):
         return loaded
     return _show(*loaded, args.out, args.seed)
+
+
+def _run_many(args: argparse.Namespace) -> int:
+    """``run --instances N``: the planner's first N different plans (the base strategy), each
+    simulated and monitored, a progress bar on stderr, artifacts per instance under ``--out``."""
+    from .artifacts import write_artifacts
+    from .pipeline import run_instances
+
+    def instances():
+        scenario = _load(args)
+        accepted = 0
+        for outcome in run_instances(scenario, args.instances, seed=args.seed, max_tries=args.tries):
+            directory = args.out / f"instance-{outcome.instance + 1:03d}"
+            write_artifacts(outcome, directory, animation=False)
+            accepted += outcome.verdict.accepted
+            done = outcome.instance + 1
+            bar = "#" * round(20 * done / args.instances)
+            print(f"\r[{bar:<20}] {done}/{args.instances}  accepted {accepted}", end="", file=sys.stderr, flush=True)
+            verdict = "accepted" if outcome.verdict.accepted else "REJECTED"
+            yield f"instance {done}: {verdict} after {outcome.tries} tr{'y' if outcome.tries == 1 else 'ies'}, {sum(outcome.seconds.values()):.2f} s  {directory}", outcome.verdict.accepted
+        print(file=sys.stderr)
+
+    results = _reporting_input_errors(args, lambda: list(instances()))
+    if isinstance(results, int):
+        return results
+    for line, _ in results:
+        print(line)
+    accepted = sum(ok for _, ok in results)
+    print(f"{accepted} of {len(results)} instances accepted")
+    return EXIT_ACCEPTED if results and accepted == len(results) else EXIT_REJECTED
 
 
 def _replay(args: argparse.Namespace) -> int:

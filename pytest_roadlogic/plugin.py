@@ -32,6 +32,7 @@ from .planning import NoPlanError, PlanningTimeout, UnsatisfiableScenario
 DEFAULT_SEED = 1
 DEFAULT_ARTIFACTS = "roadlogic-artifacts"
 DEFAULT_EXAMPLES = 10
+SLOW_ACTORS = 3  # a scenario with more moving vehicles than this is marked slow
 STAGES = ("automaton", "planning", "simulation", "monitoring", "artifacts")
 
 
@@ -110,6 +111,8 @@ class OscFile(pytest.File):
             if scenario.behavior is not None:
                 item = ScenarioItem.from_parent(self, name=scenario.name, scenario=scenario, space=checked.spaces[scenario.name])
                 item.add_marker("roadlogic")
+                if sum(not actor.stationary for actor in scenario.actors) > SLOW_ACTORS:
+                    item.add_marker("slow")  # planning grows with the vehicles: select or deselect with -m
                 yield item
 
 

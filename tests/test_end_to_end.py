@@ -87,3 +87,14 @@ def test_syntax_only_skips_the_checker(tmp_path):
     (tmp_path / "other.osc").write_text("scenario s:\n  a: car\n  do a.fly()\n")
     assert run_cli("check", str(tmp_path)).returncode == 1
     assert run_cli("check", "--syntax-only", str(tmp_path)).returncode == 0
+
+
+def test_roadlogic_run_instances_writes_each_instance_with_a_progress_bar(tmp_path):
+    result = run_cli("run", str(ROOT / "scenarios" / "follow.osc"), "--instances", "2", "--out", str(tmp_path))
+    assert result.returncode == 0, result.stdout + result.stderr
+    assert "2 of 2 instances accepted" in result.stdout
+    assert "[####################] 2/2" in result.stderr
+    for index in (1, 2):
+        assert (tmp_path / f"instance-00{index}" / "trace.csv").is_file()
+    plans = [(tmp_path / f"instance-00{i}" / "plan.json").read_text() for i in (1, 2)]
+    assert plans[0] != plans[1], "each instance is a different plan"

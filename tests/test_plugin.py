@@ -169,3 +169,9 @@ def test_the_strategy_is_public_for_ordinary_given_tests():
         assert 8 <= values["C.position.distance"] <= 13
 
     check()
+
+
+def test_a_scenario_with_many_vehicles_is_marked_slow(pytester):
+    copy(pytester, ROOT / "benchmarks" / "scenarios" / "platoon_overtake_merge.osc", SCENARIOS / "follow.osc")
+    result = pytester.runpytest_subprocess("--collect-only", "-q", "-m", "slow", *QUIET)
+    result.stdout.fnmatch_lines(["platoon_overtake_merge.osc::*", "*1/2 tests collected (1 deselected)*"])
