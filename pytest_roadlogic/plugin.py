@@ -17,6 +17,7 @@ from __future__ import annotations
 import json
 import re
 import time
+from contextlib import contextmanager
 from dataclasses import replace
 from argparse import ArgumentTypeError
 from collections import Counter
@@ -188,21 +189,11 @@ class ScenarioItem(pytest.Item):
         def example(values):
             case = self._case(values=values)
             self.counts["examples"] += 1
-            try:
+            with self._planning_failures(case, explain_later=True):
                 outcome = run_scenario(
                     self.scenario, seed=case.seed, settings=replace(case.settings(), explain_unsatisfiable=False), max_tries=case.max_tries,
-                    drivers=drivers, values=values,
-                    space=self.space, simulation_time_limit=case.simulation_time_limit,
+                    drivers=drivers, values=values, space=self.space, simulation_time_limit=case.simulation_time_limit,
                 )
-            except PlanningTimeout as error:
-                self.counts["timed_out"] += 1
-                raise ScenarioFailed(case, f"planning timed out: {error}", kind="timed out") from None
-            except UnsatisfiableScenario as error:
-                self.counts["no_plan"] += 1
-                raise ScenarioFailed(case, error.report(), kind="no plan") from None
-            except NoPlanError as error:
-                self.counts["no_plan"] += 1
-                raise ScenarioFailed(case, f"no plan: {error}", kind="no plan", explain=True) from None
             self._count(outcome)
             hypothesis.target(-outcome.verdict.robustness, label="closeness to failure (-robustness)")
             if not outcome.verdict.accepted:
@@ -224,7 +215,7 @@ class ScenarioItem(pytest.Item):
         from .pipeline import run_instances
 
         case = self._case(strategy=BASE)
-        try:
+        with self._planning_failures(case):
             for outcome in run_instances(
                 self.scenario, self._examples(), seed=case.seed, settings=case.settings(), max_tries=case.max_tries, drivers=self._drivers(),
                 space=self.space, simulation_time_limit=case.simulation_time_limit,
@@ -233,20 +224,23 @@ class ScenarioItem(pytest.Item):
                 self._count(outcome)
                 if not outcome.verdict.accepted:
                     raise ScenarioFailed(self._case(strategy=BASE, instance=outcome.instance), outcome.verdict.explain(), outcome)
-        except PlanningTimeout as error:
-            self.counts["timed_out"] += 1
-            raise ScenarioFailed(case, f"planning timed out: {error}", kind="timed out") from None
-        except UnsatisfiableScenario as error:
-            self.counts["no_plan"] += 1
-            raise ScenarioFailed(case, error.report(), kind="no plan") from None
 
     def _replay(self, case: Case) -> None:
         """The one case of a case file, when it is this item's (other items are skipped)."""
         if Path(case.path).resolve() != self.path.resolve() or case.scenario != self.scenario.name:
             pytest.skip(f"--roadlogic-replay runs {case.path}::{case.scenario} only")
         self.counts["examples"] += 1
-        try:
+        with self._planning_failures(case):
             outcome = case.run(drivers=self._drivers())
+        self._count(outcome)
+        if not outcome.verdict.accepted:
+            raise ScenarioFailed(case, outcome.verdict.explain(), outcome)
+
+    @contextmanager
+    def _planning_failures(self, case: Case, explain_later: bool = False):
+        """A case without a plan, or out of planning time, fails as that case (and is counted)."""
+        try:
+            yield
         except PlanningTimeout as error:
             self.counts["timed_out"] += 1
             raise ScenarioFailed(case, f"planning timed out: {error}", kind="timed out") from None
@@ -255,10 +249,7 @@ class ScenarioItem(pytest.Item):
             raise ScenarioFailed(case, error.report(), kind="no plan") from None
         except NoPlanError as error:
             self.counts["no_plan"] += 1
-            raise ScenarioFailed(case, f"no plan: {error}", kind="no plan") from None
-        self._count(outcome)
-        if not outcome.verdict.accepted:
-            raise ScenarioFailed(case, outcome.verdict.explain(), outcome)
+            raise ScenarioFailed(case, f"no plan: {error}", kind="no plan", explain=explain_later) from None
 
     def _count(self, outcome) -> None:
         self.counts["accepted" if outcome.verdict.accepted else "rejected"] += 1
