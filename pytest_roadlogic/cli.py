@@ -24,7 +24,6 @@ import time
 from pathlib import Path
 
 from .frontend import OscError
-from .frontend.errors import Diagnostic, SourceLocation
 from .case import CaseFileError
 from .planning import NoPlanError, PlanningSettings, UnsatisfiableScenario
 from .sampling import UnknownParameter
@@ -288,11 +287,7 @@ def _replay(args: argparse.Namespace) -> int:
         else:
             from .frontend import load_file
 
-            checked = load_file(args.case, args.lanes)
-            runnable = [s for s in checked.scenarios if s.behavior is not None]
-            name = args.scenario or (runnable[0].name if runnable else None)
-            if name is None:
-                raise OscError([Diagnostic(SourceLocation(str(args.case), 1, 1), "the file declares no scenario with a `do` behavior")])
+            name = load_file(args.case, args.lanes).scenario_to_run(args.scenario).name
             case = Case(str(args.case), name, args.seed, args.strategy, args.values or {}, args.instance, args.lanes, args.horizon, max_tries=args.tries)
         outcome = case.run()
         return outcome.scenario, outcome
@@ -309,11 +304,10 @@ def _show(scenario, outcome, out: Path, seed: int) -> int:
     """Write the artifacts of a run and print its stages, verdict and files; the exit code of ``run``."""
     from .artifacts import write_artifacts
 
-    args = argparse.Namespace(out=out, seed=seed)
     started = time.perf_counter()
-    paths = write_artifacts(outcome, args.out)
+    paths = write_artifacts(outcome, out)
     outcome.seconds["artifacts"] = time.perf_counter() - started
-    print(f"scenario {scenario.name} (seed {args.seed}): {outcome.tries} tr{'y' if outcome.tries == 1 else 'ies'}")
+    print(f"scenario {scenario.name} (seed {seed}): {outcome.tries} tr{'y' if outcome.tries == 1 else 'ies'}")
     for stage, seconds in outcome.seconds.items():
         print(f"  {stage:<11} {seconds:7.3f} s")
     print(outcome.verdict.explain())

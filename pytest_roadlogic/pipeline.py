@@ -13,7 +13,6 @@ from pathlib import Path
 
 from .automaton import SymbolicAutomaton, build_automaton
 from .frontend import Scenario, load_file
-from .frontend.errors import Diagnostic, OscError, SourceLocation
 from .frontend.parameters import ParameterSpace
 from .monitor import Verdict, monitor
 from .planning import Plan, Planner, PlanningSettings
@@ -33,7 +32,6 @@ class Outcome:
     verdict: Verdict
     tries: int
     seconds: dict[str, float] = field(default_factory=dict)  # stage -> seconds, summed over tries
-    values: dict[str, object] = field(default_factory=dict)  # the sampled logical parameters (refined strategy)
     instance: int = 0  # its index among the instances of one planner (base strategy)
 
 
@@ -42,11 +40,7 @@ def load_scenario(path: str | Path, name: str | None = None, lanes: int | None =
 
     ``lanes`` overrides the road's lane count, which otherwise comes from the scenario.
     """
-    checked = load_file(path, lanes)
-    runnable = [s for s in checked.scenarios if s.behavior is not None]
-    if not runnable:
-        raise OscError([Diagnostic(SourceLocation(str(path), 1, 1), "the file declares no scenario with a `do` behavior")])
-    return checked.file.scenario(name) if name else runnable[0]
+    return load_file(path, lanes).scenario_to_run(name)
 
 
 def run_scenario(
@@ -110,7 +104,7 @@ def run_instances(
             start = time.perf_counter()
             verdict = monitor(specification, simulation.trace)
             seconds["monitoring"] += time.perf_counter() - start
-            outcome = Outcome(scenario, specification, plan, simulation, verdict, tries, seconds, dict(values or {}), instance)
+            outcome = Outcome(scenario, specification, plan, simulation, verdict, tries, seconds, instance)
             if verdict.accepted:
                 break
         if outcome is None:

@@ -15,7 +15,6 @@ tracking error in simulation does not cross the range's edge).
 from __future__ import annotations
 
 import dataclasses
-import json
 import math
 from dataclasses import dataclass
 from pathlib import Path
@@ -24,7 +23,7 @@ from typing import Any
 from .frontend import model
 from .frontend.errors import SourceLocation
 from .frontend.library import ACTIONS, MODIFIERS, bind
-from .frontend.parameters import ParameterSpace, parameter_space
+from .frontend.parameters import MIRRORED, ParameterSpace, parameter_space
 from .frontend.units import ACCELERATION, LENGTH, SPEED, TIME
 from .frontend.values import EvaluationError, Interval, evaluate
 
@@ -58,11 +57,6 @@ class LogicalParameter:
             return str(value).lower() if isinstance(value, bool) else str(value)
         number = f"{value:g}" if self.integer else f"{value:.1f}".rstrip("0").rstrip(".")
         return f"{number} {UNIT[self.dimension]}".rstrip()
-
-    def describe(self) -> str:
-        if self.choices:
-            return " | ".join(self.show(c) for c in self.choices)
-        return f"[{self.show(self.low)} .. {self.show(self.high)}]"
 
 
 def logical_parameters(scenario: model.Scenario, space: ParameterSpace | None = None) -> list[LogicalParameter]:
@@ -169,7 +163,7 @@ def _bounded_by_relations(parameter: LogicalParameter, space: ParameterSpace, dr
         atom = relation.expression
         if not (isinstance(atom, model.Binary) and atom.operator in ("<", "<=", ">", ">=", "==")):
             continue
-        for this, other, operator in ((atom.left, atom.right, atom.operator), (atom.right, atom.left, _MIRROR[atom.operator])):
+        for this, other, operator in ((atom.left, atom.right, atom.operator), (atom.right, atom.left, MIRRORED[atom.operator])):
             if not (isinstance(this, model.Name) and this.name == parameter.name):
                 continue
             try:
@@ -185,9 +179,6 @@ def _bounded_by_relations(parameter: LogicalParameter, space: ParameterSpace, dr
             if operator in (">", ">=", "=="):
                 low = max(low, value + strict)
     return low, high
-
-
-_MIRROR = {"<": ">", "<=": ">=", ">": "<", ">=": "<=", "==": "=="}
 
 
 # ------------------------------------------------------------------ guidance
@@ -267,18 +258,5 @@ def parameters(path: str | Path, scenario: str | None = None, lanes: int | None 
     from .frontend import load_file
 
     checked = load_file(path, lanes)
-    chosen = _chosen(checked, path, scenario)
+    chosen = checked.scenario_to_run(scenario)
     return strategy(chosen, checked.spaces[chosen.name])
-
-
-def _chosen(checked, path, name: str | None) -> model.Scenario:
-    runnable = [s for s in checked.scenarios if s.behavior is not None]
-    if name is not None:
-        return checked.file.scenario(name)
-    if not runnable:
-        raise ValueError(f"{path} declares no scenario with a behavior")
-    return runnable[0]
-
-
-def values_json(values: Values) -> str:
-    return json.dumps(values, sort_keys=True)

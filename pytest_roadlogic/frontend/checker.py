@@ -45,6 +45,15 @@ class CheckedFile:
     def warnings(self) -> list[Diagnostic]:
         return [d for d in self.diagnostics if d.severity == "warning"]
 
+    def scenario_to_run(self, name: str | None = None) -> model.Scenario:
+        """The scenario called ``name``, or the first one with a behavior (KeyError for an unknown name)."""
+        if name is not None:
+            return self.file.scenario(name)
+        for scenario in self.scenarios:
+            if scenario.behavior is not None:
+                return scenario
+        raise OscError([Diagnostic(SourceLocation(self.file.path, 1, 1), "the file declares no scenario with a `do` behavior")], sources=self.sources)
+
     def raise_for_errors(self) -> None:
         if self.errors:
             raise OscError(self.errors, sources=self.sources)

@@ -21,7 +21,8 @@ from .errors import Diagnostic, SourceLocation
 from .values import EvaluationError, Interval, describe, evaluate, names_in
 
 _BOUND_OPERATORS = ("==", "in", "<", "<=", ">", ">=")
-_MIRRORED = {"<": ">", "<=": ">=", ">": "<", ">=": "<=", "==": "=="}
+# a comparison seen from its other side: a < b is b > a
+MIRRORED = {"<": ">", "<=": ">=", ">": "<", ">=": "<=", "==": "=="}
 
 
 @dataclass(frozen=True)
@@ -220,7 +221,7 @@ class _Resolver:
             other = atom.right
             name = left
             if left is None and right is not None and operator != "in":
-                name, other, operator = right, atom.left, _MIRRORED[operator]
+                name, other, operator = right, atom.left, MIRRORED[operator]
             if name is not None and not (set(n.name for n in names_in(other)) & set(by_name)):
                 self.bound(name, operator, other, atom, constraint)
                 return
