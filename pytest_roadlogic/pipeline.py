@@ -6,6 +6,7 @@ its next plan, up to ``max_tries`` times. Every stage is timed.
 
 from __future__ import annotations
 
+import dataclasses
 import time
 from collections.abc import Iterator
 from dataclasses import dataclass, field
@@ -16,7 +17,7 @@ from .frontend import Scenario, load_file
 from .frontend.parameters import ParameterSpace
 from .monitor import Verdict, monitor
 from .planning import Plan, Planner, PlanningSettings
-from .sampling import guided
+from .sampling import guided, sample_seed
 from .simulation import Simulation, simulate
 from .simulation.simulator import DriverFactory
 
@@ -56,7 +57,10 @@ def run_scenario(
     """One concrete instance of ``scenario``: plan, simulate, monitor, and retry with the next plan on rejection.
 
     ``values`` (the refined strategy) is a sample of the scenario's logical parameters: the planner
-    solves the scenario narrowed to those values, the monitor checks the scenario as written.
+    solves the scenario narrowed to those values, the monitor checks the scenario as written. The
+    planner's own free choices (start speeds and lanes, accelerations, how long the scenario lasts)
+    are then random too, drawn from a seed made of ``seed`` and the values (``sample_seed``): the
+    same sample always gives the same plan, and different samples do not share the solver's habits.
     Without it (the base strategy) the planner chooses every open value itself.
     """
     return next(run_instances(scenario, 1, seed, settings, max_tries, drivers, values, space, simulation_time_limit))
@@ -85,6 +89,9 @@ def run_instances(
     if values:
         narrowed, declared = guided(scenario, values, settings.resolution(), settings.margins(), space)
         guide = build_automaton(narrowed, values=declared, space=space)
+        # each sample is its own random concrete scenario, fixed by the run's seed and the values
+        settings = dataclasses.replace(settings, random_start=True)
+        seed = sample_seed(seed, values)
     automaton_seconds = time.perf_counter() - start
     planner = Planner(guide, settings, seed)
     plans = planner.plans(limit=count * max_tries)

@@ -15,6 +15,8 @@ tracking error in simulation does not cross the range's edge).
 from __future__ import annotations
 
 import dataclasses
+import hashlib
+import json
 import math
 from dataclasses import dataclass
 from pathlib import Path
@@ -239,6 +241,16 @@ def _narrow(node: Any, narrowed: dict[SourceLocation, tuple[float, float]]) -> A
         changes = {f.name: _narrow(getattr(node, f.name), narrowed) for f in dataclasses.fields(node)}
         return dataclasses.replace(node, **{k: v for k, v in changes.items() if v is not getattr(node, k)})
     return node
+
+
+def sample_seed(seed: int, values: Values) -> int:
+    """The planner's seed for one sample: a stable hash of the run's seed and the values.
+
+    Not Python's ``hash`` (salted per process): a case replayed in another process must get the
+    same plan.
+    """
+    digest = hashlib.sha256(json.dumps([seed, values], sort_keys=True).encode()).digest()
+    return int.from_bytes(digest[:4], "big") >> 1
 
 
 # ------------------------------------------------------------------ public helpers

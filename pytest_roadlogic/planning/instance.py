@@ -10,6 +10,7 @@ meets them (the monitor checks the ranges as written).
 from __future__ import annotations
 
 import math
+import random
 from dataclasses import dataclass
 
 from ..automaton.guards import POSITION, SPEED, And, Bound, Guard, Not, Or
@@ -42,6 +43,11 @@ class PlanningSettings:
     # when no plan exists, find the constraints that cannot hold together (UnsatisfiableScenario);
     # a search over many samples turns it off and asks only for the one it reports
     explain_unsatisfiable: bool = True
+    # the refined strategy's instances are independent samples: its first plan follows random
+    # preferences drawn from the seed (start_preferences) and lasts up to this many seconds longer
+    # than the shortest plan, instead of being the solver's first answer at the shortest horizon
+    random_start: bool = False
+    random_extension: float = 6.0
 
     def summary(self, lanes: int) -> str:
         """The domain rules' numbers on a road of ``lanes`` lanes, for messages that blame them."""
@@ -394,3 +400,30 @@ def _inset(low: float, high: float, margin: float) -> tuple[float, float]:
         return (low if low == -math.inf else low + margin, high if high == math.inf else high - margin)
     inset = min(margin, (high - low) / 4)
     return low + inset, high - inset
+
+
+
+def start_preferences(automaton: SymbolicAutomaton, settings: PlanningSettings, draw: random.Random) -> str:
+    """Domain heuristics that make the solver try a random start speed, lane and zone for each
+    vehicle, and a random acceleration at each step, before anything else.
+
+    They are preferences, not constraints: a choice that cannot lead to a plan is undone by the
+    search like any other decision, so a random start never loses a plan. Without them the solver
+    decides in the same order for every problem, and samples of nearby values get nearly the same
+    plan (the refined strategy's instances would differ only where the sampled values force it).
+    """
+    starts = list(settings.initial_speeds())
+    width = max(1, round(settings.start_zone / settings.grid))
+    zones = math.ceil(max(settings.initial_spread, _farthest_position(automaton)) / settings.grid / width)
+    accelerations = settings.acceleration_cells()
+    rules = []
+    for index, vehicle in enumerate(automaton.actors):
+        name = _atom(vehicle)
+        rules.append(f"#heuristic lane({name},{draw.randrange(automaton.lanes)},0). [1,true]")
+        if index:
+            rules.append(f"#heuristic zone({name},{draw.randint(-zones, zones)}). [1,true]")
+        if vehicle in automaton.stationary:
+            continue
+        rules.append(f"#heuristic vel({name},{draw.choice(starts)},0). [1,true]")
+        rules.extend(f"#heuristic acc({name},{draw.choice(accelerations)},{t}). [1,true]" for t in range(1, settings.max_horizon + 1))
+    return "\n".join(rules) + "\n"

@@ -15,6 +15,8 @@ different seeds give different plans.
 from __future__ import annotations
 
 import dataclasses
+import math
+import random
 import time
 from collections.abc import Iterator
 from pathlib import Path
@@ -25,7 +27,7 @@ from clingodl import ClingoDLTheory
 
 from ..automaton.guards import contradiction
 from ..automaton.model import SymbolicAutomaton
-from .instance import PlanningSettings, build_instance, relaxable_constraints
+from .instance import PlanningSettings, build_instance, relaxable_constraints, start_preferences
 from .plan import Plan, PlanState
 
 ASP_DIR = Path(__file__).resolve().parent.parent / "asp"
@@ -115,6 +117,12 @@ class Planner:
         self.seed = seed
         self.base_program, self.state_program = build_instance(automaton, self.settings)
         self.stats: dict[str, float] = {"ground_s": 0.0, "solve_s": 0.0}
+        # a random start: the first plan follows choices drawn from the seed, not the solver's habits
+        self.preferences, self.extension = "", 0
+        if self.settings.random_start:
+            draw = random.Random(seed)
+            self.preferences = start_preferences(automaton, self.settings, draw)
+            self.extension = draw.randint(0, math.floor(self.settings.random_extension / self.settings.dt + 1e-9))
 
     def instance_program(self) -> str:
         return "#program base.\n" + self.base_program + "\n#program state(t).\n" + self.state_program
@@ -127,6 +135,8 @@ class Planner:
         self.theory = ClingoDLTheory()
         self.theory.register(control)
         self._add(control, background_theory() + "\n#program base.\n" + base_program + "\n#program state(t).\n" + state_program)
+        if self.preferences:
+            self._add(control, "#program base.\n" + self.preferences)
         return control
 
     def _add(self, control: clingo.Control, program: str) -> None:
@@ -256,8 +266,17 @@ class Planner:
                 horizon += 1
                 self._advance(control, horizon)
                 continue
+            plan_horizon = horizon
+            if found == 0 and self.extension:
+                # the shortest plan first, then the same scenario stretched over more steps
+                target = min(self.settings.max_horizon, horizon + self.extension)
+                for horizon in range(horizon + 1, target + 1):
+                    self._advance(control, horizon)
+                longer = self._solve(control, deadline)
+                if longer is not None:
+                    symbols, plan_horizon = longer, horizon
             self.stats["rules"] = float(control.statistics.get("problem", {}).get("lp", {}).get("rules", 0))
-            plan = self._plan(symbols, horizon, found)
+            plan = self._plan(symbols, plan_horizon, found)
             found += 1
             yield plan
             self._exclude(control, symbols, found)
