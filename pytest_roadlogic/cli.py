@@ -26,6 +26,7 @@ from pathlib import Path
 from .frontend import OscError
 from .case import CaseFileError
 from .planning import NoPlanError, PlanningSettings, UnsatisfiableScenario
+from .progress import ProgressBar
 from .sampling import UnknownParameter
 
 EXIT_ACCEPTED, EXIT_REJECTED, EXIT_INPUT = 0, 1, 2
@@ -62,8 +63,32 @@ def main(argv: list[str] | None = None) -> int:
     plan.add_argument("--plans", type=int, default=1, help="how many plans to enumerate (default 1)")
     plan.add_argument("--seed", type=int, default=1, help="fixes the plans found (default 1)")
     plan.add_argument("--show-asp", action="store_true", help="also print the generated instance program")
+    bench = commands.add_parser("bench", help="the paper's evaluation (RQ1 time and conformance, RQ2 diversity): results, plots and report.md")
+    bench.add_argument("paths", type=Path, nargs="*", default=[Path("scenarios")], help=".osc files or folders (default: scenarios/)")
+    bench.add_argument("--base", type=_count, default=None, help="instances per scenario with the base strategy (default 10, --quick 2)")
+    bench.add_argument("--refined", type=_count, default=None, help="instances per scenario with the refined strategy (default 50, --quick 5)")
+    bench.add_argument("--quick", action="store_true", help="a small run (2 base and 5 refined instances per scenario) to try the setup")
+    bench.add_argument("--seed", type=int, default=1, help="fixes sampling, planning and simulation (default 1)")
+    bench.add_argument("--out", type=Path, default=Path("bench-report"), help="report directory (default bench-report/)")
+    bench.add_argument("--tries", type=int, default=5, help="plans to try when the monitor rejects (default 5)")
+    bench.add_argument("--plan-timeout", type=float, default=60.0, help="seconds per planning before an instance counts as timed out (default 60)")
+    bench.add_argument("--sim-timeout", type=float, default=120.0, help="seconds per simulation before an instance counts as timed out (default 120)")
+    bench.add_argument("--no-artifacts", action="store_true", help="do not write each instance's plan, trace, CommonRoad XML and plot")
+    bench.add_argument("--report-only", action="store_true", help="rebuild report.md and the plots from --out/results.json, without running")
     args = parser.parse_args(argv)
-    return {"run": _run, "check": _check, "automaton": _automaton, "plan": _plan, "replay": _replay}[args.command](args)
+    args.argv = list(sys.argv[1:] if argv is None else argv)
+    return {"run": _run, "check": _check, "automaton": _automaton, "plan": _plan, "replay": _replay, "bench": _bench}[args.command](args)
+
+
+def _count(text: str) -> int:
+    """An instance count: a whole number from 0 up."""
+    try:
+        count = int(text)
+    except ValueError:
+        count = -1
+    if count < 0:
+        raise argparse.ArgumentTypeError(f"{text!r} is not an instance count; give a whole number from 0 up")
+    return count
 
 
 def _values(text: str) -> dict:
@@ -257,16 +282,16 @@ def _run_many(args: argparse.Namespace) -> int:
     def instances():
         scenario = _load(args)
         accepted = 0
+        bar = ProgressBar(args.instances)
         for outcome in run_instances(scenario, args.instances, seed=args.seed, max_tries=args.tries):
             directory = args.out / f"instance-{outcome.instance + 1:03d}"
             write_artifacts(outcome, directory, animation=False)
             accepted += outcome.verdict.accepted
             done = outcome.instance + 1
-            bar = "#" * round(20 * done / args.instances)
-            print(f"\r[{bar:<20}] {done}/{args.instances}  accepted {accepted}", end="", file=sys.stderr, flush=True)
+            bar.update(done, f"accepted {accepted}")
             verdict = "accepted" if outcome.verdict.accepted else "REJECTED"
             yield f"instance {done}: {verdict} after {outcome.tries} tr{'y' if outcome.tries == 1 else 'ies'}, {sum(outcome.seconds.values()):.2f} s  {directory}", outcome.verdict.accepted
-        print(file=sys.stderr)
+        bar.close()
 
     results = _reporting_input_errors(args, lambda: list(instances()))
     if isinstance(results, int):
@@ -318,3 +343,51 @@ def _show(scenario, outcome, out: Path, seed: int) -> int:
 
 if __name__ == "__main__":
     raise SystemExit(main())
+
+
+def _bench(args: argparse.Namespace) -> int:
+    """Run the evaluation and write its report; exit 0 when every target is met, 1 when one is
+    missed, 2 when the input is unusable."""
+    from .evaluation import BenchmarkResults, BenchmarkSettings, run_benchmark, targets_met, write_report
+    from .evaluation.runner import RESULTS_FILE
+
+    if args.report_only:
+        try:
+            results = BenchmarkResults.load(args.out / RESULTS_FILE)
+        except (OSError, ValueError, KeyError, TypeError) as error:
+            print(f"{args.out / RESULTS_FILE}: error: cannot read the results of a run ({error}); run roadlogic bench first", file=sys.stderr)
+            return EXIT_INPUT
+    else:
+        missing = [p for p in args.paths if not p.exists()]
+        for path in missing:
+            print(f"{path}: error: no such file or folder; give the .osc files or folders to evaluate", file=sys.stderr)
+        files = osc_files(args.paths)
+        if missing or not files:
+            if not missing:
+                print(f"{' '.join(map(str, args.paths))}: error: no .osc files there", file=sys.stderr)
+            return EXIT_INPUT
+        quick = (2, 5) if args.quick else (10, 50)
+        settings = BenchmarkSettings(
+            tuple(files), base=quick[0] if args.base is None else args.base, refined=quick[1] if args.refined is None else args.refined,
+            seed=args.seed, tries=args.tries, planning_time_limit=args.plan_timeout, simulation_time_limit=args.sim_timeout,
+            artifacts=not args.no_artifacts,
+        )
+        total = len(files) * (settings.base + settings.refined)
+        print(f"{len(files)} scenarios, {settings.base} base and {settings.refined} refined instances each ({total} in all), seed {args.seed}", file=sys.stderr)
+        bar = ProgressBar(total)
+        conformant = 0
+
+        def progress(record, done: int, total: int) -> None:
+            nonlocal conformant
+            conformant += record.outcome == "conformant"
+            bar.update(done, f"{record.scenario} {record.strategy}  conformant {conformant}")
+
+        results = run_benchmark(settings, args.out, progress, command=["roadlogic", *args.argv])
+        bar.close()
+        for name, message in results.errors.items():
+            print(message, file=sys.stderr)
+    report = write_report(results, args.out)
+    met, lines = targets_met(results)
+    print("\n".join(lines))
+    print(f"report: {report}")
+    return EXIT_ACCEPTED if met else EXIT_REJECTED
