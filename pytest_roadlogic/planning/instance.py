@@ -425,5 +425,6 @@ def start_preferences(automaton: SymbolicAutomaton, settings: PlanningSettings, 
         if vehicle in automaton.stationary:
             continue
         rules.append(f"#heuristic vel({name},{draw.choice(starts)},0). [1,true]")
-        rules.extend(f"#heuristic acc({name},{draw.choice(accelerations)},{t}). [1,true]" for t in range(1, settings.max_horizon + 1))
+        acceleration = draw.choice(accelerations)
+        rules.extend(f"#heuristic acc({name},{acceleration},{t}). [1,true]" for t in range(1, settings.max_horizon + 1))
     return "\n".join(rules) + "\n"
