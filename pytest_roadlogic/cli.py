@@ -341,9 +341,6 @@ def _show(scenario, outcome, out: Path, seed: int) -> int:
     return EXIT_ACCEPTED if outcome.verdict.accepted else EXIT_REJECTED
 
 
-if __name__ == "__main__":
-    raise SystemExit(main())
-
 
 def _bench(args: argparse.Namespace) -> int:
     """Run the evaluation and write its report; exit 0 when every target is met, 1 when one is
@@ -391,3 +388,7 @@ def _bench(args: argparse.Namespace) -> int:
     print("\n".join(lines))
     print(f"report: {report}")
     return EXIT_ACCEPTED if met else EXIT_REJECTED
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

@@ -1,0 +1,238 @@
+"""`roadlogic bench`: the paper's evaluation. The quick run goes end to end here; the full run is
+selected with --run-bench (it takes about a quarter of an hour on two cores)."""
+
+import json
+import math
+import re
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from pytest_roadlogic.evaluation import Occupancy, jaccard, mean_pairwise
+from pytest_roadlogic.simulation.trace import Trace
+from tests.conftest import ROOT
+
+SCENARIOS = sorted(p.stem for p in (ROOT / "scenarios").glob("*.osc"))
+STAGES = ("planning", "simulation", "monitoring", "artifacts")
+OUTCOMES = ("conformant", "non-conformant", "timed out", "no plan")
+
+
+def bench(*args, cwd=ROOT):
+    return subprocess.run([sys.executable, "-m", "pytest_roadlogic.cli", "bench", *args], capture_output=True, text=True, cwd=cwd)
+
+
+# ------------------------------------------------------------------ the metric
+
+
+def trace_of(**vehicles):
+    """A trace of vehicles given as lists of (x, lane), one per instant."""
+    length = len(next(iter(vehicles.values())))
+    actors = {}
+    for name, states in vehicles.items():
+        x = np.array([s[0] for s in states], dtype=float)
+        lane = np.array([s[1] for s in states], dtype=float)
+        zeros = np.zeros(length)
+        actors[name] = {"x": x, "y": zeros, "heading": zeros, "speed": zeros, "acceleration": zeros, "lane": lane}
+    return Trace(np.arange(length) * 0.1, actors)
+
+
+def test_a_car_occupies_the_cells_its_body_covers_in_its_lane():
+    occupancy = Occupancy.of_trace(trace_of(v1=[(10.0, 1)]))
+    # a 4.5 m car centred at 10 m covers 7.75..12.25 m: cells 7 to 12
+    assert occupancy.cells() == {(1, k) for k in range(7, 13)}
+
+
+def test_occupancy_is_the_union_over_time_and_vehicles():
+    occupancy = Occupancy.of_trace(trace_of(v1=[(10.0, 0), (11.0, 0), (11.0, 1)], v2=[(50.0, 2), (50.0, 2), (50.0, 2)]))
+    assert occupancy.runs == {0: ((7, 13),), 1: ((8, 13),), 2: ((47, 52),)}
+
+
+def test_occupancy_survives_the_results_file():
+    occupancy = Occupancy.of_trace(trace_of(v1=[(10.0, 0), (30.0, 0)], v2=[(-5.0, 1), (-4.0, 1)]))
+    assert Occupancy.from_json(json.loads(json.dumps(occupancy.to_json()))) == occupancy
+
+
+def test_jaccard_index_of_occupied_cells():
+    a, b = {(0, 1), (0, 2), (0, 3)}, {(0, 2), (0, 3), (0, 4), (0, 5)}
+    assert jaccard(a, a) == 1.0
+    assert jaccard(a, {(1, 1)}) == 0.0
+    assert jaccard(a, b) == pytest.approx(2 / 5)
+
+
+def test_mean_pairwise_similarity_ignores_the_diagonal():
+    assert mean_pairwise([[1.0, 0.2, 0.4], [0.2, 1.0, 0.6], [0.4, 0.6, 1.0]]) == pytest.approx(0.4)
+    assert math.isnan(mean_pairwise([[1.0]]))
+
+
+# ------------------------------------------------------------------ the quick run, end to end
+
+
+@pytest.fixture(scope="module")
+def quick(tmp_path_factory):
+    out = tmp_path_factory.mktemp("bench")
+    result = bench("scenarios", "--quick", "--seed", "3", "--out", str(out))
+    assert result.returncode in (0, 1), result.stderr  # 1: a target missed, which small samples may do
+    return out, result
+
+
+def table_after(report: str, heading: str) -> list[dict[str, str]]:
+    """The first Markdown table after ``heading``, as rows of column -> cell."""
+    lines = report[report.index(heading):].splitlines()
+    start = next(k for k, line in enumerate(lines) if line.startswith("|"))
+    rows = []
+    for line in lines[start:]:
+        if not line.startswith("|"):
+            break
+        rows.append([cell.strip() for cell in line.strip("|").split("|")])
+    header, body = rows[0], rows[2:]
+    return [dict(zip(header, row)) for row in body]
+
+
+def cells_of(raw_occupancy) -> set:
+    """Expand a results file's runs of cells, independently of the package's own code."""
+    return {(int(lane), k) for lane, runs in raw_occupancy.items() for low, high in runs for k in range(low, high + 1)}
+
+
+def test_the_quick_run_writes_the_report_and_every_plot(quick):
+    out, result = quick
+    report = (out / "report.md").read_text()
+    expected = ["rq1-time-base.png", "rq1-time-refined.png", "rq2-similarity.png", "rq2-outcomes-refined.png"]
+    expected += [f"rq2-similarity-{s}-{strategy}.png" for s in SCENARIOS for strategy in ("base", "refined")]
+    for name in expected:
+        assert (out / name).read_bytes()[:8] == b"\x89PNG\r\n\x1a\n", f"{name} is missing or not a PNG"
+        assert name in report, f"report.md does not show {name}"
+    for linked in re.findall(r"\]\(([^)]+\.png)\)", report):
+        assert (out / linked).exists(), f"report.md links {linked}, which was not written"
+    assert f"report: {out / 'report.md'}" in result.stdout
+
+
+def test_the_report_names_machine_versions_and_seed(quick):
+    out, _ = quick
+    report = (out / "report.md").read_text()
+    raw = json.loads((out / "results.json").read_text())
+    assert "Seed 3; 2 base and 5 refined instances per scenario" in report
+    assert raw["settings"]["seed"] == 3 and raw["settings"]["base"] == 2 and raw["settings"]["refined"] == 5
+    for package in ("clingo", "frenetix", "commonroad-io", "hypothesis"):
+        assert f"{package} {raw['environment']['versions'][package]}" in report
+    assert f"{raw['environment']['cpus']} CPUs" in report
+    assert "roadlogic bench scenarios --quick --seed 3" in report
+
+
+def test_every_instance_is_recorded_with_its_artifacts(quick):
+    out, _ = quick
+    raw = json.loads((out / "results.json").read_text())
+    for scenario in SCENARIOS:
+        base = [r for r in raw["instances"] if r["scenario"] == scenario and r["strategy"] == "base"]
+        refined = [r for r in raw["instances"] if r["scenario"] == scenario and r["strategy"] == "refined"]
+        assert len(base) == 2 and len(refined) == 5, scenario
+        assert all(r["values"] for r in refined), "a refined instance records its sample"
+        for record in base + refined:
+            assert record["outcome"] in OUTCOMES
+            if record["occupancy"] is not None:
+                for name in ("plan.json", "trace.csv", "scenario.xml", "trajectories.png", "verdict.json"):
+                    assert (out / record["artifacts"] / name).exists(), f"{record['artifacts']}/{name}"
+
+
+def test_the_base_strategy_conforms_on_every_scenario(quick):
+    out, _ = quick
+    raw = json.loads((out / "results.json").read_text())
+    rejected = [(r["scenario"], r["index"], r["message"]) for r in raw["instances"] if r["strategy"] == "base" and r["outcome"] != "conformant"]
+    assert not rejected
+
+
+def test_rq1_tables_match_the_raw_results(quick):
+    out, _ = quick
+    report = (out / "report.md").read_text()
+    raw = json.loads((out / "results.json").read_text())
+    for strategy in ("base", "refined"):
+        rows = {row["scenario"]: row for row in table_after(report, f"### {strategy.capitalize()} strategy")}
+        assert sorted(rows) == SCENARIOS
+        for scenario, row in rows.items():
+            records = [r for r in raw["instances"] if r["scenario"] == scenario and r["strategy"] == strategy]
+            assert int(row["instances"]) == len(records)
+            conformant = sum(r["outcome"] == "conformant" for r in records)
+            assert row["conformant"] == f"{100 * conformant / len(records):.1f}%"
+            means = {stage: sum(r["seconds"].get(stage, 0.0) for r in records) / len(records) for stage in STAGES}
+            for stage in STAGES:
+                assert float(row[f"{stage} s"]) == pytest.approx(means[stage], abs=0.006), (scenario, strategy, stage)
+            assert float(row["total s"]) == pytest.approx(sum(means.values()), abs=0.006)
+            everything = sum(sum(r["seconds"].values()) for r in records) / 60
+            assert float(row["all instances min"]) == pytest.approx(everything, abs=0.006)
+
+
+def test_rq2_similarity_table_matches_the_raw_results(quick):
+    out, _ = quick
+    report = (out / "report.md").read_text()
+    raw = json.loads((out / "results.json").read_text())
+    rows = {row["scenario"]: row for row in table_after(report, "## RQ2: diversity")}
+    assert sorted(rows) == SCENARIOS
+    for scenario, row in rows.items():
+        means = {}
+        for strategy in ("base", "refined"):
+            grids = [cells_of(r["occupancy"]) for r in raw["instances"] if r["scenario"] == scenario and r["strategy"] == strategy and r["occupancy"]]
+            pairs = [len(a & b) / len(a | b) for i, a in enumerate(grids) for b in grids[i + 1:]]
+            means[strategy] = sum(pairs) / len(pairs)
+            assert float(row[strategy]) == pytest.approx(means[strategy], abs=0.0006), (scenario, strategy)
+        assert row["refined lower"] == ("yes" if means["refined"] < means["base"] else "no")
+
+
+def test_refined_outcome_table_matches_the_raw_results(quick):
+    out, _ = quick
+    report = (out / "report.md").read_text()
+    raw = json.loads((out / "results.json").read_text())
+    for row in table_after(report, "### Outcomes, refined strategy"):
+        records = [r for r in raw["instances"] if r["scenario"] == row["scenario"] and r["strategy"] == "refined"]
+        for outcome in OUTCOMES:
+            assert int(row[outcome]) == sum(r["outcome"] == outcome for r in records), (row["scenario"], outcome)
+
+
+def test_the_report_can_be_rebuilt_from_the_results_alone(quick, tmp_path):
+    out, _ = quick
+    copy = tmp_path / "copy"
+    copy.mkdir()
+    (copy / "results.json").write_text((out / "results.json").read_text())
+    result = bench("--report-only", "--out", str(copy))
+    assert result.returncode in (0, 1), result.stderr
+    assert (copy / "report.md").read_text() == (out / "report.md").read_text()
+
+
+# ------------------------------------------------------------------ input errors, reproducibility
+
+
+def test_a_bad_file_is_reported_and_the_others_still_run(tmp_path):
+    (tmp_path / "broken.osc").write_text("scenario broken:\n  v1: car\n  do v1.drive() with:\n    speed(10 kg)\n")
+    (tmp_path / "follow.osc").write_text((ROOT / "scenarios" / "follow.osc").read_text())
+    result = bench(str(tmp_path), "--base", "1", "--refined", "2", "--no-artifacts", "--out", str(tmp_path / "out"))
+    assert result.returncode == 1, result.stdout + result.stderr
+    assert "broken.osc:4:" in result.stderr and "Traceback" not in result.stderr
+    report = (tmp_path / "out" / "report.md").read_text()
+    assert "## Scenarios that could not run" in report and "broken.osc:4:" in report
+    assert "| follow | 1 | 100.0% |" in report
+
+
+def test_a_missing_path_or_results_file_is_a_usage_error(tmp_path):
+    result = bench(str(tmp_path / "nowhere"))
+    assert result.returncode == 2 and "no such file or folder" in result.stderr
+    result = bench("--report-only", "--out", str(tmp_path))
+    assert result.returncode == 2 and "run roadlogic bench first" in result.stderr and "Traceback" not in result.stderr
+
+
+def test_the_same_seed_gives_the_same_instances(tmp_path):
+    runs = []
+    for name in ("a", "b"):
+        assert bench("scenarios/change_lane.osc", "--base", "1", "--refined", "2", "--seed", "5", "--no-artifacts", "--out", str(tmp_path / name)).returncode in (0, 1)
+        raw = json.loads((tmp_path / name / "results.json").read_text())
+        runs.append([(r["strategy"], r["values"], r["outcome"], r["horizon"], r["occupancy"]) for r in raw["instances"]])
+    assert runs[0] == runs[1]
+
+
+# ------------------------------------------------------------------ the full run
+
+
+@pytest.mark.bench
+def test_the_full_run_meets_the_targets(tmp_path):
+    """The paper's setting: 10 base and 50 refined instances of each of the seven scenarios."""
+    result = bench("scenarios", "--out", str(tmp_path))
+    assert result.returncode == 0, result.stdout
