@@ -30,7 +30,9 @@ def write_artifacts(outcome: Outcome, directory: str | Path, animation: bool = T
     name = outcome.scenario.name
     verdict = {
         "scenario": name,
-        "seed": outcome.plan.seed,
+        # the planner's own seed: the run's seed for the base strategy, one made of the run's seed
+        # and the sample for the refined strategy (pipeline.run_instances)
+        "planner_seed": outcome.plan.seed,
         "tries": outcome.tries,
         # when each vehicle reached each of its waypoints (null: missed)
         "goals": {v: [g.reached_at for g in records] for v, records in outcome.simulation.goals.items()},

@@ -314,15 +314,14 @@ def _replay(args: argparse.Namespace) -> int:
 
             name = load_file(args.case, args.lanes).scenario_to_run(args.scenario).name
             case = Case(str(args.case), name, args.seed, args.strategy, args.values or {}, args.instance, args.lanes, args.horizon, max_tries=args.tries)
-        outcome = case.run()
-        return outcome.scenario, outcome
+        return case, case.run()
 
     args.file = args.case
     loaded = _reporting_input_errors(args, replay)
     if isinstance(loaded, int):
         return loaded
-    scenario, outcome = loaded
-    return _show(scenario, outcome, args.out, outcome.plan.seed)
+    case, outcome = loaded
+    return _show(outcome.scenario, outcome, args.out, case.seed)
 
 
 def _show(scenario, outcome, out: Path, seed: int) -> int:

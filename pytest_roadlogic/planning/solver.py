@@ -267,9 +267,10 @@ class Planner:
                 self._advance(control, horizon)
                 continue
             plan_horizon = horizon
-            if found == 0 and self.extension:
-                # the shortest plan first, then the same scenario stretched over more steps
-                target = min(self.settings.max_horizon, horizon + self.extension)
+            target = min(self.settings.max_horizon, horizon + self.extension)
+            if found == 0 and target > horizon:
+                # the shortest plan exists; now the same scenario stretched over more steps (kept
+                # only when there is one: a timed phase may forbid it)
                 for horizon in range(horizon + 1, target + 1):
                     self._advance(control, horizon)
                 longer = self._solve(control, deadline)
