@@ -237,3 +237,46 @@ def test_enumerated_plans_are_spread_out_not_near_neighbours(overtake_automaton)
     cells = [{(v, k, s.lane, round(s.position)) for v in p.vehicles for k, s in enumerate(p.states[v])} for p in plans]
     similarity = statistics.mean(len(a & b) / len(a | b) for a, b in itertools.combinations(cells, 2))
     assert similarity < 0.3, f"mean pairwise Jaccard similarity of occupied cells is {similarity:.2f}"
+
+
+RANDOM_START = PlanningSettings(random_start=True)
+
+
+@pytest.mark.parametrize("path", BENCHMARK, ids=[p.stem for p in BENCHMARK])
+def test_a_random_start_still_obeys_the_rules_and_the_guards(path):
+    from pytest_roadlogic.automaton import build_automaton
+    from pytest_roadlogic.frontend import load_file
+
+    automaton = build_automaton(load_file(path).scenarios[0])
+    for seed in range(1, 6):
+        plan = Planner(automaton, RANDOM_START, seed=seed).first()
+        check_plan(plan, automaton, RANDOM_START)
+
+
+def test_a_random_start_is_fixed_by_its_seed_and_varies_with_it(overtake_automaton):
+    """The refined strategy's samples are independent random plans: one seed, one plan; other
+    seeds give other start speeds, lanes and lengths, and some plans last longer than the shortest."""
+    plans = [Planner(overtake_automaton, RANDOM_START, seed=seed).first() for seed in range(1, 11)]
+    again = Planner(overtake_automaton, RANDOM_START, seed=1).first()
+    assert again.to_dict()["states"] == plans[0].to_dict()["states"]
+    starts = {tuple((p.states[v][0].speed, p.states[v][0].lane) for v in p.vehicles) for p in plans}
+    assert len(starts) >= 8, "random starts should rarely coincide"
+    shortest = Planner(overtake_automaton, seed=1).first().horizon
+    assert max(p.horizon for p in plans) > shortest, "no plan was stretched past the shortest horizon"
+    assert min(p.horizon for p in plans) >= shortest
+
+
+def test_a_random_start_prefers_and_never_forces():
+    """The preferences are domain heuristics: a scenario whose start speed is pinned still plans."""
+    import random
+
+    from pytest_roadlogic.automaton import build_automaton
+    from pytest_roadlogic.frontend import check_text
+    from pytest_roadlogic.planning.instance import start_preferences
+
+    automaton = build_automaton(check_text("scenario s:\n  v1: car\n  do v1.drive() with:\n    speed(9mps, at: start)\n").scenarios[0])
+    rules = start_preferences(automaton, RANDOM_START, random.Random(1))
+    assert rules and all(line.startswith("#heuristic ") for line in rules.splitlines())
+    for seed in range(1, 6):
+        plan = Planner(automaton, RANDOM_START, seed=seed).first()
+        assert 8.0 <= plan.states["v1"][0].speed <= 10.0
