@@ -24,16 +24,20 @@ def _pyplot():
 
 def stage_times(table: dict[tuple[str, str], StrategySummary], scenarios: list[str], strategy: str, path: Path) -> Path:
     """Mean seconds per instance, one bar per scenario, stacked by pipeline stage."""
+    series = {stage: [table[s, strategy].mean_seconds[stage] for s in scenarios] for stage in STAGES}
+    return _stacked_bars(scenarios, series, STAGE_COLOURS, "seconds per instance (mean)", f"Time per pipeline stage, {strategy} strategy", path)
+
+
+def _stacked_bars(scenarios: list[str], series: dict[str, list[float]], colours: dict[str, str], ylabel: str, title: str, path: Path, legend: str = "best") -> Path:
     plt = _pyplot()
     figure, axes = plt.subplots(figsize=(max(6, 1.3 * len(scenarios)), 4.2))
     bottoms = [0.0] * len(scenarios)
-    for stage in STAGES:
-        heights = [table[s, strategy].mean_seconds[stage] for s in scenarios]
-        axes.bar(scenarios, heights, bottom=bottoms, label=stage, color=STAGE_COLOURS[stage])
+    for label, heights in series.items():
+        axes.bar(scenarios, heights, bottom=bottoms, label=label, color=colours[label])
         bottoms = [b + h for b, h in zip(bottoms, heights)]
-    axes.set_ylabel("seconds per instance (mean)")
-    axes.set_title(f"Time per pipeline stage, {strategy} strategy")
-    axes.legend()
+    axes.set_ylabel(ylabel)
+    axes.set_title(title)
+    axes.legend(loc=legend)
     axes.tick_params(axis="x", rotation=30)
     for label in axes.get_xticklabels():
         label.set_horizontalalignment("right")
@@ -79,23 +83,9 @@ def heatmap_overview(table: dict[tuple[str, str], StrategySummary], scenarios: l
 
 
 def outcomes(table: dict[tuple[str, str], StrategySummary], scenarios: list[str], strategy: str, path: Path) -> Path:
-    """How the instances of each scenario ended, stacked (the paper's success-rate bars)."""
-    plt = _pyplot()
-    figure, axes = plt.subplots(figsize=(max(6, 1.3 * len(scenarios)), 4.2))
-    bottoms = [0] * len(scenarios)
-    for outcome in OUTCOMES:
-        counts = [table[s, strategy].outcomes[outcome] for s in scenarios]
-        if outcome == NO_PLAN and not any(counts):
-            continue  # the paper's three categories, and this one only when it happened
-        axes.bar(scenarios, counts, bottom=bottoms, label=outcome, color=OUTCOME_COLOURS[outcome])
-        bottoms = [b + c for b, c in zip(bottoms, counts)]
-    axes.set_ylabel("instances")
-    axes.set_title(f"Outcomes, {strategy} strategy")
-    axes.legend(loc="lower right")
-    axes.tick_params(axis="x", rotation=30)
-    for label in axes.get_xticklabels():
-        label.set_horizontalalignment("right")
-    figure.tight_layout()
-    figure.savefig(path, dpi=110)
-    plt.close(figure)
-    return path
+    """How the instances of each scenario ended, stacked (the paper's success-rate bars): its three
+    categories, and instances without a plan only when there were some."""
+    series = {outcome: [table[s, strategy].outcomes[outcome] for s in scenarios] for outcome in OUTCOMES}
+    if not any(series[NO_PLAN]):
+        del series[NO_PLAN]
+    return _stacked_bars(scenarios, series, OUTCOME_COLOURS, "instances", f"Outcomes, {strategy} strategy", path, legend="lower right")
