@@ -14,7 +14,7 @@ settings.load_profile("ci" if os.environ.get("CI") else "dev")
 
 
 def pytest_addoption(parser):
-    parser.addoption("--run-bench", action="store_true", help="also run the full evaluation (tests marked bench; about 15 minutes)")
+    parser.addoption("--run-bench", action="store_true", help="also run the full evaluation (tests marked bench; about 6 minutes)")
 
 
 def pytest_collection_modifyitems(config, items):
@@ -22,7 +22,7 @@ def pytest_collection_modifyitems(config, items):
         return
     import pytest
 
-    skip = pytest.mark.skip(reason="the full evaluation takes about 15 minutes; select it with --run-bench")
+    skip = pytest.mark.skip(reason="the full evaluation takes about 6 minutes; select it with --run-bench")
     for item in items:
         if "bench" in item.keywords:
             item.add_marker(skip)
