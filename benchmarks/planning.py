@@ -18,6 +18,7 @@ import time
 from pathlib import Path
 
 from pytest_roadlogic.automaton import build_automaton
+from pytest_roadlogic.evaluation import jaccard
 from pytest_roadlogic.frontend import load_file
 from pytest_roadlogic.planning import Planner, PlanningSettings
 from pytest_roadlogic.planning.plan import Plan
@@ -35,7 +36,7 @@ def occupancy(plan: Plan, grid: float = 1.0) -> set[tuple]:
 
 def mean_jaccard(plans: list[Plan]) -> float | None:
     cells = [occupancy(p) for p in plans]
-    pairs = [len(a & b) / len(a | b) for a, b in itertools.combinations(cells, 2)]
+    pairs = [jaccard(a, b) for a, b in itertools.combinations(cells, 2)]
     return statistics.mean(pairs) if pairs else None
 
 

@@ -240,14 +240,11 @@ def _reporting_input_errors(args: argparse.Namespace, action):
     except OscError as error:
         print(error.report(), file=sys.stderr)
         return EXIT_INPUT
-    except UnknownParameter as error:
+    except (UnknownParameter, CaseFileError) as error:
         print(f"{args.file}: error: {error}", file=sys.stderr)
         return EXIT_INPUT
     except KeyError as error:
         print(f"{args.file}: error: no scenario named {error.args[0]!r} in the file", file=sys.stderr)
-        return EXIT_INPUT
-    except CaseFileError as error:
-        print(f"{args.file}: error: {error}", file=sys.stderr)
         return EXIT_INPUT
     except UnsatisfiableScenario as error:
         print(error.report(), file=sys.stderr)
@@ -344,8 +341,8 @@ def _show(scenario, outcome, out: Path, seed: int) -> int:
 def _bench(args: argparse.Namespace) -> int:
     """Run the evaluation and write its report; exit 0 when every target is met, 1 when one is
     missed, 2 when the input is unusable."""
-    from .evaluation import BenchmarkResults, BenchmarkSettings, run_benchmark, targets_met, write_report
-    from .evaluation.runner import RESULTS_FILE
+    from .evaluation import BenchmarkResults, BenchmarkSettings, run_benchmark, summaries, targets_met, write_report
+    from .evaluation.runner import PAPER_COUNTS, QUICK_COUNTS, RESULTS_FILE
 
     if args.report_only:
         try:
@@ -362,9 +359,9 @@ def _bench(args: argparse.Namespace) -> int:
             if not missing:
                 print(f"{' '.join(map(str, args.paths))}: error: no .osc files there", file=sys.stderr)
             return EXIT_INPUT
-        quick = (2, 5) if args.quick else (10, 50)
+        counts = QUICK_COUNTS if args.quick else PAPER_COUNTS
         settings = BenchmarkSettings(
-            tuple(files), base=quick[0] if args.base is None else args.base, refined=quick[1] if args.refined is None else args.refined,
+            tuple(files), base=counts[0] if args.base is None else args.base, refined=counts[1] if args.refined is None else args.refined,
             seed=args.seed, tries=args.tries, planning_time_limit=args.plan_timeout, simulation_time_limit=args.sim_timeout,
             artifacts=not args.no_artifacts,
         )
@@ -382,8 +379,9 @@ def _bench(args: argparse.Namespace) -> int:
         bar.close()
         for name, message in results.errors.items():
             print(message, file=sys.stderr)
-    report = write_report(results, args.out)
-    met, lines = targets_met(results)
+    table = summaries(results)
+    report = write_report(results, args.out, table)
+    met, lines = targets_met(results, table)
     print("\n".join(lines))
     print(f"report: {report}")
     return EXIT_ACCEPTED if met else EXIT_REJECTED

@@ -11,8 +11,6 @@ import subprocess
 import sys
 import xml.etree.ElementTree as ET
 
-import pytest
-
 from tests.conftest import ROOT
 
 pytest_plugins = ["pytester"]

@@ -65,9 +65,13 @@ def jaccard(a: set, b: set) -> float:
 
 
 def similarity_matrix(grids: list[Occupancy]) -> list[list[float]]:
-    """The Jaccard index of every pair of grids (symmetric, 1 on the diagonal)."""
+    """The Jaccard index of every pair of grids (symmetric, 1 on the diagonal: each pair computed once)."""
     cells = [grid.cells() for grid in grids]
-    return [[jaccard(a, b) for b in cells] for a in cells]
+    matrix = [[1.0] * len(cells) for _ in cells]
+    for i in range(len(cells)):
+        for j in range(i + 1, len(cells)):
+            matrix[i][j] = matrix[j][i] = jaccard(cells[i], cells[j])
+    return matrix
 
 
 def mean_pairwise(matrix: list[list[float]]) -> float:

@@ -6,15 +6,16 @@ import math
 from pathlib import Path
 
 from . import figures
-from .runner import BASE, NO_PLAN, OUTCOMES, REFINED, STAGES, STRATEGIES, BenchmarkResults
+from .runner import BASE, NO_PLAN, OUTCOMES, PAPER_COUNTS, REFINED, STAGES, STRATEGIES, BenchmarkResults
 from .summary import StrategySummary, summaries, targets
 
 REPORT_FILE = "report.md"
 
 
-def write_report(results: BenchmarkResults, out: Path) -> Path:
-    """Write every figure and ``report.md`` into ``out``; returns the report's path."""
-    table = summaries(results)
+def write_report(results: BenchmarkResults, out: Path, table: dict[tuple[str, str], StrategySummary] | None = None) -> Path:
+    """Write every figure and ``report.md`` into ``out``; returns the report's path. ``table`` is
+    ``summaries(results)`` when the caller has it already."""
+    table = table if table is not None else summaries(results)
     scenarios = [s for s in results.scenarios if s not in results.errors]
     plots: dict[str, Path] = {}
     if scenarios:
@@ -53,8 +54,8 @@ def render(results: BenchmarkResults, table: dict[tuple[str, str], StrategySumma
         *(f"| {t.name} | {'yes' if t.met else 'NO'} | {t.detail} |" for t in targets(results, table)),
         "",
     ]
-    if s["base"] < 10 or s["refined"] < 50:
-        lines += ["Fewer instances than the paper's 10 and 50: the targets are set for those; with two base instances a mean similarity rests on one pair.", ""]
+    if s["base"] < PAPER_COUNTS[0] or s["refined"] < PAPER_COUNTS[1]:
+        lines += [f"Fewer instances than the paper's {PAPER_COUNTS[0]} and {PAPER_COUNTS[1]}: the targets are set for those; with two base instances a mean similarity rests on one pair.", ""]
     if results.errors:
         lines += ["## Scenarios that could not run", ""]
         lines += [f"- {name}: {message.splitlines()[0]}" for name, message in sorted(results.errors.items())]

@@ -41,13 +41,18 @@ RESULTS_FILE = "results.json"
 PACKAGES = ("pytest-roadlogic", "clingo", "clingo-dl", "frenetix", "commonroad-io", "hypothesis", "numpy", "matplotlib", "pytest")
 
 
+# instances per scenario: the paper's (which the targets are set for), and a run to try the setup
+PAPER_COUNTS = (10, 50)
+QUICK_COUNTS = (2, 5)
+
+
 @dataclass(frozen=True)
 class BenchmarkSettings:
-    """What one evaluation runs; the defaults are the paper's (10 base and 50 refined instances)."""
+    """What one evaluation runs; the defaults are the paper's."""
 
     paths: tuple[Path, ...]
-    base: int = 10
-    refined: int = 50
+    base: int = PAPER_COUNTS[0]
+    refined: int = PAPER_COUNTS[1]
     seed: int = 1
     tries: int = MAX_TRIES
     planning_time_limit: float = 60.0
@@ -165,13 +170,13 @@ def _run_base(scenario, name: str, settings: BenchmarkSettings, out: Path, recor
         ):
             record(_record(outcome, name, BASE, index, None, settings, out))
             index += 1
-        left, outcome_kind, message = settings.base - index, NO_PLAN, "the planner has no further plan"
+        ending, message = NO_PLAN, "the planner has no further plan"
     except (PlanningTimeout, SimulationTimeout) as error:
-        left, outcome_kind, message = settings.base - index, TIMED_OUT, str(error)
+        ending, message = TIMED_OUT, str(error)
     except NoPlanError as error:
-        left, outcome_kind, message = settings.base - index, NO_PLAN, str(error)
-    for k in range(index, index + left):
-        record(InstanceRecord(name, BASE, k, outcome_kind, message=message))
+        ending, message = NO_PLAN, str(error)
+    for k in range(index, settings.base):
+        record(InstanceRecord(name, BASE, k, ending, message=message))
 
 
 def _run_refined(scenario, name: str, settings: BenchmarkSettings, out: Path, record: Callable[[InstanceRecord], None]) -> None:

@@ -85,7 +85,7 @@ def targets(results: BenchmarkResults, table: dict[tuple[str, str], StrategySumm
     ]
 
 
-def targets_met(results: BenchmarkResults) -> tuple[bool, list[str]]:
+def targets_met(results: BenchmarkResults, table: dict[tuple[str, str], StrategySummary]) -> tuple[bool, list[str]]:
     """Whether every target is met, and one line per target for a terminal."""
-    found = targets(results, summaries(results))
+    found = targets(results, table)
     return all(t.met for t in found), [f"{'met' if t.met else 'MISSED'}: {t.name} ({t.detail})" for t in found]

@@ -183,8 +183,7 @@ def build_instance(automaton: SymbolicAutomaton, settings: PlanningSettings, rel
     starts = settings.initial_speeds()
     if not starts:
         raise ValueError("the initial speed range leaves no allowed speed on the grid")
-    width = max(1, round(settings.start_zone / settings.grid))
-    zones = math.ceil(max(settings.initial_spread, _farthest_position(automaton)) / settings.grid / width)
+    width, zones = start_zones(automaton, settings)
     gap = math.ceil(settings.min_gap / settings.grid)
     vehicles = automaton.actors
     base = [
@@ -403,9 +402,16 @@ def _inset(low: float, high: float, margin: float) -> tuple[float, float]:
 
 
 
+def start_zones(automaton: SymbolicAutomaton, settings: PlanningSettings) -> tuple[int, int]:
+    """(cells per start zone, zones on either side of the first vehicle): enough zones to cover the
+    spread, or the farthest start the scenario's position bounds ask for when that is farther."""
+    width = max(1, round(settings.start_zone / settings.grid))
+    return width, math.ceil(max(settings.initial_spread, _farthest_position(automaton)) / settings.grid / width)
+
+
 def start_preferences(automaton: SymbolicAutomaton, settings: PlanningSettings, draw: random.Random) -> str:
     """Domain heuristics that make the solver try a random start speed, lane and zone for each
-    vehicle, and a random acceleration at each step, before anything else.
+    vehicle, and one random acceleration for it at every step, before anything else.
 
     They are preferences, not constraints: a choice that cannot lead to a plan is undone by the
     search like any other decision, so a random start never loses a plan. Without them the solver
@@ -413,8 +419,7 @@ def start_preferences(automaton: SymbolicAutomaton, settings: PlanningSettings, 
     plan (the refined strategy's instances would differ only where the sampled values force it).
     """
     starts = list(settings.initial_speeds())
-    width = max(1, round(settings.start_zone / settings.grid))
-    zones = math.ceil(max(settings.initial_spread, _farthest_position(automaton)) / settings.grid / width)
+    width, zones = start_zones(automaton, settings)
     accelerations = settings.acceleration_cells()
     rules = []
     for index, vehicle in enumerate(automaton.actors):
