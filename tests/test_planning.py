@@ -3,6 +3,7 @@
 The checks here are written from the rules, independently of the ASP encoding.
 """
 
+import dataclasses
 from pathlib import Path
 
 import pytest
@@ -64,6 +65,7 @@ def check_plan(plan, automaton, settings=SETTINGS):
 
 
 BENCHMARK = sorted((Path(__file__).resolve().parent.parent / "scenarios").glob("*.osc"))
+BENCHMARK_BY_NAME = {path.stem: path for path in BENCHMARK}
 
 
 @pytest.mark.parametrize("path", BENCHMARK, ids=[p.stem for p in BENCHMARK])
@@ -266,6 +268,31 @@ def test_a_random_start_is_fixed_by_its_seed_and_varies_with_it(overtake_automat
     assert min(p.horizon for p in plans) >= shortest
 
 
+def test_a_random_start_drives_a_free_vehicle_as_preferred():
+    """A vehicle the scenario says nothing about (overtake_third_actor's v3) nearly always takes its
+    random acceleration where the speed limits allow it, and keeps its lane. Preferences the solver
+    ignores (chance would follow a third of them) leave it weaving at random, and such plans all
+    cover the same cells. Preferences may yield to the scenario and the other vehicles, hence the margins."""
+    import re
+
+    from pytest_roadlogic.automaton import build_automaton
+    from pytest_roadlogic.frontend import load_file
+
+    automaton = build_automaton(load_file(BENCHMARK_BY_NAME["overtake_third_actor"]).scenarios[0])
+    settings = dataclasses.replace(RANDOM_START, max_horizon=12)  # long enough to show a habit, and quick
+    followed = steps = kept_lane = 0
+    for seed in range(1, 13):
+        planner = Planner(automaton, settings, seed=seed)
+        preferred = int(re.search(r"preferred_acc\(v3,(-?\d+)\)", planner.preferences).group(1)) * settings.grid / settings.dt
+        states = planner.first().states["v3"]
+        possible = [(a.speed, b.speed) for a, b in zip(states, states[1:]) if settings.min_speed <= a.speed + preferred <= settings.max_speed]
+        followed += sum(after - before == preferred for before, after in possible)
+        steps += len(possible)
+        kept_lane += len({s.lane for s in states}) == 1
+    assert followed >= 0.85 * steps, f"v3 took its preferred acceleration at {followed} of {steps} steps where it could"
+    assert kept_lane >= 10, f"v3 kept its lane in {kept_lane} of 12 plans"
+
+
 def test_a_random_start_prefers_and_never_forces():
     """The preferences are domain heuristics: a scenario whose start speed is pinned still plans."""
     import random
@@ -276,7 +303,7 @@ def test_a_random_start_prefers_and_never_forces():
 
     automaton = build_automaton(check_text("scenario s:\n  v1: car\n  do v1.drive() with:\n    speed(9mps, at: start)\n").scenarios[0])
     rules = start_preferences(automaton, RANDOM_START, random.Random(1))
-    assert rules and all(line.startswith("#heuristic ") for line in rules.splitlines())
+    assert rules and all(line.startswith(("#heuristic ", "#program ", "preferred_acc(")) for line in rules.splitlines()), "only heuristics and the facts they read"
     for seed in range(1, 6):
         plan = Planner(automaton, RANDOM_START, seed=seed).first()
         assert 8.0 <= plan.states["v1"][0].speed <= 10.0

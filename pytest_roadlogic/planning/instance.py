@@ -44,10 +44,9 @@ class PlanningSettings:
     # a search over many samples turns it off and asks only for the one it reports
     explain_unsatisfiable: bool = True
     # the refined strategy's instances are independent samples: its first plan follows random
-    # preferences drawn from the seed (start_preferences) and lasts up to this many seconds longer
-    # than the shortest plan, instead of being the solver's first answer at the shortest horizon
+    # preferences drawn from the seed (start_preferences) and lasts a random number of steps from
+    # the shortest horizon to max_horizon, instead of being the solver's first answer at the shortest
     random_start: bool = False
-    random_extension: float = 6.0
 
     def summary(self, lanes: int) -> str:
         """The domain rules' numbers on a road of ``lanes`` lanes, for messages that blame them."""
@@ -410,18 +409,25 @@ def start_zones(automaton: SymbolicAutomaton, settings: PlanningSettings) -> tup
 
 
 def start_preferences(automaton: SymbolicAutomaton, settings: PlanningSettings, draw: random.Random) -> str:
-    """Domain heuristics that make the solver try a random start speed, lane and zone for each
-    vehicle, and one random acceleration for it at every step, before anything else.
+    """A program of domain heuristics that make the solver try a random start speed, lane and zone
+    for each vehicle, one random acceleration for it at every step, and keeping its lane whenever
+    the scenario does not need a change, before anything else.
 
     They are preferences, not constraints: a choice that cannot lead to a plan is undone by the
     search like any other decision, so a random start never loses a plan. Without them the solver
     decides in the same order for every problem, and samples of nearby values get nearly the same
     plan (the refined strategy's instances would differ only where the sampled values force it).
+    Keeping the lane matters as much: left free, the solver's random signs weave a vehicle the
+    scenario says nothing about across every lane, and all such plans cover the same cells.
+
+    The per-step preferences live in the ``dynamics(t)`` part: a step's atoms exist only once
+    that step is grounded, and a heuristic grounded before them has no effect (measured: the
+    preferred acceleration was taken no more often than chance when it was stated in ``base``).
     """
     starts = list(settings.initial_speeds())
     width, zones = start_zones(automaton, settings)
     accelerations = settings.acceleration_cells()
-    rules = []
+    rules = ["#program base."]
     for index, vehicle in enumerate(automaton.actors):
         name = _atom(vehicle)
         rules.append(f"#heuristic lane({name},{draw.randrange(automaton.lanes)},0). [1,true]")
@@ -430,6 +436,11 @@ def start_preferences(automaton: SymbolicAutomaton, settings: PlanningSettings, 
         if vehicle in automaton.stationary:
             continue
         rules.append(f"#heuristic vel({name},{draw.choice(starts)},0). [1,true]")
-        acceleration = draw.choice(accelerations)
-        rules.extend(f"#heuristic acc({name},{acceleration},{t}). [1,true]" for t in range(1, settings.max_horizon + 1))
+        rules.append(f"preferred_acc({name},{draw.choice(accelerations)}).")
+    rules += [
+        "#program dynamics(t).",
+        "#heuristic acc(V,A,t) : preferred_acc(V,A). [2,true]",
+        "#heuristic acc(V,0,t) : preferred_acc(V,A). [1,true]",  # else cruise (never oscillate at a limit)
+        "#heuristic shift(V,0,t) : vehicle(V), not stationary(V). [1,true]",
+    ]
     return "\n".join(rules) + "\n"

@@ -118,11 +118,13 @@ class Planner:
         self.base_program, self.state_program = build_instance(automaton, self.settings)
         self.stats: dict[str, float] = {"ground_s": 0.0, "solve_s": 0.0}
         # a random start: the first plan follows choices drawn from the seed, not the solver's habits
-        self.preferences, self.extension = "", 0
+        # (how long it lasts is as free as where it starts: the scenario rarely says, and a plan at
+        # the shortest horizon is only the incremental search's habit)
+        self.preferences, self.stretch = "", 0.0
         if self.settings.random_start:
             draw = random.Random(seed)
             self.preferences = start_preferences(automaton, self.settings, draw)
-            self.extension = draw.randint(0, math.floor(self.settings.random_extension / self.settings.dt + 1e-9))
+            self.stretch = draw.random()  # the fraction of the steps left up to max_horizon
 
     def instance_program(self) -> str:
         return "#program base.\n" + self.base_program + "\n#program state(t).\n" + self.state_program
@@ -136,7 +138,7 @@ class Planner:
         self.theory.register(control)
         self._add(control, background_theory() + "\n#program base.\n" + base_program + "\n#program state(t).\n" + state_program)
         if self.preferences:
-            self._add(control, "#program base.\n" + self.preferences)
+            self._add(control, self.preferences)
         return control
 
     def _add(self, control: clingo.Control, program: str) -> None:
@@ -267,7 +269,7 @@ class Planner:
                 self._advance(control, horizon)
                 continue
             plan_horizon = horizon
-            target = min(self.settings.max_horizon, horizon + self.extension)
+            target = horizon + math.floor(self.stretch * (self.settings.max_horizon - horizon + 1))  # uniform
             if found == 0 and target > horizon:
                 # the shortest plan exists; now the same scenario stretched over more steps (kept
                 # only when there is one: a timed phase may forbid it)
