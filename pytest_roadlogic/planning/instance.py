@@ -409,9 +409,9 @@ def start_zones(automaton: SymbolicAutomaton, settings: PlanningSettings) -> tup
 
 
 def start_preferences(automaton: SymbolicAutomaton, settings: PlanningSettings, draw: random.Random) -> str:
-    """A program of domain heuristics that make the solver try a random start speed, lane and zone
-    for each vehicle, one random acceleration for it at every step, and keeping its lane whenever
-    the scenario does not need a change, before anything else.
+    """A program of domain heuristics: the solver tries a random start speed, lane and zone for each
+    vehicle before anything else, and at every step it tries the vehicle's one random acceleration
+    and its current lane first, so that it changes lane only where the scenario needs it.
 
     They are preferences, not constraints: a choice that cannot lead to a plan is undone by the
     search like any other decision, so a random start never loses a plan. Without them the solver
@@ -437,10 +437,15 @@ def start_preferences(automaton: SymbolicAutomaton, settings: PlanningSettings, 
             continue
         rules.append(f"#heuristic vel({name},{draw.choice(starts)},0). [1,true]")
         rules.append(f"preferred_acc({name},{draw.choice(accelerations)}).")
+    # per step, the preferred value is only a sign (the value tried first when the search decides
+    # that atom), not a decision order: a forced order made some long plans take half a minute
     rules += [
         "#program dynamics(t).",
-        "#heuristic acc(V,A,t) : preferred_acc(V,A). [2,true]",
-        "#heuristic acc(V,0,t) : preferred_acc(V,A). [1,true]",  # else cruise (never oscillate at a limit)
-        "#heuristic shift(V,0,t) : vehicle(V), not stationary(V). [1,true]",
+        "#heuristic acc(V,A,t) : preferred_acc(V,A). [1,sign]",
+        "#heuristic acc(V,B,t) : preferred_acc(V,A), accel(B), B != A. [1,false]",
+        "#heuristic shift(V,0,t) : vehicle(V), not stationary(V). [1,sign]",
+        "#heuristic shift(V,D,t) : vehicle(V), not stationary(V), lateral(D), D != 0. [1,false]",
+        "#heuristic lane(V,L,t) : lane(V,L,t-1). [1,sign]",
+        "#heuristic lane(V,M,t) : lane(V,L,t-1), lane_id(M), M != L. [1,false]",
     ]
     return "\n".join(rules) + "\n"

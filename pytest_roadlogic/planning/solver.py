@@ -108,6 +108,13 @@ def background_theory() -> str:
     return "\n".join((ASP_DIR / name).read_text(encoding="utf-8") for name in BACKGROUND)
 
 
+# conflicts a random start may spend stretching its plan past the shortest horizon: random
+# preferences now and then lead the search into a long detour (measured: up to 36 s), and a count
+# of conflicts, unlike a time limit, ends it at the same point on every machine (50 000: about 2 s
+# here; past it the plan keeps the shortest horizon)
+STRETCH_CONFLICTS = 50_000
+
+
 class Planner:
     """Plans for one automaton; ``plans()`` yields them lazily, shortest horizon first."""
 
@@ -272,10 +279,10 @@ class Planner:
             target = horizon + math.floor(self.stretch * (self.settings.max_horizon - horizon + 1))  # uniform
             if found == 0 and target > horizon:
                 # the shortest plan exists; now the same scenario stretched over more steps (kept
-                # only when there is one: a timed phase may forbid it)
+                # only when one is found within STRETCH_CONFLICTS: a timed phase may forbid it)
                 for horizon in range(horizon + 1, target + 1):
                     self._advance(control, horizon)
-                longer = self._solve(control, deadline)
+                longer = self._solve(control, deadline, STRETCH_CONFLICTS)
                 if longer is not None:
                     symbols, plan_horizon = longer, horizon
             self.stats["rules"] = float(control.statistics.get("problem", {}).get("lp", {}).get("rules", 0))
@@ -295,9 +302,11 @@ class Planner:
         self.theory.prepare(control)
         self.stats["ground_s"] += time.perf_counter() - start
 
-    def _solve(self, control: clingo.Control, deadline: float) -> list[clingo.Symbol] | None:
+    def _solve(self, control: clingo.Control, deadline: float, conflicts: int | None = None) -> list[clingo.Symbol] | None:
+        """The shown atoms of the next model; None when there is none, or none within ``conflicts``."""
         start = time.perf_counter()
         model_symbols: list[clingo.Symbol] | None = None
+        control.configuration.solve.solve_limit = f"{conflicts},umax" if conflicts is not None else "umax,umax"
         with control.solve(yield_=True, async_=True) as handle:
             self._wait(handle, deadline, f"planning ran out of its time limit ({self.settings.time_limit:g} s)")
             model = handle.model()
