@@ -247,6 +247,5 @@ def test_the_full_run_conforms(full_run):
 
 
 @pytest.mark.bench
-@pytest.mark.xfail(reason="seed 1 misses it on overtake_third_actor (base 0.37, refined 0.41); docs/evaluation.md says why", strict=False)
 def test_the_full_run_is_more_diverse_with_the_refined_strategy(full_run):
     assert "met: refined mean similarity below base" in full_run, full_run

@@ -306,7 +306,8 @@ class Planner:
         """The shown atoms of the next model; None when there is none, or none within ``conflicts``."""
         start = time.perf_counter()
         model_symbols: list[clingo.Symbol] | None = None
-        control.configuration.solve.solve_limit = f"{conflicts},umax" if conflicts is not None else "umax,umax"
+        if conflicts is not None:  # set only here: touching the configuration changes later searches
+            control.configuration.solve.solve_limit = f"{conflicts},umax"
         with control.solve(yield_=True, async_=True) as handle:
             self._wait(handle, deadline, f"planning ran out of its time limit ({self.settings.time_limit:g} s)")
             model = handle.model()
@@ -318,6 +319,8 @@ class Planner:
                     for symbol, value in self.theory.assignment(model.thread_id)
                     if symbol.name == "p"
                 ]
+        if conflicts is not None:
+            control.configuration.solve.solve_limit = "umax,umax"
         self.stats["solve_s"] += time.perf_counter() - start
         return model_symbols
 
