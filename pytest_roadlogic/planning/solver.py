@@ -124,6 +124,7 @@ class Planner:
         self.seed = seed
         self.base_program, self.state_program = build_instance(automaton, self.settings)
         self.stats: dict[str, float] = {"ground_s": 0.0, "solve_s": 0.0}
+        self._theories: dict[int, ClingoDLTheory] = {}  # each control's difference-logic propagator
         # a random start: the first plan follows choices drawn from the seed, not the solver's habits
         # (how long it lasts is as free as where it starts: the scenario rarely says, and a plan at
         # the shortest horizon is only the incremental search's habit)
@@ -141,8 +142,8 @@ class Planner:
             [f"--seed={self.seed}", "--sign-def=rnd", "--rand-freq=0.02", "--heuristic=Domain", "--warn=none", "--models=1"],
             logger=lambda code, message: None,
         )
-        self.theory = ClingoDLTheory()
-        self.theory.register(control)
+        self._theories[id(control)] = theory = ClingoDLTheory()
+        theory.register(control)
         self._add(control, background_theory() + "\n#program base.\n" + base_program + "\n#program state(t).\n" + state_program)
         if self.preferences:
             self._add(control, self.preferences)
@@ -151,7 +152,7 @@ class Planner:
     def _add(self, control: clingo.Control, program: str) -> None:
         """Add a program, its ``&diff`` constraints rewritten for the difference-logic theory."""
         with ProgramBuilder(control) as builder:
-            parse_string(program, lambda statement: self.theory.rewrite_ast(statement, builder.add))
+            parse_string(program, lambda statement: self._theories[id(control)].rewrite_ast(statement, builder.add))
 
     def plans(self, limit: int | None = None) -> Iterator[Plan]:
         """Plans with start speeds in ``initial_speed`` first; when there is none up to the horizon
@@ -262,34 +263,51 @@ class Planner:
         horizon = 0
         found = 0
         self._advance(control, horizon)
+        # a random start's first plan comes from a search of its own at a longer horizon; the plans
+        # after it too, as long as that search answers within STRETCH_CONFLICTS, then the shortest
+        # horizon's search goes on (a stretched search that stalls must not cost the run its plans)
+        stretched: tuple[clingo.Control, int] | None = None
         while limit is None or found < limit:
-            symbols = self._solve(control, deadline)
-            if symbols is None:
-                if horizon >= self.settings.max_horizon:
-                    if found:
-                        return
-                    raise NoPlanError(
-                        f"no plan satisfies the scenario within {self.settings.max_horizon} steps "
-                        f"({self.settings.max_horizon * self.settings.dt:g} s)"
-                    )
-                horizon += 1
-                self._advance(control, horizon)
-                continue
-            plan_horizon = horizon
-            target = horizon + math.floor(self.stretch * (self.settings.max_horizon - horizon + 1))  # uniform
-            if found == 0 and target > horizon:
-                # the shortest plan exists; now the same scenario stretched over more steps (kept
-                # only when one is found within STRETCH_CONFLICTS: a timed phase may forbid it)
-                for horizon in range(horizon + 1, target + 1):
+            if stretched is not None:
+                symbols = self._solve(stretched[0], deadline, STRETCH_CONFLICTS)
+                if symbols is None:
+                    stretched = None
+                    continue
+                source, plan_horizon = stretched
+            else:
+                symbols = self._solve(control, deadline)
+                if symbols is None:
+                    if horizon >= self.settings.max_horizon:
+                        if found:
+                            return
+                        raise NoPlanError(
+                            f"no plan satisfies the scenario within {self.settings.max_horizon} steps "
+                            f"({self.settings.max_horizon * self.settings.dt:g} s)"
+                        )
+                    horizon += 1
                     self._advance(control, horizon)
-                longer = self._solve(control, deadline, STRETCH_CONFLICTS)
-                if longer is not None:
-                    symbols, plan_horizon = longer, horizon
-            self.stats["rules"] = float(control.statistics.get("problem", {}).get("lp", {}).get("rules", 0))
+                    continue
+                source, plan_horizon = control, horizon
+                target = horizon + math.floor(self.stretch * (self.settings.max_horizon - horizon + 1))  # uniform
+                if found == 0 and target > horizon:
+                    longer = self._stretched(base_program, state_program, target, deadline)
+                    if longer is not None:
+                        stretched, symbols = longer
+                        source, plan_horizon = stretched
+            self.stats["rules"] = float(source.statistics.get("problem", {}).get("lp", {}).get("rules", 0))
             plan = self._plan(symbols, plan_horizon, found)
             found += 1
             yield plan
-            self._exclude(control, symbols, found)
+            self._exclude(source, symbols, found)
+
+    def _stretched(self, base_program: str, state_program: str, horizon: int, deadline: float) -> tuple[tuple[clingo.Control, int], list[clingo.Symbol]] | None:
+        """A search for plans of exactly ``horizon`` steps and its first plan; None when none is
+        found within STRETCH_CONFLICTS (a timed phase may forbid any)."""
+        control = self._control(base_program, state_program)
+        for step in range(horizon + 1):
+            self._advance(control, step)
+        symbols = self._solve(control, deadline, STRETCH_CONFLICTS)
+        return None if symbols is None else ((control, horizon), symbols)
 
     def first(self) -> Plan:
         for plan in self.plans(limit=1):
@@ -299,7 +317,7 @@ class Planner:
     def _ground(self, control: clingo.Control, parts) -> None:
         start = time.perf_counter()
         control.ground(parts)
-        self.theory.prepare(control)
+        self._theories[id(control)].prepare(control)
         self.stats["ground_s"] += time.perf_counter() - start
 
     def _solve(self, control: clingo.Control, deadline: float, conflicts: int | None = None) -> list[clingo.Symbol] | None:
@@ -312,11 +330,11 @@ class Planner:
             self._wait(handle, deadline, f"planning ran out of its time limit ({self.settings.time_limit:g} s)")
             model = handle.model()
             if model is not None:
-                self.theory.on_model(model)
+                self._theories[id(control)].on_model(model)
                 model_symbols = list(model.symbols(shown=True))
                 model_symbols += [
                     clingo.Function("pos", [symbol.arguments[0], clingo.Number(int(value)), symbol.arguments[1]])
-                    for symbol, value in self.theory.assignment(model.thread_id)
+                    for symbol, value in self._theories[id(control)].assignment(model.thread_id)
                     if symbol.name == "p"
                 ]
         if conflicts is not None:
