@@ -1,5 +1,5 @@
 """`roadlogic bench`: the paper's evaluation. The quick run goes end to end here; the full run is
-selected with --run-bench (about 6 minutes on two cores)."""
+selected with --run-bench (about 10 minutes on two cores)."""
 
 import json
 import math
