@@ -18,6 +18,7 @@ import dataclasses
 import math
 import random
 import time
+import weakref
 from collections.abc import Iterator
 from pathlib import Path
 
@@ -116,7 +117,8 @@ STRETCH_CONFLICTS = 50_000
 
 
 class Planner:
-    """Plans for one automaton; ``plans()`` yields them lazily, shortest horizon first."""
+    """Plans for one automaton; ``plans()`` yields them lazily, shortest horizon first (but for a
+    random start, whose first plans have a random horizon)."""
 
     def __init__(self, automaton: SymbolicAutomaton, settings: PlanningSettings | None = None, seed: int = 0) -> None:
         self.automaton = automaton
@@ -124,7 +126,8 @@ class Planner:
         self.seed = seed
         self.base_program, self.state_program = build_instance(automaton, self.settings)
         self.stats: dict[str, float] = {"ground_s": 0.0, "solve_s": 0.0}
-        self._theories: dict[int, ClingoDLTheory] = {}  # each control's difference-logic propagator
+        # each control's difference-logic propagator (weak: explaining a failure makes many controls)
+        self._theories: weakref.WeakKeyDictionary[clingo.Control, ClingoDLTheory] = weakref.WeakKeyDictionary()
         # a random start: the first plan follows choices drawn from the seed, not the solver's habits
         # (how long it lasts is as free as where it starts: the scenario rarely says, and a plan at
         # the shortest horizon is only the incremental search's habit)
@@ -142,7 +145,7 @@ class Planner:
             [f"--seed={self.seed}", "--sign-def=rnd", "--rand-freq=0.02", "--heuristic=Domain", "--warn=none", "--models=1"],
             logger=lambda code, message: None,
         )
-        self._theories[id(control)] = theory = ClingoDLTheory()
+        self._theories[control] = theory = ClingoDLTheory()
         theory.register(control)
         self._add(control, background_theory() + "\n#program base.\n" + base_program + "\n#program state(t).\n" + state_program)
         if self.preferences:
@@ -152,7 +155,7 @@ class Planner:
     def _add(self, control: clingo.Control, program: str) -> None:
         """Add a program, its ``&diff`` constraints rewritten for the difference-logic theory."""
         with ProgramBuilder(control) as builder:
-            parse_string(program, lambda statement: self._theories[id(control)].rewrite_ast(statement, builder.add))
+            parse_string(program, lambda statement: self._theories[control].rewrite_ast(statement, builder.add))
 
     def plans(self, limit: int | None = None) -> Iterator[Plan]:
         """Plans with start speeds in ``initial_speed`` first; when there is none up to the horizon
@@ -317,7 +320,7 @@ class Planner:
     def _ground(self, control: clingo.Control, parts) -> None:
         start = time.perf_counter()
         control.ground(parts)
-        self._theories[id(control)].prepare(control)
+        self._theories[control].prepare(control)
         self.stats["ground_s"] += time.perf_counter() - start
 
     def _solve(self, control: clingo.Control, deadline: float, conflicts: int | None = None) -> list[clingo.Symbol] | None:
@@ -330,11 +333,11 @@ class Planner:
             self._wait(handle, deadline, f"planning ran out of its time limit ({self.settings.time_limit:g} s)")
             model = handle.model()
             if model is not None:
-                self._theories[id(control)].on_model(model)
+                self._theories[control].on_model(model)
                 model_symbols = list(model.symbols(shown=True))
                 model_symbols += [
                     clingo.Function("pos", [symbol.arguments[0], clingo.Number(int(value)), symbol.arguments[1]])
-                    for symbol, value in self._theories[id(control)].assignment(model.thread_id)
+                    for symbol, value in self._theories[control].assignment(model.thread_id)
                     if symbol.name == "p"
                 ]
         if conflicts is not None:
