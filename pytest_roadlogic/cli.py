@@ -80,15 +80,20 @@ def main(argv: list[str] | None = None) -> int:
     return {"run": _run, "check": _check, "automaton": _automaton, "plan": _plan, "replay": _replay, "bench": _bench}[args.command](args)
 
 
+def _whole_number(text: str, least: int, what: str) -> int:
+    """An option's whole number from ``least`` up (argparse reports the error)."""
+    try:
+        number = int(text)
+    except ValueError:
+        number = least - 1
+    if number < least:
+        raise argparse.ArgumentTypeError(f"{text!r} is not {what}; give a whole number from {least} up")
+    return number
+
+
 def _count(text: str) -> int:
     """An instance count: a whole number from 0 up."""
-    try:
-        count = int(text)
-    except ValueError:
-        count = -1
-    if count < 0:
-        raise argparse.ArgumentTypeError(f"{text!r} is not an instance count; give a whole number from 0 up")
-    return count
+    return _whole_number(text, 0, "an instance count")
 
 
 def _values(text: str) -> dict:
@@ -104,13 +109,7 @@ def _values(text: str) -> dict:
 
 def lane_count(text: str) -> int:
     """A lanes option's value: a whole number from 1 up (argparse reports the error)."""
-    try:
-        lanes = int(text)
-    except ValueError:
-        lanes = 0
-    if lanes < 1:
-        raise argparse.ArgumentTypeError(f"{text!r} is not a lane count; give a whole number from 1 up")
-    return lanes
+    return _whole_number(text, 1, "a lane count")
 
 
 def _scenario_command(commands, name: str, help: str) -> argparse.ArgumentParser:
@@ -337,12 +336,11 @@ def _show(scenario, outcome, out: Path, seed: int) -> int:
     return EXIT_ACCEPTED if outcome.verdict.accepted else EXIT_REJECTED
 
 
-
 def _bench(args: argparse.Namespace) -> int:
     """Run the evaluation and write its report; exit 0 when every target is met, 1 when one is
     missed, 2 when the input is unusable."""
     from .evaluation import BenchmarkResults, BenchmarkSettings, run_benchmark, summaries, targets_met, write_report
-    from .evaluation.runner import PAPER_COUNTS, QUICK_COUNTS, RESULTS_FILE
+    from .evaluation.runner import CONFORMANT, PAPER_COUNTS, QUICK_COUNTS, RESULTS_FILE
 
     if args.report_only:
         try:
@@ -372,7 +370,7 @@ def _bench(args: argparse.Namespace) -> int:
 
         def progress(record, done: int, total: int) -> None:
             nonlocal conformant
-            conformant += record.outcome == "conformant"
+            conformant += record.outcome == CONFORMANT
             bar.update(done, f"{record.scenario} {record.strategy}  conformant {conformant}")
 
         results = run_benchmark(settings, args.out, progress, command=["roadlogic", *args.argv])

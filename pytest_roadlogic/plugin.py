@@ -292,9 +292,7 @@ class ScenarioItem(pytest.Item):
         raise ScenarioFailed(case, "\n".join(lines), failure.outcome, failure.kind)
 
     def repr_failure(self, excinfo, style=None):
-        if isinstance(excinfo.value, ScenarioFailed):
-            return str(excinfo.value)
-        if isinstance(excinfo.value, OscError):
+        if isinstance(excinfo.value, (ScenarioFailed, OscError)):
             return str(excinfo.value)
         return super().repr_failure(excinfo, style=style)
 

@@ -18,6 +18,7 @@ import dataclasses
 import hashlib
 import json
 import math
+from collections import Counter
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -77,9 +78,7 @@ def logical_parameters(scenario: model.Scenario, space: ParameterSpace | None = 
         elif domain.choices:
             found.append(LogicalParameter(domain.name, domain.location, choices=tuple(domain.choices)))
     inline = list(_inline_ranges(scenario))
-    counts: dict[str, int] = {}
-    for name, _ in inline:
-        counts[name] = counts.get(name, 0) + 1
+    counts = Counter(name for name, _ in inline)
     for name, node in inline:
         if counts[name] > 1:
             name = f"{name}@{node.location.line}"

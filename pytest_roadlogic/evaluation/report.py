@@ -6,7 +6,7 @@ import math
 from pathlib import Path
 
 from . import figures
-from .runner import BASE, NO_PLAN, OUTCOMES, PAPER_COUNTS, REFINED, STAGES, STRATEGIES, BenchmarkResults
+from .runner import BASE, CONFORMANT, NO_PLAN, OUTCOMES, PAPER_COUNTS, REFINED, STAGES, STRATEGIES, BenchmarkResults
 from .summary import StrategySummary, summaries, targets
 
 REPORT_FILE = "report.md"
@@ -113,7 +113,7 @@ def _outcome_table(table, scenarios: list[str], strategy: str) -> list[str]:
 
 
 def _unsuccessful(results: BenchmarkResults) -> list[str]:
-    failed = [r for r in results.instances if r.outcome != "conformant"]
+    failed = [r for r in results.instances if r.outcome != CONFORMANT]
     if not failed:
         return ["## Instances that did not conform", "", "None.", ""]
     lines = ["## Instances that did not conform", ""]

@@ -400,7 +400,6 @@ def _inset(low: float, high: float, margin: float) -> tuple[float, float]:
     return low + inset, high - inset
 
 
-
 def start_zones(automaton: SymbolicAutomaton, settings: PlanningSettings) -> tuple[int, int]:
     """(cells per start zone, zones on either side of the first vehicle): enough zones to cover the
     spread, or the farthest start the scenario's position bounds ask for when that is farther."""
@@ -425,7 +424,7 @@ def start_preferences(automaton: SymbolicAutomaton, settings: PlanningSettings, 
     preferred acceleration was taken no more often than chance when it was stated in ``base``).
     """
     starts = list(settings.initial_speeds())
-    width, zones = start_zones(automaton, settings)
+    _, zones = start_zones(automaton, settings)
     accelerations = settings.acceleration_cells()
     rules = ["#program base."]
     for index, vehicle in enumerate(automaton.actors):

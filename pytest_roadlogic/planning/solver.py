@@ -295,22 +295,23 @@ class Planner:
                 if found == 0 and target > horizon:
                     longer = self._stretched(base_program, state_program, target, deadline)
                     if longer is not None:
-                        stretched, symbols = longer
-                        source, plan_horizon = stretched
+                        source, symbols = longer
+                        stretched = (source, target)
+                        plan_horizon = target
             self.stats["rules"] = float(source.statistics.get("problem", {}).get("lp", {}).get("rules", 0))
             plan = self._plan(symbols, plan_horizon, found)
             found += 1
             yield plan
             self._exclude(source, symbols, found)
 
-    def _stretched(self, base_program: str, state_program: str, horizon: int, deadline: float) -> tuple[tuple[clingo.Control, int], list[clingo.Symbol]] | None:
+    def _stretched(self, base_program: str, state_program: str, horizon: int, deadline: float) -> tuple[clingo.Control, list[clingo.Symbol]] | None:
         """A search for plans of exactly ``horizon`` steps and its first plan; None when none is
         found within STRETCH_CONFLICTS (a timed phase may forbid any)."""
         control = self._control(base_program, state_program)
         for step in range(horizon + 1):
             self._advance(control, step)
         symbols = self._solve(control, deadline, STRETCH_CONFLICTS)
-        return None if symbols is None else ((control, horizon), symbols)
+        return None if symbols is None else (control, symbols)
 
     def first(self) -> Plan:
         for plan in self.plans(limit=1):
