@@ -46,13 +46,12 @@ class Case:
         from .frontend import load_file
         from .pipeline import run_instances
 
-        checked = load_file(self.path, self.lanes)
-        scenario = checked.file.scenario(self.scenario)
+        scenario = load_file(self.path, self.lanes).scenario(self.scenario)
         count = self.instance + 1 if self.strategy == BASE else 1
         outcome = None
         for outcome in run_instances(
             scenario, count, seed=self.seed, settings=self.settings(), max_tries=self.max_tries, drivers=drivers, values=self.values or None,
-            space=checked.spaces[scenario.name], simulation_time_limit=self.simulation_time_limit,
+            simulation_time_limit=self.simulation_time_limit,
         ):
             pass
         if outcome is None or outcome.instance != count - 1:

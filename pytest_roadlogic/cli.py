@@ -188,9 +188,9 @@ def check_file(path: Path, syntax_only: bool = False, lanes: int | None = None) 
         reports = [checked.report()] if checked.diagnostics else []
         ok = not checked.errors
         for scenario in checked.scenarios if ok else ():
-            if scenario.behavior is not None:
+            if scenario.runnable:
                 try:
-                    build_automaton(scenario, space=checked.spaces[scenario.name])
+                    build_automaton(scenario)
                 except OscError as error:
                     ok = False
                     reports.append(OscError(error.diagnostics, sources=checked.sources).report())

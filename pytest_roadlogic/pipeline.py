@@ -13,8 +13,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from .automaton import SymbolicAutomaton, build_automaton
-from .frontend import Scenario, load_file
-from .frontend.parameters import ParameterSpace
+from .frontend import CheckedScenario, load_file
 from .monitor import Verdict, monitor
 from .planning import Plan, Planner, PlanningSettings
 from .sampling import guided, sample_seed
@@ -26,7 +25,7 @@ MAX_TRIES = 5
 
 @dataclass
 class Outcome:
-    scenario: Scenario
+    scenario: CheckedScenario
     automaton: SymbolicAutomaton
     plan: Plan
     simulation: Simulation
@@ -36,7 +35,7 @@ class Outcome:
     instance: int = 0  # its index among the instances of one planner (base strategy)
 
 
-def load_scenario(path: str | Path, name: str | None = None, lanes: int | None = None) -> Scenario:
+def load_scenario(path: str | Path, name: str | None = None, lanes: int | None = None) -> CheckedScenario:
     """A checked scenario of ``path`` (the first one with a behavior unless ``name`` is given).
 
     ``lanes`` overrides the road's lane count, which otherwise comes from the scenario.
@@ -45,13 +44,12 @@ def load_scenario(path: str | Path, name: str | None = None, lanes: int | None =
 
 
 def run_scenario(
-    scenario: Scenario,
+    scenario: CheckedScenario,
     seed: int = 1,
     settings: PlanningSettings | None = None,
     max_tries: int = MAX_TRIES,
     drivers: DriverFactory | None = None,
     values: dict[str, object] | None = None,
-    space: ParameterSpace | None = None,
     simulation_time_limit: float | None = None,
 ) -> Outcome:
     """One concrete instance of ``scenario``: plan, simulate, monitor, and retry with the next plan on rejection.
@@ -63,7 +61,7 @@ def run_scenario(
     same sample always gives the same plan, and different samples do not share the solver's habits.
     Without it (the base strategy) the planner chooses every open value itself.
     """
-    return next(run_instances(scenario, 1, seed, settings, max_tries, drivers, values, space, simulation_time_limit))
+    return next(run_instances(scenario, 1, seed, settings, max_tries, drivers, values, simulation_time_limit))
 
 
 def run_instances(
@@ -74,7 +72,6 @@ def run_instances(
     max_tries: int = MAX_TRIES,
     drivers: DriverFactory | None = None,
     values: dict[str, object] | None = None,
-    space: ParameterSpace | None = None,
     simulation_time_limit: float | None = None,
 ) -> Iterator[Outcome]:
     """Up to ``count`` instances from one planner, each plan different from all before it (the base strategy).
@@ -87,8 +84,8 @@ def run_instances(
     specification = build_automaton(scenario)
     guide = specification
     if values:
-        narrowed, declared = guided(scenario, values, settings.resolution(), settings.margins(), space)
-        guide = build_automaton(narrowed, values=declared, space=space)
+        narrowed, declared = guided(scenario, values, settings.resolution(), settings.margins())
+        guide = build_automaton(narrowed, values=declared)
         # each sample is its own random concrete scenario, fixed by the run's seed and the values
         settings = dataclasses.replace(settings, random_start=True)
         seed = sample_seed(seed, values)

@@ -27,7 +27,7 @@ import pytest
 
 from .case import BASE, REFINED, Case
 from .cli import lane_count
-from .frontend import OscError, Scenario, check_file
+from .frontend import OscError, check_file
 from .planning import NoPlanError, PlanningTimeout, UnsatisfiableScenario
 
 DEFAULT_SEED = 1
@@ -109,10 +109,10 @@ class OscFile(pytest.File):
         for warning in checked.warnings:
             self.warn(OscWarning(OscError([warning], sources=checked.sources).report()))
         for scenario in checked.scenarios:
-            if scenario.behavior is not None:
-                item = ScenarioItem.from_parent(self, name=scenario.name, scenario=scenario, space=checked.spaces[scenario.name])
+            if scenario.runnable:
+                item = ScenarioItem.from_parent(self, name=scenario.name, scenario=scenario)
                 item.add_marker("roadlogic")
-                if sum(not actor.stationary for actor in scenario.actors) > SLOW_ACTORS:
+                if sum(not actor.stationary for actor in scenario.scenario.actors) > SLOW_ACTORS:
                     item.add_marker("slow")  # planning grows with the vehicles: select or deselect with -m
                 yield item
 
@@ -130,10 +130,9 @@ class ScenarioFailed(Exception):
 
 
 class ScenarioItem(pytest.Item):
-    def __init__(self, *, scenario: Scenario, space=None, **kwargs) -> None:
+    def __init__(self, *, scenario, **kwargs) -> None:
         super().__init__(**kwargs)
-        self.scenario = scenario
-        self.space = space
+        self.scenario = scenario  # a CheckedScenario
         self.counts: Counter[str] = Counter()
         self.seconds: Counter[str] = Counter()
 
@@ -192,7 +191,7 @@ class ScenarioItem(pytest.Item):
             with self._planning_failures(case, explain_later=True):
                 outcome = run_scenario(
                     self.scenario, seed=case.seed, settings=replace(case.settings(), explain_unsatisfiable=False), max_tries=case.max_tries,
-                    drivers=drivers, values=values, space=self.space, simulation_time_limit=case.simulation_time_limit,
+                    drivers=drivers, values=values, simulation_time_limit=case.simulation_time_limit,
                 )
             self._count(outcome)
             hypothesis.target(-outcome.verdict.robustness, label="closeness to failure (-robustness)")
@@ -208,7 +207,7 @@ class ScenarioItem(pytest.Item):
             profile, max_examples=self._examples(), deadline=None, print_blob=False, report_multiple_bugs=False,
             suppress_health_check=[*profile.suppress_health_check, HealthCheck.too_slow, HealthCheck.filter_too_much],
         )
-        test = hypothesis.seed(_option(self.config, "seed", int))(settings(hypothesis.given(strategy(self.scenario, self.space))(example)))
+        test = hypothesis.seed(_option(self.config, "seed", int))(settings(hypothesis.given(strategy(self.scenario))(example)))
         test()
 
     def _base(self) -> None:
@@ -218,7 +217,7 @@ class ScenarioItem(pytest.Item):
         with self._planning_failures(case):
             for outcome in run_instances(
                 self.scenario, self._examples(), seed=case.seed, settings=case.settings(), max_tries=case.max_tries, drivers=self._drivers(),
-                space=self.space, simulation_time_limit=case.simulation_time_limit,
+                simulation_time_limit=case.simulation_time_limit,
             ):
                 self.counts["examples"] += 1
                 self._count(outcome)
@@ -275,7 +274,7 @@ class ScenarioItem(pytest.Item):
         what = f"{failure.kind} at" if case.strategy == REFINED else f"{failure.kind} at instance {case.instance} of"
         lines = [f"scenario {self.scenario.name}: {what} these values (seed {case.seed}, {self.counts['examples']} examples run):"]
         if case.values:
-            lines += [f"  {line}" for line in describe_values(logical_parameters(self.scenario, self.space), case.values)]
+            lines += [f"  {line}" for line in describe_values(logical_parameters(self.scenario), case.values)]
         else:
             lines.append("  (no logical parameters: the planner chose every value)")
         if failure.outcome is not None:
@@ -297,7 +296,7 @@ class ScenarioItem(pytest.Item):
         return super().repr_failure(excinfo, style=style)
 
     def reportinfo(self):
-        return self.path, self.scenario.location.line - 1, f"scenario {self.scenario.name}"
+        return self.path, self.scenario.scenario.location.line - 1, f"scenario {self.scenario.name}"
 
 
 class SessionSummary:

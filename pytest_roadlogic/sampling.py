@@ -24,9 +24,10 @@ from pathlib import Path
 from typing import Any
 
 from .frontend import model
+from .frontend.checked import CheckedScenario
 from .frontend.errors import SourceLocation
-from .frontend.library import ACTIONS, MODIFIERS, bind
-from .frontend.parameters import MIRRORED, ParameterSpace, parameter_space
+from .frontend.library import bind
+from .frontend.parameters import MIRRORED, ParameterSpace
 from .frontend.units import ACCELERATION, LENGTH, SPEED, TIME
 from .frontend.values import EvaluationError, Interval, evaluate
 
@@ -62,9 +63,9 @@ class LogicalParameter:
         return f"{number} {UNIT[self.dimension]}".rstrip()
 
 
-def logical_parameters(scenario: model.Scenario, space: ParameterSpace | None = None) -> list[LogicalParameter]:
-    """Every open value of ``scenario``, declared parameters first, then inline ranges in source order."""
-    space = space or _space(scenario)
+def logical_parameters(checked: CheckedScenario) -> list[LogicalParameter]:
+    """Every open value of a scenario, declared parameters first, then inline ranges in source order."""
+    space = checked.space
     found: list[LogicalParameter] = []
     for domain in space.domains.values():
         if domain.fixed or not domain.bounded:
@@ -77,7 +78,7 @@ def logical_parameters(scenario: model.Scenario, space: ParameterSpace | None = 
             found.append(LogicalParameter(domain.name, domain.location, domain.interval.dimension, low, high, integer))
         elif domain.choices:
             found.append(LogicalParameter(domain.name, domain.location, choices=tuple(domain.choices)))
-    inline = list(_inline_ranges(scenario))
+    inline = list(_inline_ranges(checked))
     counts = Counter(name for name, _ in inline)
     for name, node in inline:
         if counts[name] > 1:
@@ -88,22 +89,19 @@ def logical_parameters(scenario: model.Scenario, space: ParameterSpace | None = 
     return found
 
 
-def _space(scenario: model.Scenario) -> ParameterSpace:
-    space, _ = parameter_space(scenario.parameters, scenario.constraints)
-    return space
-
-
-def _inline_ranges(scenario: model.Scenario):
+def _inline_ranges(checked: CheckedScenario):
     """(name, Range) for every range written in the behavior, named after where it stands."""
-    if scenario.behavior is None:
+    behavior, registry = checked.scenario.behavior, checked.registry
+    if behavior is None:
         return
-    for node in model.walk(scenario.behavior):
+    for node in model.walk(behavior):
         if isinstance(node, model.Invocation):
             phase = node.label or f"{node.actor}.{node.action}"
-            signature = ACTIONS.get(node.action)
-            yield from _ranges_of(phase, node.arguments, signature)
+            action = registry.action(node.action)
+            yield from _ranges_of(phase, node.arguments, action.signature if action else None)
             for modifier in node.modifiers:
-                yield from _ranges_of(f"{phase}.{modifier.name}", modifier.arguments, MODIFIERS.get(modifier.name))
+                construct = registry.modifier(modifier.name)
+                yield from _ranges_of(f"{phase}.{modifier.name}", modifier.arguments, construct.signature if construct else None)
         elif isinstance(node, model.Composition):
             yield from _ranges_of(node.label or node.operator, node.arguments, None)
         elif isinstance(node, model.Wait) and isinstance(node.condition, model.Call):
@@ -122,7 +120,7 @@ def _ranges_of(prefix: str, arguments: tuple[model.Argument, ...], signature):
 # ------------------------------------------------------------------ sampling
 
 
-def strategy(scenario: model.Scenario, space: ParameterSpace | None = None):
+def strategy(checked: CheckedScenario):
     """A Hypothesis strategy of samples: dicts from parameter name to value (SI units).
 
     Relations between declared parameters (``keep(b_gap > a_gap + 5m)``) are met by construction
@@ -130,8 +128,8 @@ def strategy(scenario: model.Scenario, space: ParameterSpace | None = None):
     """
     from hypothesis import assume, strategies as st
 
-    space = space or _space(scenario)
-    parameters = logical_parameters(scenario, space)
+    space = checked.space
+    parameters = logical_parameters(checked)
 
     @st.composite
     def samples(draw):
@@ -186,20 +184,18 @@ def _bounded_by_relations(parameter: LogicalParameter, space: ParameterSpace, dr
 
 
 def guided(
-    scenario: model.Scenario,
+    checked: CheckedScenario,
     values: Values,
     resolution: dict[str | None, float],
     margins: dict[str | None, float],
-    space: ParameterSpace | None = None,
-) -> tuple[model.Scenario, dict[str, object]]:
+) -> tuple[CheckedScenario, dict[str, object]]:
     """The scenario the planner solves for a sample: each sampled range narrowed to one cell around its value.
 
     Returns the scenario with its inline ranges narrowed, and the declared parameters' narrowed
     ranges (for ``build_automaton(values=...)``). ``resolution`` is the planning grid per dimension
     (1 m, 1 m/s, 1 s); ``margins`` what the planner keeps inside a range's edges.
     """
-    space = space or _space(scenario)
-    by_name = {p.name: p for p in logical_parameters(scenario, space)}
+    by_name = {p.name: p for p in logical_parameters(checked)}
     unknown = sorted(set(values) - set(by_name))
     if unknown:
         raise UnknownParameter(f"no logical parameter named {', '.join(map(repr, unknown))}; the scenario has {', '.join(by_name) or 'none'}")
@@ -216,8 +212,9 @@ def guided(
         else:
             narrowed[parameter.location] = band if isinstance(band, tuple) else (float(band), float(band))
     if narrowed:
-        scenario = dataclasses.replace(scenario, behavior=_narrow(scenario.behavior, narrowed))
-    return scenario, declared
+        scenario = checked.scenario
+        checked = dataclasses.replace(checked, scenario=dataclasses.replace(scenario, behavior=_narrow(scenario.behavior, narrowed)))
+    return checked, declared
 
 
 def _band(parameter: LogicalParameter, value: float, cell: float, margin: float) -> tuple[float, float]:
@@ -268,6 +265,4 @@ def parameters(path: str | Path, scenario: str | None = None, lanes: int | None 
     """
     from .frontend import load_file
 
-    checked = load_file(path, lanes)
-    chosen = checked.scenario_to_run(scenario)
-    return strategy(chosen, checked.spaces[chosen.name])
+    return strategy(load_file(path, lanes).scenario_to_run(scenario))

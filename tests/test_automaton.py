@@ -52,7 +52,7 @@ def test_one_of_is_a_union_with_one_initial_and_one_final_location():
 
 def test_absolute_lanes_count_from_the_right_by_default():
     text = "scenario s:\n  a: car\n  do a.drive() with:\n    lane(1, at: start)\n    lane(1, from: left, at: end)\n"
-    a = build_automaton(check_text(text).scenarios[0], lanes=3)
+    a = build_automaton(check_text(text).scenarios[0])
     start, end = [t.guard for t in a.transitions]
     assert (start.low, start.high) == (2, 2)  # rightmost of 3 is internal lane 2
     assert (end.low, end.high) == (0, 0)
@@ -67,7 +67,7 @@ def test_a_construct_the_automaton_cannot_translate_yet_is_a_located_error():
 
 def test_a_modifier_without_at_is_an_invariant_of_its_phase_and_holds_at_both_ends():
     text = "scenario s:\n  a: car\n  do a.drive() with:\n    lane(1)\n    speed([10..20]mps, at: end)\n"
-    a = build_automaton(check_text(text).scenarios[0], lanes=3)
+    a = build_automaton(check_text(text).scenarios[0])
     phase = [loc for loc in a.locations if loc.name == "a.drive"][0]
     assert str(phase.invariant) == "l(a) = 2"
     start, end = [t.guard for t in a.transitions]
@@ -77,14 +77,14 @@ def test_a_modifier_without_at_is_an_invariant_of_its_phase_and_holds_at_both_en
 
 def test_keep_lane_is_a_choice_of_the_lane_held_throughout():
     text = "scenario s:\n  a: car\n  do a.drive() with:\n    keep_lane()\n"
-    a = build_automaton(check_text(text).scenarios[0], lanes=3)
+    a = build_automaton(check_text(text).scenarios[0])
     phases = [loc for loc in a.locations if loc.name.startswith("a.drive")]
     assert sorted(str(loc.invariant) for loc in phases) == ["l(a) = 0", "l(a) = 1", "l(a) = 2"]
 
 
 def test_change_lane_ends_num_of_lanes_to_the_side_of_the_starting_lane():
     text = "scenario s:\n  a: car\n  do a.change_lane(1, left)\n"
-    a = build_automaton(check_text(text).scenarios[0], lanes=3)
+    a = build_automaton(check_text(text).scenarios[0])
     pairs = sorted((str(a.outgoing(a.initial)[i].guard), str(a.outgoing(t.target)[0].guard)) for i, t in enumerate(a.outgoing(a.initial)))
     assert pairs == [("l(a) = 1", "l(a) = 0"), ("l(a) = 2", "l(a) = 1")]
 

@@ -7,6 +7,7 @@ from pytest_roadlogic.frontend import Composition, Invocation, OscError, Range, 
 
 def test_listing_1_parses_into_the_scenario_model(overtake):
     assert overtake.name == "overtake"
+    overtake = overtake.scenario
     assert overtake.actor_type == "traffic"
     assert [(a.name, a.type) for a in overtake.actors] == [("v1", "car"), ("v2", "car")]
     top = overtake.behavior
@@ -18,7 +19,7 @@ def test_listing_1_parses_into_the_scenario_model(overtake):
 
 
 def test_paper_range_spelling_puts_the_unit_on_both_bounds(overtake):
-    phase_a = overtake.behavior.children[1].children[0]
+    phase_a = overtake.scenario.behavior.children[1].children[0]
     position = [m for m in phase_a.modifiers if m.name == "position"][0]
     distance = position.arguments[0].value
     assert isinstance(distance, Range)
@@ -32,7 +33,7 @@ def test_standard_range_spelling_and_units_convert_to_si():
 
 
 def test_nodes_keep_their_source_location(overtake):
-    phase_b = overtake.behavior.children[1].children[1]
+    phase_b = overtake.scenario.behavior.children[1].children[1]
     assert (phase_b.location.line, phase_b.location.column) == (13, 10)
     assert phase_b.modifiers[0].location.line == 14
 

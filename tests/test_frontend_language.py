@@ -20,8 +20,7 @@ def checked(text: str):
 
 def domains(text: str) -> dict[str, str]:
     result = checked(text)
-    scenario = result.scenarios[0]
-    return {name: d.describe() for name, d in result.spaces[scenario.name].domains.items()}
+    return {name: d.describe() for name, d in result.scenarios[0].space.domains.items()}
 
 
 PAIR = "scenario s:\n    a: car\n    b: car\n"
@@ -37,12 +36,12 @@ def uses(*names: str) -> str:
 
 
 def test_tabs_indent_to_eight_column_stops():
-    scenario = checked("scenario s:\n\ta: car\n\tdo a.drive()\n").scenarios[0]
+    scenario = checked("scenario s:\n\ta: car\n\tdo a.drive()\n").scenarios[0].scenario
     assert [a.name for a in scenario.actors] == ["a"]
 
 
 def test_a_backslash_joins_lines():
-    scenario = checked(PAIR + "    do parallel:\n        b.drive()\n        a.drive() with:\n            lane(same_as: b, \\\n at: start)\n").scenarios[0]
+    scenario = checked(PAIR + "    do parallel:\n        b.drive()\n        a.drive() with:\n            lane(same_as: b, \\\n at: start)\n").scenarios[0].scenario
     modifier = scenario.behavior.children[1].modifiers[0]
     assert [arg.name for arg in modifier.arguments] == ["same_as", "at"]
 
@@ -95,7 +94,7 @@ def test_bool_enum_and_list_literals():
 
 
 def test_quoted_identifiers_name_anything():
-    scenario = checked("scenario |my scenario|:\n    |the car|: car\n    do |the car|.drive()\n").scenarios[0]
+    scenario = checked("scenario |my scenario|:\n    |the car|: car\n    do |the car|.drive()\n").scenarios[0].scenario
     assert scenario.name == "my scenario" and scenario.actors[0].name == "the car"
 
 
@@ -112,18 +111,18 @@ def test_operator_precedence():
 
 
 def test_actor_fields_declared_together_and_their_types():
-    scenario = checked("scenario s:\n    a, b: vehicle\n    t: truck\n    o: stationary_object\n    do parallel:\n        a.drive()\n        b.drive()\n        t.drive()\n        o.remain_stationary()\n").scenarios[0]
+    scenario = checked("scenario s:\n    a, b: vehicle\n    t: truck\n    o: stationary_object\n    do parallel:\n        a.drive()\n        b.drive()\n        t.drive()\n        o.remain_stationary()\n").scenarios[0].scenario
     assert [(a.name, a.type) for a in scenario.actors] == [("a", "vehicle"), ("b", "vehicle"), ("t", "truck"), ("o", "stationary_object")]
     assert scenario.actor("o").stationary
 
 
 def test_a_declared_actor_type_derives_from_a_built_in_one():
-    scenario = checked("actor police inherits car:\n    siren: bool = false\nscenario s:\n    p: police\n    do p.drive()\n").scenarios[0]
+    scenario = checked("actor police inherits car:\n    siren: bool = false\nscenario s:\n    p: police\n    do p.drive()\n").scenarios[0].scenario
     assert (scenario.actors[0].type, scenario.actors[0].base) == ("police", "car")
 
 
 def test_the_device_under_test_needs_no_declaration():
-    scenario = checked("scenario dut.s:\n    do dut.car.drive()\n").scenarios[0]
+    scenario = checked("scenario dut.s:\n    do dut.car.drive()\n").scenarios[0].scenario
     assert [a.name for a in scenario.actors] == ["dut.car"]
 
 
@@ -173,7 +172,7 @@ def test_enum_bool_and_string_parameters_have_choices():
 def test_a_relation_between_parameters_is_checked_on_samples():
     text = PAIR + "    g1: length with:\n        keep(it in [0..10]m)\n    g2: length with:\n        keep(it in [0..10]m)\n    keep(g1 + g2 <= 12m)\n" + uses("g1", "g2")
     result = checked(text)
-    space = result.spaces["s"]
+    space = result.scenario("s").space
     assert space.accepts({"g1": 5.0, "g2": 6.0}) and not space.accepts({"g1": 7.0, "g2": 6.0})
 
 
@@ -181,11 +180,11 @@ def test_arithmetic_in_an_argument_is_evaluated_over_the_range():
     from pytest_roadlogic.frontend.values import evaluate
 
     result = checked(PAIR + "    gap: length with:\n        keep(it in [10..20]m)\n" + uses("gap"))
-    argument = result.scenarios[0].behavior.children[1].modifiers[0].arguments[0].value
+    argument = result.scenarios[0].scenario.behavior.children[1].modifiers[0].arguments[0].value
     doubled = model.Binary("*", model.Quantity(2.0, None, argument.location), argument, argument.location)
-    value = evaluate(doubled, result.spaces["s"].environment())
+    value = evaluate(doubled, result.scenario("s").space.environment())
     assert (value.low, value.high, value.dimension) == (20.0, 40.0, "length")
-    assert evaluate(doubled, result.spaces["s"].environment({"gap": 12.5})).low == 25.0
+    assert evaluate(doubled, result.scenario("s").space.environment({"gap": 12.5})).low == 25.0
 
 
 # ---------------------------------------------------------------- behavior
@@ -193,7 +192,7 @@ def test_arithmetic_in_an_argument_is_evaluated_over_the_range():
 
 def test_compositions_with_arguments_and_labels():
     text = PAIR + "    do top: serial(duration: [10..20]s):\n        p: parallel(overlap: equal, duration: 5s):\n            a.drive()\n            b.drive()\n        o: one_of:\n            a.drive()\n            b.drive()\n"
-    behavior = checked(text).scenarios[0].behavior
+    behavior = checked(text).scenarios[0].scenario.behavior
     assert (behavior.label, behavior.operator) == ("top", "serial")
     duration = behavior.argument("duration").value
     assert (duration.low.value, duration.high.value) == (10.0, 20.0)
@@ -202,7 +201,7 @@ def test_compositions_with_arguments_and_labels():
 
 def test_an_invocation_with_arguments_modifiers_keep_and_until():
     text = PAIR + "    event go\n    do serial:\n        a.change_lane(1, left) with:\n            speed([20..30]mps)\n            keep(it.duration <= 5s)\n            until @go\n        emit go\n        b.drive()\n"
-    invocation = checked(text).scenarios[0].behavior.children[0]
+    invocation = checked(text).scenarios[0].scenario.behavior.children[0]
     assert (invocation.actor, invocation.action) == ("a", "change_lane")
     assert [a.name for a in invocation.arguments] == [None, None]
     assert invocation.modifiers[0].name == "speed"
@@ -212,7 +211,7 @@ def test_an_invocation_with_arguments_modifiers_keep_and_until():
 
 def test_waits_take_a_time_an_event_or_a_condition():
     text = PAIR + "    event e\n    do serial:\n        wait elapsed([1..2]s)\n        a.drive()\n        wait a.speed > 10mps\n        emit e\n        wait @e\n        b.drive()\n"
-    waits = [c for c in checked(text).scenarios[0].behavior.children if isinstance(c, model.Wait)]
+    waits = [c for c in checked(text).scenarios[0].scenario.behavior.children if isinstance(c, model.Wait)]
     assert isinstance(waits[0].condition, model.Call) and waits[0].condition.function == "elapsed"
     assert isinstance(waits[1].condition, model.Binary)
     assert isinstance(waits[2].condition, model.EventReference)
@@ -220,7 +219,7 @@ def test_waits_take_a_time_an_event_or_a_condition():
 
 def test_extend_adds_members_to_a_scenario():
     text = PAIR + "extend s:\n    gap: length = 5m\n" + uses("gap")
-    scenario = checked(text).scenarios[0]
+    scenario = checked(text).scenarios[0].scenario
     assert scenario.parameter("gap") is not None and scenario.behavior is not None
 
 
@@ -242,7 +241,7 @@ def test_an_import_loads_declarations_relative_to_the_importing_file(tmp_path):
 
     result = check_file(tmp_path / "main.osc")
     assert not result.errors, result.report()
-    assert result.scenarios[0].actor("a").base == "car"
+    assert result.scenarios[0].scenario.actor("a").base == "car"
     assert [s.name for s in result.scenarios] == ["s"], "an imported file's scenarios are not the importer's"
 
 

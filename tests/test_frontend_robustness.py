@@ -55,8 +55,8 @@ def test_mutated_files_check_or_fail_with_a_located_error(text):
         checked = check_text(text, "m.osc")
         checked.raise_for_errors()
         for scenario in checked.scenarios:
-            if scenario.behavior is not None:
-                build_automaton(scenario, space=checked.spaces[scenario.name])
+            if scenario.runnable:
+                build_automaton(scenario)
     except OscError as error:
         assert error.diagnostics, "an OscError must carry at least one diagnostic"
         for diagnostic in error.diagnostics:

@@ -18,11 +18,12 @@ from dataclasses import dataclass, field
 from typing import Hashable
 
 from ..frontend import model
-from ..frontend.errors import OscError, error_at
-from ..frontend.parameters import ParameterSpace, parameter_space
+from ..frontend.checked import CheckedScenario
+from ..frontend.errors import error_at
 from .guards import TRUE, Guard, conjunction
 from .model import Location, SymbolicAutomaton, Timing, Transition
-from .modifiers import Variant, check_behavior_arguments, condition_guard, duration_interval, phase_guards
+from .phase import Variant
+from .translation import check_behavior_arguments, condition_guard, duration_interval, phase_guards
 
 Key = Hashable
 
@@ -52,46 +53,35 @@ class _Fragment:
         return [e for e in self.edges if e.source == key]
 
 
-def build_automaton(
-    scenario: model.Scenario,
-    lanes: int | None = None,
-    values: dict[str, object] | None = None,
-    space: ParameterSpace | None = None,
-) -> SymbolicAutomaton:
-    """The automaton of a checked ``scenario`` on a road with ``lanes`` lanes (default: the scenario's road).
+def build_automaton(checked: CheckedScenario, values: dict[str, object] | None = None) -> SymbolicAutomaton:
+    """The automaton of a checked scenario, on its road.
 
     ``values`` fixes logical parameters (the refined strategy samples them); a parameter left out
     keeps its range, which the planner then chooses within (the base strategy).
     """
+    if not isinstance(checked, CheckedScenario):
+        raise TypeError("build_automaton takes a CheckedScenario: load it with frontend.check_file, load_file or pipeline.load_scenario")
+    scenario = checked.scenario
     if scenario.behavior is None:
         raise error_at(scenario.location, f"scenario {scenario.name!r} has no `do` behavior", hint="add do: with what the actors must do")
-    if scenario.fields and not scenario.actors and not scenario.parameters:
-        raise ValueError("build_automaton needs a checked scenario: load it with frontend.check_file or load_file")
-    if space is None:
-        space, diagnostics = parameter_space(scenario.parameters, scenario.constraints)
-        errors = [d for d in diagnostics if d.severity == "error"]
-        if errors:
-            raise OscError(errors)
-    env = space.environment(values)
-    lanes = lanes or scenario.lanes
-    builder = _Builder(scenario, lanes, env)
+    env = checked.space.environment(values)
+    builder = _Builder(checked, env)
     fragment = builder.translate(scenario.behavior)
-    return _finish(fragment, tuple(a.name for a in scenario.actors), scenario, builder.timings, lanes)
+    return _finish(fragment, tuple(a.name for a in scenario.actors), scenario, builder.timings, checked.lanes)
 
 
 class _Builder:
     """Walks the behavior tree; numbers fragments and collects the timed phases on the way."""
 
-    def __init__(self, scenario: model.Scenario, lanes: int, env: dict) -> None:
-        self.scenario = scenario
-        self.lanes = lanes
+    def __init__(self, checked: CheckedScenario, env: dict) -> None:
+        self.checked = checked
         self.env = env
         self.counter = itertools.count()
         self.timings: dict[int, Timing] = {}
 
     def translate(self, behavior: model.Behavior) -> _Fragment:
         if isinstance(behavior, model.Invocation):
-            fragment = _atomic(behavior, self.scenario, self.lanes, self.counter, self.env)
+            fragment = _atomic(behavior, self.checked, self.counter, self.env)
             duration = behavior.argument("duration")
         elif isinstance(behavior, model.Wait):
             return self.wait(behavior)
@@ -156,8 +146,8 @@ def _phase_name(behavior: model.Behavior) -> str:
     return getattr(behavior, "operator", "phase")
 
 
-def _atomic(invocation: model.Invocation, scenario: model.Scenario, lanes: int, counter, env: dict) -> _Fragment:
-    phase = phase_guards(invocation, scenario, lanes, env)
+def _atomic(invocation: model.Invocation, checked: CheckedScenario, counter, env: dict) -> _Fragment:
+    phase = phase_guards(invocation, checked.scenario, checked.registry, checked.lanes, env)
     labelled = invocation.label is not None
     name = invocation.label if labelled else _phase_name(invocation)
     drivers = frozenset([invocation.actor]) if phase.drives else frozenset()

@@ -5,84 +5,87 @@ parameters, resolves parameter domains, and checks every invocation against the 
 signatures. It reports everything it finds (errors and warnings, each ``path:line:col``) rather
 than stopping at the first, because a person fixing a file wants the whole list.
 Tier-3 constructs are refused here by name: ``not supported: <construct>``.
+
+Actions and modifiers are looked up in a registry of constructs (``pytest_roadlogic.constructs``):
+their signatures, and what each validates beyond its arguments' kinds, live there.
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, replace
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from . import library, model
+from .checked import CheckedFile, CheckedScenario
 from .errors import Diagnostic, OscError, SourceLocation
 from .parameters import ParameterSpace, parameter_space
 from .parser import parse_file, parse_text
 from .units import SPEED, TIME
 from .values import EvaluationError, Interval, calls_in, describe, evaluate, names_in
 
+if TYPE_CHECKING:
+    from ..constructs import Registry
+
 DEFAULT_LANES = 3
-LANE_CONVENTION = "lanes are numbered from 1 on the right (lane(1) is the rightmost); lane(k, from: left) counts from the left"
 
 
-@dataclass
-class CheckedFile:
-    """A file with its imports resolved: the scenarios it declares, ready for the automaton."""
-
-    file: model.OscFile
-    diagnostics: list[Diagnostic]
-    sources: dict[str, str]
-    spaces: dict[str, ParameterSpace] = field(default_factory=dict)
-
-    @property
-    def scenarios(self) -> tuple[model.Scenario, ...]:
-        return self.file.scenarios
-
-    @property
-    def errors(self) -> list[Diagnostic]:
-        return [d for d in self.diagnostics if d.severity == "error"]
-
-    @property
-    def warnings(self) -> list[Diagnostic]:
-        return [d for d in self.diagnostics if d.severity == "warning"]
-
-    def scenario_to_run(self, name: str | None = None) -> model.Scenario:
-        """The scenario called ``name``, or the first one with a behavior (KeyError for an unknown name)."""
-        if name is not None:
-            return self.file.scenario(name)
-        for scenario in self.scenarios:
-            if scenario.behavior is not None:
-                return scenario
-        raise OscError([Diagnostic(SourceLocation(self.file.path, 1, 1), "the file declares no scenario with a `do` behavior")], sources=self.sources)
-
-    def raise_for_errors(self) -> None:
-        if self.errors:
-            raise OscError(self.errors, sources=self.sources)
-
-    def report(self) -> str:
-        return OscError(self.diagnostics, sources=self.sources).report() if self.diagnostics else ""
-
-
-def check_file(path: str | Path, lanes: int | None = None) -> CheckedFile:
+def check_file(path: str | Path, lanes: int | None = None, registry: Registry | None = None) -> CheckedFile:
     """Parse and check ``path`` and the files it imports. Syntax errors raise ``OscError``.
 
     ``lanes`` fixes the road's lane count; ``None`` takes it from each scenario (see ``_road_lanes``).
+    ``registry`` holds the actions and modifiers the file may use (default: the standard's).
     """
-    return _Checker(lanes).run(parse_file(path))
+    return _Checker(lanes, registry).run(parse_file(path))
 
 
-def check_text(text: str, path: str = "<string>", lanes: int | None = None) -> CheckedFile:
-    return _Checker(lanes).run(parse_text(text, path))
+def check_text(text: str, path: str = "<string>", lanes: int | None = None, registry: Registry | None = None) -> CheckedFile:
+    return _Checker(lanes, registry).run(parse_text(text, path))
 
 
-def load_file(path: str | Path, lanes: int | None = None) -> CheckedFile:
+def load_file(path: str | Path, lanes: int | None = None, registry: Registry | None = None) -> CheckedFile:
     """``check_file`` that raises ``OscError`` when the file has errors (warnings pass)."""
-    checked = check_file(path, lanes)
+    checked = check_file(path, lanes, registry)
     checked.raise_for_errors()
     return checked
 
 
+@dataclass
+class _ConstructContext:
+    """What a construct's ``check`` sees of the checker (``constructs.CheckContext``)."""
+
+    checker: "_Checker"
+    env: dict
+
+    @property
+    def lanes(self) -> int:
+        return self.checker.lanes
+
+    @property
+    def lanes_origin(self) -> str:
+        return self.checker.lanes_origin
+
+    def error(self, location: SourceLocation, message: str, hint: str | None = None) -> None:
+        self.checker.error(location, message, hint)
+
+    def evaluate(self, argument: model.Argument) -> Interval | None:
+        try:
+            value = evaluate(argument.value, self.env)
+        except EvaluationError:
+            return None  # the checker reports it where it checks the argument's kind
+        return value if isinstance(value, Interval) else None
+
+
 class _Checker:
-    def __init__(self, lanes: int | None) -> None:
+    def __init__(self, lanes: int | None, registry: Registry | None = None) -> None:
+        if registry is None:
+            # imported here: the registry translates into the automaton's guards, and the
+            # automaton imports the front end (a module-level import would be circular)
+            from ..constructs import STANDARD
+
+            registry = STANDARD
+        self.registry = registry
         self.requested_lanes = lanes
         # The road of the scenario being checked, and why it has that many lanes (for error messages).
         self.lanes = lanes or DEFAULT_LANES
@@ -111,8 +114,7 @@ class _Checker:
             self.error(misplaced.location, "an import after a declaration", "put every import at the top of the file")
         for item in main.unsupported:
             self._unsupported(item)
-        scenarios = []
-        spaces = {}
+        scenarios: list[CheckedScenario] = []
         own = {s.name for s in main.scenarios}
         extensions = [e for f in (*self.files.values(), main) for e in f.extensions]
         for extension in extensions:
@@ -131,13 +133,12 @@ class _Checker:
             for extension in extensions:
                 if extension.target == scenario.name:
                     scenario = _extend(scenario, extension.scenario)
-            checked, space = self._scenario(scenario, globals_)
-            scenarios.append(checked)
-            spaces[checked.name] = space
+            checked, space, lanes = self._scenario(scenario, globals_)
+            scenarios.append(CheckedScenario(checked, space, lanes, self.registry, self.sources))
         self.diagnostics = list(dict.fromkeys(self.diagnostics))
         self.diagnostics.sort(key=lambda d: (d.location.path != main.path, d.location.path, d.location.line, d.location.column))
-        checked_file = replace(main, scenarios=tuple(scenarios))
-        return CheckedFile(checked_file, self.diagnostics, self.sources, spaces)
+        checked_file = replace(main, scenarios=tuple(c.scenario for c in scenarios))
+        return CheckedFile(checked_file, self.diagnostics, self.sources, tuple(scenarios))
 
     def _load_imports(self, osc: model.OscFile, stack: tuple[str, ...]) -> None:
         for item in osc.imports:
@@ -195,7 +196,7 @@ class _Checker:
 
     # -------------------------------------------------------------- scenarios
 
-    def _scenario(self, scenario: model.Scenario, globals_: tuple[model.Field, ...]) -> tuple[model.Scenario, ParameterSpace]:
+    def _scenario(self, scenario: model.Scenario, globals_: tuple[model.Field, ...]) -> tuple[model.Scenario, ParameterSpace, int]:
         for item in scenario.unsupported:
             self._unsupported(item)
         if scenario.kind == "action":
@@ -232,7 +233,7 @@ class _Checker:
         self.diagnostics.extend(diagnostics)
         checked = replace(scenario, actors=tuple(actors), parameters=tuple(parameters))
         env = self._environment(checked, space)
-        checked = replace(checked, lanes=self._road_lanes(checked, env, roads))
+        lanes = self._road_lanes(checked, env, roads)
         env.update({f"{actor.name}.lane": Interval(1.0, float(self.lanes), None) for actor in actors})
 
         if len(scenario.behaviors) > 1:
@@ -272,7 +273,7 @@ class _Checker:
             for actor in actors:
                 if actor.name not in used_actors:
                     self.warning(actor.location, f"actor {actor.name!r} takes no part in the behavior", "give it an action, or remove it")
-        return checked, space
+        return checked, space, lanes
 
     def _field_kind(self, item: model.Field) -> str | None:
         location = item.type_location or item.location
@@ -350,27 +351,27 @@ class _Checker:
             self.error(node.location, f"unknown actor {actor!r}", self._known("actors", [a.name for a in scenario.actors]))
         else:
             used_actors.add(actor)
-        signature = library.ACTIONS.get(node.action)
-        if signature is None:
-            self.error(node.location, f"unknown action {node.action!r}", self._known("actions", library.ACTIONS))
+        context = _ConstructContext(self, env)
+        action = self.registry.action(node.action)
+        if action is None:
+            self.error(node.location, f"unknown action {node.action!r}", self._known("actions", self.registry.actions))
         else:
-            binding = self._arguments(signature, node.arguments, node.location, scenario, env, used_actors, used_names, what=f"{node.action}()")
-            if node.action == "change_lane":
-                self._lane_count(binding["num_of_lanes"], env)
+            binding = self._arguments(action.signature, node.arguments, node.location, scenario, env, used_actors, used_names, what=f"{node.action}()")
+            action.check(binding, context)
             if actor is not None and scenario.actor(actor) is not None:
                 stationary = scenario.actor(actor).stationary
-                if stationary and node.action != "remain_stationary":
-                    self.error(node.location, f"{actor!r} is a stationary_object: it can only remain_stationary()", "declare it as a car if it should move")
+                if stationary and action.moves:
+                    standing = [name for name, a in self.registry.actions.items() if not a.moves]
+                    self.error(node.location, f"{actor!r} is a stationary_object: it can only {' or '.join(n + '()' for n in standing)}", "declare it as a car if it should move")
         for modifier in node.modifiers:
             if modifier.actor is not None and modifier.actor != actor:
                 self.error(modifier.location, f"this modifier names {modifier.actor!r} but the invocation is for {actor!r}", "put it in a with: block of that actor's invocation")
-            modifier_signature = library.MODIFIERS.get(modifier.name)
-            if modifier_signature is None:
-                self.error(modifier.location, f"unknown modifier {modifier.name!r}", self._known("modifiers", library.MODIFIERS))
+            construct = self.registry.modifier(modifier.name)
+            if construct is None:
+                self.error(modifier.location, f"unknown modifier {modifier.name!r}", self._known("modifiers", self.registry.modifiers))
                 continue
-            binding = self._arguments(modifier_signature, modifier.arguments, modifier.location, scenario, env, used_actors, used_names, what=f"{modifier.name}()")
-            if modifier.name == "lane":
-                self._lane_numbers(binding, env)
+            binding = self._arguments(construct.signature, modifier.arguments, modifier.location, scenario, env, used_actors, used_names, what=f"{modifier.name}()")
+            construct.check(binding, context)
         local = dict(env)
         local["it.duration"] = Interval(0.0, math.inf, TIME)
         for constraint in node.constraints:
@@ -472,32 +473,6 @@ class _Checker:
             if result.low < 0 or (result.is_point and not float(result.low).is_integer()):
                 self.error(value.location, f"{parameter.name}: takes a whole number from 0 up")
 
-    def _lane_numbers(self, binding: library.Binding, env) -> None:
-        relative = [binding[name] for name in ("same_as", "left_of", "right_of", "side_of") if binding[name] is not None]
-        side = binding["from"]
-        if relative and side is not None:
-            self.error(side.location, "from: goes with a lane number, not with a relative lane", LANE_CONVENTION)
-        positional = binding["lane"]
-        if positional is None:
-            return
-        try:
-            value = evaluate(positional.value, env)
-        except EvaluationError:
-            return
-        if isinstance(value, Interval) and value.dimension is None and (value.low < 1 or value.high > self.lanes):
-            shown = f"{value.low:g}" if value.is_point else str(value)
-            self.error(positional.value.location, f"lane {shown} is outside the road's {self.lanes} lanes{self.lanes_origin}", LANE_CONVENTION)
-
-    def _lane_count(self, count: model.Argument | None, env) -> None:
-        if count is None:
-            return
-        try:
-            value = evaluate(count.value, env)
-        except EvaluationError:
-            return
-        if isinstance(value, Interval) and value.dimension is None and value.low >= 0 and (value.low < 1 or value.high > self.lanes - 1):
-            self.error(count.value.location, f"a change of {value} lanes is impossible on a road of {self.lanes} lanes{self.lanes_origin}", f"num_of_lanes must be between 1 and {self.lanes - 1}")
-
     # -------------------------------------------------------------- road
 
     def _road_lanes(self, scenario: model.Scenario, env: dict, roads: list[str]) -> int:
@@ -557,34 +532,28 @@ class _Checker:
                 bounds[modifier.name] = (int(value.low), modifier.location)
         return bounds
 
-    @staticmethod
-    def _lanes_used(scenario: model.Scenario, env: dict) -> int:
+    def _lanes_used(self, scenario: model.Scenario, env: dict) -> int:
         """The fewest lanes on which every lane number and lane change the scenario writes exists."""
-        needed = 1
 
-        def highest(argument: model.Argument | None, extra: int) -> int:
+        def highest(argument: model.Argument | None) -> int:
             try:
                 value = evaluate(argument.value, env) if argument is not None else None
             except EvaluationError:
                 return 1  # reported by the main pass
             if isinstance(value, Interval) and value.dimension is None and math.isfinite(value.high):
-                return int(math.floor(value.high)) + extra
+                return int(math.floor(value.high))
             return 1
 
+        needed = 1
         for behavior in scenario.behaviors:
             for node in model.walk(behavior):
                 if not isinstance(node, model.Invocation):
                     continue
-                if node.action == "change_lane":
-                    needed = max(needed, highest(library.bind(library.ACTIONS["change_lane"], node.arguments)["num_of_lanes"], 1))
-                for modifier in node.modifiers:
-                    signature = library.MODIFIERS.get(modifier.name)
-                    if modifier.name == "lane" and signature is not None:
-                        binding = library.bind(signature, modifier.arguments)
-                        relative = any(binding[name] is not None for name in ("left_of", "right_of", "side_of"))
-                        needed = max(needed, highest(binding["lane"], 0), 2 if relative else 1)
-                    elif modifier.name == "change_lane" and signature is not None:
-                        needed = max(needed, highest(library.bind(signature, modifier.arguments)["num_of_lanes"], 1))
+                uses = [(self.registry.action(node.action), node.arguments)]
+                uses += [(self.registry.modifier(m.name), m.arguments) for m in node.modifiers]
+                for construct, arguments in uses:
+                    if construct is not None:
+                        needed = max(needed, construct.lanes_needed(library.bind(construct.signature, arguments), highest))
         return needed
 
     def _event_specification(self, spec, scenario: model.Scenario, env: dict, location: SourceLocation) -> None:

@@ -1,9 +1,12 @@
-"""The part of the OS2 standard library this tool knows: actor types, actions, modifiers, enums.
+"""The part of the OS2 standard library this tool knows: actor types, enums, compositions, the road,
+and the signature machinery (``Signature``, ``bind``).
 
-The checker validates every invocation against these signatures, so a misspelt argument or a
-speed given where a length belongs is reported with its place before anything runs. A signature's
-``tier`` follows docs/os2-subset.md: tier-2 entries check, but the automaton may still refuse to
-translate them (it says so by name); arguments marked unsupported are refused by the checker.
+The actions and modifiers themselves are specified in ``pytest_roadlogic.constructs``, each with
+its signature from here. The checker validates every invocation against these signatures, so a
+misspelt argument or a speed given where a length belongs is reported with its place before
+anything runs. A signature's ``tier`` follows docs/os2-subset.md: tier-2 entries check, but the
+automaton may still refuse to translate them (it says so by name); arguments marked unsupported
+are refused by the checker.
 """
 
 from __future__ import annotations
@@ -125,62 +128,6 @@ RATE = (Parameter("rate_profile", "enum:rate_profile", supported=False), Paramet
 def _signatures(*items: Signature) -> dict[str, Signature]:
     return {s.name: s for s in items}
 
-
-ACTIONS: dict[str, Signature] = _signatures(
-    Signature("drive", (DURATION,), description="drive forward for the phase"),
-    Signature(
-        "change_lane",
-        (Parameter("num_of_lanes", "uint", positional=True), Parameter("side", "enum:side", positional=True), Parameter("reference", "actor"), DURATION, *RATE),
-        description="move num_of_lanes lanes (default 1) to the side",
-    ),
-    Signature("change_speed", (Parameter("target", "speed", positional=True), DURATION, *RATE), required=(("target",),), description="reach the target speed"),
-    Signature("keep_speed", (DURATION,), description="hold the speed from the phase's start"),
-    Signature("follow_lane", (DURATION, Parameter("offset", "length", supported=False)), description="stay in the lane"),
-    Signature("remain_stationary", (DURATION,), description="stand still (obstacles)"),
-    Signature("keep_space_gap", (Parameter("gap", "length", positional=True), Parameter("direction", "enum:direction"), Parameter("reference", "actor"), DURATION), tier=2),
-    Signature("keep_time_gap", (Parameter("gap", "time", positional=True), Parameter("direction", "enum:direction"), Parameter("reference", "actor"), DURATION), tier=2),
-    Signature("change_space_gap", (Parameter("target", "length", positional=True), Parameter("direction", "enum:direction"), Parameter("reference", "actor"), DURATION), tier=2),
-    Signature("change_time_gap", (Parameter("target", "time", positional=True), Parameter("direction", "enum:direction"), Parameter("reference", "actor"), DURATION), tier=2),
-    Signature("assign_speed", (Parameter("target", "speed", positional=True), DURATION), tier=2),
-)
-
-MODIFIERS: dict[str, Signature] = _signatures(
-    Signature(
-        "speed",
-        (Parameter("speed", "speed", positional=True), Parameter("faster_than", "actor"), Parameter("slower_than", "actor"), Parameter("same_as", "actor"), AT),
-        exclusive=(("faster_than", "slower_than", "same_as"),),
-        required=(("speed", "same_as"),),
-        description="absolute speed, or relative to another actor's",
-    ),
-    Signature(
-        "position",
-        (Parameter("distance", "length", positional=True), Parameter("time", "time"), Parameter("ahead_of", "actor"), Parameter("behind", "actor"), AT),
-        exclusive=(("ahead_of", "behind"), ("distance", "time")),
-        required=(("ahead_of", "behind"), ("distance", "time")),
-        description="longitudinal gap to another actor",
-    ),
-    Signature(
-        "lane",
-        (
-            Parameter("lane", "uint", positional=True),
-            Parameter("right_of", "actor"),
-            Parameter("left_of", "actor"),
-            Parameter("same_as", "actor"),
-            Parameter("side_of", "actor"),
-            Parameter("side", "enum:side"),
-            Parameter("from", "enum:side"),
-            AT,
-        ),
-        exclusive=(("lane", "right_of", "left_of", "same_as", "side_of"),),
-        required=(("lane", "right_of", "left_of", "same_as", "side_of"),),
-        description="lane occupancy, absolute or relative",
-    ),
-    Signature("keep_lane", (), description="stay in the lane held at the phase's start"),
-    Signature("keep_speed", (), description="hold the speed from the phase's start"),
-    Signature("change_lane", (Parameter("num_of_lanes", "uint", positional=True), Parameter("side", "enum:side", positional=True)), description="change lanes during the phase"),
-    Signature("acceleration", (Parameter("acceleration", "acceleration", positional=True), AT), required=(("acceleration",),), tier=2),
-    Signature("lateral", (Parameter("distance", "length", positional=True), Parameter("side_of", "actor"), Parameter("side", "enum:side"), AT), tier=2),
-)
 
 COMPOSITIONS: dict[str, Signature] = _signatures(
     Signature("serial", (DURATION,)),

@@ -322,8 +322,6 @@ class Scenario:
     path: str | None = None
     # Modifiers applied to the whole scenario (``path.path_min_driving_lanes(4)``): only road ones are accepted.
     modifiers: tuple[Modifier, ...] = ()
-    # Lanes of the road the scenario runs on; the checker resolves it from the scenario and the options.
-    lanes: int = 3  # the checker's DEFAULT_LANES
 
     def actor(self, name: str) -> Actor | None:
         for actor in self.actors:

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 from typing import Mapping, Union
 
 from . import model
-from .errors import SourceLocation
+from .errors import SourceLocation, error_at
 from .units import ACCELERATION, LENGTH, SPEED, TIME
 
 # dimension -> exponents of (metre, second)
@@ -219,3 +219,32 @@ def to_expression(value: Interval, location: SourceLocation) -> model.Quantity |
     if value.is_point:
         return model.Quantity(value.low, value.dimension, location)
     return model.Range(model.Quantity(value.low, value.dimension, location), model.Quantity(value.high, value.dimension, location), location)
+
+
+# ------------------------------------------------------------------ arguments, after checking
+
+
+def argument_interval(argument: model.Argument, env: Mapping[str, object]) -> Interval:
+    """An argument's value as an interval; an error at its place when it is not a number or quantity.
+
+    For the stages after the checker (the automaton, the constructs' translations): the checker has
+    reported every error it can find, so what reaches here raises at once.
+    """
+    try:
+        value = evaluate(argument.value, env)
+    except EvaluationError as error:
+        raise error_at(error.location, error.message, error.hint) from None
+    if not isinstance(value, Interval):
+        raise error_at(argument.location, "expected a number or a quantity")
+    return value
+
+
+def argument_range(argument: model.Argument, dimension: str, example: str, env: Mapping[str, object]) -> tuple[float, float]:
+    """An argument's bounded range in SI units of ``dimension``; an error at its place otherwise."""
+    value = argument_interval(argument, env)
+    if value.dimension != dimension:
+        got = value.dimension or "a plain number"
+        raise error_at(argument.location, f"expected {example}, got {got}", hint="add a unit of the right kind")
+    if not (math.isfinite(value.low) and math.isfinite(value.high)):
+        raise error_at(argument.location, f"expected {example}, got an unbounded value", hint="give the parameter a range")
+    return value.low, value.high

@@ -1,0 +1,180 @@
+"""What a specification of an OS2 action or modifier consists of, and the registry that holds them.
+
+One construct is one class: its signature (what the checker binds and type-checks arguments
+against), what the checker validates beyond argument kinds (``check``), how many lanes a use of it
+needs (``lanes_needed``, so that the road is as wide as the scenario), and how it translates into
+the guards of its phase (``translate``). The planner and the monitor need nothing else from it:
+both read only the automaton's guards (one guard algebra), and whether the actor drives in the
+phase (``Action.moves``).
+
+The checker and the automaton both read a ``Registry``; the checked scenario carries the registry
+it was checked with, so a construct added to a registry (a test's toy modifier, a dialect) is
+checked and translated without touching either stage.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable
+from dataclasses import dataclass
+from typing import ClassVar, Protocol
+
+from ..automaton.guards import Guard
+from ..automaton.phase import Phase
+from ..frontend import model
+from ..frontend.errors import SourceLocation, error_at
+from ..frontend.library import Binding, Signature, bind
+from ..frontend.values import Interval, argument_interval, argument_range
+
+AT_VALUES = ("start", "end", "all")
+
+
+class CheckContext(Protocol):
+    """What the checker tells a construct's ``check``: the road as resolved so far, the names in
+    scope, and where to report."""
+
+    lanes: int
+    lanes_origin: str  # why the road has that many lanes, for messages (" (set by the lanes option)")
+    env: dict
+
+    def error(self, location: SourceLocation, message: str, hint: str | None = None) -> None: ...
+
+    def evaluate(self, argument: model.Argument) -> Interval | None:
+        """The argument's value, or None when it cannot be evaluated (the checker reports that itself)."""
+
+
+@dataclass(frozen=True)
+class Use:
+    """One use of a construct inside an invocation, as its translation sees it."""
+
+    node: model.Invocation | model.Modifier
+    binding: Binding
+    actor: str  # the actor of the invocation
+    lanes: int  # lanes of the road
+    env: dict  # parameter values or ranges
+
+    @property
+    def location(self) -> SourceLocation:
+        return self.node.location
+
+    def argument(self, name: str) -> model.Argument | None:
+        return self.binding[name]
+
+    def interval(self, name: str) -> Interval:
+        return argument_interval(self.binding[name], self.env)
+
+    def range(self, name: str, dimension: str, example: str) -> tuple[float, float]:
+        """The argument ``name`` as a bounded range of ``dimension`` (``example`` for messages)."""
+        return argument_range(self.binding[name], dimension, example, self.env)
+
+    def name(self, argument: str) -> str | None:
+        """The name an argument gives (an actor, an enum member); None when it is not given."""
+        given = self.binding[argument]
+        if given is None:
+            return None
+        if not isinstance(given.value, model.Name):
+            raise error_at(given.location, f"`{given.name or 'this argument'}` takes a name")
+        return given.value.name
+
+    def relation(self, keywords: tuple[str, ...]) -> tuple[str, str] | None:
+        """The relation keyword given among ``keywords`` (e.g. ``same_as``) and the actor it names."""
+        for keyword in keywords:
+            if self.binding[keyword] is not None:
+                return keyword, self.name(keyword)
+        return None
+
+    def anchor(self) -> str:
+        """Where the modifier holds: ``at:`` start, end or all (the standard's default: all)."""
+        given = self.binding["at"]
+        if given is None:
+            return "all"
+        if not isinstance(given.value, model.Name) or given.value.name not in AT_VALUES:
+            raise error_at(given.location, "`at:` takes start, end or all")
+        return given.value.name
+
+
+class Construct:
+    """An OS2 action or modifier: its signature and its meaning, in one place.
+
+    A subclass sets ``signature`` and overrides what it needs. One left ``translated = False`` is
+    accepted by the checker and refused by the automaton with "not supported yet by the automaton"
+    at its place (the standard has it; this tool cannot plan it yet).
+    """
+
+    kind: ClassVar[str]
+    signature: ClassVar[Signature]
+    translated: ClassVar[bool] = True
+
+    @property
+    def name(self) -> str:
+        return self.signature.name
+
+    def check(self, binding: Binding, context: CheckContext) -> None:
+        """Report what the signature's argument kinds cannot say (a lane outside the road, ...)."""
+
+    def lanes_needed(self, binding: Binding, highest: Callable[[model.Argument | None], int]) -> int:
+        """The fewest lanes on which this use exists. ``highest(argument)`` is the largest whole
+        value an argument can take (1 when it is absent or not a number)."""
+        return 1
+
+    def translate(self, use: Use, phase: Phase) -> None:
+        """Add this use's guards to its phase."""
+        raise NotImplementedError(f"{type(self).__name__} is translated = {self.translated} but has no translate()")
+
+    def apply(self, node: model.Invocation | model.Modifier, actor: str, lanes: int, env: dict, phase: Phase) -> None:
+        """Translate one use (its arguments bound to the signature) into ``phase``: what the automaton calls."""
+        self.translate(Use(node, bind(self.signature, node.arguments), actor, lanes, env), phase)
+
+    def __repr__(self) -> str:
+        return f"<{self.kind} {self.name}>"
+
+
+class Action(Construct):
+    kind = "action"
+    # False: the actor stands still in the phase (it need not make progress); the only kind of
+    # action a stationary object may take
+    moves: ClassVar[bool] = True
+
+
+class Modifier(Construct):
+    kind = "modifier"
+
+
+class AnchoredModifier(Modifier):
+    """A modifier that is one guard, placed by ``at:`` at the phase's start, end, or throughout."""
+
+    def guard(self, use: Use) -> Guard:
+        raise NotImplementedError
+
+    def translate(self, use: Use, phase: Phase) -> None:
+        phase.anchor(self.guard(use), use.anchor())
+
+
+class Registry:
+    """The actions and modifiers a scenario may use, by name."""
+
+    def __init__(self, constructs: Iterable[Construct] = ()) -> None:
+        self.actions: dict[str, Action] = {}
+        self.modifiers: dict[str, Modifier] = {}
+        for construct in constructs:
+            self._add(construct)
+
+    def _add(self, construct: Construct) -> None:
+        table = self.actions if construct.kind == "action" else self.modifiers
+        table[construct.name] = construct  # type: ignore[assignment]
+
+    def action(self, name: str) -> Action | None:
+        return self.actions.get(name)
+
+    def modifier(self, name: str) -> Modifier | None:
+        return self.modifiers.get(name)
+
+    def extended(self, *constructs: Construct) -> "Registry":
+        """A copy with ``constructs`` added (replacing any of the same kind and name)."""
+        copy = Registry([*self.actions.values(), *self.modifiers.values()])
+        for construct in constructs:
+            copy._add(construct)
+        return copy
+
+    def translated(self, kind: str) -> list[str]:
+        table = self.actions if kind == "action" else self.modifiers
+        return [name for name, construct in table.items() if construct.translated]

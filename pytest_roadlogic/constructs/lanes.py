@@ -1,0 +1,165 @@
+"""Lanes: ``lane()``, ``keep_lane()``, ``change_lane()`` (action and modifier), ``follow_lane()``.
+
+The lane convention lives here: ``lane(k)`` counts 1-based from the right (the standard),
+``lane(k, from: left)`` from the left, and internally 0 is the leftmost lane (the paper).
+Constraints on the lane a phase started in (``keep_lane()``, ``change_lane(1, left)``) become one
+variant per starting lane: guards see only the current state, and the road is finite.
+"""
+
+from __future__ import annotations
+
+import math
+
+from ..automaton.guards import LANE, Bound, Guard, Term
+from ..automaton.phase import Phase, Variant
+from ..frontend.errors import SourceLocation, error_at
+from ..frontend.library import AT, DURATION, RATE, Binding, Parameter, Signature
+from .base import Action, AnchoredModifier, CheckContext, Modifier, Use
+
+LANE_CONVENTION = "lanes are numbered from 1 on the right (lane(1) is the rightmost); lane(k, from: left) counts from the left"
+RELATIVE = ("same_as", "left_of", "right_of", "side_of")
+
+
+def keep_lane_variants(actor: str, lanes: int, source: SourceLocation) -> list[Variant]:
+    """The actor stays in whichever lane it starts the phase in."""
+    return [Variant(invariant=Bound(Term(LANE, actor), lane, lane, source)) for lane in range(lanes)]
+
+
+class Lane(AnchoredModifier):
+    """``lane(k)``, ``lane([1..2])``, ``lane(k, from: left)``, ``lane(same_as:|left_of:|right_of: x)``,
+    ``lane(side_of: x, side: left)``. ``left_of: x`` means any lane left of x's (the paper's l(v1) < l(v2))."""
+
+    signature = Signature(
+        "lane",
+        (
+            Parameter("lane", "uint", positional=True),
+            Parameter("right_of", "actor"),
+            Parameter("left_of", "actor"),
+            Parameter("same_as", "actor"),
+            Parameter("side_of", "actor"),
+            Parameter("side", "enum:side"),
+            Parameter("from", "enum:side"),
+            AT,
+        ),
+        exclusive=(("lane", *RELATIVE),),
+        required=(("lane", *RELATIVE),),
+        description="lane occupancy, absolute or relative",
+    )
+
+    def check(self, binding: Binding, context: CheckContext) -> None:
+        relative = [binding[name] for name in RELATIVE if binding[name] is not None]
+        side = binding["from"]
+        if relative and side is not None:
+            context.error(side.location, "from: goes with a lane number, not with a relative lane", LANE_CONVENTION)
+        number = binding["lane"]
+        if number is None:
+            return
+        value = context.evaluate(number)
+        if value is not None and value.dimension is None and (value.low < 1 or value.high > context.lanes):
+            shown = f"{value.low:g}" if value.is_point else str(value)
+            context.error(number.value.location, f"lane {shown} is outside the road's {context.lanes} lanes{context.lanes_origin}", LANE_CONVENTION)
+
+    def lanes_needed(self, binding, highest) -> int:
+        relative = any(binding[name] is not None for name in ("left_of", "right_of", "side_of"))
+        return max(highest(binding["lane"]), 2 if relative else 1)
+
+    def guard(self, use: Use) -> Guard:
+        relation = use.relation(RELATIVE)
+        if relation is not None:
+            keyword, other = relation
+            if keyword == "side_of":
+                keyword = "left_of" if use.name("side") in (None, "left") else "right_of"
+            low, high = {"same_as": (0, 0), "left_of": (-math.inf, -1), "right_of": (1, math.inf)}[keyword]
+            return Bound(Term(LANE, use.actor, other), low, high, use.location)
+        if use.argument("lane") is None:
+            raise error_at(use.location, "lane() needs a lane number or same_as:/left_of:/right_of:", hint=LANE_CONVENTION)
+        value = use.interval("lane")
+        if value.dimension is not None or not float(value.low).is_integer() or not float(value.high).is_integer():
+            raise error_at(use.argument("lane").location, "a lane number must be a whole number", hint=LANE_CONVENTION)
+        low, high = int(value.low), int(value.high)
+        if low < 1 or high > use.lanes:
+            raise error_at(use.argument("lane").location, f"lane {value} is outside the road's {use.lanes} lanes", hint=LANE_CONVENTION)
+        from_left = use.name("from") == "left"
+        first, last = (low - 1, high - 1) if from_left else (use.lanes - high, use.lanes - low)
+        return Bound(Term(LANE, use.actor), first, last, use.location)
+
+
+class KeepLane(Modifier):
+    """``keep_lane()``: the lane held at the phase's start, throughout."""
+
+    signature = Signature("keep_lane", (), description="stay in the lane held at the phase's start")
+
+    def translate(self, use: Use, phase: Phase) -> None:
+        phase.branch(keep_lane_variants(use.actor, use.lanes, use.location))
+
+
+class FollowLane(Action):
+    """``follow_lane()``: drive on in the lane the phase starts in."""
+
+    signature = Signature("follow_lane", (DURATION, Parameter("offset", "length", supported=False)), description="stay in the lane")
+
+    def translate(self, use: Use, phase: Phase) -> None:
+        phase.branch(keep_lane_variants(use.actor, use.lanes, use.location))
+
+
+class _LaneChange:
+    """What the action and the modifier ``change_lane`` share: ``num_of_lanes`` lanes (default 1)
+    to ``side`` (either side when not given), relative to the lane the phase started in or, for the
+    action with ``reference:``, ending that many lanes beside another actor."""
+
+    def check(self, binding: Binding, context: CheckContext) -> None:
+        count = binding["num_of_lanes"]
+        if count is None:
+            return
+        value = context.evaluate(count)
+        if value is not None and value.dimension is None and value.low >= 0 and (value.low < 1 or value.high > context.lanes - 1):
+            context.error(
+                count.value.location, f"a change of {value} lanes is impossible on a road of {context.lanes} lanes{context.lanes_origin}",
+                f"num_of_lanes must be between 1 and {context.lanes - 1}",
+            )
+
+    def lanes_needed(self, binding, highest) -> int:
+        return highest(binding["num_of_lanes"]) + 1
+
+    def translate(self, use: Use, phase: Phase) -> None:
+        count = 1
+        if use.argument("num_of_lanes") is not None:
+            value = use.interval("num_of_lanes")
+            if not value.is_point or not float(value.low).is_integer():
+                raise error_at(use.argument("num_of_lanes").location, "the number of lanes to change must be one whole number")
+            count = int(value.low)
+        side = use.name("side")
+        reference = use.name("reference")
+        variants = []
+        for direction in ("left", "right") if side is None else (side,):
+            step = -count if direction == "left" else count  # internal lanes grow to the right
+            if reference is not None and reference != use.actor:
+                variants.append(Variant(end=Bound(Term(LANE, use.actor, reference), step, step, use.location)))
+                continue
+            for lane in range(use.lanes):
+                if 0 <= lane + step < use.lanes:
+                    variants.append(
+                        Variant(start=Bound(Term(LANE, use.actor), lane, lane, use.location), end=Bound(Term(LANE, use.actor), lane + step, lane + step, use.location))
+                    )
+        if not variants:
+            raise error_at(use.location, f"a change of {count} lanes is impossible on a road of {use.lanes} lanes")
+        phase.branch(variants)
+
+
+class ChangeLaneAction(_LaneChange, Action):
+    signature = Signature(
+        "change_lane",
+        (Parameter("num_of_lanes", "uint", positional=True), Parameter("side", "enum:side", positional=True), Parameter("reference", "actor"), DURATION, *RATE),
+        description="move num_of_lanes lanes (default 1) to the side",
+    )
+
+
+class ChangeLaneModifier(_LaneChange, Modifier):
+    signature = Signature(
+        "change_lane", (Parameter("num_of_lanes", "uint", positional=True), Parameter("side", "enum:side", positional=True)),
+        description="change lanes during the phase",
+    )
+
+
+CONSTRUCTS = (Lane(), KeepLane(), FollowLane(), ChangeLaneAction(), ChangeLaneModifier())
+__all__ = ["CONSTRUCTS", "LANE_CONVENTION", "keep_lane_variants"]

@@ -1,0 +1,91 @@
+"""Speed: the ``speed()`` and ``keep_speed()`` modifiers, the ``change_speed()`` and ``keep_speed()`` actions.
+
+``keep_speed`` refers to the speed the phase started with, which a guard cannot see: it becomes one
+variant per 1 m/s band from 0 to 40 m/s (the speed starts within half a band of the band's value
+and stays within a band of it, so it varies by 1.5 m/s at most).
+"""
+
+from __future__ import annotations
+
+from ..automaton.guards import SPEED as SPEED_Q, Bound, Guard, Term
+from ..automaton.phase import Phase, Variant
+from ..frontend.errors import SourceLocation, error_at
+from ..frontend.library import AT, DURATION, RATE, Parameter, Signature
+from ..frontend.tolerances import SPEED_TOLERANCE
+from ..frontend.units import SPEED
+from .base import Action, AnchoredModifier, Modifier, Use
+
+KEEP_SPEED_CENTRES = tuple(float(v) for v in range(0, 41))
+KEEP_SPEED_BAND = 1.0
+RELATIONS = ("faster_than", "slower_than", "same_as")
+
+
+def keep_speed_variants(actor: str, source: SourceLocation) -> list[Variant]:
+    return [
+        Variant(
+            start=Bound(Term(SPEED_Q, actor), max(0.0, c - KEEP_SPEED_BAND / 2), c + KEEP_SPEED_BAND / 2, source),
+            invariant=Bound(Term(SPEED_Q, actor), max(0.0, c - KEEP_SPEED_BAND), c + KEEP_SPEED_BAND, source),
+        )
+        for c in KEEP_SPEED_CENTRES
+    ]
+
+
+class Speed(AnchoredModifier):
+    """``speed(v)``, ``speed([a..b])``; relative: ``faster_than: x`` / ``slower_than: x`` (by the
+    value), ``same_as: x`` (within the value, default 0 +- the tolerance)."""
+
+    signature = Signature(
+        "speed",
+        (Parameter("speed", "speed", positional=True), *(Parameter(r, "actor") for r in RELATIONS), AT),
+        exclusive=(RELATIONS,),
+        required=(("speed", "same_as"),),
+        description="absolute speed, or relative to another actor's",
+    )
+
+    def guard(self, use: Use) -> Guard:
+        relation = use.relation(RELATIONS)
+        if use.argument("speed") is None:
+            if relation is None or relation[0] != "same_as":
+                raise error_at(use.location, "speed() needs a speed, e.g. speed([20..30]kph)")
+            low = high = 0.0
+        else:
+            low, high = use.range("speed", SPEED, "a speed such as 20mps or [50..80]kph")
+        if low == high:
+            low, high = low - SPEED_TOLERANCE, high + SPEED_TOLERANCE
+        if relation is None:
+            return Bound(Term(SPEED_Q, use.actor), max(0.0, low), high, use.location)
+        keyword, other = relation
+        if keyword == "slower_than":
+            return Bound(Term(SPEED_Q, other, use.actor), low, high, use.location)
+        return Bound(Term(SPEED_Q, use.actor, other), low, high, use.location)  # faster_than; same_as: within the value
+
+
+class KeepSpeedModifier(Modifier):
+    signature = Signature("keep_speed", (), description="hold the speed from the phase's start")
+
+    def translate(self, use: Use, phase: Phase) -> None:
+        phase.branch(keep_speed_variants(use.actor, use.location))
+
+
+class KeepSpeedAction(Action):
+    signature = Signature("keep_speed", (DURATION,), description="hold the speed from the phase's start")
+
+    def translate(self, use: Use, phase: Phase) -> None:
+        phase.branch(keep_speed_variants(use.actor, use.location))
+
+
+class ChangeSpeed(Action):
+    """``change_speed(target)``: the target speed (+- the tolerance for a single value) at the phase's end."""
+
+    signature = Signature("change_speed", (Parameter("target", "speed", positional=True), DURATION, *RATE), required=(("target",),), description="reach the target speed")
+
+    def translate(self, use: Use, phase: Phase) -> None:
+        if use.argument("target") is None:
+            raise error_at(use.location, "change_speed() needs a target speed, e.g. change_speed(target: 20mps)")
+        low, high = use.range("target", SPEED, "a speed such as 20mps")
+        if low == high:
+            low, high = low - SPEED_TOLERANCE, high + SPEED_TOLERANCE
+        phase.add(end=Bound(Term(SPEED_Q, use.actor), max(0.0, low), high, use.location))
+
+
+CONSTRUCTS = (Speed(), KeepSpeedModifier(), KeepSpeedAction(), ChangeSpeed())

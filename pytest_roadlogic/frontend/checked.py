@@ -1,0 +1,85 @@
+"""What the checker hands on: a checked file, and each checked scenario as one value.
+
+Every stage after the checker takes a ``CheckedScenario``: the scenario model with its actors and
+parameters sorted out, its parameter space (domains from ``keep``s, the file's own enums, relations
+between parameters), the lane count of its road, and the registry of constructs it was checked
+with. Nothing downstream recomputes any of these, so the plugin, the CLI, the bench and a replay
+see the same logical parameters.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
+
+from . import model
+from .errors import Diagnostic, OscError, SourceLocation
+from .parameters import ParameterSpace
+
+if TYPE_CHECKING:  # the registry imports the automaton's guards, which import the front end
+    from ..constructs import Registry
+
+
+@dataclass(frozen=True)
+class CheckedScenario:
+    """One scenario, checked: the model, its parameter space, its road's lanes, its constructs."""
+
+    scenario: model.Scenario
+    space: ParameterSpace
+    lanes: int
+    registry: "Registry"
+    sources: dict[str, str] = field(default_factory=dict, compare=False, repr=False)  # path -> text, for error reports
+
+    @property
+    def name(self) -> str:
+        return self.scenario.name
+
+    @property
+    def path(self) -> str | None:
+        return self.scenario.path
+
+    @property
+    def runnable(self) -> bool:
+        """Whether it has a behavior to plan (a library scenario may declare none)."""
+        return self.scenario.behavior is not None
+
+
+@dataclass
+class CheckedFile:
+    """A file with its imports resolved: the scenarios it declares, checked, and every diagnostic."""
+
+    file: model.OscFile
+    diagnostics: list[Diagnostic]
+    sources: dict[str, str]
+    scenarios: tuple[CheckedScenario, ...] = ()
+
+    @property
+    def errors(self) -> list[Diagnostic]:
+        return [d for d in self.diagnostics if d.severity == "error"]
+
+    @property
+    def warnings(self) -> list[Diagnostic]:
+        return [d for d in self.diagnostics if d.severity == "warning"]
+
+    def scenario(self, name: str) -> CheckedScenario:
+        """The scenario called ``name`` (KeyError when the file declares none)."""
+        for checked in self.scenarios:
+            if checked.name == name:
+                return checked
+        raise KeyError(name)
+
+    def scenario_to_run(self, name: str | None = None) -> CheckedScenario:
+        """The scenario called ``name``, or the first one with a behavior (KeyError for an unknown name)."""
+        if name is not None:
+            return self.scenario(name)
+        for checked in self.scenarios:
+            if checked.runnable:
+                return checked
+        raise OscError([Diagnostic(SourceLocation(self.file.path, 1, 1), "the file declares no scenario with a `do` behavior")], sources=self.sources)
+
+    def raise_for_errors(self) -> None:
+        if self.errors:
+            raise OscError(self.errors, sources=self.sources)
+
+    def report(self) -> str:
+        return OscError(self.diagnostics, sources=self.sources).report() if self.diagnostics else ""

@@ -1,0 +1,13 @@
+"""How a single value is read: a continuous trace never meets a point exactly.
+
+docs/os2-subset.md: a point value in a modifier or a duration stands for a small band around it.
+The planner plans inside the band and the monitor checks the band, so both read these numbers.
+"""
+
+# a speed as value +- 0.5 m/s, a distance as value +- 1 m (one planning cell)
+SPEED_TOLERANCE = 0.5
+POSITION_TOLERANCE = 1.0
+# a single duration as value +- 0.5 s (the planner's time step is 1 s)
+DURATION_TOLERANCE = 0.5
+# what "standing still" means for a trace's speed, in m/s
+STANDSTILL = 0.1
