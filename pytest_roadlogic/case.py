@@ -1,20 +1,21 @@
 """One concrete test case, exactly reproducible: what the plugin writes for a failure and ``roadlogic replay`` runs.
 
 A run of the pipeline is a function of the scenario file, the sampled parameter values (refined
-strategy) or the instance's index among the planner's plans (base strategy), the seed and the
-planning settings. A ``Case`` records all of them, so that a failure found by Hypothesis in
-``pytest scenarios/`` replays to the same plan and the same trace from one command line.
+strategy) or the instance's index among the planner's plans (base strategy), the seed, the
+planning settings and the simulation backend. A ``Case`` records all of them, so that a failure
+found by Hypothesis in ``pytest scenarios/`` replays to the same plan and the same trace from one
+command line (``runner.replay``). It is plain data: reading one imports nothing heavy.
 """
 
 from __future__ import annotations
 
 import json
 import shlex
-from dataclasses import asdict, dataclass, field
+from dataclasses import asdict, dataclass, field, fields
 from pathlib import Path
 from typing import Any
 
-REFINED, BASE = "refined", "base"
+from .settings import BASE, DEFAULT_SIMULATOR, REFINED, RunSettings
 
 
 class CaseFileError(ValueError):
@@ -34,37 +35,32 @@ class Case:
     planning_time_limit: float | None = None
     simulation_time_limit: float | None = None
     max_tries: int = 5
+    simulator: str = DEFAULT_SIMULATOR
 
-    def settings(self):
-        from .planning import PlanningSettings
+    @classmethod
+    def of(cls, path: str | Path, scenario: str, settings: RunSettings, **identity) -> "Case":
+        """The case of ``scenario`` in ``path`` under ``settings``; ``identity`` gives the strategy,
+        the values (refined) or the instance (base)."""
+        return cls(
+            path=str(path), scenario=scenario, seed=settings.seed, lanes=settings.lanes, max_horizon=settings.max_horizon,
+            planning_time_limit=settings.planning_time_limit, simulation_time_limit=settings.simulation_time_limit,
+            max_tries=settings.tries, simulator=settings.simulator, **identity,
+        )
 
-        overrides = {"max_horizon": self.max_horizon, "time_limit": self.planning_time_limit}
-        return PlanningSettings(**{k: v for k, v in overrides.items() if v is not None})
-
-    def run(self, drivers=None):
-        """The outcome of this case: the same plan and trace every time."""
-        from .frontend import load_file
-        from .pipeline import run_instances
-
-        scenario = load_file(self.path, self.lanes).scenario(self.scenario)
-        count = self.instance + 1 if self.strategy == BASE else 1
-        outcome = None
-        for outcome in run_instances(
-            scenario, count, seed=self.seed, settings=self.settings(), max_tries=self.max_tries, drivers=drivers, values=self.values or None,
-            simulation_time_limit=self.simulation_time_limit,
-        ):
-            pass
-        if outcome is None or outcome.instance != count - 1:
-            from .planning import NoPlanError
-
-            raise NoPlanError(f"the planner has fewer than {self.instance + 1} plans for this scenario")
-        return outcome
+    def settings(self) -> RunSettings:
+        """The run settings this case was made under (defaults where an older case file is silent)."""
+        given = {
+            "seed": self.seed, "strategy": self.strategy, "lanes": self.lanes, "max_horizon": self.max_horizon,
+            "planning_time_limit": self.planning_time_limit, "simulation_time_limit": self.simulation_time_limit,
+            "tries": self.max_tries, "simulator": self.simulator,
+        }
+        return RunSettings(**{k: v for k, v in given.items() if v is not None})
 
     def to_json(self) -> str:
         return json.dumps(asdict(self), indent=2, sort_keys=True)
 
     def save(self, path: str | Path) -> Path:
-        from .artifacts import write_text
+        from .artifacts.files import write_text
 
         Path(path).parent.mkdir(parents=True, exist_ok=True)
         return write_text(Path(path), self.to_json())
@@ -72,10 +68,14 @@ class Case:
     @classmethod
     def load(cls, path: str | Path) -> "Case":
         try:
-            return cls(**json.loads(Path(path).read_text()))
+            data = json.loads(Path(path).read_text())
+            known = {f.name for f in fields(cls)}
+            if not isinstance(data, dict) or not {"path", "scenario"} <= set(data) or set(data) - known:
+                raise TypeError(f"expected the keys {', '.join(sorted(known))}")
+            return cls(**data)
         except OSError as error:
             raise CaseFileError(f"cannot read the case file ({error.strerror})") from None
-        except (json.JSONDecodeError, TypeError) as error:
+        except (json.JSONDecodeError, TypeError, UnicodeDecodeError) as error:
             raise CaseFileError(f"not a case file written by pytest-roadlogic ({error})") from None
 
     def command(self, case_file: str | Path | None = None) -> str:
@@ -90,5 +90,6 @@ class Case:
         for option, value in (("--lanes", self.lanes), ("--horizon", self.max_horizon), ("--tries", self.max_tries)):
             if value is not None:
                 parts += [option, str(value)]
+        if self.simulator != DEFAULT_SIMULATOR:
+            parts += ["--simulator", self.simulator]
         return shlex.join(parts)
-

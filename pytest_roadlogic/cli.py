@@ -1,6 +1,7 @@
 """The ``roadlogic`` command.
 
     roadlogic run FILE.osc [--scenario NAME] [--seed S] [--out DIR] [--lanes N] [--tries N] [--instances N | --values JSON]
+                  [--horizon N] [--plan-timeout S] [--sim-timeout S] [--simulator NAME]
     roadlogic check PATH... [--syntax-only] [--lanes N]
     roadlogic automaton FILE.osc [--scenario NAME] [--out FILE.dot] [--lanes N]
     roadlogic plan FILE.osc [--scenario NAME] [--plans N] [--seed S] [--lanes N] [--show-asp]
@@ -23,56 +24,55 @@ import sys
 import time
 from pathlib import Path
 
-from .frontend import OscError
 from .case import CaseFileError
-from .planning import NoPlanError, PlanningSettings, UnsatisfiableScenario
+from .frontend import OscError
+from .outcomes import CONFORMANT
+from .planning import NoPlanError, UnsatisfiableScenario
 from .progress import ProgressBar
 from .sampling import UnknownParameter
+from .settings import BASE, OPTIONS_BY_NAME, REFINED, STRATEGIES, OptionError, RunSettings, count as parse_count, lane_count, whole_number
+from .simulation.backends import UnknownSimulator
 
 EXIT_ACCEPTED, EXIT_REJECTED, EXIT_INPUT = 0, 1, 2
 LANES_HELP = "lanes of the road (default: from the scenario: its path_min_driving_lanes/path_max_lanes and the lanes it names, at least 3)"
+# the run settings each command takes, as flags read from settings.OPTIONS
+RUN_FLAGS = ("seed", "tries", "horizon", "plan-timeout", "sim-timeout", "simulator")
 
 
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(prog="roadlogic", description="Concrete, monitored simulations from OpenSCENARIO DSL scenarios.")
     commands = parser.add_subparsers(dest="command", required=True)
     run = _scenario_command(commands, "run", "plan, simulate and monitor one scenario; write the artifacts")
-    run.add_argument("--seed", type=int, default=1, help="fixes planning and simulation (default 1)")
+    _run_flags(run, RUN_FLAGS)
     run.add_argument("--out", type=Path, default=Path("out"), help="artifact directory (default out/)")
-    run.add_argument("--tries", type=int, default=5, help="plans to try when the monitor rejects (default 5)")
-    run.add_argument("--instances", type=int, default=1, help="run the planner's first N different plans, artifacts in --out/instance-NNN (default 1)")
+    run.add_argument("--instances", type=_flag(whole_instances), default=1, help="run the planner's first N different plans, artifacts in --out/instance-NNN (default 1)")
     run.add_argument("--values", type=_values, default=None, help='logical parameter values as JSON, e.g. \'{"start_gap": 12.5}\' (SI units)')
     replay = commands.add_parser("replay", help="run one case again exactly: from the case.json of a failure, or from a file and values")
     replay.add_argument("case", type=Path, help="a case.json written for a failure, or an .osc file")
     replay.add_argument("--scenario", help="with an .osc file: the scenario (default: the first)")
-    replay.add_argument("--seed", type=int, default=1, help="with an .osc file: the seed (default 1)")
-    replay.add_argument("--strategy", choices=("refined", "base"), default="refined", help="with an .osc file: how the case was made")
+    replay.add_argument("--strategy", choices=STRATEGIES, default=REFINED, help="with an .osc file: how the case was made")
     replay.add_argument("--values", type=_values, default=None, help="with an .osc file: the sampled values as JSON (refined)")
-    replay.add_argument("--instance", type=int, default=0, help="with an .osc file: which plan, from 0 (base)")
-    replay.add_argument("--lanes", type=lane_count, default=None, help=LANES_HELP)
-    replay.add_argument("--horizon", type=int, default=None, help="planning horizon limit in steps (default 25)")
-    replay.add_argument("--tries", type=int, default=5, help="plans to try when the monitor rejects (default 5)")
+    replay.add_argument("--instance", type=_flag(parse_count), default=0, help="with an .osc file: which plan, from 0 (base)")
+    replay.add_argument("--lanes", type=_flag(lane_count), default=None, help=LANES_HELP)
+    _run_flags(replay, RUN_FLAGS, "with an .osc file: ")
     replay.add_argument("--out", type=Path, default=Path("out"), help="artifact directory (default out/)")
     check = commands.add_parser("check", help="parse and check .osc files and folders; print every problem")
     check.add_argument("paths", type=Path, nargs="+", help=".osc files or folders (searched recursively)")
     check.add_argument("--syntax-only", action="store_true", help="stop after parsing (for files written for other tools)")
-    check.add_argument("--lanes", type=lane_count, default=None, help=LANES_HELP)
+    check.add_argument("--lanes", type=_flag(lane_count), default=None, help=LANES_HELP)
     automaton = _scenario_command(commands, "automaton", "write a scenario's symbolic automaton as Graphviz DOT (and PNG when dot is installed)")
     automaton.add_argument("--out", type=Path, default=None, help="the DOT file to write (default: <scenario>.dot)")
     plan = _scenario_command(commands, "plan", "solve a scenario's planning problem and print the plans as tables")
     plan.add_argument("--plans", type=int, default=1, help="how many plans to enumerate (default 1)")
-    plan.add_argument("--seed", type=int, default=1, help="fixes the plans found (default 1)")
+    _run_flags(plan, ("seed", "horizon", "plan-timeout"))
     plan.add_argument("--show-asp", action="store_true", help="also print the generated instance program")
     bench = commands.add_parser("bench", help="the paper's evaluation (RQ1 time and conformance, RQ2 diversity): results, plots and report.md")
     bench.add_argument("paths", type=Path, nargs="*", default=[Path("scenarios")], help=".osc files or folders (default: scenarios/)")
-    bench.add_argument("--base", type=_count, default=None, help="instances per scenario with the base strategy (default 10, --quick 2)")
-    bench.add_argument("--refined", type=_count, default=None, help="instances per scenario with the refined strategy (default 50, --quick 5)")
+    bench.add_argument("--base", type=_flag(parse_count), default=None, help="instances per scenario with the base strategy (default 10, --quick 2)")
+    bench.add_argument("--refined", type=_flag(parse_count), default=None, help="instances per scenario with the refined strategy (default 50, --quick 5)")
     bench.add_argument("--quick", action="store_true", help="a small run (2 base and 5 refined instances per scenario) to try the setup")
-    bench.add_argument("--seed", type=int, default=1, help="fixes sampling, planning and simulation (default 1)")
+    _run_flags(bench, RUN_FLAGS)
     bench.add_argument("--out", type=Path, default=Path("bench-report"), help="report directory (default bench-report/)")
-    bench.add_argument("--tries", type=int, default=5, help="plans to try when the monitor rejects (default 5)")
-    bench.add_argument("--plan-timeout", type=float, default=60.0, help="seconds per planning before an instance counts as timed out (default 60)")
-    bench.add_argument("--sim-timeout", type=float, default=120.0, help="seconds per simulation before an instance counts as timed out (default 120)")
     bench.add_argument("--no-artifacts", action="store_true", help="do not write each instance's plan, trace, CommonRoad XML and plot")
     bench.add_argument("--report-only", action="store_true", help="rebuild report.md and the plots from --out/results.json, without running")
     args = parser.parse_args(argv)
@@ -80,20 +80,39 @@ def main(argv: list[str] | None = None) -> int:
     return {"run": _run, "check": _check, "automaton": _automaton, "plan": _plan, "replay": _replay, "bench": _bench}[args.command](args)
 
 
-def _whole_number(text: str, least: int, what: str) -> int:
-    """An option's whole number from ``least`` up (argparse reports the error)."""
-    try:
-        number = int(text)
-    except ValueError:
-        number = least - 1
-    if number < least:
-        raise argparse.ArgumentTypeError(f"{text!r} is not {what}; give a whole number from {least} up")
-    return number
+def _flag(parse):
+    """An argparse type from a settings parser: its OptionError becomes argparse's message."""
+
+    def convert(text: str):
+        try:
+            return parse(text)
+        except OptionError as error:
+            raise argparse.ArgumentTypeError(str(error)) from None
+
+    convert.__name__ = getattr(parse, "__name__", "value")
+    return convert
 
 
-def _count(text: str) -> int:
-    """An instance count: a whole number from 0 up."""
-    return _whole_number(text, 0, "an instance count")
+whole_instances = whole_number(1, "an instance count")
+
+
+def _run_flags(command: argparse.ArgumentParser, names: tuple[str, ...], prefix: str = "") -> None:
+    """The run settings ``names`` as flags, each read and checked by its ``settings.OPTIONS`` entry."""
+    for name in names:
+        option = OPTIONS_BY_NAME[name]
+        command.add_argument(f"--{name}", type=_flag(option.parse), default=None, dest=f"setting_{name.replace('-', '_')}", metavar=name.upper().replace('-', '_'),
+                             help=f"{prefix}{option.help} (default {option.default})")
+
+
+def _run_settings(args: argparse.Namespace, **extra) -> RunSettings:
+    """The run settings of a command: its flags, the defaults of settings.OPTIONS for the rest."""
+    values = {}
+    for name, option in OPTIONS_BY_NAME.items():
+        value = getattr(args, f"setting_{name.replace('-', '_')}", None)
+        if value is not None:
+            values[option.field] = value
+    lanes = getattr(args, "lanes", None)
+    return RunSettings(**values, lanes=lanes, **extra)
 
 
 def _values(text: str) -> dict:
@@ -107,17 +126,12 @@ def _values(text: str) -> dict:
     return values
 
 
-def lane_count(text: str) -> int:
-    """A lanes option's value: a whole number from 1 up (argparse reports the error)."""
-    return _whole_number(text, 1, "a lane count")
-
-
 def _scenario_command(commands, name: str, help: str) -> argparse.ArgumentParser:
     """A subcommand about one scenario of one file, on a road of some lanes."""
     command = commands.add_parser(name, help=help)
     command.add_argument("file", type=Path, help="an .osc file")
     command.add_argument("--scenario", help="the scenario when the file declares several (default: the first)")
-    command.add_argument("--lanes", type=lane_count, default=None, help=LANES_HELP)
+    command.add_argument("--lanes", type=_flag(lane_count), default=None, help=LANES_HELP)
     return command
 
 
@@ -126,7 +140,8 @@ def _plan(args: argparse.Namespace) -> int:
 
     def solve():
         scenario, automaton = _load_automaton(args)
-        planner = Planner(automaton, PlanningSettings(), args.seed)
+        settings = _run_settings(args)
+        planner = Planner(automaton, settings.planning(), settings.seed)
         if args.show_asp:
             print(planner.instance_program())
         started = time.perf_counter()
@@ -139,7 +154,7 @@ def _plan(args: argparse.Namespace) -> int:
     scenario, automaton, plans, seconds = solved
     events = {t.id: t.label for t in automaton.transitions}
     for plan in plans:
-        print(f"plan {plan.index + 1} of scenario {scenario.name} (seed {args.seed}): horizon {plan.horizon} steps of {plan.dt:g} s")
+        print(f"plan {plan.index + 1} of scenario {scenario.name} (seed {plan.seed}): horizon {plan.horizon} steps of {plan.dt:g} s")
         print(plan.table())
         for step, transition in plan.transitions:
             print(f"  step {step}: {events[transition]}")
@@ -239,7 +254,7 @@ def _reporting_input_errors(args: argparse.Namespace, action):
     except OscError as error:
         print(error.report(), file=sys.stderr)
         return EXIT_INPUT
-    except (UnknownParameter, CaseFileError) as error:
+    except (UnknownParameter, CaseFileError, UnknownSimulator) as error:
         print(f"{args.file}: error: {error}", file=sys.stderr)
         return EXIT_INPUT
     except KeyError as error:
@@ -254,39 +269,42 @@ def _reporting_input_errors(args: argparse.Namespace, action):
 
 
 def _run(args: argparse.Namespace) -> int:
-    from .pipeline import run_scenario
+    from .runner import Runner
 
     if args.instances > 1:
         return _run_many(args)
 
-    def plan_and_simulate():
-        scenario = _load(args)
-        return scenario, run_scenario(scenario, seed=args.seed, max_tries=args.tries, values=args.values)
+    def run_one():
+        runner = Runner(_load(args), _run_settings(args))
+        case = runner.case(strategy=REFINED, values=args.values) if args.values else runner.case(strategy=BASE, instance=0)
+        return runner.run_case(case)
 
-    loaded = _reporting_input_errors(args, plan_and_simulate)
-    if isinstance(loaded, int):
-        return loaded
-    return _show(*loaded, args.out, args.seed)
+    result = _reporting_input_errors(args, run_one)
+    return result if isinstance(result, int) else _show(result, args.out)
 
 
 def _run_many(args: argparse.Namespace) -> int:
     """``run --instances N``: the planner's first N different plans (the base strategy), each
     simulated and monitored, a progress bar on stderr, artifacts per instance under ``--out``."""
-    from .artifacts import write_artifacts
-    from .pipeline import run_instances
+    from .artifacts.writer import write_artifacts
+    from .runner import Runner
 
     def instances():
-        scenario = _load(args)
-        accepted = 0
+        runner = Runner(_load(args), _run_settings(args))
+        conformant = 0
         bar = ProgressBar(args.instances)
-        for outcome in run_instances(scenario, args.instances, seed=args.seed, max_tries=args.tries):
-            directory = args.out / f"instance-{outcome.instance + 1:03d}"
-            write_artifacts(outcome, directory, animation=False)
-            accepted += outcome.verdict.accepted
-            done = outcome.instance + 1
-            bar.update(done, f"accepted {accepted}")
-            verdict = "accepted" if outcome.verdict.accepted else "REJECTED"
-            yield f"instance {done}: {verdict} after {outcome.tries} tr{'y' if outcome.tries == 1 else 'ies'}, {sum(outcome.seconds.values()):.2f} s  {directory}", outcome.verdict.accepted
+        for result in runner.base(args.instances):
+            done = result.case.instance + 1
+            if result.run is None:  # the planner failed: the report is the exit path
+                bar.close()
+                yield f"instance {done}: {result.outcome}: {result.message}", False
+                return
+            directory = args.out / f"instance-{done:03d}"
+            write_artifacts(result.run, directory, animation=False)
+            conformant += not result.failed
+            bar.update(done, f"{CONFORMANT} {conformant}")
+            tries = result.run.tries
+            yield f"instance {done}: {result.outcome} after {tries} tr{'y' if tries == 1 else 'ies'}, {sum(result.seconds.values()):.2f} s  {directory}", not result.failed
         bar.close()
 
     results = _reporting_input_errors(args, lambda: list(instances()))
@@ -294,41 +312,47 @@ def _run_many(args: argparse.Namespace) -> int:
         return results
     for line, _ in results:
         print(line)
-    accepted = sum(ok for _, ok in results)
-    print(f"{accepted} of {len(results)} instances accepted")
-    return EXIT_ACCEPTED if results and accepted == len(results) else EXIT_REJECTED
+    conformant = sum(ok for _, ok in results)
+    print(f"{conformant} of {len(results)} instances {CONFORMANT}")
+    return EXIT_ACCEPTED if results and conformant == len(results) else EXIT_REJECTED
 
 
 def _replay(args: argparse.Namespace) -> int:
     from .case import Case
+    from .runner import replay
 
-    def replay():
+    def run_again():
         if args.case.suffix == ".json":
             case = Case.load(args.case)
         else:
             from .frontend import load_file
 
             name = load_file(args.case, args.lanes).scenario_to_run(args.scenario).name
-            case = Case(str(args.case), name, args.seed, args.strategy, args.values or {}, args.instance, args.lanes, args.horizon, max_tries=args.tries)
-        return case, case.run()
+            identity = {"values": args.values or {}} if args.strategy == REFINED else {"instance": args.instance}
+            case = Case.of(args.case, name, _run_settings(args), strategy=args.strategy, **identity)
+        return replay(case)
 
     args.file = args.case
-    loaded = _reporting_input_errors(args, replay)
-    if isinstance(loaded, int):
-        return loaded
-    case, outcome = loaded
-    return _show(outcome.scenario, outcome, args.out, case.seed)
+    result = _reporting_input_errors(args, run_again)
+    return result if isinstance(result, int) else _show(result, args.out)
 
 
-def _show(scenario, outcome, out: Path, seed: int) -> int:
-    """Write the artifacts of a run and print its stages, verdict and files; the exit code of ``run``."""
-    from .artifacts import write_artifacts
+def _show(result, out: Path) -> int:
+    """Write the artifacts of a case and print its stages, verdict and files; the exit code of ``run``.
+    A case without a simulation prints why on stderr (the constraints that clash, at their places)."""
+    from .artifacts.writer import write_artifacts
 
+    case = result.case
+    if result.run is None:
+        prefix = "" if isinstance(result.error, UnsatisfiableScenario) else f"{case.path}: "
+        print(f"{prefix}{result.message}", file=sys.stderr)
+        return EXIT_REJECTED
+    outcome = result.run
     started = time.perf_counter()
     paths = write_artifacts(outcome, out)
-    outcome.seconds["artifacts"] = time.perf_counter() - started
-    print(f"scenario {scenario.name} (seed {seed}): {outcome.tries} tr{'y' if outcome.tries == 1 else 'ies'}")
-    for stage, seconds in outcome.seconds.items():
+    result.seconds["artifacts"] = time.perf_counter() - started
+    print(f"scenario {case.scenario} (seed {case.seed}): {result.outcome} after {outcome.tries} tr{'y' if outcome.tries == 1 else 'ies'}")
+    for stage, seconds in result.seconds.items():
         print(f"  {stage:<11} {seconds:7.3f} s")
     print(outcome.verdict.explain())
     for kind, path in paths.items():
@@ -340,7 +364,7 @@ def _bench(args: argparse.Namespace) -> int:
     """Run the evaluation and write its report; exit 0 when every target is met, 1 when one is
     missed, 2 when the input is unusable."""
     from .evaluation import BenchmarkResults, BenchmarkSettings, run_benchmark, summaries, targets_met, write_report
-    from .evaluation.runner import CONFORMANT, PAPER_COUNTS, QUICK_COUNTS, RESULTS_FILE
+    from .evaluation.runner import PAPER_COUNTS, QUICK_COUNTS, RESULTS_FILE
 
     if args.report_only:
         try:
@@ -360,18 +384,17 @@ def _bench(args: argparse.Namespace) -> int:
         counts = QUICK_COUNTS if args.quick else PAPER_COUNTS
         settings = BenchmarkSettings(
             tuple(files), base=counts[0] if args.base is None else args.base, refined=counts[1] if args.refined is None else args.refined,
-            seed=args.seed, tries=args.tries, planning_time_limit=args.plan_timeout, simulation_time_limit=args.sim_timeout,
-            artifacts=not args.no_artifacts,
+            run=_run_settings(args), artifacts=not args.no_artifacts,
         )
         total = len(files) * (settings.base + settings.refined)
-        print(f"{len(files)} scenarios, {settings.base} base and {settings.refined} refined instances each ({total} in all), seed {args.seed}", file=sys.stderr)
+        print(f"{len(files)} scenarios, {settings.base} base and {settings.refined} refined instances each ({total} in all), seed {settings.run.seed}", file=sys.stderr)
         bar = ProgressBar(total)
         conformant = 0
 
         def progress(record, done: int, total: int) -> None:
             nonlocal conformant
             conformant += record.outcome == CONFORMANT
-            bar.update(done, f"{record.scenario} {record.strategy}  conformant {conformant}")
+            bar.update(done, f"{record.scenario} {record.strategy}  {CONFORMANT} {conformant}")
 
         results = run_benchmark(settings, args.out, progress, command=["roadlogic", *args.argv])
         bar.close()

@@ -11,3 +11,13 @@ def pytest_roadlogic_driver(config, scenario, vehicle):
 
     Called once per vehicle and simulation, so a driver may keep state for one run.
     """
+
+
+@pytest.hookspec(firstresult=True)
+def pytest_roadlogic_simulator(config, scenario):
+    """Return the simulation backend for ``scenario`` (an object with ``name`` and
+    ``simulate(plan, limits, drivers)``, see ``pytest_roadlogic.simulation.Simulator``), or
+    ``None`` to use the one ``--roadlogic-simulator`` names (default: frenetix).
+
+    Called once per scenario item.
+    """

@@ -1,7 +1,10 @@
-"""The whole pipeline: parse, build the automaton, plan, simulate, monitor; retry on rejection.
+"""The stages chained for one scenario: build the automaton, plan, simulate, monitor; retry on rejection.
 
 As in the paper, a simulation that the monitor rejects is discarded and the planner is asked for
-its next plan, up to ``max_tries`` times. Every stage is timed.
+its next plan, up to ``max_tries`` times. Every stage is timed. The strategies (which cases to
+run, how they end, what is reported) are ``runner``'s; this module is usable alone from Python:
+
+    outcome = run_scenario(load_scenario("scenarios/overtake.osc"), seed=1)
 """
 
 from __future__ import annotations
@@ -15,16 +18,18 @@ from pathlib import Path
 from .automaton import SymbolicAutomaton, build_automaton
 from .frontend import CheckedScenario, load_file
 from .monitor import Verdict, monitor
-from .planning import Plan, Planner, PlanningSettings
+from .planning import Plan, PlanningSettings
 from .sampling import guided, sample_seed
-from .simulation import Simulation, simulate
-from .simulation.simulator import DriverFactory
+from .settings import DEFAULT_SIM_TIMEOUT
+from .simulation import DriverFactory, Simulation, SimulationLimits, Simulator
 
 MAX_TRIES = 5
 
 
 @dataclass
 class Outcome:
+    """One simulated instance: its plan, simulation and verdict (the last of its tries)."""
+
     scenario: CheckedScenario
     automaton: SymbolicAutomaton
     plan: Plan
@@ -50,7 +55,8 @@ def run_scenario(
     max_tries: int = MAX_TRIES,
     drivers: DriverFactory | None = None,
     values: dict[str, object] | None = None,
-    simulation_time_limit: float | None = None,
+    simulation_time_limit: float | None = DEFAULT_SIM_TIMEOUT,
+    simulator: Simulator | None = None,
 ) -> Outcome:
     """One concrete instance of ``scenario``: plan, simulate, monitor, and retry with the next plan on rejection.
 
@@ -59,27 +65,35 @@ def run_scenario(
     planner's own free choices (start speeds and lanes, accelerations, how long the scenario lasts)
     are then random too, drawn from a seed made of ``seed`` and the values (``sample_seed``): the
     same sample always gives the same plan, and different samples do not share the solver's habits.
-    Without it (the base strategy) the planner chooses every open value itself.
+    Without it (the base strategy) the planner chooses every open value itself. ``simulator`` is the
+    backend (default: frenetix).
     """
-    return next(run_instances(scenario, 1, seed, settings, max_tries, drivers, values, simulation_time_limit))
+    return next(run_instances(scenario, 1, seed, settings, max_tries, drivers, values, simulation_time_limit, simulator))
 
 
 def run_instances(
-    scenario: Scenario,
+    scenario: CheckedScenario,
     count: int,
     seed: int = 1,
     settings: PlanningSettings | None = None,
     max_tries: int = MAX_TRIES,
     drivers: DriverFactory | None = None,
     values: dict[str, object] | None = None,
-    simulation_time_limit: float | None = None,
+    simulation_time_limit: float | None = DEFAULT_SIM_TIMEOUT,
+    simulator: Simulator | None = None,
 ) -> Iterator[Outcome]:
     """Up to ``count`` instances from one planner, each plan different from all before it (the base strategy).
 
     Each instance takes plans until the monitor accepts one or ``max_tries`` were rejected; it ends
-    early when the planner has no further plan. Planning errors (no plan, a timeout) propagate.
+    early when the planner has no further plan. Planning errors (no plan, a timeout) and
+    ``SimulationTimeout`` propagate.
     """
+    from .planning import Planner
+    from .simulation.backends import simulator as default_simulator
+
     settings = settings or PlanningSettings()
+    simulator = simulator or default_simulator()
+    limits = SimulationLimits(time_limit=simulation_time_limit)
     start = time.perf_counter()
     specification = build_automaton(scenario)
     guide = specification
@@ -103,7 +117,7 @@ def run_instances(
             if plan is None:
                 break
             start = time.perf_counter()
-            simulation = simulate(plan, drivers=drivers, time_limit=simulation_time_limit)
+            simulation = simulator.simulate(plan, limits, drivers)
             seconds["simulation"] += time.perf_counter() - start
             start = time.perf_counter()
             verdict = monitor(specification, simulation.trace)

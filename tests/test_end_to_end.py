@@ -92,7 +92,7 @@ def test_syntax_only_skips_the_checker(tmp_path):
 def test_roadlogic_run_instances_writes_each_instance_with_a_progress_bar(tmp_path):
     result = run_cli("run", str(ROOT / "scenarios" / "follow.osc"), "--instances", "2", "--out", str(tmp_path))
     assert result.returncode == 0, result.stdout + result.stderr
-    assert "2 of 2 instances accepted" in result.stdout
+    assert "2 of 2 instances conformant" in result.stdout
     assert "[####################] 2/2" in result.stderr
     for index in (1, 2):
         assert (tmp_path / f"instance-00{index}" / "trace.csv").is_file()

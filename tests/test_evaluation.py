@@ -11,11 +11,11 @@ import numpy as np
 import pytest
 
 from pytest_roadlogic.evaluation import Occupancy, jaccard, mean_pairwise
+from pytest_roadlogic.outcomes import STAGES
 from pytest_roadlogic.simulation.trace import Trace
 from tests.conftest import ROOT
 
 SCENARIOS = sorted(p.stem for p in (ROOT / "scenarios").glob("*.osc"))
-STAGES = ("planning", "simulation", "monitoring", "artifacts")
 OUTCOMES = ("conformant", "non-conformant", "timed out", "no plan")
 
 

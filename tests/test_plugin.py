@@ -68,8 +68,9 @@ import sys
 sys.path.insert(0, {root!r})
 from pathlib import Path
 from pytest_roadlogic.case import Case
+from pytest_roadlogic.runner import replay
 from tests.drivers import NeverChangesLane
-outcome = Case.load({case!r}).run(drivers=lambda v: NeverChangesLane() if v == "v1" else None)
+outcome = replay(Case.load({case!r}), drivers=lambda v: NeverChangesLane() if v == "v1" else None).run
 assert not outcome.verdict.accepted
 Path({out!r}).mkdir()
 Path({out!r}, "plan.json").write_text(outcome.plan.to_json())
@@ -89,7 +90,7 @@ def test_the_driver_hook_drives_the_vehicle_under_test_and_a_bad_one_fails_with_
     result = pytester.runpytest_subprocess("--hypothesis-profile", "quick", "--roadlogic-tries", "1", *QUIET)
     result.assert_outcomes(failed=1)
     report = result.stdout.str()
-    assert "scenario overtake: rejected at these values" in report
+    assert "scenario overtake: non-conformant at these values" in report
     assert "A.position.distance = " in report, "the failing values are listed"
     assert "rejected (robustness" in report, "the monitor's explanation is shown"
     artifacts = pytester.path / "roadlogic-artifacts" / "overtake.osc_overtake"
@@ -118,9 +119,9 @@ def test_ini_options_the_base_strategy_the_summary_and_junit_properties(pytester
     pytester.makeini("[pytest]\nroadlogic_strategy = base\nroadlogic_examples = 2\n")
     result = pytester.runpytest_subprocess("--junitxml", "junit.xml", *QUIET)
     result.assert_outcomes(passed=1)
-    result.stdout.fnmatch_lines(["*1 scenarios, 2 examples: 2 accepted, 0 rejected, 0 without a plan, 0 timed out*", "time per stage: *"])
+    result.stdout.fnmatch_lines(["*1 scenarios, 2 examples: 2 conformant, 0 non-conformant, 0 no plan, 0 timed out*", "time per stage: *"])
     properties = {p.get("name"): p.get("value") for p in ET.parse(pytester.path / "junit.xml").iter("property")}
-    assert properties["strategy"] == "base" and properties["examples"] == "2" and properties["accepted"] == "2"
+    assert properties["strategy"] == "base" and properties["examples"] == "2" and properties["conformant"] == "2"
 
 
 def test_an_error_inside_one_example_fails_that_item_only(pytester):

@@ -13,7 +13,7 @@ import pytest
 from pytest_roadlogic.automaton import build_automaton
 from pytest_roadlogic.frontend import check_text
 from pytest_roadlogic.pipeline import run_scenario
-from pytest_roadlogic.simulation.commonroad_export import commonroad_scenario
+from pytest_roadlogic.artifacts.commonroad import commonroad_scenario
 
 PAIR = "scenario s:\n    a: car\n    b: car\n"
 

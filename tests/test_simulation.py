@@ -5,7 +5,7 @@ import pytest
 
 from pytest_roadlogic.planning import Planner
 from pytest_roadlogic.simulation import Road, references, simulate
-from pytest_roadlogic.simulation.commonroad_export import write_commonroad_xml
+from pytest_roadlogic.artifacts.commonroad import write_commonroad_xml
 
 
 @pytest.fixture(scope="module")
@@ -82,7 +82,7 @@ class _Misbehaving:
     over, then leaves the road or jumps onto v1: the scenario's guards have all held by then."""
 
     def __init__(self, incident):
-        from pytest_roadlogic.simulation.driver import FrenetixDriver
+        from pytest_roadlogic.simulation.frenetix import FrenetixDriver
 
         self.incident = incident
         self.inner = FrenetixDriver()

@@ -5,11 +5,12 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from .runner import NO_PLAN, OUTCOMES, STAGES, STRATEGIES
+from ..outcomes import CONFORMANT, NO_PLAN, NON_CONFORMANT, OUTCOMES, STAGES, TIMED_OUT
+from .runner import STRATEGIES
 from .summary import StrategySummary
 
-STAGE_COLOURS = {"planning": "tab:orange", "simulation": "tab:blue", "monitoring": "tab:green", "artifacts": "tab:grey"}
-OUTCOME_COLOURS = {"conformant": "tab:blue", "non-conformant": "tab:orange", "timed out": "tab:grey", NO_PLAN: "tab:red"}
+STAGE_COLOURS = {"automaton": "tab:purple", "planning": "tab:orange", "simulation": "tab:blue", "monitoring": "tab:green", "artifacts": "tab:grey"}
+OUTCOME_COLOURS = {CONFORMANT: "tab:blue", NON_CONFORMANT: "tab:orange", TIMED_OUT: "tab:grey", NO_PLAN: "tab:red"}
 COLOUR_MAP = "viridis"
 
 

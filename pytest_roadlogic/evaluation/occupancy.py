@@ -13,7 +13,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..simulation.driver import CAR_LENGTH
+from ..simulation.geometry import CAR_LENGTH
 from ..simulation.trace import Trace
 
 

@@ -6,7 +6,9 @@ import math
 from pathlib import Path
 
 from . import figures
-from .runner import BASE, CONFORMANT, NO_PLAN, OUTCOMES, PAPER_COUNTS, REFINED, STAGES, STRATEGIES, BenchmarkResults
+from ..outcomes import CONFORMANT, NO_PLAN, OUTCOMES, STAGES
+from ..settings import BASE, REFINED
+from .runner import PAPER_COUNTS, STRATEGIES, BenchmarkResults
 from .summary import StrategySummary, summaries, targets
 
 REPORT_FILE = "report.md"

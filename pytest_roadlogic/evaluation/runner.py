@@ -1,12 +1,9 @@
 """Running the evaluation: every scenario under both strategies, each instance timed and recorded.
 
 The record of a run (``results.json``) holds everything the report shows, so the report can be
-rebuilt, checked or compared later without simulating again. Each instance ends in one outcome:
-
-- conformant: the monitor accepted a simulation (within the tries a rejection allows);
-- non-conformant: every try was rejected;
-- timed out: planning or simulation ran past its time limit;
-- no plan: the planner proved that no plan exists (for a sample: at those values).
+rebuilt, checked or compared later without simulating again. Each instance ends in one of the
+outcomes of ``pytest_roadlogic.outcomes`` (conformant, non-conformant, no plan, timed out); the
+cases are run by ``pytest_roadlogic.runner``, as the plugin runs them.
 
 A scenario file that cannot be loaded is recorded as an error and the run goes on.
 """
@@ -25,18 +22,16 @@ from importlib import metadata
 from pathlib import Path
 from typing import Any
 
-from ..artifacts import write_artifacts, write_text
+from ..artifacts.files import write_text
+from ..artifacts.writer import write_artifacts
 from ..frontend import OscError
-from ..pipeline import MAX_TRIES, Outcome, load_scenario, run_instances, run_scenario
-from ..planning import NoPlanError, PlanningSettings, PlanningTimeout
-from ..simulation import SimulationTimeout
+from ..outcomes import NO_PLAN, STAGES
+from ..pipeline import load_scenario
+from ..runner import CaseResult, Runner
+from ..settings import BASE, REFINED, RunSettings
 from .occupancy import Occupancy
 
-BASE, REFINED = "base", "refined"
-STRATEGIES = (BASE, REFINED)
-STAGES = ("planning", "simulation", "monitoring", "artifacts")
-CONFORMANT, NON_CONFORMANT, TIMED_OUT, NO_PLAN = "conformant", "non-conformant", "timed out", "no plan"
-OUTCOMES = (CONFORMANT, NON_CONFORMANT, TIMED_OUT, NO_PLAN)
+STRATEGIES = (BASE, REFINED)  # the order the bench runs them in
 RESULTS_FILE = "results.json"
 PACKAGES = ("pytest-roadlogic", "clingo", "clingo-dl", "frenetix", "commonroad-io", "hypothesis", "numpy", "matplotlib", "pytest")
 
@@ -53,11 +48,12 @@ class BenchmarkSettings:
     paths: tuple[Path, ...]
     base: int = PAPER_COUNTS[0]
     refined: int = PAPER_COUNTS[1]
-    seed: int = 1
-    tries: int = MAX_TRIES
-    planning_time_limit: float = 60.0
-    simulation_time_limit: float = 120.0
+    run: RunSettings = field(default_factory=RunSettings)  # seed, tries, time limits, ...
     artifacts: bool = True  # plan, trace, CommonRoad XML, plot and verdict of every instance (timed)
+
+    def record(self) -> dict[str, Any]:
+        """For results.json: flat, as the report reads it (seed, tries, time limits, ...)."""
+        return {"paths": [str(p) for p in self.paths], "base": self.base, "refined": self.refined, "artifacts": self.artifacts, **dataclasses.asdict(self.run)}
 
     def count(self, strategy: str) -> int:
         return self.base if strategy == BASE else self.refined
@@ -124,7 +120,7 @@ def run_benchmark(settings: BenchmarkSettings, out: Path, progress: Progress | N
     """
     out.mkdir(parents=True, exist_ok=True)
     started = time.perf_counter()
-    settings_record = {**dataclasses.asdict(settings), "paths": [str(p) for p in settings.paths], "command": command}
+    settings_record = {**settings.record(), "command": command}
     results = BenchmarkResults(settings_record, environment(), [p.stem for p in settings.paths])
     total = len(settings.paths) * (settings.base + settings.refined)
     done = 0
@@ -153,79 +149,44 @@ def run_benchmark(settings: BenchmarkSettings, out: Path, progress: Progress | N
     return results
 
 
-def _planning_settings(settings: BenchmarkSettings) -> PlanningSettings:
-    # a sample without a plan is counted, not explained: the diagnosis costs seconds per sample
-    return PlanningSettings(time_limit=settings.planning_time_limit, explain_unsatisfiable=False)
-
-
 def _run_base(scenario, name: str, settings: BenchmarkSettings, out: Path, record: Callable[[InstanceRecord], None]) -> None:
-    """The planner's first N different plans. A timeout ends the sequence (the planner's search
-    state is gone with it); the instances it did not reach are recorded as timed out too, and a
+    """The planner's first N different plans. A planning failure ends the sequence (the planner's
+    search state is gone with it); the instances it did not reach get its outcome too, and a
     planner that runs out of plans leaves the rest without a plan."""
+    # a case without a plan is counted, not explained: the diagnosis costs seconds per case
+    runner = Runner(scenario, settings.run, explain=False)
     index = 0
-    try:
-        for outcome in run_instances(
-            scenario, settings.base, seed=settings.seed, settings=_planning_settings(settings), max_tries=settings.tries,
-            simulation_time_limit=settings.simulation_time_limit,
-        ):
-            record(_record(outcome, name, BASE, index, None, settings, out))
-            index += 1
-        ending, message = NO_PLAN, "the planner has no further plan"
-    except (PlanningTimeout, SimulationTimeout) as error:
-        ending, message = TIMED_OUT, str(error)
-    except NoPlanError as error:
-        ending, message = NO_PLAN, str(error)
+    ending, message = NO_PLAN, "the planner has no further plan"
+    for result in runner.base(settings.base):
+        if result.run is None:
+            ending, message = result.outcome, result.message
+            break
+        record(_record(result, name, BASE, index, settings, out))
+        index += 1
     for k in range(index, settings.base):
         record(InstanceRecord(name, BASE, k, ending, message=message))
 
 
 def _run_refined(scenario, name: str, settings: BenchmarkSettings, out: Path, record: Callable[[InstanceRecord], None]) -> None:
-    """N samples of the logical parameters, drawn by Hypothesis from the run's seed exactly as the
-    pytest plugin draws them, each planned, simulated and monitored once (with retries)."""
-    import hypothesis
-    from hypothesis import HealthCheck, Phase
+    """N samples of the logical parameters, drawn by Hypothesis from the run's seed as the pytest
+    plugin draws them, each planned, simulated and monitored once (with retries)."""
+    runner = Runner(scenario, settings.run, explain=False)
+    index = 0
 
-    from ..sampling import strategy
+    def sample(result: CaseResult) -> None:
+        nonlocal index
+        record(_record(result, name, REFINED, index, settings, out))
+        index += 1
 
-    planning = _planning_settings(settings)
-    count = 0
-
-    def sample(values: dict[str, Any]) -> None:
-        nonlocal count
-        if count >= settings.refined:
-            return
-        started = time.perf_counter()
-        try:
-            outcome = run_scenario(
-                scenario, seed=settings.seed, settings=planning, max_tries=settings.tries, values=values,
-                simulation_time_limit=settings.simulation_time_limit,
-            )
-        except (PlanningTimeout, SimulationTimeout) as error:
-            instance = InstanceRecord(name, REFINED, count, TIMED_OUT, values=values, message=str(error), seconds=_elapsed(started))
-        except NoPlanError as error:
-            instance = InstanceRecord(name, REFINED, count, NO_PLAN, values=values, message=str(error), seconds=_elapsed(started))
-        else:
-            instance = _record(outcome, name, REFINED, count, values, settings, out)
-        count += 1
-        record(instance)
-
-    # the default profile, not the one loaded (a CI profile's derandomize would override the seed):
-    # the same seed must draw the same samples everywhere
-    profile = hypothesis.settings.get_profile("default")
-    search = hypothesis.settings(
-        profile, max_examples=settings.refined, database=None, deadline=None, derandomize=False, phases=[Phase.generate],
-        print_blob=False, suppress_health_check=list(HealthCheck),
-    )
-    hypothesis.seed(settings.seed)(search(hypothesis.given(strategy(scenario))(sample)))()
+    runner.refined(sample, settings.refined, search=False)
 
 
-def _elapsed(started: float) -> dict[str, float]:
-    return {stage: 0.0 for stage in STAGES} | {"planning": time.perf_counter() - started}
-
-
-def _record(outcome: Outcome, name: str, strategy: str, index: int, values, settings: BenchmarkSettings, out: Path) -> InstanceRecord:
-    seconds = {stage: outcome.seconds.get(stage, 0.0) for stage in STAGES}
-    seconds["planning"] += outcome.seconds.get("automaton", 0.0)
+def _record(result: CaseResult, name: str, strategy: str, index: int, settings: BenchmarkSettings, out: Path) -> InstanceRecord:
+    seconds = {stage: result.seconds.get(stage, 0.0) for stage in STAGES}
+    values = result.case.values if strategy == REFINED else None
+    if result.run is None:
+        return InstanceRecord(name, strategy, index, result.outcome, values=values, message=result.message, seconds=seconds)
+    outcome = result.run
     directory = None
     if settings.artifacts:
         started = time.perf_counter()
@@ -235,9 +196,8 @@ def _record(outcome: Outcome, name: str, strategy: str, index: int, values, sett
         directory = relative.as_posix()
     verdict = outcome.verdict
     return InstanceRecord(
-        name, strategy, index, CONFORMANT if verdict.accepted else NON_CONFORMANT, outcome.tries, seconds, values,
-        verdict.robustness, outcome.plan.horizon, "" if verdict.accepted else verdict.explain(),
-        Occupancy.of_trace(outcome.simulation.trace), directory,
+        name, strategy, index, result.outcome, outcome.tries, seconds, values,
+        verdict.robustness, outcome.plan.horizon, result.message, Occupancy.of_trace(outcome.simulation.trace), directory,
     )
 
 

@@ -11,7 +11,9 @@ import statistics
 from dataclasses import dataclass
 
 from .occupancy import mean_pairwise, similarity_matrix
-from .runner import BASE, CONFORMANT, OUTCOMES, REFINED, STAGES, STRATEGIES, TIMED_OUT, BenchmarkResults, InstanceRecord
+from ..outcomes import CONFORMANT, OUTCOMES, STAGES, TIMED_OUT
+from ..settings import BASE, REFINED
+from .runner import STRATEGIES, BenchmarkResults, InstanceRecord
 
 # the acceptance targets
 BASE_CONFORMANT = 1.0

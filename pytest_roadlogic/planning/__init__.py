@@ -1,10 +1,23 @@
-"""Stage 3: planning with clingo (``Planner``), from an automaton to ``Plan`` objects."""
+"""Stage 3: planning with clingo (``Planner``), from an automaton to ``Plan`` objects.
 
+``Plan`` and ``PlanningSettings`` are plain data and import nothing heavy; the solver (and with it
+clingo) is imported on first use of one of its names, so that reading a plan (the simulation, the
+monitor, a report) does not load the solver.
+"""
+
+from .errors import NoPlanError, PlanningTimeout, UnsatisfiableScenario
 from .instance import PlanningSettings, build_instance
 from .plan import Plan, PlanState
-from .solver import NoPlanError, Planner, PlanningTimeout, UnsatisfiableScenario, background_theory, check_satisfiable
 
-__all__ = [
-    "NoPlanError", "Plan", "PlanState", "Planner", "PlanningSettings", "PlanningTimeout", "UnsatisfiableScenario", "background_theory",
-    "build_instance", "check_satisfiable",
-]
+_SOLVER_NAMES = ("Planner", "background_theory", "check_satisfiable")
+
+
+def __getattr__(name: str):
+    if name in _SOLVER_NAMES:
+        from . import solver
+
+        return getattr(solver, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+__all__ = ["NoPlanError", "Plan", "PlanState", "PlanningSettings", "PlanningTimeout", "UnsatisfiableScenario", "build_instance", *_SOLVER_NAMES]

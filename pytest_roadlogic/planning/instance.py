@@ -15,6 +15,7 @@ from dataclasses import dataclass
 
 from ..automaton.guards import POSITION, SPEED, And, Bound, Guard, Not, Or
 from ..automaton.model import SymbolicAutomaton
+from ..settings import DEFAULT_HORIZON, DEFAULT_PLAN_TIMEOUT
 
 
 @dataclass(frozen=True)
@@ -38,8 +39,8 @@ class PlanningSettings:
     position_margin: float = 1.5  # m planned inside each side of a position range, when it fits
     speed_margin: float = 0.5  # m/s likewise for speed ranges
     runup_acceleration: float = 2.0  # m/s^2 with which every vehicle leaves standstill
-    max_horizon: int = 25  # steps
-    time_limit: float = 60.0  # seconds for one solve, all horizons together
+    max_horizon: int = DEFAULT_HORIZON  # steps
+    time_limit: float = DEFAULT_PLAN_TIMEOUT  # seconds for one solve, all horizons together
     # when no plan exists, find the constraints that cannot hold together (UnsatisfiableScenario);
     # a search over many samples turns it off and asks only for the one it reports
     explain_unsatisfiable: bool = True

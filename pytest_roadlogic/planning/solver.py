@@ -28,6 +28,7 @@ from clingodl import ClingoDLTheory
 
 from ..automaton.guards import contradiction
 from ..automaton.model import SymbolicAutomaton
+from .errors import NoPlanError, PlanningTimeout, UnsatisfiableScenario, conflict_message
 from .instance import PlanningSettings, build_instance, relaxable_constraints, start_preferences
 from .plan import Plan, PlanState
 
@@ -35,51 +36,6 @@ ASP_DIR = Path(__file__).resolve().parent.parent / "asp"
 if not ASP_DIR.is_dir():  # running from a source checkout: asp/ sits at the top level
     ASP_DIR = Path(__file__).resolve().parents[2] / "asp"
 BACKGROUND = ("dynamics.lp", "domain.lp", "automaton.lp")
-
-
-class NoPlanError(Exception):
-    """No plan exists up to the horizon limit, or none was found within the time limit."""
-
-
-class PlanningTimeout(NoPlanError):
-    """The time limit ran out before a plan was found (a plan may still exist)."""
-
-
-class UnsatisfiableScenario(NoPlanError):
-    """The scenario cannot be met by any plan. ``conflicts`` holds groups of the scenario's
-    constraints (bounds, durations) that cannot hold together, each with its source location; a
-    group of one cannot hold on its own under the domain rules (speed limits, lanes, no collision)."""
-
-    def __init__(self, message: str, conflicts: list[tuple], rules: str = "") -> None:
-        super().__init__(message)
-        self.conflicts = conflicts
-        self.rules = rules
-
-    def report(self) -> str:
-        """Each conflicting modifier as ``path:line:col: error:`` with its line and a caret."""
-        from ..frontend.errors import Diagnostic, OscError
-
-        diagnostics = []
-        for group in self.conflicts:
-            for member in group:
-                if member.source is None:
-                    continue
-                others = [o for o in group if o is not member]
-                if others:
-                    together = ", ".join(f"{o} (line {o.source.line})" if o.source else str(o) for o in others)
-                    message = f"{member} cannot hold together with {together}"
-                else:
-                    message = f"{member} cannot hold in any plan under the domain rules" + (f" ({self.rules})" if self.rules else "")
-                hint = "the scenario can never be met; widen or remove one of them" if member is group[0] else None
-                diagnostics.append(Diagnostic(member.source, message, hint))
-        return OscError(diagnostics).report() if diagnostics else str(self)
-
-
-def _conflict_message(conflicts: list[tuple]) -> str:
-    lines = ["the scenario can never be met: these constraints cannot hold at the same time"]
-    for group in conflicts:
-        lines.append("  " + " and ".join(f"{c} (at {c.source})" for c in group))
-    return "\n".join(lines)
 
 
 def check_satisfiable(automaton: SymbolicAutomaton) -> None:
@@ -102,7 +58,7 @@ def check_satisfiable(automaton: SymbolicAutomaton) -> None:
     if automaton.final in reachable:
         return
     conflicts = list(dict.fromkeys(blocked.values()))
-    raise UnsatisfiableScenario(_conflict_message(conflicts), conflicts)
+    raise UnsatisfiableScenario(conflict_message(conflicts), conflicts)
 
 
 def background_theory() -> str:
@@ -190,7 +146,7 @@ class Planner:
         diagnosis finds them in time, else ``error`` as it is."""
         conflict = self.explain(deadline)
         if conflict:
-            raise UnsatisfiableScenario(f"{error}\n" + _conflict_message([conflict]), [conflict], self.settings.summary(self.automaton.lanes)) from None
+            raise UnsatisfiableScenario(f"{error}\n" + conflict_message([conflict]), [conflict], self.settings.summary(self.automaton.lanes)) from None
         raise error
 
     def explain(self, deadline: float | None = None) -> tuple | None:

@@ -5,9 +5,9 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from .monitor import Verdict
-from .simulation import Simulation
-from .simulation.driver import CAR_LENGTH, CAR_WIDTH
+from ..monitor import Verdict
+from ..simulation import Simulation
+from ..simulation.geometry import CAR_LENGTH, CAR_WIDTH
 
 COLOURS = ("tab:purple", "tab:red", "tab:blue", "tab:green", "tab:orange", "tab:brown")
 

@@ -1,8 +1,9 @@
-"""The simulation loop: every vehicle driven in lockstep, the trace recorded.
+"""The lockstep loop: every vehicle driven by its own ``Driver`` at the same instants, the trace recorded.
 
 All drivers plan at the same instants from the same snapshot: each sees the others' trajectories
 of the previous cycle as predictions. Collisions (oriented-box overlap) and off-road states are
 recorded in the trace as incidents rather than stopping the run, so that the monitor can explain them.
+A backend built on per-vehicle drivers (the frenetix one) runs this loop with its default driver.
 """
 
 from __future__ import annotations
@@ -10,41 +11,16 @@ from __future__ import annotations
 import math
 import time as clock
 from collections.abc import Callable
-from dataclasses import dataclass, field
 
 import numpy as np
 
 from ..planning.plan import Plan
-from .driver import Driver, FrenetixDriver, StationaryDriver, Trajectory, VehicleState, boxes_overlap, corners
+from .driver import Driver, StationaryDriver, Trajectory, VehicleState
+from .geometry import boxes_overlap, corners
+from .interface import DriverFactory, GoalRecord, Simulation, SimulationLimits, SimulationTimeout
 from .reference import TAIL, Reference, Waypoint, references
 from .road import Road
 from .trace import Incident, Trace
-
-DriverFactory = Callable[[str], Driver | None]
-
-
-@dataclass(frozen=True)
-class GoalRecord:
-    """One waypoint of a vehicle and when it was reached (None: its time window passed first)."""
-
-    waypoint: Waypoint
-    reached_at: float | None
-
-
-@dataclass
-class Simulation:
-    """What a run produced: the trace, the road, and each vehicle's reference (for plots)."""
-
-    trace: Trace
-    road: Road
-    references: dict[str, Reference]
-    dt: float
-    fallbacks: dict[str, int] = field(default_factory=dict)
-    stationary: tuple[str, ...] = ()  # standing obstacles, not driven
-    goals: dict[str, list[GoalRecord]] = field(default_factory=dict)  # per driven vehicle, in order
-
-    def missed_goals(self) -> list[tuple[str, GoalRecord]]:
-        return [(v, g) for v, records in self.goals.items() for g in records if g.reached_at is None]
 
 
 class _GoalSequence:
@@ -69,33 +45,22 @@ class _GoalSequence:
                 return
 
 
-def road_for(plan: Plan, lanes: int | None = None) -> Road:
-    """A road long enough for the run-up, the plan and its tail."""
-    lanes = lanes or plan.lanes
-    return _road_around(references(plan, Road(lanes)), lanes)
-
-
 def _road_around(refs: dict[str, Reference], lanes: int) -> Road:
     start = min(r.start_position for r in refs.values())
     end = max(r.s(r.end_time + TAIL) for r in refs.values())
     return Road(lanes, x_start=math.floor(start - 30.0), x_end=math.ceil(float(end) + 60.0))
 
 
-class SimulationTimeout(RuntimeError):
-    """The simulation took longer than its time limit (wall clock)."""
-
-
-def simulate(
-    plan: Plan, dt: float = 0.1, drivers: DriverFactory | None = None, lanes: int | None = None, time_limit: float | None = None
-) -> Simulation:
+def drive_in_lockstep(plan: Plan, limits: SimulationLimits, drivers: DriverFactory | None, default: Callable[[], Driver]) -> Simulation:
     """Drive every vehicle of ``plan`` from standstill through its waypoints.
 
-    ``drivers`` maps a vehicle name to a custom driver (or ``None`` for the default frenetix one);
-    stationary objects are never driven. ``time_limit`` (seconds of wall clock) bounds a run whose
+    ``drivers`` maps a vehicle name to a custom driver (or ``None`` for ``default()``); stationary
+    objects are never driven. ``limits.time_limit`` (seconds of wall clock) bounds a run whose
     driver (a plugged-in one, say) is far slower than expected; it raises ``SimulationTimeout``.
     """
+    dt, time_limit = limits.dt, limits.time_limit
     deadline = clock.monotonic() + time_limit if time_limit is not None else math.inf
-    lanes = lanes or plan.lanes
+    lanes = plan.lanes
     # a reference reads only the lanes' centre lines, not the road's extent: build them once and
     # size the road around them
     refs = references(plan, Road(lanes))
@@ -105,7 +70,7 @@ def simulate(
         if vehicle in plan.stationary:
             driver = StationaryDriver()
         else:
-            driver = (drivers(vehicle) if drivers else None) or FrenetixDriver()
+            driver = (drivers(vehicle) if drivers else None) or default()
         driver.start(vehicle, reference, road, dt)
         active[vehicle] = driver
     end_time = max(r.end_time for r in refs.values()) + TAIL

@@ -16,8 +16,8 @@ from pathlib import Path
 
 import numpy as np
 
-from .driver import CAR_LENGTH, CAR_WIDTH
-from .simulator import Simulation
+from ..simulation.geometry import CAR_LENGTH, CAR_WIDTH
+from ..simulation.interface import Simulation
 
 FIRST_OBSTACLE_ID = 1000
 FIRST_PROBLEM_ID = 2000

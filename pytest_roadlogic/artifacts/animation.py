@@ -12,10 +12,10 @@ from pathlib import Path
 
 import numpy as np
 
-from .monitor import Verdict
-from .plotting import COLOURS
-from .simulation import Simulation
-from .simulation.driver import CAR_LENGTH, CAR_WIDTH
+from ..monitor import Verdict
+from .plot import COLOURS
+from ..simulation import Simulation
+from ..simulation.geometry import CAR_LENGTH, CAR_WIDTH
 
 
 def animate_simulation(simulation: Simulation, verdict: Verdict | None, path: str | Path, title: str = "", frame_dt: float = 0.2) -> Path:

@@ -1,26 +1,15 @@
-"""Writing what a run produced to a directory: plan, trace, CommonRoad scenario, plot, verdict.
-
-Every file is written to a temporary name and renamed into place, so an interrupted run never
-leaves a half-written artifact behind.
-"""
+"""Writing what a run produced to a directory: plan, trace, CommonRoad scenario, plot, verdict."""
 
 from __future__ import annotations
 
 import json
-import os
 from pathlib import Path
 
+from ..pipeline import Outcome
 from .animation import animate_simulation
-from .pipeline import Outcome
-from .plotting import plot_simulation
-from .simulation.commonroad_export import write_commonroad_xml
-
-
-def write_text(path: Path, text: str) -> Path:
-    temporary = path.parent / f".{path.name}.{os.getpid()}.partial"
-    temporary.write_text(text, encoding="utf-8")
-    os.replace(temporary, path)
-    return path
+from .commonroad import write_commonroad_xml
+from .files import write_text
+from .plot import plot_simulation
 
 
 def write_artifacts(outcome: Outcome, directory: str | Path, animation: bool = True) -> dict[str, Path]:

@@ -1,0 +1,42 @@
+"""The words every report uses: how a concrete case ends, and the stages its time is spent in.
+
+The plugin's summary and JUnit properties, the CLI, the bench's tables and the README all use
+these, so that "conformant" means one thing everywhere:
+
+- conformant: the monitor accepted a simulation of the case (within the tries a rejection allows);
+- non-conformant: the monitor rejected the simulation of every plan tried;
+- no plan: the planner found no plan for the case (for a sample: at those values);
+- timed out: planning or simulation ran past its time limit.
+"""
+
+from __future__ import annotations
+
+from collections import Counter
+
+CONFORMANT, NON_CONFORMANT, NO_PLAN, TIMED_OUT = "conformant", "non-conformant", "no plan", "timed out"
+OUTCOMES = (CONFORMANT, NON_CONFORMANT, NO_PLAN, TIMED_OUT)
+STAGES = ("automaton", "planning", "simulation", "monitoring", "artifacts")
+
+
+def key(outcome: str) -> str:
+    """An outcome as an identifier (JUnit property names, counters): ``no plan`` -> ``no_plan``."""
+    return outcome.replace(" ", "_").replace("-", "_")
+
+
+class Tally:
+    """Cases counted by outcome, and seconds summed by stage."""
+
+    def __init__(self) -> None:
+        self.cases = 0
+        self.outcomes: Counter[str] = Counter()
+        self.seconds: Counter[str] = Counter()
+
+    def add(self, outcome: str, seconds: dict[str, float]) -> None:
+        self.cases += 1
+        self.outcomes[outcome] += 1
+        for stage in STAGES:
+            self.seconds[stage] += seconds.get(stage, 0.0)
+
+    def summary(self) -> str:
+        """``N conformant, N non-conformant, N no plan, N timed out``."""
+        return ", ".join(f"{self.outcomes[o]} {o}" for o in OUTCOMES)

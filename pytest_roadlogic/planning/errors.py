@@ -1,0 +1,53 @@
+"""Why there is no plan: the planner's exceptions, importable without the solver (and clingo).
+
+``NoPlanError``: none up to the horizon limit; ``PlanningTimeout``: the time limit ran out first (a
+plan may still exist); ``UnsatisfiableScenario``: the scenario's own constraints cannot hold
+together, with the groups that clash, each at its place in the file.
+"""
+
+from __future__ import annotations
+
+
+class NoPlanError(Exception):
+    """No plan exists up to the horizon limit, or none was found within the time limit."""
+
+
+class PlanningTimeout(NoPlanError):
+    """The time limit ran out before a plan was found (a plan may still exist)."""
+
+
+class UnsatisfiableScenario(NoPlanError):
+    """The scenario cannot be met by any plan. ``conflicts`` holds groups of the scenario's
+    constraints (bounds, durations) that cannot hold together, each with its source location; a
+    group of one cannot hold on its own under the domain rules (speed limits, lanes, no collision)."""
+
+    def __init__(self, message: str, conflicts: list[tuple], rules: str = "") -> None:
+        super().__init__(message)
+        self.conflicts = conflicts
+        self.rules = rules
+
+    def report(self) -> str:
+        """Each conflicting modifier as ``path:line:col: error:`` with its line and a caret."""
+        from ..frontend.errors import Diagnostic, OscError
+
+        diagnostics = []
+        for group in self.conflicts:
+            for member in group:
+                if member.source is None:
+                    continue
+                others = [o for o in group if o is not member]
+                if others:
+                    together = ", ".join(f"{o} (line {o.source.line})" if o.source else str(o) for o in others)
+                    message = f"{member} cannot hold together with {together}"
+                else:
+                    message = f"{member} cannot hold in any plan under the domain rules" + (f" ({self.rules})" if self.rules else "")
+                hint = "the scenario can never be met; widen or remove one of them" if member is group[0] else None
+                diagnostics.append(Diagnostic(member.source, message, hint))
+        return OscError(diagnostics).report() if diagnostics else str(self)
+
+
+def conflict_message(conflicts: list[tuple]) -> str:
+    lines = ["the scenario can never be met: these constraints cannot hold at the same time"]
+    for group in conflicts:
+        lines.append("  " + " and ".join(f"{c} (at {c.source})" for c in group))
+    return "\n".join(lines)

@@ -1,0 +1,201 @@
+"""Running the strategies: which concrete cases of a scenario to run, and how each ended.
+
+- base: the planner's first N different plans (``Runner.base``);
+- refined: N samples of the logical parameters drawn by Hypothesis (``Runner.refined``), either as
+  a property search (the plugin: the loaded Hypothesis profile, the monitor's robustness as
+  ``hypothesis.target``, a failure shrunk) or as a plain sample (the bench: generation only);
+- replay: one recorded ``Case`` again, to the same plan and trace (``replay``).
+
+The plugin, the CLI and the bench all run cases through here, so they agree on the outcome of a
+case (``outcomes``), on the seconds per stage, and on how Hypothesis is set up.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass, field
+from typing import Any
+
+from .case import Case
+from .frontend import CheckedScenario
+from .outcomes import CONFORMANT, NO_PLAN, NON_CONFORMANT, STAGES, TIMED_OUT
+from .pipeline import Outcome, run_instances
+from .planning import NoPlanError, PlanningTimeout, UnsatisfiableScenario
+from .settings import BASE, REFINED, RunSettings
+from .simulation import DriverFactory, SimulationTimeout, Simulator
+
+
+@dataclass
+class CaseResult:
+    """How one concrete case ended: its outcome, the run (None without a simulation), and why."""
+
+    case: Case
+    outcome: str  # one of outcomes.OUTCOMES
+    run: Outcome | None = None
+    message: str = ""  # the monitor's explanation, or why there is no plan
+    seconds: dict[str, float] = field(default_factory=dict)  # per stage, summed over tries
+    error: NoPlanError | None = None  # the planner's, when there is no plan
+
+    @property
+    def failed(self) -> bool:
+        return self.outcome != CONFORMANT
+
+
+class Runner:
+    """Runs the cases of one checked scenario under one ``RunSettings``.
+
+    ``drivers`` drive chosen vehicles with the user's planners; ``simulator`` is the backend
+    (default: the one ``settings.simulator`` names). ``explain`` makes a case without a plan carry
+    the constraints that clash (seconds per case); the refined strategy never explains while it
+    searches, and ``explain(case)`` asks for the one case reported.
+    """
+
+    def __init__(
+        self, scenario: CheckedScenario, settings: RunSettings, drivers: DriverFactory | None = None,
+        simulator: Simulator | None = None, explain: bool = True,
+    ) -> None:
+        self.scenario = scenario
+        self.settings = settings
+        self.drivers = drivers
+        self._simulator = simulator
+        self.explain_no_plan = explain
+
+    @property
+    def simulator(self) -> Simulator:
+        if self._simulator is None:
+            from .simulation.backends import simulator
+
+            self._simulator = simulator(self.settings.simulator)
+        return self._simulator
+
+    def case(self, **identity) -> Case:
+        return Case.of(self.scenario.path or "<string>", self.scenario.name, self.settings, **identity)
+
+    # ---------------------------------------------------------------- strategies
+
+    def run_case(self, case: Case, explain: bool | None = None) -> CaseResult:
+        """One case: a sample (refined) or the planner's instance ``case.instance`` (base)."""
+        explain = self.explain_no_plan if explain is None else explain
+        count = case.instance + 1 if case.strategy == BASE else 1
+        started = time.perf_counter()
+        last = None
+        try:
+            for last in self._instances(count, case.values or None, explain):
+                pass
+        except (NoPlanError, SimulationTimeout) as error:
+            return _failure(case, error, started)
+        if last is None or last.instance != count - 1:
+            error = NoPlanError(f"the planner has fewer than {count} plans for this scenario")
+            return _failure(case, error, started)
+        return _result(case, last)
+
+    def base(self, count: int | None = None) -> Iterator[CaseResult]:
+        """The planner's first ``count`` (default: ``settings.examples``) different plans, each a case.
+
+        A planning failure ends the sequence with one case of that outcome (the planner's search
+        is gone with it); a planner that runs out of plans ends it early.
+        """
+        count = self.settings.examples if count is None else count
+        index = 0
+        started = time.perf_counter()
+        try:
+            for outcome in self._instances(count, None, self.explain_no_plan):
+                yield _result(self.case(strategy=BASE, instance=outcome.instance), outcome)
+                index, started = outcome.instance + 1, time.perf_counter()
+        except (NoPlanError, SimulationTimeout) as error:
+            yield _failure(self.case(strategy=BASE, instance=index), error, started)
+
+    def refined(self, each: Callable[[CaseResult], None], count: int | None = None, search: bool = True, key: bytes | None = None) -> None:
+        """``count`` (default: ``settings.examples``) samples drawn by Hypothesis, each run and handed to ``each``.
+
+        ``search``: a property search, as the plugin runs it: the loaded Hypothesis profile, the
+        monitor's robustness fed to ``hypothesis.target``, and a failure that ``each`` raises shrunk
+        to the simplest values that still fail (``key`` keeps one example database entry per
+        scenario). Otherwise a plain sample, as the bench draws it: the default profile (a CI
+        profile's derandomize would override the seed), generation only, no database; the same seed
+        draws the same samples everywhere.
+        """
+        import hypothesis
+        from hypothesis import HealthCheck, Phase
+
+        from .sampling import strategy
+
+        count = self.settings.examples if count is None else count
+        done = 0
+
+        def example(values: dict[str, Any]) -> None:
+            nonlocal done
+            if not search and done >= count:
+                return
+            done += 1
+            result = self.run_case(self.case(strategy=REFINED, values=values), explain=False)
+            if search and result.run is not None and math.isfinite(result.run.verdict.robustness):
+                hypothesis.target(-result.run.verdict.robustness, label="closeness to failure (-robustness)")
+            each(result)
+
+        if key is not None:
+            # one database entry per scenario, though every scenario runs this same function (the
+            # attribute Hypothesis's own pytest integration sets for parametrized tests)
+            example._hypothesis_internal_add_digest = key  # type: ignore[attr-defined]
+        if search:
+            profile = hypothesis.settings()
+            chosen = hypothesis.settings(
+                # one failure per item: the report is about its shrunk case, whatever kind it is
+                profile, max_examples=count, deadline=None, print_blob=False, report_multiple_bugs=False,
+                suppress_health_check=[*profile.suppress_health_check, HealthCheck.too_slow, HealthCheck.filter_too_much],
+            )
+        else:
+            chosen = hypothesis.settings(
+                hypothesis.settings.get_profile("default"), max_examples=count, database=None, deadline=None, derandomize=False,
+                phases=[Phase.generate], print_blob=False, suppress_health_check=list(HealthCheck),
+            )
+        hypothesis.seed(self.settings.seed)(chosen(hypothesis.given(strategy(self.scenario))(example)))()
+
+    def explain(self, case: Case, fallback: str) -> str:
+        """Why ``case`` has no plan: the constraints that cannot hold together, else ``fallback``."""
+        result = self.run_case(case, explain=True)
+        if isinstance(result.error, UnsatisfiableScenario):
+            return result.error.report()
+        return fallback
+
+    # ---------------------------------------------------------------- the pipeline
+
+    def _instances(self, count: int, values, explain: bool) -> Iterator[Outcome]:
+        return run_instances(
+            self.scenario, count, seed=self.settings.seed, settings=self.settings.planning(explain), max_tries=self.settings.tries,
+            drivers=self.drivers, values=values, simulation_time_limit=self.settings.simulation_time_limit, simulator=self.simulator,
+        )
+
+
+def replay(case: Case, drivers: DriverFactory | None = None, simulator: Simulator | None = None) -> CaseResult:
+    """Run a recorded case again: the same plan and the same trace (with the same drivers)."""
+    from .frontend import load_file
+
+    scenario = load_file(case.path, case.lanes).scenario(case.scenario)
+    return Runner(scenario, case.settings(), drivers, simulator).run_case(case)
+
+
+def _result(case: Case, outcome: Outcome) -> CaseResult:
+    accepted = outcome.verdict.accepted
+    return CaseResult(
+        case, CONFORMANT if accepted else NON_CONFORMANT, outcome, "" if accepted else outcome.verdict.explain(),
+        {stage: outcome.seconds.get(stage, 0.0) for stage in STAGES},
+    )
+
+
+def _failure(case: Case, error: Exception, started: float) -> CaseResult:
+    """A case that ended without a verdict; its time counts as planning (where it was spent, but
+    for a simulation that timed out)."""
+    elapsed = time.perf_counter() - started
+    seconds = {stage: 0.0 for stage in STAGES}
+    if isinstance(error, SimulationTimeout):
+        seconds["simulation"] = elapsed
+        return CaseResult(case, TIMED_OUT, message=f"simulation timed out: {error}", seconds=seconds)
+    seconds["planning"] = elapsed
+    if isinstance(error, PlanningTimeout):
+        return CaseResult(case, TIMED_OUT, message=f"planning timed out: {error}", seconds=seconds, error=error)
+    if isinstance(error, UnsatisfiableScenario):
+        return CaseResult(case, NO_PLAN, message=error.report(), seconds=seconds, error=error)
+    return CaseResult(case, NO_PLAN, message=f"no plan: {error}", seconds=seconds, error=error)

@@ -1,0 +1,149 @@
+"""How a run is set up: one ``RunSettings``, built once from pytest options and ini keys, CLI flags, or Python.
+
+``OPTIONS`` is the one table of what a user can set: each option's name, how its text is read
+(with a message that says what to give instead), its default and its help. The pytest plugin
+turns it into ``--roadlogic-<name>`` options and ``roadlogic_<name>`` ini keys, the CLI into
+``--<name>`` flags, so that a default or a check is written once. Nothing heavy is imported here:
+the plugin loads this module in every pytest session.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, fields
+from typing import Any
+
+REFINED, BASE = "refined", "base"
+STRATEGIES = (REFINED, BASE)
+DEFAULT_HORIZON = 25  # planning steps (of 1 s)
+DEFAULT_PLAN_TIMEOUT = 60.0  # seconds per planning
+DEFAULT_SIM_TIMEOUT = 120.0  # seconds (wall clock) per simulation
+DEFAULT_SIMULATOR = "frenetix"
+
+
+class OptionError(ValueError):
+    """An option's value that cannot be used; the message says what to give instead."""
+
+
+def whole_number(least: int, what: str) -> Callable[[str], int]:
+    def parse(text: str) -> int:
+        try:
+            number = int(str(text).strip())
+        except ValueError:
+            number = least - 1
+        if number < least:
+            raise OptionError(f"{text!r} is not {what}; give a whole number from {least} up")
+        return number
+
+    return parse
+
+
+def seconds(text: str) -> float:
+    try:
+        value = float(str(text).strip())
+    except ValueError:
+        value = math.nan
+    if not (value > 0 and math.isfinite(value)):
+        raise OptionError(f"{text!r} is not a time limit; give a number of seconds above 0, e.g. 60")
+    return value
+
+
+def seed(text: str) -> int:
+    try:
+        return int(str(text).strip())
+    except ValueError:
+        raise OptionError(f"{text!r} is not a seed; give a whole number, e.g. 1") from None
+
+
+def lanes_or_none(text: str | None) -> int | None:
+    """A lane count from 1 up, or nothing (each scenario's own road)."""
+    if text is None or not str(text).strip():
+        return None
+    return lane_count(str(text))
+
+
+lane_count = whole_number(1, "a lane count")
+count = whole_number(0, "an instance count")
+
+
+def strategy(text: str) -> str:
+    if text not in STRATEGIES:
+        raise OptionError(f"{text!r} is not a strategy; give {' or '.join(STRATEGIES)}")
+    return text
+
+
+def name(text: str) -> str:
+    if not str(text).strip():
+        raise OptionError("give a name")
+    return str(text).strip()
+
+
+@dataclass(frozen=True)
+class Option:
+    """One setting a user can give: ``--roadlogic-<name>`` / ini ``roadlogic_<name>`` under pytest,
+    ``--<name>`` on the command line, ``RunSettings.<field>`` in Python."""
+
+    name: str
+    field: str  # the RunSettings field it sets
+    parse: Callable[[str], Any]
+    default: Any
+    help: str
+
+    @property
+    def ini(self) -> str:
+        return f"roadlogic_{self.name.replace('-', '_')}"
+
+
+OPTIONS = (
+    Option("strategy", "strategy", strategy, REFINED, "refined: sample the logical parameters with Hypothesis; base: the planner's first N plans"),
+    Option("examples", "examples", whole_number(1, "a number of examples"), 10, "samples (refined) or plans (base) per scenario"),
+    Option("seed", "seed", seed, 1, "fixes sampling, planning and simulation"),
+    Option("tries", "tries", whole_number(1, "a number of tries"), 5, "plans to try per case when the monitor rejects the simulation"),
+    Option("lanes", "lanes", lanes_or_none, None, "lanes of the road for every scenario (default: each scenario's own)"),
+    Option("horizon", "max_horizon", whole_number(1, "a planning horizon"), DEFAULT_HORIZON, "planning horizon limit in steps of 1 s"),
+    Option("plan-timeout", "planning_time_limit", seconds, DEFAULT_PLAN_TIMEOUT, "seconds one planning may take"),
+    Option("sim-timeout", "simulation_time_limit", seconds, DEFAULT_SIM_TIMEOUT, "seconds (wall clock) one simulation may take"),
+    Option("simulator", "simulator", name, DEFAULT_SIMULATOR, "the simulation backend (frenetix, or one a package registers)"),
+)
+OPTIONS_BY_NAME = {option.name: option for option in OPTIONS}
+
+
+@dataclass(frozen=True)
+class RunSettings:
+    """Everything that decides what a run does, besides the scenario, the sample and the drivers."""
+
+    strategy: str = REFINED
+    examples: int = 10
+    seed: int = 1
+    tries: int = 5
+    lanes: int | None = None
+    max_horizon: int = DEFAULT_HORIZON
+    planning_time_limit: float = DEFAULT_PLAN_TIMEOUT
+    simulation_time_limit: float = DEFAULT_SIM_TIMEOUT
+    simulator: str = DEFAULT_SIMULATOR
+
+    @classmethod
+    def from_texts(cls, texts: Mapping[str, str | None], origin: Callable[[Option], str] = lambda o: o.name) -> "RunSettings":
+        """Settings from option texts by option name (a missing or None text keeps the default);
+        an unusable text raises ``OptionError`` naming the option as ``origin`` spells it."""
+        values = {}
+        for option in OPTIONS:
+            text = texts.get(option.name)
+            if text is None:
+                continue
+            try:
+                values[option.field] = option.parse(text)
+            except OptionError as error:
+                raise OptionError(f"{origin(option)}: {error}") from None
+        return cls(**values)
+
+    def replace(self, **changes) -> "RunSettings":
+        known = {f.name for f in fields(self)}
+        return RunSettings(**{**{k: getattr(self, k) for k in known}, **changes})
+
+    def planning(self, explain_unsatisfiable: bool = True):
+        """The planner's settings for this run (``PlanningSettings``)."""
+        from .planning.instance import PlanningSettings
+
+        return PlanningSettings(max_horizon=self.max_horizon, time_limit=self.planning_time_limit, explain_unsatisfiable=explain_unsatisfiable)

@@ -1,0 +1,48 @@
+"""Simulation backends by name: the built-in ``frenetix`` one, and any a package registers.
+
+A package adds a backend with an entry point in the ``pytest_roadlogic.simulators`` group whose
+object is a ``Simulator`` class (or factory) taking no arguments; ``--roadlogic-simulator NAME``
+(ini ``roadlogic_simulator``) then selects it. Backends are imported only when selected, so that a
+session pays for none it does not use.
+"""
+
+from __future__ import annotations
+
+from importlib import metadata
+
+from .interface import Simulator
+
+ENTRY_POINT_GROUP = "pytest_roadlogic.simulators"
+DEFAULT = "frenetix"
+
+
+class UnknownSimulator(ValueError):
+    """A simulator name that no backend answers to."""
+
+
+def _frenetix() -> Simulator:
+    from .frenetix import FrenetixSimulator
+
+    return FrenetixSimulator()
+
+
+BUILT_IN = {"frenetix": _frenetix}
+
+
+def available() -> list[str]:
+    """Every backend name: the built-in ones, then the registered ones."""
+    registered = [point.name for point in metadata.entry_points(group=ENTRY_POINT_GROUP)]
+    return [*BUILT_IN, *(name for name in registered if name not in BUILT_IN)]
+
+
+def simulator(name: str = DEFAULT) -> Simulator:
+    """The backend called ``name``; ``UnknownSimulator`` (with the known names) when there is none."""
+    if name in BUILT_IN:
+        return BUILT_IN[name]()
+    for point in metadata.entry_points(group=ENTRY_POINT_GROUP):
+        if point.name == name:
+            backend = point.load()()
+            if not isinstance(backend, Simulator):
+                raise UnknownSimulator(f"the entry point {point.value} for simulator {name!r} does not give a simulator (needs name and simulate())")
+            return backend
+    raise UnknownSimulator(f"no simulator named {name!r}; available: {', '.join(available())}")

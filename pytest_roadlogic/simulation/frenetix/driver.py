@@ -1,0 +1,157 @@
+"""The default driver: tracks a vehicle's waypoint schedule with frenetix-generated trajectories.
+
+frenetix samples quintic/quartic Frenet trajectories and checks their feasibility; this module
+ranks them by how closely they follow the waypoint schedule, and rejects those that would collide
+or leave the road (frenetix checks neither). frenetix itself is imported when a driver starts, so
+that importing the backend stays cheap.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..driver import Trajectory, VehicleState
+from ..geometry import CAR_LENGTH, CAR_WIDTH, WHEELBASE
+from ..reference import Reference
+from ..road import Road
+
+
+_COORDINATE_SYSTEMS: dict[tuple[float, float], object] = {}
+
+
+def _coordinate_system(road: Road):
+    """The straight reference line y = 0 (the right road edge), shared by all drivers of a road.
+
+    Building one costs tens of milliseconds, so it is built once per road extent.
+    """
+    import frenetix
+
+    key = (road.x_start, road.x_end)
+    if key not in _COORDINATE_SYSTEMS:
+        xs = np.arange(road.x_start - 100.0, road.x_end + 200.0, 1.0)
+        path = np.stack([xs, np.zeros_like(xs)], axis=1)
+        _COORDINATE_SYSTEMS.clear()
+        _COORDINATE_SYSTEMS[key] = (frenetix.CoordinateSystemWrapper(path), float(xs[0]))
+    return _COORDINATE_SYSTEMS[key]
+
+
+class FrenetixDriver:
+    """Tracks the waypoint schedule with frenetix-generated trajectories."""
+
+    horizon = 3.0  # s
+    durations = (1.0, 2.0, 3.0)  # s, end times of the sampled trajectories
+    speed_offsets = (-3.0, -1.5, -0.5, 0.0, 0.5, 1.5, 3.0)  # m/s around the reference end speed
+    tracked = 2.0  # s of each trajectory compared with the reference
+    low_velocity = 2.0  # m/s; below it frenetix plans lateral motion over distance, not time
+
+    def start(self, vehicle: str, reference: Reference, road: Road, dt: float) -> None:
+        import frenetix
+        from frenetix.trajectory_functions import cost_functions as cf
+        from frenetix.trajectory_functions import feasability_functions as ff
+
+        self.vehicle = vehicle
+        self.reference = reference
+        self.road = road
+        self.dt = dt
+        self.coordinates, self.s_origin = _coordinate_system(road)
+        handler = frenetix.TrajectoryHandler(dt=dt)
+        handler.add_feasability_function(ff.CheckYawRateConstraint(deltaMax=0.4, wheelbase=WHEELBASE, wholeTrajectory=False))
+        handler.add_feasability_function(ff.CheckAccelerationConstraint(switchingVelocity=7.3, maxAcceleration=8.0, wholeTrajectory=False))
+        handler.add_feasability_function(ff.CheckCurvatureConstraint(deltaMax=0.6, wheelbase=WHEELBASE, wholeTrajectory=False))
+        handler.add_cost_function(cf.CalculateLateralJerkCost("lateral_jerk", 0.02))
+        handler.add_cost_function(cf.CalculateLongitudinalJerkCost("longitudinal_jerk", 0.02))
+        self.handler = handler
+        self.fallbacks = 0
+        self.tracked_steps = int(round(self.tracked / dt)) + 1  # samples compared: now and the tracked window
+
+    def plan(self, time: float, state: VehicleState, others: dict[str, Trajectory]) -> Trajectory:
+        import frenetix
+        import frenetix.trajectory_functions as tf
+
+        low = bool(state.speed < self.low_velocity)
+        cos_h, sin_h = np.cos(state.heading), np.sin(state.heading)
+        rear = np.array([state.x - cos_h * WHEELBASE / 2, state.y - sin_h * WHEELBASE / 2])
+        cartesian = frenetix.CartesianPlannerState(rear, float(state.heading), float(state.speed), float(state.acceleration), 0.0)
+        initial = frenetix.compute_initial_state(coordinate_system=self.coordinates, x_0=cartesian, wheelbase=WHEELBASE, low_velocity_mode=low)
+        handler = self.handler
+        handler.add_function(tf.FillCoordinates(lowVelocityMode=low, initialOrientation=float(state.heading), coordinateSystem=self.coordinates, horizon=self.horizon))
+        handler.reset_Trajectories()
+        handler.generate_trajectories(self._samples(time, state, initial), low)
+        handler.evaluate_all_current_functions(True)
+        candidates = [t for t in handler.get_sorted_trajectories() if t.feasible]
+        if not candidates:
+            self.fallbacks += 1
+            return Trajectory.standing(state, 2)
+        # the reference over the tracked window, evaluated once for all candidates
+        times = time + np.arange(1, self.tracked_steps) * self.dt
+        target = (self.reference.s(times) - self.s_origin - WHEELBASE / 2, self.reference.d(times), self.reference.v(times))
+        costs = self._tracking_costs(target, candidates) + np.array([c.cost for c in candidates])
+        ranked = [candidates[i] for i in np.argsort(costs, kind="stable")[:40]]
+        road_now = self._road_violation(Trajectory.standing(state))
+        trajectories = []
+        for candidate in ranked:  # copied one by one: the first safe one is usually the best ranked
+            trajectory = self._copy(candidate)
+            if not self._collides(trajectory, others) and self._road_violation(trajectory) <= road_now + 0.02:
+                return trajectory
+            trajectories.append(trajectory)
+        # Nothing fully safe: prefer not colliding, then the least road violation, then tracking.
+        self.fallbacks += 1
+        return min(trajectories, key=lambda t: (self._collides(t, others), round(self._road_violation(t), 2)))
+
+    def _samples(self, time: float, state: VehicleState, initial) -> np.ndarray:
+        rows = []
+        d_now = float(initial.x0_lat[0])
+        for duration in self.durations:
+            v_ref = float(self.reference.v(time + duration))
+            d_ref = float(self.reference.d(time + duration))
+            ends = {max(0.0, v_ref + o) for o in self.speed_offsets} | {max(0.0, state.speed - 3.0 * duration)}
+            for v_end in sorted(ends):
+                for d_end in {d_ref, d_now}:
+                    rows.append([0.0, duration, *initial.x0_lon, v_end, 0.0, *initial.x0_lat, d_end, 0.0, 0.0])
+        return np.array(rows, dtype=float)
+
+    @staticmethod
+    def _tracking_costs(target: tuple[np.ndarray, np.ndarray, np.ndarray], candidates: list) -> np.ndarray:
+        """Mean squared distance from the reference (s of the rear axle, d, v) over the tracked
+        window, for all candidates at once (they share the planning horizon, hence the length)."""
+        s_ref, d_ref, v_ref = target
+        n = min(len(s_ref) + 1, min(len(c.curvilinear.s) for c in candidates))
+        m = n - 1
+        s = np.array([c.curvilinear.s[1:n] for c in candidates])
+        d = np.array([c.curvilinear.d[1:n] for c in candidates])
+        v = np.array([c.cartesian.v[1:n] for c in candidates])
+        return ((s - s_ref[:m]) ** 2).mean(axis=1) + 2.0 * ((d - d_ref[:m]) ** 2).mean(axis=1) + 0.2 * ((v - v_ref[:m]) ** 2).mean(axis=1)
+
+    @staticmethod
+    def _copy(candidate) -> Trajectory:
+        # frenetix's arrays are views into memory freed with the sample: copy before keeping
+        heading = np.array(candidate.cartesian.theta, copy=True)
+        rear_x = np.array(candidate.cartesian.x, copy=True)
+        rear_y = np.array(candidate.cartesian.y, copy=True)
+        return Trajectory(
+            x=rear_x + np.cos(heading) * WHEELBASE / 2,
+            y=rear_y + np.sin(heading) * WHEELBASE / 2,
+            heading=heading,
+            speed=np.array(candidate.cartesian.v, copy=True),
+            acceleration=np.array(candidate.cartesian.a, copy=True),
+        )
+
+    def _steps(self, trajectory: Trajectory) -> int:
+        return min(len(trajectory.x), self.tracked_steps)
+
+    def _road_violation(self, trajectory: Trajectory) -> float:
+        """How far (m) the rotated vehicle rectangle reaches beyond the road edges, at worst."""
+        steps = self._steps(trajectory)
+        heading = trajectory.heading[:steps]
+        half = CAR_WIDTH / 2 * np.abs(np.cos(heading)) + CAR_LENGTH / 2 * np.abs(np.sin(heading)) + 0.1
+        y = trajectory.y[:steps]
+        return float(max(0.0, (half - y).max(), (y + half - self.road.width).max()))
+
+    def _collides(self, trajectory: Trajectory, others: dict[str, Trajectory]) -> bool:
+        steps = self._steps(trajectory)
+        for other in others.values():
+            for k in range(1, steps):
+                j = min(k, len(other.x) - 1)
+                if abs(trajectory.x[k] - other.x[j]) < CAR_LENGTH + 0.5 and abs(trajectory.y[k] - other.y[j]) < CAR_WIDTH + 0.2:
+                    return True
+        return False

@@ -1,0 +1,77 @@
+"""The simulator seam: a plan and limits in, a ``Simulation`` out.
+
+A backend is anything with a ``name`` and ``simulate(plan, limits, drivers)``: the default is the
+frenetix backend (``simulation/frenetix/``: every vehicle driven in lockstep by a motion planner);
+another (a co-simulation with CARLA or esmini, a vehicle-in-the-loop rig) is selected with the
+``--roadlogic-simulator`` option, the ``pytest_roadlogic_simulator`` hook, or Python's
+``run_scenario(..., simulator=...)``, and registered for the option under the
+``pytest_roadlogic.simulators`` entry-point group (``backends.py``). What the monitor reads is the
+``Trace``; the rest of a ``Simulation`` is for reports and plots.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from typing import Protocol, runtime_checkable
+
+from ..planning.plan import Plan
+from .driver import Driver
+from .reference import Reference, Waypoint
+from .road import Road
+from .trace import Trace
+
+# vehicle name -> the driver that should drive it, or None for the backend's own
+DriverFactory = Callable[[str], "Driver | None"]
+
+
+@dataclass(frozen=True)
+class SimulationLimits:
+    """How a simulation is run: its time step, and the wall-clock seconds it may take (None: no limit)."""
+
+    dt: float = 0.1
+    time_limit: float | None = None
+
+
+@dataclass(frozen=True)
+class GoalRecord:
+    """One waypoint of a vehicle and when it was reached (None: its time window passed first)."""
+
+    waypoint: Waypoint
+    reached_at: float | None
+
+
+@dataclass
+class Simulation:
+    """What a run produced: the trace, the road, and each vehicle's reference (for plots)."""
+
+    trace: Trace
+    road: Road
+    references: dict[str, Reference]
+    dt: float
+    fallbacks: dict[str, int] = field(default_factory=dict)
+    stationary: tuple[str, ...] = ()  # standing obstacles, not driven
+    goals: dict[str, list[GoalRecord]] = field(default_factory=dict)  # per driven vehicle, in order
+
+    def missed_goals(self) -> list[tuple[str, GoalRecord]]:
+        return [(v, g) for v, records in self.goals.items() for g in records if g.reached_at is None]
+
+
+class SimulationTimeout(RuntimeError):
+    """The simulation took longer than its time limit (wall clock)."""
+
+
+@runtime_checkable
+class Simulator(Protocol):
+    """A simulation backend."""
+
+    name: str
+
+    def simulate(self, plan: Plan, limits: SimulationLimits, drivers: DriverFactory | None = None) -> Simulation:
+        """Drive every vehicle of ``plan`` from standstill through its waypoints and record the trace.
+
+        ``drivers`` may drive some vehicles with the user's own planners (the vehicle under test);
+        a backend that cannot take them raises ``TypeError`` when one is given. Raises
+        ``SimulationTimeout`` past ``limits.time_limit``.
+        """
+        ...
