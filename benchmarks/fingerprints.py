@@ -1,8 +1,9 @@
 """Fingerprints of the plans and traces the pipeline produces: a refactoring must not change them.
 
 For every scenario file given (default: scenarios/*.osc) and every seed, prints one line per run:
-the scenario, the seed, the strategy, the SHA-256 (first 16 hex digits) of the plan's JSON and of
-the trace's CSV, and the verdict. Two strategies are run: ``base`` (the planner's first plan) and
+the scenario, the seed, the strategy, the SHA-256 (first 16 hex digits) of the plan's JSON
+(without the solver's statistics) and of the trace's CSV, the tries, the verdict and the size of
+the ground program (clingo's rule count). Two strategies are run: ``base`` (the planner's first plan) and
 ``refined`` with one fixed sample (the midpoint of every logical parameter on the sampling grid,
 the first choice of every enum), which exercises the random start and the guidance.
 
@@ -36,9 +37,10 @@ def digest(text: str) -> str:
 
 
 def plan_text(plan) -> str:
-    """The plan's JSON without its timing statistics (seconds differ from run to run)."""
+    """The plan's JSON without the solver's statistics (seconds differ from run to run, and the
+    ground program's size is printed on its own)."""
     data = plan.to_dict()
-    data["stats"] = {k: v for k, v in data["stats"].items() if not k.endswith("_s")}
+    data.pop("stats")
     return json.dumps(data, indent=2)
 
 
@@ -67,7 +69,7 @@ def main() -> int:
             for strategy, values in (("base", None), ("refined", midpoint_sample(checked))):
                 outcome = run_scenario(checked, seed=seed, values=values)
                 verdict = "accepted" if outcome.verdict.accepted else "rejected"
-                print(f"{path.stem:<22} seed {seed} {strategy:<7} plan {digest(plan_text(outcome.plan))} trace {digest(outcome.simulation.trace.to_csv())} tries {outcome.tries} {verdict}", flush=True)
+                print(f"{path.stem:<22} seed {seed} {strategy:<7} plan {digest(plan_text(outcome.plan))} trace {digest(outcome.simulation.trace.to_csv())} tries {outcome.tries} {verdict} rules {int(outcome.plan.stats.get('rules', 0))}", flush=True)
     print(f"{time.perf_counter() - started:.1f} s", file=sys.stderr)
     return 0
 

@@ -80,9 +80,14 @@ def _settings(config: pytest.Config) -> RunSettings:
 
         texts["examples"] = str(settings().max_examples)
     try:
-        return RunSettings.from_texts(texts, origin=lambda o: f"--roadlogic-{o.name} (ini {o.ini})")
+        settings = RunSettings.from_texts(texts, origin=lambda o: f"--roadlogic-{o.name} (ini {o.ini})")
     except OptionError as error:
         raise pytest.UsageError(f"roadlogic: {error}") from None
+    from .simulation.backends import available  # names only: no backend is imported
+
+    if settings.simulator not in available():
+        raise pytest.UsageError(f"roadlogic: --roadlogic-simulator (ini roadlogic_simulator): no simulator named {settings.simulator!r}; available: {', '.join(available())}")
+    return settings
 
 
 SETTINGS = pytest.StashKey[RunSettings]()

@@ -11,6 +11,8 @@ import subprocess
 import sys
 import xml.etree.ElementTree as ET
 
+import pytest
+
 from tests.conftest import ROOT
 
 pytest_plugins = ["pytester"]
@@ -174,3 +176,42 @@ def test_a_scenario_with_many_vehicles_is_marked_slow(pytester):
     copy(pytester, ROOT / "benchmarks" / "scenarios" / "platoon_overtake_merge.osc", SCENARIOS / "follow.osc")
     result = pytester.runpytest_subprocess("--collect-only", "-q", "-m", "slow", *QUIET)
     result.stdout.fnmatch_lines(["platoon_overtake_merge.osc::*", "*1/2 tests collected (1 deselected)*"])
+
+
+SIMULATOR_CONFTEST = """
+from pathlib import Path
+from pytest_roadlogic.simulation.frenetix import FrenetixSimulator
+
+class Counting(FrenetixSimulator):
+    name = "counting"
+
+    def simulate(self, plan, limits, drivers=None):
+        with Path("simulations.txt").open("a") as record:
+            record.write(f"{limits.dt} {limits.time_limit}\\n")
+        return super().simulate(plan, limits, drivers)
+
+def pytest_roadlogic_simulator(config, scenario):
+    return Counting()
+"""
+
+
+def test_a_simulator_from_the_hook_simulates_every_case(pytester):
+    copy(pytester, SCENARIOS / "follow.osc")
+    pytester.makeconftest(SIMULATOR_CONFTEST)
+    result = pytester.runpytest_subprocess("--roadlogic-strategy", "base", "--roadlogic-examples", "2", "--roadlogic-sim-timeout", "90", *QUIET)
+    result.assert_outcomes(passed=1)
+    assert (pytester.path / "simulations.txt").read_text().splitlines() == ["0.1 90.0", "0.1 90.0"], "one simulation per case, with the session's limits"
+
+
+def test_a_bad_option_value_stops_the_session_with_a_message_naming_the_option(pytester):
+    copy(pytester, SCENARIOS / "follow.osc")
+    for option, value, message in (
+        ("--roadlogic-examples", "abc", "--roadlogic-examples (ini roadlogic_examples): 'abc' is not a number of examples; give a whole number from 1 up"),
+        ("--roadlogic-seed", "x", "--roadlogic-seed (ini roadlogic_seed): 'x' is not a seed"),
+        ("--roadlogic-plan-timeout", "-1", "--roadlogic-plan-timeout (ini roadlogic_plan_timeout): '-1' is not a time limit"),
+        ("--roadlogic-simulator", "nope", "no simulator named 'nope'; available: frenetix"),
+    ):
+        result = pytester.runpytest_subprocess(option, value, *QUIET)
+        assert result.ret == pytest.ExitCode.USAGE_ERROR, (option, result.stdout.str())
+        assert message in result.stderr.str(), (option, result.stderr.str())
+        assert "Traceback" not in result.stderr.str() + result.stdout.str()

@@ -1,8 +1,11 @@
 """The ASP instance of one scenario: the automaton and the settings as facts, guards as rules.
 
-The background theory in ``asp/*.lp`` is fixed; everything scenario-specific is generated here:
-the vehicles, the grid (speeds and accelerations in cells per step), the automaton's locations and
-transitions, and one ``g(N,t)`` rule set per guard node. Position and speed bounds are planned
+The background theory in ``asp/*.lp`` is fixed; what is scenario-specific is generated here, as
+facts and constants: the vehicles, the grid (speeds and accelerations in cells per step, start
+zones and speeds: the rules that read them are in ``asp/initial.lp``), the run-up, the automaton's
+locations and transitions, and a random start's preferences (``asp/preferences.lp``). The one
+exception is the guards, one ``g(N,t)`` rule set per guard node, whose shapes ``asp/automaton.lp``
+lists (and says why they are rules). Position and speed bounds are planned
 with a margin inside their range so that a simulation that tracks the plan with some error still
 meets them (the monitor checks the ranges as written).
 """
@@ -197,16 +200,12 @@ def build_instance(automaton: SymbolicAutomaton, settings: PlanningSettings, rel
         f"lane_change_gap({settings.lane_change_gap}).",
         f"min_gap({gap}).",
         "",
-        "% initial state: the first vehicle at cell 0 (positions are relative to it), the others in a",
-        "% zone within the spread",
+        "% initial state (asp/initial.lp): the first vehicle at cell 0, the others in start zones",
+        f"#const first_vehicle = {_atom(vehicles[0])}.",
+        f"#const zones = {zones}.",
+        f"#const start_low = {starts[0]}.",
+        f"#const start_high = {starts[-1]}.",
         f"zone_width({width}).",
-        f"&diff{{ p({_atom(vehicles[0])},0) - 0 }} = 0.",
-        f"{{ zone(V,Z) : Z = {-zones}..{zones} }} = 1 :- vehicle(V), V != {_atom(vehicles[0])}.",
-        "&diff{ p(V,0) - 0 } <= Z*W+W-1 :- zone(V,Z), zone_width(W).",
-        "&diff{ 0 - p(V,0) } <= -Z*W :- zone(V,Z), zone_width(W).",
-        "{ lane(V,L,0) : lane_id(L) } = 1 :- vehicle(V).",
-        f"{{ vel(V,X,0) : X = {starts[0]}..{starts[-1]} }} = 1 :- vehicle(V), not stationary(V).",
-        "vel(V,0,0) :- stationary(V).",
         "% the run-up from standstill: runup_steps(X,S), the steps to reach speed X; runup(X,T,Lo,Hi),",
         "% the cells covered when the run-up lasts T steps (bounds of the exact distance)",
         *(f"runup_steps({x},{settings.runup_steps(x)})." for x in starts),
@@ -409,25 +408,14 @@ def start_zones(automaton: SymbolicAutomaton, settings: PlanningSettings) -> tup
 
 
 def start_preferences(automaton: SymbolicAutomaton, settings: PlanningSettings, draw: random.Random) -> str:
-    """A program of domain heuristics: the solver tries a random start speed, lane and zone for each
-    vehicle before anything else, and at every step it tries the vehicle's one random acceleration
-    and its current lane first, so that it changes lane only where the scenario needs it.
-
-    They are preferences, not constraints: a choice that cannot lead to a plan is undone by the
-    search like any other decision, so a random start never loses a plan. Without them the solver
-    decides in the same order for every problem, and samples of nearby values get nearly the same
-    plan (the refined strategy's instances would differ only where the sampled values force it).
-    Keeping the lane matters as much: left free, the solver's random signs weave a vehicle the
-    scenario says nothing about across every lane, and all such plans cover the same cells.
-
-    The per-step preferences live in the ``dynamics(t)`` part: a step's atoms exist only once
-    that step is grounded, and a heuristic grounded before them has no effect (measured: the
-    preferred acceleration was taken no more often than chance when it was stated in ``base``).
-    """
+    """A random start's draws (asp/preferences.lp says what the solver does with them): per vehicle
+    a preferred start lane, zone and speed, as ground heuristics of step 0's atoms, and one
+    acceleration, as a fact the per-step heuristics read; drawn from ``draw`` in a fixed order so
+    that one seed gives one set of preferences."""
     starts = list(settings.initial_speeds())
     _, zones = start_zones(automaton, settings)
     accelerations = settings.acceleration_cells()
-    rules = ["#program base."]
+    rules = []
     for index, vehicle in enumerate(automaton.actors):
         name = _atom(vehicle)
         rules.append(f"#heuristic lane({name},{draw.randrange(automaton.lanes)},0). [1,true]")
@@ -437,15 +425,4 @@ def start_preferences(automaton: SymbolicAutomaton, settings: PlanningSettings, 
             continue
         rules.append(f"#heuristic vel({name},{draw.choice(starts)},0). [1,true]")
         rules.append(f"preferred_acc({name},{draw.choice(accelerations)}).")
-    # per step, the preferred value is only a sign (the value tried first when the search decides
-    # that atom), not a decision order: a forced order made some long plans take half a minute
-    rules += [
-        "#program dynamics(t).",
-        "#heuristic acc(V,A,t) : preferred_acc(V,A). [1,sign]",
-        "#heuristic acc(V,B,t) : preferred_acc(V,A), accel(B), B != A. [1,false]",
-        "#heuristic shift(V,0,t) : vehicle(V), not stationary(V). [1,sign]",
-        "#heuristic shift(V,D,t) : vehicle(V), not stationary(V), lateral(D), D != 0. [1,false]",
-        "#heuristic lane(V,L,t) : lane(V,L,t-1). [1,sign]",
-        "#heuristic lane(V,M,t) : lane(V,L,t-1), lane_id(M), M != L. [1,false]",
-    ]
     return "\n".join(rules) + "\n"

@@ -36,6 +36,8 @@ ASP_DIR = Path(__file__).resolve().parent.parent / "asp"
 if not ASP_DIR.is_dir():  # running from a source checkout: asp/ sits at the top level
     ASP_DIR = Path(__file__).resolve().parents[2] / "asp"
 BACKGROUND = ("dynamics.lp", "domain.lp", "automaton.lp")
+INITIAL = "initial.lp"  # the rules of the initial state, after the instance's facts (see _control)
+PREFERENCES = "preferences.lp"  # loaded for a random start only
 
 
 def check_satisfiable(automaton: SymbolicAutomaton) -> None:
@@ -103,9 +105,10 @@ class Planner:
         )
         self._theories[control] = theory = ClingoDLTheory()
         theory.register(control)
-        self._add(control, background_theory() + "\n#program base.\n" + base_program + "\n#program state(t).\n" + state_program)
+        initial = (ASP_DIR / INITIAL).read_text(encoding="utf-8")
+        self._add(control, background_theory() + "\n#program base.\n" + base_program + "\n" + initial + "\n#program state(t).\n" + state_program)
         if self.preferences:
-            self._add(control, self.preferences)
+            self._add(control, "#program base.\n" + self.preferences + (ASP_DIR / PREFERENCES).read_text(encoding="utf-8"))
         return control
 
     def _add(self, control: clingo.Control, program: str) -> None:
