@@ -32,3 +32,14 @@ def test_every_module_imports_first_without_a_cycle():
     done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
     assert done.returncode == 0, done.stderr
     assert done.stdout == "", f"modules that fail to import when imported first:\n{done.stdout}"
+
+
+def test_a_session_without_osc_files_loads_nothing_heavy_for_the_plugin(tmp_path):
+    # configuring the plugin (its settings, the simulator names) must not load a stage either
+    code = (
+        "import sys, pytest\n"
+        f"pytest.main(['--collect-only', '-q', '-p', 'no:cacheprovider', '--rootdir', {str(tmp_path)!r}, {str(tmp_path)!r}])\n"
+        f"print(sorted({{m.split('.')[0] for m in sys.modules}} & set({HEAVY!r}) - {{'hypothesis'}}))\n"
+    )
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert done.stdout.strip().splitlines()[-1] == "[]", done.stdout + done.stderr

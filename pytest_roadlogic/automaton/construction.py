@@ -147,7 +147,7 @@ def _phase_name(behavior: model.Behavior) -> str:
 
 
 def _atomic(invocation: model.Invocation, checked: CheckedScenario, counter, env: dict) -> _Fragment:
-    phase = phase_guards(invocation, checked.scenario, checked.registry, checked.lanes, env)
+    phase = phase_guards(invocation, checked.registry, checked.lanes, env)
     labelled = invocation.label is not None
     name = invocation.label if labelled else _phase_name(invocation)
     drivers = frozenset([invocation.actor]) if phase.drives else frozenset()

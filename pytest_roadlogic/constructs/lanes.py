@@ -76,9 +76,7 @@ class Lane(AnchoredModifier):
         value = use.interval("lane")
         if value.dimension is not None or not float(value.low).is_integer() or not float(value.high).is_integer():
             raise error_at(use.argument("lane").location, "a lane number must be a whole number", hint=LANE_CONVENTION)
-        low, high = int(value.low), int(value.high)
-        if low < 1 or high > use.lanes:
-            raise error_at(use.argument("lane").location, f"lane {value} is outside the road's {use.lanes} lanes", hint=LANE_CONVENTION)
+        low, high = int(value.low), int(value.high)  # within the road: the checker's check() saw to it
         from_left = use.name("from") == "left"
         first, last = (low - 1, high - 1) if from_left else (use.lanes - high, use.lanes - low)
         return Bound(Term(LANE, use.actor), first, last, use.location)

@@ -2,24 +2,34 @@
 
 The seam is ``Simulator`` (``interface.py``): a plan and ``SimulationLimits`` in, a simulation out.
 The default backend is frenetix (``frenetix/``); ``backends.simulator(name)`` selects one by name.
-Importing this package loads neither frenetix nor CommonRoad: a backend loads them when it runs.
+The names below load on first use, so that the plugin can ask ``backends`` which simulators exist
+without importing numpy, the planner's data or a backend.
 """
 
-from .driver import Driver, Trajectory, VehicleState
-from .interface import DriverFactory, GoalRecord, Simulation, SimulationLimits, SimulationTimeout, Simulator
-from .reference import Reference, Waypoint, references
-from .road import Road
-from .trace import ActorSnapshot, Incident, Trace
+from importlib import import_module
+
+_HOMES = {
+    "Driver": "driver", "Trajectory": "driver", "VehicleState": "driver",
+    "DriverFactory": "interface", "GoalRecord": "interface", "Simulation": "interface", "SimulationLimits": "interface",
+    "SimulationTimeout": "interface", "Simulator": "interface",
+    "Reference": "reference", "Waypoint": "reference", "references": "reference",
+    "Road": "road",
+    "ActorSnapshot": "trace", "Incident": "trace", "Trace": "trace",
+}
 
 
-def simulate(plan, dt: float = 0.1, drivers: DriverFactory | None = None, time_limit: float | None = None, simulator: Simulator | None = None) -> Simulation:
+def __getattr__(name: str):
+    if name in _HOMES:
+        return getattr(import_module(f".{_HOMES[name]}", __name__), name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def simulate(plan, dt: float = 0.1, drivers=None, time_limit: float | None = None, simulator=None):
     """Simulate ``plan`` with ``simulator`` (default: the frenetix backend)."""
     from .backends import simulator as named
+    from .interface import SimulationLimits
 
     return (simulator or named()).simulate(plan, SimulationLimits(dt, time_limit), drivers)
 
 
-__all__ = [
-    "ActorSnapshot", "Driver", "DriverFactory", "GoalRecord", "Incident", "Reference", "Road", "Simulation", "SimulationLimits",
-    "SimulationTimeout", "Simulator", "Trace", "Trajectory", "VehicleState", "Waypoint", "references", "simulate",
-]
+__all__ = [*_HOMES, "simulate"]

@@ -9,8 +9,10 @@ session pays for none it does not use.
 from __future__ import annotations
 
 from importlib import metadata
+from typing import TYPE_CHECKING
 
-from .interface import Simulator
+if TYPE_CHECKING:
+    from .interface import Simulator
 
 ENTRY_POINT_GROUP = "pytest_roadlogic.simulators"
 DEFAULT = "frenetix"
@@ -20,7 +22,7 @@ class UnknownSimulator(ValueError):
     """A simulator name that no backend answers to."""
 
 
-def _frenetix() -> Simulator:
+def _frenetix() -> "Simulator":
     from .frenetix import FrenetixSimulator
 
     return FrenetixSimulator()
@@ -35,8 +37,10 @@ def available() -> list[str]:
     return [*BUILT_IN, *(name for name in registered if name not in BUILT_IN)]
 
 
-def simulator(name: str = DEFAULT) -> Simulator:
+def simulator(name: str = DEFAULT) -> "Simulator":
     """The backend called ``name``; ``UnknownSimulator`` (with the known names) when there is none."""
+    from .interface import Simulator
+
     if name in BUILT_IN:
         return BUILT_IN[name]()
     for point in metadata.entry_points(group=ENTRY_POINT_GROUP):
