@@ -1,0 +1,92 @@
+"""The realistic scenarios as the planner and the pipeline meet them today: issue 17's benchmark.
+
+For every .osc file under benchmarks/realistic/ (the team's twelve, kept unchanged) prints one row:
+whether the front end reads it (or its first error), whether its automaton builds, and for the base
+strategy the planning time to the first plan over --seeds (median and max, planning alone), how
+that planning ended, and how many first plans the simulation accepted.
+
+    python benchmarks/realistic.py [--seeds 5] [--plan-timeout 30] [--simulate] [FILES...]
+
+Planning is what issue 17 replaces; --simulate adds a simulation and monitoring of each first plan.
+"""
+
+from __future__ import annotations
+
+import argparse
+import statistics
+import sys
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))
+
+from pytest_roadlogic.automaton import build_automaton  # noqa: E402
+from pytest_roadlogic.frontend import OscError, check_file  # noqa: E402
+from pytest_roadlogic.planning import NoPlanError, Planner, PlanningSettings, PlanningTimeout, UnsatisfiableScenario  # noqa: E402
+
+REALISTIC = ROOT / "benchmarks" / "realistic"
+
+
+def first_error(report: str) -> str:
+    for line in report.splitlines():
+        if ": error: " in line:
+            return line.split(": error: ", 1)[1][:70]
+    return report.splitlines()[0][:70] if report else "?"
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("files", nargs="*", type=Path, default=sorted(REALISTIC.rglob("*.osc")))
+    parser.add_argument("--seeds", type=int, default=5)
+    parser.add_argument("--plan-timeout", type=float, default=30.0)
+    parser.add_argument("--simulate", action="store_true")
+    args = parser.parse_args()
+    print(f"{'scenario':<22} {'front end':<10} {'first plan (s): median max':<28} {'ends':<40} accepted")
+    for path in args.files:
+        if path.name == "lib.osc":
+            continue
+        name = path.stem
+        try:
+            checked = check_file(path)
+        except OscError as error:
+            print(f"{name:<22} syntax: {first_error(error.report())}")
+            continue
+        if checked.errors:
+            print(f"{name:<22} refused: {first_error(checked.report())}")
+            continue
+        try:
+            scenario = checked.scenario_to_run()
+            automaton = build_automaton(scenario)
+        except OscError as error:
+            print(f"{name:<22} automaton: {first_error(error.report())}")
+            continue
+        seconds, endings, accepted = [], [], 0
+        for seed in range(1, args.seeds + 1):
+            settings = PlanningSettings(time_limit=args.plan_timeout)
+            started = time.perf_counter()
+            try:
+                plan = Planner(automaton, settings, seed).first()
+                ending = f"plan, {plan.horizon} steps"
+            except UnsatisfiableScenario as error:
+                plan, ending = None, "no plan: " + str(error).splitlines()[-1].strip()[:60]
+            except PlanningTimeout:
+                plan, ending = None, f"timed out ({args.plan_timeout:g} s)"
+            except NoPlanError as error:
+                plan, ending = None, f"no plan: {error}"[:60]
+            seconds.append(time.perf_counter() - started)
+            endings.append(ending)
+            if plan is not None and args.simulate:
+                from pytest_roadlogic.monitor import monitor
+                from pytest_roadlogic.simulation import simulate
+
+                accepted += monitor(automaton, simulate(plan).trace).accepted
+        common = max(set(endings), key=endings.count)
+        timing = f"{statistics.median(seconds):8.2f} {max(seconds):8.2f}"
+        shown = f"{accepted}/{args.seeds}" if args.simulate else "-"
+        print(f"{name:<22} {'reads':<10} {timing:<28} {common:<40} {shown}", flush=True)
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
