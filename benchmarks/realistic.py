@@ -5,9 +5,12 @@ whether the front end reads it (or its first error), whether its automaton build
 strategy the planning time to the first plan over --seeds (median and max, planning alone), how
 that planning ended, and how many first plans the simulation accepted.
 
-    python benchmarks/realistic.py [--seeds 5] [--plan-timeout 30] [--simulate] [FILES...]
+    python benchmarks/realistic.py [--seeds 5] [--plan-timeout 30] [--simulate] [--encoding grid|continuous|both] [--paper] [FILES...]
 
-Planning is what issue 17 replaces; --simulate adds a simulation and monitoring of each first plan.
+Planning is what issue 17 replaces: --encoding both prints the grid encoding (asp/dynamics.lp) and
+the continuous one (asp/continuous.lp) side by side; --paper adds the paper's seven scenarios.
+--simulate adds a simulation and monitoring of each first plan (grid plans only: the simulation
+does not start continuous plans in their first state yet).
 """
 
 from __future__ import annotations
@@ -24,6 +27,7 @@ sys.path.insert(0, str(ROOT))
 from pytest_roadlogic.automaton import build_automaton  # noqa: E402
 from pytest_roadlogic.frontend import OscError, check_file  # noqa: E402
 from pytest_roadlogic.planning import NoPlanError, Planner, PlanningSettings, PlanningTimeout, UnsatisfiableScenario  # noqa: E402
+from pytest_roadlogic.planning.continuous import ContinuousPlanner, ContinuousSettings  # noqa: E402
 
 REALISTIC = ROOT / "benchmarks" / "realistic"
 
@@ -41,9 +45,13 @@ def main() -> int:
     parser.add_argument("--seeds", type=int, default=5)
     parser.add_argument("--plan-timeout", type=float, default=30.0)
     parser.add_argument("--simulate", action="store_true")
+    parser.add_argument("--encoding", choices=("grid", "continuous", "both"), default="grid")
+    parser.add_argument("--paper", action="store_true", help="also the paper's seven scenarios (scenarios/*.osc)")
     args = parser.parse_args()
-    print(f"{'scenario':<22} {'front end':<10} {'first plan (s): median max':<28} {'ends':<40} accepted")
-    for path in args.files:
+    files = [*(sorted((ROOT / "scenarios").glob("*.osc")) if args.paper else []), *args.files]
+    encodings = ("grid", "continuous") if args.encoding == "both" else (args.encoding,)
+    print(f"{'scenario':<22} {'encoding':<11} {'first plan (s): median max':<28} {'ends':<40} accepted")
+    for path in files:
         if path.name == "lib.osc":
             continue
         name = path.stem
@@ -61,31 +69,39 @@ def main() -> int:
         except OscError as error:
             print(f"{name:<22} automaton: {first_error(error.report())}")
             continue
-        seconds, endings, accepted = [], [], 0
-        for seed in range(1, args.seeds + 1):
-            settings = PlanningSettings(time_limit=args.plan_timeout)
-            started = time.perf_counter()
-            try:
-                plan = Planner(automaton, settings, seed).first()
-                ending = f"plan, {plan.horizon} steps"
-            except UnsatisfiableScenario as error:
-                plan, ending = None, "no plan: " + str(error).splitlines()[-1].strip()[:60]
-            except PlanningTimeout:
-                plan, ending = None, f"timed out ({args.plan_timeout:g} s)"
-            except NoPlanError as error:
-                plan, ending = None, f"no plan: {error}"[:60]
-            seconds.append(time.perf_counter() - started)
-            endings.append(ending)
-            if plan is not None and args.simulate:
-                from pytest_roadlogic.monitor import monitor
-                from pytest_roadlogic.simulation import simulate
-
-                accepted += monitor(automaton, simulate(plan).trace).accepted
-        common = max(set(endings), key=endings.count)
-        timing = f"{statistics.median(seconds):8.2f} {max(seconds):8.2f}"
-        shown = f"{accepted}/{args.seeds}" if args.simulate else "-"
-        print(f"{name:<22} {'reads':<10} {timing:<28} {common:<40} {shown}", flush=True)
+        for encoding in encodings:
+            row(name, encoding, automaton, args)
     return 0
+
+
+def row(name: str, encoding: str, automaton, args) -> None:
+    seconds, endings, accepted = [], [], 0
+    for seed in range(1, args.seeds + 1):
+        if encoding == "grid":
+            planner = Planner(automaton, PlanningSettings(time_limit=args.plan_timeout), seed)
+        else:
+            planner = ContinuousPlanner(automaton, ContinuousSettings(time_limit=args.plan_timeout), seed)
+        started = time.perf_counter()
+        try:
+            plan = planner.first()
+            ending = f"plan, {plan.horizon} steps"
+        except UnsatisfiableScenario as error:
+            plan, ending = None, "no plan: " + str(error).splitlines()[-1].strip()[:60]
+        except PlanningTimeout:
+            plan, ending = None, f"timed out ({args.plan_timeout:g} s)"
+        except NoPlanError as error:
+            plan, ending = None, f"no plan: {error}"[:60]
+        seconds.append(time.perf_counter() - started)
+        endings.append(ending)
+        if plan is not None and args.simulate and encoding == "grid":
+            from pytest_roadlogic.monitor import monitor
+            from pytest_roadlogic.simulation import simulate
+
+            accepted += monitor(automaton, simulate(plan).trace).accepted
+    common = max(set(endings), key=endings.count)
+    timing = f"{statistics.median(seconds):8.2f} {max(seconds):8.2f}"
+    shown = f"{accepted}/{args.seeds}" if args.simulate and encoding == "grid" else "-"
+    print(f"{name:<22} {encoding:<11} {timing:<28} {common:<40} {shown}", flush=True)
 
 
 if __name__ == "__main__":

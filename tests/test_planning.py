@@ -41,8 +41,13 @@ def check_plan(plan, automaton, settings=SETTINGS):
                 lanes_b = {sb.lane} | ({plan.at(b, k - 1).lane} if k else set())
                 if lanes_a & lanes_b:
                     assert abs(sa.position - sb.position) >= settings.min_gap, f"{a} and {b} too close at {k}"
-    # the guards in order, at strictly increasing steps, ending in the final location; every
-    # invariant at every step spent in its location; every timed phase within its bounds
+    check_run(plan, automaton)
+
+
+def check_run(plan, automaton):
+    """The guards in order, at strictly increasing steps, ending in the final location; every
+    invariant at every step spent in its location; every timed phase within its bounds."""
+    vehicles = plan.vehicles
     location = automaton.initial
     last_step = -1
     started = {}

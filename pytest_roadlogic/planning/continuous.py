@@ -1,0 +1,285 @@
+"""The continuous-dynamics encoding (``asp/continuous.lp``, clingo-lpx): a second planner, measured
+against the grid one on the realistic scenarios before it replaces it (issue 17).
+
+Positions, speeds and accelerations are rationals in a linear program that clingo-lpx keeps
+consistent during the search; ASP decides the automaton's run (``asp/automaton.lp``, shared with
+the grid encoding), lanes, and the order of vehicles that share a lane. The instance is facts and
+constants, and one rule set per guard node as in ``instance.py``, here with ``&sum`` constraints for
+positions and speeds.
+
+Status: plans the first plan of a scenario, incrementally over the horizon, and reads it back as a
+``Plan``. Not yet here: further plans (exclusion, steering), random starts, the diagnosis of a
+scenario without a plan, and the simulation starting in the plan's first state.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from collections.abc import Iterator
+from dataclasses import dataclass
+from fractions import Fraction
+
+from ..automaton.guards import LANE, POSITION, SPEED, And, Bound, Guard, Not, Or
+from ..automaton.model import SymbolicAutomaton
+from .errors import NoPlanError, PlanningTimeout
+from .instance import _atom, _bound_rule, _inset, _outside_rules, guard_nodes, invariant_nodes
+from .plan import Plan, PlanState
+
+ENCODING = "continuous.lp"
+SHARED = ("automaton.lp",)
+
+
+@dataclass(frozen=True)
+class ContinuousSettings:
+    """The vehicle limits and planning bounds of the continuous encoding (SI units)."""
+
+    dt: float = 1.0  # seconds per step
+    min_acceleration: float = -8.0  # m/s^2: hard braking of a real car
+    max_acceleration: float = 4.0  # m/s^2
+    min_speed: float = 0.5  # m/s for a driving vehicle the scenario does not ask to stop
+    max_speed: float = 70.0  # m/s
+    initial_speed: tuple[float, float] = (0.5, 70.0)
+    min_gap: float = 8.0  # m between the centres of two vehicles sharing a lane
+    lane_change_gap: int = 3  # steps from one lane change of a vehicle to its next
+    spread: float = 300.0  # m from the first vehicle within which the others start
+    position_margin: float = 1.5  # m planned inside each side of a position range, when it fits
+    speed_margin: float = 0.5  # m/s likewise for speeds
+    max_horizon: int = 120  # steps
+    time_limit: float = 60.0  # seconds for one solve, all horizons together
+    lpx_options: tuple[tuple[str, str], ...] = ()  # clingo-lpx's own (propagate-bounds, select, ...)
+
+
+def _number(value: float) -> str:
+    """A rational constant for clingo-lpx: quoted, exact for the decimals we write."""
+    fraction = Fraction(value).limit_denominator(10**6)
+    text = f"{fraction.numerator}" if fraction.denominator == 1 else f"{float(fraction):.6f}".rstrip("0")
+    return f'"{text}"'
+
+
+def build_continuous_instance(automaton: SymbolicAutomaton, settings: ContinuousSettings) -> tuple[str, str]:
+    """(base program, state(t) program) of the scenario for the continuous encoding."""
+    s = settings
+    vehicles = automaton.actors
+    base = [
+        "% scenario instance, continuous encoding (generated)",
+        f"#const dt = {_number(s.dt)}.",
+        f"#const half_dt2 = {_number(s.dt * s.dt / 2)}.",
+        f"#const amin = {_number(s.min_acceleration)}.",
+        f"#const amax = {_number(s.max_acceleration)}.",
+        f"#const vmin = {_number(s.min_speed)}.",
+        f"#const vmax = {_number(s.max_speed)}.",
+        f"#const v0min = {_number(max(s.initial_speed[0], s.min_speed))}.",
+        f"#const v0max = {_number(min(s.initial_speed[1], s.max_speed))}.",
+        f"#const gap = {_number(s.min_gap)}.",
+        f"#const spread = {_number(s.spread)}.",
+        f"#const first_vehicle = {_atom(vehicles[0])}.",
+        *(f"vehicle({_atom(v)})." for v in vehicles),
+        *(f"stationary({_atom(v)})." for v in vehicles if v in automaton.stationary),
+        f"lane_id(0..{automaton.lanes - 1}).",
+        "lateral(-1;0;1).",
+        f"lane_change_gap({s.lane_change_gap}).",
+        "",
+        "% the automaton",
+        *(f"location({loc.id}).  % {loc.name}" for loc in automaton.locations),
+        f"initial({automaton.initial}).",
+        f"final({automaton.final}).",
+    ]
+    transition_node, numbering = guard_nodes(automaton)
+    for t in automaton.transitions:
+        base.append(f"transition({t.id},{t.source},{t.target}).  % {t.guard}")
+        base.append(f"guard_of({t.id},{transition_node[t.id]}).")
+    for location, node in invariant_nodes(automaton, numbering).items():
+        base.append(f"invariant_of({location},{node}).")
+    for t in automaton.transitions:
+        base.extend(f"starts({t.id},{p})." for p in sorted(t.starts) if p in automaton.timings)
+        base.extend(f"ends({t.id},{p})." for p in sorted(t.ends) if p in automaton.timings)
+    for phase, timing in automaton.timings.items():
+        low = math.ceil(timing.low / s.dt - 1e-9)
+        high = math.floor(timing.high / s.dt + 1e-9)
+        base.append(f"timing({phase},{low},{high}).  % {timing}")
+    state = ["% guards: g(N,t) holds when guard node N holds at step t (generated)"]
+    for guard, node in numbering.items():
+        state.append(f"% node {node}: {guard}")
+        state.extend(_guard_rules(node, guard, numbering, s))
+    return "\n".join(base) + "\n", "\n".join(state) + "\n"
+
+
+def _terms(bound: Bound) -> tuple[str, str]:
+    """The variable of a position or speed bound's quantity, and the &sum elements of its term."""
+    variable = "p" if bound.term.quantity == POSITION else "v"
+    term = bound.term
+    elements = f"{variable}({_atom(term.actor)},t)"
+    if term.reference is not None:
+        elements += f"; -1*{variable}({_atom(term.reference)},t)"
+    return variable, elements
+
+
+def _margin(bound: Bound, settings: ContinuousSettings) -> float:
+    return settings.position_margin if bound.term.quantity == POSITION else settings.speed_margin
+
+
+def _guard_rules(node: int, guard: Guard, numbering: dict[Guard, int], settings: ContinuousSettings) -> list[str]:
+    head = f"g({node},t)"
+    if isinstance(guard, And):
+        if not guard.parts:
+            return [f"{head}."]
+        return [f"{head} :- " + ", ".join(f"g({numbering[p]},t)" for p in guard.parts) + "."]
+    if isinstance(guard, Or):
+        return [f"{head} :- g({numbering[p]},t)." for p in guard.parts]
+    if isinstance(guard, Not):
+        bound = guard.part
+        assert isinstance(bound, Bound)
+        if bound.term.quantity == LANE:
+            return _outside_rules(node, bound, None)  # type: ignore[arg-type]
+        return _outside(node, bound, settings)
+    assert isinstance(guard, Bound)
+    if guard.term.quantity == LANE:
+        return _bound_rule(head, guard, None)  # type: ignore[arg-type]
+    low, high = _inset(guard.low, guard.high, _margin(guard, settings))
+    _, elements = _terms(guard)
+    # a free guard is tried false first: set at random, it would add linear constraints at steps
+    # where no transition or invariant needs it
+    rules = [f"{{ {head} }}.", f"#heuristic {head}. [1,false]"]
+    if guard.term.quantity == SPEED and guard.term.reference is None:
+        low = max(low, 0.0)
+    if high != math.inf:
+        rules.append(f"&sum{{ {elements} }} <= {_number(high)} :- {head}.")
+    if low != -math.inf:
+        rules.append(f"&sum{{ {elements} }} >= {_number(low)} :- {head}.")
+    return rules
+
+
+def _outside(node: int, bound: Bound, settings: ContinuousSettings) -> list[str]:
+    """``not bound``: below the range or above it, with the margin outside."""
+    margin = _margin(bound, settings)
+    head = f"g({node},t)"
+    _, elements = _terms(bound)
+    sides = []
+    rules = []
+    if bound.low != -math.inf:
+        sides.append(f"below({node},t)")
+        rules.append(f"&sum{{ {elements} }} <= {_number(bound.low - margin)} :- below({node},t).")
+    if bound.high != math.inf:
+        sides.append(f"above({node},t)")
+        rules.append(f"&sum{{ {elements} }} >= {_number(bound.high + margin)} :- above({node},t).")
+    if not sides:
+        return [f"% {head} never holds"]
+    return [f"{{ {head} }}.", f"#heuristic {head}. [1,false]", f"{{ {'; '.join(sides)} }} = 1 :- {head}.", *rules]
+
+
+class ContinuousPlanner:
+    """Plans for one automaton with the continuous encoding; ``plans()`` yields the first plan."""
+
+    def __init__(self, automaton: SymbolicAutomaton, settings: ContinuousSettings | None = None, seed: int = 0) -> None:
+        self.automaton = automaton
+        self.settings = settings or ContinuousSettings()
+        self.seed = seed
+        self.base_program, self.state_program = build_continuous_instance(automaton, self.settings)
+        self.stats: dict[str, float] = {}
+
+    def instance_program(self) -> str:
+        return "#program base.\n" + self.base_program + "\n#program state(t).\n" + self.state_program
+
+    def _control(self):
+        import clingo
+        from clingo.ast import ProgramBuilder, parse_string
+        from clingolpx import ClingoLPXTheory
+
+        from .solver import ASP_DIR
+
+        control = clingo.Control([f"--seed={self.seed}", "--sign-def=rnd", "--rand-freq=0.02", "--heuristic=Domain", "--warn=none", "--models=1"], logger=lambda c, m: None)
+        self.theory = ClingoLPXTheory()
+        for key, value in self.settings.lpx_options:
+            self.theory.configure(key, value)
+        self.theory.register(control)
+        program = "\n".join((ASP_DIR / name).read_text(encoding="utf-8") for name in (*SHARED, ENCODING))
+        program += "\n#program base.\n" + self.base_program + "\n#program state(t).\n" + self.state_program
+        with ProgramBuilder(control) as builder:
+            parse_string(program, lambda statement: self.theory.rewrite_ast(statement, builder.add))
+        return control
+
+    def earliest_horizon(self, deadline: float) -> int:
+        """The first horizon at which the automaton alone, every guard free, reaches its final
+        location within its phases' durations: no plan can be shorter, and proving so with the
+        dynamics costs seconds per horizon (measured: follow_then_overtake spent 60 s refuting
+        horizons 0-23, which its durations alone rule out)."""
+        import clingo
+
+        from .solver import ASP_DIR
+
+        _, numbering = guard_nodes(self.automaton)
+        relaxed = "\n".join(f"{{ g({node},t) }}." for node in numbering.values())
+        control = clingo.Control(["--warn=none"], logger=lambda c, m: None)
+        control.add("base", [], (ASP_DIR / "automaton.lp").read_text(encoding="utf-8") + "\n#program base.\n" + self.base_program + "\n#program state(t).\n" + relaxed)
+        for horizon in range(self.settings.max_horizon + 1):
+            t = clingo.Number(horizon)
+            control.ground([("base", [])] if horizon == 0 else [])
+            control.ground([("state", [t]), ("check", [t])])
+            if horizon:
+                control.assign_external(clingo.Function("query", [clingo.Number(horizon - 1)]), False)
+            control.assign_external(clingo.Function("query", [t]), True)
+            with control.solve(async_=True) as handle:
+                if not handle.wait(max(0.0, deadline - time.monotonic())):
+                    handle.cancel()
+                    raise PlanningTimeout(f"planning ran out of its time limit ({self.settings.time_limit:g} s)")
+                if handle.get().satisfiable:
+                    return horizon
+        raise NoPlanError(f"the scenario's phases cannot all end within {self.settings.max_horizon} steps ({self.settings.max_horizon * self.settings.dt:g} s)")
+
+    def plans(self, limit: int | None = 1) -> Iterator[Plan]:
+        import clingo
+
+        deadline = time.monotonic() + self.settings.time_limit
+        earliest = self.earliest_horizon(deadline)
+        control = self._control()
+        for horizon in range(self.settings.max_horizon + 1):
+            t = clingo.Number(horizon)
+            parts = [("base", []), ("state", [t]), ("check", [t])] if horizon == 0 else [("dynamics", [t]), ("state", [t]), ("check", [t])]
+            control.ground(parts)
+            self.theory.prepare(control)
+            if horizon:
+                control.assign_external(clingo.Function("query", [clingo.Number(horizon - 1)]), False)
+            control.assign_external(clingo.Function("query", [t]), True)
+            if horizon < earliest:
+                continue
+            with control.solve(yield_=True, async_=True) as handle:
+                remaining = deadline - time.monotonic()
+                if remaining <= 0 or not handle.wait(remaining):
+                    handle.cancel()
+                    raise PlanningTimeout(f"planning ran out of its time limit ({self.settings.time_limit:g} s) at horizon {horizon}")
+                model = handle.model()
+                if model is None:
+                    continue
+                self.theory.on_model(model)
+                symbols = list(model.symbols(shown=True))
+                values = {str(key): value for key, value in self.theory.assignment(model.thread_id)}
+            self.stats["horizon"] = horizon
+            yield self._plan(symbols, values, horizon)
+            return
+        raise NoPlanError(f"no plan satisfies the scenario within {self.settings.max_horizon} steps ({self.settings.max_horizon * self.settings.dt:g} s)")
+
+    def first(self) -> Plan:
+        return next(self.plans(limit=1))
+
+    def _plan(self, symbols, values: dict[str, object], horizon: int) -> Plan:
+        lanes: dict[tuple[str, int], int] = {}
+        transitions = []
+        for symbol in symbols:
+            if symbol.name == "lane":
+                vehicle, lane, step = symbol.arguments
+                name = vehicle.string if vehicle.type.name == "String" else vehicle.name
+                lanes[(name, step.number)] = lane.number
+            elif symbol.name == "fire":
+                transitions.append((symbol.arguments[1].number, symbol.arguments[0].number))
+
+        def value(variable: str, vehicle: str, step: int) -> float:
+            raw = values.get(f"{variable}({_atom(vehicle)},{step})")
+            return float(Fraction(str(raw).strip('"'))) if raw is not None else 0.0
+
+        states = {
+            v: [PlanState(position=value("p", v, k), lane=lanes[(v, k)], speed=value("v", v, k)) for k in range(horizon + 1)]
+            for v in self.automaton.actors
+        }
+        return Plan(dt=self.settings.dt, lanes=self.automaton.lanes, states=states, transitions=sorted(transitions), seed=self.seed,
+                    stats=dict(self.stats), runup=0.0, stationary=tuple(v for v in self.automaton.actors if v in self.automaton.stationary))
