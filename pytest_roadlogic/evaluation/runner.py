@@ -33,7 +33,7 @@ from .occupancy import Occupancy
 
 STRATEGIES = (BASE, REFINED)  # the order the bench runs them in
 RESULTS_FILE = "results.json"
-PACKAGES = ("pytest-roadlogic", "clingo", "clingo-dl", "frenetix", "commonroad-io", "hypothesis", "numpy", "matplotlib", "pytest")
+PACKAGES = ("pytest-roadlogic", "clingo", "clingo-dl", "clingo-lpx", "frenetix", "commonroad-io", "hypothesis", "numpy", "matplotlib", "pytest")
 
 
 # instances per scenario: the paper's (which the targets are set for), and a run to try the setup
