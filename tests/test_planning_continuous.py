@@ -28,9 +28,16 @@ def check_continuous_plan(plan, automaton, settings=SETTINGS):
                 acceleration = (s.speed - p.speed) / dt
                 assert settings.min_acceleration - 1e-6 <= acceleration <= settings.max_acceleration + 1e-6, f"{v} acceleration {acceleration} at {k}"
                 assert s.position == pytest.approx(p.position + (p.speed + s.speed) / 2 * dt, abs=1e-6), f"{v} kinematics at {k}"
+            if k >= 2:
+                change = (s.speed - 2 * states[k - 1].speed + states[k - 2].speed) / dt
+                assert abs(change) <= settings.max_jerk * dt + 1e-6, f"{v} acceleration jumps by {change} at {k}"
                 assert abs(s.lane - p.lane) <= 1
         for a, b in zip(changes, changes[1:]):
             assert b - a >= settings.lane_change_gap
+        for k in changes:
+            assert k >= 2, f"{v} changes lane in the first step, before the simulation could start the move"
+            assert min(states[k - 1].speed, states[k].speed) >= settings.lane_change_speed - 1e-6, f"{v} changes lane at a crawl at {k}"
+
     vehicles = plan.vehicles
     for i, a in enumerate(vehicles):
         for b in vehicles[i + 1 :]:
@@ -62,3 +69,18 @@ def test_no_horizon_shorter_than_the_durations_allow_is_searched():
     import time
 
     assert ContinuousPlanner(automaton, SETTINGS, 1).earliest_horizon(time.monotonic() + 30) == 24, "10 + 3 + 8 + 3 s at least"
+
+
+def test_a_plan_without_a_run_up_is_simulated_from_its_first_state_and_can_be_accepted():
+    from pytest_roadlogic.monitor import monitor
+    from pytest_roadlogic.simulation import simulate
+
+    automaton = build_automaton(load_scenario(ROOT / "scenarios" / "change_lane.osc"))
+    plan = ContinuousPlanner(automaton, SETTINGS, 1).first()
+    assert plan.runup == 0
+    simulation = simulate(plan)
+    trace = simulation.trace
+    for vehicle, states in plan.states.items():
+        assert trace.actors[vehicle]["x"][0] == pytest.approx(states[0].position)
+        assert trace.actors[vehicle]["speed"][0] == pytest.approx(states[0].speed), "no standstill start: the scenario's first instant is the simulation's"
+    assert monitor(automaton, trace).accepted

@@ -37,9 +37,13 @@ class ContinuousSettings:
     dt: float = 1.0  # seconds per step
     min_acceleration: float = -8.0  # m/s^2: hard braking of a real car
     max_acceleration: float = 4.0  # m/s^2
+    max_jerk: float = 2.0  # m/s^3: how much the acceleration may change from one step to the next
     min_speed: float = 0.5  # m/s for a driving vehicle the scenario does not ask to stop
     max_speed: float = 70.0  # m/s
-    initial_speed: tuple[float, float] = (0.5, 70.0)
+    # m/s at the first step: a scenario that names no speed starts at highway speeds, not at the
+    # crawl a vertex of the linear program would pick
+    initial_speed: tuple[float, float] = (8.0, 40.0)
+    lane_change_speed: float = 5.0  # m/s at least while changing lane
     min_gap: float = 8.0  # m between the centres of two vehicles sharing a lane
     lane_change_gap: int = 3  # steps from one lane change of a vehicle to its next
     spread: float = 300.0  # m from the first vehicle within which the others start
@@ -67,11 +71,13 @@ def build_continuous_instance(automaton: SymbolicAutomaton, settings: Continuous
         f"#const half_dt2 = {_number(s.dt * s.dt / 2)}.",
         f"#const amin = {_number(s.min_acceleration)}.",
         f"#const amax = {_number(s.max_acceleration)}.",
+        f"#const jerk = {_number(s.max_jerk * s.dt)}.",
         f"#const vmin = {_number(s.min_speed)}.",
         f"#const vmax = {_number(s.max_speed)}.",
         f"#const v0min = {_number(max(s.initial_speed[0], s.min_speed))}.",
         f"#const v0max = {_number(min(s.initial_speed[1], s.max_speed))}.",
         f"#const gap = {_number(s.min_gap)}.",
+        f"#const lane_change_speed = {_number(s.lane_change_speed)}.",
         f"#const spread = {_number(s.spread)}.",
         f"#const first_vehicle = {_atom(vehicles[0])}.",
         *(f"vehicle({_atom(v)})." for v in vehicles),

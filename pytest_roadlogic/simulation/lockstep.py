@@ -75,7 +75,7 @@ def drive_in_lockstep(plan: Plan, limits: SimulationLimits, drivers: DriverFacto
         active[vehicle] = driver
     end_time = max(r.end_time for r in refs.values()) + TAIL
     steps = int(round(end_time / dt))
-    states = {v: VehicleState(r.start_position, road.center_y(r.waypoints[0].lane), 0.0, 0.0, 0.0) for v, r in refs.items()}
+    states = {v: VehicleState(r.start_position, road.center_y(r.waypoints[0].lane), 0.0, r.start_speed, 0.0) for v, r in refs.items()}
     predictions = {v: Trajectory.standing(s) for v, s in states.items()}
     columns = {v: {c: np.zeros(steps + 1) for c in ("x", "y", "heading", "speed", "acceleration", "lane")} for v in refs}
     incidents: list[Incident] = []

@@ -1,6 +1,7 @@
 """From a plan to what each driver tracks: timed waypoints and a smooth reference motion.
 
-Every vehicle starts from standstill (as in the paper). The plan's step 0 is the moment the
+Every vehicle starts from standstill (as in the paper) when the plan has a run-up; a plan without
+one (``Plan.runup == 0``, the continuous encoding's) is simulated from its first state. The plan's step 0 is the moment the
 scenario starts, with the vehicles already moving, so the simulation begins with a *run-up*: all
 vehicles leave standstill together, accelerate at one common rate until each reaches its own
 step-0 speed, then cruise, arriving at their step-0 states together at ``runup`` seconds. Two
@@ -71,8 +72,11 @@ class Reference:
         self._lanes = [w.lane for w in self.waypoints]
         speed, rate = self._vel[0], self.runup_acceleration
         self._cruise_from = speed / rate  # seconds into the run-up when the vehicle stops accelerating
-        self.runup_distance = speed * self.runup - speed**2 / (2 * rate)
+        # without a run-up the simulation starts in the plan's first state (the scenario's first
+        # instant is the simulation's); with one, from standstill that far behind it
+        self.runup_distance = speed * self.runup - speed**2 / (2 * rate) if self.runup > 0 else 0.0
         self.start_position = self._pos[0] - self.runup_distance
+        self.start_speed = 0.0 if self.runup > 0 else float(speed)
 
     @property
     def end_time(self) -> float:
