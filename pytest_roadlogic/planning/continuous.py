@@ -23,7 +23,7 @@ from fractions import Fraction
 from ..automaton.guards import LANE, POSITION, SPEED, And, Bound, Guard, Not, Or
 from ..automaton.model import SymbolicAutomaton
 from .errors import NoPlanError, PlanningTimeout
-from .instance import _atom, _bound_rule, _inset, _outside_rules, guard_nodes, invariant_nodes
+from .instance import _atom, _bound_rule, _inset, _outside_rules, automaton_facts, guard_nodes, junction_rules
 from .plan import Plan, PlanState
 
 ENCODING = "continuous.lp"
@@ -86,24 +86,9 @@ def build_continuous_instance(automaton: SymbolicAutomaton, settings: Continuous
         "lateral(-1;0;1).",
         f"lane_change_gap({s.lane_change_gap}).",
         "",
-        "% the automaton",
-        *(f"location({loc.id}).  % {loc.name}" for loc in automaton.locations),
-        f"initial({automaton.initial}).",
-        f"final({automaton.final}).",
+        *automaton_facts(automaton, s.dt),
     ]
-    transition_node, numbering = guard_nodes(automaton)
-    for t in automaton.transitions:
-        base.append(f"transition({t.id},{t.source},{t.target}).  % {t.guard}")
-        base.append(f"guard_of({t.id},{transition_node[t.id]}).")
-    for location, node in invariant_nodes(automaton, numbering).items():
-        base.append(f"invariant_of({location},{node}).")
-    for t in automaton.transitions:
-        base.extend(f"starts({t.id},{p})." for p in sorted(t.starts) if p in automaton.timings)
-        base.extend(f"ends({t.id},{p})." for p in sorted(t.ends) if p in automaton.timings)
-    for phase, timing in automaton.timings.items():
-        low = math.ceil(timing.low / s.dt - 1e-9)
-        high = math.floor(timing.high / s.dt + 1e-9)
-        base.append(f"timing({phase},{low},{high}).  % {timing}")
+    _, numbering = guard_nodes(automaton)
     state = ["% guards: g(N,t) holds when guard node N holds at step t (generated)"]
     for guard, node in numbering.items():
         state.append(f"% node {node}: {guard}")
@@ -127,12 +112,8 @@ def _margin(bound: Bound, settings: ContinuousSettings) -> float:
 
 def _guard_rules(node: int, guard: Guard, numbering: dict[Guard, int], settings: ContinuousSettings) -> list[str]:
     head = f"g({node},t)"
-    if isinstance(guard, And):
-        if not guard.parts:
-            return [f"{head}."]
-        return [f"{head} :- " + ", ".join(f"g({numbering[p]},t)" for p in guard.parts) + "."]
-    if isinstance(guard, Or):
-        return [f"{head} :- g({numbering[p]},t)." for p in guard.parts]
+    if isinstance(guard, (And, Or)):
+        return junction_rules(node, guard, numbering)
     if isinstance(guard, Not):
         bound = guard.part
         assert isinstance(bound, Bound)

@@ -213,27 +213,10 @@ def build_instance(automaton: SymbolicAutomaton, settings: PlanningSettings, rel
         "runup_steps(0,0).",
         f"runup(0,0..{settings.runup_steps(starts[-1])},0,0).  % a stationary object has no run-up",
         "",
-        "% the automaton",
-        *(f"location({loc.id}).  % {loc.name}" for loc in automaton.locations),
-        f"initial({automaton.initial}).",
-        f"final({automaton.final}).",
     ]
-    transition_node, numbering = guard_nodes(automaton)
-    for t in automaton.transitions:
-        base.append(f"transition({t.id},{t.source},{t.target}).  % {t.guard}")
-        base.append(f"guard_of({t.id},{transition_node[t.id]}).")
-    for location, node in invariant_nodes(automaton, numbering).items():
-        base.append(f"invariant_of({location},{node}).  % {automaton.location(location).invariant}")
-    for t in automaton.transitions:
-        base.extend(f"starts({t.id},{p})." for p in sorted(t.starts) if p in automaton.timings)
-        base.extend(f"ends({t.id},{p})." for p in sorted(t.ends) if p in automaton.timings)
     relax = {c.source: k for k, c in enumerate(relaxable_constraints(automaton))} if relaxable else {}
-    base.extend(f"#external relaxed({k})." for k in relax.values())
-    for phase, timing in automaton.timings.items():
-        low = math.ceil(timing.low / settings.dt - 1e-9)
-        high = math.floor(timing.high / settings.dt + 1e-9)
-        condition = f" :- not relaxed({relax[timing.source]})" if timing.source in relax else ""
-        base.append(f"timing({phase},{low},{high}){condition}.  % {timing}")
+    base += automaton_facts(automaton, settings.dt, relax)
+    _, numbering = guard_nodes(automaton)
     state = ["% guards: g(N,t) holds when guard node N holds at step t (generated)"]
     for guard, node in numbering.items():
         state.append(f"% node {node}: {guard}")
@@ -248,6 +231,35 @@ def build_instance(automaton: SymbolicAutomaton, settings: PlanningSettings, rel
     return "\n".join(base) + "\n", "\n".join(state) + "\n"
 
 
+def automaton_facts(automaton: SymbolicAutomaton, dt: float, relax: dict | None = None) -> list[str]:
+    """The automaton as facts for asp/automaton.lp (locations, transitions and their guard nodes,
+    invariants, timed phases in steps of ``dt``); a timing whose source is in ``relax`` holds only
+    while its ``relaxed(K)`` external does not."""
+    relax = relax or {}
+    facts = [
+        "% the automaton",
+        *(f"location({loc.id}).  % {loc.name}" for loc in automaton.locations),
+        f"initial({automaton.initial}).",
+        f"final({automaton.final}).",
+    ]
+    transition_node, numbering = guard_nodes(automaton)
+    for t in automaton.transitions:
+        facts.append(f"transition({t.id},{t.source},{t.target}).  % {t.guard}")
+        facts.append(f"guard_of({t.id},{transition_node[t.id]}).")
+    for location, node in invariant_nodes(automaton, numbering).items():
+        facts.append(f"invariant_of({location},{node}).  % {automaton.location(location).invariant}")
+    for t in automaton.transitions:
+        facts.extend(f"starts({t.id},{p})." for p in sorted(t.starts) if p in automaton.timings)
+        facts.extend(f"ends({t.id},{p})." for p in sorted(t.ends) if p in automaton.timings)
+    facts.extend(f"#external relaxed({k})." for k in relax.values())
+    for phase, timing in automaton.timings.items():
+        low = math.ceil(timing.low / dt - 1e-9)
+        high = math.floor(timing.high / dt + 1e-9)
+        condition = f" :- not relaxed({relax[timing.source]})" if timing.source in relax else ""
+        facts.append(f"timing({phase},{low},{high}){condition}.  % {timing}")
+    return facts
+
+
 def _runup_fact(cells_per_step: int, steps: int, settings: PlanningSettings) -> str:
     metres = settings.runup_distance(cells_per_step * settings.grid / settings.dt, steps * settings.dt)
     return f"runup({cells_per_step},{steps},{math.floor(metres / settings.grid + 1e-9)},{math.ceil(metres / settings.grid - 1e-9)})."
@@ -258,16 +270,22 @@ def _atom(name: str) -> str:
     return name if name[:1].islower() and name.replace("_", "").isalnum() else f'"{name}"'
 
 
-def _guard_rules(node: int, guard: Guard, numbering: dict[Guard, int], settings: PlanningSettings, switch: str = "") -> list[str]:
-    """The rules of one guard node; ``switch`` is a body condition (``, not relaxed(K)``) under
-    which the difference constraints of a position bound apply."""
+def junction_rules(node: int, guard: And | Or, numbering: dict[Guard, int]) -> list[str]:
+    """A conjunction's or disjunction's rules, over its parts' nodes (the same in every encoding)."""
     head = f"g({node},t)"
     if isinstance(guard, And):
         if not guard.parts:
             return [f"{head}."]
         return [f"{head} :- " + ", ".join(f"g({numbering[p]},t)" for p in guard.parts) + "."]
-    if isinstance(guard, Or):
-        return [f"{head} :- g({numbering[p]},t)." for p in guard.parts]
+    return [f"{head} :- g({numbering[p]},t)." for p in guard.parts]
+
+
+def _guard_rules(node: int, guard: Guard, numbering: dict[Guard, int], settings: PlanningSettings, switch: str = "") -> list[str]:
+    """The rules of one guard node; ``switch`` is a body condition (``, not relaxed(K)``) under
+    which the difference constraints of a position bound apply."""
+    head = f"g({node},t)"
+    if isinstance(guard, (And, Or)):
+        return junction_rules(node, guard, numbering)
     if isinstance(guard, Not):  # on a bound (negation normal form): outside the range, with a margin
         assert isinstance(guard.part, Bound)
         return _outside_rules(node, guard.part, settings, switch)
