@@ -7,9 +7,10 @@ the grid encoding), lanes, and the order of vehicles that share a lane. The inst
 constants, and one rule set per guard node as in ``instance.py``, here with ``&sum`` constraints for
 positions and speeds.
 
-Status: plans the first plan of a scenario, incrementally over the horizon, and reads it back as a
-``Plan``. Not yet here: further plans (exclusion, steering), random starts, the diagnosis of a
-scenario without a plan, and the simulation starting in the plan's first state.
+Status: plans the first plan of a scenario, incrementally over the horizon from the first horizon
+the phases' durations allow, reads it back as a ``Plan`` (without a run-up: the simulation starts
+in its first state), and explains a scenario without a plan as the grid planner does (the
+diagnosis is inherited). Not yet here: further plans (exclusion, steering) and random starts.
 """
 
 from __future__ import annotations
@@ -23,8 +24,9 @@ from fractions import Fraction
 from ..automaton.guards import LANE, POSITION, SPEED, And, Bound, Guard, Not, Or
 from ..automaton.model import SymbolicAutomaton
 from .errors import NoPlanError, PlanningTimeout
-from .instance import _atom, _bound_rule, _inset, _outside_rules, automaton_facts, guard_nodes, junction_rules
+from .instance import _atom, _bound_rule, _inset, _outside_rules, automaton_facts, guard_nodes, junction_rules, relaxable_constraints
 from .plan import Plan, PlanState
+from .solver import ASP_DIR, Planner
 
 ENCODING = "continuous.lp"
 SHARED = ("automaton.lp",)
@@ -52,6 +54,16 @@ class ContinuousSettings:
     max_horizon: int = 120  # steps
     time_limit: float = 60.0  # seconds for one solve, all horizons together
     lpx_options: tuple[tuple[str, str], ...] = ()  # clingo-lpx's own (propagate-bounds, select, ...)
+    # when no plan exists, find the constraints that cannot hold together (UnsatisfiableScenario)
+    explain_unsatisfiable: bool = True
+    random_start: bool = False  # not yet: the refined strategy's random preferences are the grid encoding's
+
+    def summary(self, lanes: int) -> str:
+        """The vehicle limits and bounds on a road of ``lanes`` lanes, for messages that blame them."""
+        return (
+            f"speeds {self.min_speed:g}..{self.max_speed:g} m/s, accelerations {self.min_acceleration:g}..{self.max_acceleration:g} m/s^2, "
+            f"{lanes} lanes, {self.min_gap:g} m gaps, at most {self.max_horizon} steps of {self.dt:g} s"
+        )
 
 
 def _number(value: float) -> str:
@@ -61,8 +73,10 @@ def _number(value: float) -> str:
     return f'"{text}"'
 
 
-def build_continuous_instance(automaton: SymbolicAutomaton, settings: ContinuousSettings) -> tuple[str, str]:
-    """(base program, state(t) program) of the scenario for the continuous encoding."""
+def build_continuous_instance(automaton: SymbolicAutomaton, settings: ContinuousSettings, relaxable: bool = False) -> tuple[str, str]:
+    """(base program, state(t) program) of the scenario for the continuous encoding; with
+    ``relaxable``, every bound and duration of the scenario can be switched off by an external
+    ``relaxed(K)``, as in the grid encoding, for the diagnosis of a scenario without a plan."""
     s = settings
     vehicles = automaton.actors
     base = [
@@ -86,13 +100,21 @@ def build_continuous_instance(automaton: SymbolicAutomaton, settings: Continuous
         "lateral(-1;0;1).",
         f"lane_change_gap({s.lane_change_gap}).",
         "",
-        *automaton_facts(automaton, s.dt),
     ]
+    relax = {c.source: k for k, c in enumerate(relaxable_constraints(automaton))} if relaxable else {}
+    base += automaton_facts(automaton, s.dt, relax)
     _, numbering = guard_nodes(automaton)
     state = ["% guards: g(N,t) holds when guard node N holds at step t (generated)"]
     for guard, node in numbering.items():
         state.append(f"% node {node}: {guard}")
-        state.extend(_guard_rules(node, guard, numbering, s))
+        bound = guard.part if isinstance(guard, Not) else guard
+        if isinstance(bound, Bound) and bound.source in relax:
+            # relaxed: the guard holds, and the constraints it imposes stand down
+            k = relax[bound.source]
+            state.extend(_guard_rules(node, guard, numbering, s, f", not relaxed({k})"))
+            state.append(f"g({node},t) :- relaxed({k}).")
+        else:
+            state.extend(_guard_rules(node, guard, numbering, s))
     return "\n".join(base) + "\n", "\n".join(state) + "\n"
 
 
@@ -110,7 +132,9 @@ def _margin(bound: Bound, settings: ContinuousSettings) -> float:
     return settings.position_margin if bound.term.quantity == POSITION else settings.speed_margin
 
 
-def _guard_rules(node: int, guard: Guard, numbering: dict[Guard, int], settings: ContinuousSettings) -> list[str]:
+def _guard_rules(node: int, guard: Guard, numbering: dict[Guard, int], settings: ContinuousSettings, switch: str = "") -> list[str]:
+    """The rules of one guard node; ``switch`` is a body condition (``, not relaxed(K)``) under
+    which a bound's linear constraints apply."""
     head = f"g({node},t)"
     if isinstance(guard, (And, Or)):
         return junction_rules(node, guard, numbering)
@@ -119,7 +143,7 @@ def _guard_rules(node: int, guard: Guard, numbering: dict[Guard, int], settings:
         assert isinstance(bound, Bound)
         if bound.term.quantity == LANE:
             return _outside_rules(node, bound, None)  # type: ignore[arg-type]
-        return _outside(node, bound, settings)
+        return _outside(node, bound, settings, switch)
     assert isinstance(guard, Bound)
     if guard.term.quantity == LANE:
         return _bound_rule(head, guard, None)  # type: ignore[arg-type]
@@ -131,13 +155,13 @@ def _guard_rules(node: int, guard: Guard, numbering: dict[Guard, int], settings:
     if guard.term.quantity == SPEED and guard.term.reference is None:
         low = max(low, 0.0)
     if high != math.inf:
-        rules.append(f"&sum{{ {elements} }} <= {_number(high)} :- {head}.")
+        rules.append(f"&sum{{ {elements} }} <= {_number(high)} :- {head}{switch}.")
     if low != -math.inf:
-        rules.append(f"&sum{{ {elements} }} >= {_number(low)} :- {head}.")
+        rules.append(f"&sum{{ {elements} }} >= {_number(low)} :- {head}{switch}.")
     return rules
 
 
-def _outside(node: int, bound: Bound, settings: ContinuousSettings) -> list[str]:
+def _outside(node: int, bound: Bound, settings: ContinuousSettings, switch: str = "") -> list[str]:
     """``not bound``: below the range or above it, with the margin outside."""
     margin = _margin(bound, settings)
     head = f"g({node},t)"
@@ -152,38 +176,40 @@ def _outside(node: int, bound: Bound, settings: ContinuousSettings) -> list[str]
         rules.append(f"&sum{{ {elements} }} >= {_number(bound.high + margin)} :- above({node},t).")
     if not sides:
         return [f"% {head} never holds"]
-    return [f"{{ {head} }}.", f"#heuristic {head}. [1,false]", f"{{ {'; '.join(sides)} }} = 1 :- {head}.", *rules]
+    return [f"{{ {head} }}.", f"#heuristic {head}. [1,false]", f"{{ {'; '.join(sides)} }} = 1 :- {head}{switch}.", *rules]
 
 
-class ContinuousPlanner:
-    """Plans for one automaton with the continuous encoding; ``plans()`` yields the first plan."""
+class ContinuousPlanner(Planner):
+    """Plans for one automaton with the continuous encoding; ``plans()`` yields the first plan.
+
+    A ``Planner`` with another instance and another theory (clingo-lpx instead of clingo-dl): the
+    diagnosis of a scenario without a plan (``explain``) is the grid planner's, unchanged.
+    """
 
     def __init__(self, automaton: SymbolicAutomaton, settings: ContinuousSettings | None = None, seed: int = 0) -> None:
-        self.automaton = automaton
-        self.settings = settings or ContinuousSettings()
-        self.seed = seed
-        self.base_program, self.state_program = build_continuous_instance(automaton, self.settings)
-        self.stats: dict[str, float] = {}
+        super().__init__(automaton, settings or ContinuousSettings(), seed)  # type: ignore[arg-type]
 
-    def instance_program(self) -> str:
-        return "#program base.\n" + self.base_program + "\n#program state(t).\n" + self.state_program
+    def _instance(self, settings, relaxable: bool = False) -> tuple[str, str]:
+        return build_continuous_instance(self.automaton, settings, relaxable)
 
-    def _control(self):
+    def _widened(self):
+        return None  # every start speed the settings allow is tried at once
+
+    def _control(self, base_program: str, state_program: str):
         import clingo
         from clingo.ast import ProgramBuilder, parse_string
         from clingolpx import ClingoLPXTheory
 
-        from .solver import ASP_DIR
-
         control = clingo.Control([f"--seed={self.seed}", "--sign-def=rnd", "--rand-freq=0.02", "--heuristic=Domain", "--warn=none", "--models=1"], logger=lambda c, m: None)
-        self.theory = ClingoLPXTheory()
+        theory = ClingoLPXTheory()
         for key, value in self.settings.lpx_options:
-            self.theory.configure(key, value)
-        self.theory.register(control)
+            theory.configure(key, value)
+        theory.register(control)
+        self._theories[control] = theory
         program = "\n".join((ASP_DIR / name).read_text(encoding="utf-8") for name in (*SHARED, ENCODING))
-        program += "\n#program base.\n" + self.base_program + "\n#program state(t).\n" + self.state_program
+        program += "\n#program base.\n" + base_program + "\n#program state(t).\n" + state_program
         with ProgramBuilder(control) as builder:
-            parse_string(program, lambda statement: self.theory.rewrite_ast(statement, builder.add))
+            parse_string(program, lambda statement: theory.rewrite_ast(statement, builder.add))
         return control
 
     def earliest_horizon(self, deadline: float) -> int:
@@ -218,38 +244,34 @@ class ContinuousPlanner:
         import clingo
 
         deadline = time.monotonic() + self.settings.time_limit
-        earliest = self.earliest_horizon(deadline)
-        control = self._control()
-        for horizon in range(self.settings.max_horizon + 1):
-            t = clingo.Number(horizon)
-            parts = [("base", []), ("state", [t]), ("check", [t])] if horizon == 0 else [("dynamics", [t]), ("state", [t]), ("check", [t])]
-            control.ground(parts)
-            self.theory.prepare(control)
-            if horizon:
-                control.assign_external(clingo.Function("query", [clingo.Number(horizon - 1)]), False)
-            control.assign_external(clingo.Function("query", [t]), True)
-            if horizon < earliest:
-                continue
-            with control.solve(yield_=True, async_=True) as handle:
-                remaining = deadline - time.monotonic()
-                if remaining <= 0 or not handle.wait(remaining):
-                    handle.cancel()
-                    raise PlanningTimeout(f"planning ran out of its time limit ({self.settings.time_limit:g} s) at horizon {horizon}")
-                model = handle.model()
-                if model is None:
+        try:
+            earliest = self.earliest_horizon(deadline)
+            control = self._control(self.base_program, self.state_program)
+            theory = self._theories[control]
+            for horizon in range(self.settings.max_horizon + 1):
+                self._advance(control, horizon)
+                if horizon < earliest:
                     continue
-                self.theory.on_model(model)
-                symbols = list(model.symbols(shown=True))
-                values = {str(key): value for key, value in self.theory.assignment(model.thread_id)}
-            self.stats["horizon"] = horizon
-            yield self._plan(symbols, values, horizon)
-            return
-        raise NoPlanError(f"no plan satisfies the scenario within {self.settings.max_horizon} steps ({self.settings.max_horizon * self.settings.dt:g} s)")
+                with control.solve(yield_=True, async_=True) as handle:
+                    self._wait(handle, deadline, f"planning ran out of its time limit ({self.settings.time_limit:g} s) at horizon {horizon}")
+                    model = handle.model()
+                    if model is None:
+                        continue
+                    theory.on_model(model)
+                    symbols = list(model.symbols(shown=True))
+                    values = {str(key): value for key, value in theory.assignment(model.thread_id)}
+                self.stats["horizon"] = horizon
+                yield self._continuous_plan(symbols, values, horizon)
+                return
+            raise NoPlanError(f"no plan satisfies the scenario within {self.settings.max_horizon} steps ({self.settings.max_horizon * self.settings.dt:g} s)")
+        except PlanningTimeout:
+            raise
+        except NoPlanError as error:
+            if not self.settings.explain_unsatisfiable:
+                raise
+            self._explain(error, deadline)
 
-    def first(self) -> Plan:
-        return next(self.plans(limit=1))
-
-    def _plan(self, symbols, values: dict[str, object], horizon: int) -> Plan:
+    def _continuous_plan(self, symbols, values: dict[str, object], horizon: int) -> Plan:
         lanes: dict[tuple[str, int], int] = {}
         transitions = []
         for symbol in symbols:

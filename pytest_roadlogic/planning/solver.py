@@ -82,7 +82,7 @@ class Planner:
         self.automaton = automaton
         self.settings = settings or PlanningSettings()
         self.seed = seed
-        self.base_program, self.state_program = build_instance(automaton, self.settings)
+        self.base_program, self.state_program = self._instance(self.settings)
         self.stats: dict[str, float] = {"ground_s": 0.0, "solve_s": 0.0}
         # each control's difference-logic propagator (weak: explaining a failure makes many controls)
         self._theories: weakref.WeakKeyDictionary[clingo.Control, ClingoDLTheory] = weakref.WeakKeyDictionary()
@@ -94,6 +94,10 @@ class Planner:
             draw = random.Random(seed)
             self.preferences = start_preferences(automaton, self.settings, draw)
             self.stretch = draw.random()  # the fraction of the steps left up to max_horizon
+
+    def _instance(self, settings, relaxable: bool = False) -> tuple[str, str]:
+        """(base program, state(t) program) of this encoding's instance."""
+        return build_instance(self.automaton, settings, relaxable)
 
     def instance_program(self) -> str:
         return "#program base.\n" + self.base_program + "\n#program state(t).\n" + self.state_program
@@ -123,7 +127,7 @@ class Planner:
         deadline = time.monotonic() + self.settings.time_limit
         programs = [lambda: (self.base_program, self.state_program)]
         if (wide := self._widened()) is not None:
-            programs.append(lambda: build_instance(self.automaton, wide))
+            programs.append(lambda: self._instance(wide))
         for program in programs:
             try:
                 # a program that yields any plan ends without NoPlanError, so this is the last try
@@ -167,7 +171,7 @@ class Planner:
             return None
         deadline = deadline if deadline is not None else time.monotonic() + self.settings.time_limit
         settings = self._widened() or self.settings
-        program = build_instance(self.automaton, settings, relaxable=True)
+        program = self._instance(settings, relaxable=True)
         try:
             if self._failing(program, settings, [], len(constraints), deadline) is not None:
                 return None  # no plan even with every constraint relaxed
