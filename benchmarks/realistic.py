@@ -9,8 +9,8 @@ that planning ended, and how many first plans the simulation accepted.
 
 Planning is what issue 17 replaces: --encoding both prints the grid encoding (asp/dynamics.lp) and
 the continuous one (asp/continuous.lp) side by side; --paper adds the paper's seven scenarios.
---simulate adds a simulation and monitoring of each first plan (grid plans only: the simulation
-does not start continuous plans in their first state yet).
+--simulate adds a simulation and monitoring of each first plan (a grid plan after its run-up from
+standstill, a continuous plan from its first state).
 """
 
 from __future__ import annotations
@@ -93,14 +93,14 @@ def row(name: str, encoding: str, automaton, args) -> None:
             plan, ending = None, f"no plan: {error}"[:60]
         seconds.append(time.perf_counter() - started)
         endings.append(ending)
-        if plan is not None and args.simulate and encoding == "grid":
+        if plan is not None and args.simulate:
             from pytest_roadlogic.monitor import monitor
             from pytest_roadlogic.simulation import simulate
 
             accepted += monitor(automaton, simulate(plan).trace).accepted
     common = max(set(endings), key=endings.count)
     timing = f"{statistics.median(seconds):8.2f} {max(seconds):8.2f}"
-    shown = f"{accepted}/{args.seeds}" if args.simulate and encoding == "grid" else "-"
+    shown = f"{accepted}/{args.seeds}" if args.simulate else "-"
     print(f"{name:<22} {encoding:<11} {timing:<28} {common:<40} {shown}", flush=True)
 
 
