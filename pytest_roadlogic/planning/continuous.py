@@ -142,11 +142,11 @@ def _guard_rules(node: int, guard: Guard, numbering: dict[Guard, int], settings:
         bound = guard.part
         assert isinstance(bound, Bound)
         if bound.term.quantity == LANE:
-            return _outside_rules(node, bound, None)  # type: ignore[arg-type]
+            return _outside_rules(node, bound, None)  # lanes: the grid's rules, which need no settings
         return _outside(node, bound, settings, switch)
     assert isinstance(guard, Bound)
     if guard.term.quantity == LANE:
-        return _bound_rule(head, guard, None)  # type: ignore[arg-type]
+        return _bound_rule(head, guard, None)
     low, high = _inset(guard.low, guard.high, _margin(guard, settings))
     _, elements = _terms(guard)
     # a free guard is tried false first: set at random, it would add linear constraints at steps

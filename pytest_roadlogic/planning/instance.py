@@ -16,7 +16,7 @@ import math
 import random
 from dataclasses import dataclass
 
-from ..automaton.guards import POSITION, SPEED, And, Bound, Guard, Not, Or
+from ..automaton.guards import LANE, POSITION, SPEED, And, Bound, Guard, Not, Or
 from ..automaton.model import SymbolicAutomaton
 from ..settings import DEFAULT_HORIZON, DEFAULT_PLAN_TIMEOUT
 
@@ -295,9 +295,13 @@ def _guard_rules(node: int, guard: Guard, numbering: dict[Guard, int], settings:
     return _bound_rule(head, guard, settings)
 
 
-def _margin_and_scale(bound: Bound, settings: PlanningSettings) -> tuple[float, float, str]:
-    """(margin, metres or m/s per grid unit, fluent) of a bound's quantity."""
+def _margin_and_scale(bound: Bound, settings: PlanningSettings | None) -> tuple[float, float, str]:
+    """(margin, metres or m/s per grid unit, fluent) of a bound's quantity. A lane bound needs no
+    settings (lanes are whole numbers in every encoding): the continuous encoding passes None."""
     quantity = bound.term.quantity
+    if quantity == LANE:
+        return 0.0, 1.0, "lane"
+    assert settings is not None, "a position or speed bound is planned with the grid's settings"
     if quantity == POSITION:
         return settings.position_margin, settings.grid, "pos"
     if quantity == SPEED:
@@ -345,7 +349,7 @@ def _fluent_terms(bound: Bound, fluent: str) -> tuple[list[str], str]:
     return [f"{fluent}({_atom(term.actor)},X,t)", f"{fluent}({_atom(term.reference)},Y,t)"], "X-Y"
 
 
-def _outside_rules(node: int, bound: Bound, settings: PlanningSettings, switch: str = "") -> list[str]:
+def _outside_rules(node: int, bound: Bound, settings: PlanningSettings | None, switch: str = "") -> list[str]:
     """``not bound``: the value below or above the range, planned with the margin outside it."""
     margin, scale, fluent = _margin_and_scale(bound, settings)
     head = f"g({node},t)"
@@ -372,7 +376,7 @@ def _outside_rules(node: int, bound: Bound, settings: PlanningSettings, switch: 
     return rules
 
 
-def _bound_rule(head: str, bound: Bound, settings: PlanningSettings) -> list[str]:
+def _bound_rule(head: str, bound: Bound, settings: PlanningSettings | None) -> list[str]:
     """A speed or lane bound, derived from the vel/lane atoms (speeds with a margin inside)."""
     margin, scale, fluent = _margin_and_scale(bound, settings)
     lo, hi = _planned_range(bound.low, bound.high, margin, scale)
