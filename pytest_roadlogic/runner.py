@@ -22,7 +22,7 @@ from .case import Case
 from .frontend import CheckedScenario
 from .outcomes import CONFORMANT, NO_PLAN, NON_CONFORMANT, STAGES, TIMED_OUT
 from .pipeline import Outcome, run_instances
-from .planning import NoPlanError, PlanningTimeout, UnsatisfiableScenario
+from .planning import HorizonTooShort, NoPlanError, PlanningTimeout, UnsatisfiableScenario
 from .settings import BASE, REFINED, RunSettings
 from .simulation import DriverFactory, SimulationTimeout, Simulator
 
@@ -158,6 +158,8 @@ class Runner:
         result = self.run_case(case, explain=True)
         if isinstance(result.error, UnsatisfiableScenario):
             return result.error.report()
+        if isinstance(result.error, HorizonTooShort):
+            return result.message
         return fallback
 
     # ---------------------------------------------------------------- the pipeline
@@ -198,4 +200,6 @@ def _failure(case: Case, error: Exception, started: float) -> CaseResult:
         return CaseResult(case, TIMED_OUT, message=f"planning timed out: {error}", seconds=seconds, error=error)
     if isinstance(error, UnsatisfiableScenario):
         return CaseResult(case, NO_PLAN, message=error.report(), seconds=seconds, error=error)
+    if isinstance(error, HorizonTooShort):
+        return CaseResult(case, NO_PLAN, message=str(error), seconds=seconds, error=error)
     return CaseResult(case, NO_PLAN, message=f"no plan: {error}", seconds=seconds, error=error)

@@ -312,3 +312,19 @@ def test_a_random_start_prefers_and_never_forces():
     for seed in range(1, 6):
         plan = Planner(automaton, RANDOM_START, seed=seed).first()
         assert 8.0 <= plan.states["v1"][0].speed <= 10.0
+
+
+def test_a_horizon_limit_that_binds_is_named_not_the_scenarios_durations():
+    # two phases of at least 15 s cannot end within 25 steps: the setting binds, and the message
+    # must say so (before, the diagnosis blamed the two durations for clashing)
+    from pytest_roadlogic.automaton import build_automaton
+    from pytest_roadlogic.frontend import check_text
+    from pytest_roadlogic.planning import HorizonTooShort
+
+    text = "scenario s:\n  a: car\n  do serial:\n    first: a.drive(duration: [15s..20s])\n    second: a.drive(duration: [15s..20s])\n"
+    automaton = build_automaton(check_text(text, "long.osc").scenarios[0])
+    with pytest.raises(HorizonTooShort) as refused:
+        Planner(automaton, SETTINGS, 1).first()
+    message = str(refused.value)
+    assert "horizon limit of 25 steps (25 s)" in message and "at least 30 s" in message and "--roadlogic-horizon" in message
+    assert Planner(automaton, dataclasses.replace(SETTINGS, max_horizon=32), 1).first().horizon >= 30, "with the limit raised it plans"

@@ -23,7 +23,7 @@ from fractions import Fraction
 
 from ..automaton.guards import LANE, POSITION, SPEED, And, Bound, Guard, Not, Or
 from ..automaton.model import SymbolicAutomaton
-from .errors import NoPlanError, PlanningTimeout
+from .errors import HorizonTooShort, NoPlanError, PlanningTimeout
 from .instance import _atom, _bound_rule, _inset, _outside_rules, automaton_facts, guard_nodes, junction_rules, relaxable_constraints
 from .plan import Plan, PlanState
 from .solver import ASP_DIR, Planner
@@ -212,40 +212,14 @@ class ContinuousPlanner(Planner):
             parse_string(program, lambda statement: theory.rewrite_ast(statement, builder.add))
         return control
 
-    def earliest_horizon(self, deadline: float) -> int:
-        """The first horizon at which the automaton alone, every guard free, reaches its final
-        location within its phases' durations: no plan can be shorter, and proving so with the
-        dynamics costs seconds per horizon (measured: follow_then_overtake spent 60 s refuting
-        horizons 0-23, which its durations alone rule out)."""
-        import clingo
-
-        from .solver import ASP_DIR
-
-        _, numbering = guard_nodes(self.automaton)
-        relaxed = "\n".join(f"{{ g({node},t) }}." for node in numbering.values())
-        control = clingo.Control(["--warn=none"], logger=lambda c, m: None)
-        control.add("base", [], (ASP_DIR / "automaton.lp").read_text(encoding="utf-8") + "\n#program base.\n" + self.base_program + "\n#program state(t).\n" + relaxed)
-        for horizon in range(self.settings.max_horizon + 1):
-            t = clingo.Number(horizon)
-            control.ground([("base", [])] if horizon == 0 else [])
-            control.ground([("state", [t]), ("check", [t])])
-            if horizon:
-                control.assign_external(clingo.Function("query", [clingo.Number(horizon - 1)]), False)
-            control.assign_external(clingo.Function("query", [t]), True)
-            with control.solve(async_=True) as handle:
-                if not handle.wait(max(0.0, deadline - time.monotonic())):
-                    handle.cancel()
-                    raise PlanningTimeout(f"planning ran out of its time limit ({self.settings.time_limit:g} s)")
-                if handle.get().satisfiable:
-                    return horizon
-        raise NoPlanError(f"the scenario's phases cannot all end within {self.settings.max_horizon} steps ({self.settings.max_horizon * self.settings.dt:g} s)")
-
     def plans(self, limit: int | None = 1) -> Iterator[Plan]:
         import clingo
 
         deadline = time.monotonic() + self.settings.time_limit
         try:
             earliest = self.earliest_horizon(deadline)
+            if earliest is None:
+                raise HorizonTooShort(self.settings.max_horizon, self.settings.dt, self.earliest_horizon(deadline, 4 * self.settings.max_horizon))
             control = self._control(self.base_program, self.state_program)
             theory = self._theories[control]
             for horizon in range(self.settings.max_horizon + 1):
@@ -264,7 +238,7 @@ class ContinuousPlanner(Planner):
                 yield self._continuous_plan(symbols, values, horizon)
                 return
             raise NoPlanError(f"no plan satisfies the scenario within {self.settings.max_horizon} steps ({self.settings.max_horizon * self.settings.dt:g} s)")
-        except PlanningTimeout:
+        except (PlanningTimeout, HorizonTooShort):
             raise
         except NoPlanError as error:
             if not self.settings.explain_unsatisfiable:

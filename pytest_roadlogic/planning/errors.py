@@ -1,7 +1,8 @@
 """Why there is no plan: the planner's exceptions, importable without the solver (and clingo).
 
 ``NoPlanError``: none up to the horizon limit; ``PlanningTimeout``: the time limit ran out first (a
-plan may still exist); ``UnsatisfiableScenario``: the scenario's own constraints cannot hold
+plan may still exist); ``HorizonTooShort``: the horizon limit, a setting, is what forbids a plan;
+``UnsatisfiableScenario``: the scenario's own constraints cannot hold
 together, with the groups that clash, each at its place in the file.
 """
 
@@ -14,6 +15,19 @@ class NoPlanError(Exception):
 
 class PlanningTimeout(NoPlanError):
     """The time limit ran out before a plan was found (a plan may still exist)."""
+
+
+class HorizonTooShort(NoPlanError):
+    """The scenario's phases cannot all end within the horizon limit: a setting of the tool binds,
+    not the scenario's constraints. The message names the setting and how to raise it."""
+
+    def __init__(self, limit_steps: int, dt: float, needed_steps: int | None) -> None:
+        needed = f"at least {needed_steps * dt:g} s" if needed_steps is not None else f"more than {4 * limit_steps * dt:g} s"
+        super().__init__(
+            f"no plan within the horizon limit of {limit_steps} steps ({limit_steps * dt:g} s): the scenario's phases need {needed} "
+            "together; raise the limit with --roadlogic-horizon N (ini roadlogic_horizon) or --horizon N of roadlogic run, plan, replay and bench"
+        )
+        self.limit_steps, self.needed_steps = limit_steps, needed_steps
 
 
 class UnsatisfiableScenario(NoPlanError):

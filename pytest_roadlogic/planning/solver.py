@@ -28,7 +28,8 @@ from clingodl import ClingoDLTheory
 
 from ..automaton.guards import contradiction
 from ..automaton.model import SymbolicAutomaton
-from .errors import NoPlanError, PlanningTimeout, UnsatisfiableScenario, conflict_message
+from .errors import HorizonTooShort, NoPlanError, PlanningTimeout, UnsatisfiableScenario, conflict_message
+from .instance import guard_nodes
 from .instance import PlanningSettings, build_instance, relaxable_constraints, start_preferences
 from .plan import Plan, PlanState
 
@@ -149,12 +150,41 @@ class Planner:
         return wide
 
     def _explain(self, error: NoPlanError, deadline: float) -> None:
-        """Raise the reason there is no plan: the constraints that cannot hold together, when a
-        diagnosis finds them in time, else ``error`` as it is."""
+        """Raise the reason there is no plan: the horizon limit when the phases' durations alone
+        need longer (a setting binds, not the scenario), else the constraints that cannot hold
+        together, when a diagnosis finds them in time, else ``error`` as it is."""
+        try:
+            needed = self.earliest_horizon(deadline, limit=4 * self.settings.max_horizon)
+        except PlanningTimeout:
+            needed = 0  # no time to tell: go on to the diagnosis, which says what it finds
+        if needed is None or needed > self.settings.max_horizon:
+            raise HorizonTooShort(self.settings.max_horizon, self.settings.dt, needed) from None
         conflict = self.explain(deadline)
         if conflict:
             raise UnsatisfiableScenario(f"{error}\n" + conflict_message([conflict]), [conflict], self.settings.summary(self.automaton.lanes)) from None
         raise error
+
+    def earliest_horizon(self, deadline: float, limit: int | None = None) -> int | None:
+        """The first horizon (up to ``limit``, default the horizon limit) at which the automaton
+        alone, every guard free, reaches its final location within its phases' durations: no plan
+        can be shorter. None when there is none up to ``limit``. Measured: follow_then_overtake's
+        durations rule out horizons 0-23, which the continuous encoding spent 60 s refuting with
+        the dynamics; five_vehicle_minute's need 45 steps, past the grid encoding's 25."""
+        _, numbering = guard_nodes(self.automaton)
+        relaxed = "\n".join(f"{{ g({node},t) }}." for node in numbering.values())
+        control = clingo.Control(["--warn=none"], logger=lambda c, m: None)
+        control.add("base", [], (ASP_DIR / "automaton.lp").read_text(encoding="utf-8") + "\n#program base.\n" + self.base_program + "\n#program state(t).\n" + relaxed)
+        for horizon in range((self.settings.max_horizon if limit is None else limit) + 1):
+            t = clingo.Number(horizon)
+            control.ground(([("base", [])] if horizon == 0 else []) + [("state", [t]), ("check", [t])])
+            if horizon:
+                control.assign_external(clingo.Function("query", [clingo.Number(horizon - 1)]), False)
+            control.assign_external(clingo.Function("query", [t]), True)
+            with control.solve(async_=True) as handle:
+                self._wait(handle, deadline, f"planning ran out of its time limit ({self.settings.time_limit:g} s)")
+                if handle.get().satisfiable:
+                    return horizon
+        return None
 
     def explain(self, deadline: float | None = None) -> tuple | None:
         """A smallest group of the scenario's constraints that no plan up to the horizon limit meets.
