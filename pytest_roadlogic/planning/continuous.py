@@ -24,7 +24,7 @@ from fractions import Fraction
 from ..automaton.guards import LANE, POSITION, SPEED, And, Bound, Guard, Not, Or
 from ..automaton.model import SymbolicAutomaton
 from .errors import HorizonTooShort, NoPlanError, PlanningTimeout
-from .instance import _atom, _bound_rule, _inset, _outside_rules, automaton_facts, guard_nodes, junction_rules, relaxable_constraints
+from .instance import _atom, _bound_rule, _inset, _outside_rules, junction_rules, with_automaton
 from .plan import Plan, PlanState
 from .solver import ASP_DIR, Planner
 
@@ -101,21 +101,7 @@ def build_continuous_instance(automaton: SymbolicAutomaton, settings: Continuous
         f"lane_change_gap({s.lane_change_gap}).",
         "",
     ]
-    relax = {c.source: k for k, c in enumerate(relaxable_constraints(automaton))} if relaxable else {}
-    base += automaton_facts(automaton, s.dt, relax)
-    _, numbering = guard_nodes(automaton)
-    state = ["% guards: g(N,t) holds when guard node N holds at step t (generated)"]
-    for guard, node in numbering.items():
-        state.append(f"% node {node}: {guard}")
-        bound = guard.part if isinstance(guard, Not) else guard
-        if isinstance(bound, Bound) and bound.source in relax:
-            # relaxed: the guard holds, and the constraints it imposes stand down
-            k = relax[bound.source]
-            state.extend(_guard_rules(node, guard, numbering, s, f", not relaxed({k})"))
-            state.append(f"g({node},t) :- relaxed({k}).")
-        else:
-            state.extend(_guard_rules(node, guard, numbering, s))
-    return "\n".join(base) + "\n", "\n".join(state) + "\n"
+    return with_automaton(base, automaton, s.dt, relaxable, lambda node, guard, numbering, switch: _guard_rules(node, guard, numbering, s, switch))
 
 
 def _terms(bound: Bound) -> tuple[str, str]:

@@ -214,21 +214,35 @@ def build_instance(automaton: SymbolicAutomaton, settings: PlanningSettings, rel
         f"runup(0,0..{settings.runup_steps(starts[-1])},0,0).  % a stationary object has no run-up",
         "",
     ]
+    return with_automaton(base, automaton, settings.dt, relaxable, lambda node, guard, numbering, switch: _guard_rules(node, guard, numbering, settings, switch))
+
+
+def with_automaton(base: list[str], automaton: SymbolicAutomaton, dt: float, relaxable: bool, rules) -> tuple[str, str]:
+    """(base program, state(t) program): an encoding's own base facts ``base`` followed by the
+    automaton's facts, and the guard program from the encoding's ``rules`` (see guard_program);
+    with ``relaxable``, every bound and duration can be relaxed for a diagnosis."""
     relax = {c.source: k for k, c in enumerate(relaxable_constraints(automaton))} if relaxable else {}
-    base += automaton_facts(automaton, settings.dt, relax)
+    state = guard_program(automaton, relax, rules)
+    return "\n".join([*base, *automaton_facts(automaton, dt, relax)]) + "\n", "\n".join(state) + "\n"
+
+
+def guard_program(automaton: SymbolicAutomaton, relax: dict, rules) -> list[str]:
+    """The state(t) program of the guards: ``rules(node, guard, numbering, switch)`` gives one node's
+    rules in an encoding; a bound the diagnosis may relax gets the switch ``, not relaxed(K)`` on its
+    constraints and holds whenever it is relaxed."""
     _, numbering = guard_nodes(automaton)
     state = ["% guards: g(N,t) holds when guard node N holds at step t (generated)"]
     for guard, node in numbering.items():
         state.append(f"% node {node}: {guard}")
         bound = _bound_of(guard)
         if bound is not None and bound.source in relax:
-            # relaxed: the guard holds, and the constraints it imposes on positions stand down
+            # relaxed: the guard holds, and the constraints it imposes stand down
             k = relax[bound.source]
-            state.extend(_guard_rules(node, guard, numbering, settings, f", not relaxed({k})"))
+            state.extend(rules(node, guard, numbering, f", not relaxed({k})"))
             state.append(f"g({node},t) :- relaxed({k}).")
         else:
-            state.extend(_guard_rules(node, guard, numbering, settings))
-    return "\n".join(base) + "\n", "\n".join(state) + "\n"
+            state.extend(rules(node, guard, numbering, ""))
+    return state
 
 
 def automaton_facts(automaton: SymbolicAutomaton, dt: float, relax: dict | None = None) -> list[str]:
