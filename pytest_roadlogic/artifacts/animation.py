@@ -7,15 +7,15 @@ keeps a 20 s run to about a hundred frames and the file small enough to attach t
 
 from __future__ import annotations
 
-import os
 from pathlib import Path
 
 import numpy as np
 
 from ..monitor import Verdict
-from .plot import COLOURS
 from ..simulation import Simulation
 from ..simulation.geometry import CAR_LENGTH, CAR_WIDTH
+from .files import replaced
+from .plot import COLOURS
 
 
 def animate_simulation(simulation: Simulation, verdict: Verdict | None, path: str | Path, title: str = "", frame_dt: float = 0.2) -> Path:
@@ -69,14 +69,11 @@ def animate_simulation(simulation: Simulation, verdict: Verdict | None, path: st
         return [*boxes, *labels, clock]
 
     animation = FuncAnimation(figure, draw, frames=frames, blit=False)
-    temporary = path.parent / f".{path.name}.{os.getpid()}.partial.gif"
     try:
-        animation.save(temporary, writer=PillowWriter(fps=max(1, int(round(1 / (stride * simulation.dt))))))
-        os.replace(temporary, path)
+        with replaced(path) as temporary:
+            animation.save(temporary, writer=PillowWriter(fps=max(1, int(round(1 / (stride * simulation.dt))))))
     finally:
         plt.close(figure)
-        if temporary.exists():
-            temporary.unlink()
     return path
 
 

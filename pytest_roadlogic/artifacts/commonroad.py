@@ -11,13 +11,13 @@ window. Problem ids are ``2000 + 100 * vehicle index + waypoint index``."""
 from __future__ import annotations
 
 import math
-import os
 from pathlib import Path
 
 import numpy as np
 
 from ..simulation.geometry import CAR_LENGTH, CAR_WIDTH
 from ..simulation.interface import Simulation
+from .files import replaced
 
 FIRST_OBSTACLE_ID = 1000
 FIRST_PROBLEM_ID = 2000
@@ -91,11 +91,6 @@ def write_commonroad_xml(simulation: Simulation, path: str | Path) -> Path:
         scenario, problems, author="pytest-roadlogic", affiliation="", source="pytest-roadlogic",
         tags={Tag.HIGHWAY, Tag.MULTI_LANE}, file_format=FileFormat.XML,
     )
-    temporary = path.parent / f".{path.name}.{os.getpid()}.partial.xml"
-    try:
+    with replaced(path) as temporary:
         writer.write_to_file(temporary, OverwriteExistingFile.ALWAYS)
-        os.replace(temporary, path)
-    finally:
-        if os.path.exists(temporary):
-            os.unlink(temporary)
     return path

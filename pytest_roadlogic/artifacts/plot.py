@@ -8,6 +8,7 @@ from pathlib import Path
 from ..monitor import Verdict
 from ..simulation import Simulation
 from ..simulation.geometry import CAR_LENGTH, CAR_WIDTH
+from .files import replaced
 
 COLOURS = ("tab:purple", "tab:red", "tab:blue", "tab:green", "tab:orange", "tab:brown")
 
@@ -59,8 +60,7 @@ def plot_simulation(simulation: Simulation, verdict: Verdict, path: str | Path, 
     figure.suptitle(f"{title}  {status} (robustness {verdict.robustness:+.2f}); numbered marks: guards met", fontsize=10)
     figure.tight_layout()
     path = Path(path)
-    temporary = path.parent / f".{path.name}.partial.png"
-    figure.savefig(temporary, dpi=110)
+    with replaced(path) as temporary:
+        figure.savefig(temporary, dpi=110)
     plt.close(figure)
-    temporary.replace(path)
     return path

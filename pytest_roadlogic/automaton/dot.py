@@ -6,11 +6,11 @@ skipped (with a note) when it is not installed, rather than making Graphviz a de
 
 from __future__ import annotations
 
-import os
 import shutil
 import subprocess
 from pathlib import Path
 
+from ..artifacts.files import write_text
 from .model import SymbolicAutomaton
 
 
@@ -44,9 +44,7 @@ def write_dot(automaton: SymbolicAutomaton, path: str | Path, title: str = "", p
     """Write ``path`` (DOT) and, when Graphviz is installed and ``png``, the PNG beside it."""
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
-    temporary = path.with_name(f".{path.name}.{os.getpid()}.partial")
-    temporary.write_text(to_dot(automaton, title), encoding="utf-8")
-    os.replace(temporary, path)
+    write_text(path, to_dot(automaton, title))
     written = {"dot": path}
     dot = shutil.which("dot")
     if png and dot is not None:
