@@ -36,7 +36,3 @@ class Tally:
         self.outcomes[outcome] += 1
         for stage in STAGES:
             self.seconds[stage] += seconds.get(stage, 0.0)
-
-    def summary(self) -> str:
-        """``N conformant, N non-conformant, N no plan, N timed out``."""
-        return ", ".join(f"{self.outcomes[o]} {o}" for o in OUTCOMES)

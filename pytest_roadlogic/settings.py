@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass, fields
+from dataclasses import dataclass
 from typing import Any
 
 REFINED, BASE = "refined", "base"
@@ -137,10 +137,6 @@ class RunSettings:
             except OptionError as error:
                 raise OptionError(f"{origin(option)}: {error}") from None
         return cls(**values)
-
-    def replace(self, **changes) -> "RunSettings":
-        known = {f.name for f in fields(self)}
-        return RunSettings(**{**{k: getattr(self, k) for k in known}, **changes})
 
     def planning(self, explain_unsatisfiable: bool = True):
         """The planner's settings for this run (``PlanningSettings``)."""

@@ -199,13 +199,9 @@ class ContinuousPlanner(Planner):
         return control
 
     def plans(self, limit: int | None = 1) -> Iterator[Plan]:
-        import clingo
-
         deadline = time.monotonic() + self.settings.time_limit
         try:
-            earliest = self.earliest_horizon(deadline)
-            if earliest is None:
-                raise HorizonTooShort(self.settings.max_horizon, self.settings.dt, self.earliest_horizon(deadline, 4 * self.settings.max_horizon))
+            earliest = self.needed_horizon(deadline)
             control = self._control(self.base_program, self.state_program)
             theory = self._theories[control]
             for horizon in range(self.settings.max_horizon + 1):

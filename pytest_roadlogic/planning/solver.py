@@ -154,15 +154,21 @@ class Planner:
         need longer (a setting binds, not the scenario), else the constraints that cannot hold
         together, when a diagnosis finds them in time, else ``error`` as it is."""
         try:
-            needed = self.earliest_horizon(deadline, limit=4 * self.settings.max_horizon)
+            self.needed_horizon(deadline)
         except PlanningTimeout:
-            needed = 0  # no time to tell: go on to the diagnosis, which says what it finds
-        if needed is None or needed > self.settings.max_horizon:
-            raise HorizonTooShort(self.settings.max_horizon, self.settings.dt, needed) from None
+            pass  # no time to tell: go on to the diagnosis, which says what it finds
         conflict = self.explain(deadline)
         if conflict:
             raise UnsatisfiableScenario(f"{error}\n" + conflict_message([conflict]), [conflict], self.settings.summary(self.automaton.lanes)) from None
         raise error
+
+    def needed_horizon(self, deadline: float) -> int:
+        """The shortest horizon the phases' durations allow (``earliest_horizon``);
+        ``HorizonTooShort`` when that is past the horizon limit, a setting that then binds."""
+        needed = self.earliest_horizon(deadline, limit=4 * self.settings.max_horizon)
+        if needed is None or needed > self.settings.max_horizon:
+            raise HorizonTooShort(self.settings.max_horizon, self.settings.dt, needed)
+        return needed
 
     def earliest_horizon(self, deadline: float, limit: int | None = None) -> int | None:
         """The first horizon (up to ``limit``, default the horizon limit) at which the automaton
