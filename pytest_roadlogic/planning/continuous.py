@@ -23,6 +23,7 @@ from fractions import Fraction
 
 from ..automaton.guards import LANE, POSITION, SPEED, And, Bound, Guard, Not, Or
 from ..automaton.model import SymbolicAutomaton
+from .linear import THEORY, LazyLinearTheory
 from .errors import HorizonTooShort, NoPlanError, PlanningTimeout
 from .instance import _atom, _bound_rule, _inset, _outside_rules, junction_rules, with_automaton
 from .plan import Plan, PlanState
@@ -53,7 +54,11 @@ class ContinuousSettings:
     speed_margin: float = 0.5  # m/s likewise for speeds
     max_horizon: int = 120  # steps
     time_limit: float = 60.0  # seconds for one solve, all horizons together
-    lpx_options: tuple[tuple[str, str], ...] = ()  # clingo-lpx's own (propagate-bounds, select, ...)
+    # how the linear constraints are kept: "lazy" checks each complete choice with HiGHS and learns
+    # nogoods from its conflicts (planning/linear.py); "lpx" keeps them at every decision with
+    # clingo-lpx's exact simplex (measured slower by orders of magnitude on long scenarios)
+    theory: str = "lazy"
+    lpx_options: tuple[tuple[str, str], ...] = ()  # clingo-lpx's own (propagate-conflicts, select, ...)
     # when no plan exists, find the constraints that cannot hold together (UnsatisfiableScenario)
     explain_unsatisfiable: bool = True
     random_start: bool = False  # not yet: the refined strategy's random preferences are the grid encoding's
@@ -184,15 +189,20 @@ class ContinuousPlanner(Planner):
     def _control(self, base_program: str, state_program: str):
         import clingo
         from clingo.ast import ProgramBuilder, parse_string
-        from clingolpx import ClingoLPXTheory
 
         control = clingo.Control([f"--seed={self.seed}", "--sign-def=rnd", "--rand-freq=0.02", "--heuristic=Domain", "--warn=none", "--models=1"], logger=lambda c, m: None)
-        theory = ClingoLPXTheory()
-        for key, value in self.settings.lpx_options:
-            theory.configure(key, value)
+        program = "\n".join((ASP_DIR / name).read_text(encoding="utf-8") for name in (*SHARED, ENCODING))
+        if self.settings.theory == "lpx":
+            from clingolpx import ClingoLPXTheory
+
+            theory = ClingoLPXTheory()
+            for key, value in self.settings.lpx_options:
+                theory.configure(key, value)
+        else:
+            theory = LazyLinearTheory()
+            program = THEORY + program
         theory.register(control)
         self._theories[control] = theory
-        program = "\n".join((ASP_DIR / name).read_text(encoding="utf-8") for name in (*SHARED, ENCODING))
         program += "\n#program base.\n" + base_program + "\n#program state(t).\n" + state_program
         with ProgramBuilder(control) as builder:
             parse_string(program, lambda statement: theory.rewrite_ast(statement, builder.add))
