@@ -61,6 +61,11 @@ class ContinuousSettings:
     lpx_options: tuple[tuple[str, str], ...] = ()  # clingo-lpx's own (propagate-conflicts, select, ...)
     # when no plan exists, find the constraints that cannot hold together (UnsatisfiableScenario)
     explain_unsatisfiable: bool = True
+    # seconds the diagnosis may spend deciding whether one constraint can leave the group that
+    # clashes; past it the constraint stays. Measured: infeasible_order's duration, once relaxed,
+    # leaves every horizon up to the limit to refute, 15 s at 120 steps, for a group that with it
+    # names one constraint more (the duration) and is still true
+    removal_time_limit: float | None = 1.0
     random_start: bool = False  # not yet: the refined strategy's random preferences are the grid encoding's
 
     def summary(self, lanes: int) -> str:
@@ -101,12 +106,26 @@ def build_continuous_instance(automaton: SymbolicAutomaton, settings: Continuous
         f"#const first_vehicle = {_atom(vehicles[0])}.",
         *(f"vehicle({_atom(v)})." for v in vehicles),
         *(f"stationary({_atom(v)})." for v in vehicles if v in automaton.stationary),
+        *(f"may_stop({_atom(v)})." for v in sorted(stopping(automaton, s))),
         f"lane_id(0..{automaton.lanes - 1}).",
         "lateral(-1;0;1).",
         f"lane_change_gap({s.lane_change_gap}).",
         "",
     ]
     return with_automaton(base, automaton, s.dt, relaxable, lambda node, guard, numbering, switch: _guard_rules(node, guard, numbering, s, switch))
+
+
+def stopping(automaton: SymbolicAutomaton, settings: ContinuousSettings) -> set[str]:
+    """The vehicles the scenario lets stop: a speed bound of theirs reaches below the speed every
+    other driving vehicle keeps (``speed(0kph)``, ``change_speed(target: 0kph)``). The paper's
+    no-stop rule, scoped: whoever the scenario does not ask to stop keeps moving."""
+    guards = [t.guard for t in automaton.transitions] + [location.invariant for location in automaton.locations]
+    return {
+        bound.term.actor
+        for guard in guards
+        for bound in guard.atoms()
+        if bound.term.quantity == SPEED and bound.term.reference is None and bound.low < settings.min_speed
+    }
 
 
 def _terms(bound: Bound) -> tuple[str, str]:
@@ -139,12 +158,12 @@ def _guard_rules(node: int, guard: Guard, numbering: dict[Guard, int], settings:
     if guard.term.quantity == LANE:
         return _bound_rule(head, guard, None)
     low, high = _inset(guard.low, guard.high, _margin(guard, settings))
+    if guard.term.quantity == SPEED and guard.term.reference is None and guard.low <= 0:
+        low = 0.0  # no margin below a standstill: no vehicle undershoots it (none reverses)
     _, elements = _terms(guard)
     # a free guard is tried false first: set at random, it would add linear constraints at steps
     # where no transition or invariant needs it
     rules = [f"{{ {head} }}.", f"#heuristic {head}. [1,false]"]
-    if guard.term.quantity == SPEED and guard.term.reference is None:
-        low = max(low, 0.0)
     if high != math.inf:
         rules.append(f"&sum{{ {elements} }} <= {_number(high)} :- {head}{switch}.")
     if low != -math.inf:
@@ -196,6 +215,7 @@ class ContinuousPlanner(Planner):
             from clingolpx import ClingoLPXTheory
 
             theory = ClingoLPXTheory()
+            program = program.replace("&prefer{", "&sum{")  # clingo-lpx has no preferences: they bind
             for key, value in self.settings.lpx_options:
                 theory.configure(key, value)
         else:
@@ -211,13 +231,16 @@ class ContinuousPlanner(Planner):
     def plans(self, limit: int | None = 1) -> Iterator[Plan]:
         deadline = time.monotonic() + self.settings.time_limit
         try:
-            earliest = self.needed_horizon(deadline)
+            window = self.window(deadline)
+            earliest = self.needed_horizon(deadline, window)
             control = self._control(self.base_program, self.state_program)
             theory = self._theories[control]
-            for horizon in range(self.settings.max_horizon + 1):
-                self._advance(control, horizon)
-                if horizon < earliest:
-                    continue
+            self._advance_to(control, earliest)
+            for horizon in range(earliest, self.settings.max_horizon + 1):
+                if horizon > earliest:
+                    if window.last_open(self.settings.max_horizon) is not None and horizon > window.last_open(self.settings.max_horizon) + 1:
+                        break  # no run of the automaton lasts this long: no longer plan either
+                    self._advance(control, horizon)
                 with control.solve(yield_=True, async_=True) as handle:
                     self._wait(handle, deadline, f"planning ran out of its time limit ({self.settings.time_limit:g} s) at horizon {horizon}")
                     model = handle.model()
@@ -229,7 +252,11 @@ class ContinuousPlanner(Planner):
                 self.stats["horizon"] = horizon
                 yield self._continuous_plan(symbols, values, horizon)
                 return
-            raise NoPlanError(f"no plan satisfies the scenario within {self.settings.max_horizon} steps ({self.settings.max_horizon * self.settings.dt:g} s)")
+            last_open = window.last_open(self.settings.max_horizon)
+            if last_open is None:
+                raise NoPlanError(f"no plan satisfies the scenario within {self.settings.max_horizon} steps ({self.settings.max_horizon * self.settings.dt:g} s)")
+            dt = self.settings.dt
+            raise NoPlanError(f"no plan satisfies the scenario in any length its durations allow ({earliest * dt:g}..{(last_open + 1) * dt:g} s)")
         except (PlanningTimeout, HorizonTooShort):
             raise
         except NoPlanError as error:

@@ -14,6 +14,9 @@ horizons (more steps only add variables and constraints), so it is kept for the 
 
 The plan itself comes from one more linear program over the accepted choices, which minimises
 the sum of the absolute accelerations and their changes: smooth plans a motion planner follows.
+Preferences (``&prefer{ ... } <= k``, same syntax) never decide feasibility; that last program
+pays ``PREFERENCE_WEIGHT`` per unit by which it misses one (a start speed a scenario leaves open
+lies at highway speeds, but a scenario that asks for 200 kph at its start still gets it).
 
 Semantics as clingo-lpx's default (non-strict): a true theory atom's constraint must hold; a
 false one says nothing.
@@ -37,12 +40,16 @@ from scipy.sparse import csr_matrix, hstack, identity, vstack
 THEORY = """
 #theory lpx {
     term { - : 3, unary; * : 2, binary, left };
-    &sum/0 : term, {<=, >=, =}, term, any
+    &sum/0 : term, {<=, >=, =}, term, any;
+    &prefer/0 : term, {<=, >=, =}, term, any
 }.
 """
 
 # HiGHS's feasibility tolerance is 1e-7; a violation cost above this counts as a conflict
 INFEASIBLE = 1e-6
+# the smoothing program's cost per unit a preference is missed by, against 1 per m/s^2 of
+# acceleration or of its change per step: a preference gives way only to what no plan avoids
+PREFERENCE_WEIGHT = 100.0
 
 
 @dataclass
@@ -63,6 +70,8 @@ class LinearProgram:
     symbols: list[clingo.Symbol] = field(default_factory=list)
     always: list[Row] = field(default_factory=list)
     switched: dict[int, list[Row]] = field(default_factory=lambda: defaultdict(list))
+    # preferences, by the literal that switches them on (0: always)
+    preferred: dict[int, list[Row]] = field(default_factory=lambda: defaultdict(list))
 
     def variable(self, symbol: clingo.Symbol) -> int:
         key = str(symbol)
@@ -129,12 +138,15 @@ class LazyLinearPropagator:
         # last one only (clingo drops a step's theory data after solving): the program grows
         program = self.program
         for atom in init.theory_atoms:
-            if atom.term.name != "sum" or (key := f"{atom.literal}:{atom}") in self.seen:
+            if atom.term.name not in ("sum", "prefer") or (key := f"{atom.literal}:{atom}") in self.seen:
                 continue
             self.seen.add(key)
             literal = init.solver_literal(atom.literal)
             rows = _rows(atom, program)
-            if init.assignment.is_true(literal):
+            if atom.term.name == "prefer":
+                if not init.assignment.is_false(literal):
+                    program.preferred[0 if init.assignment.is_true(literal) else literal].extend(rows)
+            elif init.assignment.is_true(literal):
                 program.always.extend(rows)
             elif not init.assignment.is_false(literal):
                 program.switched[literal].extend(rows)
@@ -200,12 +212,19 @@ def check_rows(program: LinearProgram, on: list[int]) -> tuple[list[int] | None,
         if result.status != 0:
             return sorted(set(on)), None
     rows = inequalities + [(row, 0) for row, _ in elastic]
-    return None, smooth(program, rows, equalities)
+    preferred = [row for literal in (0, *on) for row in program.preferred.get(literal, ())]
+    return None, smooth(program, rows, equalities, preferred)
 
 
-def smooth(program: LinearProgram, inequalities, equalities) -> np.ndarray | None:
+def _split(rows: list[Row]) -> list[Row]:
+    """Equalities as two inequalities."""
+    return [half for row in rows for half in ((row, Row({k: -c for k, c in row.coefficients.items()}, -row.bound)) if row.equal else (row,))]
+
+
+def smooth(program: LinearProgram, inequalities, equalities, preferred: list[Row] = ()) -> np.ndarray | None:
     """A solution that minimises the absolute accelerations and their changes (variables named
-    ``a(V,t)``), among all that meet the constraints."""
+    ``a(V,t)``) and what the preferences are missed by (``PREFERENCE_WEIGHT`` each), among all
+    that meet the constraints."""
     n = len(program.symbols)
     accelerations = [(i, s) for i, s in enumerate(program.symbols) if s.name == "a"]
     index = {(str(s.arguments[0]), s.arguments[1].number): i for i, s in accelerations}
@@ -221,10 +240,15 @@ def smooth(program: LinearProgram, inequalities, equalities) -> np.ndarray | Non
             coefficients = {i: sign * c for i, c in expression.items()}
             coefficients[n + j] = -1.0
             extra.append((Row(coefficients, 0.0), 0))
+    # a preference row r: r.x - s <= r.bound with s >= 0 at PREFERENCE_WEIGHT
+    for j, row in enumerate(_split(list(preferred))):
+        extra.append((Row({**row.coefficients, n + k + j: -1.0}, row.bound), 0))
+    weights = [1.0] * k + [PREFERENCE_WEIGHT] * (len(extra) - 2 * k)
+    k = len(weights)
     extra_ub, extra_b = _matrix(extra, n + k)
     a_ub = vstack([hstack([ub, csr_matrix((ub.shape[0], k))]), extra_ub], format="csr")
     a_eq = hstack([eq, csr_matrix((eq.shape[0], k))], format="csr")
-    cost = np.concatenate([np.zeros(n), np.ones(k)])
+    cost = np.concatenate([np.zeros(n), weights])
     result = linprog(cost, A_ub=a_ub, b_ub=np.concatenate([b, extra_b]), A_eq=a_eq, b_eq=eq_b,
                      bounds=[(None, None)] * n + [(0, None)] * k, method="highs")
     return result.x[:n] if result.status == 0 else None
