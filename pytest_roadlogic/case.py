@@ -31,6 +31,7 @@ class Case:
     values: dict[str, Any] = field(default_factory=dict)  # the sample (refined strategy)
     instance: int = 0  # which of the planner's instances, from 0 (base strategy)
     lanes: int | None = None
+    encoding: str | None = None  # None in case files older than the continuous encoding: the grid
     max_horizon: int | None = None
     planning_time_limit: float | None = None
     simulation_time_limit: float | None = None
@@ -42,7 +43,7 @@ class Case:
         """The case of ``scenario`` in ``path`` under ``settings``; ``identity`` gives the strategy,
         the values (refined) or the instance (base)."""
         return cls(
-            path=str(path), scenario=scenario, seed=settings.seed, lanes=settings.lanes, max_horizon=settings.max_horizon,
+            path=str(path), scenario=scenario, seed=settings.seed, lanes=settings.lanes, encoding=settings.encoding, max_horizon=settings.max_horizon,
             planning_time_limit=settings.planning_time_limit, simulation_time_limit=settings.simulation_time_limit,
             max_tries=settings.tries, simulator=settings.simulator, **identity,
         )
@@ -51,7 +52,7 @@ class Case:
         """The run settings this case was made under (defaults where an older case file is silent)."""
         given = {
             "seed": self.seed, "strategy": self.strategy, "lanes": self.lanes, "max_horizon": self.max_horizon,
-            "planning_time_limit": self.planning_time_limit, "simulation_time_limit": self.simulation_time_limit,
+            "encoding": self.encoding or "grid", "planning_time_limit": self.planning_time_limit, "simulation_time_limit": self.simulation_time_limit,
             "tries": self.max_tries, "simulator": self.simulator,
         }
         return RunSettings(**{k: v for k, v in given.items() if v is not None})
@@ -87,7 +88,7 @@ class Case:
             parts += ["--strategy", BASE, "--instance", str(self.instance)]
         if self.values:
             parts += ["--values", json.dumps(self.values, sort_keys=True)]
-        for option, value in (("--lanes", self.lanes), ("--horizon", self.max_horizon), ("--tries", self.max_tries)):
+        for option, value in (("--lanes", self.lanes), ("--encoding", None if self.encoding == "continuous" else self.encoding or "grid"), ("--horizon", self.max_horizon), ("--tries", self.max_tries)):
             if value is not None:
                 parts += [option, str(value)]
         if self.simulator != DEFAULT_SIMULATOR:

@@ -1,7 +1,7 @@
 """The ``roadlogic`` command.
 
     roadlogic run FILE.osc [--scenario NAME] [--seed S] [--out DIR] [--lanes N] [--tries N] [--instances N | --values JSON]
-                  [--horizon N] [--plan-timeout S] [--sim-timeout S] [--simulator NAME]
+                  [--encoding continuous|grid] [--horizon N] [--plan-timeout S] [--sim-timeout S] [--simulator NAME]
     roadlogic check PATH... [--syntax-only] [--lanes N]
     roadlogic automaton FILE.osc [--scenario NAME] [--out FILE.dot] [--lanes N]
     roadlogic plan FILE.osc [--scenario NAME] [--plans N] [--seed S] [--lanes N] [--show-asp]
@@ -36,7 +36,7 @@ from .simulation.backends import UnknownSimulator
 EXIT_ACCEPTED, EXIT_REJECTED, EXIT_INPUT = 0, 1, 2
 LANES_HELP = "lanes of the road (default: from the scenario: its path_min_driving_lanes/path_max_lanes and the lanes it names, at least 3)"
 # the run settings each command takes, as flags read from settings.OPTIONS
-RUN_FLAGS = ("seed", "tries", "horizon", "plan-timeout", "sim-timeout", "simulator")
+RUN_FLAGS = ("seed", "tries", "encoding", "horizon", "plan-timeout", "sim-timeout", "simulator")
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -64,7 +64,7 @@ def main(argv: list[str] | None = None) -> int:
     automaton.add_argument("--out", type=Path, default=None, help="the DOT file to write (default: <scenario>.dot)")
     plan = _scenario_command(commands, "plan", "solve a scenario's planning problem and print the plans as tables")
     plan.add_argument("--plans", type=int, default=1, help="how many plans to enumerate (default 1)")
-    _run_flags(plan, ("seed", "horizon", "plan-timeout"))
+    _run_flags(plan, ("seed", "encoding", "horizon", "plan-timeout"))
     plan.add_argument("--show-asp", action="store_true", help="also print the generated instance program")
     bench = commands.add_parser("bench", help="the paper's evaluation (RQ1 time and conformance, RQ2 diversity): results, plots and report.md")
     bench.add_argument("paths", type=Path, nargs="*", default=[Path("scenarios")], help=".osc files or folders (default: scenarios/)")
@@ -136,12 +136,12 @@ def _scenario_command(commands, name: str, help: str) -> argparse.ArgumentParser
 
 
 def _plan(args: argparse.Namespace) -> int:
-    from .planning import Planner
+    from .planning import planner_for
 
     def solve():
         scenario, automaton = _load_automaton(args)
         settings = _run_settings(args)
-        planner = Planner(automaton, settings.planning(), settings.seed)
+        planner = planner_for(automaton, settings.planning(), settings.seed)
         if args.show_asp:
             print(planner.instance_program())
         started = time.perf_counter()

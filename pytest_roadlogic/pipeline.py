@@ -14,11 +14,16 @@ import time
 from collections.abc import Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from .automaton import SymbolicAutomaton, build_automaton
 from .frontend import CheckedScenario, load_file
 from .monitor import Verdict, monitor
 from .planning import Plan, PlanningSettings
+from .settings import RunSettings
+
+if TYPE_CHECKING:
+    from .planning.continuous import ContinuousSettings
 from .sampling import guided, sample_seed
 from .settings import DEFAULT_SIM_TIMEOUT
 from .simulation import DriverFactory, Simulation, SimulationLimits, Simulator
@@ -51,7 +56,7 @@ def load_scenario(path: str | Path, name: str | None = None, lanes: int | None =
 def run_scenario(
     scenario: CheckedScenario,
     seed: int = 1,
-    settings: PlanningSettings | None = None,
+    settings: PlanningSettings | ContinuousSettings | None = None,
     max_tries: int = MAX_TRIES,
     drivers: DriverFactory | None = None,
     values: dict[str, object] | None = None,
@@ -75,7 +80,7 @@ def run_instances(
     scenario: CheckedScenario,
     count: int,
     seed: int = 1,
-    settings: PlanningSettings | None = None,
+    settings: PlanningSettings | ContinuousSettings | None = None,
     max_tries: int = MAX_TRIES,
     drivers: DriverFactory | None = None,
     values: dict[str, object] | None = None,
@@ -88,10 +93,10 @@ def run_instances(
     early when the planner has no further plan. Planning errors (no plan, a timeout) and
     ``SimulationTimeout`` propagate.
     """
-    from .planning import Planner
+    from .planning import planner_for
     from .simulation.backends import simulator as default_simulator
 
-    settings = settings or PlanningSettings()
+    settings = settings or RunSettings().planning()  # the default encoding's
     simulator = simulator or default_simulator()
     limits = SimulationLimits(time_limit=simulation_time_limit)
     start = time.perf_counter()
@@ -104,7 +109,7 @@ def run_instances(
         settings = dataclasses.replace(settings, random_start=True)
         seed = sample_seed(seed, values)
     automaton_seconds = time.perf_counter() - start
-    planner = Planner(guide, settings, seed)
+    planner = planner_for(guide, settings, seed)
     plans = planner.plans(limit=count * max_tries)
     for instance in range(count):
         seconds = {"automaton": automaton_seconds, "planning": 0.0, "simulation": 0.0, "monitoring": 0.0}

@@ -16,7 +16,10 @@ from typing import Any
 
 REFINED, BASE = "refined", "base"
 STRATEGIES = (REFINED, BASE)
-DEFAULT_HORIZON = 25  # planning steps (of 1 s)
+CONTINUOUS, GRID = "continuous", "grid"
+ENCODINGS = (CONTINUOUS, GRID)
+DEFAULT_HORIZON = 25  # planning steps (of 1 s) of the grid encoding
+CONTINUOUS_HORIZON = 120  # of the continuous one: two minutes of scenario time
 DEFAULT_PLAN_TIMEOUT = 60.0  # seconds per planning
 DEFAULT_SIM_TIMEOUT = 120.0  # seconds (wall clock) per simulation
 DEFAULT_SIMULATOR = "frenetix"
@@ -67,6 +70,19 @@ lane_count = whole_number(1, "a lane count")
 count = whole_number(0, "an instance count")
 
 
+def encoding(text: str) -> str:
+    if text not in ENCODINGS:
+        raise OptionError(f"{text!r} is not a planning encoding; give {' or '.join(ENCODINGS)}")
+    return text
+
+
+def horizon_or_none(text: str | None) -> int | None:
+    """A horizon limit from 1 step up, or nothing (the encoding's own)."""
+    if text is None or not str(text).strip():
+        return None
+    return whole_number(1, "a planning horizon")(str(text))
+
+
 def strategy(text: str) -> str:
     if text not in STRATEGIES:
         raise OptionError(f"{text!r} is not a strategy; give {' or '.join(STRATEGIES)}")
@@ -101,7 +117,9 @@ OPTIONS = (
     Option("seed", "seed", seed, 1, "fixes sampling, planning and simulation"),
     Option("tries", "tries", whole_number(1, "a number of tries"), 5, "plans to try per case when the monitor rejects the simulation"),
     Option("lanes", "lanes", lanes_or_none, None, "lanes of the road for every scenario (default: each scenario's own)"),
-    Option("horizon", "max_horizon", whole_number(1, "a planning horizon"), DEFAULT_HORIZON, "planning horizon limit in steps of 1 s"),
+    Option("encoding", "encoding", encoding, CONTINUOUS,
+           "continuous: real-valued speeds and positions (asp/continuous.lp); grid: the paper's integer grid with a run-up from standstill"),
+    Option("horizon", "max_horizon", horizon_or_none, None, f"planning horizon limit in steps of 1 s (default: {CONTINUOUS_HORIZON} continuous, {DEFAULT_HORIZON} grid)"),
     Option("plan-timeout", "planning_time_limit", seconds, DEFAULT_PLAN_TIMEOUT, "seconds one planning may take"),
     Option("sim-timeout", "simulation_time_limit", seconds, DEFAULT_SIM_TIMEOUT, "seconds (wall clock) one simulation may take"),
     Option("simulator", "simulator", name, DEFAULT_SIMULATOR, "the simulation backend (frenetix, or one a package registers)"),
@@ -118,7 +136,8 @@ class RunSettings:
     seed: int = 1
     tries: int = 5
     lanes: int | None = None
-    max_horizon: int = DEFAULT_HORIZON
+    encoding: str = CONTINUOUS
+    max_horizon: int | None = None  # the encoding's own
     planning_time_limit: float = DEFAULT_PLAN_TIMEOUT
     simulation_time_limit: float = DEFAULT_SIM_TIMEOUT
     simulator: str = DEFAULT_SIMULATOR
@@ -139,7 +158,11 @@ class RunSettings:
         return cls(**values)
 
     def planning(self, explain_unsatisfiable: bool = True):
-        """The planner's settings for this run (``PlanningSettings``)."""
-        from .planning.instance import PlanningSettings
+        """The planner's settings for this run: ``ContinuousSettings`` or the grid's ``PlanningSettings``."""
+        if self.encoding == GRID:
+            from .planning.instance import PlanningSettings
 
-        return PlanningSettings(max_horizon=self.max_horizon, time_limit=self.planning_time_limit, explain_unsatisfiable=explain_unsatisfiable)
+            return PlanningSettings(max_horizon=self.max_horizon or DEFAULT_HORIZON, time_limit=self.planning_time_limit, explain_unsatisfiable=explain_unsatisfiable)
+        from .planning.continuous import ContinuousSettings
+
+        return ContinuousSettings(max_horizon=self.max_horizon or CONTINUOUS_HORIZON, time_limit=self.planning_time_limit, explain_unsatisfiable=explain_unsatisfiable)

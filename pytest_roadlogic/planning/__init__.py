@@ -12,6 +12,17 @@ from .plan import Plan, PlanState
 _SOLVER_NAMES = ("Planner", "background_theory", "check_satisfiable")
 
 
+def planner_for(automaton, settings, seed: int = 0):
+    """The planner of the encoding ``settings`` belong to: ``ContinuousSettings`` (asp/continuous.lp)
+    or the grid's ``PlanningSettings`` (asp/dynamics.lp)."""
+    from .continuous import ContinuousPlanner, ContinuousSettings
+    from .solver import Planner
+
+    if isinstance(settings, ContinuousSettings):
+        return ContinuousPlanner(automaton, settings, seed)
+    return Planner(automaton, settings, seed)
+
+
 def __getattr__(name: str):
     if name in _SOLVER_NAMES:
         from . import solver
@@ -20,4 +31,4 @@ def __getattr__(name: str):
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
-__all__ = ["HorizonTooShort", "NoPlanError", "Plan", "PlanState", "PlanningSettings", "PlanningTimeout", "UnsatisfiableScenario", "build_instance", *_SOLVER_NAMES]
+__all__ = ["HorizonTooShort", "NoPlanError", "Plan", "PlanState", "PlanningSettings", "PlanningTimeout", "UnsatisfiableScenario", "build_instance", "planner_for", *_SOLVER_NAMES]

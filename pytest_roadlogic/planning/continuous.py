@@ -15,7 +15,9 @@ diagnosis is inherited). Not yet here: further plans (exclusion, steering) and r
 
 from __future__ import annotations
 
+import dataclasses
 import math
+import random
 import time
 from collections.abc import Iterator
 from dataclasses import dataclass
@@ -27,7 +29,7 @@ from .linear import THEORY, LazyLinearTheory
 from .errors import HorizonTooShort, NoPlanError, PlanningTimeout
 from .instance import _atom, _bound_rule, _inset, _outside_rules, junction_rules, with_automaton
 from .plan import Plan, PlanState
-from .solver import ASP_DIR, Planner
+from .solver import ASP_DIR, Planner, check_satisfiable
 
 ENCODING = "continuous.lp"
 SHARED = ("automaton.lp",)
@@ -66,7 +68,19 @@ class ContinuousSettings:
     # leaves every horizon up to the limit to refute, 15 s at 120 steps, for a group that with it
     # names one constraint more (the duration) and is still true
     removal_time_limit: float | None = 1.0
-    random_start: bool = False  # not yet: the refined strategy's random preferences are the grid encoding's
+    # a random start (the refined strategy): start lanes and speeds the scenario leaves open are
+    # drawn from the seed (as preferences), not left to the solver's and the LP's habits
+    random_start: bool = False
+
+    def resolution(self) -> dict[str | None, float]:
+        """How wide a band a sampled value is narrowed to, per physical dimension: positions and
+        speeds are real-valued here, so the band is the planning margin's (the plan lies within a
+        quarter of it from the sample); durations still count whole steps."""
+        return {"length": 2 * self.position_margin, "speed": 2 * self.speed_margin, "time": self.dt, "acceleration": 0.5}
+
+    def margins(self) -> dict[str | None, float]:
+        """How far inside a range's edges the plan keeps, per physical dimension."""
+        return {"length": self.position_margin, "speed": self.speed_margin}
 
     def summary(self, lanes: int) -> str:
         """The vehicle limits and bounds on a road of ``lanes`` lanes, for messages that blame them."""
@@ -113,6 +127,20 @@ def build_continuous_instance(automaton: SymbolicAutomaton, settings: Continuous
         "",
     ]
     return with_automaton(base, automaton, s.dt, relaxable, lambda node, guard, numbering, switch: _guard_rules(node, guard, numbering, s, switch))
+
+
+def start_preferences(automaton: SymbolicAutomaton, settings: ContinuousSettings, draw: random.Random) -> str:
+    """A random start's draws, in a fixed order so that one seed gives one set: per vehicle a
+    preferred start lane (a sign heuristic) and, for a driving one, a preferred start speed (a
+    preference of the linear program, which a scenario's own speeds override)."""
+    low, high = max(settings.initial_speed[0], settings.min_speed), min(settings.initial_speed[1], settings.max_speed)
+    rules = []
+    for vehicle in automaton.actors:
+        name = _atom(vehicle)
+        rules.append(f"#heuristic lane({name},{draw.randrange(automaton.lanes)},0). [2,true]")
+        if vehicle not in automaton.stationary:
+            rules.append(f"&prefer{{ v({name},0) }} = {_number(round(draw.uniform(low, high), 1))}.")
+    return "\n".join(rules) + "\n"
 
 
 def stopping(automaton: SymbolicAutomaton, settings: ContinuousSettings) -> set[str]:
@@ -197,7 +225,10 @@ class ContinuousPlanner(Planner):
     """
 
     def __init__(self, automaton: SymbolicAutomaton, settings: ContinuousSettings | None = None, seed: int = 0) -> None:
-        super().__init__(automaton, settings or ContinuousSettings(), seed)  # type: ignore[arg-type]
+        super().__init__(automaton, dataclasses.replace(settings or ContinuousSettings(), random_start=False), seed)  # type: ignore[arg-type]
+        self.settings = settings or ContinuousSettings()
+        if self.settings.random_start:
+            self.preferences = start_preferences(automaton, self.settings, random.Random(seed))
 
     def _instance(self, settings, relaxable: bool = False) -> tuple[str, str]:
         return build_continuous_instance(self.automaton, settings, relaxable)
@@ -223,34 +254,44 @@ class ContinuousPlanner(Planner):
             program = THEORY + program
         theory.register(control)
         self._theories[control] = theory
-        program += "\n#program base.\n" + base_program + "\n#program state(t).\n" + state_program
+        program += "\n#program base.\n" + base_program + "\n" + self.preferences + "\n#program state(t).\n" + state_program
         with ProgramBuilder(control) as builder:
             parse_string(program, lambda statement: theory.rewrite_ast(statement, builder.add))
         return control
 
-    def plans(self, limit: int | None = 1) -> Iterator[Plan]:
+    def plans(self, limit: int | None = None) -> Iterator[Plan]:
+        """Plans, shortest horizon first; each next one differs from all before it in when a
+        transition fires or in a lane (the linear program then gives its smoothest motion)."""
+        check_satisfiable(self.automaton)
         deadline = time.monotonic() + self.settings.time_limit
+        found = 0
         try:
             window = self.window(deadline)
             earliest = self.needed_horizon(deadline, window)
             control = self._control(self.base_program, self.state_program)
             theory = self._theories[control]
             self._advance_to(control, earliest)
-            for horizon in range(earliest, self.settings.max_horizon + 1):
-                if horizon > earliest:
-                    if window.last_open(self.settings.max_horizon) is not None and horizon > window.last_open(self.settings.max_horizon) + 1:
-                        break  # no run of the automaton lasts this long: no longer plan either
-                    self._advance(control, horizon)
+            horizon = earliest
+            while limit is None or found < limit:
                 with control.solve(yield_=True, async_=True) as handle:
                     self._wait(handle, deadline, f"planning ran out of its time limit ({self.settings.time_limit:g} s) at horizon {horizon}")
                     model = handle.model()
-                    if model is None:
-                        continue
-                    theory.on_model(model)
-                    symbols = list(model.symbols(shown=True))
-                    values = {str(key): value for key, value in theory.assignment(model.thread_id)}
+                    if model is not None:
+                        theory.on_model(model)
+                        symbols = list(model.symbols(shown=True))
+                        values = {str(key): value for key, value in theory.assignment(model.thread_id)}
+                if model is None:
+                    last_open = window.last_open(self.settings.max_horizon)
+                    if horizon >= self.settings.max_horizon or (last_open is not None and horizon > last_open):
+                        break  # no run of the automaton lasts longer: no longer plan either
+                    horizon += 1
+                    self._advance(control, horizon)
+                    continue
                 self.stats["horizon"] = horizon
-                yield self._continuous_plan(symbols, values, horizon)
+                yield self._continuous_plan(symbols, values, horizon, found)
+                found += 1
+                self._exclude_choices(control, symbols, found)
+            if found:
                 return
             last_open = window.last_open(self.settings.max_horizon)
             if last_open is None:
@@ -264,7 +305,14 @@ class ContinuousPlanner(Planner):
                 raise
             self._explain(error, deadline)
 
-    def _continuous_plan(self, symbols, values: dict[str, object], horizon: int) -> Plan:
+    def _exclude_choices(self, control, symbols, count: int) -> None:
+        """Never these transition times and lanes together again."""
+        literals = [str(s) for s in symbols if s.name in ("fire", "lane")]
+        name = f"exclude_{count}"
+        control.add(name, [], ":- " + ", ".join(literals) + ".")
+        self._ground(control, [(name, [])])
+
+    def _continuous_plan(self, symbols, values: dict[str, object], horizon: int, index: int = 0) -> Plan:
         lanes: dict[tuple[str, int], int] = {}
         transitions = []
         for symbol in symbols:
@@ -283,5 +331,5 @@ class ContinuousPlanner(Planner):
             v: [PlanState(position=value("p", v, k), lane=lanes[(v, k)], speed=value("v", v, k)) for k in range(horizon + 1)]
             for v in self.automaton.actors
         }
-        return Plan(dt=self.settings.dt, lanes=self.automaton.lanes, states=states, transitions=sorted(transitions), seed=self.seed,
+        return Plan(dt=self.settings.dt, lanes=self.automaton.lanes, states=states, transitions=sorted(transitions), seed=self.seed, index=index,
                     stats=dict(self.stats), runup=0.0, stationary=tuple(v for v in self.automaton.actors if v in self.automaton.stationary))
