@@ -50,6 +50,9 @@ class ContinuousSettings:
     initial_speed: tuple[float, float] = (8.0, 40.0)
     lane_change_speed: float = 5.0  # m/s at least while changing lane
     min_gap: float = 8.0  # m between the centres of two vehicles sharing a lane
+    # s: and more, by this many seconds of the speed at which the one behind closes in (a follower
+    # 15 m behind at +15 m/s is a collision in the simulation, not a gap)
+    closing_time: float = 1.0
     lane_change_gap: int = 3  # steps from one lane change of a vehicle to its next
     spread: float = 300.0  # m from the first vehicle within which the others start
     position_margin: float = 1.5  # m planned inside each side of a position range, when it fits
@@ -115,6 +118,7 @@ def build_continuous_instance(automaton: SymbolicAutomaton, settings: Continuous
         f"#const v0min = {_number(max(s.initial_speed[0], s.min_speed))}.",
         f"#const v0max = {_number(min(s.initial_speed[1], s.max_speed))}.",
         f"#const gap = {_number(s.min_gap)}.",
+        f"#const closing_time = {_number(s.closing_time)}.",
         f"#const lane_change_speed = {_number(s.lane_change_speed)}.",
         f"#const spread = {_number(s.spread)}.",
         f"#const first_vehicle = {_atom(vehicles[0])}.",
@@ -139,7 +143,7 @@ def start_preferences(automaton: SymbolicAutomaton, settings: ContinuousSettings
         name = _atom(vehicle)
         rules.append(f"#heuristic lane({name},{draw.randrange(automaton.lanes)},0). [2,true]")
         if vehicle not in automaton.stationary:
-            rules.append(f"&prefer{{ v({name},0) }} = {_number(round(draw.uniform(low, high), 1))}.")
+            rules.append(f"&nudge{{ v({name},0) }} = {_number(round(draw.uniform(low, high), 1))}.")
     return "\n".join(rules) + "\n"
 
 
@@ -247,6 +251,7 @@ class ContinuousPlanner(Planner):
 
             theory = ClingoLPXTheory()
             program = program.replace("&prefer{", "&sum{")  # clingo-lpx has no preferences: they bind
+            program = "\n".join(line for line in program.splitlines() if not line.startswith("&nudge"))
             for key, value in self.settings.lpx_options:
                 theory.configure(key, value)
         else:

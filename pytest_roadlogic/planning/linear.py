@@ -14,8 +14,8 @@ horizons (more steps only add variables and constraints), so it is kept for the 
 
 The plan itself comes from one more linear program over the accepted choices, which minimises
 the sum of the absolute accelerations and their changes: smooth plans a motion planner follows.
-Preferences (``&prefer{ ... } <= k``, same syntax) never decide feasibility; that last program
-pays ``PREFERENCE_WEIGHT`` per unit by which it misses one (a start speed a scenario leaves open
+Preferences (``&prefer{ ... } <= k``, same syntax; ``&nudge`` for weak ones) never decide
+feasibility; that last program pays ``PREFERENCE_WEIGHT`` (``NUDGE_WEIGHT``) per unit by which it misses one (a start speed a scenario leaves open
 lies at highway speeds, but a scenario that asks for 200 kph at its start still gets it).
 
 Semantics as clingo-lpx's default (non-strict): a true theory atom's constraint must hold; a
@@ -41,7 +41,8 @@ THEORY = """
 #theory lpx {
     term { - : 3, unary; * : 2, binary, left };
     &sum/0 : term, {<=, >=, =}, term, any;
-    &prefer/0 : term, {<=, >=, =}, term, any
+    &prefer/0 : term, {<=, >=, =}, term, any;
+    &nudge/0 : term, {<=, >=, =}, term, any
 }.
 """
 
@@ -50,6 +51,11 @@ INFEASIBLE = 1e-6
 # the smoothing program's cost per unit a preference is missed by, against 1 per m/s^2 of
 # acceleration or of its change per step: a preference gives way only to what no plan avoids
 PREFERENCE_WEIGHT = 100.0
+# a nudge (``&nudge``, a random start's draws) weighs less than an acceleration: it spreads plans
+# where the scenario leaves them free, and never buys itself a hard brake (measured: drawn start
+# speeds at PREFERENCE_WEIGHT made change_lane's plans brake at -8 m/s^2 from the first instant)
+NUDGE_WEIGHT = 0.1
+WEIGHTS = {"prefer": PREFERENCE_WEIGHT, "nudge": NUDGE_WEIGHT}
 
 
 @dataclass
@@ -70,8 +76,8 @@ class LinearProgram:
     symbols: list[clingo.Symbol] = field(default_factory=list)
     always: list[Row] = field(default_factory=list)
     switched: dict[int, list[Row]] = field(default_factory=lambda: defaultdict(list))
-    # preferences, by the literal that switches them on (0: always)
-    preferred: dict[int, list[Row]] = field(default_factory=lambda: defaultdict(list))
+    # preferences with their weights, by the literal that switches them on (0: always)
+    preferred: dict[int, list[tuple[Row, float]]] = field(default_factory=lambda: defaultdict(list))
 
     def variable(self, symbol: clingo.Symbol) -> int:
         key = str(symbol)
@@ -138,14 +144,14 @@ class LazyLinearPropagator:
         # last one only (clingo drops a step's theory data after solving): the program grows
         program = self.program
         for atom in init.theory_atoms:
-            if atom.term.name not in ("sum", "prefer") or (key := f"{atom.literal}:{atom}") in self.seen:
+            if atom.term.name not in ("sum", *WEIGHTS) or (key := f"{atom.literal}:{atom}") in self.seen:
                 continue
             self.seen.add(key)
             literal = init.solver_literal(atom.literal)
             rows = _rows(atom, program)
-            if atom.term.name == "prefer":
+            if atom.term.name in WEIGHTS:
                 if not init.assignment.is_false(literal):
-                    program.preferred[0 if init.assignment.is_true(literal) else literal].extend(rows)
+                    program.preferred[0 if init.assignment.is_true(literal) else literal].extend((row, WEIGHTS[atom.term.name]) for row in rows)
             elif init.assignment.is_true(literal):
                 program.always.extend(rows)
             elif not init.assignment.is_false(literal):
@@ -221,7 +227,7 @@ def _split(rows: list[Row]) -> list[Row]:
     return [half for row in rows for half in ((row, Row({k: -c for k, c in row.coefficients.items()}, -row.bound)) if row.equal else (row,))]
 
 
-def smooth(program: LinearProgram, inequalities, equalities, preferred: list[Row] = ()) -> np.ndarray | None:
+def smooth(program: LinearProgram, inequalities, equalities, preferred: list[tuple[Row, float]] = ()) -> np.ndarray | None:
     """A solution that minimises the absolute accelerations and their changes (variables named
     ``a(V,t)``) and what the preferences are missed by (``PREFERENCE_WEIGHT`` each), among all
     that meet the constraints."""
@@ -240,10 +246,11 @@ def smooth(program: LinearProgram, inequalities, equalities, preferred: list[Row
             coefficients = {i: sign * c for i, c in expression.items()}
             coefficients[n + j] = -1.0
             extra.append((Row(coefficients, 0.0), 0))
-    # a preference row r: r.x - s <= r.bound with s >= 0 at PREFERENCE_WEIGHT
-    for j, row in enumerate(_split(list(preferred))):
+    # a preference row r: r.x - s <= r.bound with s >= 0 at the preference's weight
+    halves = [(half, weight) for row, weight in preferred for half in _split([row])]
+    for j, (row, _) in enumerate(halves):
         extra.append((Row({**row.coefficients, n + k + j: -1.0}, row.bound), 0))
-    weights = [1.0] * k + [PREFERENCE_WEIGHT] * (len(extra) - 2 * k)
+    weights = [1.0] * k + [weight for _, weight in halves]
     k = len(weights)
     extra_ub, extra_b = _matrix(extra, n + k)
     a_ub = vstack([hstack([ub, csr_matrix((ub.shape[0], k))]), extra_ub], format="csr")
