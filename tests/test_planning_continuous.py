@@ -8,7 +8,8 @@ import pytest
 
 from pytest_roadlogic.automaton import build_automaton
 from pytest_roadlogic.pipeline import load_scenario
-from pytest_roadlogic.planning.continuous import ContinuousPlanner, ContinuousSettings
+from pytest_roadlogic.planning import NoPlanError, UnsatisfiableScenario
+from pytest_roadlogic.planning.continuous import ContinuousPlanner, ContinuousSettings, stopping
 from tests.test_planning import check_run
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -17,11 +18,16 @@ SETTINGS = ContinuousSettings()
 
 def check_continuous_plan(plan, automaton, settings=SETTINGS):
     dt = plan.dt
+    may_stop = stopping(automaton, settings)
     for v in plan.vehicles:
         states = plan.states[v]
         changes = [k for k in range(1, len(states)) if states[k].lane != states[k - 1].lane]
+        least = 0.0 if v in may_stop or v in plan.stationary else settings.min_speed
+        if v not in plan.stationary and len(states) > 1:
+            first = (states[1].speed - states[0].speed) / dt
+            assert abs(first) <= settings.max_jerk * dt + 1e-6, f"{v} starts with acceleration {first}: the simulation starts without one"
         for k, s in enumerate(states):
-            assert settings.min_speed - 1e-6 <= s.speed <= settings.max_speed + 1e-6, f"{v} speed {s.speed} at {k}"
+            assert least - 1e-6 <= s.speed <= settings.max_speed + 1e-6, f"{v} speed {s.speed} at {k}"
             assert 0 <= s.lane < automaton.lanes
             if k:
                 p = states[k - 1]
@@ -45,7 +51,11 @@ def check_continuous_plan(plan, automaton, settings=SETTINGS):
                 lanes_a = {plan.at(a, k).lane} | ({plan.at(a, k - 1).lane} if k else set())
                 lanes_b = {plan.at(b, k).lane} | ({plan.at(b, k - 1).lane} if k else set())
                 if lanes_a & lanes_b:
-                    assert abs(plan.at(a, k).position - plan.at(b, k).position) >= settings.min_gap - 1e-6, f"{a} and {b} too close at {k}"
+                    front, back = sorted((a, b), key=lambda v: -plan.at(v, k).position)
+                    gap = plan.at(front, k).position - plan.at(back, k).position
+                    closing = plan.at(back, k).speed - plan.at(front, k).speed
+                    assert gap >= settings.min_gap - 1e-6, f"{a} and {b} too close at {k}"
+                    assert gap >= settings.min_gap + settings.closing_time * closing - 1e-6, f"{back} closes in on {front} too fast at {k}"
     check_run(plan, automaton)
 
 
@@ -84,3 +94,76 @@ def test_a_plan_without_a_run_up_is_simulated_from_its_first_state_and_can_be_ac
         assert trace.actors[vehicle]["x"][0] == pytest.approx(states[0].position)
         assert trace.actors[vehicle]["speed"][0] == pytest.approx(states[0].speed), "no standstill start: the scenario's first instant is the simulation's"
     assert monitor(automaton, trace).accepted
+
+
+def scenario_file(tmp_path, text):
+    path = tmp_path / "scenario.osc"
+    path.write_text("import osc.standard\n\n" + text)
+    return build_automaton(load_scenario(path))
+
+
+def test_further_plans_differ_in_their_timing_or_lanes_and_each_obeys_every_rule():
+    automaton = build_automaton(load_scenario(ROOT / "scenarios" / "overtake.osc"))
+    plans = list(ContinuousPlanner(automaton, SETTINGS, 1).plans(limit=4))
+    assert len(plans) == 4 and [p.index for p in plans] == [0, 1, 2, 3]
+    choices = [(tuple(p.transitions), tuple(s.lane for states in p.states.values() for s in states)) for p in plans]
+    assert len(set(choices)) == 4, "no plan repeats the transition times and lanes of one before it"
+    for plan in plans:
+        check_continuous_plan(plan, automaton)
+
+
+def test_a_vehicle_stops_when_the_scenario_asks_and_only_that_one(tmp_path):
+    automaton = scenario_file(tmp_path, """scenario stop:
+    ego: vehicle
+    lead: vehicle
+
+    do serial:
+        cruise: parallel(duration: [4s..6s]):
+            lead.drive() with:
+                lane(1)
+                speed([50kph..60kph])
+            ego.drive() with:
+                lane(same_as: lead)
+                position(distance: [30m..40m], behind: lead, at: start)
+        halt: parallel(duration: [5s..9s]):
+            lead.drive()
+            ego.change_speed(target: 0kph)
+""")
+    assert stopping(automaton, SETTINGS) == {"ego"}
+    plan = ContinuousPlanner(automaton, SETTINGS, 1).first()
+    check_continuous_plan(plan, automaton)
+    assert plan.states["ego"][-1].speed < 1.0, "braked to (nearly) a standstill"
+    assert min(s.speed for s in plan.states["lead"]) >= SETTINGS.min_speed, "the lead keeps moving"
+
+
+def test_a_start_speed_the_scenario_asks_for_is_never_refused_for_a_default(tmp_path):
+    # the default start speeds (8-40 m/s) are a preference: 200 kph at the start is 55.6 m/s
+    automaton = scenario_file(tmp_path, """scenario fast:
+    ego: vehicle
+
+    do ego.drive(duration: 5s) with:
+        speed(200kph, at: start)
+""")
+    plan = ContinuousPlanner(automaton, SETTINGS, 1).first()
+    assert plan.states["ego"][0].speed == pytest.approx(200 / 3.6, abs=1.0)
+
+
+def test_an_infeasible_timed_scenario_is_refuted_only_over_the_lengths_its_durations_allow():
+    automaton = build_automaton(load_scenario(ROOT / "benchmarks" / "realistic" / "infeasible_gain.osc"))
+    with pytest.raises(UnsatisfiableScenario) as caught:
+        ContinuousPlanner(automaton, SETTINGS, 1).first()
+    message = str(caught.value)
+    assert "any length its durations allow (3 s)" in message, "3 s +- the tolerance: 3 steps of 1 s, no other"
+    for line in (13, 16, 17, 18, 10):
+        assert f"infeasible_gain.osc:{line}:" in message, f"line {line}'s constraint clashes too: {message}"
+
+
+def test_a_random_start_draws_different_plans_from_different_seeds():
+    import dataclasses
+
+    automaton = build_automaton(load_scenario(ROOT / "scenarios" / "overtake.osc"))
+    settings = dataclasses.replace(SETTINGS, random_start=True)
+    starts = {tuple(round(states[0].speed, 3) for states in ContinuousPlanner(automaton, settings, seed).first().states.values()) for seed in range(1, 6)}
+    assert len(starts) >= 4
+    again = ContinuousPlanner(automaton, settings, 3).first()
+    assert again.states == ContinuousPlanner(automaton, settings, 3).first().states, "one seed, one plan"

@@ -301,8 +301,9 @@ class ContinuousPlanner(Planner):
             last_open = window.last_open(self.settings.max_horizon)
             if last_open is None:
                 raise NoPlanError(f"no plan satisfies the scenario within {self.settings.max_horizon} steps ({self.settings.max_horizon * self.settings.dt:g} s)")
-            dt = self.settings.dt
-            raise NoPlanError(f"no plan satisfies the scenario in any length its durations allow ({earliest * dt:g}..{(last_open + 1) * dt:g} s)")
+            dt, longest = self.settings.dt, last_open + 1
+            lengths = f"{earliest * dt:g} s" if longest <= earliest else f"{earliest * dt:g}..{longest * dt:g} s"
+            raise NoPlanError(f"no plan satisfies the scenario in any length its durations allow ({lengths})")
         except (PlanningTimeout, HorizonTooShort):
             raise
         except NoPlanError as error:

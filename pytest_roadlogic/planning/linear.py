@@ -219,7 +219,12 @@ def check_rows(program: LinearProgram, on: list[int]) -> tuple[list[int] | None,
             return sorted(set(on)), None
     rows = inequalities + [(row, 0) for row, _ in elastic]
     preferred = [row for literal in (0, *on) for row in program.preferred.get(literal, ())]
-    return None, smooth(program, rows, equalities, preferred)
+    solution = smooth(program, rows, equalities, preferred)
+    if solution is None:
+        # infeasible without any switched constraint to blame (the constraints that always hold
+        # clash: an empty nogood), or a numerical failure: never a model without values
+        return sorted(set(on)), None
+    return None, solution
 
 
 def _split(rows: list[Row]) -> list[Row]:
