@@ -1,6 +1,6 @@
 """The realistic scenarios as the planner and the pipeline meet them today: issue 17's benchmark.
 
-For every .osc file under benchmarks/realistic/ (the team's twelve, kept unchanged) prints one row:
+For every .osc file under scenarios/realistic/ (the team's twelve, kept unchanged) prints one row:
 whether the front end reads it (or its first error), whether its automaton builds, and for the base
 strategy the planning time to the first plan over --seeds (median and max, planning alone), how
 that planning ended, and how many first plans the simulation accepted.
@@ -29,7 +29,7 @@ from pytest_roadlogic.frontend import OscError, check_file  # noqa: E402
 from pytest_roadlogic.planning import NoPlanError, Planner, PlanningSettings, PlanningTimeout, UnsatisfiableScenario  # noqa: E402
 from pytest_roadlogic.planning.continuous import ContinuousPlanner, ContinuousSettings  # noqa: E402
 
-REALISTIC = ROOT / "benchmarks" / "realistic"
+REALISTIC = ROOT / "scenarios" / "realistic"
 
 
 def first_error(report: str) -> str:

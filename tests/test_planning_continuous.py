@@ -59,7 +59,7 @@ def check_continuous_plan(plan, automaton, settings=SETTINGS):
     check_run(plan, automaton)
 
 
-@pytest.mark.parametrize("path", [ROOT / "scenarios" / "overtake.osc", ROOT / "scenarios" / "overtake_third_actor.osc", ROOT / "benchmarks" / "realistic" / "cut_in.osc"], ids=lambda p: p.stem)
+@pytest.mark.parametrize("path", [ROOT / "scenarios" / "overtake.osc", ROOT / "scenarios" / "overtake_third_actor.osc", ROOT / "scenarios" / "realistic" / "cut_in.osc"], ids=lambda p: p.stem)
 @pytest.mark.parametrize("seed", [1, 2])
 def test_a_continuous_plan_obeys_the_limits_the_kinematics_and_the_guards(path, seed):
     automaton = build_automaton(load_scenario(path))
@@ -69,13 +69,13 @@ def test_a_continuous_plan_obeys_the_limits_the_kinematics_and_the_guards(path, 
 
 def test_speeds_are_not_on_a_grid():
     # cut_in asks for speeds in kph: whole m/s would be a coincidence, not a rule
-    automaton = build_automaton(load_scenario(ROOT / "benchmarks" / "realistic" / "cut_in.osc"))
+    automaton = build_automaton(load_scenario(ROOT / "scenarios" / "realistic" / "cut_in.osc"))
     plan = ContinuousPlanner(automaton, SETTINGS, 1).first()
     assert any(not float(s.speed).is_integer() for states in plan.states.values() for s in states)
 
 
 def test_no_horizon_shorter_than_the_durations_allow_is_searched():
-    automaton = build_automaton(load_scenario(ROOT / "benchmarks" / "realistic" / "follow_then_overtake.osc"))
+    automaton = build_automaton(load_scenario(ROOT / "scenarios" / "realistic" / "follow_then_overtake.osc"))
     import time
 
     assert ContinuousPlanner(automaton, SETTINGS, 1).earliest_horizon(time.monotonic() + 30) == 24, "10 + 3 + 8 + 3 s at least"
@@ -149,7 +149,7 @@ def test_a_start_speed_the_scenario_asks_for_is_never_refused_for_a_default(tmp_
 
 
 def test_an_infeasible_timed_scenario_is_refuted_only_over_the_lengths_its_durations_allow():
-    automaton = build_automaton(load_scenario(ROOT / "benchmarks" / "realistic" / "infeasible_gain.osc"))
+    automaton = build_automaton(load_scenario(ROOT / "scenarios" / "realistic" / "infeasible_gain.osc"))
     with pytest.raises(UnsatisfiableScenario) as caught:
         ContinuousPlanner(automaton, SETTINGS, 1).first()
     message = str(caught.value)
