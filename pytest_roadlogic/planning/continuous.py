@@ -1,16 +1,16 @@
-"""The continuous-dynamics encoding (``asp/continuous.lp``, clingo-lpx): a second planner, measured
-against the grid one on the realistic scenarios before it replaces it (issue 17).
+"""The continuous-dynamics encoding (``asp/continuous.lp``): the default planner since issue 17.
 
-Positions, speeds and accelerations are rationals in a linear program that clingo-lpx keeps
-consistent during the search; ASP decides the automaton's run (``asp/automaton.lp``, shared with
-the grid encoding), lanes, and the order of vehicles that share a lane. The instance is facts and
-constants, and one rule set per guard node as in ``instance.py``, here with ``&sum`` constraints for
-positions and speeds.
+Positions, speeds and accelerations are real numbers in linear constraints that ``linear.py``
+checks lazily with HiGHS (or clingo-lpx, ``theory="lpx"``, kept to compare); ASP decides the
+automaton's run (``asp/automaton.lp``, shared with the grid encoding), lanes, and the order of
+vehicles that share a lane. The instance is facts and constants, and one rule set per guard node
+as in ``instance.py``, here with ``&sum`` constraints for positions and speeds.
 
-Status: plans the first plan of a scenario, incrementally over the horizon from the first horizon
-the phases' durations allow, reads it back as a ``Plan`` (without a run-up: the simulation starts
-in its first state), and explains a scenario without a plan as the grid planner does (the
-diagnosis is inherited). Not yet here: further plans (exclusion, steering) and random starts.
+Plans come shortest first, within the window of horizons the durations allow (``window.py``);
+each further plan excludes the transition times and lanes of those before it; a random start
+draws start lanes and speeds as preferences. A plan has no run-up: the simulation starts in its
+first state. A scenario without a plan is explained as the grid planner does it (the diagnosis is
+inherited), over the window's horizons.
 """
 
 from __future__ import annotations
