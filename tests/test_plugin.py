@@ -40,7 +40,9 @@ def test_a_band_of_failing_values_shrinks_to_its_boundary_and_replays(pytester):
     # the middle car fits between back and front (30 m apart, 8 m between centres) only for gaps
     # up to 22.5 m (or from 38 m): Hypothesis must find the band and shrink to its lower edge
     copy(pytester, SQUEEZE)
-    result = pytester.runpytest_subprocess("--roadlogic-horizon", "6", "--roadlogic-examples", "10", *QUIET)
+    # the band's edge is the grid's (8 m gaps); the continuous encoding adds 1 s of closing speed to
+    # a gap, which moves it (issue 19 redoes this check for the default encoding)
+    result = pytester.runpytest_subprocess("--roadlogic-encoding", "grid", "--roadlogic-horizon", "6", "--roadlogic-examples", "10", *QUIET)
     result.assert_outcomes(failed=1)
     report = result.stdout.str()
     gap = float(re.search(r"gap = ([\d.]+) m \(line 7\)", report).group(1))
