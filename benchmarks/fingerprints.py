@@ -7,12 +7,12 @@ the ground program (clingo's rule count). Two strategies are run: ``base`` (the 
 ``refined`` with one fixed sample (the midpoint of every logical parameter on the sampling grid,
 the first choice of every enum), which exercises the random start and the guidance.
 
-    python benchmarks/fingerprints.py [--seeds 1 2 3] [FILES...] > before.txt
+    python benchmarks/fingerprints.py [--seeds 1 2 3] [--encoding grid|continuous] [FILES...] > before.txt
     ... change the code ...
     python benchmarks/fingerprints.py [--seeds 1 2 3] [FILES...] > after.txt
     diff before.txt after.txt        # no output: byte-identical plans and traces
 
-Timing is printed to stderr only, so the two outputs compare equal when the results do.
+``--encoding`` picks the planner's encoding (default: the pipeline's). Timing is printed to stderr only, so the two outputs compare equal when the results do.
 """
 
 from __future__ import annotations
@@ -30,6 +30,7 @@ sys.path.insert(0, str(ROOT))
 
 from pytest_roadlogic.pipeline import load_scenario, run_scenario  # noqa: E402
 from pytest_roadlogic.sampling import STEP, logical_parameters  # noqa: E402
+from pytest_roadlogic.settings import ENCODINGS, RunSettings  # noqa: E402
 
 
 def digest(text: str) -> str:
@@ -61,13 +62,15 @@ def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("files", nargs="*", type=Path, default=sorted((ROOT / "scenarios").glob("*.osc")))
     parser.add_argument("--seeds", nargs="+", type=int, default=[1, 2, 3])
+    parser.add_argument("--encoding", choices=ENCODINGS, default=RunSettings.encoding)
     args = parser.parse_args()
+    settings = RunSettings(encoding=args.encoding).planning()
     started = time.perf_counter()
     for path in args.files:
         checked = load_scenario(path)
         for seed in args.seeds:
             for strategy, values in (("base", None), ("refined", midpoint_sample(checked))):
-                outcome = run_scenario(checked, seed=seed, values=values)
+                outcome = run_scenario(checked, seed=seed, settings=settings, values=values)
                 verdict = "accepted" if outcome.verdict.accepted else "rejected"
                 print(f"{path.stem:<22} seed {seed} {strategy:<7} plan {digest(plan_text(outcome.plan))} trace {digest(outcome.simulation.trace.to_csv())} tries {outcome.tries} {verdict} rules {int(outcome.plan.stats.get('rules', 0))}", flush=True)
     print(f"{time.perf_counter() - started:.1f} s", file=sys.stderr)

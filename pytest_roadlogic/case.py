@@ -15,7 +15,7 @@ from dataclasses import asdict, dataclass, field, fields
 from pathlib import Path
 from typing import Any
 
-from .settings import BASE, DEFAULT_SIMULATOR, REFINED, RunSettings
+from .settings import BASE, CONTINUOUS, DEFAULT_SIMULATOR, GRID, REFINED, RunSettings
 
 
 class CaseFileError(ValueError):
@@ -31,7 +31,7 @@ class Case:
     values: dict[str, Any] = field(default_factory=dict)  # the sample (refined strategy)
     instance: int = 0  # which of the planner's instances, from 0 (base strategy)
     lanes: int | None = None
-    encoding: str | None = None  # None in case files older than the continuous encoding: the grid
+    encoding: str | None = None  # None in case files older than the continuous encoding: the grid's
     max_horizon: int | None = None
     planning_time_limit: float | None = None
     simulation_time_limit: float | None = None
@@ -48,11 +48,16 @@ class Case:
             max_tries=settings.tries, simulator=settings.simulator, **identity,
         )
 
+    @property
+    def planning_encoding(self) -> str:
+        """The encoding that planned this case (a case file without one predates the continuous one)."""
+        return self.encoding or GRID
+
     def settings(self) -> RunSettings:
         """The run settings this case was made under (defaults where an older case file is silent)."""
         given = {
             "seed": self.seed, "strategy": self.strategy, "lanes": self.lanes, "max_horizon": self.max_horizon,
-            "encoding": self.encoding or "grid", "planning_time_limit": self.planning_time_limit, "simulation_time_limit": self.simulation_time_limit,
+            "encoding": self.planning_encoding, "planning_time_limit": self.planning_time_limit, "simulation_time_limit": self.simulation_time_limit,
             "tries": self.max_tries, "simulator": self.simulator,
         }
         return RunSettings(**{k: v for k, v in given.items() if v is not None})
@@ -88,7 +93,7 @@ class Case:
             parts += ["--strategy", BASE, "--instance", str(self.instance)]
         if self.values:
             parts += ["--values", json.dumps(self.values, sort_keys=True)]
-        for option, value in (("--lanes", self.lanes), ("--encoding", None if self.encoding == "continuous" else self.encoding or "grid"), ("--horizon", self.max_horizon), ("--tries", self.max_tries)):
+        for option, value in (("--lanes", self.lanes), ("--encoding", None if self.planning_encoding == CONTINUOUS else self.planning_encoding), ("--horizon", self.max_horizon), ("--tries", self.max_tries)):
             if value is not None:
                 parts += [option, str(value)]
         if self.simulator != DEFAULT_SIMULATOR:

@@ -20,13 +20,12 @@ from .automaton import SymbolicAutomaton, build_automaton
 from .frontend import CheckedScenario, load_file
 from .monitor import Verdict, monitor
 from .planning import Plan, PlanningSettings
-from .settings import RunSettings
+from .sampling import guided, sample_seed
+from .settings import DEFAULT_SIM_TIMEOUT, RunSettings
+from .simulation import DriverFactory, Simulation, SimulationLimits, Simulator
 
 if TYPE_CHECKING:
     from .planning.continuous import ContinuousSettings
-from .sampling import guided, sample_seed
-from .settings import DEFAULT_SIM_TIMEOUT
-from .simulation import DriverFactory, Simulation, SimulationLimits, Simulator
 
 MAX_TRIES = 5
 

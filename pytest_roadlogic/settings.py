@@ -59,14 +59,20 @@ def seed(text: str) -> int:
         raise OptionError(f"{text!r} is not a seed; give a whole number, e.g. 1") from None
 
 
-def lanes_or_none(text: str | None) -> int | None:
-    """A lane count from 1 up, or nothing (each scenario's own road)."""
-    if text is None or not str(text).strip():
-        return None
-    return lane_count(str(text))
+def or_none(parse: Callable[[str], Any]) -> Callable[[str | None], Any]:
+    """``parse``, or None for an empty text (the option's own default then decides)."""
+
+    def parse_or_none(text: str | None) -> Any:
+        if text is None or not str(text).strip():
+            return None
+        return parse(str(text))
+
+    return parse_or_none
 
 
 lane_count = whole_number(1, "a lane count")
+lanes_or_none = or_none(lane_count)  # a lane count, or each scenario's own road
+horizon_or_none = or_none(whole_number(1, "a planning horizon"))  # a horizon limit, or the encoding's own
 count = whole_number(0, "an instance count")
 
 
@@ -74,13 +80,6 @@ def encoding(text: str) -> str:
     if text not in ENCODINGS:
         raise OptionError(f"{text!r} is not a planning encoding; give {' or '.join(ENCODINGS)}")
     return text
-
-
-def horizon_or_none(text: str | None) -> int | None:
-    """A horizon limit from 1 step up, or nothing (the encoding's own)."""
-    if text is None or not str(text).strip():
-        return None
-    return whole_number(1, "a planning horizon")(str(text))
 
 
 def strategy(text: str) -> str:

@@ -15,7 +15,6 @@ inherited), over the window's horizons.
 
 from __future__ import annotations
 
-import dataclasses
 import math
 import random
 import time
@@ -27,7 +26,7 @@ from ..automaton.guards import LANE, POSITION, SPEED, And, Bound, Guard, Not, Or
 from ..automaton.model import SymbolicAutomaton
 from .linear import THEORY, LazyLinearTheory
 from .errors import HorizonTooShort, NoPlanError, PlanningTimeout
-from .instance import _atom, _bound_rule, _inset, _outside_rules, junction_rules, with_automaton
+from .instance import _atom, _bound_rule, _inset, _outside_rules, guard_nodes, junction_rules, with_automaton
 from .plan import Plan, PlanState
 from .solver import ASP_DIR, Planner, check_satisfiable
 
@@ -151,12 +150,11 @@ def stopping(automaton: SymbolicAutomaton, settings: ContinuousSettings) -> set[
     """The vehicles the scenario lets stop: a speed bound of theirs reaches below the speed every
     other driving vehicle keeps (``speed(0kph)``, ``change_speed(target: 0kph)``). The paper's
     no-stop rule, scoped: whoever the scenario does not ask to stop keeps moving."""
-    guards = [t.guard for t in automaton.transitions] + [location.invariant for location in automaton.locations]
+    _, numbering = guard_nodes(automaton)  # every guard and invariant, and every part of one
     return {
-        bound.term.actor
-        for guard in guards
-        for bound in guard.atoms()
-        if bound.term.quantity == SPEED and bound.term.reference is None and bound.low < settings.min_speed
+        node.term.actor
+        for node in numbering
+        if isinstance(node, Bound) and node.term.quantity == SPEED and node.term.reference is None and node.low < settings.min_speed
     }
 
 
@@ -229,13 +227,13 @@ class ContinuousPlanner(Planner):
     """
 
     def __init__(self, automaton: SymbolicAutomaton, settings: ContinuousSettings | None = None, seed: int = 0) -> None:
-        super().__init__(automaton, dataclasses.replace(settings or ContinuousSettings(), random_start=False), seed)  # type: ignore[arg-type]
-        self.settings = settings or ContinuousSettings()
-        if self.settings.random_start:
-            self.preferences = start_preferences(automaton, self.settings, random.Random(seed))
+        super().__init__(automaton, settings or ContinuousSettings(), seed)  # type: ignore[arg-type]
 
     def _instance(self, settings, relaxable: bool = False) -> tuple[str, str]:
         return build_continuous_instance(self.automaton, settings, relaxable)
+
+    def _start_preferences(self, draw: random.Random) -> str:
+        return start_preferences(self.automaton, self.settings, draw)
 
     def _widened(self):
         return None  # every start speed the settings allow is tried at once
@@ -295,7 +293,7 @@ class ContinuousPlanner(Planner):
                 self.stats["horizon"] = horizon
                 yield self._continuous_plan(symbols, values, horizon, found)
                 found += 1
-                self._exclude_choices(control, symbols, found)
+                self._exclude(control, symbols, found)
             if found:
                 return
             last_open = window.last_open(self.settings.max_horizon)
@@ -309,14 +307,11 @@ class ContinuousPlanner(Planner):
         except NoPlanError as error:
             if not self.settings.explain_unsatisfiable:
                 raise
-            self._explain(error, deadline)
+            self._explain(error, deadline, window)
 
-    def _exclude_choices(self, control, symbols, count: int) -> None:
+    def _exclude(self, control, symbols, count: int) -> None:
         """Never these transition times and lanes together again."""
-        literals = [str(s) for s in symbols if s.name in ("fire", "lane")]
-        name = f"exclude_{count}"
-        control.add(name, [], ":- " + ", ".join(literals) + ".")
-        self._ground(control, [(name, [])])
+        self._forbid(control, [s for s in symbols if s.name in ("fire", "lane")], count)
 
     def _continuous_plan(self, symbols, values: dict[str, object], horizon: int, index: int = 0) -> Plan:
         lanes: dict[tuple[str, int], int] = {}

@@ -47,6 +47,9 @@ class PlanningSettings:
     # when no plan exists, find the constraints that cannot hold together (UnsatisfiableScenario);
     # a search over many samples turns it off and asks only for the one it reports
     explain_unsatisfiable: bool = True
+    # seconds the diagnosis may spend deciding whether one constraint can leave the group that
+    # clashes (None: as long as the time limit allows); see ContinuousSettings
+    removal_time_limit: float | None = None
     # the refined strategy's instances are independent samples: its first plan follows random
     # preferences drawn from the seed (start_preferences) and lasts a random number of steps from
     # the shortest horizon to max_horizon, instead of being the solver's first answer at the shortest

@@ -191,14 +191,7 @@ def check_rows(program: LinearProgram, on: list[int]) -> tuple[list[int] | None,
     n = len(program.symbols)
     inequalities = [(row, 0) for row in program.always if not row.equal]
     equalities = [(row, 0) for row in program.always if row.equal]
-    elastic = []
-    for literal in on:
-        for row in program.switched[literal]:
-            if row.equal:
-                elastic.append((row, literal))
-                elastic.append((Row({k: -c for k, c in row.coefficients.items()}, -row.bound), literal))
-            else:
-                elastic.append((row, literal))
+    elastic = [(half, literal) for literal in on for half in _split(program.switched[literal])]
     free = [(None, None)] * n
     hard_ub, hard_b = _matrix(inequalities, n)
     eq, eq_b = _matrix(equalities, n)

@@ -29,7 +29,6 @@ from clingodl import ClingoDLTheory
 from ..automaton.guards import contradiction
 from ..automaton.model import SymbolicAutomaton
 from .errors import HorizonTooShort, NoPlanError, PlanningTimeout, UnsatisfiableScenario, conflict_message
-from .instance import guard_nodes
 from .instance import PlanningSettings, build_instance, relaxable_constraints, start_preferences
 from .plan import Plan, PlanState
 from .window import DurationWindow
@@ -94,12 +93,16 @@ class Planner:
         self.preferences, self.stretch = "", 0.0
         if self.settings.random_start:
             draw = random.Random(seed)
-            self.preferences = start_preferences(automaton, self.settings, draw)
+            self.preferences = self._start_preferences(draw)
             self.stretch = draw.random()  # the fraction of the steps left up to max_horizon
 
     def _instance(self, settings, relaxable: bool = False) -> tuple[str, str]:
         """(base program, state(t) program) of this encoding's instance."""
         return build_instance(self.automaton, settings, relaxable)
+
+    def _start_preferences(self, draw: random.Random) -> str:
+        """A random start's draws, as this encoding's rules."""
+        return start_preferences(self.automaton, self.settings, draw)
 
     def instance_program(self) -> str:
         return "#program base.\n" + self.base_program + "\n#program state(t).\n" + self.state_program
@@ -150,12 +153,13 @@ class Planner:
             return None
         return wide
 
-    def _explain(self, error: NoPlanError, deadline: float) -> None:
+    def _explain(self, error: NoPlanError, deadline: float, window: DurationWindow | None = None) -> None:
         """Raise the reason there is no plan: the horizon limit when the phases' durations alone
         need longer (a setting binds, not the scenario), else the constraints that cannot hold
-        together, when a diagnosis finds them in time, else ``error`` as it is."""
+        together, when a diagnosis finds them in time, else ``error`` as it is. ``window``: the
+        planning's own, whose answers it reuses."""
         try:
-            self.needed_horizon(deadline)
+            self.needed_horizon(deadline, window)
         except PlanningTimeout:
             pass  # no time to tell: go on to the diagnosis, which says what it finds
         conflict = self.explain(deadline)
@@ -207,7 +211,7 @@ class Planner:
             core = self._failing(program, settings, list(range(len(constraints))), len(constraints), deadline)
             if not core:
                 return None
-            budget = getattr(self.settings, "removal_time_limit", None)
+            budget = self.settings.removal_time_limit
             for k in list(core):
                 if k in core:
                     step_deadline = deadline if budget is None else min(deadline, time.monotonic() + budget)
@@ -371,11 +375,16 @@ class Planner:
         excluding that combination excludes the plan (and only it).
         """
         literals = [s for s in symbols if s.name in ("lane", "acc", "zone") or (s.name == "vel" and s.arguments[-1].number == 0)]
-        name = f"exclude_{count}"
         # never this plan again, and prefer choices no earlier plan made: spread plans out instead of
         # enumerating near neighbours (a domain heuristic steers the search, it adds no constraint)
         steer = [f"#heuristic {s}. [{count},false]" for s in literals if s.name != "lane" or s.arguments[-1].number == 0]
-        control.add(name, [], ":- " + ", ".join(map(str, literals)) + ".\n" + "\n".join(steer))
+        self._forbid(control, literals, count, steer)
+
+    def _forbid(self, control: clingo.Control, literals: list[clingo.Symbol], count: int, rules: list[str] = ()) -> None:
+        """Add and ground, as program part ``exclude_<count>``, a constraint against ``literals``
+        holding together, and ``rules`` beside it."""
+        name = f"exclude_{count}"
+        control.add(name, [], ":- " + ", ".join(map(str, literals)) + ".\n" + "\n".join(rules))
         self._ground(control, [(name, [])])
 
     def _plan(self, symbols: list[clingo.Symbol], horizon: int, index: int) -> Plan:
