@@ -167,3 +167,12 @@ def test_a_random_start_draws_different_plans_from_different_seeds():
     assert len(starts) >= 4
     again = ContinuousPlanner(automaton, settings, 3).first()
     assert again.states == ContinuousPlanner(automaton, settings, 3).first().states, "one seed, one plan"
+
+
+def test_the_clingo_lpx_theory_plans_a_random_start_too():
+    # kept selectable to compare: it has no preferences, so a random start's nudges must not reach it
+    import dataclasses
+
+    automaton = build_automaton(load_scenario(ROOT / "scenarios" / "overtake.osc"))
+    plan = ContinuousPlanner(automaton, dataclasses.replace(SETTINGS, theory="lpx", random_start=True), 1).first()
+    check_continuous_plan(plan, automaton)

@@ -244,11 +244,13 @@ class ContinuousPlanner(Planner):
 
         control = clingo.Control([f"--seed={self.seed}", "--sign-def=rnd", "--rand-freq=0.02", "--heuristic=Domain", "--warn=none", "--models=1"], logger=lambda c, m: None)
         program = "\n".join((ASP_DIR / name).read_text(encoding="utf-8") for name in (*SHARED, ENCODING))
+        program += "\n#program base.\n" + base_program + "\n" + self.preferences + "\n#program state(t).\n" + state_program
         if self.settings.theory == "lpx":
             from clingolpx import ClingoLPXTheory
 
             theory = ClingoLPXTheory()
-            program = program.replace("&prefer{", "&sum{")  # clingo-lpx has no preferences: they bind
+            # clingo-lpx has no preferences: the encoding's bind, a random start's nudges go
+            program = program.replace("&prefer{", "&sum{")
             program = "\n".join(line for line in program.splitlines() if not line.startswith("&nudge"))
             for key, value in self.settings.lpx_options:
                 theory.configure(key, value)
@@ -257,7 +259,6 @@ class ContinuousPlanner(Planner):
             program = THEORY + program
         theory.register(control)
         self._theories[control] = theory
-        program += "\n#program base.\n" + base_program + "\n" + self.preferences + "\n#program state(t).\n" + state_program
         with ProgramBuilder(control) as builder:
             parse_string(program, lambda statement: theory.rewrite_ast(statement, builder.add))
         return control
