@@ -66,6 +66,10 @@ class Row:
     bound: float
     equal: bool = False
 
+    def negated(self) -> "Row":
+        """``-sum <= -bound``: the same row read from the other side (``>=`` as ``<=``)."""
+        return Row({k: -c for k, c in self.coefficients.items()}, -self.bound)
+
 
 @dataclass
 class LinearProgram:
@@ -126,7 +130,7 @@ def _rows(atom: clingo.TheoryAtom, program: LinearProgram) -> list[Row]:
     if operator == "<=":
         return [Row(dict(coefficients), bound)]
     if operator == ">=":
-        return [Row({k: -c for k, c in coefficients.items()}, -bound)]
+        return [Row(dict(coefficients), bound).negated()]
     return [Row(dict(coefficients), bound, equal=True)]
 
 
@@ -222,7 +226,7 @@ def check_rows(program: LinearProgram, on: list[int]) -> tuple[list[int] | None,
 
 def _split(rows: list[Row]) -> list[Row]:
     """Equalities as two inequalities."""
-    return [half for row in rows for half in ((row, Row({k: -c for k, c in row.coefficients.items()}, -row.bound)) if row.equal else (row,))]
+    return [half for row in rows for half in ((row, row.negated()) if row.equal else (row,))]
 
 
 def smooth(program: LinearProgram, inequalities, equalities, preferred: list[tuple[Row, float]] = ()) -> np.ndarray | None:
@@ -235,7 +239,7 @@ def smooth(program: LinearProgram, inequalities, equalities, preferred: list[tup
     # |a(t)| and |a(t) - a(t-1)|, each through one extra variable u >= +-expression
     expressions = [{i: 1.0} for i, _ in accelerations]
     expressions += [{i: 1.0, index[(v, t - 1)]: -1.0} for (v, t), i in index.items() if (v, t - 1) in index]
-    k = len(expressions)
+    absolutes = len(expressions)
     ub, b = _matrix(inequalities, n)
     eq, eq_b = _matrix(equalities, n)
     extra = []
@@ -247,15 +251,15 @@ def smooth(program: LinearProgram, inequalities, equalities, preferred: list[tup
     # a preference row r: r.x - s <= r.bound with s >= 0 at the preference's weight
     halves = [(half, weight) for row, weight in preferred for half in _split([row])]
     for j, (row, _) in enumerate(halves):
-        extra.append((Row({**row.coefficients, n + k + j: -1.0}, row.bound), 0))
-    weights = [1.0] * k + [weight for _, weight in halves]
-    k = len(weights)
-    extra_ub, extra_b = _matrix(extra, n + k)
-    a_ub = vstack([hstack([ub, csr_matrix((ub.shape[0], k))]), extra_ub], format="csr")
-    a_eq = hstack([eq, csr_matrix((eq.shape[0], k))], format="csr")
+        extra.append((Row({**row.coefficients, n + absolutes + j: -1.0}, row.bound), 0))
+    weights = [1.0] * absolutes + [weight for _, weight in halves]  # one per extra variable
+    slacks = len(weights)
+    extra_ub, extra_b = _matrix(extra, n + slacks)
+    a_ub = vstack([hstack([ub, csr_matrix((ub.shape[0], slacks))]), extra_ub], format="csr")
+    a_eq = hstack([eq, csr_matrix((eq.shape[0], slacks))], format="csr")
     cost = np.concatenate([np.zeros(n), weights])
     result = linprog(cost, A_ub=a_ub, b_ub=np.concatenate([b, extra_b]), A_eq=a_eq, b_eq=eq_b,
-                     bounds=[(None, None)] * n + [(0, None)] * k, method="highs")
+                     bounds=[(None, None)] * n + [(0, None)] * slacks, method="highs")
     return result.x[:n] if result.status == 0 else None
 
 
