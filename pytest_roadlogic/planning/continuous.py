@@ -239,10 +239,9 @@ class ContinuousPlanner(Planner):
         return None  # every start speed the settings allow is tried at once
 
     def _control(self, base_program: str, state_program: str):
-        import clingo
         from clingo.ast import ProgramBuilder, parse_string
 
-        control = clingo.Control([f"--seed={self.seed}", "--sign-def=rnd", "--rand-freq=0.02", "--heuristic=Domain", "--warn=none", "--models=1"], logger=lambda c, m: None)
+        control = self._new_control()
         program = "\n".join((ASP_DIR / name).read_text(encoding="utf-8") for name in (*SHARED, ENCODING))
         program += "\n#program base.\n" + base_program + "\n" + self.preferences + "\n#program state(t).\n" + state_program
         if self.settings.theory == "lpx":

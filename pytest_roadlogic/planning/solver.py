@@ -107,11 +107,16 @@ class Planner:
     def instance_program(self) -> str:
         return "#program base.\n" + self.base_program + "\n#program state(t).\n" + self.state_program
 
-    def _control(self, base_program: str, state_program: str) -> clingo.Control:
-        control = clingo.Control(
+    def _new_control(self) -> clingo.Control:
+        """A control searching as every encoding's does: seeded random signs, domain heuristics,
+        one model at a time, no warnings on the console."""
+        return clingo.Control(
             [f"--seed={self.seed}", "--sign-def=rnd", "--rand-freq=0.02", "--heuristic=Domain", "--warn=none", "--models=1"],
             logger=lambda code, message: None,
         )
+
+    def _control(self, base_program: str, state_program: str) -> clingo.Control:
+        control = self._new_control()
         self._theories[control] = theory = ClingoDLTheory()
         theory.register(control)
         initial = (ASP_DIR / INITIAL).read_text(encoding="utf-8")
