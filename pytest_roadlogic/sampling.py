@@ -1,7 +1,13 @@
 """The refined strategy: a scenario's logical parameters, sampled with Hypothesis, and the guidance they give.
 
-A logical parameter is any value the scenario leaves open: a declared parameter with a range
-(``gap: length with: keep(it in [10..20]m)``) or an inline range (``position([10..20]m, ...)``).
+A logical parameter is a value the scenario leaves open at one instant: a declared parameter with
+a range or a set of values (``gap: length with: keep(it in [10..20]m)``), or an inline range that
+holds at one point of a phase: ``position([10..20]m, ..., at: start)``, ``at: end``, a duration
+(``parallel(duration: [4..8]s)``), a change's target (``change_speed(target: [50..70]kph)``).
+A range a modifier holds throughout its phase (``speed([0..130]kph)``, whose ``at:`` is ``all``
+by default) is not a parameter: it says the motion stays within it, so the planner keeps it as
+a bound, and sampling it as one constant held for the whole phase would ask for something the
+scenario does not (measured on catch_up_band: every sample without a plan, shrunk to 0 kph).
 The base strategy leaves them all to the planner, which picks whatever its search reaches first;
 sampling them instead spreads the instances over the whole logical scenario, and lets Hypothesis
 shrink a failure to the simplest values that still fail.
@@ -101,6 +107,8 @@ def _inline_ranges(checked: CheckedScenario):
             yield from _ranges_of(phase, node.arguments, action.signature if action else None)
             for modifier in node.modifiers:
                 construct = registry.modifier(modifier.name)
+                if construct is not None and construct.held_throughout(bind(construct.signature, modifier.arguments)):
+                    continue  # a bound of the whole phase, kept by the planner: not a parameter
                 yield from _ranges_of(f"{phase}.{modifier.name}", modifier.arguments, construct.signature if construct else None)
         elif isinstance(node, model.Composition):
             yield from _ranges_of(node.label or node.operator, node.arguments, None)

@@ -84,12 +84,17 @@ class Use:
 
     def anchor(self) -> str:
         """Where the modifier holds: ``at:`` start, end or all (the standard's default: all)."""
-        given = self.binding["at"]
-        if given is None:
-            return "all"
-        if not isinstance(given.value, model.Name) or given.value.name not in AT_VALUES:
-            raise error_at(given.location, "`at:` takes start, end or all")
-        return given.value.name
+        return anchor_of(self.binding)
+
+
+def anchor_of(binding: Binding) -> str:
+    """``at:`` of a bound modifier: start, end or all (the standard's default: all)."""
+    given = binding["at"]
+    if given is None:
+        return "all"
+    if not isinstance(given.value, model.Name) or given.value.name not in AT_VALUES:
+        raise error_at(given.location, "`at:` takes start, end or all")
+    return given.value.name
 
 
 class Construct:
@@ -115,6 +120,11 @@ class Construct:
         """The fewest lanes on which this use exists. ``highest(argument)`` is the largest whole
         value an argument can take (1 when it is absent or not a number)."""
         return 1
+
+    def held_throughout(self, binding: Binding) -> bool:
+        """Whether this use's values bound the whole phase (``at: all``) rather than one instant:
+        its ranges are then bounds the plan stays within, not logical parameters (sampling.py)."""
+        return False
 
     def translate(self, use: Use, phase: Phase) -> None:
         """Add this use's guards to its phase."""
@@ -144,6 +154,9 @@ class AnchoredModifier(Modifier):
 
     def guard(self, use: Use) -> Guard:
         raise NotImplementedError
+
+    def held_throughout(self, binding: Binding) -> bool:
+        return anchor_of(binding) == "all"
 
     def translate(self, use: Use, phase: Phase) -> None:
         phase.anchor(self.guard(use), use.anchor())
