@@ -56,6 +56,19 @@ def check_continuous_plan(plan, automaton, settings=SETTINGS):
                     closing = plan.at(back, k).speed - plan.at(front, k).speed
                     assert gap >= settings.min_gap - 1e-6, f"{a} and {b} too close at {k}"
                     assert gap >= settings.min_gap + settings.closing_time * closing - 1e-6, f"{back} closes in on {front} too fast at {k}"
+    # a vehicle changing into a lane at step k leans into it before k (the simulation's lane change
+    # is a 3 s move): at k-1 it keeps the gap to the vehicles of that lane, on the side it is at k
+    for a in vehicles:
+        for k in range(1, plan.horizon + 1):
+            if plan.at(a, k).lane == plan.at(a, k - 1).lane:
+                continue
+            for b in vehicles:
+                if b == a or plan.at(b, k - 1).lane != plan.at(a, k).lane:
+                    continue
+                ahead = plan.at(a, k).position > plan.at(b, k).position
+                front, back = (a, b) if ahead else (b, a)
+                gap = plan.at(front, k - 1).position - plan.at(back, k - 1).position
+                assert gap >= settings.min_gap - 1e-6, f"{a} enters the lane of {b} at {k} without the gap at {k - 1} ({gap:.1f} m)"
     check_run(plan, automaton)
 
 

@@ -5,6 +5,8 @@ constraints cannot hold together (a Farkas certificate, never an innocent bystan
 grounded in later steps of a multi-shot solve join those of earlier ones; preferences shape the
 values and never decide whether there is a model."""
 
+from pathlib import Path
+
 import clingo
 import pytest
 
@@ -90,3 +92,41 @@ def test_preferences_shape_the_values_but_never_decide_feasibility():
     assert models == [[]], "a preference that cannot be met leaves the model in place"
     assert values["v"] == pytest.approx(30), "as close to the preference as the constraints allow"
     assert values["w"] == pytest.approx(7)
+
+
+def test_a_theory_atom_read_from_its_printed_form_is_the_atom_its_terms_give():
+    """The fast reader of ``str(atom)`` and the walk over the theory terms agree on every atom
+    the continuous encoding grounds for a scenario with lane changes, gaps and preferences."""
+    from pytest_roadlogic.automaton import build_automaton
+    from pytest_roadlogic.pipeline import load_scenario
+    from pytest_roadlogic.planning import linear
+    from pytest_roadlogic.planning.continuous import ContinuousPlanner, ContinuousSettings
+
+    compared = []
+    walk = LinearProgram()
+
+    def rows(atom, program, text):
+        printed = linear._printed_rows(text, program)
+        coefficients = {}
+        for element in atom.elements:
+            for term in element.terms:
+                variable, coefficient = linear._element(term, walk)
+                key = str(walk.symbols[variable])
+                coefficients[key] = coefficients.get(key, 0.0) + coefficient
+        operator, right = atom.guard
+        assert printed is not None, f"{text} is not read from its printed form"
+        read, read_operator, bound = printed
+        assert {str(program.symbols[v]): c for v, c in read.items()} == coefficients, text
+        assert (read_operator, bound) == (operator, linear._number(right)), text
+        compared.append(text)
+        return original(atom, program, text)
+
+    original = linear._rows
+    linear._rows = rows
+    try:
+        automaton = build_automaton(load_scenario(Path(__file__).resolve().parent.parent / "scenarios" / "overtake_third_actor.osc"))
+        ContinuousPlanner(automaton, ContinuousSettings(random_start=True), 1).first()
+    finally:
+        linear._rows = original
+    assert len(compared) > 100
+    assert any("&prefer" in text or "&nudge" in text for text in compared)
