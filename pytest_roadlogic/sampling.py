@@ -32,7 +32,7 @@ from typing import Any
 from .frontend import model
 from .frontend.checked import CheckedScenario
 from .frontend.errors import SourceLocation
-from .frontend.library import bind
+from .frontend.library import Binding, bind
 from .frontend.parameters import MIRRORED, ParameterSpace
 from .frontend.units import ACCELERATION, LENGTH, SPEED, TIME
 from .frontend.values import EvaluationError, Interval, evaluate
@@ -104,12 +104,13 @@ def _inline_ranges(checked: CheckedScenario):
         if isinstance(node, model.Invocation):
             phase = node.label or f"{node.actor}.{node.action}"
             action = registry.action(node.action)
-            yield from _ranges_of(phase, node.arguments, action.signature if action else None)
+            yield from _ranges_of(phase, node.arguments, bind(action.signature, node.arguments) if action else None)
             for modifier in node.modifiers:
                 construct = registry.modifier(modifier.name)
-                if construct is not None and construct.held_throughout(bind(construct.signature, modifier.arguments)):
+                binding = bind(construct.signature, modifier.arguments) if construct else None
+                if construct is not None and construct.held_throughout(binding):
                     continue  # a bound of the whole phase, kept by the planner: not a parameter
-                yield from _ranges_of(f"{phase}.{modifier.name}", modifier.arguments, construct.signature if construct else None)
+                yield from _ranges_of(f"{phase}.{modifier.name}", modifier.arguments, binding)
         elif isinstance(node, model.Composition):
             yield from _ranges_of(node.label or node.operator, node.arguments, None)
         elif isinstance(node, model.Wait) and isinstance(node.condition, model.Call):
@@ -118,8 +119,8 @@ def _inline_ranges(checked: CheckedScenario):
                     yield f"{node.label or 'wait'}.{node.condition.function}", argument.value
 
 
-def _ranges_of(prefix: str, arguments: tuple[model.Argument, ...], signature):
-    named = {id(a): n for n, a in bind(signature, arguments).arguments.items()} if signature is not None else {}
+def _ranges_of(prefix: str, arguments: tuple[model.Argument, ...], binding: Binding | None):
+    named = {id(a): n for n, a in binding.arguments.items()} if binding is not None else {}
     for argument in arguments:
         if isinstance(argument.value, model.Range):
             yield f"{prefix}.{argument.name or named.get(id(argument), 'value')}", argument.value

@@ -94,7 +94,7 @@ def test_preferences_shape_the_values_but_never_decide_feasibility():
     assert values["w"] == pytest.approx(7)
 
 
-def test_a_theory_atom_read_from_its_printed_form_is_the_atom_its_terms_give():
+def test_a_theory_atom_read_from_its_printed_form_is_the_atom_its_terms_give(monkeypatch):
     """The fast reader of ``str(atom)`` and the walk over the theory terms agree on every atom
     the continuous encoding grounds for a scenario with lane changes, gaps and preferences."""
     from pytest_roadlogic.automaton import build_automaton
@@ -105,8 +105,8 @@ def test_a_theory_atom_read_from_its_printed_form_is_the_atom_its_terms_give():
     compared = []
     walk = LinearProgram()
 
-    def rows(atom, program, text):
-        printed = linear._printed_rows(text, program)
+    def row(atom, program, text):
+        printed = linear._printed_row(text, program)
         coefficients = {}
         for element in atom.elements:
             for term in element.terms:
@@ -121,12 +121,9 @@ def test_a_theory_atom_read_from_its_printed_form_is_the_atom_its_terms_give():
         compared.append(text)
         return original(atom, program, text)
 
-    original = linear._rows
-    linear._rows = rows
-    try:
-        automaton = build_automaton(load_scenario(Path(__file__).resolve().parent.parent / "scenarios" / "overtake_third_actor.osc"))
-        ContinuousPlanner(automaton, ContinuousSettings(random_start=True), 1).first()
-    finally:
-        linear._rows = original
+    original = linear._row
+    monkeypatch.setattr(linear, "_row", row)
+    automaton = build_automaton(load_scenario(Path(__file__).resolve().parent.parent / "scenarios" / "overtake_third_actor.osc"))
+    ContinuousPlanner(automaton, ContinuousSettings(random_start=True), 1).first()
     assert len(compared) > 100
     assert any("&prefer" in text or "&nudge" in text for text in compared)

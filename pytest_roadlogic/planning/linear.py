@@ -29,7 +29,6 @@ from dataclasses import dataclass, field
 from fractions import Fraction
 import math
 import re
-import time
 
 import clingo
 import numpy as np
@@ -145,7 +144,7 @@ _PRINTED_BOUND = re.compile(r'^\(?(-)?"?(-?[0-9.]+(?:/[0-9]+)?)"?\)?$')
 _PRINTED_ATOM = re.compile(r"^&\w+\{(.*)\}(<=|>=|=)(.*)$")
 
 
-def _printed_rows(text: str, program: LinearProgram) -> tuple[dict[int, float], str, float] | None:
+def _printed_row(text: str, program: LinearProgram) -> tuple[dict[int, float], str, float] | None:
     """The atom read from its printed form, or None when it is not in the form above.
 
     Why: walking the theory terms through clingo's API costs a foreign call per term, and was
@@ -170,8 +169,9 @@ def _printed_rows(text: str, program: LinearProgram) -> tuple[dict[int, float], 
     return coefficients, whole.group(2), -value if bound.group(1) else value
 
 
-def _rows(atom: clingo.TheoryAtom, program: LinearProgram, text: str) -> list[Row]:
-    printed = _printed_rows(text, program)
+def _row(atom: clingo.TheoryAtom, program: LinearProgram, text: str) -> Row:
+    """The constraint of a theory atom (``text``: the atom printed)."""
+    printed = _printed_row(text, program)
     if printed is not None:
         coefficients, operator, bound = printed
     else:
@@ -183,10 +183,10 @@ def _rows(atom: clingo.TheoryAtom, program: LinearProgram, text: str) -> list[Ro
         operator, right = atom.guard
         bound = _number(right)
     if operator == "<=":
-        return [Row(dict(coefficients), bound)]
+        return Row(dict(coefficients), bound)
     if operator == ">=":
-        return [Row(dict(coefficients), bound).negated()]
-    return [Row(dict(coefficients), bound, equal=True)]
+        return Row(dict(coefficients), bound).negated()
+    return Row(dict(coefficients), bound, equal=True)
 
 
 class LazyLinearPropagator:
@@ -194,27 +194,29 @@ class LazyLinearPropagator:
 
     def __init__(self) -> None:
         self.program = LinearProgram()
-        self.seen: set[str] = set()
+        self.seen: set[tuple[int, str]] = set()
         self.solution: dict[int, np.ndarray] = {}
-        self.stats = {"checks": 0, "conflicts": 0, "lp_s": 0.0}
 
     def init(self, init: clingo.PropagateInit) -> None:
         # called on every solve of a multi-shot control, with the theory atoms grounded since the
         # last one only (clingo drops a step's theory data after solving): the program grows
         program = self.program
         for atom in init.theory_atoms:
-            if atom.term.name not in ("sum", *WEIGHTS) or (key := f"{atom.literal}:{atom}") in self.seen:
+            if atom.term.name not in ("sum", *WEIGHTS):
+                continue
+            text = str(atom)
+            if (key := (atom.literal, text)) in self.seen:
                 continue
             self.seen.add(key)
             literal = init.solver_literal(atom.literal)
-            rows = _rows(atom, program, key.split(":", 1)[1])
+            row = _row(atom, program, text)
             if atom.term.name in WEIGHTS:
                 if not init.assignment.is_false(literal):
-                    program.preferred[0 if init.assignment.is_true(literal) else literal].extend((row, WEIGHTS[atom.term.name]) for row in rows)
+                    program.preferred[0 if init.assignment.is_true(literal) else literal].append((row, WEIGHTS[atom.term.name]))
             elif init.assignment.is_true(literal):
-                program.always.extend(rows)
+                program.always.append(row)
             elif not init.assignment.is_false(literal):
-                program.switched[literal].extend(rows)
+                program.switched[literal].append(row)
         init.check_mode = clingo.PropagatorCheckMode.Total
 
     def check(self, control: clingo.PropagateControl) -> None:
@@ -223,15 +225,11 @@ class LazyLinearPropagator:
             # 10 checks to overtake's first plan); the check of the total assignment that
             # follows decides, and a solution found here would not be the model's
             return
-        start = time.perf_counter()
-        self.stats["checks"] += 1
         on = [literal for literal in self.program.switched if control.assignment.is_true(literal)]
         conflict, solution = check_rows(self.program, on)
-        self.stats["lp_s"] += time.perf_counter() - start
         if conflict is None:
             self.solution[control.thread_id] = solution
             return
-        self.stats["conflicts"] += 1
         if not control.add_nogood(conflict, lock=True):
             return
         control.propagate()
