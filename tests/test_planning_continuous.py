@@ -189,3 +189,20 @@ def test_the_clingo_lpx_theory_plans_a_random_start_too():
     automaton = build_automaton(load_scenario(ROOT / "scenarios" / "overtake.osc"))
     plan = ContinuousPlanner(automaton, dataclasses.replace(SETTINGS, theory="lpx", random_start=True), 1).first()
     check_continuous_plan(plan, automaton)
+
+
+@pytest.mark.parametrize("encoding", ["continuous", "grid"])
+def test_the_time_a_caller_spends_with_a_plan_is_not_the_next_plans_planning_time(encoding):
+    """Between two plans the caller simulates the first; the next plan still has the whole time
+    limit (five_vehicle_minute's second plan once timed out after its first plan's simulation)."""
+    import time
+
+    from pytest_roadlogic.planning import Planner, PlanningSettings
+
+    automaton = build_automaton(load_scenario(ROOT / "scenarios" / "overtake.osc"))
+    planner = ContinuousPlanner(automaton, ContinuousSettings(time_limit=1.0), 1) if encoding == "continuous" else Planner(automaton, PlanningSettings(time_limit=1.0), 1)
+    plans = planner.plans()
+    first = next(plans)
+    time.sleep(1.2)  # longer than the limit: the caller simulating the first plan
+    second = next(plans)
+    assert (second.transitions, second.states) != (first.transitions, first.states)

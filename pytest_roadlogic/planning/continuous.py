@@ -266,7 +266,7 @@ class ContinuousPlanner(Planner):
         """Plans, shortest horizon first; each next one differs from all before it in when a
         transition fires or in a lane (the linear program then gives its smoothest motion)."""
         check_satisfiable(self.automaton)
-        deadline = time.monotonic() + self.settings.time_limit
+        deadline = self._renewed()
         found = 0
         try:
             window = self.window(deadline)
@@ -292,6 +292,8 @@ class ContinuousPlanner(Planner):
                     continue
                 self.stats["horizon"] = horizon
                 yield self._continuous_plan(symbols, values, horizon, found)
+                deadline = self._renewed()
+                window.wait = self._waiter(deadline)
                 found += 1
                 self._exclude(control, symbols, found)
             if found:
