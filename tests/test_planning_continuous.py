@@ -57,13 +57,15 @@ def check_continuous_plan(plan, automaton, settings=SETTINGS):
                     assert gap >= settings.min_gap - 1e-6, f"{a} and {b} too close at {k}"
                     assert gap >= settings.min_gap + settings.closing_time * closing - 1e-6, f"{back} closes in on {front} too fast at {k}"
     # a vehicle changing into a lane at step k leans into it before k (the simulation's lane change
-    # is a 3 s move): at k-1 it keeps the gap to the vehicles of that lane, on the side it is at k
+    # is a 3 s move): at k-1 it keeps the gap to the vehicles of that lane and to those entering it
+    # at k too, on the side it is at k
     for a in vehicles:
         for k in range(1, plan.horizon + 1):
             if plan.at(a, k).lane == plan.at(a, k - 1).lane:
                 continue
             for b in vehicles:
-                if b == a or plan.at(b, k - 1).lane != plan.at(a, k).lane:
+                entering_too = plan.at(b, k).lane == plan.at(a, k).lane != plan.at(b, k - 1).lane
+                if b == a or (plan.at(b, k - 1).lane != plan.at(a, k).lane and not entering_too):
                     continue
                 ahead = plan.at(a, k).position > plan.at(b, k).position
                 front, back = (a, b) if ahead else (b, a)
