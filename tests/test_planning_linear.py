@@ -127,3 +127,32 @@ def test_a_theory_atom_read_from_its_printed_form_is_the_atom_its_terms_give(mon
     ContinuousPlanner(automaton, ContinuousSettings(random_start=True), 1).first()
     assert len(compared) > 100
     assert any("&prefer" in text or "&nudge" in text for text in compared)
+
+
+def test_every_check_of_a_planning_run_agrees_with_a_program_built_afresh(monkeypatch):
+    """The switched-row program kept across checks (warm-started, rows switched by their bounds)
+    answers as an elastic program built from nothing would: the same feasibility at every check,
+    and every conflict it returns is infeasible on its own (a nogood that forbids a feasible
+    choice would lose plans silently)."""
+    from pytest_roadlogic.automaton import build_automaton
+    from pytest_roadlogic.pipeline import load_scenario
+    from pytest_roadlogic.planning import linear
+    from pytest_roadlogic.planning.continuous import ContinuousPlanner, ContinuousSettings
+
+    checks, conflicts = [], []
+    original = linear.check_rows
+
+    def check(program, on):
+        conflict, solution = original(program, on)
+        afresh = linear._elastic_conflict(program, on)
+        checks.append((conflict is None, afresh is None))
+        if conflict is not None:
+            conflicts.append(linear._elastic_conflict(program, conflict) is not None)
+        return conflict, solution
+
+    monkeypatch.setattr(linear, "check_rows", check)
+    automaton = build_automaton(load_scenario(Path(__file__).resolve().parent.parent / "scenarios" / "overtake_third_actor.osc"))
+    ContinuousPlanner(automaton, ContinuousSettings(), 1).first()
+    assert len(conflicts) >= 5, "the run should meet some infeasible choices to compare"
+    assert all(kept == afresh for kept, afresh in checks), "a check disagreed with the program built afresh"
+    assert all(conflicts), "a returned conflict was feasible on its own"

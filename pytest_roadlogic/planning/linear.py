@@ -6,11 +6,12 @@ The continuous encoding (``asp/continuous.lp``) writes its linear constraints as
 them consistent at every decision with an exact rational simplex; measured on
 follow_then_overtake at its first horizon (24 steps, 2 vehicles): 53 conflicts in 20 s, about
 0.4 s per conflict, and no plan in 120 s. Here they are checked only on a total assignment, as
-one floating-point linear program for HiGHS (scipy): when it is infeasible, an elastic copy of it
-(every constraint that some choice switched on may be violated at a cost) gives, through its
-dual values, a Farkas certificate: the switched-on constraints it uses cannot hold together with
-the dynamics, and the nogood forbids exactly their literals together. It stays valid at longer
-horizons (more steps only add variables and constraints), so it is kept for the whole search.
+one floating-point linear program for HiGHS (highspy), kept across checks (``SwitchedCheck``): a
+choice switches its rows on through their bounds, and the dual simplex starts from the last basis.
+When the program is infeasible, HiGHS's dual ray is a Farkas certificate: the switched-on rows it
+uses cannot hold together with the dynamics, and the nogood forbids exactly their literals
+together. It stays valid at longer horizons (more steps only add variables and constraints), so it
+is kept for the whole search.
 
 The plan itself comes from one more linear program over the accepted choices, which minimises
 the sum of the absolute accelerations and their changes: smooth plans a motion planner follows.
@@ -84,6 +85,8 @@ class LinearProgram:
     # preferences with their weights, by the literal that switches them on (0: always)
     preferred: dict[int, list[tuple[Row, float]]] = field(default_factory=lambda: defaultdict(list))
     _hard: tuple | None = field(default=None, repr=False)
+    # the program of the feasibility checks, kept across them (``SwitchedCheck``)
+    checker: "SwitchedCheck | None" = field(default=None, repr=False)
 
     def variable(self, symbol: clingo.Symbol) -> int:
         key = str(symbol)
@@ -290,27 +293,134 @@ def solve_linear(cost: np.ndarray, a_ub, b_ub: np.ndarray, a_eq, b_eq: np.ndarra
                         np.array(solution.row_dual[: a_ub.shape[0]]))
 
 
+class SwitchedCheck:
+    """Every switched constraint as a row of one HiGHS model kept across checks, switched on by
+    its bound and off by an infinite one, with no objective.
+
+    Between two checks only the bounds of the rows whose literals changed move; the last basis
+    stays dual feasible (there is no objective), so the dual simplex starts from it and repairs
+    only what the changed rows broke. An infeasible program ends in a dual ray, a Farkas
+    certificate: the switched rows with a non-zero entry cannot hold together with the rows that
+    always hold. Rows and variables that later horizons ground are added, never rebuilt.
+
+    Why: each check used to build an elastic program from nothing and solve it (3-4 ms against
+    20-45 checks to a first plan of the overtake scenarios, most of their planning time); an
+    elastic program kept across checks with slack costs switched on and off still needed 60-150
+    simplex iterations a check (measured on overtake_third_actor).
+    """
+
+    def __init__(self) -> None:
+        self.highs = highspy.Highs()
+        self.highs.setOptionValue("output_flag", False)
+        self.highs.setOptionValue("presolve", "off")
+        self.column: list[int] = []  # per variable of the program: its column
+        self.hard = 0  # rows of ``program.always`` added so far
+        self.synced: dict[int, int] = {}  # rows added so far per switching literal
+        self.literal: list[int] = []  # per switched half-row: its literal
+        self.row: list[int] = []  # per switched half-row: its row in the model
+        self.bound: list[float] = []  # per switched half-row: its bound when on
+        self.on = np.zeros(0, dtype=bool)  # per switched half-row: on in the model now
+
+    def _sync(self, program: LinearProgram) -> None:
+        highs, inf = self.highs, highspy.kHighsInf
+        n = len(program.symbols)
+        if n > len(self.column):
+            new, first = n - len(self.column), highs.getNumCol()
+            highs.addCols(new, np.zeros(new), np.full(new, -inf), np.full(new, inf), 0, np.zeros(new, dtype=np.int32), np.zeros(0, dtype=np.int32), np.zeros(0))
+            self.column += range(first, first + new)
+        if len(program.always) > self.hard:
+            rows = program.always[self.hard:]
+            self._add_rows(rows, [row.bound if row.equal else -inf for row in rows], [row.bound for row in rows])
+            self.hard = len(program.always)
+        halves: list[tuple[Row, int]] = []
+        for literal, rows in program.switched.items():
+            done = self.synced.get(literal, 0)
+            if len(rows) > done:
+                halves += [(half, literal) for half in _split(rows[done:])]
+                self.synced[literal] = len(rows)
+        if halves:
+            m, first = len(halves), highs.getNumRow()
+            self._add_rows([half for half, _ in halves], [-inf] * m, [inf] * m)
+            self.literal += [literal for _, literal in halves]
+            self.bound += [half.bound for half, _ in halves]
+            self.row += range(first, first + m)
+            self.on = np.concatenate([self.on, np.zeros(m, dtype=bool)])
+
+    def _add_rows(self, rows: list[Row], lower: list[float], upper: list[float]) -> None:
+        starts, indices, values = [], [], []
+        for row in rows:
+            starts.append(len(indices))
+            for variable, coefficient in row.coefficients.items():
+                if coefficient:
+                    indices.append(self.column[variable])
+                    values.append(coefficient)
+        self.highs.addRows(len(rows), np.array(lower, dtype=float), np.array(upper, dtype=float), len(indices),
+                           np.array(starts, dtype=np.int32), np.array(indices, dtype=np.int32), np.array(values, dtype=float))
+
+    def conflict(self, program: LinearProgram, on: list[int]) -> list[int] | None | bool:
+        """The literals of ``on`` whose rows cannot hold together with those that always hold,
+        None when they can, False when HiGHS gave no certificate (the caller decides another way)."""
+        self._sync(program)
+        switched_on = set(on)
+        wanted = np.array([literal in switched_on for literal in self.literal], dtype=bool)
+        changed = np.flatnonzero(wanted != self.on)
+        if len(changed):
+            inf = highspy.kHighsInf
+            rows = np.array(self.row, dtype=np.int32)[changed]
+            upper = np.where(wanted[changed], np.array(self.bound)[changed], inf)
+            self.highs.changeRowsBounds(len(changed), rows, np.full(len(changed), -inf), upper)
+            self.on = wanted
+        self.highs.run()
+        status = self.highs.getModelStatus()
+        if status == highspy.HighsModelStatus.kOptimal:
+            return None
+        if status != highspy.HighsModelStatus.kInfeasible:
+            return False
+        _, exists, ray = self.highs.getDualRay()
+        if not exists:
+            return False
+        ray = np.asarray(ray)[self.row]
+        conflict = {self.literal[i] for i in np.flatnonzero(np.abs(ray) > 1e-9) if wanted[i]}
+        return sorted(conflict) if conflict else False
+
+
+def _elastic_conflict(program: LinearProgram, on: list[int]) -> list[int] | None:
+    """The same answer as ``SwitchedCheck.conflict`` from an elastic program built afresh (every
+    switched-on row may be violated at a cost; the rows with a non-zero dual at the optimum clash)."""
+    n = len(program.symbols)
+    _, _, (hard_ub, hard_b), (eq, eq_b) = program.hard()
+    elastic = [(half, literal) for literal in on for half in _split(program.switched[literal])]
+    if not elastic:
+        return None
+    soft, soft_b = _matrix(elastic, n)
+    m = len(elastic)
+    # min sum(s): soft x - s <= b, s >= 0
+    a_ub = vstack([hstack([hard_ub, csr_matrix((hard_ub.shape[0], m))]), hstack([soft, -identity(m, format="csr")])], format="csr")
+    b_ub = np.concatenate([hard_b, soft_b])
+    a_eq = hstack([eq, csr_matrix((eq.shape[0], m))], format="csr")
+    cost = np.concatenate([np.zeros(n), np.ones(m)])
+    result = solve_linear(cost, a_ub, b_ub, a_eq, eq_b, np.concatenate([np.full(n, -np.inf), np.zeros(m)]))
+    if not result.optimal:
+        return sorted(set(on))
+    if result.cost <= INFEASIBLE:
+        return None
+    duals = result.duals[hard_ub.shape[0]:]
+    conflict = sorted({literal for (_, literal), dual in zip(elastic, duals) if abs(dual) > 1e-9})
+    return conflict or sorted(set(on))
+
+
 def check_rows(program: LinearProgram, on: list[int]) -> tuple[list[int] | None, np.ndarray | None]:
     """(None, a smooth solution) when the constraints that always hold and those of the literals
     ``on`` can hold together, else (the literals of an infeasible part, None)."""
-    n = len(program.symbols)
-    inequalities, equalities, (hard_ub, hard_b), (eq, eq_b) = program.hard()
+    inequalities, equalities, _, _ = program.hard()
+    if program.checker is None:
+        program.checker = SwitchedCheck()
+    conflict = program.checker.conflict(program, on)
+    if conflict is False:
+        conflict = _elastic_conflict(program, on)
+    if conflict is not None:
+        return conflict, None
     elastic = [(half, literal) for literal in on for half in _split(program.switched[literal])]
-    if elastic:
-        soft, soft_b = _matrix(elastic, n)
-        m = len(elastic)
-        # min sum(s): soft x - s <= b, s >= 0
-        a_ub = vstack([hstack([hard_ub, csr_matrix((hard_ub.shape[0], m))]), hstack([soft, -identity(m, format="csr")])], format="csr")
-        b_ub = np.concatenate([hard_b, soft_b])
-        a_eq = hstack([eq, csr_matrix((eq.shape[0], m))], format="csr")
-        cost = np.concatenate([np.zeros(n), np.ones(m)])
-        result = solve_linear(cost, a_ub, b_ub, a_eq, eq_b, np.concatenate([np.full(n, -np.inf), np.zeros(m)]))
-        if result.optimal and result.cost > INFEASIBLE:
-            duals = result.duals[hard_ub.shape[0]:]
-            conflict = sorted({literal for (_, literal), dual in zip(elastic, duals) if abs(dual) > 1e-9})
-            return conflict or sorted(set(on)), None
-        if not result.optimal:
-            return sorted(set(on)), None
     rows = inequalities + [(row, 0) for row, _ in elastic]
     preferred = [row for literal in (0, *on) for row in program.preferred.get(literal, ())]
     solution = smooth(program, rows, equalities, preferred)
