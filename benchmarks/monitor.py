@@ -1,11 +1,14 @@
-"""Monitor speed: the time to judge a 60 s trace sampled at 0.1 s, per benchmark scenario.
+"""Monitor speed: the time to judge a 60 s trace sampled at 0.1 s, per benchmark scenario (the
+paper's seven and the realistic files whose automaton builds).
 
     python benchmarks/monitor.py
 
 The traces are synthetic (no simulation needed): every actor cruises in its lane, the first one
 faster, changing lanes now and then, so that runs get deep into the automaton. The target is
 under 50 ms for three actors; the automaton's size is printed too, since the monitor's cost is
-linear in samples x transitions.
+linear in samples x transitions, times the start instants a timed phase can have (its duration's
+range over the sample period: five_vehicle_minute's phases of 15-25 s keep up to 100 of them).
+A scenario whose first judgement takes over a second is judged once, not REPEATS times.
 """
 
 from __future__ import annotations
@@ -17,7 +20,7 @@ from pathlib import Path
 import numpy as np
 
 from pytest_roadlogic.automaton import build_automaton
-from pytest_roadlogic.frontend import load_file
+from pytest_roadlogic.frontend import OscError, load_file
 from pytest_roadlogic.monitor import monitor
 from pytest_roadlogic.simulation import Trace
 
@@ -41,15 +44,19 @@ def synthetic_trace(actors: tuple[str, ...], stationary: frozenset[str]) -> Trac
 def main() -> int:
     print(f"monitor on a {DURATION:.0f} s trace at {DT} s ({int(DURATION / DT) + 1} samples), median of {REPEATS}")
     print(f"{'scenario':24} {'actors':>6} {'locations':>9} {'transitions':>11} {'ms':>8}")
-    for path in sorted((ROOT / "scenarios").glob("*.osc")):
-        scenario = load_file(path).scenarios[0]
-        automaton = build_automaton(scenario)
+    for path in sorted((ROOT / "scenarios").glob("*.osc")) + sorted((ROOT / "scenarios" / "realistic").glob("*.osc")):
+        try:
+            automaton = build_automaton(load_file(path).scenarios[0])
+        except (OscError, IndexError):
+            continue  # not read yet (issue 18), or a library without a scenario
         trace = synthetic_trace(automaton.actors, automaton.stationary)
         samples = []
         for _ in range(REPEATS):
             started = time.perf_counter()
             monitor(automaton, trace)
             samples.append((time.perf_counter() - started) * 1000)
+            if samples[0] > 1000:
+                break
         print(f"{path.stem:24} {len(automaton.actors):6d} {len(automaton.locations):9d} {len(automaton.transitions):11d} {statistics.median(samples):8.1f}")
     return 0
 
