@@ -208,3 +208,26 @@ def test_the_time_a_caller_spends_with_a_plan_is_not_the_next_plans_planning_tim
     time.sleep(1.2)  # longer than the limit: the caller simulating the first plan
     second = next(plans)
     assert (second.transitions, second.states) != (first.transitions, first.states)
+
+
+def test_a_speed_range_a_phase_holds_is_reached_a_step_before_the_phase_and_kept_a_step_after(tmp_path):
+    """The motion planner rounds off the plan's changes of speed (late in, early out), so the plan
+    prefers each speed bound to hold one step either side of the steps it must hold at, where the
+    hard constraints let it."""
+    automaton = scenario_file(tmp_path, """scenario speed_up:
+    ego: vehicle
+
+    do serial:
+        slow: ego.drive(duration: 4s) with:
+            speed([40kph..45kph])
+        free: ego.drive(duration: 6s)
+        fast: ego.drive(duration: 4s) with:
+            speed([80kph..85kph])
+""")
+    plan = ContinuousPlanner(automaton, SETTINGS, 1).first()
+    check_continuous_plan(plan, automaton)
+    fast_starts = max(step for step, _ in plan.transitions[:-1])  # the last transition ends the scenario
+    slow_ends = sorted(step for step, _ in plan.transitions)[1]
+    speeds = [s.speed for s in plan.states["ego"]]
+    assert 80 / 3.6 - 0.01 <= speeds[fast_starts - 1] <= 85 / 3.6 + 0.01, f"fast's range already at the step before it ({speeds})"
+    assert 40 / 3.6 - 0.01 <= speeds[slow_ends] <= 45 / 3.6 + 0.01, f"slow's range still at the step after it ({speeds})"

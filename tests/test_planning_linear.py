@@ -142,8 +142,8 @@ def test_every_check_of_a_planning_run_agrees_with_a_program_built_afresh(monkey
     checks, conflicts = [], []
     original = linear.check_rows
 
-    def check(program, on):
-        conflict, solution = original(program, on)
+    def check(program, on, preferring=None):
+        conflict, solution = original(program, on, preferring)
         afresh = linear._elastic_conflict(program, on)
         checks.append((conflict is None, afresh is None))
         if conflict is not None:

@@ -198,6 +198,26 @@ def _guard_rules(node: int, guard: Guard, numbering: dict[Guard, int], settings:
         rules.append(f"&sum{{ {elements} }} <= {_number(high)} :- {head}{switch}.")
     if low != -math.inf:
         rules.append(f"&sum{{ {elements} }} >= {_number(low)} :- {head}{switch}.")
+    if guard.term.quantity == SPEED:
+        rules += _speed_lead(node, elements, low, high)
+    return rules
+
+
+def _speed_lead(node: int, elements: str, low: float, high: float) -> list[str]:
+    """A speed bound that holds at a step is preferred to hold at the steps next to it too.
+
+    Why: the motion planner rounds off the plan's changes of speed, starting them late and ending
+    them early (measured on follow_then_overtake's refined samples: a relative speed the plan
+    reached at a phase's first step, the trace reached 1.2 s later, past the 0.5 s a sampled
+    duration allows). Holding the bound a step either side is a preference of the smoothing
+    program, never a reason for no plan.
+    """
+    before, after = elements.replace(",t)", ",S)"), elements
+    rules = []
+    for bound, operator in ((high, "<="), (low, ">=")):
+        if math.isfinite(bound):
+            rules.append(f"&prefer{{ {before} }} {operator} {_number(bound)} :- g({node},t), S = t-1, t > 0.")
+            rules.append(f"&prefer{{ {after} }} {operator} {_number(bound)} :- g({node},S), S = t-1.")
     return rules
 
 

@@ -229,7 +229,9 @@ class LazyLinearPropagator:
             # follows decides, and a solution found here would not be the model's
             return
         on = [literal for literal in self.program.switched if control.assignment.is_true(literal)]
-        conflict, solution = check_rows(self.program, on)
+        # a preference's literal is its own (its body's), not always one that switches a constraint
+        preferring = [literal for literal in self.program.preferred if literal and control.assignment.is_true(literal)]
+        conflict, solution = check_rows(self.program, on, preferring)
         if conflict is None:
             self.solution[control.thread_id] = solution
             return
@@ -409,9 +411,10 @@ def _elastic_conflict(program: LinearProgram, on: list[int]) -> list[int] | None
     return conflict or sorted(set(on))
 
 
-def check_rows(program: LinearProgram, on: list[int]) -> tuple[list[int] | None, np.ndarray | None]:
+def check_rows(program: LinearProgram, on: list[int], preferring: list[int] | None = None) -> tuple[list[int] | None, np.ndarray | None]:
     """(None, a smooth solution) when the constraints that always hold and those of the literals
-    ``on`` can hold together, else (the literals of an infeasible part, None)."""
+    ``on`` can hold together, else (the literals of an infeasible part, None). The solution meets
+    the preferences that always apply and those of the literals ``preferring`` (default: ``on``)."""
     inequalities, equalities, _, _ = program.hard()
     if program.checker is None:
         program.checker = SwitchedCheck()
@@ -422,7 +425,7 @@ def check_rows(program: LinearProgram, on: list[int]) -> tuple[list[int] | None,
         return conflict, None
     elastic = [(half, literal) for literal in on for half in _split(program.switched[literal])]
     rows = inequalities + [(row, 0) for row, _ in elastic]
-    preferred = [row for literal in (0, *on) for row in program.preferred.get(literal, ())]
+    preferred = [row for literal in (0, *(on if preferring is None else preferring)) for row in program.preferred.get(literal, ())]
     solution = smooth(program, rows, equalities, preferred)
     if solution is None:
         # infeasible without any switched constraint to blame (the constraints that always hold
