@@ -29,9 +29,10 @@ from pytest_roadlogic.monitor import monitor
 from pytest_roadlogic.simulation import Trace
 
 ROOT = Path(__file__).resolve().parent.parent
-# The benchmark suite, and corpus files that add what it lacks: waits, durations, one_of, side_of.
+# The benchmark suite, and corpus files that add what it lacks: waits, durations, one_of, side_of,
+# time headways.
 SCENARIOS = sorted((ROOT / "scenarios").glob("*.osc")) + [
-    ROOT / "tests" / "corpus" / name for name in ("16_one_of.osc", "19_lane_relative.osc", "27_wait.osc", "28_durations.osc")
+    ROOT / "tests" / "corpus" / name for name in ("16_one_of.osc", "19_lane_relative.osc", "27_wait.osc", "28_durations.osc", "46_time_headway.osc")
 ]
 DT = 0.5
 # Placements enumerated per example at most: keeps the brute force to about a second.
@@ -145,12 +146,12 @@ def perturbed(draw, base: Trace, n_max: int) -> Trace:
 
 @pytest.mark.parametrize("path", SCENARIOS, ids=[p.stem for p in SCENARIOS])
 def test_the_monitor_agrees_with_the_brute_force_semantics(path):
-    from pytest_roadlogic.planning import Planner
+    from pytest_roadlogic.planning.continuous import ContinuousPlanner, ContinuousSettings
 
     scenario = load_file(path).scenarios[0]
     automaton = build_automaton(scenario)
     n_max = max_samples(automaton)
-    planned = plan_trace(Planner(automaton, seed=1).first())
+    planned = plan_trace(ContinuousPlanner(automaton, ContinuousSettings(), 1).first())  # the default encoding
     assert monitor(automaton, planned).accepted, "a plan, read as a trace, meets its scenario"
 
     @settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])

@@ -231,3 +231,28 @@ def test_a_speed_range_a_phase_holds_is_reached_a_step_before_the_phase_and_kept
     speeds = [s.speed for s in plan.states["ego"]]
     assert 80 / 3.6 - 0.01 <= speeds[fast_starts - 1] <= 85 / 3.6 + 0.01, f"fast's range already at the step before it ({speeds})"
     assert 40 / 3.6 - 0.01 <= speeds[slow_ends] <= 45 / 3.6 + 0.01, f"slow's range still at the step after it ({speeds})"
+
+
+def test_a_time_headway_is_planned_as_a_gap_over_the_followers_speed():
+    """position(time: [1.5s..2.5s], behind: lead) held throughout cruise, and 1 s (+- 0.2 s) at the
+    end of close_in: at every step of the plan the gap over the follower's speed is in range."""
+    automaton = build_automaton(load_scenario(ROOT / "tests" / "corpus" / "46_time_headway.osc"))
+    for seed in (1, 2):
+        plan = ContinuousPlanner(automaton, SETTINGS, seed).first()
+        check_continuous_plan(plan, automaton)
+        cruise_ends, close_in_ends = sorted(step for step, _ in plan.transitions)[1:3]
+        lead, ego = plan.states["lead"], plan.states["ego"]
+        headways = [(lead[k].position - ego[k].position) / ego[k].speed for k in range(len(ego))]
+        assert all(1.5 - 1e-6 <= h <= 2.5 + 1e-6 for h in headways[:cruise_ends]), headways
+        assert 0.8 - 1e-6 <= headways[close_in_ends] <= 1.2 + 1e-6, headways
+
+
+def test_the_grid_encoding_refuses_a_time_headway_at_its_place():
+    from pytest_roadlogic.frontend import OscError
+    from pytest_roadlogic.planning import Planner, PlanningSettings
+
+    automaton = build_automaton(load_scenario(ROOT / "tests" / "corpus" / "46_time_headway.osc"))
+    with pytest.raises(OscError) as raised:
+        Planner(automaton, PlanningSettings(), 1).first()
+    report = raised.value.report()
+    assert "46_time_headway.osc:15:" in report and "continuous" in report, report

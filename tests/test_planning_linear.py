@@ -5,6 +5,7 @@ constraints cannot hold together (a Farkas certificate, never an innocent bystan
 grounded in later steps of a multi-shot solve join those of earlier ones; preferences shape the
 values and never decide whether there is a model."""
 
+import re
 from pathlib import Path
 
 import clingo
@@ -123,8 +124,10 @@ def test_a_theory_atom_read_from_its_printed_form_is_the_atom_its_terms_give(mon
 
     original = linear._row
     monkeypatch.setattr(linear, "_row", row)
-    automaton = build_automaton(load_scenario(Path(__file__).resolve().parent.parent / "scenarios" / "overtake_third_actor.osc"))
-    ContinuousPlanner(automaton, ContinuousSettings(random_start=True), 1).first()
+    root = Path(__file__).resolve().parent.parent
+    for path in (root / "scenarios" / "overtake_third_actor.osc", root / "tests" / "corpus" / "46_time_headway.osc"):
+        ContinuousPlanner(build_automaton(load_scenario(path)), ContinuousSettings(random_start=True), 1).first()
+    assert any(re.search(r"\*v\(ego,[0-9]+\)", text) and "p(lead" in text for text in compared), "a time headway's row was read"
     assert len(compared) > 100
     assert any("&prefer" in text or "&nudge" in text for text in compared)
 

@@ -8,6 +8,11 @@ one small algebra is what lets the planner and the monitor agree on what a scena
 
 Lanes are integers with 0 the leftmost lane (the paper's convention); the robustness of a lane
 bound counts half a lane of slack, so that "in the adjacent lane" has margin +0.5, not 0.
+
+A time headway ``h(a, b)`` is the gap ``p(a) - p(b)`` over the speed of ``b``, the actor behind:
+the seconds ``b`` needs to reach where ``a`` is now (``position(time: t, behind: a)``). It is not
+linear, but a bound on it is, for the follower's speed is never negative: ``lo <= h <= hi`` is
+``p(a) - p(b) - lo v(b) >= 0`` and ``p(a) - p(b) - hi v(b) <= 0`` (how the planner writes it).
 """
 
 from __future__ import annotations
@@ -23,9 +28,13 @@ from ..frontend.errors import SourceLocation
 POSITION = "position"
 LANE = "lane"
 SPEED = "speed"
-QUANTITIES = (POSITION, LANE, SPEED)
-SYMBOL = {POSITION: "p", LANE: "l", SPEED: "v"}
-UNIT = {POSITION: "m", LANE: "lanes", SPEED: "m/s"}
+HEADWAY = "headway"
+QUANTITIES = (POSITION, LANE, SPEED, HEADWAY)
+SYMBOL = {POSITION: "p", LANE: "l", SPEED: "v", HEADWAY: "h"}
+UNIT = {POSITION: "m", LANE: "lanes", SPEED: "m/s", HEADWAY: "s"}
+# the follower's speed a headway is divided by at least (m/s): standing still, the headway to a
+# car ahead is very long, not infinite (a number the monitor can compare and report)
+HEADWAY_SPEED_FLOOR = 0.1
 
 
 class ActorState(Protocol):
@@ -39,13 +48,17 @@ Snapshot = Mapping[str, ActorState]
 
 @dataclass(frozen=True)
 class Term:
-    """``x(actor)`` or the difference ``x(actor) - x(reference)`` for one quantity x."""
+    """``x(actor)`` or the difference ``x(actor) - x(reference)`` for one quantity x; for a
+    headway, ``h(actor, reference)``: (p(actor) - p(reference)) / v(reference)."""
 
     quantity: str
     actor: str
     reference: str | None = None
 
     def value(self, snapshot: Snapshot) -> float:
+        if self.quantity == HEADWAY:
+            ahead, behind = snapshot[self.actor], snapshot[self.reference]
+            return (ahead.position - behind.position) / max(behind.speed, HEADWAY_SPEED_FLOOR)
         value = getattr(snapshot[self.actor], self.quantity)
         if self.reference is not None:
             value -= getattr(snapshot[self.reference], self.quantity)
@@ -57,6 +70,8 @@ class Term:
 
     def __str__(self) -> str:
         s = SYMBOL[self.quantity]
+        if self.quantity == HEADWAY:
+            return f"h({self.actor}, {self.reference})"
         text = f"{s}({self.actor})"
         return text if self.reference is None else f"{text} - {s}({self.reference})"
 
@@ -104,6 +119,11 @@ class Bound(Guard):
         return self.low <= value <= self.high
 
     def robustness_series(self, columns) -> np.ndarray:
+        if self.term.quantity == HEADWAY:
+            ahead, behind = columns[self.term.actor], columns[self.term.reference]
+            gap = np.asarray(ahead["x"], dtype=float) - np.asarray(behind["x"], dtype=float)
+            value = gap / np.maximum(np.asarray(behind["speed"], dtype=float), HEADWAY_SPEED_FLOOR)
+            return np.minimum(value - self.low, self.high - value)
         column = COLUMN[self.term.quantity]
         value = np.asarray(columns[self.term.actor][column], dtype=float)
         if self.term.reference is not None:
@@ -234,7 +254,7 @@ def _num(value: float) -> str:
 def _normalised(bound: Bound) -> tuple[tuple[str, str, str | None], float, float]:
     """The bound over a canonical term: differences always as x(first) - x(second) by name."""
     term = bound.term
-    if term.reference is not None and term.reference < term.actor:
+    if term.reference is not None and term.reference < term.actor and term.quantity != HEADWAY:  # h(a, b) is no -h(b, a)
         return (term.quantity, term.reference, term.actor), -bound.high, -bound.low
     return (term.quantity, term.actor, term.reference), bound.low, bound.high
 

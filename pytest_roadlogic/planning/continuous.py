@@ -22,7 +22,7 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 from fractions import Fraction
 
-from ..automaton.guards import LANE, POSITION, SPEED, And, Bound, Guard, Not, Or
+from ..automaton.guards import HEADWAY, LANE, POSITION, SPEED, And, Bound, Guard, Not, Or
 from ..automaton.model import SymbolicAutomaton
 from .linear import THEORY, LazyLinearTheory
 from .errors import HorizonTooShort, NoPlanError, PlanningTimeout
@@ -56,6 +56,7 @@ class ContinuousSettings:
     spread: float = 300.0  # m from the first vehicle within which the others start
     position_margin: float = 1.5  # m planned inside each side of a position range, when it fits
     speed_margin: float = 0.5  # m/s likewise for speeds
+    headway_margin: float = 0.2  # s likewise for time headways
     max_horizon: int = 120  # steps
     time_limit: float = 60.0  # seconds for one solve, all horizons together
     # how the linear constraints are kept: "lazy" checks each complete choice with HiGHS and learns
@@ -169,7 +170,16 @@ def _terms(bound: Bound) -> tuple[str, str]:
 
 
 def _margin(bound: Bound, settings: ContinuousSettings) -> float:
+    if bound.term.quantity == HEADWAY:
+        return settings.headway_margin
     return settings.position_margin if bound.term.quantity == POSITION else settings.speed_margin
+
+
+def _headway(bound: Bound, seconds: float) -> str:
+    """The &sum elements of ``gap - seconds * v(follower)`` of a headway bound ``h(a, b)``: its
+    sign says on which side of ``seconds`` the headway is (the follower never reverses)."""
+    ahead, behind = _atom(bound.term.actor), _atom(bound.term.reference)
+    return f"p({ahead},t); -1*p({behind},t); {_number(-seconds)}*v({behind},t)"
 
 
 def _guard_rules(node: int, guard: Guard, numbering: dict[Guard, int], settings: ContinuousSettings, switch: str = "") -> list[str]:
@@ -188,6 +198,13 @@ def _guard_rules(node: int, guard: Guard, numbering: dict[Guard, int], settings:
     if guard.term.quantity == LANE:
         return _bound_rule(head, guard, None)
     low, high = _inset(guard.low, guard.high, _margin(guard, settings))
+    if guard.term.quantity == HEADWAY:
+        rules = [f"{{ {head} }}.", f"#heuristic {head}. [1,false]"]
+        if high != math.inf:
+            rules.append(f"&sum{{ {_headway(guard, high)} }} <= 0 :- {head}{switch}.")
+        if low != -math.inf:
+            rules.append(f"&sum{{ {_headway(guard, low)} }} >= 0 :- {head}{switch}.")
+        return rules
     if guard.term.quantity == SPEED and guard.term.reference is None and guard.low <= 0:
         low = 0.0  # no margin below a standstill: no vehicle undershoots it (none reverses)
     _, elements = _terms(guard)
@@ -225,15 +242,20 @@ def _outside(node: int, bound: Bound, settings: ContinuousSettings, switch: str 
     """``not bound``: below the range or above it, with the margin outside."""
     margin = _margin(bound, settings)
     head = f"g({node},t)"
-    _, elements = _terms(bound)
     sides = []
     rules = []
+    if bound.term.quantity == HEADWAY:
+        below = (_headway(bound, bound.low - margin), "0")
+        above = (_headway(bound, bound.high + margin), "0")
+    else:
+        _, elements = _terms(bound)
+        below, above = (elements, _number(bound.low - margin)), (elements, _number(bound.high + margin))
     if bound.low != -math.inf:
         sides.append(f"below({node},t)")
-        rules.append(f"&sum{{ {elements} }} <= {_number(bound.low - margin)} :- below({node},t).")
+        rules.append(f"&sum{{ {below[0]} }} <= {below[1]} :- below({node},t).")
     if bound.high != math.inf:
         sides.append(f"above({node},t)")
-        rules.append(f"&sum{{ {elements} }} >= {_number(bound.high + margin)} :- above({node},t).")
+        rules.append(f"&sum{{ {above[0]} }} >= {above[1]} :- above({node},t).")
     if not sides:
         return [f"% {head} never holds"]
     return [f"{{ {head} }}.", f"#heuristic {head}. [1,false]", f"{{ {'; '.join(sides)} }} = 1 :- {head}{switch}.", *rules]

@@ -16,9 +16,10 @@ import math
 import random
 from dataclasses import dataclass
 
-from ..automaton.guards import LANE, POSITION, SPEED, And, Bound, Guard, Not, Or
+from ..automaton.guards import HEADWAY, LANE, POSITION, SPEED, And, Bound, Guard, Not, Or
 from ..automaton.model import SymbolicAutomaton
 from ..settings import DEFAULT_HORIZON, DEFAULT_PLAN_TIMEOUT
+from ..frontend.errors import OscError, error_at
 
 
 @dataclass(frozen=True)
@@ -305,11 +306,22 @@ def _guard_rules(node: int, guard: Guard, numbering: dict[Guard, int], settings:
         return junction_rules(node, guard, numbering)
     if isinstance(guard, Not):  # on a bound (negation normal form): outside the range, with a margin
         assert isinstance(guard.part, Bound)
+        if guard.part.term.quantity == HEADWAY:
+            raise _needs_continuous(guard.part)
         return _outside_rules(node, guard.part, settings, switch)
     assert isinstance(guard, Bound)
+    if guard.term.quantity == HEADWAY:
+        raise _needs_continuous(guard)
     if guard.term.quantity == POSITION:
         return _position_rules(node, guard, settings, switch)
     return _bound_rule(head, guard, settings)
+
+
+def _needs_continuous(bound: Bound) -> OscError:
+    """The grid's positions and speeds are separate integer fluents: a time headway (a gap over a
+    speed) has no rule there."""
+    return error_at(bound.source, "a time headway (position(time: ...)) needs the continuous planner; the grid encoding cannot express it",
+                    hint="drop --roadlogic-encoding grid / --encoding grid (continuous is the default)")
 
 
 def _margin_and_scale(bound: Bound, settings: PlanningSettings | None) -> tuple[float, float, str]:
