@@ -24,7 +24,11 @@ from ..planning.plan import Plan
 from .road import Road
 
 LANE_CHANGE_DURATION = 3.0  # s; fits between two lane changes (3 planning steps apart)
-TAIL = 2.0  # s simulated after the plan's last step
+# s simulated after the plan's last step: the scenario's last phase may end then if its duration
+# allows. Measured on cut_out_obstacle (the ego brakes to a stop at the plan's last step and the
+# simulated car settles below 0.5 m/s about 0.5 s late): first plans accepted over seeds 1-10, 1 with
+# 2 s, 9 with 4 s; the paper's seven and the other realistic files unchanged (67 of 70, 10 of 10)
+TAIL = 4.0
 
 
 @dataclass(frozen=True)
