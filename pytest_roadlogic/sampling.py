@@ -61,6 +61,9 @@ class LogicalParameter:
     integer: bool = False  # lane numbers, int/uint parameters
     choices: tuple[Any, ...] = ()  # bool and enum parameters (then low/high are unused)
     declared: bool = True  # a declared parameter, not an inline range
+    # the planning resolution its sampled value is narrowed with, when not its dimension's
+    # (``Construct.sampled_as``: a time headway is a time, but no duration)
+    sampled_as: str | None = None
 
     def show(self, value: Any) -> str:
         if self.choices:
@@ -85,18 +88,19 @@ def logical_parameters(checked: CheckedScenario) -> list[LogicalParameter]:
         elif domain.choices:
             found.append(LogicalParameter(domain.name, domain.location, choices=tuple(domain.choices)))
     inline = list(_inline_ranges(checked))
-    counts = Counter(name for name, _ in inline)
-    for name, node in inline:
+    counts = Counter(name for name, _, _ in inline)
+    for name, node, sampled_as in inline:
         if counts[name] > 1:
             name = f"{name}@{node.location.line}"
         low, high = sorted((node.low.value, node.high.value))
         integer = node.dimension is None and float(low).is_integer() and float(high).is_integer()
-        found.append(LogicalParameter(name, node.location, node.dimension, low, high, integer, declared=False))
+        found.append(LogicalParameter(name, node.location, node.dimension, low, high, integer, declared=False, sampled_as=sampled_as))
     return found
 
 
 def _inline_ranges(checked: CheckedScenario):
-    """(name, Range) for every range written in the behavior, named after where it stands."""
+    """(name, Range, resolution or None) for every range written in the behavior, named after
+    where it stands."""
     behavior, registry = checked.scenario.behavior, checked.registry
     if behavior is None:
         return
@@ -110,20 +114,21 @@ def _inline_ranges(checked: CheckedScenario):
                 binding = bind(construct.signature, modifier.arguments) if construct else None
                 if construct is not None and construct.held_throughout(binding):
                     continue  # a bound of the whole phase, kept by the planner: not a parameter
-                yield from _ranges_of(f"{phase}.{modifier.name}", modifier.arguments, binding)
+                yield from _ranges_of(f"{phase}.{modifier.name}", modifier.arguments, binding, construct)
         elif isinstance(node, model.Composition):
             yield from _ranges_of(node.label or node.operator, node.arguments, None)
         elif isinstance(node, model.Wait) and isinstance(node.condition, model.Call):
             for argument in node.condition.arguments:
                 if isinstance(argument.value, model.Range):
-                    yield f"{node.label or 'wait'}.{node.condition.function}", argument.value
+                    yield f"{node.label or 'wait'}.{node.condition.function}", argument.value, None
 
 
-def _ranges_of(prefix: str, arguments: tuple[model.Argument, ...], binding: Binding | None):
+def _ranges_of(prefix: str, arguments: tuple[model.Argument, ...], binding: Binding | None, construct=None):
     named = {id(a): n for n, a in binding.arguments.items()} if binding is not None else {}
     for argument in arguments:
         if isinstance(argument.value, model.Range):
-            yield f"{prefix}.{argument.name or named.get(id(argument), 'value')}", argument.value
+            name = argument.name or named.get(id(argument), "value")
+            yield f"{prefix}.{name}", argument.value, construct.sampled_as(name) if construct is not None else None
 
 
 # ------------------------------------------------------------------ sampling
@@ -215,7 +220,8 @@ def guided(
         if parameter.choices or parameter.integer:
             band: Any = value
         else:
-            band = _band(parameter, float(value), resolution.get(parameter.dimension, 0.0), margins.get(parameter.dimension, 0.0))
+            kind = parameter.sampled_as or parameter.dimension
+            band = _band(parameter, float(value), resolution.get(kind, 0.0), margins.get(kind, 0.0))
         if parameter.declared:
             declared[name] = Interval(band[0], band[1], parameter.dimension) if isinstance(band, tuple) else band
         else:

@@ -30,3 +30,35 @@ def test_ranges_held_at_an_instant_are_parameters_and_ranges_held_throughout_are
     assert set(found) == {"gap", "parallel.duration", "ego.drive.speed.speed", "ego.drive.position.distance"}
     assert found["ego.drive.speed.speed"][:2] == (15.0, 25.0), "the at: end speed, not the at: all bound"
     assert found["ego.drive.position.distance"][:2] == (15.0, 25.0)
+
+
+def test_a_sampled_time_headway_is_narrowed_to_the_headway_band_not_a_durations_step():
+    """position(time: [1.5s..2.5s], at: start) is a time like a duration, but the planner places it
+    to tenths of a second, not whole steps: its sample is planned within +-0.2 s (two headway
+    margins wide), where a duration's sample gets +-0.5 s."""
+    from pytest_roadlogic.planning.continuous import ContinuousSettings
+    from pytest_roadlogic.sampling import guided
+
+    checked = check_text("""
+scenario headway:
+    ego: car
+    lead: car
+    do parallel(duration: [5..8]s):
+        lead.drive()
+        ego.drive() with:
+            lane(same_as: lead)
+            position(time: [1.5s..2.5s], behind: lead, at: start)
+""", "headway.osc")
+    checked.raise_for_errors()
+    checked = checked.scenario_to_run()
+    parameters = {p.name: p for p in logical_parameters(checked)}
+    assert parameters["ego.drive.position.time"].sampled_as == "headway"
+    settings = ContinuousSettings()
+    narrowed, _ = guided(checked, {"ego.drive.position.time": 2.0, "parallel.duration": 6.0}, settings.resolution(), settings.margins())
+    from pytest_roadlogic.automaton import build_automaton
+    from pytest_roadlogic.automaton.guards import HEADWAY
+
+    automaton = build_automaton(narrowed)
+    bounds = {(b.low, b.high) for t in automaton.transitions for b in t.guard.atoms() if b.term.quantity == HEADWAY}
+    assert bounds == {(1.8, 2.2)}, bounds
+    assert {(t.low, t.high) for t in automaton.timings.values()} == {(5.5, 6.5)}

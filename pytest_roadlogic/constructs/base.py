@@ -126,6 +126,11 @@ class Construct:
         its ranges are then bounds the plan stays within, not logical parameters (sampling.py)."""
         return False
 
+    def sampled_as(self, argument: str) -> str | None:
+        """The planning resolution a sampled value of ``argument`` is narrowed with, when it is
+        not its unit's dimension (a time headway is a time, but no duration: sampling.py)."""
+        return None
+
     def translate(self, use: Use, phase: Phase) -> None:
         """Add this use's guards to its phase."""
         raise NotImplementedError(f"{type(self).__name__} is translated = {self.translated} but has no translate()")

@@ -25,6 +25,9 @@ class Position(AnchoredModifier):
         description="longitudinal gap to another actor",
     )
 
+    def sampled_as(self, argument: str) -> str | None:
+        return "headway" if argument == "time" else None
+
     def guard(self, use: Use) -> Guard:
         relation = use.relation(("behind", "ahead_of"))
         if relation is None:

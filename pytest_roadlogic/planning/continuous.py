@@ -78,12 +78,13 @@ class ContinuousSettings:
     def resolution(self) -> dict[str | None, float]:
         """How wide a band a sampled value is narrowed to, per physical dimension: positions and
         speeds are real-valued here, so the band is the planning margin's (the plan lies within a
-        quarter of it from the sample); durations still count whole steps."""
-        return {"length": 2 * self.position_margin, "speed": 2 * self.speed_margin, "time": self.dt, "acceleration": 0.5}
+        quarter of it from the sample); durations still count whole steps, time headways do not."""
+        return {"length": 2 * self.position_margin, "speed": 2 * self.speed_margin, "time": self.dt, "acceleration": 0.5,
+                "headway": 2 * self.headway_margin}
 
     def margins(self) -> dict[str | None, float]:
         """How far inside a range's edges the plan keeps, per physical dimension."""
-        return {"length": self.position_margin, "speed": self.speed_margin}
+        return {"length": self.position_margin, "speed": self.speed_margin, "headway": self.headway_margin}
 
     def summary(self, lanes: int) -> str:
         """The vehicle limits and bounds on a road of ``lanes`` lanes, for messages that blame them."""
