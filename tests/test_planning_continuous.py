@@ -8,7 +8,7 @@ import pytest
 
 from pytest_roadlogic.automaton import build_automaton
 from pytest_roadlogic.pipeline import load_scenario
-from pytest_roadlogic.planning import NoPlanError, UnsatisfiableScenario
+from pytest_roadlogic.planning import UnsatisfiableScenario
 from pytest_roadlogic.planning.continuous import ContinuousPlanner, ContinuousSettings, stopping
 from tests.test_planning import check_run
 
