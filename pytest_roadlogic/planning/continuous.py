@@ -175,11 +175,15 @@ def _margin(bound: Bound, settings: ContinuousSettings) -> float:
     return settings.position_margin if bound.term.quantity == POSITION else settings.speed_margin
 
 
-def _headway(bound: Bound, seconds: float) -> str:
-    """The &sum elements of ``gap - seconds * v(follower)`` of a headway bound ``h(a, b)``: its
-    sign says on which side of ``seconds`` the headway is (the follower never reverses)."""
-    ahead, behind = _atom(bound.term.actor), _atom(bound.term.reference)
-    return f"p({ahead},t); -1*p({behind},t); {_number(-seconds)}*v({behind},t)"
+def _compared(bound: Bound, value: float) -> tuple[str, str]:
+    """(&sum elements, right-hand side) that compare a bound's term with ``value`` in a linear
+    row: the row's ``<=`` (``>=``) holds exactly when the term is at most (at least) ``value``.
+    A headway ``h(a, b)`` is compared as ``gap - value * v(b)`` with 0 (the follower never
+    reverses); a position or speed as the term itself with ``value``."""
+    if bound.term.quantity == HEADWAY:
+        ahead, behind = _atom(bound.term.actor), _atom(bound.term.reference)
+        return f"p({ahead},t); -1*p({behind},t); {_number(-value)}*v({behind},t)", "0"
+    return _terms(bound)[1], _number(value)
 
 
 def _guard_rules(node: int, guard: Guard, numbering: dict[Guard, int], settings: ContinuousSettings, switch: str = "") -> list[str]:
@@ -198,25 +202,17 @@ def _guard_rules(node: int, guard: Guard, numbering: dict[Guard, int], settings:
     if guard.term.quantity == LANE:
         return _bound_rule(head, guard, None)
     low, high = _inset(guard.low, guard.high, _margin(guard, settings))
-    if guard.term.quantity == HEADWAY:
-        rules = [f"{{ {head} }}.", f"#heuristic {head}. [1,false]"]
-        if high != math.inf:
-            rules.append(f"&sum{{ {_headway(guard, high)} }} <= 0 :- {head}{switch}.")
-        if low != -math.inf:
-            rules.append(f"&sum{{ {_headway(guard, low)} }} >= 0 :- {head}{switch}.")
-        return rules
     if guard.term.quantity == SPEED and guard.term.reference is None and guard.low <= 0:
         low = 0.0  # no margin below a standstill: no vehicle undershoots it (none reverses)
-    _, elements = _terms(guard)
     # a free guard is tried false first: set at random, it would add linear constraints at steps
     # where no transition or invariant needs it
     rules = [f"{{ {head} }}.", f"#heuristic {head}. [1,false]"]
-    if high != math.inf:
-        rules.append(f"&sum{{ {elements} }} <= {_number(high)} :- {head}{switch}.")
-    if low != -math.inf:
-        rules.append(f"&sum{{ {elements} }} >= {_number(low)} :- {head}{switch}.")
+    for value, operator in ((high, "<="), (low, ">=")):
+        if math.isfinite(value):
+            elements, right = _compared(guard, value)
+            rules.append(f"&sum{{ {elements} }} {operator} {right} :- {head}{switch}.")
     if guard.term.quantity == SPEED:
-        rules += _speed_lead(node, elements, low, high)
+        rules += _speed_lead(node, _terms(guard)[1], low, high)
     return rules
 
 
@@ -244,18 +240,14 @@ def _outside(node: int, bound: Bound, settings: ContinuousSettings, switch: str 
     head = f"g({node},t)"
     sides = []
     rules = []
-    if bound.term.quantity == HEADWAY:
-        below = (_headway(bound, bound.low - margin), "0")
-        above = (_headway(bound, bound.high + margin), "0")
-    else:
-        _, elements = _terms(bound)
-        below, above = (elements, _number(bound.low - margin)), (elements, _number(bound.high + margin))
     if bound.low != -math.inf:
         sides.append(f"below({node},t)")
-        rules.append(f"&sum{{ {below[0]} }} <= {below[1]} :- below({node},t).")
+        elements, right = _compared(bound, bound.low - margin)
+        rules.append(f"&sum{{ {elements} }} <= {right} :- below({node},t).")
     if bound.high != math.inf:
         sides.append(f"above({node},t)")
-        rules.append(f"&sum{{ {above[0]} }} >= {above[1]} :- above({node},t).")
+        elements, right = _compared(bound, bound.high + margin)
+        rules.append(f"&sum{{ {elements} }} >= {right} :- above({node},t).")
     if not sides:
         return [f"% {head} never holds"]
     return [f"{{ {head} }}.", f"#heuristic {head}. [1,false]", f"{{ {'; '.join(sides)} }} = 1 :- {head}{switch}.", *rules]
