@@ -32,24 +32,25 @@ class Position(AnchoredModifier):
         relation = use.relation(("behind", "ahead_of"))
         if relation is None:
             raise error_at(use.location, "position() needs behind: or ahead_of: another actor")
-        keyword, other = relation
-        if use.argument("time") is not None:
-            low, high = use.range("time", TIME, "a time such as 2s or [1.5s..2.5s]")
-            if low < 0:
-                raise error_at(use.argument("time").location, "a time headway must not be negative", hint="use behind: instead of ahead_of: (or the reverse)")
-            if low == high:
-                low, high = max(0.0, low - HEADWAY_TOLERANCE), high + HEADWAY_TOLERANCE
-            term = Term(HEADWAY, other, use.actor) if keyword == "behind" else Term(HEADWAY, use.actor, other)
-            return Bound(term, low, high, use.location)
-        if use.argument("distance") is None:
+        argument = "time" if use.argument("time") is not None else "distance"
+        if use.argument(argument) is None:
             raise error_at(use.location, "position() needs a distance, e.g. position([10..20]m, behind: v2)")
-        low, high = use.range("distance", LENGTH, "a length such as 10m or [10..20]m")
+        quantity, dimension, example, what, tolerance = _GAPS[argument]
+        low, high = use.range(argument, dimension, example)
         if low < 0:
-            raise error_at(use.argument("distance").location, "a distance must not be negative", hint="use behind: instead of ahead_of: (or the reverse)")
+            raise error_at(use.argument(argument).location, f"{what} must not be negative", hint="use behind: instead of ahead_of: (or the reverse)")
         if low == high:
-            low, high = max(0.0, low - POSITION_TOLERANCE), high + POSITION_TOLERANCE
-        term = Term(POSITION, other, use.actor) if keyword == "behind" else Term(POSITION, use.actor, other)
+            low, high = max(0.0, low - tolerance), high + tolerance
+        keyword, other = relation
+        term = Term(quantity, other, use.actor) if keyword == "behind" else Term(quantity, use.actor, other)
         return Bound(term, low, high, use.location)
 
+
+# the two ways to give the gap, by argument: (quantity, dimension, an example for errors, what it
+# is, the tolerance of a single value)
+_GAPS = {
+    "distance": (POSITION, LENGTH, "a length such as 10m or [10..20]m", "a distance", POSITION_TOLERANCE),
+    "time": (HEADWAY, TIME, "a time such as 2s or [1.5s..2.5s]", "a time headway", HEADWAY_TOLERANCE),
+}
 
 CONSTRUCTS = (Position(),)
