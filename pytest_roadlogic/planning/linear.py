@@ -96,14 +96,12 @@ class LinearProgram:
         return self.variables[key]
 
     def hard(self):
-        """The constraints that always hold: inequality and equality rows, and their matrices.
-        Built once per growth of the program, not on every check (they are most of its rows)."""
-        key = (len(self.always), len(self.symbols))
-        if self._hard is None or self._hard[0] != key:
+        """The constraints that always hold, as (inequality rows, equality rows). Split once per
+        growth of the program, not on every check (they are most of its rows)."""
+        if self._hard is None or self._hard[0] != len(self.always):
             inequalities = [(row, 0) for row in self.always if not row.equal]
             equalities = [(row, 0) for row in self.always if row.equal]
-            n = len(self.symbols)
-            self._hard = (key, (inequalities, equalities, _matrix(inequalities, n), _matrix(equalities, n)))
+            self._hard = (len(self.always), (inequalities, equalities))
         return self._hard[1]
 
     def printed_variable(self, text: str) -> int:
@@ -349,15 +347,10 @@ class SwitchedCheck:
             self.on = np.concatenate([self.on, np.zeros(m, dtype=bool)])
 
     def _add_rows(self, rows: list[Row], lower: list[float], upper: list[float]) -> None:
-        starts, indices, values = [], [], []
-        for row in rows:
-            starts.append(len(indices))
-            for variable, coefficient in row.coefficients.items():
-                if coefficient:
-                    indices.append(self.column[variable])
-                    values.append(coefficient)
-        self.highs.addRows(len(rows), np.array(lower, dtype=float), np.array(upper, dtype=float), len(indices),
-                           np.array(starts, dtype=np.int32), np.array(indices, dtype=np.int32), np.array(values, dtype=float))
+        matrix, _ = _matrix([(row, 0) for row in rows], len(self.column))
+        columns = np.asarray(self.column, dtype=np.int32)[matrix.indices]  # the model's columns
+        self.highs.addRows(len(rows), np.array(lower, dtype=float), np.array(upper, dtype=float), matrix.nnz,
+                           matrix.indptr[:-1].astype(np.int32), columns, matrix.data.astype(float))
 
     def conflict(self, program: LinearProgram, on: list[int]) -> list[int] | None | bool:
         """The literals of ``on`` whose rows cannot hold together with those that always hold,
@@ -389,11 +382,12 @@ class SwitchedCheck:
 def _elastic_conflict(program: LinearProgram, on: list[int]) -> list[int] | None:
     """The same answer as ``SwitchedCheck.conflict`` from an elastic program built afresh (every
     switched-on row may be violated at a cost; the rows with a non-zero dual at the optimum clash)."""
-    n = len(program.symbols)
-    _, _, (hard_ub, hard_b), (eq, eq_b) = program.hard()
     elastic = [(half, literal) for literal in on for half in _split(program.switched[literal])]
     if not elastic:
         return None
+    n = len(program.symbols)
+    inequalities, equalities = program.hard()
+    (hard_ub, hard_b), (eq, eq_b) = _matrix(inequalities, n), _matrix(equalities, n)
     soft, soft_b = _matrix(elastic, n)
     m = len(elastic)
     # min sum(s): soft x - s <= b, s >= 0
@@ -415,7 +409,7 @@ def check_rows(program: LinearProgram, on: list[int], preferring: list[int] | No
     """(None, a smooth solution) when the constraints that always hold and those of the literals
     ``on`` can hold together, else (the literals of an infeasible part, None). The solution meets
     the preferences that always apply and those of the literals ``preferring`` (default: ``on``)."""
-    inequalities, equalities, _, _ = program.hard()
+    inequalities, equalities = program.hard()
     if program.checker is None:
         program.checker = SwitchedCheck()
     conflict = program.checker.conflict(program, on)
