@@ -123,11 +123,11 @@ class Bound(Guard):
             ahead, behind = columns[self.term.actor], columns[self.term.reference]
             gap = np.asarray(ahead["x"], dtype=float) - np.asarray(behind["x"], dtype=float)
             value = gap / np.maximum(np.asarray(behind["speed"], dtype=float), HEADWAY_SPEED_FLOOR)
-            return np.minimum(value - self.low, self.high - value)
-        column = COLUMN[self.term.quantity]
-        value = np.asarray(columns[self.term.actor][column], dtype=float)
-        if self.term.reference is not None:
-            value = value - np.asarray(columns[self.term.reference][column], dtype=float)
+        else:
+            column = COLUMN[self.term.quantity]
+            value = np.asarray(columns[self.term.actor][column], dtype=float)
+            if self.term.reference is not None:
+                value = value - np.asarray(columns[self.term.reference][column], dtype=float)
         slack = 0.5 if self.term.quantity == LANE else 0.0
         return np.minimum(value - (self.low - slack), (self.high + slack) - value)
 
