@@ -8,13 +8,20 @@
   initial locations together and reach their final locations together (``parallel`` without
   ``overlap:`` starts and ends its members together); in between they move alone or jointly.
 - one_of A | B: the union, with a fresh initial and final location.
+- events: ``emit e`` is no phase but a mark on the instant between its serial neighbours;
+  ``wait @e`` and ``until @e`` end their phase on an edge that *awaits* e. The product of a
+  parallel keeps a combination of moves only if every event awaited in it is emitted in it (or,
+  inside a nested parallel, may still be emitted by an outer member: such edges carry the event
+  up, and the ones still waiting at the top are dropped), and never lets a component that waits
+  for e without a condition stay put while e is emitted (a wait ends at the event's first
+  occurrence, not at a later one).
 Locations that cannot reach the final location are pruned.
 """
 
 from __future__ import annotations
 
 import itertools
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Hashable
 
 from ..frontend import model
@@ -23,7 +30,8 @@ from ..frontend.errors import error_at
 from .guards import TRUE, Guard, conjunction
 from .model import Location, SymbolicAutomaton, Timing, Transition
 from .phase import Variant
-from .translation import check_behavior_arguments, condition_guard, duration_interval, phase_guards
+from ..constructs.conditions import condition_guard
+from .translation import check_behavior_arguments, duration_interval, phase_guards
 
 Key = Hashable
 
@@ -36,6 +44,16 @@ class _Edge:
     target: Key
     starts: frozenset[int] = frozenset()
     ends: frozenset[int] = frozenset()
+    emits: frozenset[str] = frozenset()  # events emitted at this instant
+    awaits: frozenset[str] = frozenset()  # events that must be emitted at this instant, not yet matched
+    # events that components staying put across this edge wait for: none of them may be emitted here
+    deaf: frozenset[str] = frozenset()
+
+    def joined(self, other: "_Edge", target: Key) -> "_Edge":
+        """The two edges taken at one instant (a serial's junction)."""
+        emits = self.emits | other.emits
+        return _Edge(self.source, conjunction([self.guard, other.guard]), self.events + other.events, target,
+                     self.starts | other.starts, self.ends | other.ends, emits, (self.awaits | other.awaits) - emits, self.deaf | other.deaf)
 
 
 @dataclass
@@ -48,6 +66,8 @@ class _Fragment:
     names: dict[Key, tuple[str, bool]] = field(default_factory=dict)  # key -> (name, labelled)
     drivers: dict[Key, frozenset[str]] = field(default_factory=dict)
     invariants: dict[Key, Guard] = field(default_factory=dict)
+    # locations whose phase ends at the first emission of these events (wait @e, until @e)
+    listening: dict[Key, frozenset[str]] = field(default_factory=dict)
 
     def outgoing(self, key: Key) -> list[_Edge]:
         return [e for e in self.edges if e.source == key]
@@ -78,19 +98,24 @@ class _Builder:
         self.env = env
         self.counter = itertools.count()
         self.timings: dict[int, Timing] = {}
+        self.actors = tuple(a.name for a in checked.scenario.actors)
+        self.events = {e.name: e for e in checked.scenario.events}
 
     def translate(self, behavior: model.Behavior) -> _Fragment:
         if isinstance(behavior, model.Invocation):
             fragment = _atomic(behavior, self.checked, self.counter, self.env)
+            if behavior.until is not None:
+                fragment = self.end_on(fragment, behavior.until, behavior.label or _phase_name(behavior), behavior.location)
             duration = behavior.argument("duration")
         elif isinstance(behavior, model.Wait):
             return self.wait(behavior)
         elif isinstance(behavior, model.Composition):
             fragment = self.composition(behavior)
             duration = behavior.argument("duration")
+        elif isinstance(behavior, model.Emit):
+            raise error_at(behavior.location, "emit is a member of a serial: it marks the instant between its neighbours", hint="put it in a serial, after the phase whose end it announces")
         else:
-            kind = type(behavior).__name__.lower()
-            raise error_at(behavior.location, f"not supported yet by the automaton: {kind}", hint="events (emit, wait @e, until) and call are not translated")
+            raise error_at(behavior.location, "not supported yet by the automaton: call", hint="methods with side effects cannot be planned; remove the call")
         if duration is not None:
             low, high = duration_interval(duration, self.env)
             name = getattr(behavior, "label", None) or _phase_name(behavior)
@@ -99,34 +124,67 @@ class _Builder:
 
     def composition(self, behavior: model.Composition) -> _Fragment:
         check_behavior_arguments(behavior)
-        children = [self.translate(child) for child in behavior.children]
-        if not children:
+        if not behavior.children:
             raise error_at(behavior.location, f"{behavior.operator} has no members")
         if behavior.operator == "serial":
-            result = children[0]
-            for child in children[1:]:
-                result = _serial(result, child)
-            return result
+            return self.serial(behavior)
+        children = [self.translate(child) for child in behavior.children]
         if behavior.operator == "parallel":
             return _parallel(children) if len(children) > 1 else children[0]
         return _one_of(children, next(self.counter))
 
+    def serial(self, behavior: model.Composition) -> _Fragment:
+        """Members one after another; an ``emit`` marks the junction it stands at."""
+        result: _Fragment | None = None
+        pending: list[str] = []  # emitted since the last phase
+        for child in behavior.children:
+            if isinstance(child, model.Emit):
+                pending.append(child.event)
+                continue
+            fragment = self.translate(child)
+            if pending and result is None:
+                _emit(fragment.outgoing(fragment.initial), pending)
+            elif pending:
+                _emit([e for e in result.edges if e.target == result.final], pending)
+            pending = []
+            result = fragment if result is None else _serial(result, fragment)
+        if result is None:
+            raise error_at(behavior.location, "a serial of only emit has no instant to emit at", hint="emit between two phases, or after one")
+        _emit([e for e in result.edges if e.target == result.final], pending)
+        return result
+
     def wait(self, wait: model.Wait) -> _Fragment:
-        """A phase in which nothing is asked of anyone: it lasts the given time, or until the condition."""
+        """A phase in which nothing is asked of anyone: it lasts the given time, or until the condition or event."""
         name = wait.label or "wait"
-        condition = wait.condition
-        end: Guard = TRUE
-        timed = None
-        if isinstance(condition, model.Call) and condition.function == "elapsed":
-            timed = duration_interval(condition.arguments[0], self.env)
-        elif isinstance(condition, model.EventReference):
-            raise error_at(wait.location, "not supported yet by the automaton: wait @event", hint="wait elapsed(t) or wait on a condition")
-        else:
-            end = condition_guard(condition, self.env)
-        fragment = _phase(next(self.counter), name, wait.label is not None, Variant(end=end), frozenset())
+        fragment = _phase(next(self.counter), name, wait.label is not None, Variant(), frozenset())
+        return self.end_on(fragment, wait.condition, name, wait.location)
+
+    def end_on(self, fragment: _Fragment, spec: model.EventSpecification, name: str, location) -> _Fragment:
+        """The fragment ending as ``spec`` says (``until``, ``wait``): where a condition holds, at an
+        emitted event, or ``elapsed(t)`` after it began (a timed phase)."""
+        guard, event, first, timed = self.ending(spec)
         if timed is not None:
-            fragment = self.timed(fragment, name, timed[0], timed[1], wait.location)
+            fragment = self.timed(fragment, name, timed[0], timed[1], location)
+        _end_on(fragment, guard, event, first)
         return fragment
+
+    def ending(self, spec: model.EventSpecification, seen: tuple[str, ...] = ()) -> tuple[Guard, str | None, bool, tuple[float, float] | None]:
+        """What ends a phase on ``spec``: a guard at its end, the event its end awaits, whether it
+        ends at the event's first emission (no ``if`` condition), and how long it lasts when the
+        event is ``elapsed(t)`` (counted from the phase's start)."""
+        if isinstance(spec, model.Call) and spec.function == "elapsed":
+            return TRUE, None, False, duration_interval(spec.arguments[0], self.env)
+        if not isinstance(spec, model.EventReference):
+            return condition_guard(spec, self.env, self.actors), None, False, None
+        declared = self.events.get(spec.name)
+        if declared is None or spec.name in seen:
+            what = "a built-in event" if declared is None else "an event defined through itself"
+            raise error_at(spec.location, f"not supported yet by the automaton: @{spec.name} ({what})", hint="wait for an event the scenario declares and emits, or on a condition")
+        extra = condition_guard(spec.condition, self.env, self.actors) if spec.condition is not None else TRUE
+        if declared.specification is not None:  # event e is @other / is (condition) / is elapsed(t)
+            guard, event, first, timed = self.ending(declared.specification, seen + (spec.name,))
+            return conjunction([guard, extra]), event, first and spec.condition is None, timed
+        return extra, spec.name, spec.condition is None, None
 
     def timed(self, fragment: _Fragment, name: str, low: float, high: float, source) -> _Fragment:
         """Mark the fragment's first and last instants as one timed phase lasting low..high seconds."""
@@ -155,6 +213,26 @@ def _atomic(invocation: model.Invocation, checked: CheckedScenario, counter, env
     return fragments[0] if len(fragments) == 1 else _one_of(fragments, next(counter))
 
 
+def _emit(edges: list[_Edge], events: list[str]) -> None:
+    for edge in edges:
+        edge.emits = edge.emits | frozenset(events)
+        edge.awaits = edge.awaits - edge.emits
+        edge.events = edge.events + tuple(f"{e} emitted" for e in events)
+
+
+def _end_on(fragment: _Fragment, guard: Guard, event: str | None, first: bool) -> None:
+    """End the fragment's phase where ``guard`` holds and, when ``event`` is given, ``event`` is
+    emitted (at its first emission when ``first``)."""
+    for edge in fragment.edges:
+        if edge.target != fragment.final:
+            continue
+        edge.guard = conjunction([edge.guard, guard])
+        if event is not None:
+            edge.awaits = edge.awaits | {event}
+            if first:
+                fragment.listening[edge.source] = fragment.listening.get(edge.source, frozenset()) | {event}
+
+
 def _phase(uid: int, name: str, labelled: bool, variant: Variant, drivers: frozenset[str]) -> _Fragment:
     """``init --start--> phase --end--> fin`` for one phase (of an action, or a wait)."""
     i, s, f = ("i", uid), ("s", uid), ("f", uid)
@@ -176,10 +254,7 @@ def _serial(first: _Fragment, second: _Fragment) -> _Fragment:
     edges += [e for e in second.edges if e.source != second.initial]
     for into in (e for e in first.edges if e.target == first.final):
         for out in second.outgoing(second.initial):
-            edges.append(
-                _Edge(into.source, conjunction([into.guard, out.guard]), into.events + out.events, out.target,
-                      into.starts | out.starts, into.ends | out.ends)
-            )
+            edges.append(into.joined(out, out.target))
     return _Fragment(
         initial=first.initial,
         final=second.final,
@@ -187,6 +262,7 @@ def _serial(first: _Fragment, second: _Fragment) -> _Fragment:
         names={**first.names, **second.names},
         drivers={**first.drivers, **second.drivers},
         invariants={**first.invariants, **second.invariants},
+        listening={**first.listening, **second.listening},
     )
 
 
@@ -212,9 +288,14 @@ def _parallel(children: list[_Fragment]) -> _Fragment:
             if any(finished) and not all(finished):
                 continue  # members of a parallel end together
             moving = [m for m in combination if m is not None]
+            emits = frozenset().union(*(m.emits for m in moving))
+            deaf = frozenset().union(*(m.deaf for m in moving), *(c.listening.get(k, frozenset()) for m, c, k in zip(combination, children, current) if m is None))
+            if deaf & emits:
+                continue  # a member waiting for the event would miss it
             edges.append(
                 _Edge(current, conjunction([m.guard for m in moving]), tuple(ev for m in moving for ev in m.events), target,
-                      frozenset().union(*(m.starts for m in moving)), frozenset().union(*(m.ends for m in moving)))
+                      frozenset().union(*(m.starts for m in moving)), frozenset().union(*(m.ends for m in moving)),
+                      emits, frozenset().union(*(m.awaits for m in moving)) - emits, deaf)
             )
             if target not in seen:
                 seen.add(target)
@@ -222,6 +303,7 @@ def _parallel(children: list[_Fragment]) -> _Fragment:
     names: dict[Key, tuple[str, bool]] = {}
     drivers: dict[Key, frozenset[str]] = {}
     invariants: dict[Key, Guard] = {}
+    listening: dict[Key, frozenset[str]] = {}
     for key in seen:
         parts = [c.names[k] for c, k in zip(children, key) if k in c.names]
         labelled = [n for n, is_labelled in parts if is_labelled]
@@ -232,7 +314,10 @@ def _parallel(children: list[_Fragment]) -> _Fragment:
         parts = [c.invariants[k] for c, k in zip(children, key) if k in c.invariants]
         if parts:
             invariants[key] = conjunction(parts)
-    return _Fragment(initial, final, edges, names, drivers, invariants)
+        waiting = frozenset().union(*(c.listening.get(k, frozenset()) for c, k in zip(children, key)))
+        if waiting:
+            listening[key] = waiting
+    return _Fragment(initial, final, edges, names, drivers, invariants, listening)
 
 
 def _one_of(children: list[_Fragment], uid: int) -> _Fragment:
@@ -241,23 +326,31 @@ def _one_of(children: list[_Fragment], uid: int) -> _Fragment:
     names: dict[Key, tuple[str, bool]] = {}
     drivers: dict[Key, frozenset[str]] = {}
     invariants: dict[Key, Guard] = {}
+    listening: dict[Key, frozenset[str]] = {}
     for child in children:
         rename = {child.initial: initial, child.final: final}
         for e in child.edges:
-            edges.append(_Edge(rename.get(e.source, e.source), e.guard, e.events, rename.get(e.target, e.target), e.starts, e.ends))
+            edges.append(replace(e, source=rename.get(e.source, e.source), target=rename.get(e.target, e.target)))
         names.update(child.names)
         drivers.update(child.drivers)
         invariants.update(child.invariants)
-    return _Fragment(initial, final, edges, names, drivers, invariants)
+        listening.update(child.listening)
+    return _Fragment(initial, final, edges, names, drivers, invariants, listening)
 
 
 def _finish(fragment: _Fragment, actors: tuple[str, ...], scenario: model.Scenario, timings: dict[int, Timing], lanes: int) -> SymbolicAutomaton:
+    # an edge still awaiting an event here awaits one that no member emits at that instant
+    unmatched = sorted({event for e in fragment.edges for event in e.awaits})
+    fragment = replace(fragment, edges=[e for e in fragment.edges if not e.awaits])
     # Keep locations that are reachable from the initial one and can still reach the final one.
     forward = _closure(fragment.initial, lambda k: [e.target for e in fragment.edges if e.source == k])
     backward = _closure(fragment.final, lambda k: [e.source for e in fragment.edges if e.target == k])
     useful = forward & backward
     if fragment.initial not in useful:
-        raise error_at(scenario.location, f"scenario {scenario.name!r} can never finish: its phases cannot all end", hint="check that the members of each parallel can end together")
+        hint = "check that the members of each parallel can end together"
+        if unmatched:
+            hint += f"; a wait for {', '.join('@' + e for e in unmatched)} ends only while another member emits it (an emit before the wait began is missed)"
+        raise error_at(scenario.location, f"scenario {scenario.name!r} can never finish: its phases cannot all end", hint=hint)
     order = _bfs_order(fragment, useful)
     ids = {key: index for index, key in enumerate(order)}
     used: dict[str, int] = {}

@@ -241,7 +241,7 @@ class _Checker:
                 self.error(extra.location, "a scenario has at most one `do`", "compose the behaviors with serial: or parallel: under one do")
         for event in scenario.events:
             if event.specification is not None:
-                self._event_specification(event.specification, checked, env, event.location)
+                self._event_specification(event.specification, checked, env, event.location, waits=True)
         for method in scenario.methods:
             if method.parameters:
                 self.error(method.location, "not supported: methods with parameters", "write the value as an expression where it is used")
@@ -335,7 +335,7 @@ class _Checker:
             return
         if isinstance(node, model.Wait):
             used_names.update(n.name for n in names_in(node.condition) if not isinstance(node.condition, model.EventReference))
-            self._event_specification(node.condition, scenario, env, node.location)
+            self._event_specification(node.condition, scenario, env, node.location, waits=True)
             return
         if isinstance(node, model.Emit):
             if node.event not in {e.name for e in scenario.events}:
@@ -556,43 +556,49 @@ class _Checker:
                         needed = max(needed, construct.lanes_needed(library.bind(construct.signature, arguments), highest))
         return needed
 
-    def _event_specification(self, spec, scenario: model.Scenario, env: dict, location: SourceLocation) -> None:
+    def _event_specification(self, spec, scenario: model.Scenario, env: dict, location: SourceLocation, waits: bool = False) -> None:
+        """An event reference or a condition (``constructs.conditions`` says which ones the tool reads);
+        ``waits``: it is a ``wait``'s, which may also be ``elapsed(t)``."""
+        from ..constructs.conditions import condition_guard  # see _registry: constructs import the automaton
+
         if isinstance(spec, model.EventReference):
-            events = {e.name for e in scenario.events}
-            last = spec.name.split(".")[-1]
-            if spec.name not in events and last not in ("start", "end"):
-                self.error(spec.location, f"unknown event {spec.name!r}", f"declare it: event {spec.name}")
+            events = {e.name: e for e in scenario.events}
+            if spec.name not in events:
+                last = spec.name.split(".")[-1]
+                hint = "the tool does not plan built-in events yet; declare one and emit it" if last in ("start", "end") else f"declare it: event {spec.name}"
+                self.error(spec.location, f"unknown event {spec.name!r}" if last not in ("start", "end") else f"not supported: @{spec.name}", hint)
+                return
+            declared = events[spec.name]
+            if declared.specification is None and spec.name not in self._emitted(scenario):
+                self.error(spec.location, f"nothing emits the event {spec.name!r}: this wait never ends", f"emit it where it happens: emit {spec.name}")
+            if spec.condition is not None:
+                self._event_specification(spec.condition, scenario, env, location)
             return
-        for call in calls_in(spec):
-            if call.function in library.UNSUPPORTED_FUNCTIONS:
-                self.error(call.location, f"not supported: {call.function}()", "use elapsed(t) or a condition")
-                return
-            if call.function != "elapsed":
-                self.error(call.location, f"unknown function {call.function!r}", "conditions use elapsed(t) or comparisons")
-                return
-            if len(call.arguments) != 1 or call.arguments[0].name is not None:
-                self.error(call.location, "elapsed() takes one time, e.g. elapsed(3s) or elapsed([2..4]s)")
-                return
-            try:
-                value = evaluate(call.arguments[0].value, env)
-            except EvaluationError as error:
-                self.error(error.location, error.message, error.hint)
-                return
-            if not isinstance(value, Interval) or value.dimension != TIME:
-                got = describe(value.dimension) if isinstance(value, Interval) else "a name"
-                self.error(call.arguments[0].location, f"elapsed() expects a time, got {got}", "write it with a unit, e.g. 3s")
+        if waits and isinstance(spec, model.Call) and spec.function == "elapsed":
+            self._elapsed(spec, env)
             return
-        for name in names_in(spec):
-            if name.name not in env and name.enum is None:
-                self.error(name.location, f"unknown name {name.name!r}", "a condition can read parameters and actors' speed, e.g. v1.speed > 20mps")
-                return
         try:
-            value = evaluate(spec, env)
+            condition_guard(spec, env, [a.name for a in scenario.actors])
+        except OscError as error:
+            for diagnostic in error.diagnostics:
+                self.error(diagnostic.location, diagnostic.message, diagnostic.hint)
+
+    @staticmethod
+    def _emitted(scenario: model.Scenario) -> set[str]:
+        return {node.event for behavior in scenario.behaviors for node in model.walk(behavior) if isinstance(node, model.Emit)}
+
+    def _elapsed(self, call: model.Call, env: dict) -> None:
+        if len(call.arguments) != 1 or call.arguments[0].name is not None:
+            self.error(call.location, "elapsed() takes one time, e.g. elapsed(3s) or elapsed([2..4]s)")
+            return
+        try:
+            value = evaluate(call.arguments[0].value, env)
         except EvaluationError as error:
             self.error(error.location, error.message, error.hint)
             return
-        if not isinstance(value, bool):
-            self.error(location, "expected a condition, e.g. elapsed(3s) or v1.speed >= 20mps")
+        if not isinstance(value, Interval) or value.dimension != TIME:
+            got = describe(value.dimension) if isinstance(value, Interval) else "a name"
+            self.error(call.arguments[0].location, f"elapsed() expects a time, got {got}", "write it with a unit, e.g. 3s")
 
     def _environment(self, scenario: model.Scenario, space: ParameterSpace) -> dict[str, object]:
         """Names an expression of this scenario may read: parameters (their ranges) and actors' speed and lane."""

@@ -1,0 +1,130 @@
+"""Conditions: what ``wait c``, ``until c`` and ``wait @e if c`` may read, and what each means as a guard.
+
+A condition is a comparison of an *observable* with a value, or several joined by ``and``, ``or``,
+``not``. The observables are the standard's methods on a vehicle, each one quantity of the shared
+guard algebra (so the planner and the monitor read it alike):
+
+- ``a.speed``: the actor's speed, ``v(a)``.
+- ``a.space_headway(reference: b)``: the distance from a's front to b's front along the road,
+  ``p(b) - p(a)``; negative when ``a`` leads (the standard's sign).
+- ``a.time_headway(reference: b)``: that distance over a's speed, ``h(b, a)``: the seconds ``a``
+  needs to reach where ``b`` is now.
+- ``a.relative_speed(reference: b)``: ``v(a) - v(b)``, positive when ``a`` is faster.
+
+A strict comparison is read as its closed form (``<`` as ``<=``): the boundary instant has measure
+zero, and a planner cannot keep a strict margin of nothing. A comparison with a range that is
+still a logical parameter (the base strategy) is read at the range's most permissive end, as
+``wait`` has always done for speeds. ``elapsed(t)`` is a timed phase, not a guard: it is the whole
+condition of a ``wait`` (``automaton.construction``), never part of one.
+
+The checker calls ``condition_guard`` on every condition, so a condition that checks is one the
+automaton translates: the two cannot disagree about what is supported.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Collection
+from dataclasses import dataclass
+from typing import Callable
+
+from ..automaton.guards import HEADWAY, POSITION, SPEED as SPEED_Q, Bound, Guard, Not, Or, Term, conjunction
+from ..frontend import model
+from ..frontend.errors import error_at
+from ..frontend.library import UNSUPPORTED_FUNCTIONS
+from ..frontend.tolerances import SPEED_TOLERANCE
+from ..frontend.units import LENGTH, SPEED, TIME
+from ..frontend.values import EvaluationError, argument_interval, describe
+
+
+@dataclass(frozen=True)
+class Observable:
+    """A method a condition may call on an actor, as a term of the guard algebra."""
+
+    name: str
+    dimension: str
+    term: Callable[[str, str | None], Term]  # (actor, reference) -> term
+    needs_reference: bool
+    meaning: str
+
+
+OBSERVABLES = {
+    o.name: o
+    for o in (
+        Observable("speed", SPEED, lambda a, _: Term(SPEED_Q, a), False, "the actor's speed"),
+        Observable("space_headway", LENGTH, lambda a, b: Term(POSITION, b, a), True, "distance to the reference's front, negative when the actor leads"),
+        Observable("time_headway", TIME, lambda a, b: Term(HEADWAY, b, a), True, "seconds the actor needs to reach where the reference is"),
+        Observable("relative_speed", SPEED, lambda a, b: Term(SPEED_Q, a, b), True, "the actor's speed minus the reference's"),
+    )
+}
+_MIRROR = {"<": ">", "<=": ">=", ">": "<", ">=": "<=", "==": "=="}
+_EXAMPLE = "e.g. v1.speed >= 20mps or ego.space_headway(reference: lead) < 10m"
+
+
+def usage() -> str:
+    return ", ".join(f"a.{o.name}" + ("(reference: b)" if o.needs_reference else "") for o in OBSERVABLES.values())
+
+
+def condition_guard(condition: model.Expression, env: dict, actors: Collection[str]) -> Guard:
+    """A condition as a guard. Raises a located ``OscError`` for what is not a supported condition."""
+    if isinstance(condition, model.Binary) and condition.operator in ("and", "or"):
+        parts = [condition_guard(condition.left, env, actors), condition_guard(condition.right, env, actors)]
+        return conjunction(parts) if condition.operator == "and" else Or(tuple(parts))
+    if isinstance(condition, model.Unary) and condition.operator == "not":
+        return Not(condition_guard(condition.operand, env, actors))
+    if isinstance(condition, model.Binary) and condition.operator in _MIRROR:
+        left, right, operator = condition.left, condition.right, condition.operator
+        if _observable(left, actors) is None:
+            left, right, operator = right, left, _MIRROR[operator]
+        found = _observable(left, actors)
+        if found is None:
+            raise error_at(condition.location, "a condition compares an actor's observable with a value", f"observables: {usage()}; {_EXAMPLE}")
+        observable, term = found
+        try:
+            value = argument_interval(model.Argument(None, right, right.location), env)
+        except EvaluationError as error:
+            raise error_at(error.location, error.message, error.hint) from None
+        if value.dimension != observable.dimension:
+            raise error_at(right.location, f"{observable.name} is {describe(observable.dimension)}, compared here with {describe(value.dimension)}", "write the value with a unit of the same kind")
+        low = value.low if operator in (">", ">=", "==") else -math.inf
+        high = value.high if operator in ("<", "<=", "==") else math.inf
+        if operator == "==" and low == high and observable.dimension == SPEED:
+            low, high = low - SPEED_TOLERANCE, high + SPEED_TOLERANCE
+        return Bound(term, low, high, condition.location)
+    if isinstance(condition, model.Call) and condition.function in UNSUPPORTED_FUNCTIONS:
+        raise error_at(condition.location, f"not supported: {condition.function}()", "compare an observable with a value, or wait for an event")
+    if isinstance(condition, model.Call) and condition.function == "elapsed":
+        raise error_at(condition.location, "elapsed() is the whole condition of a wait", "write wait elapsed(3s) as its own member of a serial")
+    location = getattr(condition, "location", None)
+    if isinstance(condition, model.Call) and "." not in condition.function:
+        raise error_at(location, f"unknown function {condition.function!r}", f"a wait takes elapsed(t), an event (@e) or a comparison: {_EXAMPLE}")
+    raise error_at(location, "not a condition this tool can read", f"observables: {usage()}; {_EXAMPLE}")
+
+
+def _observable(expression: model.Expression, actors: Collection[str]) -> tuple[Observable, Term] | None:
+    """The observable and term ``expression`` reads, or None when it reads none. Raises for a
+    method call on an actor that is not an observable or lacks its reference."""
+    if isinstance(expression, model.Name) and "." in expression.name:
+        actor, _, method = expression.name.rpartition(".")
+        observable = OBSERVABLES.get(method)
+        if actor in actors and observable is not None and not observable.needs_reference:
+            return observable, observable.term(actor, None)
+        return None
+    if not isinstance(expression, model.Call) or "." not in expression.function:
+        return None
+    actor, _, method = expression.function.rpartition(".")
+    if actor not in actors:
+        raise error_at(expression.location, f"unknown actor {actor!r}", f"actors: {', '.join(sorted(actors))}")
+    observable = OBSERVABLES.get(method)
+    if observable is None:
+        raise error_at(expression.location, f"not supported in a condition: {method}()", f"observables: {usage()}")
+    reference = None
+    for argument in expression.arguments:
+        if argument.name not in (None, "reference") or not isinstance(argument.value, model.Name):
+            raise error_at(argument.location, f"{method}() takes reference: <actor>", f"e.g. {actor}.{method}(reference: lead)")
+        reference = argument.value.name
+        if reference not in actors:
+            raise error_at(argument.location, f"unknown actor {reference!r}", f"actors: {', '.join(sorted(actors))}")
+    if observable.needs_reference and reference is None:
+        raise error_at(expression.location, f"{method}() needs reference: <actor>", f"e.g. {actor}.{method}(reference: lead)")
+    return observable, observable.term(actor, reference)
