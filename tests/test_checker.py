@@ -7,7 +7,7 @@ still points at the offending token and still says what to do.
 
 import pytest
 
-from pytest_roadlogic.frontend import OscError, check_text
+from pytest_roadlogic.frontend import OscError, check_file, check_text
 
 HEAD = "scenario s:\n    a: car\n    b: car\n"
 # The same scenario on a road of at most three lanes: two lines more, so errors move down by two.
@@ -91,7 +91,7 @@ CASES = [
     ('person', HEAD + "    p: person\n",
      "4:8: error: not supported: actor type 'person' (the road is a highway)"),
     ('actor_no_base', "actor robot\n" + HEAD + "    r: robot\n",
-     "5:8: error: actor type 'robot' does not derive from a road user"),
+     "5:8: warning: actor type 'robot' does not derive from a road user: it is driven as a vehicle"),
     ('struct_param', "struct st:\n    x: length\n" + HEAD + "    p: st\n",
      '6:8: error: not supported: parameters of struct type'),
     ('list_param', HEAD + "    p: list of length\n",
@@ -141,7 +141,21 @@ CASES = [
     ('lane_change_too_far', ROAD3 + "    do a.change_lane(3, left)\n",
      '6:22: error: a change of 3 lanes is impossible on a road of 3 lanes (path_max_lanes(3) on line 3)'),
     ('road_map', HEAD + "    road: Path\n    road.set_map(\"Town04\")\n",
-     '5:10: error: not supported: set_map() of the road'),
+     '5:10: warning: the map is not available: the scenario runs on one straight road'),
+    ('road_map_not_a_string', HEAD + "    road: Path\n    road.set_map(4)\n",
+     '5:18: error: map: takes a string, e.g. "Town04"'),
+    ('drive_path_not_a_road', HEAD + "    do a.drive(b)\n",
+     '4:16: error: path: takes the scenario\'s road'),
+    ('declared_modifier_unknown', "modifier Path.set_weather\n" + HEAD,
+     "1:15: error: not supported: the declared modifier 'set_weather'"),
+    ('unit_contradicts_builtin', "type velocity is SI(m: 1, s: -1)\nunit kph of velocity is SI(m: 1, s: -1, factor: 0.3)\n" + HEAD,
+     "2:6: error: unit 'kph' is declared as 0.3 SI speed units, but kph is 0.277777778 SI speed units"),
+    ('unit_of_unknown_type', "unit foot of distance is SI(m: 1, factor: 0.3048)\n" + HEAD,
+     "1:6: error: unit 'foot' is of an unknown type 'distance'"),
+    ('unit_exponents_differ', "type len is SI(m: 1)\nunit foot of len is SI(s: 1, factor: 0.3048)\n" + HEAD,
+     "2:6: error: unit 'foot' has other SI exponents than its type 'len'"),
+    ('type_contradicts_builtin', "type speed is SI(m: 1)\n" + HEAD,
+     "1:6: error: type 'speed' is a length here but a speed as built-in"),
     ('road_bounds_contradict', HEAD + "    road: Path\n    road.path_max_lanes(2)\n    road.path_min_driving_lanes(4)\n",
      '5:10: error: at most 2 lanes contradicts at least 4 (line 6)'),
     ('road_lanes_not_whole', HEAD + "    road: Path\n    road.path_min_driving_lanes(2.5)\n",
@@ -222,3 +236,37 @@ def test_every_report_has_the_offending_line_and_a_caret():
             formatted = diagnostic.format(text).splitlines()
             assert formatted[0].startswith(f"t.osc:{diagnostic.location.line}:{diagnostic.location.column}: "), name
             assert formatted[2].strip() == "^", name
+
+
+LIBRARY = """\
+type distance is SI(m: 1)
+unit furlong of distance is SI(m: 1, factor: 201.168)
+type velocity is SI(m: 1, s: -1)
+unit kph of velocity is SI(m: 1, s: -1, factor: 0.277777778)
+type angle is SI(rad: 1)
+unit deg of angle is SI(rad: 1, factor: 0.017453293)
+actor Sedan
+modifier Path.set_map
+"""
+
+
+def test_a_unit_declared_in_an_unquoted_import_is_read_with_its_factor(tmp_path):
+    (tmp_path / "lib.osc").write_text(LIBRARY)
+    (tmp_path / "s.osc").write_text(
+        "import lib.osc\nscenario s:\n    a: Sedan\n    b: Sedan\n    limit: velocity = 72kph\n"
+        "    do a.drive() with:\n        position(1furlong, behind: b, at: start)\n        speed(limit)\n"
+    )
+    checked = check_file(tmp_path / "s.osc")
+    assert not checked.errors, checked.report()
+    position = checked.scenarios[0].scenario.behavior.modifiers[0].arguments[0].value
+    assert position.value == pytest.approx(201.168) and position.dimension == "length"
+    # a declared alias of speed is a speed parameter
+    assert checked.scenarios[0].space.domains["limit"].interval.dimension == "speed"
+
+
+def test_a_unit_of_a_dimension_the_tool_does_not_model_is_unknown_where_it_is_used(tmp_path):
+    (tmp_path / "lib.osc").write_text(LIBRARY)
+    (tmp_path / "s.osc").write_text("import lib.osc\nscenario s:\n    a: Sedan\n    do a.drive() with:\n        speed(90deg)\n")
+    with pytest.raises(OscError) as caught:
+        check_file(tmp_path / "s.osc")
+    assert "s.osc:5:15: error: unknown unit 'deg'" in str(caught.value)

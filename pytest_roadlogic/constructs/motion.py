@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from ..automaton.guards import SPEED, Bound, Term
 from ..automaton.phase import Phase
-from ..frontend.library import DURATION, Signature
+from ..frontend.library import DURATION, Parameter, Signature
 from ..frontend.tolerances import STANDSTILL
 from .base import Action, Use
 
@@ -12,7 +12,8 @@ from .base import Action, Use
 class Drive(Action):
     """``drive()``: the actor drives forward for the phase; its modifiers say how."""
 
-    signature = Signature("drive", (DURATION,), description="drive forward for the phase")
+    # ``drive(path)``: CARLA suites name the road; there is one, so it changes nothing
+    signature = Signature("drive", (Parameter("path", "road", positional=True), DURATION), description="drive forward for the phase")
 
     def translate(self, use: Use, phase: Phase) -> None:
         pass  # forward progress is what a moving phase means (Phase.drives)

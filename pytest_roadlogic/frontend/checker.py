@@ -22,6 +22,8 @@ from .checked import CheckedFile, CheckedScenario
 from .errors import Diagnostic, OscError, SourceLocation
 from .parameters import ParameterSpace, parameter_space
 from .parser import parse_file, parse_text
+from .physical import declared_physics, parse_with_declared_units
+from .units import UNITS
 from .units import SPEED, TIME
 from .values import EvaluationError, Interval, calls_in, describe, evaluate, names_in
 
@@ -29,6 +31,7 @@ if TYPE_CHECKING:
     from ..constructs import Registry
 
 DEFAULT_LANES = 3
+_BUILTIN_PHYSICAL = {dimension: name for name, dimension in library.PHYSICAL_TYPES.items()}
 
 
 def check_file(path: str | Path, lanes: int | None = None, registry: Registry | None = None) -> CheckedFile:
@@ -37,7 +40,9 @@ def check_file(path: str | Path, lanes: int | None = None, registry: Registry | 
     ``lanes`` fixes the road's lane count; ``None`` takes it from each scenario (see ``_road_lanes``).
     ``registry`` holds the actions and modifiers the file may use (default: the standard's).
     """
-    return _Checker(lanes, registry).run(parse_file(path))
+    checker = _Checker(lanes, registry)
+    main, checker.units = parse_with_declared_units(path)
+    return checker.run(main)
 
 
 def check_text(text: str, path: str = "<string>", lanes: int | None = None, registry: Registry | None = None) -> CheckedFile:
@@ -96,6 +101,9 @@ class _Checker:
         self.enums: dict[str, tuple[str, ...]] = dict(library.ENUMS)
         self.types: dict[str, model.TypeDeclaration] = {}
         self.scenarios: dict[str, model.Scenario] = {}
+        self.units: dict[str, tuple[str | None, float]] = UNITS  # what imported files are parsed with
+        self.physical_types: dict[str, str | None] = dict(library.PHYSICAL_TYPES)
+        self.roads: set[str] = set()  # the road fields of the scenario being checked
 
     def error(self, location: SourceLocation, message: str, hint: str | None = None) -> None:
         self.diagnostics.append(Diagnostic(location, message, hint))
@@ -109,6 +117,10 @@ class _Checker:
         self.sources[main.path] = main.source_text
         self._load_imports(main, stack=(str(Path(main.path).resolve()),))
         self._declarations(main)
+        self._modifier_declarations(main)
+        physics = declared_physics([*self.files.values(), main])
+        self.diagnostics.extend(physics.problems)
+        self.physical_types = physics.types
         globals_ = tuple(g for f in self.files.values() for g in f.globals) + main.globals
         for misplaced in main.misplaced_imports:
             self.error(misplaced.location, "an import after a declaration", "put every import at the top of the file")
@@ -142,11 +154,11 @@ class _Checker:
 
     def _load_imports(self, osc: model.OscFile, stack: tuple[str, ...]) -> None:
         for item in osc.imports:
-            if not item.is_file:
+            target = item.file(osc.path)
+            if target is None:
                 if item.target != "osc" and not item.target.startswith("osc."):
-                    self.error(item.location, f"unknown library {item.target!r}", 'the standard library is osc.standard; import a file by its path in quotes: import "lib.osc"')
+                    self.error(item.location, f"unknown library {item.target!r}", 'the standard library is osc.standard; import a file by its path: import "lib.osc" or import lib.osc')
                 continue
-            target = (Path(osc.path).parent / item.target).resolve()
             if str(target) in stack:
                 self.error(item.location, f"{item.target!r} imports itself (through {' -> '.join(Path(s).name for s in stack)})", "remove the circular import")
                 continue
@@ -156,7 +168,7 @@ class _Checker:
                 self.error(item.location, f"cannot find the imported file {item.target!r}", f"looked for {target}; paths are relative to the importing file")
                 continue
             try:
-                imported = parse_file(target)
+                imported = parse_file(target, self.units)
             except OscError as error:
                 self.diagnostics.extend(error.diagnostics)
                 self.sources.update(error.sources)
@@ -166,6 +178,7 @@ class _Checker:
             self.files[imported.path] = imported
             self._load_imports(imported, stack + (str(target),))
             self._declarations(imported)
+            self._modifier_declarations(imported)
             for unsupported in imported.unsupported:
                 self._unsupported(unsupported)
             for scenario in imported.scenarios:
@@ -191,6 +204,17 @@ class _Checker:
                 continue
             self.types[declared.name] = declared
 
+    def _modifier_declarations(self, osc: model.OscFile) -> None:
+        """A library may declare the modifiers it uses (``modifier Path.set_map``); one the tool
+        does not provide would need its meaning, which a declaration without a body does not give."""
+        for declared in osc.modifier_declarations:
+            if declared.owner == library.ROAD_TYPE:
+                known = declared.name in library.ROAD_MODIFIERS
+            else:
+                known = self.registry.modifier(declared.name) is not None
+            if not known:
+                self.error(declared.location, f"not supported: the declared modifier {declared.name!r}", "the tool plans only the modifiers it provides; " + self._known("modifiers", [*self.registry.modifiers, *library.ROAD_MODIFIERS]))
+
     def _unsupported(self, item: model.Unsupported) -> None:
         self.error(item.location, f"not supported: {item.construct}", item.hint)
 
@@ -212,6 +236,8 @@ class _Checker:
         roads: list[str] = []
         declared: dict[str, SourceLocation] = {}
         for item in (*globals_, *scenario.fields):
+            if item.type not in library.PHYSICAL_TYPES and self.physical_types.get(item.type) in _BUILTIN_PHYSICAL:
+                item = replace(item, type=_BUILTIN_PHYSICAL[self.physical_types[item.type]])  # a declared alias (velocity)
             if item.name in declared:
                 self.error(item.location, f"{item.name!r} is already declared on line {declared[item.name].line}", "give each field its own name")
                 continue
@@ -227,6 +253,7 @@ class _Checker:
                 parameters.append(item)
             elif kind == "road":
                 roads.append(item.name)
+        self.roads = set(roads)
         if library.DUT_ACTOR not in declared and _mentions(scenario, library.DUT_ACTOR):
             actors.append(model.Actor(library.DUT_ACTOR, "vehicle", scenario.location, "vehicle"))
         space, diagnostics = parameter_space(tuple(parameters), tuple(c for c in scenario.constraints), self.enums)
@@ -280,14 +307,20 @@ class _Checker:
         if item.is_list:
             self.error(location, "not supported: list parameters", "use one parameter per value")
             return None
-        if self._actor_base(item.type) is not None:
-            return "actor"
-        if item.type in library.SCALAR_TYPES or item.type in self.enums:
-            return "parameter"
         if item.type == library.ROAD_TYPE:
             if item.constraints or item.default is not None:
                 self.error(location, "a road takes no value or keep()", "constrain it with path_min_driving_lanes(n) or path_max_lanes(n)")
             return "road"
+        if self._actor_base(item.type) is not None:
+            declared = self.types.get(item.type)
+            if declared is not None and declared.parent is None:
+                self.warning(location, f"actor type {item.type!r} does not derive from a road user: it is driven as a vehicle", f"declare it as `actor {item.type} inherits vehicle` (or car, truck)")
+            return "actor"
+        if item.type in library.SCALAR_TYPES or item.type in self.enums:
+            return "parameter"
+        if item.type in self.physical_types:
+            self.error(location, f"not supported: parameters of type {item.type!r} (a dimension this tool does not model)", f"use one of {', '.join(library.PHYSICAL_TYPES)}")
+            return None
         if item.type in library.UNSUPPORTED_ACTOR_TYPES:
             self.error(location, f"not supported: actor type {item.type!r} (the road is a highway)", f"use one of {', '.join(library.ACTOR_TYPES)}")
             return None
@@ -306,8 +339,10 @@ class _Checker:
         if type_name in library.ACTOR_TYPES:
             return type_name
         declared = self.types.get(type_name)
-        if declared is None or declared.kind != "actor" or declared.parent is None or type_name in seen:
+        if declared is None or declared.kind != "actor" or type_name in seen:
             return None
+        if declared.parent is None:
+            return "vehicle"  # a bare actor type (CARLA suites declare `actor Model3`), warned about where used
         return self._actor_base(declared.parent, seen | {type_name})
 
     def _actor_type_names(self) -> list[str]:
@@ -431,6 +466,14 @@ class _Checker:
             else:
                 used_actors.add(value.name)
             return
+        if kind == "string":
+            if not (isinstance(value, model.Literal) and isinstance(value.value, str)):
+                self.error(value.location, f"{parameter.name}: takes a string, e.g. \"Town04\"")
+            return
+        if kind == "road":
+            if not isinstance(value, model.Name) or value.name not in self.roads:
+                self.error(value.location, f"{parameter.name}: takes the scenario's road", f"declare one: path: {library.ROAD_TYPE}")
+            return
         if kind.startswith("enum:"):
             enum = kind[5:]
             members = self.enums[enum]
@@ -520,6 +563,9 @@ class _Checker:
                 continue
             before = len(self.diagnostics)
             binding = self._arguments(signature, modifier.arguments, modifier.location, scenario, env, set(), set(), what=f"{modifier.name}()")
+            if modifier.name == "set_map":
+                self.warning(modifier.location, "the map is not available: the scenario runs on one straight road", "give the road's lanes with path_min_driving_lanes(n)")
+                continue
             argument = binding["lanes"]
             if argument is None or any(d.severity == "error" for d in self.diagnostics[before:]):
                 continue

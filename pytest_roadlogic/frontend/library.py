@@ -143,6 +143,8 @@ COMPOSITIONS: dict[str, Signature] = _signatures(
 ROAD_MODIFIERS: dict[str, Signature] = _signatures(
     Signature("path_min_driving_lanes", (Parameter("lanes", "uint", positional=True),), required=(("lanes",),), description="the road has at least this many lanes"),
     Signature("path_max_lanes", (Parameter("lanes", "uint", positional=True),), required=(("lanes",),), description="the road has at most this many lanes"),
+    # CARLA's town maps: accepted with a warning, the straight road stands in for the map
+    Signature("set_map", (Parameter("map", "string", positional=True),), required=(("map",),), description="the map the scenario was written for"),
 )
 
 # Functions usable in expressions, and those refused by name (tier 3).

@@ -11,6 +11,7 @@ The parser fills this model without judging it; ``checker`` resolves names and t
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import Union
 
 from .errors import SourceLocation
@@ -349,6 +350,35 @@ class TypeDeclaration:
 
 
 @dataclass(frozen=True)
+class PhysicalTypeDeclaration:
+    """``type velocity is SI(m: 1, s: -1)``: a physical type by its SI base-unit exponents."""
+
+    name: str
+    exponents: tuple[tuple[str, float], ...]  # (base unit, exponent), as written
+    location: SourceLocation
+
+
+@dataclass(frozen=True)
+class UnitDeclaration:
+    """``unit kph of velocity is SI(m: 1, s: -1, factor: 0.277777778)``."""
+
+    name: str
+    type: str
+    exponents: tuple[tuple[str, float], ...]
+    factor: float
+    location: SourceLocation
+
+
+@dataclass(frozen=True)
+class ModifierDeclaration:
+    """``modifier Path.set_map`` without a body: a library's declaration of a modifier it names."""
+
+    owner: str | None
+    name: str
+    location: SourceLocation
+
+
+@dataclass(frozen=True)
 class EnumDeclaration:
     name: str
     members: tuple[str, ...]
@@ -372,6 +402,14 @@ class Import:
     is_file: bool
     location: SourceLocation
 
+    def file(self, importing: str) -> Path | None:
+        """The file this import names, relative to the importing file: a quoted path, or an
+        unquoted one ending in ``.osc`` (``import basic.osc``, as CARLA suites write it); None for
+        a library (``osc.standard``)."""
+        if self.is_file or self.target.endswith(".osc"):
+            return (Path(importing).parent / self.target).resolve()
+        return None
+
 
 @dataclass(frozen=True)
 class OscFile:
@@ -385,6 +423,9 @@ class OscFile:
     extensions: tuple[Extension, ...] = ()
     unsupported: tuple[Unsupported, ...] = ()
     misplaced_imports: tuple[Import, ...] = field(default=())
+    physical_types: tuple[PhysicalTypeDeclaration, ...] = ()
+    units: tuple[UnitDeclaration, ...] = ()
+    modifier_declarations: tuple[ModifierDeclaration, ...] = ()
 
     def scenario(self, name: str) -> Scenario:
         for scenario in self.scenarios:

@@ -14,6 +14,7 @@ from __future__ import annotations
 import ast
 import math
 from pathlib import Path
+from typing import Mapping
 
 from antlr4 import CommonTokenStream, InputStream
 from antlr4.error.ErrorListener import ErrorListener
@@ -67,8 +68,11 @@ def _shorten(message: str) -> str:
     return f"{head}expecting one of {', '.join(options)}"
 
 
-def parse_text(text: str, path: str = "<string>") -> model.OscFile:
-    """Parse OS2 source text; raise ``OscError`` naming every syntax error found."""
+def parse_text(text: str, path: str = "<string>", units: Mapping[str, tuple[str | None, float]] | None = None) -> model.OscFile:
+    """Parse OS2 source text; raise ``OscError`` naming every syntax error found.
+
+    ``units`` is the table physical literals are read with (default: the built-in units); a file
+    that declares units is read again with them (``frontend.physical``)."""
     text = text.replace("\r\n", "\n").replace("\r", "\n")
     if text.startswith("\ufeff"):
         text = text[1:]  # a byte-order mark some editors write
@@ -84,14 +88,14 @@ def parse_text(text: str, path: str = "<string>") -> model.OscFile:
     diagnostics = lexer.diagnostics + [d for d in listener.diagnostics if d.location.line not in lexer_lines]
     if diagnostics:
         raise OscError(_sorted(diagnostics), text)
-    builder = _Builder(path, text)
+    builder = _Builder(path, text, units)
     result = builder.file(tree)
     if builder.diagnostics:
         raise OscError(_sorted(builder.diagnostics), text)
     return result
 
 
-def parse_file(path: str | Path) -> model.OscFile:
+def parse_file(path: str | Path, units: Mapping[str, tuple[str | None, float]] | None = None) -> model.OscFile:
     path = Path(path)
     try:
         text = path.read_text(encoding="utf-8")
@@ -99,7 +103,7 @@ def parse_file(path: str | Path) -> model.OscFile:
         raise OscError([Diagnostic(SourceLocation(str(path), 1, 1), f"the file is not valid UTF-8 ({exc.reason})", "save it as UTF-8")]) from None
     except OSError as exc:
         raise OscError([Diagnostic(SourceLocation(str(path), 1, 1), f"cannot read the file: {exc.strerror}")]) from None
-    return parse_text(text, str(path))
+    return parse_text(text, str(path), units)
 
 
 def _sorted(diagnostics: list[Diagnostic]) -> list[Diagnostic]:
@@ -110,9 +114,10 @@ def _sorted(diagnostics: list[Diagnostic]) -> list[Diagnostic]:
 class _Builder:
     """Turns parse-tree contexts into model nodes, collecting spelling problems as it goes."""
 
-    def __init__(self, path: str, text: str) -> None:
+    def __init__(self, path: str, text: str, units: Mapping[str, tuple[str | None, float]] | None = None) -> None:
         self.path = path
         self.text = text
+        self.units = UNITS if units is None else units
         self.diagnostics: list[Diagnostic] = []
 
     def error(self, location: SourceLocation, message: str, hint: str | None = None) -> None:
@@ -138,6 +143,9 @@ class _Builder:
         globals_: list[model.Field] = []
         extensions: list[model.Extension] = []
         unsupported: list[model.Unsupported] = []
+        physical_types: list[model.PhysicalTypeDeclaration] = []
+        units: list[model.UnitDeclaration] = []
+        modifiers: list[model.ModifierDeclaration] = []
         seen_declaration = False
         for child in ctx.getChildren():
             if isinstance(child, P.ImportStatementContext):
@@ -147,6 +155,12 @@ class _Builder:
                 decl = child.getChild(0)
                 if isinstance(decl, P.ScenarioDeclarationContext):
                     scenarios.append(self.scenario(decl))
+                elif isinstance(decl, P.PhysicalTypeDeclarationContext):
+                    exponents, _ = self.si(decl, allow_factor=False)
+                    physical_types.append(model.PhysicalTypeDeclaration(self.name(decl.name), exponents, self.loc(decl.name)))
+                elif isinstance(decl, P.UnitDeclarationContext):
+                    exponents, factor = self.si(decl, allow_factor=True)
+                    units.append(model.UnitDeclaration(self.name(decl.name), self.name(decl.type_), exponents, factor, self.loc(decl.name)))
                 elif isinstance(decl, (P.ActorDeclarationContext, P.StructDeclarationContext)):
                     declaration, refused = self.type_declaration(decl)
                     types.append(declaration)
@@ -165,6 +179,10 @@ class _Builder:
                     target = decl.behaviorName()
                     body = self.scenario_body(self.name(target.name), None, self.loc(target.name), decl.scenarioMember(), "scenario")
                     extensions.append(model.Extension(body.name, body, self.loc(decl)))
+                elif isinstance(decl, P.ModifierDeclarationContext) and not decl.scenarioMember() and decl.OF() is None:
+                    target = decl.behaviorName()
+                    owner = self.name(target.actorType) if target.actorType is not None else None
+                    modifiers.append(model.ModifierDeclaration(owner, self.name(target.name), self.loc(target.name)))
                 elif isinstance(decl, P.ModifierDeclarationContext):
                     unsupported.append(model.Unsupported("modifier declarations", self.loc(decl), "use the built-in modifiers (speed, position, lane, ...)"))
                 elif isinstance(decl, P.NamespaceStatementContext):
@@ -182,7 +200,33 @@ class _Builder:
             extensions=tuple(extensions),
             unsupported=tuple(unsupported),
             misplaced_imports=tuple(misplaced),
+            physical_types=tuple(physical_types),
+            units=tuple(units),
+            modifier_declarations=tuple(modifiers),
         )
+
+    def si(self, ctx, allow_factor: bool) -> tuple[tuple[tuple[str, float], ...], float]:
+        """The ``SI(m: 1, s: -1, factor: f)`` of a type or unit declaration: exponents and factor."""
+        if self.name(ctx.si) != "SI":
+            self.error(self.loc(ctx.si), f"expected SI(...), got {self.name(ctx.si)}(...)", "write SI(m: 1, s: -1)")
+        exponents: list[tuple[str, float]] = []
+        factor = 1.0
+        for argument in self.arguments(ctx.argumentList()):
+            value = argument.value
+            sign = 1.0
+            if isinstance(value, model.Unary) and value.operator in "+-":
+                sign, value = (-1.0 if value.operator == "-" else 1.0), value.operand
+            if argument.name is None or not isinstance(value, model.Quantity) or value.dimension is not None:
+                self.error(argument.location, "SI() takes base units with plain numbers, e.g. SI(m: 1, s: -1)")
+                continue
+            if argument.name == "factor" and allow_factor:
+                factor = sign * value.value
+            elif argument.name == "offset" and allow_factor:
+                if value.value != 0:
+                    self.error(argument.location, "not supported: a unit with an offset", "declare the unit without offset:")
+            else:
+                exponents.append((argument.name, sign * value.value))
+        return tuple(exponents), factor
 
     def import_(self, ctx: P.ImportStatementContext) -> model.Import:
         if ctx.StringLiteral() is not None:
@@ -482,11 +526,12 @@ class _Builder:
         return model.Quantity(number * factor, dimension, location)
 
     def unit(self, unit: str, location: SourceLocation) -> tuple[str | None, float]:
-        if unit not in UNITS:
-            known = ", ".join(sorted(UNITS))
-            self.error(location, f"unknown unit {unit!r}", f"known units: {known}")
+        try:
+            return self.units[unit]
+        except KeyError:
+            known = ", ".join(sorted(self.units))
+            self.error(location, f"unknown unit {unit!r}", f"known units: {known}; a file may declare its own: unit {unit} of length is SI(m: 1, factor: ...)")
             return None, 1.0
-        return UNITS[unit]
 
     def string(self, text: str) -> str:
         for quote in ('"""', "'''"):

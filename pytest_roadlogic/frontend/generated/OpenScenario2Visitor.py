@@ -54,6 +54,16 @@ class OpenScenario2Visitor(ParseTreeVisitor):
         return self.visitChildren(ctx)
 
 
+    # Visit a parse tree produced by OpenScenario2Parser#physicalTypeDeclaration.
+    def visitPhysicalTypeDeclaration(self, ctx:OpenScenario2Parser.PhysicalTypeDeclarationContext):
+        return self.visitChildren(ctx)
+
+
+    # Visit a parse tree produced by OpenScenario2Parser#unitDeclaration.
+    def visitUnitDeclaration(self, ctx:OpenScenario2Parser.UnitDeclarationContext):
+        return self.visitChildren(ctx)
+
+
     # Visit a parse tree produced by OpenScenario2Parser#enumDeclaration.
     def visitEnumDeclaration(self, ctx:OpenScenario2Parser.EnumDeclarationContext):
         return self.visitChildren(ctx)

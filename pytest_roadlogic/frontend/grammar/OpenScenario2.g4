@@ -31,6 +31,8 @@ importStatement
 
 declaration
     : scenarioDeclaration
+    | physicalTypeDeclaration
+    | unitDeclaration
     | actorDeclaration
     | structDeclaration
     | enumDeclaration
@@ -70,6 +72,16 @@ structMember
     | eventDeclaration
     | methodDeclaration
     | coverageDeclaration
+    ;
+
+// `type velocity is SI(m: 1, s: -1)`: a physical type by its SI base-unit exponents.
+physicalTypeDeclaration
+    : TYPE name=identifier IS si=identifier LPAREN argumentList RPAREN NEWLINE
+    ;
+
+// `unit kph of velocity is SI(m: 1, s: -1, factor: 0.277777778)`.
+unitDeclaration
+    : UNIT name=identifier OF type=identifier IS si=identifier LPAREN argumentList RPAREN NEWLINE
     ;
 
 enumDeclaration
@@ -284,6 +296,8 @@ identifier
     | OF
     | EXTERNAL
     | UNDEFINED
+    | TYPE
+    | UNIT
     ;
 
 // ---------------------------------------------------------------- lexer
@@ -294,6 +308,8 @@ ACTION         : 'action' ;
 ACTOR          : 'actor' ;
 STRUCT         : 'struct' ;
 ENUM           : 'enum' ;
+TYPE           : 'type' ;
+UNIT           : 'unit' ;
 GLOBAL         : 'global' ;
 EXTEND         : 'extend' ;
 MODIFIER       : 'modifier' ;

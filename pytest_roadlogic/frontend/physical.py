@@ -1,0 +1,144 @@
+"""Physical types and units that files declare, as CARLA scenario-runner suites do in a local library.
+
+``type velocity is SI(m: 1, s: -1)`` names the dimension with those SI exponents;
+``unit kph of velocity is SI(m: 1, s: -1, factor: 0.277777778)`` a unit of it, ``factor`` SI units
+per unit. The pipeline knows four dimensions (length, time, speed, acceleration: metres and
+seconds); a type of another (``angle``: rad, ``mass``: kg) is accepted, and its units are left out
+of the table, so that using one says "unknown unit" at its place rather than mixing it with the
+others.
+
+Physical literals are resolved when a file is parsed, before its imports are known: a file whose
+literals use a unit it or an import declares is parsed again with those units
+(``parse_with_declared_units``). A declaration must agree with the built-in unit or type of the
+same name (same dimension; a factor within 1e-6 relative, so that 0.277777778 is kph); one that
+contradicts it is a located error.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from . import library, model
+from .errors import Diagnostic, OscError
+from .parser import parse_file
+from .units import UNITS
+from .values import _DIMENSIONS
+
+FACTOR_TOLERANCE = 1e-6  # relative: CARLA's libraries write kph's factor with 9 digits
+_MODELLED_BASES = ("m", "s")
+
+
+def dimension_of(exponents: tuple[tuple[str, float], ...]) -> str | None:
+    """The dimension with these SI exponents, or None when the pipeline does not model it."""
+    powers = {base: 0.0 for base in _MODELLED_BASES}
+    for base, exponent in exponents:
+        if base not in _MODELLED_BASES:
+            if exponent != 0:
+                return None
+            continue
+        powers[base] += exponent
+    key = (powers["m"], powers["s"])
+    if not all(float(p).is_integer() for p in key):
+        return None
+    return _DIMENSIONS.get((int(key[0]), int(key[1])))
+
+
+@dataclass
+class DeclaredPhysics:
+    """Types (name -> dimension, None when not modelled) and units (name -> dimension, factor)."""
+
+    types: dict[str, str | None] = field(default_factory=lambda: dict(library.PHYSICAL_TYPES))
+    units: dict[str, tuple[str, float]] = field(default_factory=dict)
+    problems: list[Diagnostic] = field(default_factory=list)
+
+    def table(self) -> dict[str, tuple[str | None, float]]:
+        """The unit table to parse with: built-in units and the declared ones."""
+        return {**UNITS, **self.units}
+
+
+def declared_physics(files: Iterable[model.OscFile]) -> DeclaredPhysics:
+    files = list(files)
+    physics = DeclaredPhysics()
+    for osc in files:
+        for declared in osc.physical_types:
+            dimension = dimension_of(declared.exponents)
+            known = physics.types.get(declared.name, "absent")
+            if known != "absent" and known != dimension:
+                was = "built-in" if declared.name in library.PHYSICAL_TYPES else "declared"
+                physics.problems.append(Diagnostic(declared.location, f"type {declared.name!r} is {_show(dimension)} here but {_show(known)} as {was}", "give the type another name, or its exponents"))
+                continue
+            physics.types[declared.name] = dimension
+    for osc in files:
+        for unit in osc.units:
+            if unit.type not in physics.types:
+                physics.problems.append(Diagnostic(unit.location, f"unit {unit.name!r} is of an unknown type {unit.type!r}", f"declare it first: type {unit.type} is SI(...)"))
+                continue
+            dimension = physics.types[unit.type]
+            if dimension_of(unit.exponents) != dimension:
+                physics.problems.append(Diagnostic(unit.location, f"unit {unit.name!r} has other SI exponents than its type {unit.type!r}", "write the type's exponents in the unit's SI(...)"))
+                continue
+            if dimension is None:
+                continue  # a unit of a dimension the pipeline does not model
+            if unit.factor <= 0:
+                physics.problems.append(Diagnostic(unit.location, f"unit {unit.name!r} needs a positive factor", "factor: SI units per unit, e.g. 0.277777778 for kph"))
+                continue
+            known = UNITS.get(unit.name) or physics.units.get(unit.name)
+            if known is not None and (known[0] != dimension or not math.isclose(known[1], unit.factor, rel_tol=FACTOR_TOLERANCE)):
+                physics.problems.append(Diagnostic(
+                    unit.location,
+                    f"unit {unit.name!r} is declared as {unit.factor:g} SI {dimension} units, but {unit.name} is {known[1]:.9g} SI {known[0]} units",
+                    "remove the declaration (the tool knows the unit) or give the unit another name",
+                ))
+                continue
+            physics.units[unit.name] = (dimension, unit.factor)
+    return physics
+
+
+def _show(dimension: str | None) -> str:
+    return f"a {dimension}" if dimension is not None else "a dimension this tool does not model"
+
+
+class _AnyUnit(dict):
+    """A unit table that reads every unknown unit as a plain number (the first, tolerant parse)."""
+
+    def __missing__(self, key: str) -> tuple[str | None, float]:
+        return None, 1.0
+
+
+def parse_with_declared_units(path: str | Path) -> tuple[model.OscFile, dict[str, tuple[str | None, float]]]:
+    """Parse ``path``; when it uses units that it or its imports declare, with those units.
+    Returns the file and the unit table its imports are to be parsed with."""
+    try:
+        return parse_file(path), UNITS
+    except OscError as error:
+        if not any(d.message.startswith("unknown unit") for d in error.diagnostics):
+            raise
+        original = error
+    physics = declared_physics(_closure(Path(path)))
+    if not physics.units:
+        raise original
+    table = physics.table()
+    return parse_file(path, table), table
+
+
+def _closure(path: Path) -> list[model.OscFile]:
+    """The file and everything it imports, parsed tolerantly (files that do not parse are left out:
+    the checker reports them)."""
+    files: list[model.OscFile] = []
+    seen: set[Path] = set()
+    stack = [path.resolve()]
+    while stack:
+        current = stack.pop()
+        if current in seen or not current.is_file():
+            continue
+        seen.add(current)
+        try:
+            osc = parse_file(current, _AnyUnit(UNITS))
+        except OscError:
+            continue
+        files.append(osc)
+        stack.extend(target for item in osc.imports if (target := item.file(str(current))) is not None)
+    return files
