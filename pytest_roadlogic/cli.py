@@ -54,12 +54,14 @@ def main(argv: list[str] | None = None) -> int:
     replay.add_argument("--values", type=_values, default=None, help="with an .osc file: the sampled values as JSON (refined)")
     replay.add_argument("--instance", type=_flag(parse_count), default=0, help="with an .osc file: which plan, from 0 (base)")
     replay.add_argument("--lanes", type=_flag(lane_count), default=None, help=LANES_HELP)
+    _run_flags(replay, ("dialect",), "with an .osc file: ")
     _run_flags(replay, RUN_FLAGS, "with an .osc file: ")
     replay.add_argument("--out", type=Path, default=Path("out"), help="artifact directory (default out/)")
     check = commands.add_parser("check", help="parse and check .osc files and folders; print every problem")
     check.add_argument("paths", type=Path, nargs="+", help=".osc files or folders (searched recursively)")
     check.add_argument("--syntax-only", action="store_true", help="stop after parsing (for files written for other tools)")
     check.add_argument("--lanes", type=_flag(lane_count), default=None, help=LANES_HELP)
+    _run_flags(check, ("dialect",))
     automaton = _scenario_command(commands, "automaton", "write a scenario's symbolic automaton as Graphviz DOT (and PNG when dot is installed)")
     automaton.add_argument("--out", type=Path, default=None, help="the DOT file to write (default: <scenario>.dot)")
     plan = _scenario_command(commands, "plan", "solve a scenario's planning problem and print the plans as tables")
@@ -132,6 +134,7 @@ def _scenario_command(commands, name: str, help: str) -> argparse.ArgumentParser
     command.add_argument("file", type=Path, help="an .osc file")
     command.add_argument("--scenario", help="the scenario when the file declares several (default: the first)")
     command.add_argument("--lanes", type=_flag(lane_count), default=None, help=LANES_HELP)
+    _run_flags(command, ("dialect",))
     return command
 
 
@@ -186,7 +189,7 @@ def osc_files(paths: list[Path], recursive: bool = True) -> list[Path]:
     return found
 
 
-def check_file(path: Path, syntax_only: bool = False, lanes: int | None = None) -> tuple[bool, str]:
+def check_file(path: Path, syntax_only: bool = False, lanes: int | None = None, dialect: str | None = None) -> tuple[bool, str]:
     """Whether the file is free of errors, and the formatted report; never raises for bad input.
 
     Beyond the front end's checks, each scenario's automaton is built, so that a construct the
@@ -199,7 +202,7 @@ def check_file(path: Path, syntax_only: bool = False, lanes: int | None = None) 
         if syntax_only:
             parse_file(path)
             return True, ""
-        checked = check(path, lanes)
+        checked = check(path, lanes, dialect=dialect)
         reports = [checked.report()] if checked.diagnostics else []
         ok = not checked.errors
         for scenario in checked.scenarios if ok else ():
@@ -225,7 +228,7 @@ def _check(args: argparse.Namespace) -> int:
     files = osc_files(args.paths)
     failed = 0
     for path in files:
-        ok, report = check_file(path, args.syntax_only, args.lanes)
+        ok, report = check_file(path, args.syntax_only, args.lanes, args.setting_dialect)
         if report:
             print(report)
         if not ok:
@@ -237,7 +240,7 @@ def _check(args: argparse.Namespace) -> int:
 def _load(args: argparse.Namespace):
     from .pipeline import load_scenario
 
-    return load_scenario(args.file, args.scenario, args.lanes)
+    return load_scenario(args.file, args.scenario, args.lanes, args.setting_dialect)
 
 
 def _load_automaton(args: argparse.Namespace):
@@ -327,7 +330,7 @@ def _replay(args: argparse.Namespace) -> int:
         else:
             from .frontend import load_file
 
-            name = load_file(args.case, args.lanes).scenario_to_run(args.scenario).name
+            name = load_file(args.case, args.lanes, dialect=args.setting_dialect).scenario_to_run(args.scenario).name
             identity = {"values": args.values or {}} if args.strategy == REFINED else {"instance": args.instance}
             case = Case.of(args.case, name, _run_settings(args), strategy=args.strategy, **identity)
         return replay(case)

@@ -21,3 +21,14 @@ def pytest_roadlogic_simulator(config, scenario):
 
     Called once per scenario item.
     """
+
+
+@pytest.hookspec(firstresult=True)
+def pytest_roadlogic_dialect(config, path):
+    """Return the dialect ``path`` (an .osc file) is written in, ``"standard"`` or ``"carla"``, or
+    ``None`` to use the one ``--roadlogic-dialect`` names (default: standard). A ``conftest.py`` next
+    to a folder of CARLA scenario-runner files makes them read in that dialect:
+
+        def pytest_roadlogic_dialect(config, path):
+            return "carla"
+    """

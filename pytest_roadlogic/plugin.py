@@ -20,12 +20,13 @@ from __future__ import annotations
 import json
 import re
 import time
+from dataclasses import replace
 from pathlib import Path
 
 import pytest
 
 from .outcomes import OUTCOMES, STAGES, Tally, key
-from .settings import BASE, OPTIONS, REFINED, OptionError, RunSettings
+from .settings import BASE, OPTIONS, REFINED, OptionError, RunSettings, dialect as parse_dialect
 
 DEFAULT_ARTIFACTS = "roadlogic-artifacts"
 SLOW_ACTORS = 3  # a scenario with more moving vehicles than this is marked slow
@@ -107,8 +108,12 @@ class OscFile(pytest.File):
     def collect(self):
         from .frontend import OscError, check_file
 
+        settings = self.config.stash[SETTINGS]
         try:
-            checked = check_file(self.path, self.config.stash[SETTINGS].lanes)
+            dialect = self.config.hook.pytest_roadlogic_dialect(config=self.config, path=self.path)
+            if dialect is not None and dialect != settings.dialect:
+                settings = replace(settings, dialect=parse_dialect(dialect))
+            checked = check_file(self.path, settings.lanes, dialect=settings.dialect)
             checked.raise_for_errors()
         except OscError as error:
             # A broken .osc file is reported, but must not stop the other scenarios from running
@@ -116,11 +121,13 @@ class OscFile(pytest.File):
             # kinds of files keep pytest's rule.
             self.config.option.continue_on_collection_errors = True
             raise self.CollectError(error.report()) from None
+        except OptionError as error:
+            raise self.CollectError(f"{self.path}: pytest_roadlogic_dialect: {error}") from None
         for warning in checked.warnings:
             self.warn(OscWarning(OscError([warning], sources=checked.sources).report()))
         for scenario in checked.scenarios:
             if scenario.runnable:
-                item = ScenarioItem.from_parent(self, name=scenario.name, scenario=scenario)
+                item = ScenarioItem.from_parent(self, name=scenario.name, scenario=scenario, settings=settings)
                 item.add_marker("roadlogic")
                 if sum(not actor.stationary for actor in scenario.scenario.actors) > SLOW_ACTORS:
                     item.add_marker("slow")  # planning grows with the vehicles: select or deselect with -m
@@ -137,9 +144,10 @@ class ScenarioFailed(Exception):
 
 
 class ScenarioItem(pytest.Item):
-    def __init__(self, *, scenario, **kwargs) -> None:
+    def __init__(self, *, scenario, settings: RunSettings, **kwargs) -> None:
         super().__init__(**kwargs)
         self.scenario = scenario  # a CheckedScenario
+        self.settings = settings  # the session's, with this file's dialect
         self.tally = Tally()
 
     # ---------------------------------------------------------------- running
@@ -148,7 +156,7 @@ class ScenarioItem(pytest.Item):
         from .case import Case, CaseFileError
         from .runner import Runner
 
-        settings = self.config.stash[SETTINGS]
+        settings = self.settings
         self.user_properties += [("strategy", settings.strategy), ("seed", settings.seed)]
         runner = Runner(self.scenario, settings, self._drivers(), self._simulator(), explain=settings.strategy == BASE)
         try:

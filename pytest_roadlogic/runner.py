@@ -175,7 +175,7 @@ def replay(case: Case, drivers: DriverFactory | None = None, simulator: Simulato
     """Run a recorded case again: the same plan and the same trace (with the same drivers)."""
     from .frontend import load_file
 
-    scenario = load_file(case.path, case.lanes).scenario(case.scenario)
+    scenario = load_file(case.path, case.lanes, dialect=case.dialect).scenario(case.scenario)
     return Runner(scenario, case.settings(), drivers, simulator).run_case(case)
 
 

@@ -18,6 +18,8 @@ REFINED, BASE = "refined", "base"
 STRATEGIES = (REFINED, BASE)
 CONTINUOUS, GRID = "continuous", "grid"
 ENCODINGS = (CONTINUOUS, GRID)
+STANDARD_DIALECT, CARLA_DIALECT = "standard", "carla"
+DIALECTS = (STANDARD_DIALECT, CARLA_DIALECT)  # constructs.DIALECTS holds their registries
 DEFAULT_HORIZON = 25  # planning steps (of 1 s) of the grid encoding
 CONTINUOUS_HORIZON = 120  # of the continuous one: two minutes of scenario time
 DEFAULT_PLAN_TIMEOUT = 60.0  # seconds per planning
@@ -82,6 +84,12 @@ def encoding(text: str) -> str:
     return text
 
 
+def dialect(text: str) -> str:
+    if text not in DIALECTS:
+        raise OptionError(f"{text!r} is not a dialect; give {' or '.join(DIALECTS)}")
+    return text
+
+
 def strategy(text: str) -> str:
     if text not in STRATEGIES:
         raise OptionError(f"{text!r} is not a strategy; give {' or '.join(STRATEGIES)}")
@@ -116,6 +124,8 @@ OPTIONS = (
     Option("seed", "seed", seed, 1, "fixes sampling, planning and simulation"),
     Option("tries", "tries", whole_number(1, "a number of tries"), 5, "plans to try per case when the monitor rejects the simulation"),
     Option("lanes", "lanes", lanes_or_none, None, "lanes of the road for every scenario (default: each scenario's own)"),
+    Option("dialect", "dialect", dialect, STANDARD_DIALECT,
+           "how files are read: standard (ASAM), or carla (CARLA's scenario runner: lanes numbered from the left, speed(v) a target)"),
     Option("encoding", "encoding", encoding, CONTINUOUS,
            "continuous: real-valued speeds and positions (asp/continuous.lp); grid: the paper's integer grid with a run-up from standstill"),
     Option("horizon", "max_horizon", horizon_or_none, None, f"planning horizon limit in steps of 1 s (default: {CONTINUOUS_HORIZON} continuous, {DEFAULT_HORIZON} grid)"),
@@ -135,6 +145,7 @@ class RunSettings:
     seed: int = 1
     tries: int = 5
     lanes: int | None = None
+    dialect: str = STANDARD_DIALECT
     encoding: str = CONTINUOUS
     max_horizon: int | None = None  # the encoding's own
     planning_time_limit: float = DEFAULT_PLAN_TIMEOUT

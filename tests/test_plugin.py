@@ -217,3 +217,20 @@ def test_a_bad_option_value_stops_the_session_with_a_message_naming_the_option(p
         assert result.ret == pytest.ExitCode.USAGE_ERROR, (option, result.stdout.str())
         assert message in result.stderr.str(), (option, result.stderr.str())
         assert "Traceback" not in result.stderr.str() + result.stdout.str()
+
+
+def test_a_conftest_reads_a_folder_in_carlas_dialect_and_the_items_run_accepted(pytester):
+    carla = SCENARIOS / "realistic" / "carla_dialect"
+    copy(pytester, carla / "lib.osc", carla / "slow_cut_in.osc")
+    pytester.makeconftest("def pytest_roadlogic_dialect(config, path):\n    return 'carla'\n")
+    result = pytester.runpytest_subprocess("--roadlogic-examples", "1", "--junitxml", "j.xml", *QUIET)
+    result.assert_outcomes(passed=1)
+    properties = {p.get("name"): p.get("value") for p in ET.parse(pytester.path / "j.xml").iter("property")}
+    assert properties["conformant"] == "1", properties
+
+
+def test_a_dialect_hook_that_names_no_dialect_is_a_collection_error_of_that_file(pytester):
+    copy(pytester, SCENARIOS / "change_lane.osc")
+    pytester.makeconftest("def pytest_roadlogic_dialect(config, path):\n    return 'carl'\n")
+    result = pytester.runpytest_subprocess("--collect-only", "-q", *QUIET)
+    result.stdout.fnmatch_lines(["*change_lane.osc: pytest_roadlogic_dialect: 'carl' is not a dialect; give standard or carla*"])

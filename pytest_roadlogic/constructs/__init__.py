@@ -7,11 +7,14 @@ makes one with more constructs. To add a construct: write its class (signature, 
 module here and its ``CONSTRUCTS`` in ``STANDARD``.
 """
 
-from . import lanes, motion, pending, position, speed
+from . import carla, lanes, motion, pending, position, speed
 from .base import Action, AnchoredModifier, CheckContext, Construct, Modifier, Registry, Use
 from .lanes import LANE_CONVENTION
 
 # in the order hints list them ("known actions: drive, remain_stationary, ...")
 STANDARD = Registry((*motion.CONSTRUCTS, *lanes.CONSTRUCTS, *speed.CONSTRUCTS, *position.CONSTRUCTS, *pending.CONSTRUCTS))
+CARLA = STANDARD.extended(*carla.CONSTRUCTS, dialect=carla.DIALECT)
+# by the names settings.DIALECTS lists
+DIALECTS = {STANDARD.dialect: STANDARD, CARLA.dialect: CARLA}
 
-__all__ = ["Action", "AnchoredModifier", "CheckContext", "Construct", "LANE_CONVENTION", "Modifier", "Registry", "STANDARD", "Use"]
+__all__ = ["Action", "AnchoredModifier", "CARLA", "CheckContext", "Construct", "DIALECTS", "LANE_CONVENTION", "Modifier", "Registry", "STANDARD", "Use"]

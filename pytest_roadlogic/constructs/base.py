@@ -82,16 +82,12 @@ class Use:
                 return keyword, self.name(keyword)
         return None
 
-    def anchor(self) -> str:
-        """Where the modifier holds: ``at:`` start, end or all (the standard's default: all)."""
-        return anchor_of(self.binding)
 
-
-def anchor_of(binding: Binding) -> str:
+def anchor_of(binding: Binding, default: str = "all") -> str:
     """``at:`` of a bound modifier: start, end or all (the standard's default: all)."""
     given = binding["at"]
     if given is None:
-        return "all"
+        return default
     if not isinstance(given.value, model.Name) or given.value.name not in AT_VALUES:
         raise error_at(given.location, "`at:` takes start, end or all")
     return given.value.name
@@ -157,20 +153,24 @@ class Modifier(Construct):
 class AnchoredModifier(Modifier):
     """A modifier that is one guard, placed by ``at:`` at the phase's start, end, or throughout."""
 
+    # where the guard holds when ``at:`` is not given: the standard's all (a dialect may differ)
+    default_anchor: ClassVar[str] = "all"
+
     def guard(self, use: Use) -> Guard:
         raise NotImplementedError
 
     def held_throughout(self, binding: Binding) -> bool:
-        return anchor_of(binding) == "all"
+        return anchor_of(binding, self.default_anchor) == "all"
 
     def translate(self, use: Use, phase: Phase) -> None:
-        phase.anchor(self.guard(use), use.anchor())
+        phase.anchor(self.guard(use), anchor_of(use.binding, self.default_anchor))
 
 
 class Registry:
     """The actions and modifiers a scenario may use, by name."""
 
-    def __init__(self, constructs: Iterable[Construct] = ()) -> None:
+    def __init__(self, constructs: Iterable[Construct] = (), dialect: str = "standard") -> None:
+        self.dialect = dialect  # whose conventions the constructs follow, for messages and case files
         self.actions: dict[str, Action] = {}
         self.modifiers: dict[str, Modifier] = {}
         for construct in constructs:
@@ -186,9 +186,9 @@ class Registry:
     def modifier(self, name: str) -> Modifier | None:
         return self.modifiers.get(name)
 
-    def extended(self, *constructs: Construct) -> "Registry":
+    def extended(self, *constructs: Construct, dialect: str | None = None) -> "Registry":
         """A copy with ``constructs`` added (replacing any of the same kind and name)."""
-        copy = Registry([*self.actions.values(), *self.modifiers.values()])
+        copy = Registry([*self.actions.values(), *self.modifiers.values()], dialect or self.dialect)
         for construct in constructs:
             copy._add(construct)
         return copy

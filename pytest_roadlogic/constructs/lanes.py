@@ -9,6 +9,7 @@ variant per starting lane: guards see only the current state, and the road is fi
 from __future__ import annotations
 
 import math
+from typing import ClassVar
 
 from ..automaton.guards import LANE, Bound, Guard, Term
 from ..automaton.phase import Phase, Variant
@@ -28,6 +29,9 @@ def keep_lane_variants(actor: str, lanes: int, source: SourceLocation) -> list[V
 class Lane(AnchoredModifier):
     """``lane(k)``, ``lane([1..2])``, ``lane(k, from: left)``, ``lane(same_as:|left_of:|right_of: x)``,
     ``lane(side_of: x, side: left)``. ``left_of: x`` means any lane left of x's (the paper's l(v1) < l(v2))."""
+
+    counted_from: ClassVar[str] = "right"  # where lane(1) is when from: is not given
+    convention: ClassVar[str] = LANE_CONVENTION
 
     signature = Signature(
         "lane",
@@ -50,14 +54,14 @@ class Lane(AnchoredModifier):
         relative = [binding[name] for name in RELATIVE if binding[name] is not None]
         side = binding["from"]
         if relative and side is not None:
-            context.error(side.location, "from: goes with a lane number, not with a relative lane", LANE_CONVENTION)
+            context.error(side.location, "from: goes with a lane number, not with a relative lane", self.convention)
         number = binding["lane"]
         if number is None:
             return
         value = context.evaluate(number)
         if value is not None and value.dimension is None and (value.low < 1 or value.high > context.lanes):
             shown = f"{value.low:g}" if value.is_point else str(value)
-            context.error(number.value.location, f"lane {shown} is outside the road's {context.lanes} lanes{context.lanes_origin}", LANE_CONVENTION)
+            context.error(number.value.location, f"lane {shown} is outside the road's {context.lanes} lanes{context.lanes_origin}", self.convention)
 
     def lanes_needed(self, binding, highest) -> int:
         relative = any(binding[name] is not None for name in ("left_of", "right_of", "side_of"))
@@ -72,12 +76,12 @@ class Lane(AnchoredModifier):
             low, high = {"same_as": (0, 0), "left_of": (-math.inf, -1), "right_of": (1, math.inf)}[keyword]
             return Bound(Term(LANE, use.actor, other), low, high, use.location)
         if use.argument("lane") is None:
-            raise error_at(use.location, "lane() needs a lane number or same_as:/left_of:/right_of:", hint=LANE_CONVENTION)
+            raise error_at(use.location, "lane() needs a lane number or same_as:/left_of:/right_of:", hint=self.convention)
         value = use.interval("lane")
         if value.dimension is not None or not float(value.low).is_integer() or not float(value.high).is_integer():
-            raise error_at(use.argument("lane").location, "a lane number must be a whole number", hint=LANE_CONVENTION)
+            raise error_at(use.argument("lane").location, "a lane number must be a whole number", hint=self.convention)
         low, high = int(value.low), int(value.high)  # within the road: the checker's check() saw to it
-        from_left = use.name("from") == "left"
+        from_left = (use.name("from") or self.counted_from) == "left"
         first, last = (low - 1, high - 1) if from_left else (use.lanes - high, use.lanes - low)
         return Bound(Term(LANE, use.actor), first, last, use.location)
 

@@ -34,24 +34,25 @@ DEFAULT_LANES = 3
 _BUILTIN_PHYSICAL = {dimension: name for name, dimension in library.PHYSICAL_TYPES.items()}
 
 
-def check_file(path: str | Path, lanes: int | None = None, registry: Registry | None = None) -> CheckedFile:
+def check_file(path: str | Path, lanes: int | None = None, registry: Registry | None = None, dialect: str | None = None) -> CheckedFile:
     """Parse and check ``path`` and the files it imports. Syntax errors raise ``OscError``.
 
     ``lanes`` fixes the road's lane count; ``None`` takes it from each scenario (see ``_road_lanes``).
-    ``registry`` holds the actions and modifiers the file may use (default: the standard's).
+    ``registry`` holds the actions and modifiers the file may use (default: those of ``dialect``,
+    the standard's unless it names another of ``constructs.DIALECTS``).
     """
-    checker = _Checker(lanes, registry)
+    checker = _Checker(lanes, registry, dialect)
     main, checker.units = parse_with_declared_units(path)
     return checker.run(main)
 
 
-def check_text(text: str, path: str = "<string>", lanes: int | None = None, registry: Registry | None = None) -> CheckedFile:
-    return _Checker(lanes, registry).run(parse_text(text, path))
+def check_text(text: str, path: str = "<string>", lanes: int | None = None, registry: Registry | None = None, dialect: str | None = None) -> CheckedFile:
+    return _Checker(lanes, registry, dialect).run(parse_text(text, path))
 
 
-def load_file(path: str | Path, lanes: int | None = None, registry: Registry | None = None) -> CheckedFile:
+def load_file(path: str | Path, lanes: int | None = None, registry: Registry | None = None, dialect: str | None = None) -> CheckedFile:
     """``check_file`` that raises ``OscError`` when the file has errors (warnings pass)."""
-    checked = check_file(path, lanes, registry)
+    checked = check_file(path, lanes, registry, dialect)
     checked.raise_for_errors()
     return checked
 
@@ -83,13 +84,15 @@ class _ConstructContext:
 
 
 class _Checker:
-    def __init__(self, lanes: int | None, registry: Registry | None = None) -> None:
+    def __init__(self, lanes: int | None, registry: Registry | None = None, dialect: str | None = None) -> None:
         if registry is None:
             # imported here: the registry translates into the automaton's guards, and the
             # automaton imports the front end (a module-level import would be circular)
-            from ..constructs import STANDARD
+            from ..constructs import DIALECTS
 
-            registry = STANDARD
+            if (dialect or "standard") not in DIALECTS:
+                raise ValueError(f"unknown dialect {dialect!r}; give one of {', '.join(DIALECTS)}")
+            registry = DIALECTS[dialect or "standard"]
         self.registry = registry
         self.requested_lanes = lanes
         # The road of the scenario being checked, and why it has that many lanes (for error messages).
@@ -564,7 +567,10 @@ class _Checker:
             before = len(self.diagnostics)
             binding = self._arguments(signature, modifier.arguments, modifier.location, scenario, env, set(), set(), what=f"{modifier.name}()")
             if modifier.name == "set_map":
-                self.warning(modifier.location, "the map is not available: the scenario runs on one straight road", "give the road's lanes with path_min_driving_lanes(n)")
+                hint = "give the road's lanes with path_min_driving_lanes(n)"
+                if self.registry.dialect == "standard":
+                    hint += "; a file written for CARLA's scenario runner is read with --dialect carla (pytest: --roadlogic-dialect carla or roadlogic_dialect = carla): lanes numbered from the left, speed(v) a target"
+                self.warning(modifier.location, "the map is not available: the scenario runs on one straight road", hint)
                 continue
             argument = binding["lanes"]
             if argument is None or any(d.severity == "error" for d in self.diagnostics[before:]):
