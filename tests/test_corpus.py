@@ -90,6 +90,22 @@ TIER_1 = {
     "line joined by backslash": r"\\\n",
     "comment": r"#",
     "several scenarios in a file": r"^scenario(?s:.*)^scenario",
+    # events and conditions
+    "emit": r"^\s+emit \w+$",
+    "wait for an event": r"wait @\w+$",
+    "wait for an event with a condition": r"wait @\w+ if ",
+    "until an event": r"until @\w+$",
+    "until a condition on a method": r"until \(?\w+\.\w+\(reference: ",
+    "event defined by elapsed time": r"event \w+ is elapsed\(",
+    "condition with or / not": r" or not ",
+    # CARLA-style libraries
+    "physical type declaration": r"^type \w+ is SI\(",
+    "unit declaration with a factor": r"^unit \w+ of \w+ is SI\(.*factor: ",
+    "unquoted import of a file": r"^import \w+\.osc$",
+    "bare actor type": r"^actor \w+$",
+    "modifier declaration": r"^modifier \w+\.\w+$",
+    "set_map": r"\.set_map\(",
+    "drive(path)": r"\.drive\(path\)",
 }
 
 

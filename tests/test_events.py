@@ -86,6 +86,14 @@ def test_until_a_condition_ends_the_phase_where_the_condition_holds():
     assert Bound(Term(POSITION, "lead", "ego"), -math.inf, -5.0) in [replace_source(b) for b in end.guard.atoms()]
 
 
+def test_until_a_condition_is_its_rising_edge_it_does_not_hold_when_the_phase_starts():
+    text = "scenario s:\n  a: car\n  do a.drive() with:\n    until a.speed > 20mps\n"
+    a = automaton(text)
+    (start,) = a.outgoing(a.initial)
+    (end,) = [t for t in a.transitions if t.target == a.final]
+    assert str(start.guard) == "not v(a) >= 20" and str(end.guard) == "v(a) >= 20"
+
+
 def replace_source(bound: Bound) -> Bound:
     return Bound(bound.term, bound.low, bound.high)
 

@@ -27,7 +27,7 @@ from typing import Hashable
 from ..frontend import model
 from ..frontend.checked import CheckedScenario
 from ..frontend.errors import error_at
-from .guards import TRUE, Guard, conjunction
+from .guards import TRUE, Guard, Not, conjunction
 from .model import Location, SymbolicAutomaton, Timing, Transition
 from .phase import Variant
 from ..constructs.conditions import condition_guard
@@ -105,7 +105,7 @@ class _Builder:
         if isinstance(behavior, model.Invocation):
             fragment = _atomic(behavior, self.checked, self.counter, self.env)
             if behavior.until is not None:
-                fragment = self.end_on(fragment, behavior.until, behavior.label or _phase_name(behavior), behavior.location)
+                fragment = self.end_on(fragment, behavior.until, behavior.label or _phase_name(behavior), behavior.location, rising=True)
             duration = behavior.argument("duration")
         elif isinstance(behavior, model.Wait):
             return self.wait(behavior)
@@ -159,12 +159,17 @@ class _Builder:
         fragment = _phase(next(self.counter), name, wait.label is not None, Variant(), frozenset())
         return self.end_on(fragment, wait.condition, name, wait.location)
 
-    def end_on(self, fragment: _Fragment, spec: model.EventSpecification, name: str, location) -> _Fragment:
+    def end_on(self, fragment: _Fragment, spec: model.EventSpecification, name: str, location, rising: bool = False) -> _Fragment:
         """The fragment ending as ``spec`` says (``until``, ``wait``): where a condition holds, at an
-        emitted event, or ``elapsed(t)`` after it began (a timed phase)."""
+        emitted event, or ``elapsed(t)`` after it began (a timed phase). ``rising``: an ``until``
+        condition is an event that happens when the condition becomes true, so it does not hold
+        yet when the phase starts (a ``wait`` on a condition that already holds ends at once)."""
         guard, event, first, timed = self.ending(spec)
         if timed is not None:
             fragment = self.timed(fragment, name, timed[0], timed[1], location)
+        if rising and event is None and timed is None and not guard.is_true:
+            for edge in fragment.outgoing(fragment.initial):
+                edge.guard = conjunction([edge.guard, Not(guard)])
         _end_on(fragment, guard, event, first)
         return fragment
 
