@@ -24,13 +24,13 @@ import itertools
 from dataclasses import dataclass, field, replace
 from typing import Hashable
 
+from ..constructs.conditions import condition_guard
 from ..frontend import model
 from ..frontend.checked import CheckedScenario
 from ..frontend.errors import error_at
 from .guards import TRUE, Guard, Not, conjunction
 from .model import Location, SymbolicAutomaton, Timing, Transition
 from .phase import Variant
-from ..constructs.conditions import condition_guard
 from .translation import check_behavior_arguments, duration_interval, phase_guards
 
 Key = Hashable
