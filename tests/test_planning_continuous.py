@@ -2,6 +2,7 @@
 constant-acceleration kinematics, the lane rules, the gaps and the scenario's guards and durations,
 checked here independently of the encoding."""
 
+import dataclasses
 from pathlib import Path
 
 import pytest
@@ -256,3 +257,20 @@ def test_the_grid_encoding_refuses_a_time_headway_at_its_place():
         Planner(automaton, PlanningSettings(), 1).first()
     report = raised.value.report()
     assert "46_time_headway.osc:15:" in report and "continuous" in report, report
+
+
+def test_durations_that_clash_at_every_length_are_not_blamed_on_the_horizon_limit():
+    from pytest_roadlogic.frontend import check_text
+    from pytest_roadlogic.planning import HorizonTooShort, NoPlanError
+
+    text = (
+        "scenario s:\n  a: car\n  b: car\n  do parallel(overlap: equal):\n"
+        "    serial:\n      a.drive(duration: 3s)\n      a.drive(duration: 4s)\n"
+        "    b.drive(duration: 9s)\n"
+    )
+    automaton = build_automaton(check_text(text).scenarios[0])
+    settings = dataclasses.replace(SETTINGS, explain_unsatisfiable=False)
+    with pytest.raises(NoPlanError) as caught:
+        next(ContinuousPlanner(automaton, settings, 1).plans())
+    assert not isinstance(caught.value, HorizonTooShort), str(caught.value)
+    assert "durations cannot all hold at any length" in str(caught.value)

@@ -305,6 +305,8 @@ class ContinuousPlanner(Planner):
         try:
             window = self.window(deadline)
             earliest = self.needed_horizon(deadline, window)
+            if earliest is None:
+                raise NoPlanError(f"the phases' durations cannot all hold at any length, in steps of {self.settings.dt:g} s")
             control = self._control(self.base_program, self.state_program)
             theory = self._theories[control]
             self._advance_to(control, earliest)

@@ -172,10 +172,16 @@ class Planner:
             raise UnsatisfiableScenario(f"{error}\n" + conflict_message([conflict]), [conflict], self.settings.summary(self.automaton.lanes)) from None
         raise error
 
-    def needed_horizon(self, deadline: float, window: DurationWindow | None = None) -> int:
+    def needed_horizon(self, deadline: float, window: DurationWindow | None = None) -> int | None:
         """The shortest horizon the phases' durations allow (``earliest_horizon``);
-        ``HorizonTooShort`` when that is past the horizon limit, a setting that then binds."""
-        needed = (window or self.window(deadline)).earliest(4 * self.settings.max_horizon)
+        ``HorizonTooShort`` when that is past the horizon limit, a setting that then binds. None
+        when no horizon at all lets a run end: the durations clash (a run can no longer be under
+        way at four times the limit either), which is the scenario's matter, not the limit's."""
+        window = window or self.window(deadline)
+        reach = 4 * self.settings.max_horizon
+        needed = window.earliest(reach)
+        if needed is None and not window.open_at(reach):
+            return None
         if needed is None or needed > self.settings.max_horizon:
             raise HorizonTooShort(self.settings.max_horizon, self.settings.dt, needed)
         return needed
