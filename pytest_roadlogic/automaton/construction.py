@@ -49,11 +49,17 @@ class _Edge:
     # events that components staying put across this edge wait for: none of them may be emitted here
     deaf: frozenset[str] = frozenset()
 
-    def joined(self, other: "_Edge", target: Key) -> "_Edge":
-        """The two edges taken at one instant (a serial's junction)."""
-        emits = self.emits | other.emits
-        return _Edge(self.source, conjunction([self.guard, other.guard]), self.events + other.events, target,
-                     self.starts | other.starts, self.ends | other.ends, emits, (self.awaits | other.awaits) - emits, self.deaf | other.deaf)
+
+def _simultaneous(source: Key, moves: list[_Edge], target: Key, deaf: frozenset[str] = frozenset()) -> _Edge:
+    """``moves`` taken at one instant, as one edge: a serial's junction (one phase's end and the
+    next one's start) or a combination of a parallel's members. ``deaf``: the events that members
+    staying put wait for."""
+    emits = frozenset().union(*(m.emits for m in moves))
+    return _Edge(
+        source, conjunction([m.guard for m in moves]), tuple(ev for m in moves for ev in m.events), target,
+        frozenset().union(*(m.starts for m in moves)), frozenset().union(*(m.ends for m in moves)),
+        emits, frozenset().union(*(m.awaits for m in moves)) - emits, frozenset().union(deaf, *(m.deaf for m in moves)),
+    )
 
 
 @dataclass
@@ -259,7 +265,7 @@ def _serial(first: _Fragment, second: _Fragment) -> _Fragment:
     edges += [e for e in second.edges if e.source != second.initial]
     for into in (e for e in first.edges if e.target == first.final):
         for out in second.outgoing(second.initial):
-            edges.append(into.joined(out, out.target))
+            edges.append(_simultaneous(into.source, [into, out], out.target))
     return _Fragment(
         initial=first.initial,
         final=second.final,
@@ -293,15 +299,11 @@ def _parallel(children: list[_Fragment]) -> _Fragment:
             if any(finished) and not all(finished):
                 continue  # members of a parallel end together
             moving = [m for m in combination if m is not None]
-            emits = frozenset().union(*(m.emits for m in moving))
-            deaf = frozenset().union(*(m.deaf for m in moving), *(c.listening.get(k, frozenset()) for m, c, k in zip(combination, children, current) if m is None))
-            if deaf & emits:
+            staying = frozenset().union(*(c.listening.get(k, frozenset()) for m, c, k in zip(combination, children, current) if m is None))
+            edge = _simultaneous(current, moving, target, staying)
+            if edge.deaf & edge.emits:
                 continue  # a member waiting for the event would miss it
-            edges.append(
-                _Edge(current, conjunction([m.guard for m in moving]), tuple(ev for m in moving for ev in m.events), target,
-                      frozenset().union(*(m.starts for m in moving)), frozenset().union(*(m.ends for m in moving)),
-                      emits, frozenset().union(*(m.awaits for m in moving)) - emits, deaf)
-            )
+            edges.append(edge)
             if target not in seen:
                 seen.add(target)
                 frontier.append(target)

@@ -37,6 +37,11 @@ UNIT = {POSITION: "m", LANE: "lanes", SPEED: "m/s", HEADWAY: "s"}
 HEADWAY_SPEED_FLOOR = 0.1
 
 
+def headway(ahead_position, behind_position, behind_speed):
+    """``h``: the gap over the follower's speed, floored; numbers or arrays alike."""
+    return (ahead_position - behind_position) / np.maximum(behind_speed, HEADWAY_SPEED_FLOOR)
+
+
 class ActorState(Protocol):
     position: float
     lane: int
@@ -58,7 +63,7 @@ class Term:
     def value(self, snapshot: Snapshot) -> float:
         if self.quantity == HEADWAY:
             ahead, behind = snapshot[self.actor], snapshot[self.reference]
-            return (ahead.position - behind.position) / max(behind.speed, HEADWAY_SPEED_FLOOR)
+            return float(headway(ahead.position, behind.position, behind.speed))
         value = getattr(snapshot[self.actor], self.quantity)
         if self.reference is not None:
             value -= getattr(snapshot[self.reference], self.quantity)
@@ -121,8 +126,7 @@ class Bound(Guard):
     def robustness_series(self, columns) -> np.ndarray:
         if self.term.quantity == HEADWAY:
             ahead, behind = columns[self.term.actor], columns[self.term.reference]
-            gap = np.asarray(ahead["x"], dtype=float) - np.asarray(behind["x"], dtype=float)
-            value = gap / np.maximum(np.asarray(behind["speed"], dtype=float), HEADWAY_SPEED_FLOOR)
+            value = headway(*(np.asarray(column, dtype=float) for column in (ahead["x"], behind["x"], behind["speed"])))
         else:
             column = COLUMN[self.term.quantity]
             value = np.asarray(columns[self.term.actor][column], dtype=float)

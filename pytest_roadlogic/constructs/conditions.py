@@ -45,16 +45,15 @@ class Observable:
     dimension: str
     term: Callable[[str, str | None], Term]  # (actor, reference) -> term
     needs_reference: bool
-    meaning: str
 
 
 OBSERVABLES = {
     o.name: o
     for o in (
-        Observable("speed", SPEED, lambda a, _: Term(SPEED_Q, a), False, "the actor's speed"),
-        Observable("space_headway", LENGTH, lambda a, b: Term(POSITION, b, a), True, "distance to the reference's front, negative when the actor leads"),
-        Observable("time_headway", TIME, lambda a, b: Term(HEADWAY, b, a), True, "seconds the actor needs to reach where the reference is"),
-        Observable("relative_speed", SPEED, lambda a, b: Term(SPEED_Q, a, b), True, "the actor's speed minus the reference's"),
+        Observable("speed", SPEED, lambda a, _: Term(SPEED_Q, a), False),
+        Observable("space_headway", LENGTH, lambda a, b: Term(POSITION, b, a), True),
+        Observable("time_headway", TIME, lambda a, b: Term(HEADWAY, b, a), True),
+        Observable("relative_speed", SPEED, lambda a, b: Term(SPEED_Q, a, b), True),
     )
 }
 _MIRROR = {"<": ">", "<=": ">=", ">": "<", ">=": "<=", "==": "=="}
@@ -74,9 +73,10 @@ def condition_guard(condition: model.Expression, env: dict, actors: Collection[s
         return Not(condition_guard(condition.operand, env, actors))
     if isinstance(condition, model.Binary) and condition.operator in _MIRROR:
         left, right, operator = condition.left, condition.right, condition.operator
-        if _observable(left, actors) is None:
-            left, right, operator = right, left, _MIRROR[operator]
         found = _observable(left, actors)
+        if found is None:
+            left, right, operator = right, left, _MIRROR[operator]
+            found = _observable(left, actors)
         if found is None:
             raise error_at(condition.location, "a condition compares an actor's observable with a value", f"observables: {usage()}; {_EXAMPLE}")
         observable, term = found

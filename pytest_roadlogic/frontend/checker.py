@@ -23,8 +23,7 @@ from .errors import Diagnostic, OscError, SourceLocation
 from .parameters import ParameterSpace, parameter_space
 from .parser import parse_file, parse_text
 from .physical import declared_physics, parse_with_declared_units
-from .units import UNITS
-from .units import SPEED, TIME
+from .units import SPEED, TIME, UNITS
 from .values import EvaluationError, Interval, calls_in, describe, evaluate, names_in
 
 if TYPE_CHECKING:
@@ -611,7 +610,7 @@ class _Checker:
     def _event_specification(self, spec, scenario: model.Scenario, env: dict, location: SourceLocation, waits: bool = False) -> None:
         """An event reference or a condition (``constructs.conditions`` says which ones the tool reads);
         ``waits``: it is a ``wait``'s, which may also be ``elapsed(t)``."""
-        from ..constructs.conditions import condition_guard  # see _registry: constructs import the automaton
+        from ..constructs.conditions import condition_guard  # imported here for the reason given in __init__
 
         if isinstance(spec, model.EventReference):
             events = {e.name: e for e in scenario.events}

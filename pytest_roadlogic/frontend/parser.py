@@ -212,20 +212,17 @@ class _Builder:
         exponents: list[tuple[str, float]] = []
         factor = 1.0
         for argument in self.arguments(ctx.argumentList()):
-            value = argument.value
-            sign = 1.0
-            if isinstance(value, model.Unary) and value.operator in "+-":
-                sign, value = (-1.0 if value.operator == "-" else 1.0), value.operand
+            value = argument.value  # a signed number is one Quantity (see expression())
             if argument.name is None or not isinstance(value, model.Quantity) or value.dimension is not None:
                 self.error(argument.location, "SI() takes base units with plain numbers, e.g. SI(m: 1, s: -1)")
                 continue
             if argument.name == "factor" and allow_factor:
-                factor = sign * value.value
+                factor = value.value
             elif argument.name == "offset" and allow_factor:
                 if value.value != 0:
                     self.error(argument.location, "not supported: a unit with an offset", "declare the unit without offset:")
             else:
-                exponents.append((argument.name, sign * value.value))
+                exponents.append((argument.name, value.value))
         return tuple(exponents), factor
 
     def import_(self, ctx: P.ImportStatementContext) -> model.Import:
