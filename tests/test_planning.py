@@ -46,7 +46,8 @@ def check_plan(plan, automaton, settings=SETTINGS):
 
 def check_run(plan, automaton):
     """The guards in order, at strictly increasing steps, ending in the final location; every
-    invariant at every step spent in its location; every timed phase within its bounds."""
+    invariant at every step spent in its location; every timed phase within its bounds, and its
+    actors' mean accelerations (speed at its end minus speed at its start, over its length) within theirs."""
     vehicles = plan.vehicles
     location = automaton.initial
     last_step = -1
@@ -64,7 +65,11 @@ def check_run(plan, automaton):
             started[phase] = step
         for phase in transition.ends & automaton.timings.keys():
             timing = automaton.timings[phase]
-            assert timing.admits((step - started.pop(phase, step)) * plan.dt), f"{timing} broken at step {step}"
+            begun = started.pop(phase, step)
+            assert timing.admits((step - begun) * plan.dt), f"{timing} broken at step {step}"
+            for rate in timing.rates:
+                mean = (plan.at(rate.actor, step).speed - plan.at(rate.actor, begun).speed) / ((step - begun) * plan.dt)
+                assert rate.low - 1e-6 <= mean <= rate.high + 1e-6, f"{rate} broken: {mean:.2f} m/s^2 from step {begun} to {step}"
         location, last_step = transition.target, step
     assert location == automaton.final
 

@@ -21,6 +21,7 @@ Locations that cannot reach the final location are pruned.
 from __future__ import annotations
 
 import itertools
+import math
 from dataclasses import dataclass, field, replace
 from typing import Hashable
 
@@ -29,7 +30,7 @@ from ..frontend import model
 from ..frontend.checked import CheckedScenario
 from ..frontend.errors import error_at
 from .guards import TRUE, Guard, Not, conjunction
-from .model import Location, SymbolicAutomaton, Timing, Transition
+from .model import Location, MeanAcceleration, SymbolicAutomaton, Timing, Transition
 from .phase import Variant
 from .translation import check_behavior_arguments, duration_interval, phase_guards
 
@@ -108,8 +109,9 @@ class _Builder:
         self.events = {e.name: e for e in checked.scenario.events}
 
     def translate(self, behavior: model.Behavior) -> _Fragment:
+        rates: tuple[MeanAcceleration, ...] = ()
         if isinstance(behavior, model.Invocation):
-            fragment = _atomic(behavior, self.checked, self.counter, self.env)
+            fragment, rates = _atomic(behavior, self.checked, self.counter, self.env)
             if behavior.until is not None:
                 fragment = self.end_on(fragment, behavior.until, behavior.label or _phase_name(behavior), behavior.location, rising=True)
             duration = behavior.argument("duration")
@@ -122,10 +124,12 @@ class _Builder:
             raise error_at(behavior.location, "emit is a member of a serial: it marks the instant between its neighbours", hint="put it in a serial, after the phase whose end it announces")
         else:
             raise error_at(behavior.location, "not supported yet by the automaton: call", hint="methods with side effects cannot be planned; remove the call")
+        name = getattr(behavior, "label", None) or _phase_name(behavior)
         if duration is not None:
             low, high = duration_interval(duration, self.env)
-            name = getattr(behavior, "label", None) or _phase_name(behavior)
-            fragment = self.timed(fragment, name, low, high, duration.location)
+            fragment = self.timed(fragment, name, low, high, duration.location, rates)
+        elif rates:  # timed for its start and end only
+            fragment = self.timed(fragment, name, 0.0, math.inf, None, rates)
         return fragment
 
     def composition(self, behavior: model.Composition) -> _Fragment:
@@ -197,10 +201,12 @@ class _Builder:
             return conjunction([guard, extra]), event, first and spec.condition is None, timed
         return extra, spec.name, spec.condition is None, None
 
-    def timed(self, fragment: _Fragment, name: str, low: float, high: float, source) -> _Fragment:
-        """Mark the fragment's first and last instants as one timed phase lasting low..high seconds."""
+    def timed(self, fragment: _Fragment, name: str, low: float, high: float, source, rates: tuple[MeanAcceleration, ...] = ()) -> _Fragment:
+        """Mark the fragment's first and last instants as one timed phase lasting low..high seconds
+        (with the mean accelerations ``rates`` between them)."""
         phase = next(self.counter)
-        self.timings[phase] = Timing(phase, name, low, high, source)
+        rates = tuple(replace(rate, phase=name) for rate in rates)
+        self.timings[phase] = Timing(phase, name, low, high, source, rates)
         for edge in fragment.edges:
             if edge.source == fragment.initial:
                 edge.starts = edge.starts | {phase}
@@ -215,13 +221,14 @@ def _phase_name(behavior: model.Behavior) -> str:
     return getattr(behavior, "operator", "phase")
 
 
-def _atomic(invocation: model.Invocation, checked: CheckedScenario, counter, env: dict) -> _Fragment:
+def _atomic(invocation: model.Invocation, checked: CheckedScenario, counter, env: dict) -> tuple[_Fragment, tuple[MeanAcceleration, ...]]:
+    """The phase's fragment, and what it asks of its start and end together."""
     phase = phase_guards(invocation, checked.registry, checked.lanes, env)
     labelled = invocation.label is not None
     name = invocation.label if labelled else _phase_name(invocation)
     drivers = frozenset([invocation.actor]) if phase.drives else frozenset()
     fragments = [_phase(next(counter), name, labelled, variant, drivers) for variant in phase.variants]
-    return fragments[0] if len(fragments) == 1 else _one_of(fragments, next(counter))
+    return (fragments[0] if len(fragments) == 1 else _one_of(fragments, next(counter))), tuple(phase.rates)
 
 
 def _emit(edges: list[_Edge], events: list[str]) -> None:

@@ -8,6 +8,7 @@ composition demands (the split point lies strictly inside the interval).
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
 from ..frontend.errors import SourceLocation
@@ -25,14 +26,45 @@ class Location:
 
 
 @dataclass(frozen=True)
+class MeanAcceleration:
+    """``acceleration(a)`` on a phase: the actor's speed changes by ``a`` times the phase's length,
+    (v(end) - v(start)) / duration in low..high (m/s^2).
+
+    Why the mean and not every instant (the standard's ``at: all``): a real vehicle ramps its
+    acceleration up and down (jerk), so an instantaneous bound fails at every phase's first and
+    last instants in a simulation; the mean is what a braking or speeding-up phase is asked for,
+    and it is linear in the speeds at the phase's two ends for a known length (the planner writes
+    one row per length, the monitor reads the two samples)."""
+
+    actor: str
+    low: float
+    high: float
+    phase: str = ""
+    source: SourceLocation | None = None
+
+    def margin(self, start_speed: float, end_speed: float, seconds: float) -> float:
+        """How far inside the range the mean acceleration lies (m/s^2, negative outside)."""
+        mean = (end_speed - start_speed) / seconds
+        return min(mean - self.low, self.high - mean)
+
+    def __str__(self) -> str:
+        over = f" over {self.phase}" if self.phase else ""
+        return f"mean acceleration of {self.actor}{over} in {self.low:g}..{self.high:g} m/s^2"
+
+
+@dataclass(frozen=True)
 class Timing:
-    """How long a phase may last, in seconds: from the transition that starts it to the one that ends it."""
+    """How long a phase may last, in seconds: from the transition that starts it to the one that ends it.
+
+    ``high`` may be infinite: a phase that is timed only for its ``rates`` (mean accelerations
+    that need the phase's start and end) and has no ``duration:``."""
 
     phase: int
     name: str
     low: float
     high: float
     source: SourceLocation | None = None
+    rates: tuple[MeanAcceleration, ...] = ()
 
     def admits(self, seconds: float, tolerance: float = 1e-6) -> bool:
         return self.low - tolerance <= seconds <= self.high + tolerance
@@ -42,6 +74,8 @@ class Timing:
         return seconds <= self.high + tolerance
 
     def __str__(self) -> str:
+        if math.isinf(self.high):
+            return f"{self.name} lasts at least {self.low:g} s"
         return f"{self.name} lasts {self.low:g}..{self.high:g} s"
 
 
@@ -104,5 +138,7 @@ class SymbolicAutomaton:
         for t in self.transitions:
             lines.append(f"  {self.locations[t.source].name} -> {self.locations[t.target].name}: {t.guard}")
         for timing in self.timings.values():
-            lines.append(f"  {timing}")
+            if math.isfinite(timing.high) or timing.low > 0:
+                lines.append(f"  {timing}")
+            lines.extend(f"  {rate}" for rate in timing.rates)
         return "\n".join(lines)

@@ -28,6 +28,5 @@ CONSTRUCTS = (
     _pending_action("change_space_gap", Parameter("target", "length", positional=True)),
     _pending_action("change_time_gap", Parameter("target", "time", positional=True)),
     _pending_action("assign_speed", Parameter("target", "speed", positional=True)),
-    _pending_modifier(Signature("acceleration", (Parameter("acceleration", "acceleration", positional=True), AT), required=(("acceleration",),), tier=2)),
     _pending_modifier(Signature("lateral", (Parameter("distance", "length", positional=True), Parameter("side_of", "actor"), Parameter("side", "enum:side"), AT), tier=2)),
 )

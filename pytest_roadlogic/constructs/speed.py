@@ -1,4 +1,4 @@
-"""Speed: the ``speed()`` and ``keep_speed()`` modifiers, the ``change_speed()`` and ``keep_speed()`` actions.
+"""Speed: the ``speed()``, ``keep_speed()`` and ``acceleration()`` modifiers, the ``change_speed()`` and ``keep_speed()`` actions.
 
 ``keep_speed`` refers to the speed the phase started with, which a guard cannot see: it becomes one
 variant per 1 m/s band from 0 to 40 m/s (the speed starts within half a band of the band's value
@@ -8,12 +8,14 @@ and stays within a band of it, so it varies by 1.5 m/s at most).
 from __future__ import annotations
 
 from ..automaton.guards import SPEED as SPEED_Q, Bound, Guard, Term
+from ..automaton.model import MeanAcceleration
 from ..automaton.phase import Phase, Variant
+from ..frontend import model
 from ..frontend.errors import SourceLocation, error_at
-from ..frontend.library import AT, DURATION, RATE, Parameter, Signature
-from ..frontend.tolerances import SPEED_TOLERANCE
-from ..frontend.units import SPEED
-from .base import Action, AnchoredModifier, Modifier, Use
+from ..frontend.library import AT, DURATION, RATE, Binding, Parameter, Signature
+from ..frontend.tolerances import ACCELERATION_TOLERANCE, SPEED_TOLERANCE
+from ..frontend.units import ACCELERATION, SPEED
+from .base import Action, AnchoredModifier, CheckContext, Modifier, Use
 
 KEEP_SPEED_CENTRES = tuple(float(v) for v in range(0, 41))
 KEEP_SPEED_BAND = 1.0
@@ -88,4 +90,30 @@ class ChangeSpeed(Action):
         phase.add(end=Bound(Term(SPEED_Q, use.actor), max(0.0, low), high, use.location))
 
 
-CONSTRUCTS = (Speed(), KeepSpeedModifier(), KeepSpeedAction(), ChangeSpeed())
+class Acceleration(Modifier):
+    """``acceleration([a..b])``: the actor's mean acceleration over the phase,
+    (v(end) - v(start)) / duration, lies in the range (``MeanAcceleration`` says why the mean).
+    A range held over the phase is a bound, not a sampled parameter."""
+
+    signature = Signature(
+        "acceleration", (Parameter("acceleration", "acceleration", positional=True), AT),
+        required=(("acceleration",),), description="the mean acceleration over the phase",
+    )
+
+    def check(self, binding: Binding, context: CheckContext) -> None:
+        at = binding["at"]
+        if at is not None and isinstance(at.value, model.Name) and at.value.name in ("start", "end"):
+            context.error(at.location, f"not supported: acceleration at: {at.value.name} (the acceleration of one instant)",
+                          "drop at: the phase's mean acceleration is what this tool plans and checks")
+
+    def held_throughout(self, binding: Binding) -> bool:
+        return True
+
+    def translate(self, use: Use, phase: Phase) -> None:
+        low, high = use.range("acceleration", ACCELERATION, "an acceleration such as -3mpsps or [-6..-3]mpsps")
+        if low == high:
+            low, high = low - ACCELERATION_TOLERANCE, high + ACCELERATION_TOLERANCE
+        phase.rates.append(MeanAcceleration(use.actor, low, high, source=use.location))
+
+
+CONSTRUCTS = (Speed(), KeepSpeedModifier(), KeepSpeedAction(), ChangeSpeed(), Acceleration())

@@ -9,6 +9,8 @@ SPEED_TOLERANCE = 0.5
 POSITION_TOLERANCE = 1.0
 # a single time headway as value +- 0.2 s (two tenths of the simulation's step)
 HEADWAY_TOLERANCE = 0.2
+# a single mean acceleration as value +- 0.5 m/s^2 (a speed tolerance per second of phase)
+ACCELERATION_TOLERANCE = 0.5
 # a single duration as value +- 0.5 s (the planner's time step is 1 s)
 DURATION_TOLERANCE = 0.5
 # what "standing still" means for a trace's speed, in m/s

@@ -28,7 +28,9 @@ _DIMENSIONS = {v: k for k, v in _EXPONENTS.items()}
 
 
 def describe(dimension: str | None) -> str:
-    return f"a {dimension}" if dimension is not None else "a plain number"
+    if dimension is None:
+        return "a plain number"
+    return f"{'an' if dimension[:1] in 'aeiou' else 'a'} {dimension}"
 
 
 @dataclass(frozen=True)

@@ -113,6 +113,10 @@ def monitor(automaton: SymbolicAutomaton, trace: Trace) -> Verdict:
     guard_margin = {t.id: t.guard.robustness_series(trace.actors).tolist() for t in automaton.transitions}
     invariant_margin = {q: automaton.location(q).invariant.robustness_series(trace.actors).tolist() for q in invariant_locations}
     progress = {a: (np.diff(trace.actors[a]["x"]) > 0).tolist() for a in trace.names}
+    speeds = {a: trace.actors[a]["speed"].tolist() for a in trace.names}
+    # the mean acceleration that came closest to its range where all else held, for the report:
+    # (margin, sample, location, rate)
+    rate_miss: tuple[float, int, int, object] | None = None
     # A run's state in a location: the samples at which its open timed phases started (empty when
     # the scenario has no durations). states[q]: that key -> (smallest robustness so far, run).
     Key = tuple  # sorted ((phase, start sample), ...)
@@ -144,10 +148,12 @@ def monitor(automaton: SymbolicAutomaton, trace: Trace) -> Verdict:
                 # each key's best value before the guard, per key after the step
                 advanced: dict[Key, tuple[float, tuple]] = {}
                 for key, (value, run) in surviving[q].items():
-                    stepped = _advance(key, starts, ends, k, times, timings)
+                    stepped = _advance(key, starts, ends, k, times, timings, speeds)
                     if stepped is None:
                         continue
-                    next_key, timing_margin = stepped
+                    next_key, timing_margin, missed = stepped
+                    if missed is not None and value >= 0 and (rate_miss is None or missed[0] > rate_miss[0]):
+                        rate_miss = (missed[0], k, q, missed[1])
                     candidate = min(value, timing_margin)
                     if next_key not in advanced or candidate > advanced[next_key][0]:
                         advanced[next_key] = (candidate, run)
@@ -175,26 +181,58 @@ def monitor(automaton: SymbolicAutomaton, trace: Trace) -> Verdict:
     miss = None
     if best_final < 0:
         miss = _closest_miss(automaton, furthest, first_met[furthest] or 0, trace.snapshots(), times)
+        if rate_miss is not None and (miss is None or miss.robustness >= 0):
+            miss = _rate_miss(automaton, rate_miss, speeds, times)
     return Verdict(accepted, float(best_final), automaton.location(furthest).name, best_run, miss, list(trace.incidents))
 
 
-def _advance(key: tuple, starts: tuple, ends: tuple, k: int, times, timings) -> tuple[tuple, float] | None:
+def _advance(key: tuple, starts: tuple, ends: tuple, k: int, times, timings, speeds) -> tuple[tuple, float, tuple | None] | None:
     """The timed-phase state after a transition that starts the timed phases ``starts`` and ends
-    ``ends`` at sample ``k``, and the smallest margin (s) of the durations it ends; None when a
-    duration is broken (that is no run, like a missed progress)."""
+    ``ends`` at sample ``k``; the smallest margin of the durations (s) and mean accelerations
+    (m/s^2) it ends; and the worst mean acceleration it misses, (margin, rate), if any. None when
+    a duration is broken (that is no run, like a missed progress); a missed mean acceleration is
+    a negative margin, as a missed guard is."""
     if not starts and not ends:
-        return key, math.inf
+        return key, math.inf, None
     started = dict(key)
     margin = math.inf
+    missed = None
     for phase in starts:
         started[phase] = k
     for phase in ends:
         timing = timings[phase]
-        seconds = times[k] - times[started.pop(phase, k)]
+        begun = started.pop(phase, k)
+        seconds = times[k] - times[begun]
         if not timing.admits(seconds):
             return None
-        margin = min(margin, seconds - timing.low, timing.high - seconds)
-    return tuple(sorted(started.items())), margin
+        if math.isfinite(timing.high):
+            margin = min(margin, seconds - timing.low, timing.high - seconds)
+        for rate in timing.rates:
+            if seconds <= 0:
+                return None
+            rate_margin = rate.margin(speeds[rate.actor][begun], speeds[rate.actor][k], seconds)
+            margin = min(margin, rate_margin)
+            if rate_margin < 0 and (missed is None or rate_margin < missed[0]):
+                missed = (rate_margin, (rate, begun))
+    return tuple(sorted(started.items())), margin, missed
+
+
+def _rate_miss(automaton: SymbolicAutomaton, found: tuple, speeds, times) -> GuardMiss:
+    """A mean acceleration that no run met, where it came closest (all else met up to there)."""
+    margin, k, location, (rate, begun) = found
+    seconds = times[k] - times[begun]
+    mean = (speeds[rate.actor][k] - speeds[rate.actor][begun]) / seconds
+    return GuardMiss(
+        source=automaton.location(location).name,
+        target=f"the end of {rate.phase}" if rate.phase else "the phase's end",
+        guard=str(rate),
+        events=f"{times[begun]:.1f} s to {times[k]:.1f} s",
+        time=float(times[k]),
+        robustness=float(margin),
+        values={f"mean a({rate.actor})": float(mean), f"v({rate.actor}) at start": float(speeds[rate.actor][begun]),
+                f"v({rate.actor}) at end": float(speeds[rate.actor][k])},
+        locations=(rate.source,) if rate.source is not None else (),
+    )
 
 
 def _closest_miss(automaton: SymbolicAutomaton, location: int, entered: int, snapshots, times) -> GuardMiss | None:

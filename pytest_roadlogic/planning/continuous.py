@@ -25,7 +25,7 @@ from ..automaton.guards import HEADWAY, LANE, POSITION, SPEED, And, Bound, Guard
 from ..automaton.model import SymbolicAutomaton
 from .linear import THEORY, LazyLinearTheory
 from .errors import HorizonTooShort, NoPlanError, PlanningTimeout
-from .instance import _atom, _bound_rule, _inset, _outside_rules, guard_nodes, junction_rules, with_automaton
+from .instance import _atom, _bound_rule, _inset, _outside_rules, guard_nodes, junction_rules, relaxable_constraints, with_automaton
 from .plan import Plan, PlanState
 from .solver import ASP_DIR, Planner, check_satisfiable
 
@@ -56,6 +56,10 @@ class ContinuousSettings:
     position_margin: float = 1.5  # m planned inside each side of a position range, when it fits
     speed_margin: float = 0.5  # m/s likewise for speeds
     headway_margin: float = 0.2  # s likewise for time headways
+    # m/s^2 likewise for a phase's mean acceleration: the motion planner starts and ends a change
+    # of speed late by up to a second (see _speed_lead), which moves the speeds at a 3 s phase's
+    # ends by a few tenths of a m/s
+    acceleration_margin: float = 0.4
     max_horizon: int = 120  # steps
     time_limit: float = 60.0  # seconds for one solve, all horizons together
     # how the linear constraints are kept: "lazy" checks each complete choice with HiGHS and learns
@@ -83,7 +87,7 @@ class ContinuousSettings:
 
     def margins(self) -> dict[str | None, float]:
         """How far inside a range's edges the plan keeps, per physical dimension."""
-        return {"length": self.position_margin, "speed": self.speed_margin, "headway": self.headway_margin}
+        return {"length": self.position_margin, "speed": self.speed_margin, "headway": self.headway_margin, "acceleration": self.acceleration_margin}
 
     def summary(self, lanes: int) -> str:
         """The vehicle limits and bounds on a road of ``lanes`` lanes, for messages that blame them."""
@@ -130,7 +134,35 @@ def build_continuous_instance(automaton: SymbolicAutomaton, settings: Continuous
         f"lane_change_gap({s.lane_change_gap}).",
         "",
     ]
-    return with_automaton(base, automaton, s.dt, relaxable, lambda node, guard, numbering, switch: _guard_rules(node, guard, numbering, s, switch))
+    base_program, state_program = with_automaton(base, automaton, s.dt, relaxable, lambda node, guard, numbering, switch: _guard_rules(node, guard, numbering, s, switch))
+    relax = {c.source: k for k, c in enumerate(relaxable_constraints(automaton))} if relaxable else {}
+    return base_program, state_program + "\n".join(_rate_rules(automaton, s, relax)) + "\n"
+
+
+def _rate_rules(automaton: SymbolicAutomaton, settings: ContinuousSettings, relax: dict) -> list[str]:
+    """A mean acceleration on a timed phase P as linear rows over the speeds at its two ends, one
+    per length D the phase may have (a known length makes the mean linear):
+      &sum{ v(V,t); -1*v(V,T) } >= lo*D*dt :- finish(P,t), begin(P,T), T = t-D.   (<= hi*D*dt likewise)
+    with lo and hi inset by ``acceleration_margin``. The lengths run up to the phase's upper bound,
+    or to the horizon limit for a phase with none."""
+    rules = []
+    for phase, timing in sorted(automaton.timings.items()):
+        if not timing.rates:
+            continue
+        shortest = max(1, math.ceil(timing.low / settings.dt - 1e-9))
+        longest = min(settings.max_horizon, math.floor(timing.high / settings.dt + 1e-9)) if math.isfinite(timing.high) else settings.max_horizon
+        for rate in timing.rates:
+            rules.append(f"% {rate}")
+            switch = f", not relaxed({relax[rate.source]})" if rate.source in relax else ""
+            low, high = _inset(rate.low, rate.high, settings.acceleration_margin)
+            actor = _atom(rate.actor)
+            for length in range(shortest, longest + 1):
+                seconds = length * settings.dt
+                body = f":- finish({phase},t), begin({phase},T), T = t-{length}{switch}."
+                for value, operator in ((low * seconds, ">="), (high * seconds, "<=")):
+                    if math.isfinite(value):
+                        rules.append(f"&sum{{ v({actor},t); -1*v({actor},T) }} {operator} {_number(value)} {body}")
+    return rules
 
 
 def start_preferences(automaton: SymbolicAutomaton, settings: ContinuousSettings, draw: random.Random) -> str:

@@ -174,6 +174,9 @@ def relaxable_constraints(automaton: SymbolicAutomaton) -> list:
     for timing in automaton.timings.values():
         if timing.source is not None:
             found.setdefault(timing.source, timing)
+        for rate in timing.rates:
+            if rate.source is not None:
+                found.setdefault(rate.source, rate)
     return list(found.values())
 
 
@@ -183,6 +186,10 @@ def build_instance(automaton: SymbolicAutomaton, settings: PlanningSettings, rel
     With ``relaxable``, each constraint of ``relaxable_constraints`` (numbered in that order) is
     switched off by an external ``relaxed(K)``: a diagnosis asks which of them cannot hold together.
     """
+    for timing in automaton.timings.values():
+        for rate in timing.rates:
+            raise error_at(rate.source, "the acceleration modifier needs the continuous planner; the grid encoding's accelerations are -2, 0 and +2 cells per step^2",
+                           hint="drop --roadlogic-encoding grid / --encoding grid (continuous is the default)")
     speeds = settings.speeds()
     if not speeds or speeds[0] < 1:
         raise ValueError("the speed bounds leave no positive speed on the grid")
@@ -272,7 +279,7 @@ def automaton_facts(automaton: SymbolicAutomaton, dt: float, relax: dict | None 
     facts.extend(f"#external relaxed({k})." for k in relax.values())
     for phase, timing in automaton.timings.items():
         low = math.ceil(timing.low / dt - 1e-9)
-        high = math.floor(timing.high / dt + 1e-9)
+        high = math.floor(timing.high / dt + 1e-9) if math.isfinite(timing.high) else "#sup"
         condition = f" :- not relaxed({relax[timing.source]})" if timing.source in relax else ""
         facts.append(f"timing({phase},{low},{high}){condition}.  % {timing}")
     return facts
