@@ -56,7 +56,7 @@ def test_a_byte_order_mark_is_ignored():
 
 @pytest.mark.parametrize(
     "literal, value",
-    [("42", 42.0), ("0x1F", 31.0), ("1.5", 1.5), ("2e3", 2000.0), ("-4", -4.0), ("inf", math.inf)],
+    [("42", 42.0), ("0x1F", 31.0), ("1.5", 1.5), ("2e3", 2000.0), ("-4", -4.0), ("inf", math.inf), (".5", 0.5), (".1e+7", 1e6)],
 )
 def test_number_literals(literal, value):
     osc = parse_text(f"scenario s:\n    x: float = {literal}\n")
@@ -221,6 +221,48 @@ def test_extend_adds_members_to_a_scenario():
     text = PAIR + "extend s:\n    gap: length = 5m\n" + uses("gap")
     scenario = checked(text).scenarios[0].scenario
     assert scenario.parameter("gap") is not None and scenario.behavior is not None
+
+
+def test_extend_adds_members_to_an_enum_in_either_spelling():
+    text = "enum color: [red]\nextend color: [green, blue]\nextend color:\n    white\n    black = 9\n" + PAIR + "    tint: color\n    do parallel:\n        a.drive()\n        b.drive()\n"
+    assert domains(text)["tint"] == "red | green | blue | white | black"
+
+
+def test_extending_an_unknown_enum_is_a_located_error():
+    result = check_text("extend colour: [green]\n" + PAIR + "    do a.drive()\n", "t.osc")
+    assert "t.osc:1:8: error: extend of an unknown enum 'colour'" in result.report()
+
+
+# The standard's syntax that the tool reads and does not execute: each parses, and the checker
+# refuses it by name at its place (never a syntax error).
+STANDARD_SYNTAX_REFUSED = [
+    ("    var seen: speed\n", "not supported: var", 4),
+    ("    var at_start: speed = sample(a.speed, @go)\n    event go\n", "not supported: var", 4),
+    ("    on @go as g if a.speed > 3mps:\n        emit go\n    event go\n", "not supported: on", 4),
+    ("    def f(x: speed) -> speed is only external lib.f(x)\n", "not supported: external methods", 4),
+    ("    x: float = .1e+7\n    keep(x > 0 ? 1 : 2)\n", "not supported: a conditional expression", 5),
+]
+
+
+@pytest.mark.parametrize("members, message, line", STANDARD_SYNTAX_REFUSED, ids=[m for _, m, _ in STANDARD_SYNTAX_REFUSED])
+def test_the_standards_syntax_parses_and_what_the_tool_does_not_execute_is_refused_by_name(members, message, line):
+    result = check_text(PAIR + members + "    do parallel:\n        a.drive()\n        b.drive()\n", "t.osc")
+    report = result.report()
+    assert "syntax error" not in report and f"t.osc:{line}:" in report and message in report, report
+
+
+def test_a_type_test_in_a_wait_is_refused_by_name():
+    result = check_text(PAIR + "    do serial:\n        a.drive(duration: 2s)\n        wait a.is(car)\n", "t.osc")
+    assert "t.osc:6:" in result.report() and "not supported: a type test x.is(T)" in result.report(), result.report()
+
+
+def test_keywords_name_fields_where_the_standard_allows_it():
+    checked("struct origin:\n    namespace: string\n    sample: int\n    expression: float\n" + PAIR + "    do parallel:\n        a.drive()\n        b.drive()\n")
+
+
+def test_a_method_is_an_expression_with_or_without_the_keyword():
+    osc = parse_text("scenario s:\n    def twice() -> length is expression 2 * 3m\n    def once() -> length is only 3m\n")
+    assert [m.body.value if hasattr(m.body, "value") else m.body.operator for m in osc.scenarios[0].methods] == ["*", 3.0]
 
 
 # ---------------------------------------------------------------- several errors, imports

@@ -191,6 +191,9 @@ class _Checker:
 
     def _declarations(self, osc: model.OscFile) -> None:
         for enum in osc.enums:
+            if enum.extends:
+                self._extend_enum(enum)
+                continue
             if enum.name in self.enums or enum.name in self.types:
                 self.error(enum.location, f"type {enum.name!r} is already declared", "rename the enum")
                 continue
@@ -205,6 +208,19 @@ class _Checker:
                 self.error(declared.location, f"type {declared.name!r} is already declared", "rename the declaration")
                 continue
             self.types[declared.name] = declared
+
+    def _extend_enum(self, extension: model.EnumDeclaration) -> None:
+        """``extend e: [a, b]``: members added to an enum this file or an import declares."""
+        if extension.name not in self.enums:
+            self.error(extension.location, f"extend of an unknown enum {extension.name!r}", "declare the enum first: enum name: [a, b]")
+            return
+        members = list(self.enums[extension.name])
+        for member in extension.members:
+            if member in members:
+                self.error(extension.location, f"enum {extension.name!r} already has {member!r}")
+            else:
+                members.append(member)
+        self.enums[extension.name] = tuple(members)
 
     def _modifier_declarations(self, osc: model.OscFile) -> None:
         """A library may declare the modifiers it uses (``modifier Path.set_map``); one the tool

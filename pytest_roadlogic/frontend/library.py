@@ -150,3 +150,5 @@ ROAD_MODIFIERS: dict[str, Signature] = _signatures(
 # Functions usable in expressions, and those refused by name (tier 3).
 FUNCTIONS = ("elapsed", "range")
 UNSUPPORTED_FUNCTIONS = ("rise", "fall", "every", "sample", "random")
+# expressions the grammar reads and nothing evaluates, by the function name the parser gives them
+UNSUPPORTED_EXPRESSIONS = {"is": "a type test x.is(T)", "as": "a cast x.as(T)", "[]": "list element access x[i]", "?:": "a conditional expression c ? a : b"}

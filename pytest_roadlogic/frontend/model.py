@@ -383,6 +383,7 @@ class EnumDeclaration:
     name: str
     members: tuple[str, ...]
     location: SourceLocation
+    extends: bool = False  # `extend e: [...]`: members added to an enum declared elsewhere
 
 
 @dataclass(frozen=True)

@@ -177,8 +177,13 @@ class _Builder:
                     globals_.extend(self.fields(decl.fieldDeclaration()))
                 elif isinstance(decl, P.ExtendDeclarationContext):
                     target = decl.behaviorName()
-                    body = self.scenario_body(self.name(target.name), None, self.loc(target.name), decl.scenarioMember(), "scenario")
-                    extensions.append(model.Extension(body.name, body, self.loc(decl)))
+                    members = [m.scenarioMember() for m in decl.extensionMember() if m.scenarioMember() is not None]
+                    added = [*decl.enumMember(), *(m.enumMember() for m in decl.extensionMember() if m.enumMember() is not None)]
+                    if added:  # extend an enum
+                        enums.append(model.EnumDeclaration(self.name(target.name), tuple(self.name(m.identifier()) for m in added), self.loc(target.name), extends=True))
+                    if members or not added:
+                        body = self.scenario_body(self.name(target.name), None, self.loc(target.name), members, "scenario")
+                        extensions.append(model.Extension(body.name, body, self.loc(decl)))
                 elif isinstance(decl, P.ModifierDeclarationContext) and not decl.scenarioMember() and decl.OF() is None:
                     target = decl.behaviorName()
                     owner = self.name(target.actorType) if target.actorType is not None else None
@@ -438,6 +443,13 @@ class _Builder:
                 return model.Name(f"{base.name}.{self.name(ctx.identifier())}", base.location)
             self.error(location, "a field can only be read from a name, e.g. it.speed or v1.length")
             return base
+        if isinstance(ctx, P.TypeTestContext):
+            construct = "is" if ctx.op.type == P.IS else "as"
+            return model.Call(construct, (model.Argument(None, self.expression(ctx.expression()), location),), location)
+        if isinstance(ctx, P.ElementAccessContext):
+            return model.Call("[]", tuple(model.Argument(None, self.expression(e), location) for e in ctx.expression()), location)
+        if isinstance(ctx, P.ConditionalContext):
+            return model.Call("?:", tuple(model.Argument(None, self.expression(e), location) for e in ctx.expression()), location)
         if isinstance(ctx, P.CallContext):
             function = self.expression(ctx.expression())
             arguments = self.arguments(ctx.argumentList())

@@ -14,6 +14,7 @@ from typing import Mapping, Union
 
 from . import model
 from .errors import SourceLocation, error_at
+from .library import UNSUPPORTED_EXPRESSIONS
 from .units import ACCELERATION, LENGTH, SPEED, TIME
 
 # dimension -> exponents of (metre, second)
@@ -84,6 +85,8 @@ def evaluate(expression: model.Expression, env: Mapping[str, object]) -> Value:
         if expression.enum is None and expression.name in env:
             return env[expression.name]
         return expression
+    if isinstance(expression, model.Call) and expression.function in UNSUPPORTED_EXPRESSIONS:
+        raise EvaluationError(expression.location, f"not supported: {UNSUPPORTED_EXPRESSIONS[expression.function]}", "write the value or condition it stands for")
     if isinstance(expression, (model.Literal, model.Call, model.ListValue)):
         if isinstance(expression, model.Literal) and isinstance(expression.value, bool):
             return expression.value

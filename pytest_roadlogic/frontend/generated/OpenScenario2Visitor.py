@@ -84,6 +84,11 @@ class OpenScenario2Visitor(ParseTreeVisitor):
         return self.visitChildren(ctx)
 
 
+    # Visit a parse tree produced by OpenScenario2Parser#extensionMember.
+    def visitExtensionMember(self, ctx:OpenScenario2Parser.ExtensionMemberContext):
+        return self.visitChildren(ctx)
+
+
     # Visit a parse tree produced by OpenScenario2Parser#modifierDeclaration.
     def visitModifierDeclaration(self, ctx:OpenScenario2Parser.ModifierDeclarationContext):
         return self.visitChildren(ctx)
@@ -121,6 +126,11 @@ class OpenScenario2Visitor(ParseTreeVisitor):
 
     # Visit a parse tree produced by OpenScenario2Parser#variableDeclaration.
     def visitVariableDeclaration(self, ctx:OpenScenario2Parser.VariableDeclarationContext):
+        return self.visitChildren(ctx)
+
+
+    # Visit a parse tree produced by OpenScenario2Parser#sampleExpression.
+    def visitSampleExpression(self, ctx:OpenScenario2Parser.SampleExpressionContext):
         return self.visitChildren(ctx)
 
 
@@ -239,11 +249,6 @@ class OpenScenario2Visitor(ParseTreeVisitor):
         return self.visitChildren(ctx)
 
 
-    # Visit a parse tree produced by OpenScenario2Parser#call.
-    def visitCall(self, ctx:OpenScenario2Parser.CallContext):
-        return self.visitChildren(ctx)
-
-
     # Visit a parse tree produced by OpenScenario2Parser#memberAccess.
     def visitMemberAccess(self, ctx:OpenScenario2Parser.MemberAccessContext):
         return self.visitChildren(ctx)
@@ -254,8 +259,13 @@ class OpenScenario2Visitor(ParseTreeVisitor):
         return self.visitChildren(ctx)
 
 
-    # Visit a parse tree produced by OpenScenario2Parser#implication.
-    def visitImplication(self, ctx:OpenScenario2Parser.ImplicationContext):
+    # Visit a parse tree produced by OpenScenario2Parser#elementAccess.
+    def visitElementAccess(self, ctx:OpenScenario2Parser.ElementAccessContext):
+        return self.visitChildren(ctx)
+
+
+    # Visit a parse tree produced by OpenScenario2Parser#conditional.
+    def visitConditional(self, ctx:OpenScenario2Parser.ConditionalContext):
         return self.visitChildren(ctx)
 
 
@@ -274,11 +284,6 @@ class OpenScenario2Visitor(ParseTreeVisitor):
         return self.visitChildren(ctx)
 
 
-    # Visit a parse tree produced by OpenScenario2Parser#logicalOr.
-    def visitLogicalOr(self, ctx:OpenScenario2Parser.LogicalOrContext):
-        return self.visitChildren(ctx)
-
-
     # Visit a parse tree produced by OpenScenario2Parser#additive.
     def visitAdditive(self, ctx:OpenScenario2Parser.AdditiveContext):
         return self.visitChildren(ctx)
@@ -286,6 +291,26 @@ class OpenScenario2Visitor(ParseTreeVisitor):
 
     # Visit a parse tree produced by OpenScenario2Parser#relation.
     def visitRelation(self, ctx:OpenScenario2Parser.RelationContext):
+        return self.visitChildren(ctx)
+
+
+    # Visit a parse tree produced by OpenScenario2Parser#call.
+    def visitCall(self, ctx:OpenScenario2Parser.CallContext):
+        return self.visitChildren(ctx)
+
+
+    # Visit a parse tree produced by OpenScenario2Parser#implication.
+    def visitImplication(self, ctx:OpenScenario2Parser.ImplicationContext):
+        return self.visitChildren(ctx)
+
+
+    # Visit a parse tree produced by OpenScenario2Parser#logicalOr.
+    def visitLogicalOr(self, ctx:OpenScenario2Parser.LogicalOrContext):
+        return self.visitChildren(ctx)
+
+
+    # Visit a parse tree produced by OpenScenario2Parser#typeTest.
+    def visitTypeTest(self, ctx:OpenScenario2Parser.TypeTestContext):
         return self.visitChildren(ctx)
 
 

@@ -1,9 +1,10 @@
 // Grammar of the ASAM OpenSCENARIO DSL that pytest-roadlogic reads.
 //
 // Written for this project from the language description in the standard (section 7.2) and
-// docs/os2-subset.md. It covers the syntax of tiers 1, 2 and 3 of that document: tier-3
-// constructs (on, call, cover/record, namespace/export, var, external methods, user modifiers)
-// parse here so that the checker can refuse them by name and place instead of a syntax error.
+// docs/os2-subset.md. It covers the syntax of ASAM OpenSCENARIO DSL 2.x: constructs the tool does
+// not execute (on, call, cover/record, namespace/export, var and sample, external methods, type
+// tests, user modifiers) parse here so that the checker can refuse them by name and place
+// instead of a syntax error. Not covered: the 2.1 namespace qualifier `ns::name`.
 //
 // The layout is Python-like: the lexer emits NEWLINE tokens, and
 // pytest_roadlogic.frontend.lexer.IndentingLexer turns leading whitespace into the INDENT and
@@ -67,6 +68,7 @@ structDeclaration
 
 structMember
     : fieldDeclaration
+    | variableDeclaration
     | keepConstraint
     | removeDefault
     | eventDeclaration
@@ -96,8 +98,16 @@ globalDeclaration
     : GLOBAL fieldDeclaration
     ;
 
+// `extend s:` adds members to a scenario, actor or struct; `extend e: [a, b]` (or one member
+// per line) adds members to an enum.
 extendDeclaration
-    : EXTEND behaviorName COLON NEWLINE INDENT scenarioMember+ DEDENT
+    : EXTEND behaviorName COLON NEWLINE INDENT extensionMember+ DEDENT
+    | EXTEND behaviorName COLON LBRACK enumMember (COMMA enumMember)* COMMA? RBRACK NEWLINE
+    ;
+
+extensionMember
+    : scenarioMember
+    | enumMember NEWLINE
     ;
 
 modifierDeclaration
@@ -144,7 +154,12 @@ typeDeclarator
     ;
 
 variableDeclaration
-    : VAR identifier (COMMA identifier)* (COLON typeDeclarator)? (ASSIGN expression)? NEWLINE
+    : VAR identifier (COMMA identifier)* (COLON typeDeclarator)? (ASSIGN (sampleExpression | expression))? NEWLINE
+    ;
+
+// `sample(ego.speed, @overtake.start)`: a value taken when an event happens.
+sampleExpression
+    : SAMPLE LPAREN expression COMMA eventSpecification (COMMA expression)? RPAREN
     ;
 
 keepConstraint
@@ -159,14 +174,16 @@ eventDeclaration
     : EVENT identifier (LPAREN parameterList? RPAREN)? (IS eventSpecification)? NEWLINE
     ;
 
-// `@e`, `@e if cond`, or an expression such as `elapsed(3s)` or a boolean condition.
+// `@e`, `@e as x if cond`, or an expression such as `elapsed(3s)` or a boolean condition.
 eventSpecification
-    : AT_SIGN dottedName (IF expression)?
+    : AT_SIGN dottedName (AS alias=identifier)? (IF expression)?
     | expression
     ;
 
+// `is expression e`, `is undefined`, `is external f()`, each optionally `is only ...`; a bare
+// `is e` (without `expression`) is read too.
 methodDeclaration
-    : DEF identifier LPAREN parameterList? RPAREN (ARROW typeDeclarator)? IS (EXTERNAL? expression | UNDEFINED) NEWLINE
+    : DEF identifier LPAREN parameterList? RPAREN (ARROW typeDeclarator)? IS ONLY? (EXPRESSION expression | UNDEFINED | EXTERNAL expression | expression) NEWLINE
     ;
 
 parameterList
@@ -250,7 +267,9 @@ argument
 
 // Alternatives are listed from the tightest binding to the loosest.
 expression
-    : expression DOT identifier                                   # memberAccess
+    : expression DOT op=(IS | AS) LPAREN typeDeclarator RPAREN    # typeTest
+    | expression DOT identifier                                   # memberAccess
+    | expression LBRACK expression RBRACK                         # elementAccess
     | expression LPAREN argumentList? RPAREN                      # call
     | op=(MINUS | PLUS) expression                                # unary
     | expression op=(STAR | SLASH | PERCENT) expression           # multiplicative
@@ -260,6 +279,7 @@ expression
     | expression AND expression                                   # logicalAnd
     | expression OR expression                                    # logicalOr
     | <assoc=right> expression IMPLIES expression                 # implication
+    | <assoc=right> expression QUESTION expression COLON expression # conditional
     | primary                                                     # primaryExpression
     ;
 
@@ -284,7 +304,8 @@ dottedName
     : identifier (DOT identifier)*
     ;
 
-// Keywords that only start a construct in one place may still name things elsewhere.
+// Keywords that only start a construct in one place may still name things elsewhere, as the
+// standard allows (`namespace: string` in a struct, a method called `sample`).
 identifier
     : Identifier
     | QuotedIdentifier
@@ -298,6 +319,21 @@ identifier
     | UNDEFINED
     | TYPE
     | UNIT
+    | NAMESPACE
+    | USE
+    | EXPORT
+    | GLOBAL
+    | INHERITS
+    | IMPORT
+    | AS
+    | ONLY
+    | EXPRESSION
+    | SAMPLE
+    | ENUM
+    | STRUCT
+    | ACTOR
+    | SCENARIO
+    | EXTEND
     ;
 
 // ---------------------------------------------------------------- lexer
@@ -348,6 +384,10 @@ OR             : 'or' ;
 NOT            : 'not' ;
 TRUE           : 'true' ;
 FALSE          : 'false' ;
+AS             : 'as' ;
+ONLY           : 'only' ;
+EXPRESSION     : 'expression' ;
+SAMPLE         : 'sample' ;
 
 DOUBLEDOT : '..' ;
 DOT       : '.' ;
@@ -363,6 +403,7 @@ LT        : '<' ;
 GT        : '>' ;
 ASSIGN    : '=' ;
 BANG      : '!' ;
+QUESTION  : '?' ;
 AT_SIGN   : '@' ;
 PLUS      : '+' ;
 MINUS     : '-' ;
@@ -428,9 +469,11 @@ fragment Digits
     : [0-9]+
     ;
 
-// Digits are required after the point so that `10..20` lexes as 10, .., 20.
+// Digits are required after the point so that `10..20` lexes as 10, .., 20; `.5` and `.1e+7`
+// (no digit before the point) are numbers too.
 fragment FloatNumber
     : Digits '.' Digits Exponent?
+    | '.' Digits Exponent?
     | Digits Exponent
     ;
 
