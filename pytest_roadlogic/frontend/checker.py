@@ -20,6 +20,7 @@ from typing import TYPE_CHECKING
 from . import library, model
 from .checked import CheckedFile, CheckedScenario
 from .errors import Diagnostic, OscError, SourceLocation
+from .invocation import called_scenarios, expand_calls
 from .parameters import ParameterSpace, parameter_space
 from .parser import parse_file, parse_text
 from .physical import declared_physics, parse_with_declared_units
@@ -135,7 +136,14 @@ class _Checker:
             if extension.target not in self.scenarios and extension.target not in own:
                 self.error(extension.location, f"extend names an unknown scenario {extension.target!r}", self._known("scenarios", [*self.scenarios, *own]))
         seen: dict[str, model.Scenario] = {}
+        callable_ = {**self.scenarios, **{s.name: s for s in main.scenarios}}
+        is_action = lambda name: self.registry.action(name) is not None  # noqa: E731
+        # a scenario another one of this file calls is checked (and run) as part of its callers
+        called = {name for s in main.scenarios for name in called_scenarios(s, callable_, is_action)}
         for scenario in main.scenarios:
+            if scenario.name in called and scenario.name not in seen:
+                seen[scenario.name] = scenario
+                continue
             if scenario.name in seen:
                 first = seen[scenario.name].location
                 self.error(scenario.location, f"scenario {scenario.name!r} is already declared on line {first.line}", "give each scenario its own name")
@@ -147,6 +155,8 @@ class _Checker:
             for extension in extensions:
                 if extension.target == scenario.name:
                     scenario = _extend(scenario, extension.scenario)
+            scenario, problems = expand_calls(scenario, callable_, is_action, lambda f: self._field_kind(f) == "actor")
+            self.diagnostics.extend(problems)
             checked, space, lanes = self._scenario(scenario, globals_)
             scenarios.append(CheckedScenario(checked, space, lanes, self.registry, self.sources))
         self.diagnostics = list(dict.fromkeys(self.diagnostics))
