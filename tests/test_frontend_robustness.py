@@ -17,9 +17,34 @@ from tests.conftest import ROOT
 SEEDS = sorted((ROOT / "scenarios").glob("*.osc")) + [
     ROOT / "tests" / "corpus" / name
     for name in ("04_cut_in_dut.osc", "06_defaults.osc", "27_wait.osc", "31_line_joining.osc", "34_literals.osc",
-                 "35_expressions.osc", "39_events.osc", "40_actor_struct_decl.osc", "43_one_of_duration_overlap.osc")
-]
-SOURCES = [path.read_text() for path in SEEDS]
+                 "35_expressions.osc", "39_events.osc", "40_actor_struct_decl.osc", "43_one_of_duration_overlap.osc",
+                 # issue 18's corpus: conditions, events, CARLA-style declarations, acceleration, calls
+                 "47_conditions.osc", "48_emit_wait.osc", "carla_types.osc", "50_acceleration.osc", "51_scenario_call.osc",
+                 "54_headway_then_brake.osc", "55_event_after_cut_in.osc", "57_paper_listing_overtake.osc")
+] + sorted((ROOT / "scenarios" / "realistic").glob("*.osc"))
+# the standard's syntax the tool reads and refuses by name (var, sample, on, methods, type tests, ...)
+STANDARD_SYNTAX = """import osc.standard
+enum color: [red, green]
+extend color: [blue]
+struct info:
+    namespace: string
+    var seen: speed
+actor my_car inherits vehicle:
+    def twice(x: speed) -> speed is expression 2 * x
+    def ext(x: int) -> int is only external cpp.function()
+scenario s:
+    ego: car
+    event near is (ego.speed > 20mps)
+    x: float = .1e+7
+    var y: speed = sample(ego.speed, @near)
+    on @near as n if ego.speed > 3mps:
+        emit near
+    do serial:
+        ego.drive(duration: 3s) with:
+            until @near as e
+        wait ego.is(car) or (x > 1 ? true : false)
+"""
+SOURCES = [path.read_text() for path in SEEDS] + [STANDARD_SYNTAX]
 
 
 @st.composite

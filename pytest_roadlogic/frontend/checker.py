@@ -155,7 +155,7 @@ class _Checker:
             for extension in extensions:
                 if extension.target == scenario.name:
                     scenario = _extend(scenario, extension.scenario)
-            scenario, problems = expand_calls(scenario, callable_, is_action, lambda f: self._field_kind(f) == "actor")
+            scenario, problems = expand_calls(scenario, callable_, is_action, lambda f: self._field_kind(self._aliased(f)) == "actor")
             self.diagnostics.extend(problems)
             checked, space, lanes = self._scenario(scenario, globals_)
             scenarios.append(CheckedScenario(checked, space, lanes, self.registry, self.sources))
@@ -243,6 +243,12 @@ class _Checker:
             if not known:
                 self.error(declared.location, f"not supported: the declared modifier {declared.name!r}", "the tool plans only the modifiers it provides; " + self._known("modifiers", [*self.registry.modifiers, *library.ROAD_MODIFIERS]))
 
+    def _aliased(self, item: model.Field) -> model.Field:
+        """The field with a declared alias of a physical type (``velocity``) read as the built-in one."""
+        if item.type not in library.PHYSICAL_TYPES and self.physical_types.get(item.type) in _BUILTIN_PHYSICAL:
+            return replace(item, type=_BUILTIN_PHYSICAL[self.physical_types[item.type]])
+        return item
+
     def _unsupported(self, item: model.Unsupported) -> None:
         self.error(item.location, f"not supported: {item.construct}", item.hint)
 
@@ -264,8 +270,7 @@ class _Checker:
         roads: list[str] = []
         declared: dict[str, SourceLocation] = {}
         for item in (*globals_, *scenario.fields):
-            if item.type not in library.PHYSICAL_TYPES and self.physical_types.get(item.type) in _BUILTIN_PHYSICAL:
-                item = replace(item, type=_BUILTIN_PHYSICAL[self.physical_types[item.type]])  # a declared alias (velocity)
+            item = self._aliased(item)
             if item.name in declared:
                 self.error(item.location, f"{item.name!r} is already declared on line {declared[item.name].line}", "give each field its own name")
                 continue
