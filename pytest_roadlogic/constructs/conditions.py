@@ -31,7 +31,7 @@ from typing import Callable
 from ..automaton.guards import HEADWAY, POSITION, SPEED as SPEED_Q, Bound, Guard, Not, Or, Term, conjunction
 from ..frontend import model
 from ..frontend.errors import error_at
-from ..frontend.library import UNSUPPORTED_EXPRESSIONS, UNSUPPORTED_FUNCTIONS
+from ..frontend.library import refused_call
 from ..frontend.tolerances import SPEED_TOLERANCE
 from ..frontend.units import LENGTH, SPEED, TIME
 from ..frontend.values import EvaluationError, argument_interval, describe
@@ -91,10 +91,9 @@ def condition_guard(condition: model.Expression, env: dict, actors: Collection[s
         if operator == "==" and low == high and observable.dimension == SPEED:
             low, high = low - SPEED_TOLERANCE, high + SPEED_TOLERANCE
         return Bound(term, low, high, condition.location)
-    if isinstance(condition, model.Call) and condition.function in UNSUPPORTED_EXPRESSIONS:
-        raise error_at(condition.location, f"not supported: {UNSUPPORTED_EXPRESSIONS[condition.function]}", "compare an observable with a value, or wait for an event")
-    if isinstance(condition, model.Call) and condition.function in UNSUPPORTED_FUNCTIONS:
-        raise error_at(condition.location, f"not supported: {condition.function}()", "compare an observable with a value, or wait for an event")
+    refused = refused_call(condition)
+    if refused is not None:
+        raise error_at(condition.location, f"not supported: {refused}", "compare an observable with a value, or wait for an event")
     if isinstance(condition, model.Call) and condition.function == "elapsed":
         raise error_at(condition.location, "elapsed() is the whole condition of a wait", "write wait elapsed(3s) as its own member of a serial")
     location = getattr(condition, "location", None)

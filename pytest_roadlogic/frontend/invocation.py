@@ -42,14 +42,14 @@ class Expansion:
         self.diagnostics.append(Diagnostic(location, message, hint))
 
 
+def _is_call(node, callable_: Mapping[str, model.Scenario], is_action: Callable[[str], bool]) -> bool:
+    """Whether a behavior node invokes a user scenario (an action of the registry's name is not one)."""
+    return isinstance(node, model.Invocation) and node.action in callable_ and not is_action(node.action)
+
+
 def called_scenarios(scenario: model.Scenario, callable_: Mapping[str, model.Scenario], is_action: Callable[[str], bool]) -> set[str]:
     """The names of the user scenarios ``scenario``'s behavior calls directly."""
-    return {
-        node.action
-        for behavior in scenario.behaviors
-        for node in model.walk(behavior)
-        if isinstance(node, model.Invocation) and node.action in callable_ and not is_action(node.action)
-    }
+    return {node.action for behavior in scenario.behaviors for node in model.walk(behavior) if _is_call(node, callable_, is_action)}
 
 
 def expand_calls(
@@ -83,7 +83,7 @@ def _expand(behavior, callable_, is_action, is_actor, expansion: Expansion, name
     if isinstance(behavior, model.Composition):
         children = tuple(_expand(c, callable_, is_action, is_actor, expansion, names, stack) for c in behavior.children)
         return dataclasses.replace(behavior, children=children)
-    if not (isinstance(behavior, model.Invocation) and behavior.action in callable_ and not is_action(behavior.action)):
+    if not _is_call(behavior, callable_, is_action):
         return behavior
     callee = callable_[behavior.action]
     if behavior.action in stack or len(stack) > MAX_DEPTH:
@@ -188,9 +188,7 @@ def _substitute(node, substitution: Mapping[str, model.Expression], owner: str |
 
 def _relabel(behavior, prefix: str):
     """The callee's labels as ``prefix.label``: a scenario called twice keeps its phases apart."""
-    label = f"{prefix}.{behavior.label}" if getattr(behavior, "label", None) else getattr(behavior, "label", None)
+    label = f"{prefix}.{behavior.label}" if behavior.label else None
     if isinstance(behavior, model.Composition):
         return dataclasses.replace(behavior, label=label, children=tuple(_relabel(c, prefix) for c in behavior.children))
-    if hasattr(behavior, "label"):
-        return dataclasses.replace(behavior, label=label)
-    return behavior
+    return dataclasses.replace(behavior, label=label)

@@ -152,3 +152,14 @@ FUNCTIONS = ("elapsed", "range")
 UNSUPPORTED_FUNCTIONS = ("rise", "fall", "every", "sample", "random")
 # expressions the grammar reads and nothing evaluates, by the function name the parser gives them
 UNSUPPORTED_EXPRESSIONS = {"is": "a type test x.is(T)", "as": "a cast x.as(T)", "[]": "list element access x[i]", "?:": "a conditional expression c ? a : b"}
+
+
+def refused_call(expression: object) -> str | None:
+    """What a call the tool reads but never evaluates is called in ``not supported: ...`` (a
+    function such as ``rise()``, or an expression the parser reads as a call, such as a type
+    test); None for any other expression."""
+    if not isinstance(expression, model.Call):
+        return None
+    if expression.function in UNSUPPORTED_EXPRESSIONS:
+        return UNSUPPORTED_EXPRESSIONS[expression.function]
+    return f"{expression.function}()" if expression.function in UNSUPPORTED_FUNCTIONS else None

@@ -443,13 +443,14 @@ class _Builder:
                 return model.Name(f"{base.name}.{self.name(ctx.identifier())}", base.location)
             self.error(location, "a field can only be read from a name, e.g. it.speed or v1.length")
             return base
-        if isinstance(ctx, P.TypeTestContext):
-            construct = "is" if ctx.op.type == P.IS else "as"
-            return model.Call(construct, (model.Argument(None, self.expression(ctx.expression()), location),), location)
-        if isinstance(ctx, P.ElementAccessContext):
-            return model.Call("[]", tuple(model.Argument(None, self.expression(e), location) for e in ctx.expression()), location)
-        if isinstance(ctx, P.ConditionalContext):
-            return model.Call("?:", tuple(model.Argument(None, self.expression(e), location) for e in ctx.expression()), location)
+        if isinstance(ctx, (P.TypeTestContext, P.ElementAccessContext, P.ConditionalContext)):
+            # read, never evaluated: a call named after the construct (library.UNSUPPORTED_EXPRESSIONS)
+            if isinstance(ctx, P.TypeTestContext):
+                function = "is" if ctx.op.type == P.IS else "as"
+            else:
+                function = "[]" if isinstance(ctx, P.ElementAccessContext) else "?:"
+            operands = ctx.getTypedRuleContexts(P.ExpressionContext)
+            return model.Call(function, tuple(model.Argument(None, self.expression(e), location) for e in operands), location)
         if isinstance(ctx, P.CallContext):
             function = self.expression(ctx.expression())
             arguments = self.arguments(ctx.argumentList())

@@ -25,7 +25,7 @@ from ..automaton.guards import HEADWAY, LANE, POSITION, SPEED, And, Bound, Guard
 from ..automaton.model import SymbolicAutomaton
 from .linear import THEORY, LazyLinearTheory
 from .errors import HorizonTooShort, NoPlanError, PlanningTimeout
-from .instance import _atom, _bound_rule, _inset, _outside_rules, guard_nodes, junction_rules, relaxable_constraints, with_automaton
+from .instance import _atom, _bound_rule, _inset, _outside_rules, guard_nodes, junction_rules, with_automaton
 from .plan import Plan, PlanState
 from .solver import ASP_DIR, Planner, check_satisfiable
 
@@ -134,9 +134,8 @@ def build_continuous_instance(automaton: SymbolicAutomaton, settings: Continuous
         f"lane_change_gap({s.lane_change_gap}).",
         "",
     ]
-    base_program, state_program = with_automaton(base, automaton, s.dt, relaxable, lambda node, guard, numbering, switch: _guard_rules(node, guard, numbering, s, switch))
-    relax = {c.source: k for k, c in enumerate(relaxable_constraints(automaton))} if relaxable else {}
-    return base_program, state_program + "\n".join(_rate_rules(automaton, s, relax)) + "\n"
+    return with_automaton(base, automaton, s.dt, relaxable, lambda node, guard, numbering, switch: _guard_rules(node, guard, numbering, s, switch),
+                          lambda relax: _rate_rules(automaton, s, relax))
 
 
 def _rate_rules(automaton: SymbolicAutomaton, settings: ContinuousSettings, relax: dict) -> list[str]:

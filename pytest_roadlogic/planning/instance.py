@@ -186,10 +186,9 @@ def build_instance(automaton: SymbolicAutomaton, settings: PlanningSettings, rel
     With ``relaxable``, each constraint of ``relaxable_constraints`` (numbered in that order) is
     switched off by an external ``relaxed(K)``: a diagnosis asks which of them cannot hold together.
     """
-    for timing in automaton.timings.values():
-        for rate in timing.rates:
-            raise error_at(rate.source, "the acceleration modifier needs the continuous planner; the grid encoding's accelerations are -2, 0 and +2 cells per step^2",
-                           hint="drop --roadlogic-encoding grid / --encoding grid (continuous is the default)")
+    rate = next((rate for timing in automaton.timings.values() for rate in timing.rates), None)
+    if rate is not None:
+        raise _needs_continuous(rate.source, "the acceleration modifier", "the grid encoding's accelerations are -2, 0 and +2 cells per step^2")
     speeds = settings.speeds()
     if not speeds or speeds[0] < 1:
         raise ValueError("the speed bounds leave no positive speed on the grid")
@@ -228,12 +227,13 @@ def build_instance(automaton: SymbolicAutomaton, settings: PlanningSettings, rel
     return with_automaton(base, automaton, settings.dt, relaxable, lambda node, guard, numbering, switch: _guard_rules(node, guard, numbering, settings, switch))
 
 
-def with_automaton(base: list[str], automaton: SymbolicAutomaton, dt: float, relaxable: bool, rules) -> tuple[str, str]:
+def with_automaton(base: list[str], automaton: SymbolicAutomaton, dt: float, relaxable: bool, rules, more_state=None) -> tuple[str, str]:
     """(base program, state(t) program): an encoding's own base facts ``base`` followed by the
-    automaton's facts, and the guard program from the encoding's ``rules`` (see guard_program);
-    with ``relaxable``, every bound and duration can be relaxed for a diagnosis."""
+    automaton's facts, and the guard program from the encoding's ``rules`` (see guard_program)
+    followed by ``more_state(relax)``'s rules when given; with ``relaxable``, every bound and
+    duration can be relaxed for a diagnosis (``relax``: constraint source -> its external's number)."""
     relax = {c.source: k for k, c in enumerate(relaxable_constraints(automaton))} if relaxable else {}
-    state = guard_program(automaton, relax, rules)
+    state = guard_program(automaton, relax, rules) + (more_state(relax) if more_state is not None else [])
     return "\n".join([*base, *automaton_facts(automaton, dt, relax)]) + "\n", "\n".join(state) + "\n"
 
 
@@ -314,20 +314,24 @@ def _guard_rules(node: int, guard: Guard, numbering: dict[Guard, int], settings:
     if isinstance(guard, Not):  # on a bound (negation normal form): outside the range, with a margin
         assert isinstance(guard.part, Bound)
         if guard.part.term.quantity == HEADWAY:
-            raise _needs_continuous(guard.part)
+            raise _needs_continuous(guard.part.source, HEADWAY_CONSTRUCT, "the grid encoding cannot express it")
         return _outside_rules(node, guard.part, settings, switch)
     assert isinstance(guard, Bound)
     if guard.term.quantity == HEADWAY:
-        raise _needs_continuous(guard)
+        raise _needs_continuous(guard.source, HEADWAY_CONSTRUCT, "the grid encoding cannot express it")
     if guard.term.quantity == POSITION:
         return _position_rules(node, guard, settings, switch)
     return _bound_rule(head, guard, settings)
 
 
-def _needs_continuous(bound: Bound) -> OscError:
-    """The grid's positions and speeds are separate integer fluents: a time headway (a gap over a
-    speed) has no rule there."""
-    return error_at(bound.source, "a time headway (position(time: ...)) needs the continuous planner; the grid encoding cannot express it",
+# the grid's positions and speeds are separate integer fluents: a time headway (a gap over a
+# speed) has no rule there
+HEADWAY_CONSTRUCT = "a time headway (position(time: ...))"
+
+
+def _needs_continuous(source, construct: str, why: str) -> OscError:
+    """A construct only the continuous encoding plans, refused by the grid at its place."""
+    return error_at(source, f"{construct} needs the continuous planner; {why}",
                     hint="drop --roadlogic-encoding grid / --encoding grid (continuous is the default)")
 
 
