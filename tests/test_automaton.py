@@ -59,10 +59,10 @@ def test_absolute_lanes_count_from_the_right_by_default():
 
 
 def test_a_construct_the_automaton_cannot_translate_yet_is_a_located_error():
-    text = "scenario s:\n  a: car\n  do serial:\n    a.drive()\n    a.assign_speed(target: 20mps)\n"
+    text = "scenario s:\n  a: car\n  do serial:\n    a.drive()\n    a.keep_space_gap(20m)\n"
     with pytest.raises(OscError) as caught:
         build_automaton(check_text(text, "d.osc").scenarios[0])
-    assert "d.osc:5:5: error: not supported yet by the automaton: action 'assign_speed'" in str(caught.value)
+    assert "d.osc:5:5: error: not supported yet by the automaton: action 'keep_space_gap'" in str(caught.value)
 
 
 def test_a_modifier_without_at_is_an_invariant_of_its_phase_and_holds_at_both_ends():

@@ -171,7 +171,7 @@ CASES = [
     ('from_with_relative', drive(["lane(same_as: b, from: left, at: start)"]),
      '7:30: error: from: goes with a lane number, not with a relative lane'),
     ('stationary_drives', "scenario s:\n    o: stationary_object\n    do o.drive()\n",
-     "3:8: error: 'o' is a stationary_object: it can only remain_stationary()"),
+     "3:8: error: 'o' is a stationary_object: it can only remain_stationary() or keep_position()"),
     ('modifier_other_actor', drive(["b.lane(1, at: start)"]),
      "7:15: error: this modifier names 'b' but the invocation is for 'a'"),
     ('unknown_name', drive(["position(gap, behind: b, at: start)"]),

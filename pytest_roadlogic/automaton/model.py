@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from typing import ClassVar
 
 from ..frontend.errors import SourceLocation
 from .guards import TRUE, Guard
@@ -27,7 +28,7 @@ class Location:
 
 @dataclass(frozen=True)
 class MeanAcceleration:
-    """``acceleration(a)`` on a phase: the actor's speed changes by ``a`` times the phase's length,
+    """A bound on what a phase does between its two ends; this class: ``acceleration(a)`` on a phase: the actor's speed changes by ``a`` times the phase's length,
     (v(end) - v(start)) / duration in low..high (m/s^2).
 
     Why the mean and not every instant (the standard's ``at: all``): a real vehicle ramps its
@@ -42,21 +43,49 @@ class MeanAcceleration:
     phase: str = ""
     source: SourceLocation | None = None
 
-    def margin(self, start_speed: float, end_speed: float, seconds: float) -> float:
-        """How far inside the range the mean acceleration lies (m/s^2, negative outside)."""
-        mean = (end_speed - start_speed) / seconds
-        return min(mean - self.low, self.high - mean)
+    # what the bound reads at the phase's two ends: the trace's column and the plan's variable
+    column: ClassVar[str] = "speed"
+    construct: ClassVar[str] = "the acceleration modifier"
+    what: ClassVar[str] = "mean acceleration"
+    symbol: ClassVar[str] = "mean a"  # the value's name in a report: mean a(car1)
+    unit: ClassVar[str] = "m/s^2"
+
+    def value(self, start: float, end: float, seconds: float) -> float:
+        """The mean acceleration over a phase of ``seconds`` from the speeds at its two ends."""
+        return (end - start) / seconds
+
+    def margin(self, start: float, end: float, seconds: float) -> float:
+        """How far inside the range the value lies (in its unit, negative outside)."""
+        value = self.value(start, end, seconds)
+        return min(value - self.low, self.high - value)
 
     def __str__(self) -> str:
         over = f" over {self.phase}" if self.phase else ""
-        return f"mean acceleration of {self.actor}{over} in {self.low:g}..{self.high:g} m/s^2"
+        return f"{self.what} of {self.actor}{over} in {self.low:g}..{self.high:g} {self.unit}"
+
+
+@dataclass(frozen=True)
+class Travelled(MeanAcceleration):
+    """``distance(d)`` on a phase: the actor covers d metres in it, x(end) - x(start) in low..high.
+    Like a mean acceleration it reads only the phase's two ends, so it shares its machinery (the
+    timing of the phase, the planner's rows, the monitor's margin); unlike it, it does not depend
+    on the phase's length, and the planner writes one row."""
+
+    column: ClassVar[str] = "x"
+    construct: ClassVar[str] = "the distance modifier"
+    what: ClassVar[str] = "distance travelled"
+    symbol: ClassVar[str] = "travelled"
+    unit: ClassVar[str] = "m"
+
+    def value(self, start: float, end: float, seconds: float) -> float:
+        return end - start
 
 
 @dataclass(frozen=True)
 class Timing:
     """How long a phase may last, in seconds: from the transition that starts it to the one that ends it.
 
-    ``high`` may be infinite: a phase that is timed only for its ``rates`` (mean accelerations
+    ``high`` may be infinite: a phase that is timed only for its ``rates`` (mean accelerations and distances travelled,
     that need the phase's start and end) and has no ``duration:``."""
 
     phase: int

@@ -105,8 +105,8 @@ class FollowLane(Action):
 
 
 class _LaneChange:
-    """What the action and the modifier ``change_lane`` share: ``num_of_lanes`` lanes (default 1)
-    to ``side`` (either side when not given), relative to the lane the phase started in or, for the
+    """What the action and the modifier ``change_lane`` share: ``num_of_lanes`` lanes (default 1;
+    a range such as [1..2] is one variant per count, and a sample picks one) to ``side`` (either side when not given), relative to the lane the phase started in or, for the
     action with ``reference:``, ending that many lanes beside another actor."""
 
     def check(self, binding: Binding, context: CheckContext) -> None:
@@ -124,27 +124,29 @@ class _LaneChange:
         return highest(binding["num_of_lanes"]) + 1
 
     def translate(self, use: Use, phase: Phase) -> None:
-        count = 1
+        counts = range(1, 2)
         if use.argument("num_of_lanes") is not None:
             value = use.interval("num_of_lanes")
-            if not value.is_point or not float(value.low).is_integer():
-                raise error_at(use.argument("num_of_lanes").location, "the number of lanes to change must be one whole number")
-            count = int(value.low)
+            if not float(value.low).is_integer() or not float(value.high).is_integer():
+                raise error_at(use.argument("num_of_lanes").location, "the number of lanes to change must be a whole number or a range of them, e.g. [1..2]")
+            counts = range(max(1, int(value.low)), int(value.high) + 1)
         side = use.name("side")
         reference = use.name("reference")
         variants = []
-        for direction in ("left", "right") if side is None else (side,):
-            step = -count if direction == "left" else count  # internal lanes grow to the right
-            if reference is not None and reference != use.actor:
-                variants.append(Variant(end=Bound(Term(LANE, use.actor, reference), step, step, use.location)))
-                continue
-            for lane in range(use.lanes):
-                if 0 <= lane + step < use.lanes:
-                    variants.append(
-                        Variant(start=Bound(Term(LANE, use.actor), lane, lane, use.location), end=Bound(Term(LANE, use.actor), lane + step, lane + step, use.location))
-                    )
+        for count in counts:
+            for direction in ("left", "right") if side is None else (side,):
+                step = -count if direction == "left" else count  # internal lanes grow to the right
+                if reference is not None and reference != use.actor:
+                    variants.append(Variant(end=Bound(Term(LANE, use.actor, reference), step, step, use.location)))
+                    continue
+                for lane in range(use.lanes):
+                    if 0 <= lane + step < use.lanes:
+                        variants.append(
+                            Variant(start=Bound(Term(LANE, use.actor), lane, lane, use.location), end=Bound(Term(LANE, use.actor), lane + step, lane + step, use.location))
+                        )
         if not variants:
-            raise error_at(use.location, f"a change of {count} lanes is impossible on a road of {use.lanes} lanes")
+            shown = f"{counts[0]}" if len(counts) == 1 else f"{counts[0]} to {counts[-1]}"
+            raise error_at(use.location, f"a change of {shown} lanes is impossible on a road of {use.lanes} lanes")
         phase.branch(variants)
 
 

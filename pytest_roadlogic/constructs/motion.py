@@ -1,12 +1,16 @@
-"""Moving and standing: ``drive()`` and ``remain_stationary()``."""
+"""Moving and standing: ``drive()``, ``remain_stationary()`` and ``keep_position()``; the modifiers of
+the motion as a whole: ``distance()``, ``along()`` and ``avoid_collisions()``."""
 
 from __future__ import annotations
 
 from ..automaton.guards import SPEED, Bound, Term
+from ..automaton.model import Travelled
 from ..automaton.phase import Phase
-from ..frontend.library import DURATION, Parameter, Signature
-from ..frontend.tolerances import STANDSTILL
-from .base import Action, Use
+from ..frontend import model
+from ..frontend.library import DURATION, Binding, Parameter, Signature
+from ..frontend.tolerances import POSITION_TOLERANCE, STANDSTILL
+from ..frontend.units import LENGTH
+from .base import Action, CheckContext, Modifier, Use
 
 
 class Drive(Action):
@@ -29,4 +33,53 @@ class RemainStationary(Action):
         phase.add(invariant=Bound(Term(SPEED, use.actor), -STANDSTILL, STANDSTILL, use.location))
 
 
-CONSTRUCTS = (Drive(), RemainStationary())
+class KeepPosition(RemainStationary):
+    """``keep_position()``: the actor stays where it is, which on a road is standing still."""
+
+    signature = Signature("keep_position", (DURATION,), description="stay where it is (stand still)")
+
+
+class Distance(Modifier):
+    """``distance(d)``: the actor covers d in the phase, x(end) - x(start) (``Travelled``); a single
+    value is read +- the position tolerance. Like a duration, a range of it is left open by the
+    scenario (a logical parameter), not a bound held at every instant."""
+
+    signature = Signature("distance", (Parameter("distance", "length", positional=True),), required=(("distance",),), description="the distance travelled in the phase")
+
+    def check(self, binding: Binding, context: CheckContext) -> None:
+        value = context.evaluate(binding["distance"]) if binding["distance"] is not None else None
+        if value is not None and value.low < 0:
+            context.error(binding["distance"].value.location, "a distance travelled must not be negative", "vehicles drive forward; e.g. distance([50..80]m)")
+
+    def translate(self, use: Use, phase: Phase) -> None:
+        low, high = use.range("distance", LENGTH, "a length such as 50m or [50..80]m")
+        if low == high:
+            low, high = max(0.0, low - POSITION_TOLERANCE), high + POSITION_TOLERANCE
+        phase.rates.append(Travelled(use.actor, low, high, source=use.location))
+
+
+class Along(Modifier):
+    """``along(path)``: the motion follows the road; there is one straight road, so it holds always."""
+
+    signature = Signature("along", (Parameter("route", "road", positional=True),), required=(("route",),), description="follow the road (there is one)")
+
+    def translate(self, use: Use, phase: Phase) -> None:
+        pass
+
+
+class AvoidCollisions(Modifier):
+    """``avoid_collisions(true)``: the collision rule, which this tool applies to every run anyway;
+    ``avoid_collisions(false)`` (a crash asked for) is refused: no plan here ever collides."""
+
+    signature = Signature("avoid_collisions", (Parameter("avoid", "bool", positional=True),), description="no collisions (always applied)")
+
+    def check(self, binding: Binding, context: CheckContext) -> None:
+        given = binding["avoid"]
+        if given is not None and isinstance(given.value, model.Literal) and given.value.value is False:
+            context.error(given.location, "not supported: avoid_collisions(false)", "this tool never plans a collision: every run keeps the vehicles apart")
+
+    def translate(self, use: Use, phase: Phase) -> None:
+        pass
+
+
+CONSTRUCTS = (Drive(), RemainStationary(), KeepPosition(), Distance(), Along(), AvoidCollisions())

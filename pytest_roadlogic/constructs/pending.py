@@ -14,7 +14,7 @@ GAP_OPTIONS = (Parameter("direction", "enum:direction"), Parameter("reference", 
 
 
 def _pending_action(name: str, first: Parameter) -> Action:
-    signature = Signature(name, (first, *(GAP_OPTIONS if name != "assign_speed" else (DURATION,))), tier=2)
+    signature = Signature(name, (first, *GAP_OPTIONS), tier=2)
     return type(name, (Action,), {"signature": signature, "translated": False, "__doc__": f"``{name}()`` (tier 2)"})()
 
 
@@ -27,6 +27,5 @@ CONSTRUCTS = (
     _pending_action("keep_time_gap", Parameter("gap", "time", positional=True)),
     _pending_action("change_space_gap", Parameter("target", "length", positional=True)),
     _pending_action("change_time_gap", Parameter("target", "time", positional=True)),
-    _pending_action("assign_speed", Parameter("target", "speed", positional=True)),
     _pending_modifier(Signature("lateral", (Parameter("distance", "length", positional=True), Parameter("side_of", "actor"), Parameter("side", "enum:side"), AT), tier=2)),
 )

@@ -1,4 +1,4 @@
-"""Speed: the ``speed()``, ``keep_speed()`` and ``acceleration()`` modifiers, the ``change_speed()`` and ``keep_speed()`` actions.
+"""Speed: the ``speed()``, ``keep_speed()`` and ``acceleration()`` modifiers, the ``change_speed()``, ``assign_speed()`` and ``keep_speed()`` actions.
 
 ``keep_speed`` refers to the speed the phase started with, which a guard cannot see: it becomes one
 variant per 1 m/s band from 0 to 40 m/s (the speed starts within half a band of the band's value
@@ -12,7 +12,7 @@ from ..automaton.model import MeanAcceleration
 from ..automaton.phase import Phase, Variant
 from ..frontend import model
 from ..frontend.errors import SourceLocation, error_at
-from ..frontend.library import AT, DURATION, RATE, Binding, Parameter, Signature
+from ..frontend.library import AT, DURATION, Binding, Parameter, Signature
 from ..frontend.tolerances import ACCELERATION_TOLERANCE, SPEED_TOLERANCE
 from ..frontend.units import ACCELERATION, SPEED
 from .base import Action, AnchoredModifier, CheckContext, Modifier, Use
@@ -77,9 +77,21 @@ class KeepSpeedAction(Action):
 
 
 class ChangeSpeed(Action):
-    """``change_speed(target)``: the target speed (+- the tolerance for a single value) at the phase's end."""
+    """``change_speed(target)``: the target speed (+- the tolerance for a single value) at the phase's
+    end. ``rate_peak: a``: the phase's mean acceleration lies within -a..a (a mean, as for the
+    ``acceleration`` modifier: the plan keeps it, the car's instantaneous peak is not checked)."""
 
-    signature = Signature("change_speed", (Parameter("target", "speed", positional=True), DURATION, *RATE), required=(("target",),), description="reach the target speed")
+    signature = Signature(
+        "change_speed",
+        (Parameter("target", "speed", positional=True), DURATION, Parameter("rate_profile", "enum:rate_profile", supported=False), Parameter("rate_peak", "acceleration")),
+        required=(("target",),), description="reach the target speed",
+    )
+
+    def check(self, binding: Binding, context: CheckContext) -> None:
+        peak = binding["rate_peak"]
+        value = context.evaluate(peak) if peak is not None else None
+        if value is not None and value.low <= 0:
+            context.error(peak.value.location, "rate_peak must be a positive acceleration", "e.g. rate_peak: 3mpss")
 
     def translate(self, use: Use, phase: Phase) -> None:
         if use.argument("target") is None:
@@ -88,6 +100,23 @@ class ChangeSpeed(Action):
         if low == high:
             low, high = low - SPEED_TOLERANCE, high + SPEED_TOLERANCE
         phase.add(end=Bound(Term(SPEED_Q, use.actor), max(0.0, low), high, use.location))
+        if use.argument("rate_peak") is not None:
+            _, peak = use.range("rate_peak", ACCELERATION, "an acceleration such as 3mpss")
+            phase.rates.append(MeanAcceleration(use.actor, -peak, peak, source=use.argument("rate_peak").location))
+
+
+class AssignSpeed(Action):
+    """``assign_speed(target)``: the speed is the target (+- the tolerance) at the phase's start.
+    The standard's assignment is instantaneous; a simulated car cannot jump to a speed, so the plan
+    reaches it by the phase's start, and the monitor checks it there."""
+
+    signature = Signature("assign_speed", (Parameter("target", "speed", positional=True), DURATION), required=(("target",),), description="the speed at the phase's start")
+
+    def translate(self, use: Use, phase: Phase) -> None:
+        low, high = use.range("target", SPEED, "a speed such as 20mps")
+        if low == high:
+            low, high = low - SPEED_TOLERANCE, high + SPEED_TOLERANCE
+        phase.add(start=Bound(Term(SPEED_Q, use.actor), max(0.0, low), high, use.location))
 
 
 class Acceleration(Modifier):
@@ -116,4 +145,4 @@ class Acceleration(Modifier):
         phase.rates.append(MeanAcceleration(use.actor, low, high, source=use.location))
 
 
-CONSTRUCTS = (Speed(), KeepSpeedModifier(), KeepSpeedAction(), ChangeSpeed(), Acceleration())
+CONSTRUCTS = (Speed(), KeepSpeedModifier(), KeepSpeedAction(), ChangeSpeed(), AssignSpeed(), Acceleration())

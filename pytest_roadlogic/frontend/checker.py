@@ -503,6 +503,10 @@ class _Checker:
             if not (isinstance(value, model.Literal) and isinstance(value.value, str)):
                 self.error(value.location, f"{parameter.name}: takes a string, e.g. \"Town04\"")
             return
+        if kind == "bool":
+            if not (isinstance(value, model.Literal) and isinstance(value.value, bool)):
+                self.error(value.location, f"{parameter.name}: takes true or false")
+            return
         if kind == "road":
             if not isinstance(value, model.Name) or value.name not in self.roads:
                 self.error(value.location, f"{parameter.name}: takes the scenario's road", f"declare one: path: {library.ROAD_TYPE}")

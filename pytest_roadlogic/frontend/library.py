@@ -122,6 +122,7 @@ def bind(signature: Signature, arguments: tuple[model.Argument, ...]) -> Binding
 
 AT = Parameter("at", "enum:at")
 DURATION = Parameter("duration", "time")
+# a lane change's rate: its lateral speed, which the motion planner chooses
 RATE = (Parameter("rate_profile", "enum:rate_profile", supported=False), Parameter("rate_peak", "speed", supported=False))
 
 

@@ -113,7 +113,8 @@ def monitor(automaton: SymbolicAutomaton, trace: Trace) -> Verdict:
     guard_margin = {t.id: t.guard.robustness_series(trace.actors).tolist() for t in automaton.transitions}
     invariant_margin = {q: automaton.location(q).invariant.robustness_series(trace.actors).tolist() for q in invariant_locations}
     progress = {a: (np.diff(trace.actors[a]["x"]) > 0).tolist() for a in trace.names}
-    speeds = {a: trace.actors[a]["speed"].tolist() for a in trace.names}
+    # the columns the phases' two-end bounds read (speed for a mean acceleration, x for a distance)
+    columns = {column: {a: trace.actors[a][column].tolist() for a in trace.names} for column in _end_columns(automaton)}
     # the mean acceleration that came closest to its range where all else held, for the report:
     # (margin, sample, location, rate)
     rate_miss: tuple[float, int, int, object] | None = None
@@ -148,7 +149,7 @@ def monitor(automaton: SymbolicAutomaton, trace: Trace) -> Verdict:
                 # each key's best value before the guard, per key after the step
                 advanced: dict[Key, tuple[float, tuple]] = {}
                 for key, (value, run) in surviving[q].items():
-                    stepped = _advance(key, starts, ends, k, times, timings, speeds)
+                    stepped = _advance(key, starts, ends, k, times, timings, columns)
                     if stepped is None:
                         continue
                     next_key, timing_margin, missed = stepped
@@ -182,11 +183,11 @@ def monitor(automaton: SymbolicAutomaton, trace: Trace) -> Verdict:
     if best_final < 0:
         miss = _closest_miss(automaton, furthest, first_met[furthest] or 0, trace.snapshots(), times)
         if rate_miss is not None and (miss is None or miss.robustness >= 0):
-            miss = _rate_miss(automaton, rate_miss, speeds, times)
+            miss = _rate_miss(automaton, rate_miss, columns, times)
     return Verdict(accepted, float(best_final), automaton.location(furthest).name, best_run, miss, list(trace.incidents))
 
 
-def _advance(key: tuple, starts: tuple, ends: tuple, k: int, times, timings, speeds) -> tuple[tuple, float, tuple | None] | None:
+def _advance(key: tuple, starts: tuple, ends: tuple, k: int, times, timings, columns) -> tuple[tuple, float, tuple | None] | None:
     """The timed-phase state after a transition that starts the timed phases ``starts`` and ends
     ``ends`` at sample ``k``; the smallest margin of the durations (s) and mean accelerations
     (m/s^2) it ends; and the worst mean acceleration it misses, (margin, rate), if any. None when
@@ -210,18 +211,21 @@ def _advance(key: tuple, starts: tuple, ends: tuple, k: int, times, timings, spe
         for rate in timing.rates:
             if seconds <= 0:
                 return None
-            rate_margin = rate.margin(speeds[rate.actor][begun], speeds[rate.actor][k], seconds)
+            series = columns[rate.column][rate.actor]
+            rate_margin = rate.margin(series[begun], series[k], seconds)
             margin = min(margin, rate_margin)
             if rate_margin < 0 and (missed is None or rate_margin < missed[0]):
                 missed = (rate_margin, (rate, begun))
     return tuple(sorted(started.items())), margin, missed
 
 
-def _rate_miss(automaton: SymbolicAutomaton, found: tuple, speeds, times) -> GuardMiss:
-    """A mean acceleration that no run met, where it came closest (all else met up to there)."""
+def _rate_miss(automaton: SymbolicAutomaton, found: tuple, columns, times) -> GuardMiss:
+    """A bound over a phase's two ends (a mean acceleration, a distance travelled) that no run
+    met, where it came closest (all else met up to there)."""
     margin, k, location, (rate, begun) = found
     seconds = times[k] - times[begun]
-    mean = (speeds[rate.actor][k] - speeds[rate.actor][begun]) / seconds
+    series = columns[rate.column][rate.actor]
+    name = "v" if rate.column == "speed" else rate.column
     return GuardMiss(
         source=automaton.location(location).name,
         target=f"the end of {rate.phase}" if rate.phase else "the phase's end",
@@ -229,10 +233,14 @@ def _rate_miss(automaton: SymbolicAutomaton, found: tuple, speeds, times) -> Gua
         events=f"{times[begun]:.1f} s to {times[k]:.1f} s",
         time=float(times[k]),
         robustness=float(margin),
-        values={f"mean a({rate.actor})": float(mean), f"v({rate.actor}) at start": float(speeds[rate.actor][begun]),
-                f"v({rate.actor}) at end": float(speeds[rate.actor][k])},
+        values={f"{rate.symbol}({rate.actor})": float(rate.value(series[begun], series[k], seconds)),
+                f"{name}({rate.actor}) at start": float(series[begun]), f"{name}({rate.actor}) at end": float(series[k])},
         locations=(rate.source,) if rate.source is not None else (),
     )
+
+
+def _end_columns(automaton: SymbolicAutomaton) -> set[str]:
+    return {rate.column for timing in automaton.timings.values() for rate in timing.rates}
 
 
 def _closest_miss(automaton: SymbolicAutomaton, location: int, entered: int, snapshots, times) -> GuardMiss | None:

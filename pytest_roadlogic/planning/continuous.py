@@ -22,7 +22,7 @@ from dataclasses import dataclass
 from fractions import Fraction
 
 from ..automaton.guards import HEADWAY, LANE, POSITION, SPEED, And, Bound, Guard, Not, Or
-from ..automaton.model import SymbolicAutomaton
+from ..automaton.model import SymbolicAutomaton, Travelled
 from .linear import THEORY, LazyLinearTheory
 from .errors import HorizonTooShort, NoPlanError, PlanningTimeout
 from .instance import _atom, _bound_rule, _inset, _outside_rules, guard_nodes, junction_rules, with_automaton
@@ -139,11 +139,13 @@ def build_continuous_instance(automaton: SymbolicAutomaton, settings: Continuous
 
 
 def _rate_rules(automaton: SymbolicAutomaton, settings: ContinuousSettings, relax: dict) -> list[str]:
-    """A mean acceleration on a timed phase P as linear rows over the speeds at its two ends, one
-    per length D the phase may have (a known length makes the mean linear):
+    """The bounds over a timed phase P's two ends as linear rows. A mean acceleration: one row per
+    length D the phase may have (a known length makes the mean linear):
       &sum{ v(V,t); -1*v(V,T) } >= lo*D*dt :- finish(P,t), begin(P,T), T = t-D.   (<= hi*D*dt likewise)
-    with lo and hi inset by ``acceleration_margin``. The lengths run up to the phase's upper bound,
-    or to the horizon limit for a phase with none."""
+    with lo and hi inset by ``acceleration_margin``; the lengths run up to the phase's upper bound,
+    or to the horizon limit for a phase with none. A distance travelled: one row,
+      &sum{ p(V,t); -1*p(V,T) } >= lo :- finish(P,t), begin(P,T).
+    inset by ``position_margin``."""
     rules = []
     for phase, timing in sorted(automaton.timings.items()):
         if not timing.rates:
@@ -153,8 +155,15 @@ def _rate_rules(automaton: SymbolicAutomaton, settings: ContinuousSettings, rela
         for rate in timing.rates:
             rules.append(f"% {rate}")
             switch = f", not relaxed({relax[rate.source]})" if rate.source in relax else ""
-            low, high = _inset(rate.low, rate.high, settings.acceleration_margin)
             actor = _atom(rate.actor)
+            if isinstance(rate, Travelled):
+                low, high = _inset(rate.low, rate.high, settings.position_margin)
+                body = f":- finish({phase},t), begin({phase},T){switch}."
+                for value, operator in ((low, ">="), (high, "<=")):
+                    if math.isfinite(value):
+                        rules.append(f"&sum{{ p({actor},t); -1*p({actor},T) }} {operator} {_number(value)} {body}")
+                continue
+            low, high = _inset(rate.low, rate.high, settings.acceleration_margin)
             for length in range(shortest, longest + 1):
                 seconds = length * settings.dt
                 body = f":- finish({phase},t), begin({phase},T), T = t-{length}{switch}."

@@ -188,7 +188,8 @@ def build_instance(automaton: SymbolicAutomaton, settings: PlanningSettings, rel
     """
     rate = next((rate for timing in automaton.timings.values() for rate in timing.rates), None)
     if rate is not None:
-        raise _needs_continuous(rate.source, "the acceleration modifier", "the grid encoding's accelerations are -2, 0 and +2 cells per step^2")
+        why = "the grid encoding's accelerations are -2, 0 and +2 cells per step^2" if rate.column == "speed" else "the grid encoding has no rows over a phase's two ends"
+        raise _needs_continuous(rate.source, rate.construct, why)
     speeds = settings.speeds()
     if not speeds or speeds[0] < 1:
         raise ValueError("the speed bounds leave no positive speed on the grid")
