@@ -155,7 +155,7 @@ CASES = [
     ('unit_exponents_differ', "type len is SI(m: 1)\nunit foot of len is SI(s: 1, factor: 0.3048)\n" + HEAD,
      "2:6: error: unit 'foot' has other SI exponents than its type 'len'"),
     ('type_contradicts_builtin', "type speed is SI(m: 1)\n" + HEAD,
-     "1:6: error: type 'speed' is a length here but a speed as built-in"),
+     "1:6: error: type 'speed' is a length here but a speed in the standard library (osc.physical)"),
     ('road_bounds_contradict', HEAD + "    road: Path\n    road.path_max_lanes(2)\n    road.path_min_driving_lanes(4)\n",
      '5:10: error: at most 2 lanes contradicts at least 4 (line 6)'),
     ('road_lanes_not_whole', HEAD + "    road: Path\n    road.path_min_driving_lanes(2.5)\n",
@@ -264,9 +264,9 @@ def test_a_unit_declared_in_an_unquoted_import_is_read_with_its_factor(tmp_path)
     assert checked.scenarios[0].space.domains["limit"].interval.dimension == "speed"
 
 
-def test_a_unit_of_a_dimension_the_tool_does_not_model_is_unknown_where_it_is_used(tmp_path):
+def test_a_unit_of_a_dimension_the_tool_does_not_model_is_refused_where_it_is_used(tmp_path):
     (tmp_path / "lib.osc").write_text(LIBRARY)
     (tmp_path / "s.osc").write_text("import lib.osc\nscenario s:\n    a: Sedan\n    do a.drive() with:\n        speed(90deg)\n")
     with pytest.raises(OscError) as caught:
         check_file(tmp_path / "s.osc")
-    assert "s.osc:5:15: error: unknown unit 'deg'" in str(caught.value)
+    assert "s.osc:5:15: error: not supported: unit 'deg' (of angle, a dimension this tool does not model)" in str(caught.value)

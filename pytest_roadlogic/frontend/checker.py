@@ -24,6 +24,7 @@ from .invocation import called_scenarios, expand_calls
 from .parameters import ParameterSpace, parameter_space
 from .parser import parse_file, parse_text
 from .physical import declared_physics, parse_with_declared_units
+from .standard_library import LazyTable, part_file, part_names, standard_library
 from .units import SPEED, TIME, UNITS
 from .values import EvaluationError, Interval, calls_in, describe, evaluate, names_in
 
@@ -31,7 +32,7 @@ if TYPE_CHECKING:
     from ..constructs import Registry
 
 DEFAULT_LANES = 3
-_BUILTIN_PHYSICAL = {dimension: name for name, dimension in library.PHYSICAL_TYPES.items()}
+_BUILTIN_PHYSICAL = LazyTable(lambda _: {dimension: name for name, dimension in library.PHYSICAL_TYPES.items()})
 
 
 def check_file(path: str | Path, lanes: int | None = None, registry: Registry | None = None, dialect: str | None = None) -> CheckedFile:
@@ -168,8 +169,11 @@ class _Checker:
         for item in osc.imports:
             target = item.file(osc.path)
             if target is None:
-                if item.target != "osc" and not item.target.startswith("osc."):
-                    self.error(item.location, f"unknown library {item.target!r}", 'the standard library is osc.standard; import a file by its path: import "lib.osc" or import lib.osc')
+                if part_file(item.target) is None and item.target.startswith("osc."):
+                    # other tools split the library differently (osc.helpers): read it as the whole
+                    self.warning(item.location, f"the standard library has no part {item.target!r} here; read as osc.standard", f"parts: {', '.join(part_names())}")
+                elif part_file(item.target) is None:
+                    self.error(item.location, f"unknown library {item.target!r}", f"the standard library is osc.standard (parts: {', '.join(part_names())}); import a file by its path: import \"lib.osc\" or import lib.osc")
                 continue
             if str(target) in stack:
                 self.error(item.location, f"{item.target!r} imports itself (through {' -> '.join(Path(s).name for s in stack)})", "remove the circular import")
@@ -236,6 +240,9 @@ class _Checker:
         """A library may declare the modifiers it uses (``modifier Path.set_map``); one the tool
         does not provide would need its meaning, which a declaration without a body does not give."""
         for declared in osc.modifier_declarations:
+            if declared.parameters:
+                self.error(declared.location, "not supported: modifier declarations", "use the built-in modifiers (speed, position, lane, ...)")
+                continue
             if declared.owner == library.ROAD_TYPE:
                 known = declared.name in library.ROAD_MODIFIERS
             else:
@@ -345,8 +352,7 @@ class _Checker:
                 self.error(location, "a road takes no value or keep()", "constrain it with path_min_driving_lanes(n) or path_max_lanes(n)")
             return "road"
         if self._actor_base(item.type) is not None:
-            declared = self.types.get(item.type)
-            if declared is not None and declared.parent is None:
+            if self._driven_as_vehicle(item.type):
                 self.warning(location, f"actor type {item.type!r} does not derive from a road user: it is driven as a vehicle", f"declare it as `actor {item.type} inherits vehicle` (or car, truck)")
             return "actor"
         if item.type in library.SCALAR_TYPES or item.type in self.enums:
@@ -369,14 +375,28 @@ class _Checker:
         return None
 
     def _actor_base(self, type_name: str, seen: frozenset[str] = frozenset()) -> str | None:
+        """The road user a declared actor type is driven as: the built-in type it derives from
+        or, for a bare type or one derived from an abstract actor of the standard library
+        (movable_object, physical_object, osc_actor), a vehicle (warned about where used)."""
         if type_name in library.ACTOR_TYPES:
             return type_name
         declared = self.types.get(type_name)
         if declared is None or declared.kind != "actor" or type_name in seen:
             return None
-        if declared.parent is None:
-            return "vehicle"  # a bare actor type (CARLA suites declare `actor Model3`), warned about where used
+        if declared.parent is None or (declared.parent not in self.types and declared.parent in library.ABSTRACT_ACTOR_TYPES):
+            return "vehicle"  # a bare actor type (CARLA suites declare `actor Model3`)
         return self._actor_base(declared.parent, seen | {type_name})
+
+    def _driven_as_vehicle(self, type_name: str) -> bool:
+        """Whether a declared actor type reaches no road user and is driven as a vehicle (a warning)."""
+        seen: set[str] = set()
+        while type_name in self.types and type_name not in seen:
+            seen.add(type_name)
+            parent = self.types[type_name].parent
+            if parent is None or (parent not in self.types and parent in library.ABSTRACT_ACTOR_TYPES):
+                return True
+            type_name = parent
+        return False
 
     def _actor_type_names(self) -> list[str]:
         return [*library.ACTOR_TYPES, *(n for n, d in self.types.items() if d.kind == "actor")]
@@ -411,6 +431,14 @@ class _Checker:
             return
         self.error(node.location, "not supported: call", "methods with side effects cannot be planned; remove the call")
 
+    def _unprovided(self, location: SourceLocation, kind: str, name: str, declared: dict, provided) -> None:
+        """An action or modifier the registry lacks: one the standard library declares is refused
+        by name (the tool does not execute it), any other is unknown."""
+        if name in declared:
+            self.error(location, f"not supported: the standard's {kind} {name!r}", f"declared in {declared[name].part}; this tool does not execute it. " + self._known(f"{kind}s", provided))
+        else:
+            self.error(location, f"unknown {kind} {name!r}", self._known(f"{kind}s", provided))
+
     def _invocation(self, node: model.Invocation, scenario, env, used_actors, used_names) -> None:
         actor = node.actor
         if actor is None:
@@ -422,7 +450,7 @@ class _Checker:
         context = _ConstructContext(self, env)
         action = self.registry.action(node.action)
         if action is None:
-            self.error(node.location, f"unknown action {node.action!r}", self._known("actions", self.registry.actions))
+            self._unprovided(node.location, "action", node.action, standard_library().actions, self.registry.actions)
         else:
             binding = self._arguments(action.signature, node.arguments, node.location, scenario, env, used_actors, used_names, what=f"{node.action}()")
             action.check(binding, context)
@@ -436,7 +464,7 @@ class _Checker:
                 self.error(modifier.location, f"this modifier names {modifier.actor!r} but the invocation is for {actor!r}", "put it in a with: block of that actor's invocation")
             construct = self.registry.modifier(modifier.name)
             if construct is None:
-                self.error(modifier.location, f"unknown modifier {modifier.name!r}", self._known("modifiers", self.registry.modifiers))
+                self._unprovided(modifier.location, "modifier", modifier.name, standard_library().modifiers, self.registry.modifiers)
                 continue
             binding = self._arguments(construct.signature, modifier.arguments, modifier.location, scenario, env, used_actors, used_names, what=f"{modifier.name}()")
             construct.check(binding, context)

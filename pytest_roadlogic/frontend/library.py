@@ -13,8 +13,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+from collections.abc import Mapping
+
 from . import model
-from .units import ACCELERATION, LENGTH, SPEED, TIME
+from .standard_library import LazyTable
 
 # Built-in actor types that can drive on (or stand on) the highway.
 ACTOR_TYPES = ("car", "truck", "vehicle", "stationary_object")
@@ -23,6 +25,11 @@ SCENARIO_OWNERS = ("traffic", "env", "osc_actor", "dut")
 # The standard library's device under test: usable without a declaration, as the standard's
 # own examples do (`dut.car.drive()`).
 DUT_ACTOR = "dut.car"
+# The standard library's actors above the road users (stdlib/osc/actors.osc): a type a file derives
+# from one of them is driven as a vehicle, with a warning, as a bare actor type is.
+ABSTRACT_ACTOR_TYPES: Mapping[str, None] = LazyTable(
+    lambda library: dict.fromkeys(name for name in library.actors if any(name in library.ancestors(t) for t in ACTOR_TYPES) and name not in ACTOR_TYPES)
+)
 # Standard actor types that cannot appear on a highway-only road.
 UNSUPPORTED_ACTOR_TYPES = ("person", "pedestrian", "animal", "cyclist", "bicycle", "traffic_light", "environment")
 
@@ -31,16 +38,13 @@ UNSUPPORTED_ACTOR_TYPES = ("person", "pedestrian", "animal", "cyclist", "bicycle
 ROAD_TYPE = "Path"
 
 NUMBER_TYPES = ("int", "uint", "float")
-PHYSICAL_TYPES = {"length": LENGTH, "time": TIME, "speed": SPEED, "acceleration": ACCELERATION}
-SCALAR_TYPES = (*PHYSICAL_TYPES, *NUMBER_TYPES, "bool", "string")
+# the physical types the pipeline models (length, time, speed, acceleration: metres and seconds),
+# as the standard library declares them (stdlib/osc/physical.osc); read on first use
+PHYSICAL_TYPES: Mapping[str, str] = LazyTable(lambda library: {name: dimension for name, dimension in library.types.items() if dimension is not None})
+SCALAR_TYPES: Mapping[str, None] = LazyTable(lambda library: dict.fromkeys([*PHYSICAL_TYPES, *NUMBER_TYPES, "bool", "string"]))
 
-ENUMS: dict[str, tuple[str, ...]] = {
-    "at": ("start", "end", "all"),
-    "side": ("left", "right"),
-    "overlap": ("start", "equal", "end", "initial", "final", "inside", "full", "any"),
-    "direction": ("longitudinal", "lateral"),
-    "rate_profile": ("constant", "smooth", "asap"),
-}
+# the standard library's enums (stdlib/osc/types.osc)
+ENUMS: Mapping[str, tuple[str, ...]] = LazyTable(lambda library: library.enums)
 
 
 @dataclass(frozen=True)

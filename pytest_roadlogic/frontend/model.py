@@ -371,11 +371,13 @@ class UnitDeclaration:
 
 @dataclass(frozen=True)
 class ModifierDeclaration:
-    """``modifier Path.set_map`` without a body: a library's declaration of a modifier it names."""
+    """``modifier Path.set_map``: a library's declaration of a modifier it names, with its
+    parameters when it has a body of fields (the standard library's, ``stdlib/osc/movement.osc``)."""
 
     owner: str | None
     name: str
     location: SourceLocation
+    parameters: tuple[Field, ...] = ()
 
 
 @dataclass(frozen=True)

@@ -25,6 +25,7 @@ from . import model
 from .errors import Diagnostic, OscError, SourceLocation
 from .generated.OpenScenario2Parser import OpenScenario2Parser as P
 from .lexer import DEDENT, INDENT, IndentingLexer
+from .standard_library import standard_library
 from .units import UNITS, split_physical_literal
 
 ACTOR_TYPES = ("car", "truck", "vehicle", "stationary_object")
@@ -184,10 +185,13 @@ class _Builder:
                     if members or not added:
                         body = self.scenario_body(self.name(target.name), None, self.loc(target.name), members, "scenario")
                         extensions.append(model.Extension(body.name, body, self.loc(decl)))
-                elif isinstance(decl, P.ModifierDeclarationContext) and not decl.scenarioMember() and decl.OF() is None:
+                elif isinstance(decl, P.ModifierDeclarationContext) and decl.OF() is None and all(m.fieldDeclaration() is not None for m in decl.scenarioMember()):
+                    # a modifier's signature: its name and parameters (the standard library's
+                    # declarations; the checker refuses a file's own with a body)
                     target = decl.behaviorName()
                     owner = self.name(target.actorType) if target.actorType is not None else None
-                    modifiers.append(model.ModifierDeclaration(owner, self.name(target.name), self.loc(target.name)))
+                    parameters = tuple(f for m in decl.scenarioMember() for f in self.fields(m.fieldDeclaration()))
+                    modifiers.append(model.ModifierDeclaration(owner, self.name(target.name), self.loc(target.name), parameters))
                 elif isinstance(decl, P.ModifierDeclarationContext):
                     unsupported.append(model.Unsupported("modifier declarations", self.loc(decl), "use the built-in modifiers (speed, position, lane, ...)"))
                 elif isinstance(decl, P.NamespaceStatementContext):
@@ -540,7 +544,11 @@ class _Builder:
             return self.units[unit]
         except KeyError:
             known = ", ".join(sorted(self.units))
-            self.error(location, f"unknown unit {unit!r}", f"known units: {known}; a file may declare its own: unit {unit} of length is SI(m: 1, factor: ...)")
+            unmodelled = standard_library().unmodelled_units.get(unit) if self.units is UNITS else None
+            if unmodelled is not None:
+                self.error(location, f"not supported: unit {unit!r} (of {unmodelled}, a dimension this tool does not model)", f"the pipeline computes lengths, times, speeds and accelerations; known units: {known}")
+            else:
+                self.error(location, f"unknown unit {unit!r}", f"known units: {known}; a file may declare its own: unit {unit} of length is SI(m: 1, factor: ...)")
             return None, 1.0
 
     def string(self, text: str) -> str:

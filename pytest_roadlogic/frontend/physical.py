@@ -24,6 +24,7 @@ from pathlib import Path
 from . import library, model
 from .errors import Diagnostic, OscError
 from .parser import parse_file
+from .standard_library import standard_library
 from .units import UNITS
 from .values import _DIMENSIONS
 
@@ -50,7 +51,7 @@ def dimension_of(exponents: tuple[tuple[str, float], ...]) -> str | None:
 class DeclaredPhysics:
     """Types (name -> dimension, None when not modelled) and units (name -> dimension, factor)."""
 
-    types: dict[str, str | None] = field(default_factory=lambda: dict(library.PHYSICAL_TYPES))
+    types: dict[str, str | None] = field(default_factory=lambda: dict(standard_library().types))
     units: dict[str, tuple[str, float]] = field(default_factory=dict)
     problems: list[Diagnostic] = field(default_factory=list)
 
@@ -67,8 +68,8 @@ def declared_physics(files: Iterable[model.OscFile]) -> DeclaredPhysics:
             dimension = dimension_of(declared.exponents)
             known = physics.types.get(declared.name, "absent")
             if known != "absent" and known != dimension:
-                was = "built-in" if declared.name in library.PHYSICAL_TYPES else "declared"
-                physics.problems.append(Diagnostic(declared.location, f"type {declared.name!r} is {_show(dimension)} here but {_show(known)} as {was}", "give the type another name, or its exponents"))
+                where = "in the standard library (osc.physical)" if declared.name in standard_library().types else "where declared before"
+                physics.problems.append(Diagnostic(declared.location, f"type {declared.name!r} is {_show(dimension)} here but {_show(known)} {where}", "give the type another name, or its exponents"))
                 continue
             physics.types[declared.name] = dimension
     for osc in files:

@@ -1,0 +1,130 @@
+"""The standard library shipped as ``.osc`` files (``pytest_roadlogic/stdlib/osc/``), read once.
+
+``import osc.standard`` names these files, and they are where the standard's declarations live:
+the physical types and units with their factors (the unit table every literal is read with), the
+enums, the actor hierarchy, the actions, modifiers and condition methods with their parameters.
+The tool's meaning of each construct is in ``pytest_roadlogic.constructs`` (and a test keeps each
+construct's parameters equal to its declaration here); a construct declared here that the tool
+does not provide is refused by name where it is used.
+
+The files are parsed by the project's own parser on first use, not at import: the parser reads
+literals with the unit table this module builds, so the tables are lazy mappings (``LazyTable``).
+"""
+
+from __future__ import annotations
+
+import functools
+from collections.abc import Callable, Iterator, Mapping
+from dataclasses import dataclass
+from pathlib import Path
+
+STDLIB_DIR = Path(__file__).resolve().parent.parent / "stdlib"
+LIBRARY_ROOT = "osc"
+
+
+@dataclass(frozen=True)
+class Declared:
+    """An action, modifier or method of the standard library: its owner type and parameters
+    (name -> declared type), and for a method its return type."""
+
+    name: str
+    owner: str | None
+    parameters: tuple[tuple[str, str], ...]
+    part: str  # the library part that declares it (osc.movement)
+    returns: str | None = None
+
+
+@dataclass(frozen=True)
+class StandardLibrary:
+    parts: dict[str, Path]  # osc.physical -> its file
+    types: dict[str, str | None]  # physical type -> dimension (None: not modelled)
+    units: dict[str, tuple[str, float]]  # modelled unit -> (dimension, SI factor)
+    enums: dict[str, tuple[str, ...]]
+    actors: dict[str, str | None]  # actor type -> parent
+    actions: dict[str, Declared]
+    modifiers: dict[str, Declared]
+    methods: dict[str, Declared]
+    unmodelled_units: dict[str, str]  # a unit of a dimension the pipeline does not model -> its type
+
+    def ancestors(self, actor: str) -> list[str]:
+        """``actor`` and its parents up the hierarchy (empty when it is not a standard actor)."""
+        chain: list[str] = []
+        current: str | None = actor
+        while current is not None and current in self.actors and current not in chain:
+            chain.append(current)
+            current = self.actors[current]
+        return chain
+
+
+def part_file(name: str) -> Path | None:
+    """The file of ``osc.<part>`` (``import osc.physical``), None when there is no such part."""
+    pieces = name.split(".")
+    if pieces[0] != LIBRARY_ROOT or len(pieces) != 2:
+        return None
+    path = STDLIB_DIR / LIBRARY_ROOT / f"{pieces[1]}.osc"
+    return path if path.is_file() else None
+
+
+def part_names() -> list[str]:
+    return sorted(f"{LIBRARY_ROOT}.{p.stem}" for p in (STDLIB_DIR / LIBRARY_ROOT).glob("*.osc"))
+
+
+@functools.cache
+def standard_library() -> StandardLibrary:
+    # imported here: the parser reads literals with UNITS, which this function builds
+    from .parser import parse_file
+    from .physical import dimension_of
+
+    parts = {name: part_file(name) for name in part_names()}
+    files = {name: parse_file(path, {}) for name, path in parts.items()}
+    types: dict[str, str | None] = {}
+    units: dict[str, tuple[str, float]] = {}
+    enums: dict[str, tuple[str, ...]] = {}
+    actors: dict[str, str | None] = {}
+    actions: dict[str, Declared] = {}
+    modifiers: dict[str, Declared] = {}
+    methods: dict[str, Declared] = {}
+    unmodelled: dict[str, str] = {}
+    for part, osc in files.items():
+        for declared in osc.physical_types:
+            types[declared.name] = dimension_of(declared.exponents)
+        for unit in osc.units:
+            if (dimension := dimension_of(unit.exponents)) is not None:
+                units[unit.name] = (dimension, unit.factor)
+            else:
+                unmodelled[unit.name] = unit.type
+        for enum in osc.enums:
+            enums[enum.name] = enum.members
+        for actor in osc.types:
+            actors[actor.name] = actor.parent
+        for action in osc.scenarios:
+            actions[action.name] = Declared(action.name, action.actor_type, tuple((f.name, f.type) for f in action.fields), part)
+        for modifier in osc.modifier_declarations:
+            modifiers[modifier.name] = Declared(modifier.name, modifier.owner, tuple((f.name, f.type) for f in modifier.parameters), part)
+        for extension in osc.extensions:
+            for method in extension.scenario.methods:
+                methods[method.name] = Declared(method.name, extension.target, tuple((f.name, f.type) for f in method.parameters), part, method.return_type)
+    return StandardLibrary(parts, types, units, enums, actors, actions, modifiers, methods, unmodelled)
+
+
+class LazyTable(Mapping):
+    """A read-only table built from the standard library on first use."""
+
+    def __init__(self, build: Callable[[StandardLibrary], Mapping]) -> None:
+        self._build = build
+
+    @functools.cached_property
+    def _table(self) -> Mapping:
+        return self._build(standard_library())
+
+    def __getitem__(self, key):
+        return self._table[key]
+
+    def __iter__(self) -> Iterator:
+        return iter(self._table)
+
+    def __len__(self) -> int:
+        return len(self._table)
+
+    def __repr__(self) -> str:
+        return f"LazyTable({dict(self._table)!r})"

@@ -1,0 +1,106 @@
+"""The standard library shipped as .osc files (pytest_roadlogic/stdlib/osc/): what they declare is
+what the tool reads, and every construct the tool executes is declared there with the same
+parameters, so the library a user reads is the one the checker applies."""
+
+import math
+
+import pytest
+
+from pytest_roadlogic.constructs import CARLA, STANDARD, conditions
+from pytest_roadlogic.frontend import check_text, library
+from pytest_roadlogic.frontend.standard_library import part_file, part_names, standard_library
+from pytest_roadlogic.frontend.units import UNITS
+
+
+def declared_kind(type_name: str) -> str:
+    """A declared parameter type as the signatures name its kind."""
+    lib = standard_library()
+    if type_name == library.ROAD_TYPE:
+        return "road"
+    if type_name in lib.enums:
+        return f"enum:{type_name}"
+    if type_name in lib.actors:
+        return "actor"
+    return type_name
+
+
+@pytest.mark.parametrize("registry", [STANDARD, CARLA], ids=["standard", "carla"])
+def test_every_construct_the_tool_executes_is_declared_with_the_same_parameters(registry):
+    lib = standard_library()
+    for kind, provided, declared in (("action", registry.actions, lib.actions), ("modifier", registry.modifiers, lib.modifiers)):
+        for name, construct in provided.items():
+            assert name in declared, f"the {kind} {name} is provided but stdlib/osc/movement.osc does not declare it"
+            written = {p: declared_kind(t) for p, t in declared[name].parameters}
+            signature = {p.name: p.kind for p in construct.signature.parameters}
+            assert written == signature, f"{kind} {name}: declared {written}, the tool reads {signature}"
+
+
+def test_every_observable_a_condition_reads_is_a_declared_method_with_its_type():
+    methods = standard_library().methods
+    for name, observable in conditions.OBSERVABLES.items():
+        assert name in methods, f"conditions read {name}, which stdlib/osc/methods.osc does not declare"
+        assert methods[name].returns == observable.dimension
+        assert [p for p, _ in methods[name].parameters] == (["reference"] if observable.needs_reference else [])
+
+
+def test_the_unit_table_is_the_one_the_physical_part_declares():
+    lib = standard_library()
+    assert dict(UNITS) == lib.units
+    assert UNITS["kph"] == ("speed", pytest.approx(1 / 3.6)) and UNITS["km"] == ("length", 1000.0)
+    assert UNITS["mph"][1] == 0.44704 and UNITS["min"] == ("time", 60.0)
+    assert "deg" not in UNITS and lib.types["angle"] is None  # declared, not modelled
+    assert dict(library.PHYSICAL_TYPES) == {"length": "length", "time": "time", "speed": "speed", "acceleration": "acceleration"}
+    assert all(math.isfinite(factor) and factor > 0 for _, factor in UNITS.values())
+
+
+def test_the_tools_actor_types_are_the_libraries_road_users():
+    lib = standard_library()
+    for name in (*library.ACTOR_TYPES, *library.SCENARIO_OWNERS, *library.UNSUPPORTED_ACTOR_TYPES):
+        assert name in lib.actors, f"{name} is not declared in stdlib/osc/actors.osc"
+    assert lib.ancestors("car")[:3] == ["car", "vehicle", "movable_object"]
+    assert "vehicle" in lib.ancestors("truck")
+
+
+def test_osc_standard_imports_every_part_and_each_part_imports_alone():
+    assert set(part_names()) >= {"osc.standard", "osc.physical", "osc.types", "osc.actors", "osc.movement", "osc.methods"}
+    standard = part_file("osc.standard").read_text()
+    for part in part_names():
+        if part != "osc.standard":
+            assert f"import {part}" in standard
+    for part in part_names():
+        checked = check_text(f"import {part}\n\nscenario s:\n    a: car\n    do a.drive(duration: 3s) with:\n        speed(20kph)\n")
+        assert not checked.diagnostics, (part, [d.message for d in checked.diagnostics])
+
+
+def test_an_unknown_library_is_an_error_and_an_unknown_part_a_warning():
+    body = "\n\nscenario s:\n    a: car\n    do a.drive(duration: 3s)\n"
+    [error] = check_text("import carla.standard" + body).diagnostics
+    assert (error.severity, error.location.line) == ("error", 1) and "unknown library 'carla.standard'" in error.message
+    [warning] = check_text("import osc.helpers" + body).diagnostics
+    assert warning.severity == "warning" and "no part 'osc.helpers'" in warning.message and "osc.physical" in warning.hint
+
+
+@pytest.mark.parametrize("use, message", [
+    ("a.drive(duration: 3s) with:\n        yaw(at: start)", "not supported: the standard's modifier 'yaw'"),
+    ("a.follow_trajectory(duration: 3s)", "not supported: the standard's action 'follow_trajectory'"),
+    ("a.fly(duration: 3s)", "unknown action 'fly'"),
+])
+def test_a_construct_the_library_declares_and_the_tool_does_not_execute_is_refused_by_name(use, message):
+    checked = check_text(f"scenario s:\n    a: car\n    do {use}\n")
+    errors = [d for d in checked.diagnostics if d.severity == "error"]
+    assert errors and errors[0].message == message, [d.message for d in errors]
+    assert errors[0].location.line in (3, 4)
+
+
+def test_an_actor_derived_from_an_abstract_library_actor_is_driven_as_a_vehicle_with_a_warning():
+    checked = check_text("actor bus inherits movable_object\n\nscenario s:\n    b: bus\n    do b.drive(duration: 3s)\n")
+    [warning] = checked.diagnostics
+    assert warning.severity == "warning" and "driven as a vehicle" in warning.message
+    assert checked.scenarios[0].scenario.actors[0].base == "vehicle"
+
+
+def test_a_unit_of_a_dimension_the_tool_does_not_model_is_refused_by_name():
+    from pytest_roadlogic.frontend import OscError
+
+    with pytest.raises(OscError, match=r"4:13: error: not supported: unit 'deg' \(of angle"):
+        check_text("scenario s:\n    a: car\n    do a.drive(duration: 3s) with:\n        yaw(10deg)\n", "s.osc")
