@@ -21,7 +21,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from . import library, model
+from . import model
 from .errors import Diagnostic, OscError
 from .parser import parse_file
 from .standard_library import standard_library
