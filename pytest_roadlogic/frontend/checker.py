@@ -383,19 +383,22 @@ class _Checker:
         declared = self.types.get(type_name)
         if declared is None or declared.kind != "actor" or type_name in seen:
             return None
-        if declared.parent is None or (declared.parent not in self.types and declared.parent in library.ABSTRACT_ACTOR_TYPES):
+        if self._unrooted(declared):
             return "vehicle"  # a bare actor type (CARLA suites declare `actor Model3`)
         return self._actor_base(declared.parent, seen | {type_name})
+
+    def _unrooted(self, declared: model.TypeDeclaration) -> bool:
+        """A declared actor type with no parent, or whose parent is an abstract actor of the library."""
+        return declared.parent is None or (declared.parent not in self.types and declared.parent in library.ABSTRACT_ACTOR_TYPES)
 
     def _driven_as_vehicle(self, type_name: str) -> bool:
         """Whether a declared actor type reaches no road user and is driven as a vehicle (a warning)."""
         seen: set[str] = set()
         while type_name in self.types and type_name not in seen:
             seen.add(type_name)
-            parent = self.types[type_name].parent
-            if parent is None or (parent not in self.types and parent in library.ABSTRACT_ACTOR_TYPES):
+            if self._unrooted(self.types[type_name]):
                 return True
-            type_name = parent
+            type_name = self.types[type_name].parent
         return False
 
     def _actor_type_names(self) -> list[str]:
