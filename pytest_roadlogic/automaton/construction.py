@@ -30,7 +30,7 @@ from ..frontend import model
 from ..frontend.checked import CheckedScenario
 from ..frontend.errors import error_at
 from .guards import TRUE, Guard, Not, conjunction
-from .model import Location, MeanAcceleration, SymbolicAutomaton, Timing, Transition
+from .model import Location, PhaseBound, SymbolicAutomaton, Timing, Transition
 from .phase import Variant
 from .translation import check_behavior_arguments, duration_interval, phase_guards
 
@@ -109,7 +109,7 @@ class _Builder:
         self.events = {e.name: e for e in checked.scenario.events}
 
     def translate(self, behavior: model.Behavior) -> _Fragment:
-        rates: tuple[MeanAcceleration, ...] = ()
+        rates: tuple[PhaseBound, ...] = ()
         if isinstance(behavior, model.Invocation):
             fragment, rates = _atomic(behavior, self.checked, self.counter, self.env)
             if behavior.until is not None:
@@ -201,9 +201,9 @@ class _Builder:
             return conjunction([guard, extra]), event, first and spec.condition is None, timed
         return extra, spec.name, spec.condition is None, None
 
-    def timed(self, fragment: _Fragment, name: str, low: float, high: float, source, rates: tuple[MeanAcceleration, ...] = ()) -> _Fragment:
+    def timed(self, fragment: _Fragment, name: str, low: float, high: float, source, rates: tuple[PhaseBound, ...] = ()) -> _Fragment:
         """Mark the fragment's first and last instants as one timed phase lasting low..high seconds
-        (with the mean accelerations ``rates`` between them)."""
+        (with the bounds ``rates`` over its two ends)."""
         phase = next(self.counter)
         rates = tuple(replace(rate, phase=name) for rate in rates)
         self.timings[phase] = Timing(phase, name, low, high, source, rates)
@@ -221,7 +221,7 @@ def _phase_name(behavior: model.Behavior) -> str:
     return getattr(behavior, "operator", "phase")
 
 
-def _atomic(invocation: model.Invocation, checked: CheckedScenario, counter, env: dict) -> tuple[_Fragment, tuple[MeanAcceleration, ...]]:
+def _atomic(invocation: model.Invocation, checked: CheckedScenario, counter, env: dict) -> tuple[_Fragment, tuple[PhaseBound, ...]]:
     """The phase's fragment, and what it asks of its start and end together."""
     phase = phase_guards(invocation, checked.registry, checked.lanes, env)
     labelled = invocation.label is not None

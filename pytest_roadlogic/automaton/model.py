@@ -27,15 +27,10 @@ class Location:
 
 
 @dataclass(frozen=True)
-class MeanAcceleration:
-    """A bound on what a phase does between its two ends; this class: ``acceleration(a)`` on a phase: the actor's speed changes by ``a`` times the phase's length,
-    (v(end) - v(start)) / duration in low..high (m/s^2).
-
-    Why the mean and not every instant (the standard's ``at: all``): a real vehicle ramps its
-    acceleration up and down (jerk), so an instantaneous bound fails at every phase's first and
-    last instants in a simulation; the mean is what a braking or speeding-up phase is asked for,
-    and it is linear in the speeds at the phase's two ends for a known length (the planner writes
-    one row per length, the monitor reads the two samples)."""
+class PhaseBound:
+    """A bound on what an actor does between a phase's two ends, read from one quantity at its
+    first and last instants: the phase is timed for it, the planner writes linear rows over the
+    two ends, the monitor reads the two samples at which its run starts and ends the phase."""
 
     actor: str
     low: float
@@ -43,16 +38,16 @@ class MeanAcceleration:
     phase: str = ""
     source: SourceLocation | None = None
 
-    # what the bound reads at the phase's two ends: the trace's column and the plan's variable
-    column: ClassVar[str] = "speed"
-    construct: ClassVar[str] = "the acceleration modifier"
-    what: ClassVar[str] = "mean acceleration"
-    symbol: ClassVar[str] = "mean a"  # the value's name in a report: mean a(car1)
-    unit: ClassVar[str] = "m/s^2"
+    # the trace's column it reads at the two ends, and how it is named in messages and reports
+    column: ClassVar[str]
+    construct: ClassVar[str]
+    what: ClassVar[str]
+    symbol: ClassVar[str]  # the value's name in a report: mean a(car1)
+    unit: ClassVar[str]
 
     def value(self, start: float, end: float, seconds: float) -> float:
-        """The mean acceleration over a phase of ``seconds`` from the speeds at its two ends."""
-        return (end - start) / seconds
+        """The bounded value of a phase of ``seconds`` whose column reads ``start`` and ``end``."""
+        raise NotImplementedError
 
     def margin(self, start: float, end: float, seconds: float) -> float:
         """How far inside the range the value lies (in its unit, negative outside)."""
@@ -65,11 +60,30 @@ class MeanAcceleration:
 
 
 @dataclass(frozen=True)
-class Travelled(MeanAcceleration):
+class MeanAcceleration(PhaseBound):
+    """``acceleration(a)`` on a phase: the actor's speed changes by ``a`` times the phase's length,
+    (v(end) - v(start)) / duration in low..high (m/s^2).
+
+    Why the mean and not every instant (the standard's ``at: all``): a real vehicle ramps its
+    acceleration up and down (jerk), so an instantaneous bound fails at every phase's first and
+    last instants in a simulation; the mean is what a braking or speeding-up phase is asked for,
+    and it is linear in the speeds at the phase's two ends for a known length (the planner writes
+    one row per length)."""
+
+    column: ClassVar[str] = "speed"
+    construct: ClassVar[str] = "the acceleration modifier"
+    what: ClassVar[str] = "mean acceleration"
+    symbol: ClassVar[str] = "mean a"
+    unit: ClassVar[str] = "m/s^2"
+
+    def value(self, start: float, end: float, seconds: float) -> float:
+        return (end - start) / seconds
+
+
+@dataclass(frozen=True)
+class Travelled(PhaseBound):
     """``distance(d)`` on a phase: the actor covers d metres in it, x(end) - x(start) in low..high.
-    Like a mean acceleration it reads only the phase's two ends, so it shares its machinery (the
-    timing of the phase, the planner's rows, the monitor's margin); unlike it, it does not depend
-    on the phase's length, and the planner writes one row."""
+    Unlike a mean acceleration it does not depend on the phase's length: the planner writes one row."""
 
     column: ClassVar[str] = "x"
     construct: ClassVar[str] = "the distance modifier"
@@ -85,15 +99,15 @@ class Travelled(MeanAcceleration):
 class Timing:
     """How long a phase may last, in seconds: from the transition that starts it to the one that ends it.
 
-    ``high`` may be infinite: a phase that is timed only for its ``rates`` (mean accelerations and distances travelled,
-    that need the phase's start and end) and has no ``duration:``."""
+    ``high`` may be infinite: a phase that is timed only for its ``rates`` (``PhaseBound``s: mean
+    accelerations and distances travelled) and has no ``duration:``."""
 
     phase: int
     name: str
     low: float
     high: float
     source: SourceLocation | None = None
-    rates: tuple[MeanAcceleration, ...] = ()
+    rates: tuple[PhaseBound, ...] = ()
 
     def admits(self, seconds: float, tolerance: float = 1e-6) -> bool:
         return self.low - tolerance <= seconds <= self.high + tolerance

@@ -12,7 +12,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from .guards import TRUE, Guard, conjunction
-from .model import MeanAcceleration
+from .model import PhaseBound
 
 
 @dataclass(frozen=True)
@@ -32,7 +32,7 @@ class Phase:
     variants: list[Variant] = field(default_factory=lambda: [Variant()])
     drives: bool = True  # whether the actor must make forward progress in this phase
     # what the phase asks of its start and end together (they hold in every variant)
-    rates: list[MeanAcceleration] = field(default_factory=list)
+    rates: list[PhaseBound] = field(default_factory=list)
 
     def add(self, start: Guard = TRUE, end: Guard = TRUE, invariant: Guard = TRUE) -> None:
         self.variants = [

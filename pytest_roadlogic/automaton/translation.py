@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING
 
 from ..frontend import model
 from ..frontend.errors import error_at
-from ..frontend.tolerances import DURATION_TOLERANCE
+from ..frontend.tolerances import DURATION_TOLERANCE, widened
 from ..frontend.units import TIME
 from ..frontend.values import argument_range
 from .phase import Phase
@@ -63,9 +63,8 @@ def duration_interval(argument: model.Argument, env: dict) -> tuple[float, float
     low, high = argument_range(argument, TIME, "a time such as 5s or [2..4]s", env)
     if low < 0:
         raise error_at(argument.location, "a duration must not be negative")
-    if low == high:
-        low, high = max(0.0, low - DURATION_TOLERANCE), high + DURATION_TOLERANCE
-    return low, high
+    low, high = widened(low, high, DURATION_TOLERANCE)
+    return max(0.0, low), high
 
 
 def check_behavior_arguments(composition: model.Composition) -> None:

@@ -32,7 +32,7 @@ from ..automaton.guards import HEADWAY, POSITION, SPEED as SPEED_Q, Bound, Guard
 from ..frontend import model
 from ..frontend.errors import error_at
 from ..frontend.library import refused_call
-from ..frontend.tolerances import SPEED_TOLERANCE
+from ..frontend.tolerances import SPEED_TOLERANCE, widened
 from ..frontend.units import LENGTH, SPEED, TIME
 from ..frontend.values import EvaluationError, argument_interval, describe
 
@@ -88,8 +88,8 @@ def condition_guard(condition: model.Expression, env: dict, actors: Collection[s
             raise error_at(right.location, f"{observable.name} is {describe(observable.dimension)}, compared here with {describe(value.dimension)}", "write the value with a unit of the same kind")
         low = value.low if operator in (">", ">=", "==") else -math.inf
         high = value.high if operator in ("<", "<=", "==") else math.inf
-        if operator == "==" and low == high and observable.dimension == SPEED:
-            low, high = low - SPEED_TOLERANCE, high + SPEED_TOLERANCE
+        if operator == "==" and observable.dimension == SPEED:
+            low, high = widened(low, high, SPEED_TOLERANCE)
         return Bound(term, low, high, condition.location)
     refused = refused_call(condition)
     if refused is not None:

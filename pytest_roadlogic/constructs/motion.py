@@ -8,7 +8,7 @@ from ..automaton.model import Travelled
 from ..automaton.phase import Phase
 from ..frontend import model
 from ..frontend.library import DURATION, Binding, Parameter, Signature
-from ..frontend.tolerances import POSITION_TOLERANCE, STANDSTILL
+from ..frontend.tolerances import POSITION_TOLERANCE, STANDSTILL, widened
 from ..frontend.units import LENGTH
 from .base import Action, CheckContext, Modifier, Use
 
@@ -52,10 +52,8 @@ class Distance(Modifier):
             context.error(binding["distance"].value.location, "a distance travelled must not be negative", "vehicles drive forward; e.g. distance([50..80]m)")
 
     def translate(self, use: Use, phase: Phase) -> None:
-        low, high = use.range("distance", LENGTH, "a length such as 50m or [50..80]m")
-        if low == high:
-            low, high = max(0.0, low - POSITION_TOLERANCE), high + POSITION_TOLERANCE
-        phase.rates.append(Travelled(use.actor, low, high, source=use.location))
+        low, high = widened(*use.range("distance", LENGTH, "a length such as 50m or [50..80]m"), POSITION_TOLERANCE)
+        phase.rates.append(Travelled(use.actor, max(0.0, low), high, source=use.location))
 
 
 class Along(Modifier):

@@ -6,7 +6,7 @@ from __future__ import annotations
 from ..automaton.guards import HEADWAY, POSITION, Bound, Guard, Term
 from ..frontend.errors import error_at
 from ..frontend.library import AT, Parameter, Signature
-from ..frontend.tolerances import HEADWAY_TOLERANCE, POSITION_TOLERANCE
+from ..frontend.tolerances import HEADWAY_TOLERANCE, POSITION_TOLERANCE, widened
 from ..frontend.units import LENGTH, TIME
 from .base import AnchoredModifier, Use
 
@@ -39,11 +39,10 @@ class Position(AnchoredModifier):
         low, high = use.range(argument, dimension, example)
         if low < 0:
             raise error_at(use.argument(argument).location, f"{what} must not be negative", hint="use behind: instead of ahead_of: (or the reverse)")
-        if low == high:
-            low, high = max(0.0, low - tolerance), high + tolerance
+        low, high = widened(low, high, tolerance)
         keyword, other = relation
         term = Term(quantity, other, use.actor) if keyword == "behind" else Term(quantity, use.actor, other)
-        return Bound(term, low, high, use.location)
+        return Bound(term, max(0.0, low), high, use.location)
 
 
 # the two ways to give the gap, by argument: (quantity, dimension, an example for errors, what it

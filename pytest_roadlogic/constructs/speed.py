@@ -13,7 +13,7 @@ from ..automaton.phase import Phase, Variant
 from ..frontend import model
 from ..frontend.errors import SourceLocation, error_at
 from ..frontend.library import AT, DURATION, Binding, Parameter, Signature
-from ..frontend.tolerances import ACCELERATION_TOLERANCE, SPEED_TOLERANCE
+from ..frontend.tolerances import ACCELERATION_TOLERANCE, SPEED_TOLERANCE, widened
 from ..frontend.units import ACCELERATION, SPEED
 from .base import Action, AnchoredModifier, CheckContext, Modifier, Use
 
@@ -52,8 +52,7 @@ class Speed(AnchoredModifier):
             low = high = 0.0
         else:
             low, high = use.range("speed", SPEED, "a speed such as 20mps or [50..80]kph")
-        if low == high:
-            low, high = low - SPEED_TOLERANCE, high + SPEED_TOLERANCE
+        low, high = widened(low, high, SPEED_TOLERANCE)
         if relation is None:
             return Bound(Term(SPEED_Q, use.actor), max(0.0, low), high, use.location)
         keyword, other = relation
@@ -96,9 +95,7 @@ class ChangeSpeed(Action):
     def translate(self, use: Use, phase: Phase) -> None:
         if use.argument("target") is None:
             raise error_at(use.location, "change_speed() needs a target speed, e.g. change_speed(target: 20mps)")
-        low, high = use.range("target", SPEED, "a speed such as 20mps")
-        if low == high:
-            low, high = low - SPEED_TOLERANCE, high + SPEED_TOLERANCE
+        low, high = widened(*use.range("target", SPEED, "a speed such as 20mps"), SPEED_TOLERANCE)
         phase.add(end=Bound(Term(SPEED_Q, use.actor), max(0.0, low), high, use.location))
         if use.argument("rate_peak") is not None:
             _, peak = use.range("rate_peak", ACCELERATION, "an acceleration such as 3mpss")
@@ -113,9 +110,7 @@ class AssignSpeed(Action):
     signature = Signature("assign_speed", (Parameter("target", "speed", positional=True), DURATION), required=(("target",),), description="the speed at the phase's start")
 
     def translate(self, use: Use, phase: Phase) -> None:
-        low, high = use.range("target", SPEED, "a speed such as 20mps")
-        if low == high:
-            low, high = low - SPEED_TOLERANCE, high + SPEED_TOLERANCE
+        low, high = widened(*use.range("target", SPEED, "a speed such as 20mps"), SPEED_TOLERANCE)
         phase.add(start=Bound(Term(SPEED_Q, use.actor), max(0.0, low), high, use.location))
 
 
@@ -139,9 +134,7 @@ class Acceleration(Modifier):
         return True
 
     def translate(self, use: Use, phase: Phase) -> None:
-        low, high = use.range("acceleration", ACCELERATION, "an acceleration such as -3mpsps or [-6..-3]mpsps")
-        if low == high:
-            low, high = low - ACCELERATION_TOLERANCE, high + ACCELERATION_TOLERANCE
+        low, high = widened(*use.range("acceleration", ACCELERATION, "an acceleration such as -3mpsps or [-6..-3]mpsps"), ACCELERATION_TOLERANCE)
         phase.rates.append(MeanAcceleration(use.actor, low, high, source=use.location))
 
 

@@ -11,9 +11,8 @@ are refused by the checker.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-
 from collections.abc import Mapping
+from dataclasses import dataclass, field
 
 from . import model
 from .standard_library import LazyTable

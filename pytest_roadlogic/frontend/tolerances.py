@@ -15,3 +15,8 @@ ACCELERATION_TOLERANCE = 0.5
 DURATION_TOLERANCE = 0.5
 # what "standing still" means for a trace's speed, in m/s
 STANDSTILL = 0.1
+
+
+def widened(low: float, high: float, tolerance: float) -> tuple[float, float]:
+    """A single value (``low == high``) as the band value +- ``tolerance``; a range as it is."""
+    return (low - tolerance, high + tolerance) if low == high else (low, high)

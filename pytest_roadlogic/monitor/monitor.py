@@ -115,8 +115,8 @@ def monitor(automaton: SymbolicAutomaton, trace: Trace) -> Verdict:
     progress = {a: (np.diff(trace.actors[a]["x"]) > 0).tolist() for a in trace.names}
     # the columns the phases' two-end bounds read (speed for a mean acceleration, x for a distance)
     columns = {column: {a: trace.actors[a][column].tolist() for a in trace.names} for column in _end_columns(automaton)}
-    # the mean acceleration that came closest to its range where all else held, for the report:
-    # (margin, sample, location, rate)
+    # the bound over a phase's two ends that came closest to its range where all else held, for
+    # the report: (margin, sample, location, rate)
     rate_miss: tuple[float, int, int, object] | None = None
     # A run's state in a location: the samples at which its open timed phases started (empty when
     # the scenario has no durations). states[q]: that key -> (smallest robustness so far, run).
@@ -189,10 +189,10 @@ def monitor(automaton: SymbolicAutomaton, trace: Trace) -> Verdict:
 
 def _advance(key: tuple, starts: tuple, ends: tuple, k: int, times, timings, columns) -> tuple[tuple, float, tuple | None] | None:
     """The timed-phase state after a transition that starts the timed phases ``starts`` and ends
-    ``ends`` at sample ``k``; the smallest margin of the durations (s) and mean accelerations
-    (m/s^2) it ends; and the worst mean acceleration it misses, (margin, rate), if any. None when
-    a duration is broken (that is no run, like a missed progress); a missed mean acceleration is
-    a negative margin, as a missed guard is."""
+    ``ends`` at sample ``k``; the smallest margin of the durations (s) and the bounds over their
+    two ends (``PhaseBound``, in their units) it ends; and the worst such bound it misses,
+    (margin, rate), if any. None when a duration is broken (that is no run, like a missed
+    progress); a missed bound is a negative margin, as a missed guard is."""
     if not starts and not ends:
         return key, math.inf, None
     started = dict(key)
