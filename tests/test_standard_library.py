@@ -104,3 +104,15 @@ def test_a_unit_of_a_dimension_the_tool_does_not_model_is_refused_by_name():
 
     with pytest.raises(OscError, match=r"4:13: error: not supported: unit 'deg' \(of angle"):
         check_text("scenario s:\n    a: car\n    do a.drive(duration: 3s) with:\n        yaw(10deg)\n", "s.osc")
+
+
+def test_a_file_that_declares_a_library_unit_as_another_dimension_is_told_so_at_the_declaration(tmp_path):
+    from pytest_roadlogic.frontend import OscError, check_file
+
+    (tmp_path / "lib.osc").write_text("type length is SI(m: 1)\nunit deg of length is SI(m: 1, factor: 0.5)\n")
+    (tmp_path / "s.osc").write_text("import lib.osc\nscenario s:\n    a, b: car\n    do b.drive(duration: 3s) with:\n        position(40deg, behind: a, at: start)\n")
+    with pytest.raises(OscError) as caught:
+        check_file(tmp_path / "s.osc")
+    report = str(caught.value)
+    assert "lib.osc:2:6: error: unit 'deg' is declared as a length unit, but deg is a unit of angle in the standard library" in report
+    assert "s.osc:5:18: error: not supported: unit 'deg'" in report

@@ -544,7 +544,7 @@ class _Builder:
             return self.units[unit]
         except KeyError:
             known = ", ".join(sorted(self.units))
-            unmodelled = standard_library().unmodelled_units.get(unit) if self.units is UNITS else None
+            unmodelled = standard_library().unmodelled_units.get(unit)
             if unmodelled is not None:
                 self.error(location, f"not supported: unit {unit!r} (of {unmodelled}, a dimension this tool does not model)", f"the pipeline computes lengths, times, speeds and accelerations; known units: {known}")
             else:

@@ -86,6 +86,13 @@ def declared_physics(files: Iterable[model.OscFile]) -> DeclaredPhysics:
             if unit.factor <= 0:
                 physics.problems.append(Diagnostic(unit.location, f"unit {unit.name!r} needs a positive factor", "factor: SI units per unit, e.g. 0.277777778 for kph"))
                 continue
+            standard_type = standard_library().unmodelled_units.get(unit.name)
+            if standard_type is not None:
+                physics.problems.append(Diagnostic(
+                    unit.location, f"unit {unit.name!r} is declared as a {dimension} unit, but {unit.name} is a unit of {standard_type} in the standard library (osc.physical)",
+                    "give the unit another name",
+                ))
+                continue
             known = UNITS.get(unit.name) or physics.units.get(unit.name)
             if known is not None and (known[0] != dimension or not math.isclose(known[1], unit.factor, rel_tol=FACTOR_TOLERANCE)):
                 physics.problems.append(Diagnostic(
@@ -115,14 +122,26 @@ def parse_with_declared_units(path: str | Path) -> tuple[model.OscFile, dict[str
     try:
         return parse_file(path), UNITS
     except OscError as error:
-        if not any(d.message.startswith("unknown unit") for d in error.diagnostics):
+        if not any(d.message.startswith(_UNRESOLVED_UNIT) for d in error.diagnostics):
             raise
         original = error
-    physics = declared_physics(_closure(Path(path)))
-    if not physics.units:
-        raise original
-    table = physics.table()
-    return parse_file(path, table), table
+    files = _closure(Path(path))
+    physics = declared_physics(files)
+    try:
+        if not physics.units:
+            raise original
+        table = physics.table()
+        return parse_file(path, table), table
+    except OscError as error:
+        if not physics.problems:
+            raise
+        # a unit still unresolved may be one whose declaration is wrong: report that as well
+        sources = {**{f.path: f.source_text for f in files}, **error.sources}
+        raise OscError([*physics.problems, *error.diagnostics], error.source_text, sources) from None
+
+
+# how the parser reports a unit that its table does not resolve (Builder.unit)
+_UNRESOLVED_UNIT = ("unknown unit", "not supported: unit")
 
 
 def _closure(path: Path) -> list[model.OscFile]:
