@@ -68,3 +68,11 @@ def test_an_unknown_dialect_is_refused_by_name():
 
     with pytest.raises(OptionError, match="dialect: 'carla2' is not a dialect; give standard or carla"):
         RunSettings.from_texts({"dialect": "carla2"})
+
+
+def test_every_dialect_option_value_has_its_registry_and_no_registry_lacks_an_option():
+    from pytest_roadlogic import settings
+    from pytest_roadlogic.constructs import DIALECTS
+
+    assert tuple(DIALECTS) == settings.DIALECTS
+    assert all(registry.dialect == name for name, registry in DIALECTS.items())

@@ -14,7 +14,7 @@ from .lanes import LANE_CONVENTION
 # in the order hints list them ("known actions: drive, remain_stationary, ...")
 STANDARD = Registry((*motion.CONSTRUCTS, *lanes.CONSTRUCTS, *speed.CONSTRUCTS, *position.CONSTRUCTS, *pending.CONSTRUCTS))
 CARLA = STANDARD.extended(*carla.CONSTRUCTS, dialect=carla.DIALECT)
-# by the names settings.DIALECTS lists
+# by their names, which settings.DIALECTS lists (the options' values)
 DIALECTS = {STANDARD.dialect: STANDARD, CARLA.dialect: CARLA}
 
 __all__ = ["Action", "AnchoredModifier", "CARLA", "CheckContext", "Construct", "DIALECTS", "LANE_CONVENTION", "Modifier", "Registry", "STANDARD", "Use"]

@@ -24,6 +24,7 @@ from ..frontend import model
 from ..frontend.errors import SourceLocation, error_at
 from ..frontend.library import Binding, Signature, bind
 from ..frontend.values import Interval, argument_interval, argument_range
+from ..settings import STANDARD_DIALECT
 
 AT_VALUES = ("start", "end", "all")
 
@@ -169,7 +170,7 @@ class AnchoredModifier(Modifier):
 class Registry:
     """The actions and modifiers a scenario may use, by name."""
 
-    def __init__(self, constructs: Iterable[Construct] = (), dialect: str = "standard") -> None:
+    def __init__(self, constructs: Iterable[Construct] = (), dialect: str = STANDARD_DIALECT) -> None:
         self.dialect = dialect  # whose conventions the constructs follow, for messages and case files
         self.actions: dict[str, Action] = {}
         self.modifiers: dict[str, Modifier] = {}

@@ -12,10 +12,11 @@ Everything else is the standard's. The dialect is chosen by ``--dialect carla`` 
 
 from __future__ import annotations
 
+from ..settings import CARLA_DIALECT
 from .lanes import Lane
 from .speed import Speed
 
-DIALECT = "carla"
+DIALECT = CARLA_DIALECT
 CARLA_LANE_CONVENTION = "in CARLA's dialect lanes are numbered from 1 on the left (lane(1) is the leftmost); lane(k, from: right) counts from the right"
 
 

@@ -17,6 +17,7 @@ from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from ..settings import STANDARD_DIALECT
 from . import library, model
 from .checked import CheckedFile, CheckedScenario
 from .errors import Diagnostic, OscError, SourceLocation
@@ -91,9 +92,9 @@ class _Checker:
             # automaton imports the front end (a module-level import would be circular)
             from ..constructs import DIALECTS
 
-            if (dialect or "standard") not in DIALECTS:
+            if (dialect or STANDARD_DIALECT) not in DIALECTS:
                 raise ValueError(f"unknown dialect {dialect!r}; give one of {', '.join(DIALECTS)}")
-            registry = DIALECTS[dialect or "standard"]
+            registry = DIALECTS[dialect or STANDARD_DIALECT]
         self.registry = registry
         self.requested_lanes = lanes
         # The road of the scenario being checked, and why it has that many lanes (for error messages).
@@ -633,7 +634,7 @@ class _Checker:
             binding = self._arguments(signature, modifier.arguments, modifier.location, scenario, env, set(), set(), what=f"{modifier.name}()")
             if modifier.name == "set_map":
                 hint = "give the road's lanes with path_min_driving_lanes(n)"
-                if self.registry.dialect == "standard":
+                if self.registry.dialect == STANDARD_DIALECT:
                     hint += "; a file written for CARLA's scenario runner is read with --dialect carla (pytest: --roadlogic-dialect carla or roadlogic_dialect = carla): lanes numbered from the left, speed(v) a target"
                 self.warning(modifier.location, "the map is not available: the scenario runs on one straight road", hint)
                 continue
