@@ -21,6 +21,7 @@ from ..settings import STANDARD_DIALECT
 from . import library, model
 from .checked import CheckedFile, CheckedScenario
 from .errors import Diagnostic, OscError, SourceLocation
+from .inheritance import inherited
 from .invocation import called_scenarios, expand_calls
 from .parameters import ParameterSpace, parameter_space
 from .parser import parse_file, parse_text
@@ -138,10 +139,18 @@ class _Checker:
             if extension.target not in self.scenarios and extension.target not in own:
                 self.error(extension.location, f"extend names an unknown scenario {extension.target!r}", self._known("scenarios", [*self.scenarios, *own]))
         seen: dict[str, model.Scenario] = {}
-        callable_ = {**self.scenarios, **{s.name: s for s in main.scenarios}}
+        declared = {**self.scenarios, **{s.name: s for s in main.scenarios}}
+        # every scenario with the extends that name it and the members it inherits, before calls are expanded
+        # (a call of a scenario that inherits runs the whole of it)
+        extended = {name: _extended(s, extensions) for name, s in declared.items()}
+        callable_ = {}
+        for name, scenario in extended.items():
+            callable_[name], problems = inherited(scenario, extended)
+            if scenario.path == main.path:
+                self.diagnostics.extend(problems)
         is_action = lambda name: self.registry.action(name) is not None  # noqa: E731
         # a scenario another one of this file calls is checked (and run) as part of its callers
-        called = {name for s in main.scenarios for name in called_scenarios(s, callable_, is_action)}
+        called = {name for s in main.scenarios for name in called_scenarios(callable_.get(s.name, s), callable_, is_action)}
         for scenario in main.scenarios:
             if scenario.name in called and scenario.name not in seen:
                 seen[scenario.name] = scenario
@@ -154,9 +163,8 @@ class _Checker:
                 other = self.scenarios[scenario.name].location
                 self.error(scenario.location, f"scenario {scenario.name!r} is already declared in {other.path}:{other.line}", "rename one of them")
             seen[scenario.name] = scenario
-            for extension in extensions:
-                if extension.target == scenario.name:
-                    scenario = _extend(scenario, extension.scenario)
+            scenario, problems = inherited(_extended(scenario, extensions), extended)
+            self.diagnostics.extend(problems)  # the same as above, unless two scenarios share this name
             scenario, problems = expand_calls(scenario, callable_, is_action, lambda f: self._field_kind(self._aliased(f)) == "actor")
             self.diagnostics.extend(problems)
             checked, space, lanes = self._scenario(scenario, globals_)
@@ -267,8 +275,6 @@ class _Checker:
             self._unsupported(item)
         if scenario.kind == "action":
             self.error(scenario.location, "not supported: action declarations", "declare a scenario instead")
-        if scenario.parent is not None:
-            self.error(scenario.location, "not supported: scenario inheritance", "copy the members, or use extend to add to a scenario")
         owner = scenario.actor_type
         if owner is not None and owner not in library.SCENARIO_OWNERS and self._actor_base(owner) is None:
             self.error(scenario.location, f"unknown actor type {owner!r}", self._known("actor types", [*library.SCENARIO_OWNERS, *self._actor_type_names()]))
@@ -334,7 +340,7 @@ class _Checker:
                 )
         for relation in space.relations:
             used_names.update(n.name for n in names_in(relation.expression))
-        for parameter in parameters:
+        for parameter in parameters if scenario.behaviors else ():  # without a do: a base to inherit from
             if parameter.name not in used_names and parameter in scenario.fields:
                 self.warning(parameter.location, f"parameter {parameter.name!r} is never used")
         if scenario.behaviors:
@@ -737,6 +743,14 @@ def _mentions(scenario: model.Scenario, actor: str) -> bool:
                 if any(isinstance(a.value, model.Name) and a.value.name == actor for a in arguments):
                     return True
     return False
+
+
+def _extended(scenario: model.Scenario, extensions) -> model.Scenario:
+    """``scenario`` with the members of every ``extend`` block that names it, in file order."""
+    for extension in extensions:
+        if extension.target == scenario.name:
+            scenario = _extend(scenario, extension.scenario)
+    return scenario
 
 
 def _extend(scenario: model.Scenario, extra: model.Scenario) -> model.Scenario:
