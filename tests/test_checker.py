@@ -181,7 +181,7 @@ CASES = [
     ('empty_range', HEAD + "    gap: length with:\n        keep(it >= 20m)\n        keep(it <= 10m)\n",
      "6:9: error: parameter 'gap' is constrained to an empty range"),
     ('default_outside', HEAD + "    gap: length = 50m with:\n        keep(it <= 10m)\n        keep(it >= 1m)\n",
-     "4:5: warning: parameter 'gap' is never used"),
+     "4:19: warning: the default of 'gap' (50m) lies outside its range [1..10]m; it is ignored"),
     ('default_wrong_kind', HEAD + "    gap: length = 5s\n",
      "4:19: error: 'gap' is a length but this is a time"),
     ('keep_wrong_kind', HEAD + "    gap: length with:\n        keep(it in [1..2]s)\n",
