@@ -30,9 +30,9 @@ from pytest_roadlogic.simulation import Trace
 
 ROOT = Path(__file__).resolve().parent.parent
 # The benchmark suite, and corpus files that add what it lacks: waits, durations, one_of, side_of,
-# time headways.
+# time headways, a distance travelled.
 SCENARIOS = sorted((ROOT / "scenarios").glob("*.osc")) + [
-    ROOT / "tests" / "corpus" / name for name in ("16_one_of.osc", "19_lane_relative.osc", "27_wait.osc", "28_durations.osc", "46_time_headway.osc")
+    ROOT / "tests" / "corpus" / name for name in ("16_one_of.osc", "19_lane_relative.osc", "27_wait.osc", "28_durations.osc", "46_time_headway.osc", "106_traveled_distance_condition.osc")
 ]
 DT = 0.5
 # Placements enumerated per example at most: keeps the brute force to about a second.

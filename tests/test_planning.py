@@ -49,7 +49,6 @@ def check_run(plan, automaton):
     """The guards in order, at strictly increasing steps, ending in the final location; every
     invariant at every step spent in its location; every timed phase within its bounds, and its
     actors' mean accelerations (speed at its end minus speed at its start, over its length) within theirs."""
-    vehicles = plan.vehicles
     location = automaton.initial
     last_step = -1
     started = {}
@@ -59,8 +58,8 @@ def check_run(plan, automaton):
         assert step > last_step or (step == 0 and last_step == -1)
         for k in range(last_step + 1, step):
             invariant = automaton.location(location).invariant
-            assert invariant.holds({v: plan.at(v, k) for v in vehicles}), f"invariant {invariant} fails at step {k}"
-        snapshot = {v: plan.at(v, step) for v in vehicles}
+            assert invariant.holds(plan.snapshot(k)), f"invariant {invariant} fails at step {k}"
+        snapshot = plan.snapshot(step)
         assert transition.guard.holds(snapshot), f"guard {transition.guard} fails at step {step}"
         for phase in transition.starts & automaton.timings.keys():
             started[phase] = step

@@ -13,6 +13,11 @@ A time headway ``h(a, b)`` is the gap ``p(a) - p(b)`` over the speed of ``b``, t
 the seconds ``b`` needs to reach where ``a`` is now (``position(time: t, behind: a)``). It is not
 linear, but a bound on it is, for the follower's speed is never negative: ``lo <= h <= hi`` is
 ``p(a) - p(b) - lo v(b) >= 0`` and ``p(a) - p(b) - hi v(b) <= 0`` (how the planner writes it).
+
+The distance an actor has travelled, ``d(a)``, is its position now minus its position at the
+run's first instant: the plan's step 0, which is the simulation's first sample (OpenSCENARIO XML's
+TraveledDistanceCondition). A snapshot carries it as ``traveled``, for it needs the first state,
+which one instant does not have.
 """
 
 from __future__ import annotations
@@ -29,9 +34,10 @@ POSITION = "position"
 LANE = "lane"
 SPEED = "speed"
 HEADWAY = "headway"
-QUANTITIES = (POSITION, LANE, SPEED, HEADWAY)
-SYMBOL = {POSITION: "p", LANE: "l", SPEED: "v", HEADWAY: "h"}
-UNIT = {POSITION: "m", LANE: "lanes", SPEED: "m/s", HEADWAY: "s"}
+TRAVELED = "traveled"
+QUANTITIES = (POSITION, LANE, SPEED, HEADWAY, TRAVELED)
+SYMBOL = {POSITION: "p", LANE: "l", SPEED: "v", HEADWAY: "h", TRAVELED: "d"}
+UNIT = {POSITION: "m", LANE: "lanes", SPEED: "m/s", HEADWAY: "s", TRAVELED: "m"}
 # the follower's speed a headway is divided by at least (m/s): standing still, the headway to a
 # car ahead is very long, not infinite (a number the monitor can compare and report)
 HEADWAY_SPEED_FLOOR = 0.1
@@ -46,6 +52,7 @@ class ActorState(Protocol):
     position: float
     lane: int
     speed: float
+    traveled: float  # position minus the position at the scenario's first instant
 
 
 Snapshot = Mapping[str, ActorState]
@@ -54,7 +61,8 @@ Snapshot = Mapping[str, ActorState]
 @dataclass(frozen=True)
 class Term:
     """``x(actor)`` or the difference ``x(actor) - x(reference)`` for one quantity x; for a
-    headway, ``h(actor, reference)``: (p(actor) - p(reference)) / v(reference)."""
+    headway, ``h(actor, reference)``: (p(actor) - p(reference)) / v(reference); for a distance
+    travelled, ``d(actor)`` (no reference)."""
 
     quantity: str
     actor: str
@@ -81,8 +89,8 @@ class Term:
         return text if self.reference is None else f"{text} - {s}({self.reference})"
 
 
-# quantity -> trace column
-COLUMN = {POSITION: "x", LANE: "lane", SPEED: "speed"}
+# quantity -> trace column (a distance travelled is the x column minus its first value)
+COLUMN = {POSITION: "x", LANE: "lane", SPEED: "speed", TRAVELED: "x"}
 
 
 class Guard:
@@ -130,6 +138,8 @@ class Bound(Guard):
         else:
             column = COLUMN[self.term.quantity]
             value = np.asarray(columns[self.term.actor][column], dtype=float)
+            if self.term.quantity == TRAVELED:
+                value = value - value[0]
             if self.term.reference is not None:
                 value = value - np.asarray(columns[self.term.reference][column], dtype=float)
         slack = 0.5 if self.term.quantity == LANE else 0.0

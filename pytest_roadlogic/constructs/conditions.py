@@ -10,6 +10,9 @@ guard algebra (so the planner and the monitor read it alike):
 - ``a.time_headway(reference: b)``: that distance over a's speed, ``h(b, a)``: the seconds ``a``
   needs to reach where ``b`` is now.
 - ``a.relative_speed(reference: b)``: ``v(a) - v(b)``, positive when ``a`` is faster.
+- ``a.traveled_distance()``: the metres ``a`` has covered since the run's first instant (the
+  plan's step 0, the simulation's first sample), ``d(a) = p(a) - p(a at start)`` (OpenSCENARIO XML's TraveledDistanceCondition; the standard's
+  DSL library has no method for it, so the name follows the XML's condition).
 
 A strict comparison is read as its closed form (``<`` as ``<=``): the boundary instant has measure
 zero, and a planner cannot keep a strict margin of nothing. A comparison with a range that is
@@ -28,7 +31,7 @@ from collections.abc import Collection
 from dataclasses import dataclass
 from typing import Callable
 
-from ..automaton.guards import HEADWAY, POSITION, SPEED as SPEED_Q, Bound, Guard, Not, Or, Term, conjunction
+from ..automaton.guards import HEADWAY, POSITION, SPEED as SPEED_Q, TRAVELED, Bound, Guard, Not, Or, Term, conjunction
 from ..frontend import model
 from ..frontend.errors import error_at
 from ..frontend.library import refused_call
@@ -54,6 +57,7 @@ OBSERVABLES = {
         Observable("space_headway", LENGTH, lambda a, b: Term(POSITION, b, a), True),
         Observable("time_headway", TIME, lambda a, b: Term(HEADWAY, b, a), True),
         Observable("relative_speed", SPEED, lambda a, b: Term(SPEED_Q, a, b), True),
+        Observable("traveled_distance", LENGTH, lambda a, _: Term(TRAVELED, a), False),
     )
 }
 _MIRROR = {"<": ">", "<=": ">=", ">": "<", ">=": "<=", "==": "=="}

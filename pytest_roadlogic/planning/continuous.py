@@ -21,7 +21,7 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 from fractions import Fraction
 
-from ..automaton.guards import HEADWAY, LANE, POSITION, SPEED, And, Bound, Guard, Not, Or
+from ..automaton.guards import HEADWAY, LANE, POSITION, SPEED, TRAVELED, And, Bound, Guard, Not, Or
 from ..automaton.model import SymbolicAutomaton, Travelled
 from .linear import THEORY, LazyLinearTheory
 from .errors import HorizonTooShort, NoPlanError, PlanningTimeout
@@ -201,9 +201,11 @@ def stopping(automaton: SymbolicAutomaton, settings: ContinuousSettings) -> set[
 
 def _terms(bound: Bound) -> tuple[str, str]:
     """The variable of a position or speed bound's quantity, and the &sum elements of its term."""
-    variable = "p" if bound.term.quantity == POSITION else "v"
+    variable = "p" if bound.term.quantity in (POSITION, TRAVELED) else "v"
     term = bound.term
     elements = f"{variable}({_atom(term.actor)},t)"
+    if term.quantity == TRAVELED:  # d(a) = p(a,t) - p(a,0)
+        elements += f"; -1*p({_atom(term.actor)},0)"
     if term.reference is not None:
         elements += f"; -1*{variable}({_atom(term.reference)},t)"
     return variable, elements
@@ -212,7 +214,7 @@ def _terms(bound: Bound) -> tuple[str, str]:
 def _margin(bound: Bound, settings: ContinuousSettings) -> float:
     if bound.term.quantity == HEADWAY:
         return settings.headway_margin
-    return settings.position_margin if bound.term.quantity == POSITION else settings.speed_margin
+    return settings.position_margin if bound.term.quantity in (POSITION, TRAVELED) else settings.speed_margin
 
 
 def _compared(bound: Bound, value: float) -> tuple[str, str]:

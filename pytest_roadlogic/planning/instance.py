@@ -16,7 +16,7 @@ import math
 import random
 from dataclasses import dataclass
 
-from ..automaton.guards import HEADWAY, LANE, POSITION, SPEED, And, Bound, Guard, Not, Or
+from ..automaton.guards import HEADWAY, LANE, POSITION, SPEED, TRAVELED, And, Bound, Guard, Not, Or
 from ..automaton.model import SymbolicAutomaton
 from ..settings import DEFAULT_HORIZON, DEFAULT_PLAN_TIMEOUT
 from ..frontend.errors import OscError, error_at
@@ -314,12 +314,12 @@ def _guard_rules(node: int, guard: Guard, numbering: dict[Guard, int], settings:
         return junction_rules(node, guard, numbering)
     if isinstance(guard, Not):  # on a bound (negation normal form): outside the range, with a margin
         assert isinstance(guard.part, Bound)
-        if guard.part.term.quantity == HEADWAY:
-            raise _needs_continuous(guard.part.source, HEADWAY_CONSTRUCT, "the grid encoding cannot express it")
+        if guard.part.term.quantity in _CONTINUOUS_ONLY:
+            raise _needs_continuous(guard.part.source, _CONTINUOUS_ONLY[guard.part.term.quantity], "the grid encoding cannot express it")
         return _outside_rules(node, guard.part, settings, switch)
     assert isinstance(guard, Bound)
-    if guard.term.quantity == HEADWAY:
-        raise _needs_continuous(guard.source, HEADWAY_CONSTRUCT, "the grid encoding cannot express it")
+    if guard.term.quantity in _CONTINUOUS_ONLY:
+        raise _needs_continuous(guard.source, _CONTINUOUS_ONLY[guard.term.quantity], "the grid encoding cannot express it")
     if guard.term.quantity == POSITION:
         return _position_rules(node, guard, settings, switch)
     return _bound_rule(head, guard, settings)
@@ -328,6 +328,8 @@ def _guard_rules(node: int, guard: Guard, numbering: dict[Guard, int], settings:
 # the grid's positions and speeds are separate integer fluents: a time headway (a gap over a
 # speed) has no rule there
 HEADWAY_CONSTRUCT = "a time headway (position(time: ...))"
+# nor the metres travelled since the start, which the grid's position differences do not carry
+_CONTINUOUS_ONLY = {HEADWAY: HEADWAY_CONSTRUCT, TRAVELED: "a distance travelled (traveled_distance())"}
 
 
 def _needs_continuous(source, construct: str, why: str) -> OscError:

@@ -15,6 +15,13 @@ class PlanState:
     speed: float
 
 
+@dataclass(frozen=True)
+class PlanSnapshot(PlanState):
+    """A vehicle at one step as a guard reads it: with the metres travelled since step 0."""
+
+    traveled: float = 0.0
+
+
 @dataclass
 class Plan:
     dt: float
@@ -42,6 +49,13 @@ class Plan:
 
     def at(self, vehicle: str, step: int) -> PlanState:
         return self.states[vehicle][step]
+
+    def snapshot(self, step: int) -> dict[str, PlanSnapshot]:
+        """Every vehicle at ``step``, as the guards of the automaton read it."""
+        return {
+            v: PlanSnapshot(s[step].position, s[step].lane, s[step].speed, s[step].position - s[0].position)
+            for v, s in self.states.items()
+        }
 
     def to_dict(self) -> dict:
         return {

@@ -13,11 +13,13 @@ COLUMNS = ("x", "y", "heading", "speed", "acceleration", "lane")
 
 @dataclass(frozen=True)
 class ActorSnapshot:
-    """An actor's state at one instant, as guards see it (``position`` is the centre's x)."""
+    """An actor's state at one instant, as guards see it (``position`` is the centre's x;
+    ``traveled``, that x minus the x of the trace's first sample)."""
 
     position: float
     lane: int
     speed: float
+    traveled: float = 0.0
 
 
 @dataclass(frozen=True)
@@ -48,7 +50,7 @@ class Trace:
 
     def snapshot(self, index: int) -> dict[str, ActorSnapshot]:
         return {
-            name: ActorSnapshot(float(c["x"][index]), int(c["lane"][index]), float(c["speed"][index]))
+            name: ActorSnapshot(float(c["x"][index]), int(c["lane"][index]), float(c["speed"][index]), float(c["x"][index] - c["x"][0]))
             for name, c in self.actors.items()
         }
 

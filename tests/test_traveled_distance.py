@@ -1,0 +1,69 @@
+"""A condition over the distance travelled: ``a.traveled_distance()`` is d(a) = p(a) - p(a at the
+scenario's first instant). The planner writes it as p(a,t) - p(a,0), the monitor measures x - x[0]
+on the trace; both read the one Bound of the guard algebra."""
+
+import numpy as np
+import pytest
+
+from pytest_roadlogic.automaton import build_automaton
+from pytest_roadlogic.automaton.guards import TRAVELED, Bound, Term
+from pytest_roadlogic.frontend import OscError, check_text
+from pytest_roadlogic.planning import Planner, PlanningSettings
+from pytest_roadlogic.planning.continuous import ContinuousPlanner
+from tests.test_planning_continuous import check_continuous_plan
+
+# the follower is not the vehicle at position 0, so its start position is not 0 in the plan
+FOLLOW_THEN_PASS = """\
+scenario s:
+    lead: car
+    ego: car
+    do serial:
+        follow: parallel:
+            lead.drive() with:
+                lane(1)
+                speed([20mps..22mps])
+            ego.drive() with:
+                lane(1)
+                position([25m..40m], behind: lead, at: start)
+                until ego.traveled_distance() >= 120m and ego.traveled_distance() <= 140m
+        ego.change_lane(side: left, duration: [3s..4s])
+"""
+
+
+def automaton(text):
+    checked = check_text(text, "t.osc")
+    assert not checked.errors, checked.report()
+    return build_automaton(checked.scenarios[0])
+
+
+def test_the_condition_is_a_bound_on_the_distance_travelled_of_its_actor():
+    assert "d(ego) >= 120 and d(ego) <= 140" in automaton(FOLLOW_THEN_PASS).describe()
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3])
+def test_a_plan_ends_the_phase_where_the_follower_has_covered_120_to_140_m_from_its_own_start(seed):
+    a = automaton(FOLLOW_THEN_PASS)
+    plan = ContinuousPlanner(a, seed=seed).first()
+    check_continuous_plan(plan, a)
+    (end_step,) = [step for step, tid in plan.transitions if a.location(a.transitions[tid].target).name.startswith("ego.change_lane")]
+    covered = plan.at("ego", end_step).position - plan.at("ego", 0).position
+    assert 120 <= covered <= 140
+    assert plan.at("ego", 0).position != 0, "the test means something only when the ego does not start at 0"
+
+
+def test_the_monitor_measures_from_the_first_sample_not_from_the_origin():
+    bound = Bound(Term(TRAVELED, "a"), 100.0)
+    margins = bound.robustness_series({"a": {"x": np.array([500.0, 550.0, 620.0])}})
+    assert margins.tolist() == [-100.0, -50.0, 20.0]
+
+
+def test_the_grid_encoding_refuses_it_at_its_place():
+    with pytest.raises(OscError) as error:
+        Planner(automaton(FOLLOW_THEN_PASS), PlanningSettings(), seed=1).first()
+    (diagnostic,) = error.value.diagnostics
+    assert (diagnostic.location.line, "a distance travelled") == (12, diagnostic.message[:20])
+
+
+def test_it_is_a_length_compared_with_a_length():
+    checked = check_text(FOLLOW_THEN_PASS.replace(">= 120m", ">= 12s"), "t.osc")
+    assert any("traveled_distance is a length, compared here with a time" in d.message for d in checked.errors), checked.report()
