@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import ast
 import math
+import re
 from pathlib import Path
 from typing import Mapping
 
@@ -30,6 +31,14 @@ from .units import UNITS, split_physical_literal
 
 ACTOR_TYPES = ("car", "truck", "vehicle", "stationary_object")
 
+
+
+_QUALIFIER = re.compile(r"(?:[A-Za-z_][A-Za-z0-9_]*|\|[^|]*\|)?::")
+
+
+def unqualified(text: str) -> str:
+    """A name as the tool reads it: a 2.1 namespace qualifier (``osc::car``, ``::car``) dropped."""
+    return _QUALIFIER.sub("", text) if "::" in text else text
 
 class _CollectingListener(ErrorListener):
     """Collects syntax errors as diagnostics, worded for people rather than for grammar authors."""
@@ -198,6 +207,7 @@ class _Builder:
                     unsupported.append(model.Unsupported("namespace", self.loc(decl), "declare names at the top level of the file"))
                 elif isinstance(decl, P.ExportStatementContext):
                     unsupported.append(model.Unsupported("export", self.loc(decl), "every top-level declaration is visible to an importing file"))
+        unsupported.extend(self.qualified_names(ctx))
         return model.OscFile(
             path=self.path,
             scenarios=tuple(scenarios),
@@ -234,10 +244,27 @@ class _Builder:
                 exponents.append((argument.name, value.value))
         return tuple(exponents), factor
 
+    def qualified_names(self, ctx) -> list[model.Unsupported]:
+        """Every 2.1 namespace qualifier (``ns::name``), refused at its place: the tool reads one
+        namespace per run, so a qualifier would be ignored rather than honoured. The builder
+        reads each name without it (``unqualified``), so that the refusal is the only error."""
+        found = []
+        stack = [ctx]
+        while stack:
+            node = stack.pop()
+            if isinstance(node, TerminalNode):
+                continue
+            if isinstance(node, (P.IdentifierContext, P.ExportSpecificationContext)) and node.DOUBLECOLON() is not None:
+                text = node.getText()
+                found.append(model.Unsupported(f"the namespace qualifier in {text!r}", self.loc(node), "namespaces are not read: drop the qualifier and keep names unique across the files of a run"))
+                continue
+            stack.extend(node.getChildren())
+        return sorted(found, key=lambda u: (u.location.line, u.location.column))
+
     def import_(self, ctx: P.ImportStatementContext) -> model.Import:
         if ctx.StringLiteral() is not None:
             return model.Import(self.string(ctx.StringLiteral().getText()), True, self.loc(ctx.StringLiteral()))
-        return model.Import(ctx.dottedName().getText(), False, self.loc(ctx.dottedName()))
+        return model.Import(unqualified(ctx.dottedName().getText()), False, self.loc(ctx.dottedName()))
 
     def scenario(self, ctx: P.ScenarioDeclarationContext) -> model.Scenario:
         name_ctx = ctx.behaviorName()
@@ -356,7 +383,7 @@ class _Builder:
     def event_specification(self, ctx: P.EventSpecificationContext) -> model.EventSpecification:
         if ctx.AT_SIGN() is not None:
             condition = self.expression(ctx.expression()) if ctx.expression() is not None else None
-            return model.EventReference(ctx.dottedName().getText(), condition, self.loc(ctx))
+            return model.EventReference(unqualified(ctx.dottedName().getText()), condition, self.loc(ctx))
         return self.expression(ctx.expression())
 
     def method(self, ctx: P.MethodDeclarationContext) -> model.Method:
@@ -364,9 +391,9 @@ class _Builder:
         if ctx.parameterList() is not None:
             for p in ctx.parameterList().parameter():
                 default = self.expression(p.expression()) if p.expression() is not None else None
-                parameters.append(model.Field(self.name(p.identifier()), p.typeDeclarator().getText(), default, (), self.loc(p)))
+                parameters.append(model.Field(self.name(p.identifier()), unqualified(p.typeDeclarator().getText()), default, (), self.loc(p)))
         body = self.expression(ctx.expression()) if ctx.expression() is not None else None
-        return_type = ctx.typeDeclarator().getText() if ctx.typeDeclarator() is not None else None
+        return_type = unqualified(ctx.typeDeclarator().getText()) if ctx.typeDeclarator() is not None else None
         return model.Method(self.name(ctx.identifier()), tuple(parameters), return_type, body, ctx.EXTERNAL() is not None, self.loc(ctx.identifier()))
 
     # -------------------------------------------------------------- behavior
@@ -561,7 +588,7 @@ class _Builder:
             return text[1:-1]
 
     def name(self, ctx) -> str:
-        text = ctx.getText() if hasattr(ctx, "getText") else ctx.text
+        text = unqualified(ctx.getText() if hasattr(ctx, "getText") else ctx.text)
         if text.startswith("|") and text.endswith("|"):
             return text[1:-1]
         return text

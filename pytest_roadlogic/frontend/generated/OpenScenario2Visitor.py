@@ -104,6 +104,11 @@ class OpenScenario2Visitor(ParseTreeVisitor):
         return self.visitChildren(ctx)
 
 
+    # Visit a parse tree produced by OpenScenario2Parser#exportSpecification.
+    def visitExportSpecification(self, ctx:OpenScenario2Parser.ExportSpecificationContext):
+        return self.visitChildren(ctx)
+
+
     # Visit a parse tree produced by OpenScenario2Parser#scenarioMember.
     def visitScenarioMember(self, ctx:OpenScenario2Parser.ScenarioMemberContext):
         return self.visitChildren(ctx)
@@ -371,6 +376,11 @@ class OpenScenario2Visitor(ParseTreeVisitor):
 
     # Visit a parse tree produced by OpenScenario2Parser#identifier.
     def visitIdentifier(self, ctx:OpenScenario2Parser.IdentifierContext):
+        return self.visitChildren(ctx)
+
+
+    # Visit a parse tree produced by OpenScenario2Parser#simpleIdentifier.
+    def visitSimpleIdentifier(self, ctx:OpenScenario2Parser.SimpleIdentifierContext):
         return self.visitChildren(ctx)
 
 

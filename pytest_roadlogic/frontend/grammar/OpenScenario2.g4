@@ -3,8 +3,8 @@
 // Written for this project from the language description in the standard (section 7.2) and
 // docs/os2-subset.md. It covers the syntax of ASAM OpenSCENARIO DSL 2.x: constructs the tool does
 // not execute (on, call, cover/record, namespace/export, var and sample, external methods, type
-// tests, user modifiers) parse here so that the checker can refuse them by name and place
-// instead of a syntax error. Not covered: the 2.1 namespace qualifier `ns::name`.
+// tests, user modifiers, the 2.1 namespace qualifier `ns::name`) parse here so that the checker can
+// refuse them by name and place instead of a syntax error.
 //
 // The layout is Python-like: the lexer emits NEWLINE tokens, and
 // pytest_roadlogic.frontend.lexer.IndentingLexer turns leading whitespace into the INDENT and
@@ -119,7 +119,12 @@ namespaceStatement
     ;
 
 exportStatement
-    : EXPORT dottedName (COMMA dottedName)* NEWLINE
+    : EXPORT exportSpecification (COMMA exportSpecification)* NEWLINE
+    ;
+
+exportSpecification
+    : dottedName
+    | (simpleIdentifier? DOUBLECOLON)? STAR
     ;
 
 // ---------------------------------------------------------------- members
@@ -307,6 +312,10 @@ dottedName
 // Keywords that only start a construct in one place may still name things elsewhere, as the
 // standard allows (`namespace: string` in a struct, a method called `sample`).
 identifier
+    : (qualifier=simpleIdentifier? DOUBLECOLON)? simpleIdentifier  // 2.1: `ns::name`, `::name` (the global namespace)
+    ;
+
+simpleIdentifier
     : Identifier
     | QuotedIdentifier
     | ACTION
@@ -392,6 +401,7 @@ SAMPLE         : 'sample' ;
 DOUBLEDOT : '..' ;
 DOT       : '.' ;
 COMMA     : ',' ;
+DOUBLECOLON : '::' ;
 COLON     : ':' ;
 ARROW     : '->' ;
 IMPLIES   : '=>' ;
