@@ -78,15 +78,22 @@ class KeepSpeedAction(Action):
 class ChangeSpeed(Action):
     """``change_speed(target)``: the target speed (+- the tolerance for a single value) at the phase's
     end. ``rate_peak: a``: the phase's mean acceleration lies within -a..a (a mean, as for the
-    ``acceleration`` modifier: the plan keeps it, the car's instantaneous peak is not checked)."""
+    ``acceleration`` modifier: the plan keeps it, the car's instantaneous peak is not checked).
+    ``rate_profile: smooth`` is what every run does (the motion planner's trajectories are
+    jerk-optimal); ``constant`` and ``asap`` shape the profile inside the phase, which the plan
+    does not fix, so they are refused rather than silently read as smooth."""
 
     signature = Signature(
         "change_speed",
-        (Parameter("target", "speed", positional=True), DURATION, Parameter("rate_profile", "enum:rate_profile", supported=False), Parameter("rate_peak", "acceleration")),
+        (Parameter("target", "speed", positional=True), DURATION, Parameter("rate_profile", "enum:rate_profile"), Parameter("rate_peak", "acceleration")),
         required=(("target",),), description="reach the target speed",
     )
 
     def check(self, binding: Binding, context: CheckContext) -> None:
+        profile = binding["rate_profile"]
+        if profile is not None and isinstance(profile.value, model.Name) and profile.value.name.rpartition(".")[2] in ("constant", "asap"):
+            context.error(profile.location, f"not supported: rate_profile: {profile.value.name.rpartition('.')[2]} (the speed's shape inside the phase)",
+                          "the plan fixes the speed at the phase's ends: bound the mean rate with rate_peak, or drop rate_profile (smooth is what every run does)")
         peak = binding["rate_peak"]
         value = context.evaluate(peak) if peak is not None else None
         if value is not None and value.low <= 0:
