@@ -10,6 +10,9 @@ guard algebra (so the planner and the monitor read it alike):
 - ``a.time_headway(reference: b)``: that distance over a's speed, ``h(b, a)``: the seconds ``a``
   needs to reach where ``b`` is now.
 - ``a.relative_speed(reference: b)``: ``v(a) - v(b)``, positive when ``a`` is faster.
+- ``a.relative_lane(reference: b)``: how many lanes ``a`` is to the left of ``b`` (0: the same
+  lane, -1: one lane to its right), ``l(b) - l(a)`` with lanes counted from the left. Left and
+  right mean the same in both dialects, so the condition does not depend on how lanes are numbered.
 - ``a.traveled_distance()``: the metres ``a`` has covered since the run's first instant (the
   plan's step 0, the simulation's first sample), ``d(a) = p(a) - p(a at start)`` (OpenSCENARIO XML's TraveledDistanceCondition; the standard's
   DSL library has no method for it, so the name follows the XML's condition).
@@ -31,7 +34,7 @@ from collections.abc import Collection
 from dataclasses import dataclass
 from typing import Callable
 
-from ..automaton.guards import HEADWAY, POSITION, SPEED as SPEED_Q, TRAVELED, Bound, Guard, Not, Or, Term, conjunction
+from ..automaton.guards import HEADWAY, LANE, POSITION, SPEED as SPEED_Q, TRAVELED, Bound, Guard, Not, Or, Term, conjunction
 from ..frontend import model
 from ..frontend.errors import error_at
 from ..frontend.library import refused_call
@@ -45,7 +48,7 @@ class Observable:
     """A method a condition may call on an actor, as a term of the guard algebra."""
 
     name: str
-    dimension: str
+    dimension: str | None  # None: a plain number (a count of lanes)
     term: Callable[[str, str | None], Term]  # (actor, reference) -> term
     needs_reference: bool
 
@@ -58,6 +61,7 @@ OBSERVABLES = {
         Observable("time_headway", TIME, lambda a, b: Term(HEADWAY, b, a), True),
         Observable("relative_speed", SPEED, lambda a, b: Term(SPEED_Q, a, b), True),
         Observable("traveled_distance", LENGTH, lambda a, _: Term(TRAVELED, a), False),
+        Observable("relative_lane", None, lambda a, b: Term(LANE, b, a), True),
     )
 }
 _MIRROR = {"<": ">", "<=": ">=", ">": "<", ">=": "<=", "==": "=="}

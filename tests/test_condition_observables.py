@@ -1,6 +1,7 @@
-"""A condition over the distance travelled: ``a.traveled_distance()`` is d(a) = p(a) - p(a at the
-scenario's first instant). The planner writes it as p(a,t) - p(a,0), the monitor measures x - x[0]
-on the trace; both read the one Bound of the guard algebra."""
+"""What a condition reads beyond speeds and gaps. The distance travelled: ``a.traveled_distance()``
+is d(a) = p(a) - p(a at the run's first instant). The planner writes it as p(a,t) - p(a,0), the monitor measures x - x[0]
+on the trace; both read the one Bound of the guard algebra. The relative lane:
+``a.relative_lane(reference: b)``, the lanes a is to the left of b."""
 
 import numpy as np
 import pytest
@@ -67,3 +68,16 @@ def test_the_grid_encoding_refuses_it_at_its_place():
 def test_it_is_a_length_compared_with_a_length():
     checked = check_text(FOLLOW_THEN_PASS.replace(">= 120m", ">= 12s"), "t.osc")
     assert any("traveled_distance is a length, compared here with a time" in d.message for d in checked.errors), checked.report()
+
+
+def test_relative_lane_counts_the_lanes_to_the_left_of_the_reference_in_either_dialect():
+    text = "scenario s:\n    a: car\n    b: car\n    do a.drive() with:\n        until a.relative_lane(reference: b) >= 1\n"
+    (guard,) = [t.guard for t in automaton(text).transitions if t.label.endswith("end")]
+
+    class At:  # lanes counted from the left, as the guard algebra counts them
+        def __init__(self, lane):
+            self.position, self.lane, self.speed, self.traveled = 0.0, lane, 10.0, 0.0
+
+    assert guard.holds({"a": At(0), "b": At(1)}), "a in the leftmost lane is one lane left of b"
+    assert not guard.holds({"a": At(1), "b": At(1)})
+    assert not guard.holds({"a": At(2), "b": At(1)})
