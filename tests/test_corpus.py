@@ -180,7 +180,7 @@ RUNNABLE = [
     ("95_scenario_calls_positional.osc", None), ("99_same_lane_relative.osc", None), ("100_until_condition_or.osc", None),
     ("101_stationary_obstacle_dodge.osc", None), ("103_time_headway_ahead.osc", None), ("104_acceleration_then_distance.osc", None),
     ("105_scenario_inheritance.osc", None), ("106_traveled_distance_condition.osc", None),
-    ("107_relative_lane_condition.osc", None),
+    ("107_relative_lane_condition.osc", None), ("108_builtin_end_event.osc", None),
 ]
 
 

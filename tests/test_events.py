@@ -182,3 +182,44 @@ def test_the_realistic_event_scenarios_check_and_build():
         assert not checked.errors, checked.report()
         build_automaton(checked.scenarios[0])
 
+
+
+BUILTIN = """\
+scenario s:
+    a: car
+    b: car
+    do parallel:
+        serial:
+            pass_b: a.change_lane(side: left, duration: [3s..4s])
+            a.drive(duration: [2s..3s])
+        serial:
+            b.drive() with:
+                until @pass_b.{edge}
+            b.drive(duration: [{after}])
+"""
+
+
+def test_a_wait_for_a_phases_built_in_end_event_ends_at_the_instant_that_phase_ends():
+    a = automaton(BUILTIN.format(edge="end", after="2s..3s"))
+    ending = [t for t in a.transitions if "pass_b end" in t.events]
+    assert ending, a.describe()
+    for t in ending:
+        assert {"pass_b.end emitted", "b.drive end"} <= set(t.events), t.events
+    assert all("pass_b end" in t.events for t in a.transitions if "pass_b.end emitted" in t.events)
+
+
+def test_a_wait_for_a_phases_built_in_start_event_ends_at_the_instant_that_phase_starts():
+    text = BUILTIN.replace(
+        "            pass_b: a.change_lane(side: left, duration: [3s..4s])\n            a.drive(duration: [2s..3s])\n",
+        "            a.drive(duration: [2s..3s])\n            pass_b: a.change_lane(side: left, duration: [3s..4s])\n",
+    )
+    a = automaton(text.format(edge="start", after="3s..4s"))
+    starting = [t for t in a.transitions if "pass_b.start emitted" in t.events]
+    assert starting and all({"pass_b start", "b.drive end"} <= set(t.events) for t in starting), a.describe()
+
+
+def test_a_built_in_event_of_a_label_no_phase_has_is_an_error_that_lists_the_labels():
+    checked = check_text(BUILTIN.format(edge="end", after="2s..3s").replace("@pass_b.end", "@pass.end"), "e.osc")
+    (error,) = checked.errors
+    assert (error.location.line, error.message) == (10, "@pass.end is the end of the phase labelled 'pass', and no phase has that label")
+    assert "labels here: pass_b" in error.hint

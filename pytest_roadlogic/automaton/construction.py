@@ -193,7 +193,7 @@ class _Builder:
             return condition_guard(spec, self.env, self.actors), None, False, None
         declared = self.events.get(spec.name)
         if declared is None or spec.name in seen:
-            what = "a built-in event" if declared is None else "an event defined through itself"
+            what = "an undeclared event" if declared is None else "an event defined through itself"
             raise error_at(spec.location, f"not supported yet by the automaton: @{spec.name} ({what})", hint="wait for an event the scenario declares and emits, or on a condition")
         extra = condition_guard(spec.condition, self.env, self.actors) if spec.condition is not None else TRUE
         if declared.specification is not None:  # event e is @other / is (condition) / is elapsed(t)

@@ -20,6 +20,7 @@ from typing import TYPE_CHECKING
 from ..settings import STANDARD_DIALECT
 from . import library, model
 from .checked import CheckedFile, CheckedScenario
+from .builtin_events import EDGES, with_builtin_events
 from .errors import Diagnostic, OscError, SourceLocation
 from .inheritance import inherited
 from .invocation import called_scenarios, expand_calls
@@ -167,6 +168,7 @@ class _Checker:
             self.diagnostics.extend(problems)  # the same as above, unless two scenarios share this name
             scenario, problems = expand_calls(scenario, callable_, is_action, lambda f: self._field_kind(self._aliased(f)) == "actor")
             self.diagnostics.extend(problems)
+            scenario = with_builtin_events(scenario)
             checked, space, lanes = self._scenario(scenario, globals_)
             scenarios.append(CheckedScenario(checked, space, lanes, self.registry, self.sources))
         self.diagnostics = list(dict.fromkeys(self.diagnostics))
@@ -688,9 +690,13 @@ class _Checker:
         if isinstance(spec, model.EventReference):
             events = {e.name: e for e in scenario.events}
             if spec.name not in events:
-                last = spec.name.split(".")[-1]
-                hint = "the tool does not plan built-in events yet; declare one and emit it" if last in ("start", "end") else f"declare it: event {spec.name}"
-                self.error(spec.location, f"unknown event {spec.name!r}" if last not in ("start", "end") else f"not supported: @{spec.name}", hint)
+                label, _, edge = spec.name.rpartition(".")
+                if edge in EDGES:  # with_builtin_events declared those of every labelled phase
+                    labels = sorted({n.label for b in scenario.behaviors for n in model.walk(b) if getattr(n, "label", None)})
+                    self.error(spec.location, f"@{spec.name} is the {edge} of the phase labelled {label!r}, and no phase has that label",
+                               f"label the phase ({label}: ...); labels here: {', '.join(labels) or 'none'}")
+                else:
+                    self.error(spec.location, f"unknown event {spec.name!r}", f"declare it: event {spec.name}")
                 return
             declared = events[spec.name]
             if declared.specification is None and spec.name not in self._emitted(scenario):
