@@ -108,7 +108,10 @@ def _inline_ranges(checked: CheckedScenario):
         if isinstance(node, model.Invocation):
             phase = node.label or f"{node.actor}.{node.action}"
             action = registry.action(node.action)
-            yield from _ranges_of(phase, node.arguments, bind(action.signature, node.arguments) if action else None)
+            binding = bind(action.signature, node.arguments) if action else None
+            # an action held throughout (keep_space_gap): its values bound the phase; its duration is a parameter
+            held = action is not None and action.held_throughout(binding)
+            yield from _ranges_of(phase, node.arguments, binding, action, only=("duration",) if held else None)
             for modifier in node.modifiers:
                 construct = registry.modifier(modifier.name)
                 binding = bind(construct.signature, modifier.arguments) if construct else None
@@ -123,11 +126,13 @@ def _inline_ranges(checked: CheckedScenario):
                     yield f"{node.label or 'wait'}.{node.condition.function}", argument.value, None
 
 
-def _ranges_of(prefix: str, arguments: tuple[model.Argument, ...], binding: Binding | None, construct=None):
+def _ranges_of(prefix: str, arguments: tuple[model.Argument, ...], binding: Binding | None, construct=None, only: tuple[str, ...] | None = None):
     named = {id(a): n for n, a in binding.arguments.items()} if binding is not None else {}
     for argument in arguments:
         if isinstance(argument.value, model.Range):
             name = argument.name or named.get(id(argument), "value")
+            if only is not None and name not in only:
+                continue
             yield f"{prefix}.{name}", argument.value, construct.sampled_as(name) if construct is not None else None
 
 

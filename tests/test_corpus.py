@@ -181,6 +181,7 @@ RUNNABLE = [
     ("101_stationary_obstacle_dodge.osc", None), ("103_time_headway_ahead.osc", None), ("104_acceleration_then_distance.osc", None),
     ("105_scenario_inheritance.osc", None), ("106_traveled_distance_condition.osc", None),
     ("107_relative_lane_condition.osc", None), ("108_builtin_end_event.osc", None),
+    ("42_gap_actions.osc", None), ("75_keep_space_gap.osc", None), ("76_change_time_gap.osc", None),
 ]
 
 

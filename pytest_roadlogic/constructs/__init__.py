@@ -7,12 +7,12 @@ makes one with more constructs. To add a construct: write its class (signature, 
 module here and its ``CONSTRUCTS`` in ``STANDARD``.
 """
 
-from . import carla, lanes, motion, pending, position, speed
+from . import carla, gaps, lanes, motion, pending, position, speed
 from .base import Action, AnchoredModifier, CheckContext, Construct, Modifier, Registry, Use
 from .lanes import LANE_CONVENTION
 
 # in the order hints list them ("known actions: drive, remain_stationary, ...")
-STANDARD = Registry((*motion.CONSTRUCTS, *lanes.CONSTRUCTS, *speed.CONSTRUCTS, *position.CONSTRUCTS, *pending.CONSTRUCTS))
+STANDARD = Registry((*motion.CONSTRUCTS, *lanes.CONSTRUCTS, *speed.CONSTRUCTS, *position.CONSTRUCTS, *gaps.CONSTRUCTS, *pending.CONSTRUCTS))
 CARLA = STANDARD.extended(*carla.CONSTRUCTS, dialect=carla.DIALECT)
 # by their names, which settings.DIALECTS lists (the options' values)
 DIALECTS = {STANDARD.dialect: STANDARD, CARLA.dialect: CARLA}

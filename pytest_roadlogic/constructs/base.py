@@ -120,7 +120,8 @@ class Construct:
 
     def held_throughout(self, binding: Binding) -> bool:
         """Whether this use's values bound the whole phase (``at: all``) rather than one instant:
-        its ranges are then bounds the plan stays within, not logical parameters (sampling.py)."""
+        its ranges are then bounds the plan stays within, not logical parameters (sampling.py).
+        For an action, every argument but its ``duration`` (which stays a parameter)."""
         return False
 
     def sampled_as(self, argument: str) -> str | None:

@@ -1,0 +1,83 @@
+"""The standard's gap actions: the actor follows a reference at a space gap or a time gap.
+
+- ``keep_space_gap(gap, reference: r)``: throughout the phase, r is ahead by the gap, p(r) - p(a)
+  (centres, as ``position`` measures); ``keep_time_gap(gap, reference: r)``: the same as a time
+  headway, the gap over the actor's speed (``position(time:)``'s quantity).
+- ``change_space_gap(target, reference: r)``, ``change_time_gap(target, reference: r)``: the gap
+  is the target at the phase's end.
+
+A gap is the follower's: the reference is ahead (a vehicle that must lead its reference writes
+``position(d, ahead_of: r)``). ``direction: lateral`` is refused: a lateral gap needs lateral
+positions, which the plan does not have. A single value is read +- the tolerance of ``position``.
+A kept range holds throughout the phase, so it is a bound the plan stays within, not a sampled
+parameter; a change's target is one instant's, so it is one.
+"""
+
+from __future__ import annotations
+
+from typing import ClassVar
+
+from ..automaton.guards import HEADWAY, POSITION, Bound, Term
+from ..automaton.phase import Phase
+from ..frontend import model
+from ..frontend.errors import error_at
+from ..frontend.library import DURATION, Binding, Parameter, Signature
+from ..frontend.tolerances import HEADWAY_TOLERANCE, POSITION_TOLERANCE, widened
+from ..frontend.units import LENGTH, TIME
+from .base import Action, CheckContext, Use
+
+
+class GapAction(Action):
+    """One of the four: which argument holds the gap, what it measures, and where it holds."""
+
+    argument: ClassVar[str]  # "gap" (keep) or "target" (change)
+    quantity: ClassVar[str]  # POSITION or HEADWAY
+    anchor: ClassVar[str]  # "all" (keep) or "end" (change)
+
+    def check(self, binding: Binding, context: CheckContext) -> None:
+        direction = binding["direction"]
+        if direction is not None and isinstance(direction.value, model.Name) and direction.value.name.rpartition(".")[2] == "lateral":
+            context.error(direction.location, f"not supported: {self.name}(direction: lateral)",
+                          "a lateral gap needs lateral positions, which the plan does not have: use lane(side_of: ...)")
+
+    def held_throughout(self, binding: Binding) -> bool:
+        return self.anchor == "all"
+
+    def sampled_as(self, argument: str) -> str | None:
+        return "headway" if self.quantity == HEADWAY and argument == self.argument else None
+
+    def translate(self, use: Use, phase: Phase) -> None:
+        dimension, example, what, tolerance = _MEASURES[self.quantity]
+        reference = use.name("reference")  # required: the checker saw to it
+        low, high = use.range(self.argument, dimension, example)
+        if low < 0:
+            raise error_at(use.argument(self.argument).location, f"{what} must not be negative", hint="a gap is to a reference ahead; for one behind, use position(d, ahead_of: ...)")
+        low, high = widened(low, high, tolerance)
+        phase.anchor(Bound(Term(self.quantity, reference, use.actor), max(0.0, low), high, use.location), self.anchor)
+
+
+# by quantity: (dimension, an example for errors, what it is, the tolerance of a single value)
+_MEASURES = {
+    POSITION: (LENGTH, "a length such as 20m", "a space gap", POSITION_TOLERANCE),
+    HEADWAY: (TIME, "a time such as 2s", "a time gap", HEADWAY_TOLERANCE),
+}
+
+
+def _gap_action(name: str, argument: str, quantity: str, anchor: str, description: str) -> GapAction:
+    dimension = _MEASURES[quantity][0]
+    signature = Signature(
+        name,
+        (Parameter(argument, dimension, positional=True), Parameter("direction", "enum:direction"), Parameter("reference", "actor"), DURATION),
+        required=((argument,), ("reference",)),
+        description=description,
+    )
+    attributes = {"signature": signature, "argument": argument, "quantity": quantity, "anchor": anchor, "__doc__": f"``{name}()``: {description}"}
+    return type(name, (GapAction,), attributes)()
+
+
+CONSTRUCTS = (
+    _gap_action("keep_space_gap", "gap", POSITION, "all", "follow the reference at a space gap throughout"),
+    _gap_action("keep_time_gap", "gap", HEADWAY, "all", "follow the reference at a time gap throughout"),
+    _gap_action("change_space_gap", "target", POSITION, "end", "reach a space gap to the reference by the phase's end"),
+    _gap_action("change_time_gap", "target", HEADWAY, "end", "reach a time gap to the reference by the phase's end"),
+)
