@@ -223,3 +223,10 @@ def test_a_built_in_event_of_a_label_no_phase_has_is_an_error_that_lists_the_lab
     (error,) = checked.errors
     assert (error.location.line, error.message) == (10, "@pass.end is the end of the phase labelled 'pass', and no phase has that label")
     assert "labels here: pass_b" in error.hint
+
+
+def test_a_called_scenarios_built_in_event_refers_to_its_own_label_which_the_call_renames():
+    callee = BUILTIN.format(edge="end", after="2s..3s").replace("scenario s:\n    a: car\n    b: car\n", "scenario a.pass_then_go:\n    b: car\n").replace("a.change_lane", "change_lane").replace("a.drive", "drive")
+    a = automaton(callee + "scenario top:\n    a: car\n    b: car\n    do a.pass_then_go()\n")
+    ending = [t for t in a.transitions if "pass_then_go.pass_b end" in t.events]
+    assert ending and all({"pass_b.end emitted", "b.drive end"} <= set(t.events) for t in ending), a.describe()

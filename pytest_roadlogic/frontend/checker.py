@@ -147,6 +147,8 @@ class _Checker:
         callable_ = {}
         for name, scenario in extended.items():
             callable_[name], problems = inherited(scenario, extended)
+            # a callee's @L.end refers to its own label L, which the call renames: mark it first
+            callable_[name] = with_builtin_events(callable_[name])
             if scenario.path == main.path:
                 self.diagnostics.extend(problems)
         is_action = lambda name: self.registry.action(name) is not None  # noqa: E731
@@ -166,9 +168,9 @@ class _Checker:
             seen[scenario.name] = scenario
             scenario, problems = inherited(_extended(scenario, extensions), extended)
             self.diagnostics.extend(problems)  # the same as above, unless two scenarios share this name
+            scenario = with_builtin_events(scenario)
             scenario, problems = expand_calls(scenario, callable_, is_action, lambda f: self._field_kind(self._aliased(f)) == "actor")
             self.diagnostics.extend(problems)
-            scenario = with_builtin_events(scenario)
             checked, space, lanes = self._scenario(scenario, globals_)
             scenarios.append(CheckedScenario(checked, space, lanes, self.registry, self.sources))
         self.diagnostics = list(dict.fromkeys(self.diagnostics))
