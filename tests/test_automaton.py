@@ -59,10 +59,12 @@ def test_absolute_lanes_count_from_the_right_by_default():
 
 
 def test_a_construct_the_automaton_cannot_translate_yet_is_a_located_error():
-    text = "scenario s:\n  a: car\n  do serial:\n    a.drive()\n    a.keep_space_gap(20m)\n"
+    text = "scenario s:\n  a: car\n  b: car\n  do serial:\n    a.drive()\n    a.drive() with:\n      lateral(1m, side_of: b)\n"
+    checked = check_text(text, "d.osc")
+    assert not checked.errors, checked.report()
     with pytest.raises(OscError) as caught:
-        build_automaton(check_text(text, "d.osc").scenarios[0])
-    assert "d.osc:5:5: error: not supported yet by the automaton: action 'keep_space_gap'" in str(caught.value)
+        build_automaton(checked.scenarios[0])
+    assert "d.osc:7:7: error: not supported yet by the automaton: modifier 'lateral'" in str(caught.value)
 
 
 def test_a_modifier_without_at_is_an_invariant_of_its_phase_and_holds_at_both_ends():
