@@ -28,6 +28,7 @@ class Tally:
 
     def __init__(self) -> None:
         self.cases = 0
+        self.discarded = 0  # samples without a plan set aside (no_plan = discard); among the cases
         self.outcomes: Counter[str] = Counter()
         self.seconds: Counter[str] = Counter()
 

@@ -110,7 +110,7 @@ def run_instances(
         seed = sample_seed(seed, values)
     automaton_seconds = time.perf_counter() - start
     planner = planner_for(guide, settings, seed)
-    plans = planner.plans(limit=count * max_tries)
+    plans = _with_fallbacks(planner.plans(limit=count * max_tries), guide, settings, seed, count * max_tries)
     for instance in range(count):
         seconds = {"automaton": automaton_seconds, "planning": 0.0, "simulation": 0.0, "monitoring": 0.0}
         automaton_seconds = 0.0
@@ -132,4 +132,94 @@ def run_instances(
                 break
         if outcome is None:
             return  # the planner has no plan left; the first call raises NoPlanError instead
+        if not outcome.verdict.accepted and outcome.plan.stats.get("thinned_margins"):
+            from .planning import MarginsBind
+
+            raise MarginsBind(settings.describe_margins(), settings.thinned().describe_margins(), outcome.verdict.explain())
+        if not outcome.verdict.accepted and outcome.plan.stats.get("relaxed_limits"):
+            from .planning import LimitsBind
+
+            raise LimitsBind(binding_limits(scenario, values, settings, seed) or _relaxed_names(settings), explanation=outcome.verdict.explain())
         yield outcome
+
+
+# the vehicle limits a plan is tried without, when none exists within them: (field, relaxed value,
+# unit). The relaxed values are beyond any car's, so a plan that needs them names the limit
+RELAXED_LIMITS = (
+    ("max_jerk", 50.0, "m/s^3"), ("min_acceleration", -20.0, "m/s^2"), ("max_acceleration", 12.0, "m/s^2"),
+    ("max_speed", 100.0, "m/s"), ("closing_time", 0.0, "s"),
+)
+
+
+def _relaxed_names(settings) -> list[str]:
+    return [f"{field} {getattr(settings, field):g} {unit} relaxed to {value:g}" for field, value, unit in RELAXED_LIMITS]
+
+
+def binding_limits(scenario: CheckedScenario, values: dict[str, object] | None, settings, seed: int = 1) -> list[str]:
+    """The vehicle limits of ``settings`` (continuous) without which the scenario has a plan at
+    ``values``, each as ``name value -> relaxed``; empty when relaxing them all gives none (the
+    scenario's constraints clash) or when the encoding has no such limits. One at a time first, so
+    that the report names the one that binds; all together when no single one does."""
+    from .planning import NoPlanError, planner_for
+
+    if not hasattr(settings, "thinned"):
+        return []
+    settings = dataclasses.replace(settings.thinned() or settings, explain_unsatisfiable=False)
+    guide = build_automaton(scenario)
+    if values:
+        narrowed, declared = guided(scenario, values, settings.resolution(), settings.margins())
+        guide = build_automaton(narrowed, values=declared)
+        settings = dataclasses.replace(settings, random_start=True)
+        seed = sample_seed(seed, values)
+
+    def plannable(**relaxed) -> bool:
+        try:
+            return next(planner_for(guide, dataclasses.replace(settings, **relaxed), seed).plans(limit=1), None) is not None
+        except NoPlanError:
+            return False
+
+    def named(fields) -> list[str]:
+        return [f"{field} {getattr(settings, field):g} {unit} relaxed to {value:g}" for field, value, unit in RELAXED_LIMITS if field in fields]
+
+    for name, value, _ in RELAXED_LIMITS:
+        if plannable(**{name: value}):
+            return named({name})
+    if plannable(**{field: value for field, value, _ in RELAXED_LIMITS}):
+        return named({field for field, _, _ in RELAXED_LIMITS})
+    return []
+
+
+def _with_fallbacks(plans: Iterator[Plan], guide: SymbolicAutomaton, settings, seed: int, limit: int) -> Iterator[Plan]:
+    """``plans``, or, when the planner has none at all, those of a planner that keeps
+    ``settings.fallback_margins`` of its margins (``stats["thinned_margins"]``), or else those of
+    one that also drives beyond the vehicle limits (``RELAXED_LIMITS``, ``stats["relaxed_limits"]``).
+
+    Why: the margins and the limits are the planner's guesses at what the vehicles can track, not
+    the scenario's constraints; a plan nearer the scenario's edges is simulated and monitored like
+    any other, and an accepted simulation is an instance of the scenario. A scenario with no plan
+    even then raises the first planner's error: its constraints clash."""
+    from .planning import HorizonTooShort, NoPlanError, PlanningTimeout, planner_for
+
+    try:
+        first = next(plans, None)
+    except NoPlanError as error:
+        thinned = settings.thinned() if hasattr(settings, "thinned") else None
+        if thinned is None or isinstance(error, (PlanningTimeout, HorizonTooShort)):
+            raise
+        quiet = dataclasses.replace(thinned, explain_unsatisfiable=False)
+        relaxed = dataclasses.replace(quiet, **{field: value for field, value, _ in RELAXED_LIMITS})
+        for fallback_settings, mark in ((quiet, "thinned_margins"), (relaxed, "relaxed_limits")):
+            try:
+                fallback = planner_for(guide, fallback_settings, seed).plans(limit=limit)
+                plan = next(fallback, None)
+            except NoPlanError:
+                continue
+            while plan is not None:
+                plan.stats[mark] = 1.0
+                yield plan
+                plan = next(fallback, None)
+            return
+        raise error from None
+    if first is not None:
+        yield first
+        yield from plans

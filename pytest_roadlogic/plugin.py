@@ -171,11 +171,11 @@ class ScenarioItem(pytest.Item):
                 for result in runner.base():
                     self._count(result)
             else:
-                runner.refined(self._count, key=self.nodeid.encode())
+                runner.refined(self._count, key=self.nodeid.encode(), discarded=self._discard)
         except ScenarioFailed as failure:
             self._report_failure(runner, failure.result)
         finally:
-            self.user_properties += [("examples", self.tally.cases)]
+            self.user_properties += [("examples", self.tally.cases), ("discarded", self.tally.discarded)]
             self.user_properties += [(key(outcome), self.tally.outcomes[outcome]) for outcome in OUTCOMES]
             self.user_properties += [(f"seconds_{stage}", round(self.tally.seconds[stage], 3)) for stage in STAGES]
 
@@ -193,6 +193,11 @@ class ScenarioItem(pytest.Item):
         if result.failed:
             raise ScenarioFailed(result)
 
+    def _discard(self, result) -> None:
+        """A sample without a plan, set aside (``--roadlogic-no-plan discard``): counted, not failed."""
+        self.tally.add(result.outcome, result.seconds)
+        self.tally.discarded += 1
+
     def _replay(self, runner, case) -> None:
         """The one case of a case file, when it is this item's (other items are skipped)."""
         if Path(case.path).resolve() != self.path.resolve() or case.scenario != self.scenario.name:
@@ -207,10 +212,10 @@ class ScenarioItem(pytest.Item):
         from .planning import UnsatisfiableScenario
         from .sampling import describe_values, logical_parameters
 
+        if result.outcome == NO_PLAN:
+            result = runner.explained(result)  # the search did not ask why; ask for the reported case
         case = result.case
-        why = result.message
-        if result.outcome == NO_PLAN and not isinstance(result.error, UnsatisfiableScenario):
-            why = runner.explain(case, why)  # the search did not ask why; ask for the reported case
+        why = result.error.report() if isinstance(result.error, UnsatisfiableScenario) else result.message
         directory = Path(self.config.rootpath) / _text(self.config, "artifacts") / _safe_name(self.nodeid)
         paths: dict[str, Path] = {}
         if result.run is not None:
@@ -219,7 +224,7 @@ class ScenarioItem(pytest.Item):
             self.tally.seconds["artifacts"] += time.perf_counter() - started
         paths["case"] = case.save(directory / "case.json")
         where = "at" if case.strategy == REFINED else f"at instance {case.instance} of"
-        lines = [f"scenario {self.scenario.name}: {result.outcome} {where} these values (seed {case.seed}, {self.tally.cases} examples run):"]
+        lines = [f"scenario {self.scenario.name}: {result.kind} ({result.outcome}) {where} these values (seed {case.seed}, {self.tally.cases} examples run):"]
         if case.values:
             lines += [f"  {line}" for line in describe_values(logical_parameters(self.scenario), case.values)]
         else:
@@ -233,6 +238,7 @@ class ScenarioItem(pytest.Item):
         lines.append(f"    or: {case.command(paths['case'])}")
         lines.append(f"    or: {case.command()}")
         self.user_properties.append(("verdict", result.outcome))
+        self.user_properties.append(("failure_kind", result.kind))
         self.user_properties.append(("failing_values", json.dumps(case.values, sort_keys=True)))
         self.user_properties.append(("explanation", why.splitlines()[0] if why else ""))
         raise ScenarioFailed(result, "\n".join(lines))
@@ -275,7 +281,8 @@ class SessionSummary:
         outcomes = ", ".join(f"{c.get(key(o), 0)} {o}" for o in OUTCOMES)
         seconds = ", ".join(f"{stage} {c.get(f'seconds_{stage}', 0):.1f} s" for stage in STAGES)
         terminalreporter.write_sep("-", "roadlogic")
-        terminalreporter.write_line(f"{self.items} scenarios, {c.get('examples', 0)} examples: {outcomes}")
+        discarded = f" ({c['discarded']} samples without a plan discarded: --roadlogic-no-plan discard)" if c.get("discarded") else ""
+        terminalreporter.write_line(f"{self.items} scenarios, {c.get('examples', 0)} examples: {outcomes}{discarded}")
         terminalreporter.write_line(f"time per stage: {seconds}")
 
 

@@ -12,6 +12,7 @@ case (``outcomes``), on the seconds per stage, and on how Hypothesis is set up.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import time
 from collections.abc import Callable, Iterator
@@ -21,10 +22,15 @@ from typing import Any
 from .case import Case
 from .frontend import CheckedScenario
 from .outcomes import CONFORMANT, NO_PLAN, NON_CONFORMANT, STAGES, TIMED_OUT
-from .pipeline import Outcome, run_instances
-from .planning import HorizonTooShort, NoPlanError, PlanningTimeout, UnsatisfiableScenario
-from .settings import BASE, REFINED, RunSettings
+from .pipeline import Outcome, binding_limits, run_instances
+from .planning import HorizonTooShort, LimitsBind, NoPlanError, PlanningTimeout, UnsatisfiableScenario
+from .settings import BASE, DISCARD, REFINED, RunSettings
 from .simulation import DriverFactory, SimulationTimeout, Simulator
+
+
+CANNOT_INSTANTIATE = "the scenario cannot be instantiated"
+TOOL_LIMIT = "a limit of the tool binds"
+NOT_ACCEPTED = "the simulation was not accepted"
 
 
 @dataclass
@@ -41,6 +47,20 @@ class CaseResult:
     @property
     def failed(self) -> bool:
         return self.outcome != CONFORMANT
+
+    @property
+    def kind(self) -> str:
+        """Which of the two kinds of failure this is, or neither (the words of reports and JUnit):
+        the scenario cannot be instantiated at these values (its constraints clash), a limit of the
+        tool binds there (margins, horizon, time limit: the message names the setting), or the
+        simulation of the vehicles was not accepted."""
+        if self.outcome == CONFORMANT:
+            return "accepted"
+        if self.outcome == NON_CONFORMANT:
+            return NOT_ACCEPTED
+        if isinstance(self.error, UnsatisfiableScenario) or (self.outcome == NO_PLAN and self.error is not None and type(self.error) is NoPlanError):
+            return CANNOT_INSTANTIATE
+        return TOOL_LIMIT
 
 
 class Runner:
@@ -107,13 +127,18 @@ class Runner:
         except (NoPlanError, SimulationTimeout) as error:
             yield _failure(self.case(strategy=BASE, instance=index), error, started)
 
-    def refined(self, each: Callable[[CaseResult], None], count: int | None = None, search: bool = True, key: bytes | None = None) -> None:
+    def refined(
+        self, each: Callable[[CaseResult], None], count: int | None = None, search: bool = True, key: bytes | None = None,
+        discarded: Callable[[CaseResult], None] = lambda result: None,
+    ) -> None:
         """``count`` (default: ``settings.examples``) samples drawn by Hypothesis, each run and handed to ``each``.
 
         ``search``: a property search, as the plugin runs it: the loaded Hypothesis profile, the
         monitor's robustness fed to ``hypothesis.target``, and a failure that ``each`` raises shrunk
         to the simplest values that still fail (``key`` keeps one example database entry per
-        scenario). Otherwise a plain sample, as the bench draws it: the default profile (a CI
+        scenario). With ``settings.no_plan == "discard"``, a sample without a plan goes to
+        ``discarded`` and is rejected as ``assume(False)`` rejects one (Hypothesis's health check
+        stops an item whose samples mostly have none). Otherwise a plain sample, as the bench draws it: the default profile (a CI
         profile's derandomize would override the seed), generation only, no database; the same seed
         draws the same samples everywhere.
         """
@@ -124,6 +149,7 @@ class Runner:
 
         count = self.settings.examples if count is None else count
         done = 0
+        discard = self.settings.no_plan == DISCARD
 
         def example(values: dict[str, Any]) -> None:
             nonlocal done
@@ -133,6 +159,9 @@ class Runner:
             result = self.run_case(self.case(strategy=REFINED, values=values), explain=False)
             if search and result.run is not None and math.isfinite(result.run.verdict.robustness):
                 hypothesis.target(-result.run.verdict.robustness, label="closeness to failure (-robustness)")
+            if search and discard and result.outcome == NO_PLAN:
+                discarded(result)
+                hypothesis.reject()  # as assume(False): the sample does not count, and too many trip the health check
             each(result)
 
         if key is not None:
@@ -144,7 +173,8 @@ class Runner:
             chosen = hypothesis.settings(
                 # one failure per item: the report is about its shrunk case, whatever kind it is
                 profile, max_examples=count, deadline=None, print_blob=False, report_multiple_bugs=False,
-                suppress_health_check=[*profile.suppress_health_check, HealthCheck.too_slow, HealthCheck.filter_too_much],
+                # samples discarded for having no plan are what the filter health check is for
+                suppress_health_check=[*profile.suppress_health_check, HealthCheck.too_slow, *([] if discard else [HealthCheck.filter_too_much])],
             )
         else:
             chosen = hypothesis.settings(
@@ -153,14 +183,19 @@ class Runner:
             )
         hypothesis.seed(self.settings.seed)(chosen(hypothesis.given(strategy(self.scenario))(example)))()
 
-    def explain(self, case: Case, fallback: str) -> str:
-        """Why ``case`` has no plan: the constraints that cannot hold together, else ``fallback``."""
-        result = self.run_case(case, explain=True)
-        if isinstance(result.error, UnsatisfiableScenario):
-            return result.error.report()
-        if isinstance(result.error, HorizonTooShort):
-            return result.message
-        return fallback
+    def explained(self, result: CaseResult) -> CaseResult:
+        """A case without a plan, run again to say why: the constraints that cannot hold together,
+        or, when the scenario has a plan there with some vehicle limits relaxed, those limits
+        (``LimitsBind``: a setting binds, not the scenario). Other results come back as they are."""
+        if result.outcome != NO_PLAN:
+            return result
+        again = self.run_case(result.case, explain=True)
+        if isinstance(again.error, UnsatisfiableScenario):
+            limits = binding_limits(self.scenario, result.case.values or None, self.settings.planning(False), self.settings.seed)
+            if limits:
+                error = LimitsBind(limits, again.error)
+                return dataclasses.replace(again, error=error, message=str(error))
+        return again if again.outcome == NO_PLAN else result
 
     # ---------------------------------------------------------------- the pipeline
 

@@ -64,6 +64,9 @@ class LogicalParameter:
     # the planning resolution its sampled value is narrowed with, when not its dimension's
     # (``Construct.sampled_as``: a time headway is a time, but no duration)
     sampled_as: str | None = None
+    # why it is a parameter (the README's rule), as reports name it: a declared parameter, a
+    # value at one instant (at: start / at: end), a duration, or an action's target
+    kind: str = "declared parameter"
 
     def show(self, value: Any) -> str:
         if self.choices:
@@ -88,13 +91,13 @@ def logical_parameters(checked: CheckedScenario) -> list[LogicalParameter]:
         elif domain.choices:
             found.append(LogicalParameter(domain.name, domain.location, choices=tuple(domain.choices)))
     inline = list(_inline_ranges(checked))
-    counts = Counter(name for name, _, _ in inline)
-    for name, node, sampled_as in inline:
+    counts = Counter(name for name, _, _, _ in inline)
+    for name, node, sampled_as, kind in inline:
         if counts[name] > 1:
             name = f"{name}@{node.location.line}"
         low, high = sorted((node.low.value, node.high.value))
         integer = node.dimension is None and float(low).is_integer() and float(high).is_integer()
-        found.append(LogicalParameter(name, node.location, node.dimension, low, high, integer, declared=False, sampled_as=sampled_as))
+        found.append(LogicalParameter(name, node.location, node.dimension, low, high, integer, declared=False, sampled_as=sampled_as, kind=kind))
     return found
 
 
@@ -123,7 +126,7 @@ def _inline_ranges(checked: CheckedScenario):
         elif isinstance(node, model.Wait) and isinstance(node.condition, model.Call):
             for argument in node.condition.arguments:
                 if isinstance(argument.value, model.Range):
-                    yield f"{node.label or 'wait'}.{node.condition.function}", argument.value, None
+                    yield f"{node.label or 'wait'}.{node.condition.function}", argument.value, None, "duration"
 
 
 def _ranges_of(prefix: str, arguments: tuple[model.Argument, ...], binding: Binding | None, construct=None, only: tuple[str, ...] | None = None):
@@ -133,7 +136,18 @@ def _ranges_of(prefix: str, arguments: tuple[model.Argument, ...], binding: Bind
             name = argument.name or named.get(id(argument), "value")
             if only is not None and name not in only:
                 continue
-            yield f"{prefix}.{name}", argument.value, construct.sampled_as(name) if construct is not None else None
+            yield f"{prefix}.{name}", argument.value, construct.sampled_as(name) if construct is not None else None, _kind(name, binding, construct)
+
+
+def _kind(name: str, binding: Binding | None, construct) -> str:
+    """Why an inline range is a logical parameter, in the words of the README's rule."""
+    if name == "duration":
+        return "duration"
+    if construct is not None and construct.kind == "modifier":
+        at = binding["at"] if binding is not None else None
+        anchor = at.value.name.rpartition(".")[2] if at is not None and isinstance(at.value, model.Name) else "all"
+        return f"at: {anchor}"
+    return f"{construct.name}'s {name}" if construct is not None else "value"
 
 
 # ------------------------------------------------------------------ sampling
@@ -273,9 +287,9 @@ def sample_seed(seed: int, values: Values) -> int:
 
 
 def describe_values(parameters: list[LogicalParameter], values: Values) -> list[str]:
-    """``name = value unit (line L)`` for every sampled value, for reports."""
+    """``name = value unit (line L, kind)`` for every sampled value, for reports."""
     by_name = {p.name: p for p in parameters}
-    return [f"{name} = {by_name[name].show(value)} (line {by_name[name].location.line})" for name, value in values.items() if name in by_name]
+    return [f"{name} = {by_name[name].show(value)} (line {by_name[name].location.line}, {by_name[name].kind})" for name, value in values.items() if name in by_name]
 
 
 def parameters(path: str | Path, scenario: str | None = None, lanes: int | None = None):

@@ -18,6 +18,11 @@ REFINED, BASE = "refined", "base"
 STRATEGIES = (REFINED, BASE)
 CONTINUOUS, GRID = "continuous", "grid"
 ENCODINGS = (CONTINUOUS, GRID)
+# what a sample at which no plan exists does to its item (refined strategy): fail it (a logical
+# scenario whose ranges hold values no concrete scenario meets is a defect of the test), or be
+# discarded as hypothesis.assume(False) discards it (the item then tests what can be instantiated)
+FAIL, DISCARD = "fail", "discard"
+NO_PLAN_POLICIES = (FAIL, DISCARD)
 STANDARD_DIALECT, CARLA_DIALECT = "standard", "carla"
 DIALECTS = (STANDARD_DIALECT, CARLA_DIALECT)  # constructs.DIALECTS holds their registries
 DEFAULT_HORIZON = 25  # planning steps (of 1 s) of the grid encoding
@@ -96,6 +101,12 @@ def strategy(text: str) -> str:
     return text
 
 
+def no_plan_policy(text: str) -> str:
+    if text not in NO_PLAN_POLICIES:
+        raise OptionError(f"{text!r} is not what to do with a sample without a plan; give {' or '.join(NO_PLAN_POLICIES)}")
+    return text
+
+
 def name(text: str) -> str:
     if not str(text).strip():
         raise OptionError("give a name")
@@ -122,6 +133,8 @@ OPTIONS = (
     Option("strategy", "strategy", strategy, REFINED, "refined: sample the logical parameters with Hypothesis; base: the planner's first N plans"),
     Option("examples", "examples", whole_number(1, "a number of examples"), 10, "samples (refined) or plans (base) per scenario"),
     Option("seed", "seed", seed, 1, "fixes sampling, planning and simulation"),
+    Option("no-plan", "no_plan", no_plan_policy, FAIL,
+           "a sample at which no plan exists: fail the item (the scenario's ranges hold values no concrete scenario meets), or discard it like assume() (refined)"),
     Option("tries", "tries", whole_number(1, "a number of tries"), 5, "plans to try per case when the monitor rejects the simulation"),
     Option("lanes", "lanes", lanes_or_none, None, "lanes of the road for every scenario (default: each scenario's own)"),
     Option("dialect", "dialect", dialect, STANDARD_DIALECT,
@@ -144,6 +157,7 @@ class RunSettings:
     examples: int = 10
     seed: int = 1
     tries: int = 5
+    no_plan: str = FAIL
     lanes: int | None = None
     dialect: str = STANDARD_DIALECT
     encoding: str = CONTINUOUS

@@ -45,9 +45,10 @@ def test_a_band_of_failing_values_shrinks_to_its_boundary_and_replays(pytester):
     result = pytester.runpytest_subprocess("--roadlogic-encoding", "grid", "--roadlogic-horizon", "6", "--roadlogic-examples", "10", *QUIET)
     result.assert_outcomes(failed=1)
     report = result.stdout.str()
-    gap = float(re.search(r"gap = ([\d.]+) m \(line 7\)", report).group(1))
+    gap = float(re.search(r"gap = ([\d.]+) m \(line 7,", report).group(1))
     assert 22.0 <= gap <= 24.0, f"the shrunk gap {gap} m is not at the band's edge (22.5 m):\n{report}"
-    assert "no plan at these values" in report and "cannot hold together" in report
+    assert "the scenario cannot be instantiated (no plan) at these values" in report and "cannot hold together" in report
+    assert "gap = " in report and "(line 7, declared parameter)" in report, "each value names its kind"
     case_file = pytester.path / "roadlogic-artifacts" / "squeeze.osc_squeeze" / "case.json"
     assert f"roadlogic replay {case_file}" in report
     assert json.loads(case_file.read_text())["values"]["gap"] == gap
@@ -94,7 +95,7 @@ def test_the_driver_hook_drives_the_vehicle_under_test_and_a_bad_one_fails_with_
     result = pytester.runpytest_subprocess("--hypothesis-profile", "quick", "--roadlogic-tries", "1", *QUIET)
     result.assert_outcomes(failed=1)
     report = result.stdout.str()
-    assert "scenario overtake: non-conformant at these values" in report
+    assert "scenario overtake: the simulation was not accepted (non-conformant) at these values" in report
     assert "A.position.distance = " in report, "the failing values are listed"
     assert "rejected (robustness" in report, "the monitor's explanation is shown"
     artifacts = pytester.path / "roadlogic-artifacts" / "overtake.osc_overtake"

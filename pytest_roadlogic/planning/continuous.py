@@ -18,7 +18,7 @@ from __future__ import annotations
 import math
 import random
 from collections.abc import Iterator
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from fractions import Fraction
 
 from ..automaton.guards import HEADWAY, LANE, POSITION, SPEED, TRAVELED, And, Bound, Guard, Not, Or
@@ -60,6 +60,11 @@ class ContinuousSettings:
     # of speed late by up to a second (see _speed_lead), which moves the speeds at a 3 s phase's
     # ends by a few tenths of a m/s
     acceleration_margin: float = 0.4
+    # when no plan keeps the margins, a second search keeps this fraction of them: the scenario may
+    # have plans nearer its edges than the margins allow (catch_up_band: 0.5 m/s on both speeds over
+    # 20 s moved its band's edge 20 m below the true one). Such a plan is simulated and monitored
+    # like any other; when none is accepted, the margins are what binds (MarginsBind)
+    fallback_margins: float = 0.2
     max_horizon: int = 120  # steps
     time_limit: float = 60.0  # seconds for one solve, all horizons together
     # how the linear constraints are kept: "lazy" checks each complete choice with HiGHS and learns
@@ -88,6 +93,18 @@ class ContinuousSettings:
     def margins(self) -> dict[str | None, float]:
         """How far inside a range's edges the plan keeps, per physical dimension."""
         return {"length": self.position_margin, "speed": self.speed_margin, "headway": self.headway_margin, "acceleration": self.acceleration_margin}
+
+    def thinned(self) -> "ContinuousSettings | None":
+        """These settings with ``fallback_margins`` of each margin, or None when there is no such second search."""
+        if not 0 <= self.fallback_margins < 1:
+            return None
+        f = self.fallback_margins
+        return replace(self, position_margin=self.position_margin * f, speed_margin=self.speed_margin * f,
+                       headway_margin=self.headway_margin * f, acceleration_margin=self.acceleration_margin * f, fallback_margins=1.0)
+
+    def describe_margins(self) -> str:
+        return (f"speed_margin {self.speed_margin:g} m/s, position_margin {self.position_margin:g} m, "
+                f"headway_margin {self.headway_margin:g} s, acceleration_margin {self.acceleration_margin:g} m/s^2")
 
     def summary(self, lanes: int) -> str:
         """The vehicle limits and bounds on a road of ``lanes`` lanes, for messages that blame them."""

@@ -30,6 +30,38 @@ class HorizonTooShort(NoPlanError):
         self.limit_steps, self.needed_steps = limit_steps, needed_steps
 
 
+class MarginsBind(NoPlanError):
+    """No plan keeps the planner's margins inside the scenario's ranges, and the plans that keep
+    less of them were not accepted in simulation: a setting of the tool binds, not the scenario's
+    constraints (which a plan meets at these values). The message names the settings."""
+
+    def __init__(self, margins: str, thinned: str, explanation: str) -> None:
+        super().__init__(
+            f"no plan keeps the planner's margins inside the scenario's ranges ({margins}); plans with "
+            f"{thinned} exist, so the scenario itself can be met at these values, but their simulation was "
+            f"not accepted: the vehicles cannot track the scenario's edges that closely. This is the tool's "
+            f"limit, not the scenario's: move the values off the edges of their ranges, or widen the ranges.\n"
+            f"last simulation: {explanation}"
+        )
+
+
+class LimitsBind(NoPlanError):
+    """No plan exists within the planner's vehicle limits, but one does with some of them relaxed:
+    the scenario itself can be met at these values, a setting of the tool binds. ``limits`` names
+    each setting with its value and the value it was relaxed to."""
+
+    def __init__(self, limits: list[str], unsatisfiable: "UnsatisfiableScenario | None" = None, explanation: str = "") -> None:
+        self.limits = limits
+        self.unsatisfiable = unsatisfiable
+        super().__init__(
+            "no plan within the planner's vehicle limits at these values, but one exists with "
+            + " and ".join(limits)
+            + ": the scenario itself can be met here, a limit of the tool binds (a ContinuousSettings field; "
+            "the defaults are a real car's, so move the values away from what only a harder-driven car could do)"
+            + (f"; that plan's simulation was not accepted: {explanation}" if explanation else "")
+        )
+
+
 class UnsatisfiableScenario(NoPlanError):
     """The scenario cannot be met by any plan. ``conflicts`` holds groups of the scenario's
     constraints (bounds, durations) that cannot hold together, each with its source location; a
