@@ -12,7 +12,6 @@ case (``outcomes``), on the seconds per stage, and on how Hypothesis is set up.
 
 from __future__ import annotations
 
-import dataclasses
 import math
 import time
 from collections.abc import Callable, Iterator
@@ -22,8 +21,8 @@ from typing import Any
 from .case import Case
 from .frontend import CheckedScenario
 from .outcomes import CONFORMANT, NO_PLAN, NON_CONFORMANT, STAGES, TIMED_OUT
-from .pipeline import Outcome, binding_limits, run_instances
-from .planning import HorizonTooShort, LimitsBind, NoPlanError, PlanningTimeout, UnsatisfiableScenario
+from .pipeline import Outcome, run_instances
+from .planning import HorizonTooShort, NoPlanError, PlanningTimeout, UnsatisfiableScenario
 from .settings import BASE, DISCARD, REFINED, RunSettings
 from .simulation import DriverFactory, SimulationTimeout, Simulator
 
@@ -184,17 +183,13 @@ class Runner:
         hypothesis.seed(self.settings.seed)(chosen(hypothesis.given(strategy(self.scenario))(example)))()
 
     def explained(self, result: CaseResult) -> CaseResult:
-        """A case without a plan, run again to say why: the constraints that cannot hold together,
-        or, when the scenario has a plan there with some vehicle limits relaxed, those limits
-        (``LimitsBind``: a setting binds, not the scenario). Other results come back as they are."""
+        """A case without a plan, run again to say why: the constraints that cannot hold together
+        (the pipeline has already tried thinner margins and relaxed vehicle limits, and names
+        the limit that binds when only those plans exist: ``LimitsBind``). Other results come back
+        as they are."""
         if result.outcome != NO_PLAN:
             return result
         again = self.run_case(result.case, explain=True)
-        if isinstance(again.error, UnsatisfiableScenario):
-            limits = binding_limits(self.scenario, result.case.values or None, self.settings.planning(False), self.settings.seed)
-            if limits:
-                error = LimitsBind(limits, again.error)
-                return dataclasses.replace(again, error=error, message=str(error))
         return again if again.outcome == NO_PLAN else result
 
     # ---------------------------------------------------------------- the pipeline

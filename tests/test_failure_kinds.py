@@ -12,6 +12,8 @@ more than 25 m/s. The band's edge: by the file's own arithmetic (exact values) 5
 import re
 import xml.etree.ElementTree as ET
 
+import pytest
+
 from tests.conftest import ROOT
 
 pytest_plugins = ["pytester"]
@@ -51,3 +53,22 @@ def test_a_bad_no_plan_value_names_the_option(pytester):
     result = pytester.runpytest_subprocess("--roadlogic-no-plan", "skip", *QUIET)
     assert result.ret != 0
     result.stderr.fnmatch_lines(["*--roadlogic-no-plan*'skip' is not what to do with a sample without a plan; give fail or discard*"])
+
+
+@pytest.mark.parametrize(
+    "start_gap, error, named",
+    [(28.0, "MarginsBind", "speed_margin 0.5 m/s"), (30.0, "LimitsBind", "relaxed to")],
+    ids=["only-thinner-margins", "only-beyond-the-vehicle-limits"],
+)
+def test_a_case_only_plans_beyond_the_tools_margins_or_limits_meet_is_a_tool_limit_when_not_accepted(start_gap, error, named):
+    # close_in at 28 m has plans only with thinner margins, at 30 m only beyond the vehicle limits
+    # (measured); a vehicle that never goes faster than 15 m/s makes every simulation fail
+    from pytest_roadlogic.pipeline import load_scenario
+    from pytest_roadlogic.runner import TOOL_LIMIT, Runner
+    from pytest_roadlogic.settings import REFINED, RunSettings
+    from tests.drivers import NeverChangesLane
+
+    runner = Runner(load_scenario(CLOSE_IN), RunSettings(tries=1), drivers=lambda vehicle: NeverChangesLane() if vehicle == "ego" else None)
+    result = runner.run_case(runner.case(strategy=REFINED, values={"start_gap": start_gap}), explain=False)
+    assert (result.kind, type(result.error).__name__) == (TOOL_LIMIT, error), result.message
+    assert named in result.message and "not accepted" in result.message

@@ -46,13 +46,12 @@ class MarginsBind(NoPlanError):
 
 
 class LimitsBind(NoPlanError):
-    """No plan exists within the planner's vehicle limits, but one does with some of them relaxed:
-    the scenario itself can be met at these values, a setting of the tool binds. ``limits`` names
-    each setting with its value and the value it was relaxed to."""
+    """No plan exists within the planner's vehicle limits, one does with some of them relaxed, and
+    its simulation was not accepted: the scenario itself can be met at these values, a setting of
+    the tool binds. ``limits`` names each setting with its value and the value it was relaxed to."""
 
-    def __init__(self, limits: list[str], unsatisfiable: "UnsatisfiableScenario | None" = None, explanation: str = "") -> None:
+    def __init__(self, limits: list[str], explanation: str = "") -> None:
         self.limits = limits
-        self.unsatisfiable = unsatisfiable
         super().__init__(
             "no plan within the planner's vehicle limits at these values, but one exists with "
             + " and ".join(limits)
