@@ -224,10 +224,10 @@ def _failure(case: Case, error: Exception, started: float) -> CaseResult:
     seconds = {stage: 0.0 for stage in STAGES}
     if isinstance(error, SimulationTimeout):
         seconds["simulation"] = elapsed
-        return CaseResult(case, TIMED_OUT, message=f"simulation timed out: {error}", seconds=seconds)
+        return CaseResult(case, TIMED_OUT, message=f"simulation timed out: {error} (a limit of the tool: raise it with --roadlogic-sim-timeout, or --sim-timeout on the command line)", seconds=seconds)
     seconds["planning"] = elapsed
     if isinstance(error, PlanningTimeout):
-        return CaseResult(case, TIMED_OUT, message=f"planning timed out: {error}", seconds=seconds, error=error)
+        return CaseResult(case, TIMED_OUT, message=f"planning timed out: {error} (a limit of the tool, not the scenario: raise it with --roadlogic-plan-timeout, or --plan-timeout on the command line)", seconds=seconds, error=error)
     if isinstance(error, UnsatisfiableScenario):
         return CaseResult(case, NO_PLAN, message=error.report(), seconds=seconds, error=error)
     if isinstance(error, HorizonTooShort):

@@ -72,3 +72,14 @@ def test_a_case_only_plans_beyond_the_tools_margins_or_limits_meet_is_a_tool_lim
     result = runner.run_case(runner.case(strategy=REFINED, values={"start_gap": start_gap}), explain=False)
     assert (result.kind, type(result.error).__name__) == (TOOL_LIMIT, error), result.message
     assert named in result.message and "not accepted" in result.message
+
+
+def test_a_planning_time_limit_that_runs_out_is_a_tool_limit_naming_the_option():
+    from pytest_roadlogic.pipeline import load_scenario
+    from pytest_roadlogic.runner import TOOL_LIMIT, Runner
+    from pytest_roadlogic.settings import REFINED, RunSettings
+
+    runner = Runner(load_scenario(CLOSE_IN), RunSettings(planning_time_limit=1e-6))
+    result = runner.run_case(runner.case(strategy=REFINED, values={"start_gap": 20.0}), explain=False)
+    assert (result.outcome, result.kind) == ("timed out", TOOL_LIMIT)
+    assert "--roadlogic-plan-timeout" in result.message
