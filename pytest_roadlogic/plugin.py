@@ -110,7 +110,9 @@ class OscFile(pytest.File):
 
         settings = self.config.stash[SETTINGS]
         try:
-            dialect = self.config.hook.pytest_roadlogic_dialect(config=self.config, path=self.path)
+            # ihook: the conftest.py files of this file's folders only (config.hook would ask every conftest
+            # collected so far: a CARLA folder's hook read the files collected after it as CARLA's)
+            dialect = self.ihook.pytest_roadlogic_dialect(config=self.config, path=self.path)
             if dialect is not None and dialect != settings.dialect:
                 settings = replace(settings, dialect=parse_dialect(dialect))
             checked = check_file(self.path, settings.lanes, dialect=settings.dialect)
@@ -180,12 +182,12 @@ class ScenarioItem(pytest.Item):
             self.user_properties += [(f"seconds_{stage}", round(self.tally.seconds[stage], 3)) for stage in STAGES]
 
     def _drivers(self):
-        hook = self.config.hook.pytest_roadlogic_driver
+        hook = self.ihook.pytest_roadlogic_driver  # this item's folders' conftest.py files, as for the dialect
         return lambda vehicle: hook(config=self.config, scenario=self.scenario, vehicle=vehicle)
 
     def _simulator(self):
         """The backend a ``pytest_roadlogic_simulator`` hook gives, else None (the option's)."""
-        return self.config.hook.pytest_roadlogic_simulator(config=self.config, scenario=self.scenario)
+        return self.ihook.pytest_roadlogic_simulator(config=self.config, scenario=self.scenario)
 
     def _count(self, result) -> None:
         """Count a case; a failed one ends the item (and, refined, starts the shrinking)."""

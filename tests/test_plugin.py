@@ -235,3 +235,20 @@ def test_a_dialect_hook_that_names_no_dialect_is_a_collection_error_of_that_file
     pytester.makeconftest("def pytest_roadlogic_dialect(config, path):\n    return 'carl'\n")
     result = pytester.runpytest_subprocess("--collect-only", "-q", *QUIET)
     result.stdout.fnmatch_lines(["*change_lane.osc: pytest_roadlogic_dialect: 'carl' is not a dialect; give standard or carla*"])
+
+
+def test_a_folders_conftest_hooks_apply_to_that_folders_files_only(pytester):
+    # a_carla/ is collected before b.osc: the folder's dialect and driver hooks must not reach b.osc
+    # (they did when the plugin asked config.hook: every conftest.py collected so far)
+    folder = pytester.mkdir("a_carla")
+    (folder / "conftest.py").write_text(
+        "import pathlib\n"
+        "def pytest_roadlogic_dialect(config, path):\n"
+        "    pathlib.Path(str(config.rootpath), 'asked.txt').open('a').write(path.name + '\\n')\n"
+        "    return 'carla'\n"
+    )
+    (folder / "x.osc").write_text(SQUEEZE.read_text())
+    (pytester.path / "b.osc").write_text(SQUEEZE.read_text())
+    result = pytester.runpytest_subprocess("--collect-only", "-q", *QUIET)
+    assert result.ret == 0, result.stdout.str()
+    assert (pytester.path / "asked.txt").read_text().split() == ["x.osc"]
