@@ -136,6 +136,12 @@ def run_instances(
             from .planning import MarginsBind
 
             raise MarginsBind(settings.describe_margins(), settings.thinned().describe_margins(), outcome.verdict.explain())
+        if not outcome.verdict.accepted and outcome.plan.stats.get("finer_step"):
+            from .planning import StepBinds
+
+            raise StepBinds(f"no plan in steps of {settings.dt:g} s; plans in steps of {settings.dt / 2:g} s exist, so the scenario itself "
+                            f"can be met at these values, but their simulation was not accepted (the planning step is a setting of the tool): "
+                            f"{outcome.verdict.explain()}")
         if not outcome.verdict.accepted and outcome.plan.stats.get("relaxed_limits"):
             from .planning import LimitsBind
 
@@ -192,7 +198,8 @@ def binding_limits(scenario: CheckedScenario, values: dict[str, object] | None, 
 def _with_fallbacks(plans: Iterator[Plan], guide: SymbolicAutomaton, settings, seed: int, limit: int) -> Iterator[Plan]:
     """``plans``, or, when the planner has none at all, those of a planner that keeps
     ``settings.fallback_margins`` of its margins (``stats["thinned_margins"]``), or else those of
-    one that also drives beyond the vehicle limits (``RELAXED_LIMITS``, ``stats["relaxed_limits"]``).
+    one that also plans in half the step (``stats["finer_step"]``), or else of one that drives
+    beyond the vehicle limits (``RELAXED_LIMITS``, ``stats["relaxed_limits"]``).
 
     Why: the margins and the limits are the planner's guesses at what the vehicles can track, not
     the scenario's constraints; a plan nearer the scenario's edges is simulated and monitored like
@@ -207,8 +214,10 @@ def _with_fallbacks(plans: Iterator[Plan], guide: SymbolicAutomaton, settings, s
         if thinned is None or isinstance(error, (PlanningTimeout, HorizonTooShort)):
             raise
         quiet = dataclasses.replace(thinned, explain_unsatisfiable=False)
+        # half the planning step: durations between whole seconds (a 0.5 s wait, a 3.6 s brake)
+        finer = dataclasses.replace(quiet, dt=quiet.dt / 2, max_horizon=quiet.max_horizon * 2, lane_change_gap=quiet.lane_change_gap * 2)
         relaxed = dataclasses.replace(quiet, **{field: value for field, value, _ in RELAXED_LIMITS})
-        for fallback_settings, mark in ((quiet, "thinned_margins"), (relaxed, "relaxed_limits")):
+        for fallback_settings, mark in ((quiet, "thinned_margins"), (finer, "finer_step"), (relaxed, "relaxed_limits")):
             try:
                 fallback = planner_for(guide, fallback_settings, seed).plans(limit=limit)
                 plan = next(fallback, None)

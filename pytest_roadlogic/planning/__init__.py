@@ -5,7 +5,7 @@ clingo) is imported on first use of one of its names, so that reading a plan (th
 monitor, a report) does not load the solver.
 """
 
-from .errors import HorizonTooShort, LimitsBind, MarginsBind, NoPlanError, PlanningTimeout, UnsatisfiableScenario
+from .errors import HorizonTooShort, LimitsBind, MarginsBind, NoPlanError, PlanningTimeout, StepBinds, UnsatisfiableScenario
 from .instance import PlanningSettings, build_instance
 from .plan import Plan, PlanState
 
@@ -31,4 +31,4 @@ def __getattr__(name: str):
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
-__all__ = ["HorizonTooShort", "LimitsBind", "MarginsBind", "NoPlanError", "Plan", "PlanState", "PlanningSettings", "PlanningTimeout", "UnsatisfiableScenario", "build_instance", "planner_for", *_SOLVER_NAMES]
+__all__ = ["HorizonTooShort", "LimitsBind", "MarginsBind", "NoPlanError", "Plan", "PlanState", "PlanningSettings", "PlanningTimeout", "StepBinds", "UnsatisfiableScenario", "build_instance", "planner_for", *_SOLVER_NAMES]

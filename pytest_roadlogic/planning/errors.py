@@ -45,6 +45,11 @@ class MarginsBind(NoPlanError):
         )
 
 
+class StepBinds(NoPlanError):
+    """No plan in the planner's steps (``dt``), plans in half those steps exist, and their simulation
+    was not accepted: the planning step binds (a setting of the tool), not the scenario's constraints."""
+
+
 class LimitsBind(NoPlanError):
     """No plan exists within the planner's vehicle limits, one does with some of them relaxed, and
     its simulation was not accepted: the scenario itself can be met at these values, a setting of
