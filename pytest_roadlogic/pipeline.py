@@ -132,20 +132,10 @@ def run_instances(
                 break
         if outcome is None:
             return  # the planner has no plan left; the first call raises NoPlanError instead
-        if not outcome.verdict.accepted and outcome.plan.stats.get("thinned_margins"):
-            from .planning import MarginsBind
-
-            raise MarginsBind(settings.describe_margins(), settings.thinned().describe_margins(), outcome.verdict.explain())
-        if not outcome.verdict.accepted and outcome.plan.stats.get("finer_step"):
-            from .planning import StepBinds
-
-            raise StepBinds(f"no plan in steps of {settings.dt:g} s; plans in steps of {settings.dt / 2:g} s exist, so the scenario itself "
-                            f"can be met at these values, but their simulation was not accepted (the planning step is a setting of the tool): "
-                            f"{outcome.verdict.explain()}")
-        if not outcome.verdict.accepted and outcome.plan.stats.get("relaxed_limits"):
-            from .planning import LimitsBind
-
-            raise LimitsBind(binding_limits(scenario, values, settings, seed) or _relaxed_names(settings), explanation=outcome.verdict.explain())
+        if not outcome.verdict.accepted:
+            limit = _tool_limit(outcome, guide, settings, seed)
+            if limit is not None:
+                raise limit
         yield outcome
 
 
@@ -157,42 +147,50 @@ RELAXED_LIMITS = (
 )
 
 
-def _relaxed_names(settings) -> list[str]:
-    return [f"{field} {getattr(settings, field):g} {unit} relaxed to {value:g}" for field, value, unit in RELAXED_LIMITS]
+def _relaxed(settings, names=None):
+    """``settings`` with the ``RELAXED_LIMITS`` named (all by default) relaxed."""
+    return dataclasses.replace(settings, **{name: value for name, value, _ in RELAXED_LIMITS if names is None or name in names})
 
 
-def binding_limits(scenario: CheckedScenario, values: dict[str, object] | None, settings, seed: int = 1) -> list[str]:
-    """The vehicle limits of ``settings`` (continuous) without which the scenario has a plan at
-    ``values``, each as ``name value -> relaxed``; empty when relaxing them all gives none (the
-    scenario's constraints clash) or when the encoding has no such limits. One at a time first, so
-    that the report names the one that binds; all together when no single one does."""
+def _relaxed_names(settings, names=None) -> list[str]:
+    return [f"{name} {getattr(settings, name):g} {unit} relaxed to {value:g}" for name, value, unit in RELAXED_LIMITS if names is None or name in names]
+
+
+def _tool_limit(outcome: Outcome, guide: SymbolicAutomaton, settings, seed: int):
+    """The error that says which setting of the tool binds, when the rejected ``outcome`` was
+    planned by one of ``_with_fallbacks``'s planners; None for a plan within every setting."""
+    from .planning import LimitsBind, MarginsBind, StepBinds
+
+    explanation = outcome.verdict.explain()
+    if outcome.plan.stats.get("thinned_margins"):
+        return MarginsBind(settings.describe_margins(), settings.thinned().describe_margins(), explanation)
+    if outcome.plan.stats.get("finer_step"):
+        return StepBinds(f"no plan in steps of {settings.dt:g} s; plans in steps of {settings.dt / 2:g} s exist, so the scenario itself "
+                         f"can be met at these values, but their simulation was not accepted (the planning step is a setting of the tool): "
+                         f"{explanation}")
+    if outcome.plan.stats.get("relaxed_limits"):
+        return LimitsBind(_binding_limits(guide, settings, seed) or _relaxed_names(settings), explanation=explanation)
+    return None
+
+
+def _binding_limits(guide: SymbolicAutomaton, settings, seed: int) -> list[str]:
+    """The vehicle limits without which ``guide`` has a plan (with the thinner margins), named:
+    one at a time first, so that the report names the one that binds; all together when no single
+    one does; empty when even that gives none."""
     from .planning import NoPlanError, planner_for
 
-    if not hasattr(settings, "thinned"):
-        return []
     settings = dataclasses.replace(settings.thinned() or settings, explain_unsatisfiable=False)
-    guide = build_automaton(scenario)
-    if values:
-        narrowed, declared = guided(scenario, values, settings.resolution(), settings.margins())
-        guide = build_automaton(narrowed, values=declared)
-        settings = dataclasses.replace(settings, random_start=True)
-        seed = sample_seed(seed, values)
 
-    def plannable(**relaxed) -> bool:
+    def plannable(names) -> bool:
         try:
-            return next(planner_for(guide, dataclasses.replace(settings, **relaxed), seed).plans(limit=1), None) is not None
+            return next(planner_for(guide, _relaxed(settings, names), seed).plans(limit=1), None) is not None
         except NoPlanError:
             return False
 
-    def named(fields) -> list[str]:
-        return [f"{field} {getattr(settings, field):g} {unit} relaxed to {value:g}" for field, value, unit in RELAXED_LIMITS if field in fields]
-
-    for name, value, _ in RELAXED_LIMITS:
-        if plannable(**{name: value}):
-            return named({name})
-    if plannable(**{field: value for field, value, _ in RELAXED_LIMITS}):
-        return named({field for field, _, _ in RELAXED_LIMITS})
-    return []
+    for name, _, _ in RELAXED_LIMITS:
+        if plannable({name}):
+            return _relaxed_names(settings, {name})
+    return _relaxed_names(settings) if plannable(None) else []
 
 
 def _with_fallbacks(plans: Iterator[Plan], guide: SymbolicAutomaton, settings, seed: int, limit: int) -> Iterator[Plan]:
@@ -216,7 +214,7 @@ def _with_fallbacks(plans: Iterator[Plan], guide: SymbolicAutomaton, settings, s
         quiet = dataclasses.replace(thinned, explain_unsatisfiable=False)
         # half the planning step: durations between whole seconds (a 0.5 s wait, a 3.6 s brake)
         finer = dataclasses.replace(quiet, dt=quiet.dt / 2, max_horizon=quiet.max_horizon * 2, lane_change_gap=quiet.lane_change_gap * 2)
-        relaxed = dataclasses.replace(quiet, **{field: value for field, value, _ in RELAXED_LIMITS})
+        relaxed = _relaxed(quiet)
         for fallback_settings, mark in ((quiet, "thinned_margins"), (finer, "finer_step"), (relaxed, "relaxed_limits")):
             try:
                 fallback = planner_for(guide, fallback_settings, seed).plans(limit=limit)
