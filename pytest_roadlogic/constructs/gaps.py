@@ -17,21 +17,20 @@ from __future__ import annotations
 
 from typing import ClassVar
 
-from ..automaton.guards import HEADWAY, POSITION, Bound, Term
+from ..automaton.guards import HEADWAY
 from ..automaton.phase import Phase
 from ..frontend import model
-from ..frontend.errors import error_at
 from ..frontend.library import DURATION, Binding, Parameter, Signature
-from ..frontend.tolerances import HEADWAY_TOLERANCE, POSITION_TOLERANCE, widened
-from ..frontend.units import LENGTH, TIME
 from .base import Action, CheckContext, Use
+from .position import GAPS, Gap, gap_bound
 
 
 class GapAction(Action):
     """One of the four: which argument holds the gap, what it measures, and where it holds."""
 
     argument: ClassVar[str]  # "gap" (keep) or "target" (change)
-    quantity: ClassVar[str]  # POSITION or HEADWAY
+    gap: ClassVar[Gap]  # position()'s distance or time headway
+    what: ClassVar[str]  # "a space gap" or "a time gap", in messages
     anchor: ClassVar[str]  # "all" (keep) or "end" (change)
 
     def check(self, binding: Binding, context: CheckContext) -> None:
@@ -44,40 +43,29 @@ class GapAction(Action):
         return self.anchor == "all"
 
     def sampled_as(self, argument: str) -> str | None:
-        return "headway" if self.quantity == HEADWAY and argument == self.argument else None
+        return "headway" if self.gap.quantity == HEADWAY and argument == self.argument else None
 
     def translate(self, use: Use, phase: Phase) -> None:
-        dimension, example, what, tolerance = _MEASURES[self.quantity]
         reference = use.name("reference")  # required: the checker saw to it
-        low, high = use.range(self.argument, dimension, example)
-        if low < 0:
-            raise error_at(use.argument(self.argument).location, f"{what} must not be negative", hint="a gap is to a reference ahead; for one behind, use position(d, ahead_of: ...)")
-        low, high = widened(low, high, tolerance)
-        phase.anchor(Bound(Term(self.quantity, reference, use.actor), max(0.0, low), high, use.location), self.anchor)
+        hint = "a gap is to a reference ahead; for one behind, use position(d, ahead_of: ...)"
+        phase.anchor(gap_bound(use, self.argument, self.gap, reference, use.actor, hint, self.what), self.anchor)
 
 
-# by quantity: (dimension, an example for errors, what it is, the tolerance of a single value)
-_MEASURES = {
-    POSITION: (LENGTH, "a length such as 20m", "a space gap", POSITION_TOLERANCE),
-    HEADWAY: (TIME, "a time such as 2s", "a time gap", HEADWAY_TOLERANCE),
-}
-
-
-def _gap_action(name: str, argument: str, quantity: str, anchor: str, description: str) -> GapAction:
-    dimension = _MEASURES[quantity][0]
+def _gap_action(name: str, argument: str, gap: Gap, what: str, anchor: str, description: str) -> GapAction:
     signature = Signature(
         name,
-        (Parameter(argument, dimension, positional=True), Parameter("direction", "enum:direction"), Parameter("reference", "actor"), DURATION),
+        (Parameter(argument, gap.dimension, positional=True), Parameter("direction", "enum:direction"), Parameter("reference", "actor"), DURATION),
         required=((argument,), ("reference",)),
         description=description,
     )
-    attributes = {"signature": signature, "argument": argument, "quantity": quantity, "anchor": anchor, "__doc__": f"``{name}()``: {description}"}
+    attributes = {"signature": signature, "argument": argument, "gap": gap, "what": what, "anchor": anchor, "__doc__": f"``{name}()``: {description}"}
     return type(name, (GapAction,), attributes)()
 
 
+SPACE, TIME_GAP = GAPS["distance"], GAPS["time"]
 CONSTRUCTS = (
-    _gap_action("keep_space_gap", "gap", POSITION, "all", "follow the reference at a space gap throughout"),
-    _gap_action("keep_time_gap", "gap", HEADWAY, "all", "follow the reference at a time gap throughout"),
-    _gap_action("change_space_gap", "target", POSITION, "end", "reach a space gap to the reference by the phase's end"),
-    _gap_action("change_time_gap", "target", HEADWAY, "end", "reach a time gap to the reference by the phase's end"),
+    _gap_action("keep_space_gap", "gap", SPACE, "a space gap", "all", "follow the reference at a space gap throughout"),
+    _gap_action("keep_time_gap", "gap", TIME_GAP, "a time gap", "all", "follow the reference at a time gap throughout"),
+    _gap_action("change_space_gap", "target", SPACE, "a space gap", "end", "reach a space gap to the reference by the phase's end"),
+    _gap_action("change_time_gap", "target", TIME_GAP, "a time gap", "end", "reach a time gap to the reference by the phase's end"),
 )

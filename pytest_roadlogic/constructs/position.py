@@ -3,6 +3,8 @@ as a distance or as a time headway."""
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 from ..automaton.guards import HEADWAY, POSITION, Bound, Guard, Term
 from ..frontend.errors import error_at
 from ..frontend.library import AT, Parameter, Signature
@@ -35,21 +37,37 @@ class Position(AnchoredModifier):
         argument = "time" if use.argument("time") is not None else "distance"
         if use.argument(argument) is None:
             raise error_at(use.location, "position() needs a distance, e.g. position([10..20]m, behind: v2)")
-        quantity, dimension, example, what, tolerance = _GAPS[argument]
-        low, high = use.range(argument, dimension, example)
-        if low < 0:
-            raise error_at(use.argument(argument).location, f"{what} must not be negative", hint="use behind: instead of ahead_of: (or the reverse)")
-        low, high = widened(low, high, tolerance)
         keyword, other = relation
-        term = Term(quantity, other, use.actor) if keyword == "behind" else Term(quantity, use.actor, other)
-        return Bound(term, max(0.0, low), high, use.location)
+        ahead, behind = (other, use.actor) if keyword == "behind" else (use.actor, other)
+        return gap_bound(use, argument, GAPS[argument], ahead, behind, "use behind: instead of ahead_of: (or the reverse)")
 
 
-# the two ways to give the gap, by argument: (quantity, dimension, an example for errors, what it
-# is, the tolerance of a single value)
-_GAPS = {
-    "distance": (POSITION, LENGTH, "a length such as 10m or [10..20]m", "a distance", POSITION_TOLERANCE),
-    "time": (HEADWAY, TIME, "a time such as 2s or [1.5s..2.5s]", "a time headway", HEADWAY_TOLERANCE),
+@dataclass(frozen=True)
+class Gap:
+    """One way to give a longitudinal gap: the quantity it bounds, its dimension, an example for
+    errors, what it is called in them, and the tolerance of a single value."""
+
+    quantity: str
+    dimension: str
+    example: str
+    what: str
+    tolerance: float
+
+
+# by position()'s argument; the gap actions (constructs.gaps) read the same two
+GAPS = {
+    "distance": Gap(POSITION, LENGTH, "a length such as 10m or [10..20]m", "a distance", POSITION_TOLERANCE),
+    "time": Gap(HEADWAY, TIME, "a time such as 2s or [1.5s..2.5s]", "a time headway", HEADWAY_TOLERANCE),
 }
+
+
+def gap_bound(use: Use, argument: str, gap: Gap, ahead: str, behind: str, hint: str, what: str | None = None) -> Bound:
+    """``ahead`` is ahead of ``behind`` by the value of ``argument`` (+- the gap's tolerance for a
+    single value, never below 0); a negative value is an error at its place, with ``hint``."""
+    low, high = use.range(argument, gap.dimension, gap.example)
+    if low < 0:
+        raise error_at(use.argument(argument).location, f"{what or gap.what} must not be negative", hint=hint)
+    low, high = widened(low, high, gap.tolerance)
+    return Bound(Term(gap.quantity, ahead, behind), max(0.0, low), high, use.location)
 
 CONSTRUCTS = (Position(),)
