@@ -144,9 +144,7 @@ def _kind(name: str, binding: Binding | None, construct) -> str:
     if name == "duration":
         return "duration"
     if construct is not None and construct.kind == "modifier":
-        at = binding["at"] if binding is not None else None
-        anchor = at.value.name.rpartition(".")[2] if at is not None and isinstance(at.value, model.Name) else "all"
-        return f"at: {anchor}"
+        return f"at: {construct.anchor(binding)}"  # a CARLA speed without at: holds at the end
     return f"{construct.name}'s {name}" if construct is not None else "value"
 
 

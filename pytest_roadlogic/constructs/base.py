@@ -150,22 +150,25 @@ class Action(Construct):
 
 class Modifier(Construct):
     kind = "modifier"
+    # where the modifier holds when ``at:`` is not given: the standard's all (a dialect may differ)
+    default_anchor: ClassVar[str] = "all"
+
+    def anchor(self, binding: Binding) -> str:
+        """Where this use holds: its ``at:``, else the modifier's default (start, end or all)."""
+        return anchor_of(binding, self.default_anchor)
 
 
 class AnchoredModifier(Modifier):
     """A modifier that is one guard, placed by ``at:`` at the phase's start, end, or throughout."""
 
-    # where the guard holds when ``at:`` is not given: the standard's all (a dialect may differ)
-    default_anchor: ClassVar[str] = "all"
-
     def guard(self, use: Use) -> Guard:
         raise NotImplementedError
 
     def held_throughout(self, binding: Binding) -> bool:
-        return anchor_of(binding, self.default_anchor) == "all"
+        return self.anchor(binding) == "all"
 
     def translate(self, use: Use, phase: Phase) -> None:
-        phase.anchor(self.guard(use), anchor_of(use.binding, self.default_anchor))
+        phase.anchor(self.guard(use), self.anchor(use.binding))
 
 
 class Registry:
