@@ -211,13 +211,12 @@ class ScenarioItem(pytest.Item):
     def _report_failure(self, runner, result) -> None:
         from .artifacts.writer import write_artifacts
         from .outcomes import NO_PLAN
-        from .planning import UnsatisfiableScenario
         from .sampling import describe_values, logical_parameters
 
         if result.outcome == NO_PLAN:
             result = runner.explained(result)  # the search did not ask why; ask for the reported case
         case = result.case
-        why = result.error.report() if isinstance(result.error, UnsatisfiableScenario) else result.message
+        why = result.message  # for a clash, the report with the constraints at their lines (runner._failure)
         directory = Path(self.config.rootpath) / _text(self.config, "artifacts") / _safe_name(self.nodeid)
         paths: dict[str, Path] = {}
         if result.run is not None:

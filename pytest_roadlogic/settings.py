@@ -83,28 +83,21 @@ horizon_or_none = or_none(whole_number(1, "a planning horizon"))  # a horizon li
 count = whole_number(0, "an instance count")
 
 
-def encoding(text: str) -> str:
-    if text not in ENCODINGS:
-        raise OptionError(f"{text!r} is not a planning encoding; give {' or '.join(ENCODINGS)}")
-    return text
+def one_of(choices: tuple[str, ...], what: str) -> Callable[[str], str]:
+    """A parser that accepts one of ``choices`` and names them all otherwise."""
+
+    def parse(text: str) -> str:
+        if text not in choices:
+            raise OptionError(f"{text!r} is not {what}; give {' or '.join(choices)}")
+        return text
+
+    return parse
 
 
-def dialect(text: str) -> str:
-    if text not in DIALECTS:
-        raise OptionError(f"{text!r} is not a dialect; give {' or '.join(DIALECTS)}")
-    return text
-
-
-def strategy(text: str) -> str:
-    if text not in STRATEGIES:
-        raise OptionError(f"{text!r} is not a strategy; give {' or '.join(STRATEGIES)}")
-    return text
-
-
-def no_plan_policy(text: str) -> str:
-    if text not in NO_PLAN_POLICIES:
-        raise OptionError(f"{text!r} is not what to do with a sample without a plan; give {' or '.join(NO_PLAN_POLICIES)}")
-    return text
+encoding = one_of(ENCODINGS, "a planning encoding")
+dialect = one_of(DIALECTS, "a dialect")
+strategy = one_of(STRATEGIES, "a strategy")
+no_plan_policy = one_of(NO_PLAN_POLICIES, "what to do with a sample without a plan")
 
 
 def name(text: str) -> str:
