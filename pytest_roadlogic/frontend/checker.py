@@ -140,7 +140,9 @@ class _Checker:
             if extension.target not in self.scenarios and extension.target not in own:
                 self.error(extension.location, f"extend names an unknown scenario {extension.target!r}", self._known("scenarios", [*self.scenarios, *own]))
         seen: dict[str, model.Scenario] = {}
-        declared = {**self.scenarios, **{s.name: s for s in main.scenarios}}
+        # this file's scenarios over imported ones of the same name, the first of two with one name
+        # (the second is an error below)
+        declared = {**self.scenarios, **{s.name: s for s in reversed(main.scenarios)}}
         # every scenario with the extends that name it and the members it inherits, before calls are expanded
         # (a call of a scenario that inherits runs the whole of it)
         extended = {name: _extended(s, extensions) for name, s in declared.items()}
@@ -166,10 +168,7 @@ class _Checker:
                 other = self.scenarios[scenario.name].location
                 self.error(scenario.location, f"scenario {scenario.name!r} is already declared in {other.path}:{other.line}", "rename one of them")
             seen[scenario.name] = scenario
-            scenario, problems = inherited(_extended(scenario, extensions), extended)
-            self.diagnostics.extend(problems)  # the same as above, unless two scenarios share this name
-            scenario = with_builtin_events(scenario)
-            scenario, problems = expand_calls(scenario, callable_, is_action, lambda f: self._field_kind(self._aliased(f)) == "actor")
+            scenario, problems = expand_calls(callable_[scenario.name], callable_, is_action, lambda f: self._field_kind(self._aliased(f)) == "actor")
             self.diagnostics.extend(problems)
             checked, space, lanes = self._scenario(scenario, globals_)
             scenarios.append(CheckedScenario(checked, space, lanes, self.registry, self.sources))
