@@ -52,7 +52,7 @@ class ActorState(Protocol):
     position: float
     lane: int
     speed: float
-    traveled: float  # position minus the position at the scenario's first instant
+    traveled: float  # position minus the position at the run's first instant (plan step 0, first sample)
 
 
 Snapshot = Mapping[str, ActorState]
