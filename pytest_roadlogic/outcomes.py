@@ -29,8 +29,16 @@ class Tally:
     def __init__(self) -> None:
         self.cases = 0
         self.discarded = 0  # samples without a plan set aside (no_plan = discard); among the cases
+        # samples whose values each have concrete scenarios, only not together (Runner.refined):
+        # outside the logical scenario, so not among the cases; their seconds count
+        self.set_aside = 0
         self.outcomes: Counter[str] = Counter()
         self.seconds: Counter[str] = Counter()
+
+    def aside(self, seconds: dict[str, float]) -> None:
+        self.set_aside += 1
+        for stage in STAGES:
+            self.seconds[stage] += seconds.get(stage, 0.0)
 
     def add(self, outcome: str, seconds: dict[str, float]) -> None:
         self.cases += 1

@@ -101,13 +101,7 @@ def run_instances(
     limits = SimulationLimits(time_limit=simulation_time_limit)
     start = time.perf_counter()
     specification = build_automaton(scenario)
-    guide = specification
-    if values:
-        narrowed, declared = guided(scenario, values, settings.resolution(), settings.margins())
-        guide = build_automaton(narrowed, values=declared)
-        # each sample is its own random concrete scenario, fixed by the run's seed and the values
-        settings = dataclasses.replace(settings, random_start=True)
-        seed = sample_seed(seed, values)
+    guide, settings, seed = _guided(scenario, specification, values, settings, seed)
     automaton_seconds = time.perf_counter() - start
     planner = planner_for(guide, settings, seed)
     plans = _with_fallbacks(planner.plans(limit=count * max_tries), guide, settings, seed, count * max_tries)
@@ -137,6 +131,32 @@ def run_instances(
             if limit is not None:
                 raise limit
         yield outcome
+
+
+def _guided(scenario: CheckedScenario, specification: SymbolicAutomaton, values, settings, seed: int):
+    """The automaton the planner solves for a sample (``specification`` without one), and the
+    settings and seed it solves with: each sample is its own random concrete scenario, fixed by
+    the run's seed and the values."""
+    if not values:
+        return specification, settings, seed
+    narrowed, declared = guided(scenario, values, settings.resolution(), settings.margins())
+    return build_automaton(narrowed, values=declared), dataclasses.replace(settings, random_start=True), sample_seed(seed, values)
+
+
+def has_plan(scenario: CheckedScenario, values: dict[str, object], seed: int = 1, settings: PlanningSettings | ContinuousSettings | None = None) -> bool:
+    """Whether the scenario narrowed to ``values`` has a plan, with every fallback ``run_instances``
+    tries (planning alone: no simulation). A planning timeout or a horizon that binds is no proof
+    that the values have none, and counts as a plan."""
+    from .planning import HorizonTooShort, NoPlanError, PlanningTimeout, planner_for
+
+    settings = dataclasses.replace(settings or RunSettings().planning(), explain_unsatisfiable=False)
+    guide, settings, seed = _guided(scenario, build_automaton(scenario), values, settings, seed)
+    try:
+        return next(_with_fallbacks(planner_for(guide, settings, seed).plans(limit=1), guide, settings, seed, 1), None) is not None
+    except (PlanningTimeout, HorizonTooShort):
+        return True
+    except NoPlanError:
+        return False
 
 
 # the vehicle limits a plan is tried without, when none exists within them: (field, relaxed value,

@@ -173,11 +173,11 @@ class ScenarioItem(pytest.Item):
                 for result in runner.base():
                     self._count(result)
             else:
-                runner.refined(self._count, key=self.nodeid.encode(), discarded=self._discard)
+                runner.refined(self._count, key=self.nodeid.encode(), discarded=self._discard, set_aside=lambda result: self.tally.aside(result.seconds))
         except ScenarioFailed as failure:
             self._report_failure(runner, failure.result)
         finally:
-            self.user_properties += [("examples", self.tally.cases), ("discarded", self.tally.discarded)]
+            self.user_properties += [("examples", self.tally.cases), ("discarded", self.tally.discarded), ("set_aside", self.tally.set_aside)]
             self.user_properties += [(key(outcome), self.tally.outcomes[outcome]) for outcome in OUTCOMES]
             self.user_properties += [(f"seconds_{stage}", round(self.tally.seconds[stage], 3)) for stage in STAGES]
 
@@ -227,7 +227,9 @@ class ScenarioItem(pytest.Item):
         where = "at" if case.strategy == REFINED else f"at instance {case.instance} of"
         lines = [f"scenario {self.scenario.name}: {result.kind} ({result.outcome}) {where} these values (seed {case.seed}, {self.tally.cases} examples run):"]
         if case.values:
-            lines += [f"  {line}" for line in describe_values(logical_parameters(self.scenario), case.values)]
+            for line in describe_values(logical_parameters(self.scenario), case.values):
+                alone = result.culprit is not None and line.startswith(f"{result.culprit} = ")
+                lines.append(f"  {line}" + (": no concrete scenario has this value, whatever the others" if alone else ""))
         else:
             lines.append("  (no logical parameters: the planner chose every value)")
         if result.run is not None:
@@ -241,6 +243,7 @@ class ScenarioItem(pytest.Item):
         self.user_properties.append(("verdict", result.outcome))
         self.user_properties.append(("failure_kind", result.kind))
         self.user_properties.append(("failing_values", json.dumps(case.values, sort_keys=True)))
+        self.user_properties.append(("culprit", result.culprit or ""))
         self.user_properties.append(("explanation", why.splitlines()[0] if why else ""))
         raise ScenarioFailed(result, "\n".join(lines))
 
@@ -284,6 +287,8 @@ class SessionSummary:
         terminalreporter.write_sep("-", "roadlogic")
         discarded = f" ({c['discarded']} samples without a plan discarded: --roadlogic-no-plan discard)" if c.get("discarded") else ""
         terminalreporter.write_line(f"{self.items} scenarios, {c.get('examples', 0)} examples: {outcomes}{discarded}")
+        if c.get("set_aside"):
+            terminalreporter.write_line(f"{c['set_aside']} samples set aside: each of their values has concrete scenarios, but not together")
         terminalreporter.write_line(f"time per stage: {seconds}")
 
 

@@ -42,6 +42,9 @@ class CaseResult:
     message: str = ""  # the monitor's explanation, or why there is no plan
     seconds: dict[str, float] = field(default_factory=dict)  # per stage, summed over tries
     error: NoPlanError | None = None  # the planner's, when there is no plan
+    # the logical parameter whose sampled value alone has no concrete scenario (the others left to
+    # their ranges), when the refined strategy found one (Runner.without_plan_alone)
+    culprit: str | None = None
 
     @property
     def failed(self) -> bool:
@@ -128,7 +131,7 @@ class Runner:
 
     def refined(
         self, each: Callable[[CaseResult], None], count: int | None = None, search: bool = True, key: bytes | None = None,
-        discarded: Callable[[CaseResult], None] = lambda result: None,
+        discarded: Callable[[CaseResult], None] = lambda result: None, set_aside: Callable[[CaseResult], None] = lambda result: None,
     ) -> None:
         """``count`` (default: ``settings.examples``) samples drawn by Hypothesis, each run and handed to ``each``.
 
@@ -137,7 +140,9 @@ class Runner:
         to the simplest values that still fail (``key`` keeps one example database entry per
         scenario). With ``settings.no_plan == "discard"``, a sample without a plan goes to
         ``discarded`` and is rejected as ``assume(False)`` rejects one (Hypothesis's health check
-        stops an item whose samples mostly have none). Otherwise a plain sample, as the bench draws it: the default profile (a CI
+        stops an item whose samples mostly have none). Otherwise a sample whose constraints clash
+        fails only when one of its values alone has no plan (``CaseResult.culprit``); one whose
+        values each have plans, only not together, goes to ``set_aside`` and is rejected too. Otherwise a plain sample, as the bench draws it: the default profile (a CI
         profile's derandomize would override the seed), generation only, no database; the same seed
         draws the same samples everywhere.
         """
@@ -161,6 +166,15 @@ class Runner:
             if search and discard and result.outcome == NO_PLAN:
                 discarded(result)
                 hypothesis.reject()  # as assume(False): the sample does not count, and too many trip the health check
+            if result.kind == CANNOT_INSTANTIATE and values:
+                result.culprit = self.without_plan_alone(values)
+                if result.culprit is None:
+                    # each value has concrete scenarios, only not together: a combination outside
+                    # the logical scenario, drawn by independent sampling and set aside as
+                    # rejection sampling sets one aside (the README's rule)
+                    done -= 1
+                    set_aside(result)
+                    hypothesis.reject()
             each(result)
 
         if key is not None:
@@ -182,6 +196,26 @@ class Runner:
             )
         hypothesis.seed(self.settings.seed)(chosen(hypothesis.given(strategy(self.scenario))(example)))()
 
+    def without_plan_alone(self, values: dict[str, Any]) -> str | None:
+        """The first sampled parameter whose value alone, the others left to their ranges, has no
+        plan; None when each has one (then only the combination has none).
+
+        Why: parameters are drawn independently, but a scenario constrains them together (a brake
+        of 3 s from 120 to 30 kph needs more than the 6 m/s^2 the file allows), so a sample can
+        fall outside the logical scenario while every value in it lies inside. Such a sample is no
+        instance to test, where a value that no concrete scenario has is a defect of the file
+        (catch_up_band's gaps above its edge). Planning alone, one parameter at a time, in the
+        order of the report; only samples without a plan pay for it."""
+        from .pipeline import has_plan
+
+        if len(values) == 1:
+            return next(iter(values))
+        settings = self.settings.planning(False)
+        for name, value in values.items():
+            if not has_plan(self.scenario, {name: value}, self.settings.seed, settings):
+                return name
+        return None
+
     def explained(self, result: CaseResult) -> CaseResult:
         """A case without a plan, run again to say why: the constraints that cannot hold together
         (the pipeline has already tried thinner margins and relaxed vehicle limits, and names
@@ -190,7 +224,10 @@ class Runner:
         if result.outcome != NO_PLAN:
             return result
         again = self.run_case(result.case, explain=True)
-        return again if again.outcome == NO_PLAN else result
+        if again.outcome != NO_PLAN:
+            return result
+        again.culprit = result.culprit
+        return again
 
     # ---------------------------------------------------------------- the pipeline
 

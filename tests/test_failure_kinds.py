@@ -4,9 +4,11 @@ instantiated, with no other parameter blamed; ``--roadlogic-no-plan discard`` se
 aside instead, and counts them.
 
 ``tests/scenarios/close_in.osc``: the ego must close on a lead at 20 m/s to 10 m within 4 s at no
-more than 25 m/s. The band's edge: by the file's own arithmetic (exact values) 5 m/s * 4 s + 10 m
-= 30 m; with the tolerances a single value is read with (20 +- 0.5 m/s, 10 +- 1.5 m, 4 +- 0.5 s)
-5.5 * 4.5 + 11.5 = 36.25 m. A start gap above it has no plan; one below has plans.
+more than 25 m/s; ``END_RANGE`` makes its end gap a second parameter, 8-12 m. A start gap alone has no concrete scenario above the band's edge: by the
+file's own arithmetic (exact values) 5 m/s * 4 s + 12 m = 32 m; with the tolerances a single value
+is read with (20 +- 0.5 m/s, 4 +- 0.5 s) 5.5 * 4.5 + 12 = 36.75 m. Below it, a start gap has plans
+with some end gap, though not with every one: such a sample (start gap 34 m, end gap 8 m) is set
+aside, not failed.
 """
 
 import re
@@ -20,11 +22,19 @@ pytest_plugins = ["pytester"]
 
 CLOSE_IN = ROOT / "tests" / "scenarios" / "close_in.osc"
 QUIET = ["-p", "no:cacheprovider", "-p", "no:randomly"]
-EXACT_EDGE, TOLERANT_EDGE = 30.0, 36.25
+EXACT_EDGE, TOLERANT_EDGE = 32.0, 36.75
+END_RANGE = ("position(10m, behind: lead, at: end)", "position([8m..12m], behind: lead, at: end)")
+
+
+def two_parameters(directory):
+    """close_in with its end gap a range: a second parameter, for the culprit to stand out from."""
+    path = directory / CLOSE_IN.name
+    path.write_text(CLOSE_IN.read_text().replace(*END_RANGE))
+    return path
 
 
 def test_a_band_no_plan_meets_fails_at_its_edge_as_a_scenario_that_cannot_be_instantiated(pytester):
-    (pytester.path / CLOSE_IN.name).write_text(CLOSE_IN.read_text())
+    two_parameters(pytester.path)
     result = pytester.runpytest_subprocess("--roadlogic-examples", "20", "--junitxml", "junit.xml", *QUIET)
     result.assert_outcomes(failed=1)
     report = result.stdout.str()
@@ -32,13 +42,45 @@ def test_a_band_no_plan_meets_fails_at_its_edge_as_a_scenario_that_cannot_be_ins
     # The failure section only: on CI (the CI variable set) pytest's short summary repeats the
     # whole message untruncated.
     failure = report.split("short test summary info")[0]
-    values = re.findall(r"^  (\S+) = ([\d.]+) m \(line (\d+), ([^)]*)\)$", failure, re.MULTILINE)
-    assert [(name, line, kind) for name, _, line, kind in values] == [("start_gap", "7", "declared parameter")], "no other parameter is blamed"
+    values = re.findall(r"^  (\S+) = ([\d.]+) m \(line (\d+), ([^)]*)\)(.*)$", failure, re.MULTILINE)
+    assert [(name, line, kind) for name, _, line, kind, _ in values] == [("start_gap", "7", "declared parameter"), ("ego.drive.position.distance", "17", "at: end")], failure
+    blamed = [name for name, _, _, _, suffix in values if suffix == ": no concrete scenario has this value, whatever the others"]
+    assert blamed == ["start_gap"], "the start gap alone is blamed, not the end gap"
     gap = float(values[0][1])
     assert EXACT_EDGE <= gap <= TOLERANT_EDGE, f"the shrunk start gap {gap} m is not at the band's edge ({EXACT_EDGE}-{TOLERANT_EDGE} m)"
     assert "cannot hold together" in report, "the constraints that clash are named"
     properties = {p.get("name"): p.get("value") for p in ET.parse(pytester.path / "junit.xml").iter("property")}
     assert properties["failure_kind"] == "the scenario cannot be instantiated" and properties["verdict"] == "no plan"
+    assert properties["culprit"] == "start_gap"
+
+
+def test_a_sample_whose_values_clash_only_together_blames_none_of_them(tmp_path):
+    from pytest_roadlogic.pipeline import load_scenario
+    from pytest_roadlogic.runner import Runner
+    from pytest_roadlogic.settings import RunSettings
+
+    runner = Runner(load_scenario(two_parameters(tmp_path)), RunSettings())
+    end = "ego.drive.position.distance"
+    assert runner.without_plan_alone({"start_gap": 35.0, end: 8.0}) is None, "35 m closes to 12 m, only not to 8 m"
+    assert runner.without_plan_alone({"start_gap": 38.0, end: 12.0}) == "start_gap", "38 m closes to no end gap"
+    assert runner.without_plan_alone({"start_gap": 38.0}) == "start_gap", "a single value is its own culprit"
+
+
+def test_samples_whose_values_clash_only_together_are_set_aside_not_failed(monkeypatch, tmp_path):
+    from hypothesis import strategies as st
+
+    from pytest_roadlogic import sampling
+    from pytest_roadlogic.pipeline import load_scenario
+    from pytest_roadlogic.runner import Runner
+    from pytest_roadlogic.settings import RunSettings
+
+    end = "ego.drive.position.distance"
+    together, fine = {"start_gap": 35.0, end: 8.0}, {"start_gap": 20.0, end: 8.0}
+    monkeypatch.setattr(sampling, "strategy", lambda checked: st.sampled_from([together, fine]))
+    ran, aside = [], []
+    Runner(load_scenario(two_parameters(tmp_path)), RunSettings()).refined(ran.append, count=2, set_aside=aside.append)
+    assert [r.case.values for r in aside] == [together], "35 m to 8 m has no plan, though each value has plans"
+    assert {r.outcome for r in ran} == {"conformant"} and all(r.case.values == fine for r in ran)
 
 
 def test_with_no_plan_discard_the_samples_without_a_plan_are_set_aside_and_counted(pytester):
