@@ -86,12 +86,14 @@ def run_instances(
     values: dict[str, object] | None = None,
     simulation_time_limit: float | None = DEFAULT_SIM_TIMEOUT,
     simulator: Simulator | None = None,
+    fallbacks: bool = True,
 ) -> Iterator[Outcome]:
     """Up to ``count`` instances from one planner, each plan different from all before it (the base strategy).
 
     Each instance takes plans until the monitor accepts one or ``max_tries`` were rejected; it ends
     early when the planner has no further plan. Planning errors (no plan, a timeout) and
-    ``SimulationTimeout`` propagate.
+    ``SimulationTimeout`` propagate. ``fallbacks``: when the planner has no plan, try thinner
+    margins, a finer step and relaxed limits (``_with_fallbacks``) before saying so.
     """
     from .planning import planner_for
     from .simulation.backends import simulator as default_simulator
@@ -104,7 +106,9 @@ def run_instances(
     guide, settings, seed = _guided(scenario, specification, values, settings, seed)
     automaton_seconds = time.perf_counter() - start
     planner = planner_for(guide, settings, seed)
-    plans = _with_fallbacks(planner.plans(limit=count * max_tries), guide, settings, seed, count * max_tries)
+    plans = planner.plans(limit=count * max_tries)
+    if fallbacks:
+        plans = _with_fallbacks(plans, guide, settings, seed, count * max_tries)
     for instance in range(count):
         seconds = {"automaton": automaton_seconds, "planning": 0.0, "simulation": 0.0, "monitoring": 0.0}
         automaton_seconds = 0.0
@@ -143,16 +147,19 @@ def _guided(scenario: CheckedScenario, specification: SymbolicAutomaton, values,
     return build_automaton(narrowed, values=declared), dataclasses.replace(settings, random_start=True), sample_seed(seed, values)
 
 
-def has_plan(scenario: CheckedScenario, values: dict[str, object], seed: int = 1, settings: PlanningSettings | ContinuousSettings | None = None) -> bool:
-    """Whether the scenario narrowed to ``values`` has a plan, with every fallback ``run_instances``
-    tries (planning alone: no simulation). A planning timeout or a horizon that binds is no proof
-    that the values have none, and counts as a plan."""
+def has_plan(scenario: CheckedScenario, values: dict[str, object], seed: int = 1, settings: PlanningSettings | ContinuousSettings | None = None,
+             fallbacks: bool = True) -> bool:
+    """Whether the scenario narrowed to ``values`` has a plan (planning alone: no simulation), with
+    every fallback ``run_instances`` tries or, without ``fallbacks``, within the planner's margins
+    and limits. A planning timeout or a horizon that binds is no proof that the values have none,
+    and counts as a plan."""
     from .planning import HorizonTooShort, NoPlanError, PlanningTimeout, planner_for
 
     settings = dataclasses.replace(settings or RunSettings().planning(), explain_unsatisfiable=False)
     guide, settings, seed = _guided(scenario, build_automaton(scenario), values, settings, seed)
     try:
-        return next(_with_fallbacks(planner_for(guide, settings, seed).plans(limit=1), guide, settings, seed, 1), None) is not None
+        plans = planner_for(guide, settings, seed).plans(limit=1)
+        return next(_with_fallbacks(plans, guide, settings, seed, 1) if fallbacks else plans, None) is not None
     except (PlanningTimeout, HorizonTooShort):
         return True
     except NoPlanError:

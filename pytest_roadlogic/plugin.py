@@ -288,7 +288,7 @@ class SessionSummary:
         discarded = f" ({c['discarded']} samples without a plan discarded: --roadlogic-no-plan discard)" if c.get("discarded") else ""
         terminalreporter.write_line(f"{self.items} scenarios, {c.get('examples', 0)} examples: {outcomes}{discarded}")
         if c.get("set_aside"):
-            terminalreporter.write_line(f"{c['set_aside']} samples set aside: each of their values has concrete scenarios, but not together")
+            terminalreporter.write_line(f"{c['set_aside']} samples set aside: each of their values has plans within the planner's margins and limits, but not together")
         terminalreporter.write_line(f"time per stage: {seconds}")
 
 

@@ -60,6 +60,12 @@ class ContinuousSettings:
     # of speed late by up to a second (see _speed_lead), which moves the speeds at a 3 s phase's
     # ends by a few tenths of a m/s
     acceleration_margin: float = 0.4
+    # s likewise for a sampled duration (the refined strategy's, sampling._band): the motion planner
+    # meets a phase's entry condition up to 1.2 s after the plan's step (measured on
+    # follow_then_overtake's refined samples: a relative speed the plan reached at the pass's first
+    # step, the trace reached 1.2 s later), so a phase planned at its range's shortest (8 s of
+    # [8..20] s) was simulated 6.6 s long
+    duration_margin: float = 1.0
     # when no plan keeps the margins, a second search keeps this fraction of them: the scenario may
     # have plans nearer its edges than the margins allow (catch_up_band: 0.5 m/s on both speeds over
     # 20 s moved its band's edge 20 m below the true one). Such a plan is simulated and monitored
@@ -92,7 +98,8 @@ class ContinuousSettings:
 
     def margins(self) -> dict[str | None, float]:
         """How far inside a range's edges the plan keeps, per physical dimension."""
-        return {"length": self.position_margin, "speed": self.speed_margin, "headway": self.headway_margin, "acceleration": self.acceleration_margin}
+        return {"length": self.position_margin, "speed": self.speed_margin, "headway": self.headway_margin, "acceleration": self.acceleration_margin,
+                "time": self.duration_margin}
 
     def thinned(self) -> "ContinuousSettings | None":
         """These settings with ``fallback_margins`` of each margin, or None when there is no such second search."""
@@ -100,11 +107,13 @@ class ContinuousSettings:
             return None
         f = self.fallback_margins
         return replace(self, position_margin=self.position_margin * f, speed_margin=self.speed_margin * f,
-                       headway_margin=self.headway_margin * f, acceleration_margin=self.acceleration_margin * f, fallback_margins=1.0)
+                       headway_margin=self.headway_margin * f, acceleration_margin=self.acceleration_margin * f,
+                       duration_margin=self.duration_margin * f, fallback_margins=1.0)
 
     def describe_margins(self) -> str:
         return (f"speed_margin {self.speed_margin:g} m/s, position_margin {self.position_margin:g} m, "
-                f"headway_margin {self.headway_margin:g} s, acceleration_margin {self.acceleration_margin:g} m/s^2")
+                f"headway_margin {self.headway_margin:g} s, acceleration_margin {self.acceleration_margin:g} m/s^2, "
+                f"duration_margin {self.duration_margin:g} s")
 
     def summary(self, lanes: int) -> str:
         """The vehicle limits and bounds on a road of ``lanes`` lanes, for messages that blame them."""
