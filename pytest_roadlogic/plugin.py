@@ -225,6 +225,8 @@ class ScenarioItem(pytest.Item):
             self.tally.seconds["artifacts"] += time.perf_counter() - started
         paths["case"] = case.save(directory / "case.json")
         where = "at" if case.strategy == REFINED else f"at instance {case.instance} of"
+        if result.at_no_values:
+            where = "at any values; for example at"
         lines = [f"scenario {self.scenario.name}: {result.kind} ({result.outcome}) {where} these values (seed {case.seed}, {self.tally.cases} examples run):"]
         if case.values:
             for line in describe_values(logical_parameters(self.scenario), case.values):

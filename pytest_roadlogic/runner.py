@@ -45,6 +45,8 @@ class CaseResult:
     # the logical parameter whose sampled value alone has no concrete scenario (the others left to
     # their ranges), when the refined strategy found one (Runner.without_plan_alone)
     culprit: str | None = None
+    # no values at all have a plan: the scenario itself cannot be instantiated (Runner._blamed)
+    at_no_values: bool = False
 
     @property
     def failed(self) -> bool:
@@ -83,6 +85,7 @@ class Runner:
         self.drivers = drivers
         self._simulator = simulator
         self.explain_no_plan = explain
+        self._plannable: bool | None = None  # whether the scenario has a plan at any values (Runner._blamed)
 
     @property
     def simulator(self) -> Simulator:
@@ -168,7 +171,7 @@ class Runner:
                 hypothesis.reject()  # as assume(False): the sample does not count, and too many trip the health check
             if result.kind == CANNOT_INSTANTIATE:
                 result = self._blamed(case, result)
-                if values and result.kind == CANNOT_INSTANTIATE and result.culprit is None:
+                if values and result.kind == CANNOT_INSTANTIATE and result.culprit is None and not result.at_no_values:
                     # each value has concrete scenarios, only not together: a combination outside
                     # the logical scenario, drawn by independent sampling and set aside as
                     # rejection sampling sets one aside (the README's rule)
@@ -212,7 +215,14 @@ class Runner:
         of their values alone had plans within them. So the values are tried alone first, within
         the margins and limits, and only a sample with a value that has none there is planned again
         with the fallbacks (``pipeline._with_fallbacks``), whose result it then reports."""
+        from .pipeline import has_plan
+
         values = case.values
+        if self._plannable is None:  # once per runner: one planning of the scenario as written
+            self._plannable = has_plan(self.scenario, {}, self.settings.seed, self.settings.planning(False))
+        if not self._plannable:
+            result.at_no_values = True  # no value is to blame: none has a plan (infeasible_order)
+            return result
         # a single value is the sample: it has no plan alone
         candidates = list(values) if len(values) == 1 else self.without_plan_alone(values, fallbacks=False, first=False)
         if values and not candidates:
@@ -249,7 +259,7 @@ class Runner:
         again = self.run_case(result.case, explain=True)
         if again.outcome != NO_PLAN:
             return result
-        again.culprit = result.culprit
+        again.culprit, again.at_no_values = result.culprit, result.at_no_values
         return again
 
     # ---------------------------------------------------------------- the pipeline
