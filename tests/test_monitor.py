@@ -84,3 +84,35 @@ def test_a_wait_must_last_its_time():
     # at 0.5 s per sample, the wait needs 3 to 5 samples (1.5..2.5 s) between its start and end
     assert monitor(automaton, trace([0, 0, 0, 0, 0, 0, 0, 2])).accepted
     assert not monitor(automaton, trace([0, 0, 0, 0, 2])).accepted
+
+
+def _one_car_trace(lanes):
+    # 10 m/s at the first sample only: a phase that asks for it at its start starts there
+    n = len(lanes)
+    speed = np.full(n, 12.0)
+    speed[0] = 10.0
+    columns = {"x": np.arange(n) * 5.0, "y": np.zeros(n), "heading": np.zeros(n), "speed": speed,
+               "acceleration": np.zeros(n), "lane": np.array(lanes)}
+    return Trace(np.arange(n) * DT, {"v1": columns})
+
+
+TIMED = ("scenario s:\n  v1: car\n  do serial:\n    a: v1.drive(duration: {a}) with:\n      speed(10mps, at: start)\n"
+         "    v1.drive() with:\n      lane(2)\n")
+
+
+@pytest.mark.parametrize("duration, lanes, why", [
+    # the car reaches lane 2 (index 1) after 3.5 s, where a lasts at most 2 s
+    ("[1s..2s]", [0] * 7 + [1] * 4, "a lasts 1..2 s but had lasted 2.0 s by t = 2.0 s, before the guard held"),
+    # the car is in lane 2 at 1-1.5 s only, where a lasts at least 3 s
+    ("[3s..4s]", [0] * 2 + [1] * 2 + [0] * 7, "a lasts 3..4 s but had lasted 1.5 s there (1.5 s short)"),
+])
+def test_a_guard_that_held_out_of_time_is_explained_by_the_duration_not_as_never_held(duration, lanes, why):
+    """Issue 20: a rejection must not print values that meet the guard it says never held."""
+    from pytest_roadlogic.automaton import build_automaton
+    from pytest_roadlogic.frontend import check_text
+
+    verdict = monitor(build_automaton(check_text(TIMED.format(a=duration)).scenarios[0]), _one_car_trace(lanes))
+    assert not verdict.accepted and verdict.miss.robustness >= 0
+    explanation = verdict.explain()
+    assert "never held" not in explanation and "held, but not in time" in explanation, explanation
+    assert why in explanation, explanation

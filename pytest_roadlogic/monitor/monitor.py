@@ -16,6 +16,7 @@ non-negative exactly when some run meets every guard. The pass costs O(samples x
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass, field
 
@@ -39,10 +40,18 @@ class GuardMiss:
     robustness: float
     values: dict[str, float]  # the guard's terms at that time, e.g. {"p(v1) - p(v2)": 3.2}
     locations: tuple[SourceLocation, ...] = ()
+    # when the guard did hold but a phase's duration did not allow the transition there: why
+    timing: str = ""
 
     def describe(self) -> str:
         values = ", ".join(f"{k} = {v:.2f}" for k, v in self.values.items())
         where = "".join(f"\n    declared at {loc}" for loc in self.locations)
+        if self.timing:
+            return (
+                f"stuck in {self.source}: the guard to {self.target} ({self.events}) held, but not in time:\n"
+                f"    {self.guard}\n"
+                f"    {self.timing}; the guard held at t = {self.time:.1f} s (robustness {self.robustness:+.2f}) where {values}{where}"
+            )
         return (
             f"stuck in {self.source}: the guard to {self.target} ({self.events}) never held:\n"
             f"    {self.guard}\n"
@@ -118,6 +127,12 @@ def monitor(automaton: SymbolicAutomaton, trace: Trace) -> Verdict:
     # the bound over a phase's two ends that came closest to its range where all else held, for
     # the report: (margin, sample, location, rate)
     rate_miss: tuple[float, int, int, object] | None = None
+    # per location, a guard out of it that held on a run with every guard met so far, where a
+    # phase's duration did not allow the transition (too short, or it had overrun): (seconds
+    # outside the range, sample, transition, phase, seconds lasted), the least outside kept, for
+    # the report of the location the best run got stuck in
+    timing_miss: dict[int, tuple[float, int, object, int, float]] = {}
+    overrun: dict[int, tuple[int, int, float]] = {}  # location -> (sample, phase, seconds it had lasted)
     # A run's state in a location: the samples at which its open timed phases started (empty when
     # the scenario has no durations). states[q]: that key -> (smallest robustness so far, run).
     Key = tuple  # sorted ((phase, start sample), ...)
@@ -134,8 +149,12 @@ def monitor(automaton: SymbolicAutomaton, trace: Trace) -> Verdict:
             if not all(progress[a][k - 1] for a in drivers[q]):
                 continue
             for key, entry in states[q].items():
-                if all(timings[p].admits_start(times[k] - times[start]) for p, start in key):
+                over = next((p for p, start in key if not timings[p].admits_start(times[k] - times[start])), None)
+                if over is None:
                     surviving[q][key] = entry
+                elif entry[0] >= 0:
+                    # the last run with every guard met that a phase's overrun ended, for the report
+                    overrun[q] = (k, over, float(times[k - 1] - times[dict(key)[over]]))
         new_states = [dict(s) for s in surviving]
         for q in invariant_locations:
             margin = invariant_margin[q][k]
@@ -150,6 +169,12 @@ def monitor(automaton: SymbolicAutomaton, trace: Trace) -> Verdict:
                 advanced: dict[Key, tuple[float, tuple]] = {}
                 for key, (value, run) in surviving[q].items():
                     stepped = _advance(key, starts, ends, k, times, timings, columns)
+                    if isinstance(stepped, _Broken):
+                        if value >= 0:
+                            for transition in transitions:
+                                if guard_margin[transition.id][k] >= 0 and (q not in timing_miss or stepped.outside < timing_miss[q][0]):
+                                    timing_miss[q] = (stepped.outside, k, transition, stepped.phase, stepped.seconds)
+                        continue
                     if stepped is None:
                         continue
                     next_key, timing_margin, missed = stepped
@@ -184,15 +209,33 @@ def monitor(automaton: SymbolicAutomaton, trace: Trace) -> Verdict:
         miss = _closest_miss(automaton, furthest, first_met[furthest] or 0, trace.snapshots(), times)
         if rate_miss is not None and (miss is None or miss.robustness >= 0):
             miss = _rate_miss(automaton, rate_miss, columns, times)
+        if furthest in timing_miss and (miss is None or miss.robustness >= 0):
+            miss = _timing_miss(automaton, timing_miss[furthest], trace.snapshots(), times)
+        elif furthest in overrun and miss is not None and miss.robustness >= 0 and not miss.timing:
+            k, phase, seconds = overrun[furthest]
+            timing = automaton.timings[phase]
+            miss = dataclasses.replace(miss, timing=f"{timing} but had lasted {seconds:.1f} s by t = {times[k - 1]:.1f} s, before the guard held",
+                                       locations=tuple(dict.fromkeys([*miss.locations, *([timing.source] if timing.source else [])])))
     return Verdict(accepted, float(best_final), automaton.location(furthest).name, best_run, miss, list(trace.incidents))
 
 
-def _advance(key: tuple, starts: tuple, ends: tuple, k: int, times, timings, columns) -> tuple[tuple, float, tuple | None] | None:
+@dataclass(frozen=True)
+class _Broken:
+    """A transition a phase's duration does not allow: the phase, how long it had lasted, and by
+    how many seconds that is outside its range."""
+
+    phase: int
+    seconds: float
+    outside: float
+
+
+def _advance(key: tuple, starts: tuple, ends: tuple, k: int, times, timings, columns) -> tuple[tuple, float, tuple | None] | _Broken | None:
     """The timed-phase state after a transition that starts the timed phases ``starts`` and ends
     ``ends`` at sample ``k``; the smallest margin of the durations (s) and the bounds over their
     two ends (``PhaseBound``, in their units) it ends; and the worst such bound it misses,
-    (margin, rate), if any. None when a duration is broken (that is no run, like a missed
-    progress); a missed bound is a negative margin, as a missed guard is."""
+    (margin, rate), if any. ``_Broken`` when a duration is broken (that is no run, like a missed
+    progress), None when a phase bound cannot be measured; a missed bound is a negative margin,
+    as a missed guard is."""
     if not starts and not ends:
         return key, math.inf, None
     started = dict(key)
@@ -205,7 +248,7 @@ def _advance(key: tuple, starts: tuple, ends: tuple, k: int, times, timings, col
         begun = started.pop(phase, k)
         seconds = times[k] - times[begun]
         if not timing.admits(seconds):
-            return None
+            return _Broken(phase, float(seconds), float(max(timing.low - seconds, seconds - timing.high)))
         if math.isfinite(timing.high):
             margin = min(margin, seconds - timing.low, timing.high - seconds)
         for rate in timing.rates:
@@ -236,6 +279,26 @@ def _rate_miss(automaton: SymbolicAutomaton, found: tuple, columns, times) -> Gu
         values={f"{rate.symbol}({rate.actor})": float(rate.value(series[begun], series[k], seconds)),
                 f"{name}({rate.actor}) at start": float(series[begun]), f"{name}({rate.actor}) at end": float(series[k])},
         locations=(rate.source,) if rate.source is not None else (),
+    )
+
+
+def _timing_miss(automaton: SymbolicAutomaton, found: tuple, snapshots, times) -> GuardMiss:
+    """A guard that held where the run could not take it, because a phase it ends would have
+    lasted too short or too long: the values it printed meet the guard, and this says why they
+    were not enough (issue 20: an explanation contradicted by its own values)."""
+    outside, k, transition, phase, seconds = found
+    timing = automaton.timings[phase]
+    return GuardMiss(
+        source=automaton.location(transition.source).name,
+        target=automaton.location(transition.target).name,
+        guard=str(transition.guard),
+        events=transition.label,
+        time=float(times[k]),
+        robustness=float(transition.guard.robustness(snapshots[k])),
+        values=_term_values(transition.guard, snapshots[k]),
+        locations=tuple(dict.fromkeys([*(b.source for b in transition.guard.atoms() if b.source is not None),
+                                       *([timing.source] if timing.source is not None else [])])),
+        timing=f"{timing} but had lasted {seconds:.1f} s there ({outside:.1f} s {'short' if seconds < timing.low else 'over'})",
     )
 
 
