@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import sys
 import time
 from pathlib import Path
@@ -79,7 +80,20 @@ def main(argv: list[str] | None = None) -> int:
     bench.add_argument("--report-only", action="store_true", help="rebuild report.md and the plots from --out/results.json, without running")
     args = parser.parse_args(argv)
     args.argv = list(sys.argv[1:] if argv is None else argv)
-    return {"run": _run, "check": _check, "automaton": _automaton, "plan": _plan, "replay": _replay, "bench": _bench}[args.command](args)
+    command = {"run": _run, "check": _check, "automaton": _automaton, "plan": _plan, "replay": _replay, "bench": _bench}[args.command]
+    try:
+        return command(args)
+    except KeyboardInterrupt:
+        # Ctrl-C: a line, not the traceback of wherever the solver or the simulation was
+        print(f"roadlogic {args.command}: interrupted", file=sys.stderr)
+        return 130
+    except BrokenPipeError:
+        # the reader of our output went away (roadlogic check ... | head): stop quietly, as cat does
+        try:
+            os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())  # nothing more to flush at exit
+        except OSError:
+            pass
+        return 141
 
 
 def _flag(parse):

@@ -125,6 +125,9 @@ class OscFile(pytest.File):
             raise self.CollectError(error.report()) from None
         except OptionError as error:
             raise self.CollectError(f"{self.path}: pytest_roadlogic_dialect: {error}") from None
+        except Exception as error:  # a bug of ours must not stop the other files either
+            self.config.option.continue_on_collection_errors = True
+            raise self.CollectError(f"{self.path}:1:1: error: internal error while checking ({type(error).__name__}: {error}); please report it") from None
         for warning in checked.warnings:
             self.warn(OscWarning(OscError([warning], sources=checked.sources).report()))
         for scenario in checked.scenarios:

@@ -87,6 +87,13 @@ class _ConstructContext:
         return value if isinstance(value, Interval) else None
 
 
+# the default driver's Frenet frame reaches 25 m from the road's right edge (frenetix's projection
+# domain): 7 lanes of 3.5 m. Measured: lane(7) and up ended in "x and/or y coordinate outside of
+# projection domain" inside the simulation (issue 20), 1,000,000 lanes at 1.7 GB
+MAX_LANES = 6
+MAX_LANES_WHY = " (the simulated road is one straight highway of at most that many lanes)"
+
+
 class _Checker:
     def __init__(self, lanes: int | None, registry: Registry | None = None, dialect: str | None = None) -> None:
         if registry is None:
@@ -615,12 +622,20 @@ class _Checker:
                 if (name == "path_min_driving_lanes" and lanes < value) or (name == "path_max_lanes" and lanes > value):
                     bound = "at least" if name == "path_min_driving_lanes" else "at most"
                     self.error(location, f"the scenario asks for {bound} {value} lanes, but the lanes option sets {lanes}", "leave out the lanes option (--lanes, roadlogic_lanes) to take the road from the scenario")
+            if lanes > MAX_LANES:
+                self.error(scenario.location, f"a road of {lanes} lanes (the lanes option); the tool drives at most {MAX_LANES}", "give a smaller --lanes" + MAX_LANES_WHY)
         else:
-            lanes = max(DEFAULT_LANES, least[0] if least else 1, self._lanes_used(scenario, env))
+            used, where = self._lanes_used(scenario, env)
+            if least and least[0] >= used:
+                where = least[1]
+            lanes = max(DEFAULT_LANES, least[0] if least else 1, used)
             self.lanes_origin = ""
             if most and lanes > most[0]:
                 lanes = most[0]
                 self.lanes_origin = f" (path_max_lanes({lanes}) on line {most[1].line})"
+            if lanes > MAX_LANES:
+                # the one error for it: the road keeps the lanes asked for, so the lane checks stay quiet
+                self.error(where, f"a road of {lanes} lanes; the tool drives at most {MAX_LANES}", f"use lanes 1 to {MAX_LANES}" + MAX_LANES_WHY)
         self.lanes = lanes
         return lanes
 
@@ -659,8 +674,9 @@ class _Checker:
                 bounds[modifier.name] = (int(value.low), modifier.location)
         return bounds
 
-    def _lanes_used(self, scenario: model.Scenario, env: dict) -> int:
-        """The fewest lanes on which every lane number and lane change the scenario writes exists."""
+    def _lanes_used(self, scenario: model.Scenario, env: dict) -> tuple[int, SourceLocation]:
+        """The fewest lanes on which every lane number and lane change the scenario writes exists,
+        and where the use that needs the most stands."""
 
         def highest(argument: model.Argument | None) -> int:
             try:
@@ -671,17 +687,19 @@ class _Checker:
                 return int(math.floor(value.high))
             return 1
 
-        needed = 1
+        needed, where = 1, scenario.location
         for behavior in scenario.behaviors:
             for node in model.walk(behavior):
                 if not isinstance(node, model.Invocation):
                     continue
-                uses = [(self.registry.action(node.action), node.arguments)]
-                uses += [(self.registry.modifier(m.name), m.arguments) for m in node.modifiers]
-                for construct, arguments in uses:
+                uses = [(self.registry.action(node.action), node.arguments, node.location)]
+                uses += [(self.registry.modifier(m.name), m.arguments, m.location) for m in node.modifiers]
+                for construct, arguments, location in uses:
                     if construct is not None:
-                        needed = max(needed, construct.lanes_needed(library.bind(construct.signature, arguments), highest))
-        return needed
+                        lanes = construct.lanes_needed(library.bind(construct.signature, arguments), highest)
+                        if lanes > needed:
+                            needed, where = lanes, location
+        return needed, where
 
     def _event_specification(self, spec, scenario: model.Scenario, env: dict, location: SourceLocation, waits: bool = False) -> None:
         """An event reference or a condition (``constructs.conditions`` says which ones the tool reads);

@@ -26,6 +26,7 @@ from . import model
 from .errors import Diagnostic, OscError, SourceLocation
 from .generated.OpenScenario2Parser import OpenScenario2Parser as P
 from .lexer import DEDENT, INDENT, IndentingLexer
+from .limits import check_limits
 from .standard_library import standard_library
 from .units import UNITS, split_physical_literal
 
@@ -86,6 +87,14 @@ def parse_text(text: str, path: str = "<string>", units: Mapping[str, tuple[str 
     text = text.replace("\r\n", "\n").replace("\r", "\n")
     if text.startswith("\ufeff"):
         text = text[1:]  # a byte-order mark some editors write
+    check_limits(text, path)
+    try:
+        return _parse(text, path, units)
+    except RecursionError:  # a limit of limits.py should have refused the file first
+        raise OscError([Diagnostic(SourceLocation(path, 1, 1), "the file nests too deeply for the parser", "flatten its expressions and blocks")]) from None
+
+
+def _parse(text: str, path: str, units: Mapping[str, tuple[str | None, float]] | None) -> model.OscFile:
     lexer = IndentingLexer(InputStream(text), path)
     listener = _CollectingListener(path)
     lexer.removeErrorListeners()
@@ -110,7 +119,12 @@ def parse_file(path: str | Path, units: Mapping[str, tuple[str | None, float]] |
     try:
         text = path.read_text(encoding="utf-8")
     except UnicodeDecodeError as exc:
-        raise OscError([Diagnostic(SourceLocation(str(path), 1, 1), f"the file is not valid UTF-8 ({exc.reason})", "save it as UTF-8")]) from None
+        data = exc.object
+        line = data.count(b"\n", 0, exc.start) + 1
+        column = exc.start - (data.rfind(b"\n", 0, exc.start) + 1) + 1
+        shown = data[data.rfind(b"\n", 0, exc.start) + 1:].split(b"\n", 1)[0].decode("utf-8", errors="replace")
+        raise OscError([Diagnostic(SourceLocation(str(path), line, column), f"the file is not valid UTF-8: byte 0x{data[exc.start]:02x} ({exc.reason})",
+                                   "save it as UTF-8")], "\n" * (line - 1) + shown) from None
     except OSError as exc:
         raise OscError([Diagnostic(SourceLocation(str(path), 1, 1), f"cannot read the file: {exc.strerror}")]) from None
     return parse_text(text, str(path), units)

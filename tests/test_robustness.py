@@ -1,0 +1,69 @@
+"""Issue 20: no input, option value or interruption ends in a traceback, and one bad file never
+stops the others. Each test names the numbered item of the issue it checks."""
+
+import pytest
+
+from pytest_roadlogic.frontend import OscError, check_file, check_text
+from pytest_roadlogic.frontend.limits import MAX_BLOCKS, MAX_BRACKETS, MAX_NAME
+
+pytest_plugins = ["pytester"]
+QUIET = ["-p", "no:cacheprovider", "-p", "no:randomly"]
+GOOD = "import osc.standard\nscenario good:\n    v1: car\n    do v1.drive()\n"
+
+
+def located(text: str) -> tuple[str, str]:
+    """(the first error's 'line:column', its message) of a text the front end refuses."""
+    with pytest.raises(OscError) as caught:
+        check_text(text, "f.osc").raise_for_errors()
+    first = caught.value.errors[0]
+    return f"{first.location.line}:{first.location.column}", first.message
+
+
+def test_item_2_a_lane_beyond_the_simulated_road_is_refused_at_its_place():
+    where, message = located("import osc.standard\nscenario s:\n    v1: car\n    do v1.drive() with:\n        lane(7)\n")
+    assert where == "5:9" and "a road of 7 lanes; the tool drives at most 6" in message
+
+
+def test_item_4_a_million_lanes_is_refused_at_once():
+    where, message = located("import osc.standard\nscenario s:\n    v1: car\n    do v1.drive() with:\n        lane(1000000)\n        speed(1e308kph)\n")
+    assert where == "5:9" and "1000000 lanes" in message
+
+
+@pytest.mark.parametrize("text, where, what", [
+    ("scenario s:\n    v1: car\n    x: length with:\n        keep(it == " + "(" * 1000 + "1m" + ")" * 1000 + ")\n    do v1.drive()\n",
+     f"4:{19 + MAX_BRACKETS}", f"brackets nested {MAX_BRACKETS + 1} deep"),
+    ("scenario s:\n    v1: car\n    do serial:\n" + "".join("    " * (k + 2) + "serial:\n" for k in range(200)) + "    " * 202 + "v1.drive()\n",
+     f"{3 + MAX_BLOCKS}:{4 * (MAX_BLOCKS + 1) + 1}", f"blocks nested {MAX_BLOCKS + 1} deep"),
+    ("scenario s:\n    v1: car\n    " + "x" * 1_000_000 + ": length\n    do v1.drive()\n", "3:5", f"longer than {MAX_NAME} characters"),
+])
+def test_items_3_and_4_inputs_past_the_front_ends_limits_are_located_errors_not_recursion(text, where, what):
+    found, message = located(text)
+    assert (found, what in message) == (where, True), message
+
+
+def test_item_10_a_byte_that_is_not_utf8_is_reported_on_its_line(tmp_path):
+    path = tmp_path / "bad.osc"
+    path.write_bytes(b"scenario s:\n    v1: car\n    x: \xff\n    do v1.drive()\n")
+    with pytest.raises(OscError) as caught:
+        check_file(path)
+    assert str(caught.value).startswith(f"{path}:3:8: error: the file is not valid UTF-8: byte 0xff")
+
+
+def test_item_3_one_file_the_front_end_refuses_does_not_stop_the_others(pytester):
+    pytester.makefile(".osc", deep="scenario deep:\n    v1: car\n    x: length with:\n        keep(it == " + "(" * 1000 + "1m" + ")" * 1000 + ")\n    do v1.drive()\n")
+    pytester.makefile(".osc", good=GOOD)
+    result = pytester.runpytest_subprocess("--roadlogic-examples", "1", *QUIET)
+    result.assert_outcomes(passed=1, errors=1)
+    assert "Traceback" not in result.stdout.str() and "RecursionError" not in result.stdout.str()
+
+
+@pytest.mark.parametrize("raised, code, said", [(KeyboardInterrupt, 130, "roadlogic check: interrupted"), (BrokenPipeError, 141, "")])
+def test_item_11_an_interrupt_or_a_closed_pipe_ends_the_cli_without_a_traceback(monkeypatch, capsys, raised, code, said):
+    from pytest_roadlogic import cli
+
+    def interrupted(args):
+        raise raised()
+
+    monkeypatch.setattr(cli, "_check", interrupted)
+    assert cli.main(["check", "x.osc"]) == code
+    assert capsys.readouterr().err.strip() == said
