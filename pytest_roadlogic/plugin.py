@@ -62,6 +62,14 @@ def pytest_configure(config: pytest.Config) -> None:
     config.addinivalue_line("markers", "roadlogic: a scenario collected from an .osc file")
     config.addinivalue_line("markers", "slow: a long scenario or suite; deselect with -m 'not slow'")
     config.stash[SETTINGS] = _settings(config)  # a bad option value stops the session here, once
+    replay = _text(config, "replay")
+    if replay:
+        from .case import Case, CaseFileError
+
+        try:
+            Case.load(replay)  # once, here: not as a failure of every item
+        except CaseFileError as error:
+            raise pytest.UsageError(f"roadlogic: --roadlogic-replay {replay}: {error}") from None
     config.pluginmanager.register(SessionSummary(), "roadlogic-summary")
 
 

@@ -46,7 +46,27 @@ Values = dict[str, Any]
 
 
 class UnknownParameter(ValueError):
-    """A sample names a value the scenario does not leave open."""
+    """A sample names a value the scenario does not leave open, or gives one outside its range
+    or of the wrong kind (``--values``, a case file written by hand)."""
+
+
+def checked_value(parameter: LogicalParameter, value: Any) -> Any:
+    """``value`` when ``parameter`` may take it; else ``UnknownParameter`` saying what it may take.
+
+    Why: a sample outside the declared range was planned at the range's edge without a word
+    (issue 20: start_gap 99 of [10..30] planned at 28 m), and a string was a ValueError traceback."""
+    if parameter.choices:
+        if value not in parameter.choices:
+            raise UnknownParameter(f"{parameter.name} = {value!r} is not one of {', '.join(map(str, parameter.choices))}")
+        return value
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
+        raise UnknownParameter(f"{parameter.name} = {value!r} is not a number; give one in SI units ({UNIT[parameter.dimension] or 'no unit'})")
+    if parameter.integer and not float(value).is_integer():
+        raise UnknownParameter(f"{parameter.name} = {value!r} is not a whole number")
+    if not parameter.low - 1e-9 <= value <= parameter.high + 1e-9:
+        raise UnknownParameter(f"{parameter.name} = {value:g} is outside its range {parameter.show(parameter.low)}..{parameter.show(parameter.high)} "
+                               f"(line {parameter.location.line})")
+    return value
 
 
 @dataclass(frozen=True)
@@ -234,6 +254,7 @@ def guided(
     narrowed: dict[SourceLocation, tuple[float, float]] = {}
     for name, value in values.items():
         parameter = by_name[name]
+        value = checked_value(parameter, value)
         if parameter.choices or parameter.integer:
             band: Any = value
         else:

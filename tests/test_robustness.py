@@ -67,3 +67,23 @@ def test_item_11_an_interrupt_or_a_closed_pipe_ends_the_cli_without_a_traceback(
     monkeypatch.setattr(cli, "_check", interrupted)
     assert cli.main(["check", "x.osc"]) == code
     assert capsys.readouterr().err.strip() == said
+
+
+@pytest.mark.parametrize("values, said", [
+    ('{"start_gap": "abc"}', "start_gap = 'abc' is not a number; give one in SI units (m)"),
+    ('{"start_gap": 99}', "start_gap = 99 is outside its range 10 m..30 m (line 7)"),
+])
+def test_item_8_values_of_the_wrong_kind_or_outside_their_range_are_refused_by_name(capsys, values, said):
+    from pytest_roadlogic import cli
+    from tests.conftest import ROOT
+
+    assert cli.main(["run", str(ROOT / "scenarios" / "follow.osc"), "--values", values]) == cli.EXIT_INPUT
+    assert said in capsys.readouterr().err
+
+
+def test_item_8_a_replay_file_that_does_not_load_is_one_usage_error(pytester):
+    pytester.makefile(".osc", good=GOOD)
+    result = pytester.runpytest_subprocess("--roadlogic-replay", "missing.json", *QUIET)
+    assert result.ret == pytest.ExitCode.USAGE_ERROR
+    result.stderr.fnmatch_lines(["*--roadlogic-replay missing.json*"])
+    assert "Traceback" not in result.stdout.str() + result.stderr.str()
