@@ -43,7 +43,7 @@ class CaseResult:
     seconds: dict[str, float] = field(default_factory=dict)  # per stage, summed over tries
     error: NoPlanError | None = None  # the planner's, when there is no plan
     # the logical parameter whose sampled value alone has no concrete scenario (the others left to
-    # their ranges), when the refined strategy found one (Runner.without_plan_alone)
+    # their ranges), when the refined strategy found one (Runner._blamed)
     culprit: str | None = None
     # no values at all have a plan: the scenario itself cannot be instantiated (Runner._blamed)
     at_no_values: bool = False
@@ -146,7 +146,8 @@ class Runner:
         ``discarded`` and is rejected as ``assume(False)`` rejects one (Hypothesis's health check
         stops an item whose samples mostly have none). Otherwise a sample whose constraints clash
         fails only when one of its values alone has no plan (``CaseResult.culprit``); one whose
-        values each have plans, only not together, goes to ``set_aside`` and is rejected too. Otherwise a plain sample, as the bench draws it: the default profile (a CI
+        values each have plans, only not together, goes to ``set_aside`` and is rejected too.
+        Without ``search``, a plain sample, as the bench draws it: the default profile (a CI
         profile's derandomize would override the seed), generation only, no database; the same seed
         draws the same samples everywhere.
         """
