@@ -34,10 +34,10 @@ from .frontend.checked import CheckedScenario
 from .frontend.errors import SourceLocation
 from .frontend.library import Binding, bind
 from .frontend.parameters import MIRRORED, ParameterSpace
-from .frontend.units import ACCELERATION, LENGTH, SPEED, TIME
+from .frontend.units import SI_UNIT
 from .frontend.values import EvaluationError, Interval, evaluate
 
-UNIT = {LENGTH: "m", SPEED: "m/s", TIME: "s", ACCELERATION: "m/s^2", None: ""}
+UNIT = SI_UNIT
 # Samples of physical values lie on a 0.1 grid (in SI units): readable in reports, and a shrunk
 # failure lands on a round value instead of 12.000000000000002.
 STEP = 0.1

@@ -74,11 +74,17 @@ def test_physical_literals_are_converted_to_si(literal, value, dimension):
     assert default.value == pytest.approx(value) and default.dimension == dimension
 
 
-@pytest.mark.parametrize("spelling", ["[10..20]m", "[10m..20m]", "[20m..10m]", "range(10m, 20m)"])
-def test_both_range_spellings_either_order_and_range_call(spelling):
+@pytest.mark.parametrize("spelling", ["[10..20]m", "[10m..20m]", "range(10m, 20m)"])
+def test_both_range_spellings_and_range_call(spelling):
     default = parse_text(f"scenario s:\n    x: length = {spelling}\n").scenarios[0].fields[0].default
     assert isinstance(default, model.Range)
     assert (default.low.value, default.high.value) == (10.0, 20.0)
+
+
+def test_a_range_written_high_to_low_is_an_error_not_silently_swapped():
+    """Issue 20: [20m..10m] holds no value; swapping it would guess which bound the author meant."""
+    with pytest.raises(OscError, match="an empty range: its first bound is above its second"):
+        parse_text("scenario s:\n    x: length = [20m..10m]\n")
 
 
 @pytest.mark.parametrize("literal, value", [('"two words"', "two words"), ("'single'", "single"), ('"""triple"""', "triple"), ('"esc\\"aped"', 'esc"aped')])

@@ -25,8 +25,11 @@ def test_item_2_a_lane_beyond_the_simulated_road_is_refused_at_its_place():
 
 
 def test_item_4_a_million_lanes_is_refused_at_once():
-    where, message = located("import osc.standard\nscenario s:\n    v1: car\n    do v1.drive() with:\n        lane(1000000)\n        speed(1e308kph)\n")
+    where, message = located("import osc.standard\nscenario s:\n    v1: car\n    do v1.drive() with:\n        lane(1000000)\n        speed(130kph)\n")
     assert where == "5:9" and "1000000 lanes" in message
+    # the issue's input, with 1e308 kph besides: refused at the speed, before the lanes are counted
+    where, message = located("import osc.standard\nscenario s:\n    v1: car\n    do v1.drive() with:\n        lane(1000000)\n        speed(1e308kph)\n")
+    assert where == "6:15" and "past what the tool computes with" in message
 
 
 @pytest.mark.parametrize("text, where, what", [
@@ -47,6 +50,43 @@ def test_item_10_a_byte_that_is_not_utf8_is_reported_on_its_line(tmp_path):
     with pytest.raises(OscError) as caught:
         check_file(path)
     assert str(caught.value).startswith(f"{path}:3:8: error: the file is not valid UTF-8: byte 0xff")
+
+
+def errors_of(text: str) -> list[tuple[str, str]]:
+    """Every error of a text the front end refuses, as ('line:column', message)."""
+    with pytest.raises(OscError) as caught:
+        check_text(text, "f.osc").raise_for_errors()
+    return [(f"{e.location.line}:{e.location.column}", e.message) for e in caught.value.errors]
+
+
+def test_item_10_an_empty_range_is_refused_where_it_is_written():
+    """[20..10] holds no value: the author swapped the bounds, and the tool must not guess which."""
+    errors = errors_of("scenario s:\n    v1: car\n    g: length with:\n        keep(it in [30..10]m)\n"
+                       "    do v1.drive(duration: [20s..10s]) with:\n        speed(g, at: start)\n")
+    assert errors == [("4:20", "an empty range: its first bound is above its second"),
+                      ("5:27", "an empty range: its first bound is above its second")]
+
+
+def test_item_10_every_negative_duration_is_reported_not_only_the_first():
+    errors = errors_of("scenario s:\n    v1: car\n    do serial:\n        a: v1.drive(duration: -2s)\n        b: v1.drive(duration: -3s)\n")
+    assert errors == [("4:31", "a duration must not be negative"), ("5:31", "a duration must not be negative")]
+
+
+def test_item_10_a_number_past_what_the_tool_computes_with_is_refused_at_the_number():
+    """1e308 m had been carried to the planner and reported as a 309-digit number at the lane's line."""
+    errors = errors_of("scenario s:\n    v1: car\n    v2: car\n    do v2.drive(duration: 3s) with:\n        lane(1)\n"
+                       "        position(1e308m, ahead_of: v1, at: start)\n")
+    assert errors == [("6:18", "1e+308 m is past what the tool computes with: at most 1e+06 m")]
+
+
+def test_item_10_a_construct_the_checker_refuses_is_an_error_under_pytest_not_examples(pytester):
+    pytester.makefile(".osc", refused="scenario refused:\n    v1: car\n    do v1.drive(duration: 3s) with:\n        avoid_collisions(false)\n")
+    pytester.makefile(".osc", good=GOOD)
+    result = pytester.runpytest_subprocess("--roadlogic-examples", "1", *QUIET)
+    result.assert_outcomes(passed=1, errors=1)
+    assert "refused.osc:4:26: error: not supported: avoid_collisions(false)" in result.stdout.str()
+    refusal = result.stdout.str().split("ERROR collecting refused.osc")[1].split(" roadlogic ")[0]
+    assert "examples:" not in refusal and "Traceback" not in refusal
 
 
 def test_item_3_one_file_the_front_end_refuses_does_not_stop_the_others(pytester):

@@ -597,6 +597,9 @@ class _Checker:
                 hint = f"use a unit of {expected}, e.g. {example}"
             self.error(value.location, f"{what} expects {describe(expected)} for {parameter.name}, got {describe(result.dimension)}", hint)
             return
+        if parameter.name == "duration" and result.low < 0:
+            # here rather than where the automaton reads it, so that every negative one is reported
+            self.error(value.location, "a duration must not be negative", "give a time from 0s up, e.g. 3s or [2s..4s]")
         if kind == "uint":
             if result.low < 0 or (result.is_point and not float(result.low).is_integer()):
                 self.error(value.location, f"{parameter.name}: takes a whole number from 0 up")

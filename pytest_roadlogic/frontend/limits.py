@@ -18,6 +18,9 @@ MAX_BRACKETS = 64  # (, [ and { open at one place
 MAX_BLOCKS = 48  # indented blocks open at one line
 MAX_BYTES = 2_000_000  # of one file
 MAX_NAME = 256  # characters of one identifier
+# A physical value in SI units (metres, seconds, m/s, m/s^2): far past a road scenario (1,000 km,
+# 11 days) and far inside what the planner's rationals and the LP's floats carry exactly.
+MAX_MAGNITUDE = 1e6
 
 
 def check_limits(text: str, path: str) -> None:

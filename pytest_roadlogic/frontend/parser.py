@@ -26,9 +26,9 @@ from . import model
 from .errors import Diagnostic, OscError, SourceLocation
 from .generated.OpenScenario2Parser import OpenScenario2Parser as P
 from .lexer import DEDENT, INDENT, IndentingLexer
-from .limits import check_limits
+from .limits import MAX_MAGNITUDE, check_limits
 from .standard_library import standard_library
-from .units import UNITS, split_physical_literal
+from .units import SI_UNIT, UNITS, split_physical_literal
 
 ACTOR_TYPES = ("car", "truck", "vehicle", "stationary_object")
 
@@ -568,17 +568,29 @@ class _Builder:
             dimension, factor = self.unit(unit_token.text, unit_loc)
             low = model.Quantity(low.value * factor, dimension, low.location)
             high = model.Quantity(high.value * factor, dimension, high.location)
+            for bound in (low, high):
+                self.bounded(bound.value, dimension, bound.location)
         elif low.dimension != high.dimension:
             self.error(location, f"the range's bounds differ in kind ({low.dimension or 'number'} and {high.dimension or 'number'})", "give both bounds a unit of the same kind")
             return model.Literal("<bad range>", location)
         if low.value > high.value:
-            low, high = high, low  # the standard accepts either order
+            # an empty interval: no value lies in it; most likely the bounds were swapped (issue 20)
+            self.error(location, "an empty range: its first bound is above its second", "write the smaller bound first, e.g. [10..20]m")
+            return model.Literal("<bad range>", location)
         return model.Range(low, high, location)
 
     def physical(self, text: str, location: SourceLocation) -> model.Quantity:
         number, unit = split_physical_literal(text)
         dimension, factor = self.unit(unit, location)
+        self.bounded(number * factor, dimension, location)
         return model.Quantity(number * factor, dimension, location)
+
+    def bounded(self, value: float, dimension: str | None, location: SourceLocation) -> None:
+        """Refuse a physical value past MAX_MAGNITUDE: 1e308 m reached the planner and came back as a
+        300-digit number in a message (issue 20)."""
+        if dimension is not None and not abs(value) <= MAX_MAGNITUDE:
+            unit = SI_UNIT.get(dimension, "")
+            self.error(location, f"{value:g} {unit} is past what the tool computes with: at most {MAX_MAGNITUDE:g} {unit}", "write a value a road scenario can have (1e6 m is 1,000 km, 1e6 s 11 days)")
 
     def unit(self, unit: str, location: SourceLocation) -> tuple[str | None, float]:
         try:

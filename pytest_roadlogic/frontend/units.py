@@ -14,6 +14,8 @@ LENGTH = "length"
 TIME = "time"
 SPEED = "speed"
 ACCELERATION = "acceleration"
+# how every stage after the parser writes a value of each dimension: in SI, the unit values are kept in
+SI_UNIT = {LENGTH: "m", TIME: "s", SPEED: "m/s", ACCELERATION: "m/s^2", None: ""}
 
 # unit name -> (dimension, factor to SI): the modelled units the standard library declares
 # (stdlib/osc/physical.osc), read on first use

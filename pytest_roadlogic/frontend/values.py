@@ -15,7 +15,7 @@ from typing import Mapping, Union
 from . import model
 from .errors import SourceLocation, error_at
 from .library import UNSUPPORTED_EXPRESSIONS
-from .units import ACCELERATION, LENGTH, SPEED, TIME
+from .units import ACCELERATION, LENGTH, SI_UNIT, SPEED, TIME
 
 # dimension -> exponents of (metre, second)
 _EXPONENTS: dict[str | None, tuple[int, int]] = {
@@ -54,7 +54,7 @@ class Interval:
         return self.low > self.high
 
     def __str__(self) -> str:
-        unit = {LENGTH: "m", TIME: "s", SPEED: "m/s", ACCELERATION: "m/s^2"}.get(self.dimension, "")
+        unit = SI_UNIT.get(self.dimension, "")
         if self.is_point:
             return f"{self.low:g}{unit}"
         return f"[{self.low:g}..{self.high:g}]{unit}"
