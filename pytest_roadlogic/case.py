@@ -38,6 +38,10 @@ class Case:
     simulation_time_limit: float | None = None
     max_tries: int = 5
     simulator: str = DEFAULT_SIMULATOR
+    # vehicle -> "module:QualName" of the driver a pytest_roadlogic_driver hook gave it (the others
+    # are the simulator's own): a replay builds the same ones or refuses (simulation/named_drivers.py)
+    drivers: dict[str, str] = field(default_factory=dict)
+    versions: dict[str, str] = field(default_factory=dict)  # of the packages a run depends on, when written
 
     @classmethod
     def of(cls, path: str | Path, scenario: str, settings: RunSettings, **identity) -> "Case":
@@ -62,6 +66,22 @@ class Case:
             "tries": self.max_tries, "simulator": self.simulator,
         }
         return RunSettings(**{k: v for k, v in given.items() if v is not None})
+
+    def scenario_file(self, case_file: str | Path | None = None) -> Path:
+        """Where the scenario is: ``path`` as it stands when it exists, else relative to a folder above
+        the case file (the plugin records it relative to the rootdir, and writes the case file under it)."""
+        path = Path(self.path)
+        if path.is_absolute() or path.exists() or case_file is None:
+            return path
+        for folder in Path(case_file).resolve().parents:
+            if (folder / path).exists():
+                return folder / path
+        return path
+
+    def version_differences(self) -> list[str]:
+        """What differs between the versions this case was written with and the installed ones."""
+        now = installed_versions()
+        return [f"{name} {was} (now {now.get(name, 'not installed')})" for name, was in sorted(self.versions.items()) if now.get(name) != was]
 
     def to_json(self) -> str:
         return json.dumps(asdict(self), indent=2, sort_keys=True)
@@ -99,4 +119,23 @@ class Case:
                 parts += [option, str(value)]
         if self.simulator != DEFAULT_SIMULATOR:
             parts += ["--simulator", self.simulator]
+        for vehicle, name in sorted(self.drivers.items()):
+            parts += ["--driver", f"{vehicle}={name}"]
         return shlex.join(parts)
+
+
+# what a replay depends on besides the case: a different solver or motion planner may plan or drive otherwise
+VERSIONED = ("pytest-roadlogic", "clingo", "clingo-lpx", "frenetix", "commonroad-io", "hypothesis", "numpy", "scipy")
+
+
+def installed_versions() -> dict[str, str]:
+    import platform
+    from importlib.metadata import PackageNotFoundError, version
+
+    found = {"python": platform.python_version()}
+    for name in VERSIONED:
+        try:
+            found[name] = version(name)
+        except PackageNotFoundError:
+            pass
+    return found

@@ -33,10 +33,12 @@ from .progress import ProgressBar
 from .sampling import UnknownParameter
 from .settings import BASE, OPTIONS_BY_NAME, REFINED, STRATEGIES, OptionError, RunSettings, count as parse_count, lane_count, whole_number
 from .simulation.backends import UnknownSimulator
+from .simulation.named_drivers import DriverLoadError
 
 EXIT_ACCEPTED, EXIT_REJECTED, EXIT_INPUT = 0, 1, 2
 LANES_HELP = "lanes of the road (default: from the scenario: its path_min_driving_lanes/path_max_lanes and the lanes it names, at least 3)"
 # the run settings each command takes, as flags read from settings.OPTIONS
+DRIVER_HELP = "drive VEHICLE with the class MODULE:CLASS (built without arguments; see pytest_roadlogic.simulation.Driver) instead of the simulator's own; repeat for several"
 RUN_FLAGS = ("seed", "tries", "encoding", "horizon", "plan-timeout", "sim-timeout", "simulator")
 
 
@@ -48,6 +50,7 @@ def main(argv: list[str] | None = None) -> int:
     run.add_argument("--out", type=Path, default=Path("out"), help="artifact directory (default out/)")
     run.add_argument("--instances", type=_flag(whole_instances), default=1, help="run the planner's first N different plans, artifacts in --out/instance-NNN (default 1)")
     run.add_argument("--values", type=_values, default=None, help='logical parameter values as JSON, e.g. \'{"start_gap": 12.5}\' (SI units)')
+    run.add_argument("--driver", type=_driver, action="append", default=[], metavar="VEHICLE=MODULE:CLASS", help=DRIVER_HELP)
     replay = commands.add_parser("replay", help="run one case again exactly: from the case.json of a failure, or from a file and values")
     replay.add_argument("case", type=Path, help="a case.json written for a failure, or an .osc file")
     replay.add_argument("--scenario", help="with an .osc file: the scenario (default: the first)")
@@ -55,6 +58,7 @@ def main(argv: list[str] | None = None) -> int:
     replay.add_argument("--values", type=_values, default=None, help="with an .osc file: the sampled values as JSON (refined)")
     replay.add_argument("--instance", type=_flag(parse_count), default=0, help="with an .osc file: which plan, from 0 (base)")
     replay.add_argument("--lanes", type=_flag(lane_count), default=None, help=LANES_HELP)
+    replay.add_argument("--driver", type=_driver, action="append", default=[], metavar="VEHICLE=MODULE:CLASS", help="with an .osc file: " + DRIVER_HELP)
     _run_flags(replay, ("dialect",), "with an .osc file: ")
     _run_flags(replay, RUN_FLAGS, "with an .osc file: ")
     replay.add_argument("--out", type=Path, default=Path("out"), help="artifact directory (default out/)")
@@ -129,6 +133,24 @@ def _run_settings(args: argparse.Namespace, **extra) -> RunSettings:
             values[option.field] = value
     lanes = getattr(args, "lanes", None)
     return RunSettings(**values, lanes=lanes, **extra)
+
+
+def _driver(text: str) -> tuple[str, str]:
+    """A ``--driver`` option: ``VEHICLE=MODULE:CLASS``."""
+    vehicle, _, name = text.partition("=")
+    if not vehicle or ":" not in name or name.startswith(":") or name.endswith(":"):
+        raise argparse.ArgumentTypeError(f"{text!r} is not VEHICLE=MODULE:CLASS, e.g. ego=tests.drivers:NeverChangesLane")
+    return vehicle, name
+
+
+def _driver_factory(names: dict[str, str], scenario_file: Path):
+    """The drivers ``names`` gives, imported as pytest would (from the folders above the scenario),
+    or ``DriverLoadError``; None when there are none (the simulator's own drive)."""
+    from .simulation.named_drivers import drivers_from_names
+
+    if not names:
+        return None
+    return drivers_from_names(names, [Path.cwd(), *scenario_file.resolve().parents])
 
 
 def _values(text: str) -> dict:
@@ -274,6 +296,11 @@ def _reporting_input_errors(args: argparse.Namespace, action):
     except (UnknownParameter, CaseFileError, UnknownSimulator) as error:
         print(f"{args.file}: error: {error}", file=sys.stderr)
         return EXIT_INPUT
+    except DriverLoadError as error:
+        replay_hint = f" (pytest --roadlogic-replay {args.file})" if str(args.file).endswith(".json") else ""
+        print(f"{args.file}: error: {error}; other drivers would not reproduce the case\n"
+              f"    hint: make the module importable from here, or run it with pytest from the session whose conftest.py gives it{replay_hint}", file=sys.stderr)
+        return EXIT_INPUT
     except KeyError as error:
         print(f"{args.file}: error: no scenario named {error.args[0]!r} in the file", file=sys.stderr)
         return EXIT_INPUT
@@ -292,7 +319,7 @@ def _run(args: argparse.Namespace) -> int:
         return _run_many(args)
 
     def run_one():
-        runner = Runner(_load(args), _run_settings(args))
+        runner = Runner(_load(args), _run_settings(args), _driver_factory(dict(args.driver), args.file))
         case = runner.case(strategy=REFINED, values=args.values) if args.values else runner.case(strategy=BASE, instance=0)
         return runner.run_case(case)
 
@@ -307,7 +334,7 @@ def _run_many(args: argparse.Namespace) -> int:
     from .runner import Runner
 
     def instances():
-        runner = Runner(_load(args), _run_settings(args))
+        runner = Runner(_load(args), _run_settings(args), _driver_factory(dict(args.driver), args.file))
         conformant = 0
         bar = ProgressBar(args.instances)
         for result in runner.base(args.instances):
@@ -335,19 +362,24 @@ def _run_many(args: argparse.Namespace) -> int:
 
 
 def _replay(args: argparse.Namespace) -> int:
+    from dataclasses import replace as replaced
+
     from .case import Case
     from .runner import replay
 
     def run_again():
         if args.case.suffix == ".json":
             case = Case.load(args.case)
+            case = replaced(case, path=str(case.scenario_file(args.case)))
+            for difference in case.version_differences():
+                print(f"{args.case}: warning: written with {difference}; the replay may plan or drive otherwise", file=sys.stderr)
         else:
             from .frontend import load_file
 
             name = load_file(args.case, args.lanes, dialect=args.setting_dialect).scenario_to_run(args.scenario).name
             identity = {"values": args.values or {}} if args.strategy == REFINED else {"instance": args.instance}
-            case = Case.of(args.case, name, _run_settings(args), strategy=args.strategy, **identity)
-        return replay(case)
+            case = Case.of(args.case, name, _run_settings(args), strategy=args.strategy, drivers=dict(args.driver), **identity)
+        return replay(case, drivers=_driver_factory(case.drivers, Path(case.path)))
 
     args.file = args.case
     result = _reporting_input_errors(args, run_again)

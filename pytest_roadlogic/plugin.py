@@ -162,6 +162,7 @@ class ScenarioItem(pytest.Item):
         self.scenario = scenario  # a CheckedScenario
         self.settings = settings  # the session's, with this file's dialect
         self.tally = Tally()
+        self.drivers = None  # the hook's drivers, recording which class drove which vehicle (set in runtest)
 
     # ---------------------------------------------------------------- running
 
@@ -171,7 +172,8 @@ class ScenarioItem(pytest.Item):
 
         settings = self.settings
         self.user_properties += [("strategy", settings.strategy), ("seed", settings.seed)]
-        runner = Runner(self.scenario, settings, self._drivers(), self._simulator(), explain=settings.strategy == BASE)
+        self.drivers = self._drivers()
+        runner = Runner(self.scenario, settings, self.drivers, self._simulator(), explain=settings.strategy == BASE)
         try:
             replay = _text(self.config, "replay")
             if replay:
@@ -193,8 +195,10 @@ class ScenarioItem(pytest.Item):
             self.user_properties += [(f"seconds_{stage}", round(self.tally.seconds[stage], 3)) for stage in STAGES]
 
     def _drivers(self):
+        from .simulation.named_drivers import RecordingDrivers
+
         hook = self.ihook.pytest_roadlogic_driver  # this item's folders' conftest.py files, as for the dialect
-        return lambda vehicle: hook(config=self.config, scenario=self.scenario, vehicle=vehicle)
+        return RecordingDrivers(lambda vehicle: hook(config=self.config, scenario=self.scenario, vehicle=vehicle))
 
     def _simulator(self):
         """The backend a ``pytest_roadlogic_simulator`` hook gives, else None (the option's)."""
@@ -212,21 +216,29 @@ class ScenarioItem(pytest.Item):
         self.tally.discarded += 1
 
     def _replay(self, runner, case) -> None:
-        """The one case of a case file, when it is this item's (other items are skipped)."""
-        if Path(case.path).resolve() != self.path.resolve() or case.scenario != self.scenario.name:
+        """The one case of a case file, when it is this item's (other items are skipped), with this
+        session's drivers: a run with other drivers than the case's is refused, not reported."""
+        if (Path(self.config.rootpath) / case.path).resolve() != self.path.resolve() or case.scenario != self.scenario.name:
             pytest.skip(f"--roadlogic-replay runs {case.path}::{case.scenario} only")
-        self._count(runner.run_case(case))
+        result = runner.run_case(case)
+        if result.run is not None and self.drivers.names != case.drivers:
+            pytest.fail(f"--roadlogic-replay: the case was found with the drivers {_drivers_text(case.drivers)}, "
+                              f"this session drives with {_drivers_text(self.drivers.names)}; "
+                              "replay it from the session (conftest.py files) that found it", pytrace=False)
+        self._count(result)
 
     # ---------------------------------------------------------------- reporting
 
     def _report_failure(self, runner, result) -> None:
         from .artifacts.writer import write_artifacts
         from .outcomes import NO_PLAN
+        from .case import installed_versions
         from .sampling import describe_values, logical_parameters
 
         if result.outcome == NO_PLAN:
             result = runner.explained(result)  # the search did not ask why; ask for the reported case
-        case = result.case
+        case = replace(result.case, path=self._relative(result.case.path), drivers=dict(self.drivers.names), versions=installed_versions())
+        result = replace(result, case=case)
         why = result.message  # for a clash, the report with the constraints at their lines (runner._failure)
         directory = Path(self.config.rootpath) / _text(self.config, "artifacts") / _safe_name(self.nodeid)
         paths: dict[str, Path] = {}
@@ -260,6 +272,13 @@ class ScenarioItem(pytest.Item):
         self.user_properties.append(("explanation", why.splitlines()[0] if why else ""))
         raise ScenarioFailed(result, "\n".join(lines))
 
+    def _relative(self, path: str) -> str:
+        """``path`` relative to the rootdir, where it is under it: a case file that replays on another checkout."""
+        try:
+            return Path(path).resolve().relative_to(Path(self.config.rootpath).resolve()).as_posix()
+        except ValueError:
+            return path
+
     def repr_failure(self, excinfo, style=None):
         from .frontend import OscError
 
@@ -269,6 +288,10 @@ class ScenarioItem(pytest.Item):
 
     def reportinfo(self):
         return self.path, self.scenario.scenario.location.line - 1, f"scenario {self.scenario.name}"
+
+
+def _drivers_text(names: dict[str, str]) -> str:
+    return ", ".join(f"{vehicle}: {name}" for vehicle, name in sorted(names.items())) or "the simulator's own only"
 
 
 class SessionSummary:

@@ -118,6 +118,35 @@ def test_the_driver_hook_drives_the_vehicle_under_test_and_a_bad_one_fails_with_
     again.assert_outcomes(failed=1)
     assert "1 examples" in again.stdout.str()
 
+    # issue 20, item 5: the case names its drivers and its scenario relative to the rootdir, and the
+    # printed command line replays it with the same driver (it had replayed as accepted, exit 0)
+    case = json.loads((artifacts / "case.json").read_text())
+    assert case["path"] == "overtake.osc" and case["drivers"] == {"v1": "tests.drivers:NeverChangesLane"}, case
+    assert "--driver v1=tests.drivers:NeverChangesLane" in report
+    cli = subprocess.run([sys.executable, "-m", "pytest_roadlogic.cli", "replay", str(artifacts / "case.json"), "--out", str(pytester.path / "cli")],
+                         capture_output=True, text=True, cwd=ROOT)
+    assert cli.returncode == 1, cli.stdout + cli.stderr
+    assert (pytester.path / "cli" / "trace.csv").read_text() == (artifacts / "trace.csv").read_text()
+
+    # a session with other drivers does not pass the case off as replayed
+    (pytester.path / "conftest.py").write_text(PROFILE)
+    other = pytester.runpytest_subprocess("--roadlogic-replay", str(artifacts / "case.json"), "--roadlogic-tries", "1", *QUIET)
+    other.assert_outcomes(failed=1)
+    assert "the case was found with the drivers v1: tests.drivers:NeverChangesLane, this session drives with the simulator's own only" in other.stdout.str()
+
+
+def test_a_replay_that_cannot_build_the_cases_drivers_says_so_and_runs_nothing(tmp_path, capsys):
+    from pytest_roadlogic.case import Case
+    from pytest_roadlogic.cli import main
+
+    case = Case(path=str(SCENARIOS / "follow.osc"), scenario="follow", values={"start_gap": 20.0, "end_gap": 20.0, "lead_speed": 10.0},
+                drivers={"tail": "nowhere.to.be.found:Planner"})
+    case.save(tmp_path / "case.json")
+    assert main(["replay", str(tmp_path / "case.json"), "--out", str(tmp_path / "out")]) == 2
+    said = capsys.readouterr().err
+    assert "error: the driver of tail, nowhere.to.be.found:Planner, does not load here (ModuleNotFoundError" in said
+    assert not (tmp_path / "out").exists()
+
 
 def test_ini_options_the_base_strategy_the_summary_and_junit_properties(pytester):
     copy(pytester, SCENARIOS / "follow.osc")
@@ -147,8 +176,11 @@ def test_pytest_xdist_gives_the_same_outcomes_as_a_serial_run(pytester):
     pytester.makefile(".osc", squeeze=SQUEEZE.read_text().replace("keep(it in [10..40]m)", "keep(it in [25..35]m)"))
     options = ["--roadlogic-examples", "3", "--roadlogic-horizon", "6", "-rA", *QUIET]
     serial = pytester.runpytest_subprocess(*options)
+    case_file = pytester.path / "roadlogic-artifacts" / "squeeze.osc_squeeze" / "case.json"
+    serial_case = case_file.read_text()
     shutil.rmtree(pytester.path / ".hypothesis")  # the second run must not start from the first one's failures
     parallel = pytester.runpytest_subprocess("-n", "2", *options)
+    assert case_file.read_text() == serial_case, "a failure found under -n 2 is the same case (it replays the same)"
 
     def outcomes(result):
         lines = result.stdout.lines
