@@ -186,7 +186,13 @@ class ScenarioItem(pytest.Item):
                 for result in runner.base():
                     self._count(result)
             else:
-                runner.refined(self._count, key=self.nodeid.encode(), discarded=self._discard, set_aside=lambda result: self.tally.aside(result.seconds))
+                sampling_seed = self.config.getoption("hypothesis_seed", None)
+                if sampling_seed is not None:
+                    sampling_seed = int(sampling_seed) if sampling_seed.lstrip("-").isdigit() else sampling_seed  # as Hypothesis reads it
+                    self.user_properties.append(("hypothesis_seed", sampling_seed))
+                with _hypothesis_statistics(self):
+                    runner.refined(self._count, key=self.nodeid.encode(), discarded=self._discard, set_aside=lambda result: self.tally.aside(result.seconds),
+                                   sampling_seed=sampling_seed)
         except ScenarioFailed as failure:
             self._report_failure(runner, failure.result)
         finally:
@@ -250,7 +256,7 @@ class ScenarioItem(pytest.Item):
         where = "at" if case.strategy == REFINED else f"at instance {case.instance} of"
         if result.at_no_values:
             where = "at any values; for example at"
-        lines = [f"scenario {self.scenario.name}: {result.kind} ({result.outcome}) {where} these values (seed {case.seed}, {self.tally.cases} examples run):"]
+        lines = [f"scenario {self.scenario.name}: {result.kind} ({result.outcome}) {where} these values (seed {case.seed}{self._sampled_with()}, {self.tally.cases} examples run):"]
         if case.values:
             for line in describe_values(logical_parameters(self.scenario), case.values):
                 alone = result.culprit is not None and line.startswith(f"{result.culprit} = ")
@@ -272,6 +278,10 @@ class ScenarioItem(pytest.Item):
         self.user_properties.append(("explanation", why.splitlines()[0] if why else ""))
         raise ScenarioFailed(result, "\n".join(lines))
 
+    def _sampled_with(self) -> str:
+        seed = self.config.getoption("hypothesis_seed", None)
+        return f", samples drawn with --hypothesis-seed {seed}" if seed is not None and self.settings.strategy == REFINED else ""
+
     def _relative(self, path: str) -> str:
         """``path`` relative to the rootdir, where it is under it: a case file that replays on another checkout."""
         try:
@@ -288,6 +298,24 @@ class ScenarioItem(pytest.Item):
 
     def reportinfo(self):
         return self.path, self.scenario.scenario.location.line - 1, f"scenario {self.scenario.name}"
+
+
+def _hypothesis_statistics(item: pytest.Item):
+    """Collect the refined search's statistics where Hypothesis's pytest plugin looks for them
+    (``item.hypothesis_statistics``), as it does for ``@given`` tests, which these items are not:
+    ``--hypothesis-show-statistics`` had printed an empty section."""
+    import contextlib
+
+    try:
+        from hypothesis.statistics import collector, describe_statistics
+    except ImportError:  # a Hypothesis without the statistics collector: no section, nothing else lost
+        return contextlib.nullcontext()
+
+    def note(statistics) -> None:
+        statistics["nodeid"] = item.nodeid
+        item.hypothesis_statistics = describe_statistics(statistics)
+
+    return collector.with_value(note)
 
 
 def _drivers_text(names: dict[str, str]) -> str:

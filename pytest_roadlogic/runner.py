@@ -136,6 +136,7 @@ class Runner:
     def refined(
         self, each: Callable[[CaseResult], None], count: int | None = None, search: bool = True, key: bytes | None = None,
         discarded: Callable[[CaseResult], None] = lambda result: None, set_aside: Callable[[CaseResult], None] = lambda result: None,
+        sampling_seed: int | str | None = None,
     ) -> None:
         """``count`` (default: ``settings.examples``) samples drawn by Hypothesis, each run and handed to ``each``.
 
@@ -149,7 +150,9 @@ class Runner:
         values each have plans, only not together, goes to ``set_aside`` and is rejected too.
         Without ``search``, a plain sample, as the bench draws it: the default profile (a CI
         profile's derandomize would override the seed), generation only, no database; the same seed
-        draws the same samples everywhere.
+        draws the same samples everywhere. ``sampling_seed`` (pytest's ``--hypothesis-seed``) draws the
+        samples instead of ``settings.seed``, which still fixes solving and simulation. Each sample's
+        outcome, tries and kind of failure are Hypothesis events (``--hypothesis-show-statistics``).
         """
         import hypothesis
         from hypothesis import HealthCheck, Phase
@@ -167,11 +170,15 @@ class Runner:
             done += 1
             case = self.case(strategy=REFINED, values=values)
             result = self.run_case(case, explain=False, fallbacks=discard)
+            if search:
+                _events(result)
             if search and discard and result.outcome == NO_PLAN:
                 discarded(result)
                 hypothesis.reject()  # as assume(False): the sample does not count, and too many trip the health check
             if result.kind == CANNOT_INSTANTIATE:
                 result = self._blamed(case, result)
+                if search:
+                    hypothesis.event("no plan", "no value alone has a plan" if result.at_no_values else f"{result.culprit} alone has none" if result.culprit else "only the values together have none (set aside)")
                 if values and result.kind == CANNOT_INSTANTIATE and result.culprit is None and not result.at_no_values:
                     # each value has concrete scenarios, only not together: a combination outside
                     # the logical scenario, drawn by independent sampling and set aside as
@@ -200,7 +207,8 @@ class Runner:
                 hypothesis.settings.get_profile("default"), max_examples=count, database=None, deadline=None, derandomize=False,
                 phases=[Phase.generate], print_blob=False, suppress_health_check=list(HealthCheck),
             )
-        hypothesis.seed(self.settings.seed)(chosen(hypothesis.given(strategy(self.scenario))(example)))()
+        seed = self.settings.seed if sampling_seed is None else sampling_seed
+        hypothesis.seed(seed)(chosen(hypothesis.given(strategy(self.scenario))(example)))()
 
     def _blamed(self, case: Case, result: CaseResult) -> CaseResult:
         """A sample without a plan within the planner's margins and limits (``result``), with the
@@ -279,6 +287,17 @@ def replay(case: Case, drivers: DriverFactory | None = None, simulator: Simulato
 
     scenario = load_file(case.path, case.lanes, dialect=case.dialect).scenario(case.scenario)
     return Runner(scenario, case.settings(), drivers, simulator).run_case(case)
+
+
+def _events(result: CaseResult) -> None:
+    """A sample's outcome for Hypothesis's statistics: what a tester reads to see where the examples went."""
+    import hypothesis
+
+    hypothesis.event("outcome", result.outcome)
+    if result.run is not None:
+        hypothesis.event("plans tried", str(result.run.tries))
+    elif result.failed:
+        hypothesis.event("without a simulation", result.kind)
 
 
 def _result(case: Case, outcome: Outcome) -> CaseResult:

@@ -238,6 +238,45 @@ def test_a_simulator_from_the_hook_simulates_every_case(pytester):
     assert (pytester.path / "simulations.txt").read_text().splitlines() == ["0.1 90.0", "0.1 90.0"], "one simulation per case, with the session's limits"
 
 
+PLAN_RECORDING_CONFTEST = """
+import hashlib
+import json
+from pathlib import Path
+from pytest_roadlogic.simulation.frenetix import FrenetixSimulator
+
+class Recording(FrenetixSimulator):
+    def simulate(self, plan, limits, drivers=None):
+        with Path("plans.txt").open("a") as record:
+            states = json.dumps(json.loads(plan.to_json())["states"])  # not its timing statistics
+            record.write(hashlib.sha256(states.encode()).hexdigest()[:12] + "\\n")
+        return super().simulate(plan, limits, drivers)
+
+def pytest_roadlogic_simulator(config, scenario):
+    return Recording()
+"""
+
+
+def test_hypothesis_seed_draws_the_samples_and_the_statistics_show_the_projects_events(pytester):
+    """Issue 20, item 9: --hypothesis-seed had been ignored (seeds 5 and 6 drew the same values) and
+    --hypothesis-show-statistics printed an empty section for scenario items."""
+    copy(pytester, SCENARIOS / "follow.osc")
+    pytester.makeconftest(PLAN_RECORDING_CONFTEST)
+
+    def plans(seed: str) -> list[str]:
+        record = pytester.path / "plans.txt"
+        record.unlink(missing_ok=True)
+        shutil.rmtree(pytester.path / ".hypothesis", ignore_errors=True)  # the example database replays earlier runs' samples first
+        result = pytester.runpytest_subprocess("--hypothesis-seed", seed, "--roadlogic-examples", "3", "--hypothesis-show-statistics", *QUIET)
+        result.assert_outcomes(passed=1)
+        statistics = result.stdout.str().split("Hypothesis Statistics")[1]
+        assert "follow.osc::follow:" in statistics and "outcome: conformant" in statistics and "plans tried: 1" in statistics, statistics
+        return record.read_text().splitlines()
+
+    five = plans("5")
+    assert plans("5") == five, "one seed, the same samples"
+    assert plans("6") != five, "another seed, other samples"
+
+
 def test_a_bad_option_value_stops_the_session_with_a_message_naming_the_option(pytester):
     copy(pytester, SCENARIOS / "follow.osc")
     for option, value, message in (
