@@ -315,6 +315,8 @@ def _reporting_input_errors(args: argparse.Namespace, action):
 def _run(args: argparse.Namespace) -> int:
     from .runner import Runner
 
+    if _out_refused(args):
+        return EXIT_INPUT
     if args.instances > 1:
         return _run_many(args)
 
@@ -330,10 +332,15 @@ def _run(args: argparse.Namespace) -> int:
 def _run_many(args: argparse.Namespace) -> int:
     """``run --instances N``: the planner's first N different plans (the base strategy), each
     simulated and monitored, a progress bar on stderr, artifacts per instance under ``--out``."""
-    from .artifacts.writer import write_artifacts
+    from .artifacts.files import replaced_directory
+    from .artifacts.writer import ARTIFACT_NAMES, write_artifacts
     from .runner import Runner
 
-    def instances():
+    def all_instances():
+        with replaced_directory(args.out, ARTIFACT_NAMES) as staging:  # the folder gets the new set whole, or keeps the old
+            return list(instances(staging))
+
+    def instances(staging: Path):
         runner = Runner(_load(args), _run_settings(args), _driver_factory(dict(args.driver), args.file))
         conformant = 0
         bar = ProgressBar(args.instances)
@@ -344,14 +351,14 @@ def _run_many(args: argparse.Namespace) -> int:
                 yield f"instance {done}: {result.outcome}: {result.message}", False
                 return
             directory = args.out / f"instance-{done:03d}"
-            write_artifacts(result.run, directory, animation=False)
+            write_artifacts(result.run, staging / directory.name, animation=False)
             conformant += not result.failed
             bar.update(done, f"{CONFORMANT} {conformant}")
             tries = result.run.tries
             yield f"instance {done}: {result.outcome} after {tries} tr{'y' if tries == 1 else 'ies'}, {sum(result.seconds.values()):.2f} s  {directory}", not result.failed
         bar.close()
 
-    results = _reporting_input_errors(args, lambda: list(instances()))
+    results = _reporting_input_errors(args, all_instances)
     if isinstance(results, int):
         return results
     for line, _ in results:
@@ -382,14 +389,30 @@ def _replay(args: argparse.Namespace) -> int:
         return replay(case, drivers=_driver_factory(case.drivers, Path(case.path)))
 
     args.file = args.case
+    if _out_refused(args):
+        return EXIT_INPUT
     result = _reporting_input_errors(args, run_again)
     return result if isinstance(result, int) else _show(result, args.out)
+
+
+def _out_refused(args: argparse.Namespace) -> bool:
+    """``--out`` names a folder that a run may not replace: say so before running (True)."""
+    from .artifacts.files import NotAnArtifactFolder, check_replaceable
+    from .artifacts.writer import ARTIFACT_NAMES
+
+    try:
+        check_replaceable(args.out, ARTIFACT_NAMES)
+    except NotAnArtifactFolder as error:
+        print(f"roadlogic {args.command}: --out: {error}", file=sys.stderr)
+        return True
+    return False
 
 
 def _show(result, out: Path) -> int:
     """Write the artifacts of a case and print its stages, verdict and files; the exit code of ``run``.
     A case without a simulation prints why on stderr (the constraints that clash, at their places)."""
-    from .artifacts.writer import write_artifacts
+    from .artifacts.files import replaced_directory
+    from .artifacts.writer import ARTIFACT_NAMES, write_artifacts
 
     case = result.case
     if result.run is None:
@@ -398,7 +421,8 @@ def _show(result, out: Path) -> int:
         return EXIT_REJECTED
     outcome = result.run
     started = time.perf_counter()
-    paths = write_artifacts(outcome, out)
+    with replaced_directory(out, ARTIFACT_NAMES) as staging:  # the folder gets the new set whole, or keeps the old
+        paths = {kind: out / path.name for kind, path in write_artifacts(outcome, staging).items()}
     result.seconds["artifacts"] = time.perf_counter() - started
     print(f"scenario {case.scenario} (seed {case.seed}): {result.outcome} after {outcome.tries} tr{'y' if outcome.tries == 1 else 'ies'}")
     for stage, seconds in result.seconds.items():

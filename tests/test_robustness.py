@@ -127,3 +127,48 @@ def test_item_8_a_replay_file_that_does_not_load_is_one_usage_error(pytester):
     assert result.ret == pytest.ExitCode.USAGE_ERROR
     result.stderr.fnmatch_lines(["*--roadlogic-replay missing.json*"])
     assert "Traceback" not in result.stdout.str() + result.stderr.str()
+
+
+def test_item_11_an_interrupted_run_leaves_the_old_set_of_artifacts_and_a_finished_one_only_the_new(tmp_path):
+    """Artifacts had been overwritten file by file: Ctrl-C mid-way left a mix of two runs."""
+    from pytest_roadlogic.artifacts.files import replaced_directory
+    from pytest_roadlogic.artifacts.writer import ARTIFACT_NAMES
+
+    out = tmp_path / "out"
+    out.mkdir()
+    (out / "plan.json").write_text("old")
+    (out / "simulation.gif").write_text("old")
+    with pytest.raises(KeyboardInterrupt):
+        with replaced_directory(out, ARTIFACT_NAMES) as staging:
+            (staging / "plan.json").write_text("new")
+            raise KeyboardInterrupt
+    assert {p.name: p.read_text() for p in tmp_path.rglob("*") if p.is_file()} == {"plan.json": "old", "simulation.gif": "old"}
+
+    with replaced_directory(out, ARTIFACT_NAMES) as staging:
+        (staging / "plan.json").write_text("new")
+    assert {p.name: p.read_text() for p in tmp_path.rglob("*") if p.is_file()} == {"plan.json": "new"}, "the old set's GIF is gone with it"
+
+
+def test_item_11_ctrl_c_during_the_swap_waits_for_it(tmp_path):
+    import os
+    import signal
+
+    from pytest_roadlogic.artifacts.files import _interrupts_deferred
+
+    done = []
+    with pytest.raises(KeyboardInterrupt):
+        with _interrupts_deferred():
+            os.kill(os.getpid(), signal.SIGINT)
+            done.append("the block ran to its end")
+    assert done == ["the block ran to its end"]
+
+
+def test_item_11_run_refuses_an_out_folder_with_files_it_did_not_write(tmp_path, capsys):
+    from pytest_roadlogic.cli import main
+
+    (tmp_path / "notes.txt").write_text("mine")
+    scenario = tmp_path / "s.osc"
+    scenario.write_text(GOOD)
+    assert main(["run", str(scenario), "--out", str(tmp_path)]) == 2
+    assert f"roadlogic run: --out: {tmp_path} holds files a run does not write (notes.txt, s.osc)" in capsys.readouterr().err
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["notes.txt", "s.osc"]

@@ -3,12 +3,17 @@
 from __future__ import annotations
 
 import json
+import re
 from pathlib import Path
 
 from ..pipeline import Outcome
 from .animation import animate_simulation
 from .commonroad import write_commonroad_xml
 from .files import write_text
+
+# every name a run writes into its output folder (run --instances: a folder per instance), and
+# what an interrupted write leaves: what `run` may replace there (files.replaced_directory)
+ARTIFACT_NAMES = re.compile(r"plan\.json|trace\.csv|scenario\.xml|trajectories\.png|verdict\.json|simulation\.gif|case\.json|instance-\d+|\..*\.partial.*")
 from .plot import plot_simulation
 
 
