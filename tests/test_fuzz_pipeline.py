@@ -8,8 +8,9 @@ checker's lanes, the parser's magnitudes) refuse before anything expensive start
 
 The generator writes scenarios from the constructs the tool executes (including issue 18's
 events, conditions, headways and speed changes), with numbers from the ordinary to 1e308, up to
-12 vehicles and 9 lanes, and nesting up to 60 deep; a third are then mutated (tokens deleted,
-duplicated, swapped, bytes inserted). Planning runs with small limits (a 10-step horizon, 2 s).
+12 vehicles and 9 lanes, and nesting up to 60 deep; some are then mutated (tokens deleted,
+duplicated, swapped, bytes inserted), and so are the project's own files. Planning runs with small
+limits (a 6-step horizon, 1 s).
 """
 
 from __future__ import annotations
@@ -25,8 +26,9 @@ from pytest_roadlogic.automaton import build_automaton
 from pytest_roadlogic.frontend import OscError, check_text
 from pytest_roadlogic.planning import NoPlanError, planner_for
 from pytest_roadlogic.planning.continuous import ContinuousSettings
+from tests.test_frontend_robustness import SOURCES
 
-PLANNING = ContinuousSettings(max_horizon=10, time_limit=2.0, explain_unsatisfiable=False)
+PLANNING = ContinuousSettings(max_horizon=6, time_limit=1.0, explain_unsatisfiable=False)
 SECONDS_PER_INPUT = 8.0  # the slowest measured: 1.6 s (a 12-vehicle plan at its horizon limit)
 MEGABYTES_PER_INPUT = 300  # growth of the process's peak memory from one input
 
@@ -138,8 +140,14 @@ def mutated(draw, text: str) -> str:
 
 @st.composite
 def scenario_text(draw) -> str:
+    """Half generated as they are, a quarter generated and mutated, a quarter a mutated file of the
+    project's suites and corpus (the syntax the generator does not write: imports, declarations,
+    CARLA's dialect, the standard's refused constructs)."""
+    kind = draw(st.integers(0, 3))
+    if kind == 3:
+        return draw(mutated(draw(st.sampled_from(SOURCES))))
     text = draw(generated())
-    return draw(mutated(text)) if draw(st.integers(0, 2)) == 0 else text
+    return draw(mutated(text)) if kind == 2 else text
 
 
 def through_the_pipeline(text: str) -> str:

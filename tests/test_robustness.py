@@ -172,3 +172,24 @@ def test_item_11_run_refuses_an_out_folder_with_files_it_did_not_write(tmp_path,
     assert main(["run", str(scenario), "--out", str(tmp_path)]) == 2
     assert f"roadlogic run: --out: {tmp_path} holds files a run does not write (notes.txt, s.osc)" in capsys.readouterr().err
     assert sorted(p.name for p in tmp_path.iterdir()) == ["notes.txt", "s.osc"]
+
+
+@pytest.mark.parametrize("option, value, said", [
+    ("--tries", "0", "argument --tries: '0' is not a number of tries; give a whole number from 1 up"),
+    ("--instances", "0", "argument --instances: '0' is not an instance count; give a whole number from 1 up"),
+])
+def test_item_8_cli_counts_below_one_are_usage_errors_naming_the_option(capsys, option, value, said):
+    """--tries 0 had raised StopIteration; --instances 0 had run one instance."""
+    from pytest_roadlogic.cli import main
+
+    with pytest.raises(SystemExit) as exited:
+        main(["run", "scenarios/follow.osc", option, value])
+    assert exited.value.code == 2 and said in capsys.readouterr().err
+
+
+def test_item_1_a_scenario_without_any_guard_passes_under_pytest(pytester):
+    """Its robustness is +inf: handed to hypothesis.target it had crashed every example (observation=-inf)."""
+    pytester.makefile(".osc", just_drive="scenario traffic.just_drive:\n    v1: car\n    do v1.drive()\n")
+    result = pytester.runpytest_subprocess("--roadlogic-examples", "2", *QUIET)
+    result.assert_outcomes(passed=1)
+    assert "InvalidArgument" not in result.stdout.str()
