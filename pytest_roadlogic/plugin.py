@@ -229,16 +229,16 @@ class ScenarioItem(pytest.Item):
         result = runner.run_case(case)
         if result.run is not None and self.drivers.names != case.drivers:
             pytest.fail(f"--roadlogic-replay: the case was found with the drivers {_drivers_text(case.drivers)}, "
-                              f"this session drives with {_drivers_text(self.drivers.names)}; "
-                              "replay it from the session (conftest.py files) that found it", pytrace=False)
+                        f"this session drives with {_drivers_text(self.drivers.names)}; "
+                        "replay it from the session (conftest.py files) that found it", pytrace=False)
         self._count(result)
 
     # ---------------------------------------------------------------- reporting
 
     def _report_failure(self, runner, result) -> None:
         from .artifacts.writer import write_artifacts
-        from .outcomes import NO_PLAN
         from .case import installed_versions
+        from .outcomes import NO_PLAN
         from .sampling import describe_values, logical_parameters
 
         if result.outcome == NO_PLAN:
