@@ -53,7 +53,13 @@ SOURCES = [path.read_text() for path in SEEDS] + [STANDARD_SYNTAX]
 
 @st.composite
 def mutated(draw):
-    source = draw(st.sampled_from(SOURCES))
+    return draw(mutated_text(draw(st.sampled_from(SOURCES))))
+
+
+@st.composite
+def mutated_text(draw, source: str) -> str:
+    """``source`` with one to four tokens or lines deleted, duplicated, swapped, or with bytes,
+    text or indentation inserted (also the pipeline fuzz test's mutation)."""
     if draw(st.booleans()):
         parts = re.findall(r"\s+|\w+|[^\w\s]", source)
     else:

@@ -15,7 +15,6 @@ limits (a 6-step horizon, 1 s).
 
 from __future__ import annotations
 
-import re
 import resource
 import time
 
@@ -26,7 +25,7 @@ from pytest_roadlogic.automaton import build_automaton
 from pytest_roadlogic.frontend import OscError, check_text
 from pytest_roadlogic.planning import NoPlanError, planner_for
 from pytest_roadlogic.planning.continuous import ContinuousSettings
-from tests.test_frontend_robustness import SOURCES
+from tests.test_frontend_robustness import SOURCES, mutated_text
 
 PLANNING = ContinuousSettings(max_horizon=6, time_limit=1.0, explain_unsatisfiable=False)
 SECONDS_PER_INPUT = 8.0  # the slowest measured: 1.6 s (a 12-vehicle plan at its horizon limit)
@@ -121,33 +120,15 @@ def generated(draw) -> str:
 
 
 @st.composite
-def mutated(draw, text: str) -> str:
-    parts = re.findall(r"\s+|\w+|[^\w\s]", text)
-    for _ in range(draw(st.integers(1, 3))):
-        i = draw(st.integers(0, len(parts) - 1))
-        kind = draw(st.sampled_from(["delete", "duplicate", "swap", "insert"]))
-        if kind == "delete" and len(parts) > 1:
-            del parts[i]
-        elif kind == "duplicate":
-            parts.insert(i, parts[i])
-        elif kind == "swap":
-            j = draw(st.integers(0, len(parts) - 1))
-            parts[i], parts[j] = parts[j], parts[i]
-        else:
-            parts.insert(i, draw(st.binary(min_size=1, max_size=3)).decode("utf-8", errors="replace"))
-    return "".join(parts)
-
-
-@st.composite
 def scenario_text(draw) -> str:
     """Half generated as they are, a quarter generated and mutated, a quarter a mutated file of the
     project's suites and corpus (the syntax the generator does not write: imports, declarations,
     CARLA's dialect, the standard's refused constructs)."""
     kind = draw(st.integers(0, 3))
     if kind == 3:
-        return draw(mutated(draw(st.sampled_from(SOURCES))))
+        return draw(mutated_text(draw(st.sampled_from(SOURCES))))
     text = draw(generated())
-    return draw(mutated(text)) if kind == 2 else text
+    return draw(mutated_text(text)) if kind == 2 else text
 
 
 def through_the_pipeline(text: str) -> str:
