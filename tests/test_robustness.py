@@ -72,6 +72,11 @@ def test_item_10_every_negative_duration_is_reported_not_only_the_first():
     assert errors == [("4:31", "a duration must not be negative"), ("5:31", "a duration must not be negative")]
 
 
+def test_a_behavior_without_any_vehicle_is_refused_at_its_do_not_in_the_planner():
+    errors = errors_of("scenario s:\n    do serial:\n        wait elapsed(3s)\n")
+    assert errors == [("2:8", "the behavior drives no vehicle: the scenario declares no actor")]
+
+
 def test_item_10_a_number_past_what_the_tool_computes_with_is_refused_at_the_number():
     """1e308 m had been carried to the planner and reported as a 309-digit number at the lane's line."""
     errors = errors_of("scenario s:\n    v1: car\n    v2: car\n    do v2.drive(duration: 3s) with:\n        lane(1)\n"

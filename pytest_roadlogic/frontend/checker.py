@@ -353,6 +353,13 @@ class _Checker:
         for parameter in parameters if scenario.behaviors else ():  # without a do: a base to inherit from
             if parameter.name not in used_names and parameter in scenario.fields:
                 self.warning(parameter.location, f"parameter {parameter.name!r} is never used")
+        if scenario.behaviors and not actors:
+            # nothing to plan or simulate; found by the fuzz test (an IndexError in the planner)
+            self.error(
+                scenario.behaviors[0].location,
+                "the behavior drives no vehicle: the scenario declares no actor",
+                "declare one (v1: vehicle) and give it an action (v1.drive())",
+            )
         if scenario.behaviors:
             for actor in actors:
                 if actor.name not in used_actors:
