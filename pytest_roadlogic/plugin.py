@@ -163,6 +163,7 @@ class ScenarioItem(pytest.Item):
         self.settings = settings  # the session's, with this file's dialect
         self.tally = Tally()
         self.drivers = None  # the hook's drivers, recording which class drove which vehicle (set in runtest)
+        self.failure_artifacts: tuple[dict, list[str]] | None = None  # (artifact paths, replay commands) of the reported case
 
     # ---------------------------------------------------------------- running
 
@@ -268,9 +269,10 @@ class ScenarioItem(pytest.Item):
         else:
             lines.append(why)
         lines += ["artifacts:", *(f"  {kind}: {path}" for kind, path in paths.items())]
-        lines.append(f"replay: pytest '{self.nodeid}' --roadlogic-replay {paths['case']}   (with this session's drivers)")
-        lines.append(f"    or: {case.command(paths['case'])}")
-        lines.append(f"    or: {case.command()}")
+        replay = [f"pytest '{self.nodeid}' --roadlogic-replay {paths['case']}   (with this session's drivers)", case.command(paths["case"]), case.command()]
+        lines.append(f"replay: {replay[0]}")
+        lines += [f"    or: {command}" for command in replay[1:]]
+        self.failure_artifacts = (paths, replay)
         self.user_properties.append(("verdict", result.outcome))
         self.user_properties.append(("failure_kind", result.kind))
         self.user_properties.append(("failing_values", json.dumps(case.values, sort_keys=True)))
@@ -320,6 +322,18 @@ def _hypothesis_statistics(item: pytest.Item):
 
 def _drivers_text(names: dict[str, str]) -> str:
     return ", ".join(f"{vehicle}: {name}" for vehicle, name in sorted(names.items())) or "the simulator's own only"
+
+
+@pytest.hookimpl(hookwrapper=True)
+def pytest_runtest_makereport(item: pytest.Item, call):
+    """With pytest-html, a failing scenario's report carries its plot, animation and replay commands."""
+    outcome = yield
+    report = outcome.get_result()
+    failure = getattr(item, "failure_artifacts", None)
+    if report.when == "call" and failure is not None and item.config.pluginmanager.hasplugin("html"):
+        from .artifacts.html_report import report_extras
+
+        report.extras = [*getattr(report, "extras", []), *report_extras(*failure)]
 
 
 class SessionSummary:

@@ -14,7 +14,7 @@ def run_cli(*args):
 def test_roadlogic_run_writes_every_artifact_and_accepts(tmp_path):
     result = run_cli("run", str(OVERTAKE), "--seed", "1", "--out", str(tmp_path))
     assert result.returncode == 0, result.stdout + result.stderr
-    for name in ("plan.json", "trace.csv", "scenario.xml", "trajectories.png", "simulation.gif", "verdict.json"):
+    for name in ("plan.json", "trace.csv", "scenario.xml", "scenario.xosc", "road.xodr", "trajectories.png", "simulation.gif", "verdict.json"):
         assert (tmp_path / name).stat().st_size > 0, name
     assert not [p.name for p in tmp_path.iterdir() if "partial" in p.name], "a temporary file was left behind"
     from PIL import Image

@@ -135,6 +135,19 @@ def test_the_driver_hook_drives_the_vehicle_under_test_and_a_bad_one_fails_with_
     assert "the case was found with the drivers v1: tests.drivers:NeverChangesLane, this session drives with the simulator's own only" in other.stdout.str()
 
 
+def test_pytest_html_shows_a_failing_scenarios_plot_animation_and_replay_command(pytester):
+    """Issue 21: with pytest-html (the html extra), the report embeds the failing case's pictures."""
+    pytest.importorskip("pytest_html")
+    copy(pytester, SCENARIOS / "overtake.osc")
+    pytester.makeconftest(DRIVER_CONFTEST + PROFILE)
+    result = pytester.runpytest_subprocess("--hypothesis-profile", "quick", "--roadlogic-tries", "1", "--html", "report.html", "--self-contained-html", *QUIET)
+    result.assert_outcomes(failed=1)
+    report = (pytester.path / "report.html").read_text()
+    assert "data:image/png;base64,iVBORw0KGgo" in report, "the plot (a PNG) is embedded"
+    assert "data:image/gif;base64,R0lGOD" in report, "the animation (a GIF) is embedded"
+    assert "--roadlogic-replay" in report and "roadlogic replay" in report, "the replay commands are shown"
+
+
 def test_a_replay_that_cannot_build_the_cases_drivers_says_so_and_runs_nothing(tmp_path, capsys):
     from pytest_roadlogic.case import Case
     from pytest_roadlogic.cli import main

@@ -1,4 +1,5 @@
-"""Writing what a run produced to a directory: plan, trace, CommonRoad scenario, plot, verdict."""
+"""Writing what a run produced to a directory: plan, trace, the concrete scenario (CommonRoad;
+OpenSCENARIO XML with its OpenDRIVE road), plot, animation, verdict."""
 
 from __future__ import annotations
 
@@ -10,10 +11,11 @@ from ..pipeline import Outcome
 from .animation import animate_simulation
 from .commonroad import write_commonroad_xml
 from .files import write_text
+from .openscenario import write_openscenario
 
 # every name a run writes into its output folder (run --instances: a folder per instance), and
 # what an interrupted write leaves: what `run` may replace there (files.replaced_directory)
-ARTIFACT_NAMES = re.compile(r"plan\.json|trace\.csv|scenario\.xml|trajectories\.png|verdict\.json|simulation\.gif|case\.json|instance-\d+|\..*\.partial.*")
+ARTIFACT_NAMES = re.compile(r"plan\.json|trace\.csv|scenario\.xml|scenario\.xosc|road\.xodr|trajectories\.png|verdict\.json|simulation\.gif|case\.json|instance-\d+|\..*\.partial.*")
 from .plot import plot_simulation
 
 
@@ -37,6 +39,7 @@ def write_artifacts(outcome: Outcome, directory: str | Path, animation: bool = T
         "plan": write_text(directory / "plan.json", outcome.plan.to_json()),
         "trace": write_text(directory / "trace.csv", outcome.simulation.trace.to_csv()),
         "commonroad": write_commonroad_xml(outcome.simulation, directory / "scenario.xml"),
+        **dict(zip(("openscenario", "opendrive"), write_openscenario(outcome.simulation, directory, name))),
         "plot": plot_simulation(outcome.simulation, outcome.verdict, directory / "trajectories.png", title=name),
         "verdict": write_text(directory / "verdict.json", json.dumps(verdict, indent=2)),
     }
