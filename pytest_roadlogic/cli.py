@@ -74,10 +74,14 @@ def main(argv: list[str] | None = None) -> int:
     _run_flags(plan, ("seed", "encoding", "horizon", "plan-timeout"))
     plan.add_argument("--show-asp", action="store_true", help="also print the generated instance program")
     bench = commands.add_parser("bench", help="the paper's evaluation (RQ1 time and conformance, RQ2 diversity): results, plots and report.md")
-    bench.add_argument("paths", type=Path, nargs="*", default=[Path("scenarios")], help=".osc files or folders (default: scenarios/)")
+    bench.add_argument("paths", type=Path, nargs="*", default=None, help=".osc files or folders (default: scenarios/)")
     bench.add_argument("--base", type=_flag(parse_count), default=None, help="instances per scenario with the base strategy (default 10, --quick 2)")
     bench.add_argument("--refined", type=_flag(parse_count), default=None, help="instances per scenario with the refined strategy (default 50, --quick 5)")
-    bench.add_argument("--quick", action="store_true", help="a small run (2 base and 5 refined instances per scenario) to try the setup")
+    bench.add_argument("--quick", action="store_true", help="a small run (2 base and 5 refined instances per scenario, 1 and 2 realistic) to try the setup")
+    bench.add_argument("--realistic", type=Path, action="append", default=None, metavar="FOLDER",
+                       help="a suite run beside the paper's and reported apart, its .osc files at any depth, each in the dialect its folder's "
+                            "conftest.py gives (default: scenarios/realistic/ when no paths are given)")
+    bench.add_argument("--no-realistic", action="store_true", help="run the paper's scenarios only")
     _run_flags(bench, RUN_FLAGS)
     bench.add_argument("--out", type=Path, default=Path("bench-report"), help="report directory (default bench-report/)")
     bench.add_argument("--no-artifacts", action="store_true", help="do not write each instance's plan, trace, CommonRoad XML and plot")
@@ -426,18 +430,31 @@ def _show(result, out: Path) -> int:
     result.seconds["artifacts"] = time.perf_counter() - started
     print(f"scenario {case.scenario} (seed {case.seed}): {result.outcome} after {outcome.tries} tr{'y' if outcome.tries == 1 else 'ies'}")
     for stage, seconds in result.seconds.items():
-        print(f"  {stage:<11} {seconds:7.3f} s")
+        print(f"  {stage:<12} {seconds:7.3f} s")
     print(outcome.verdict.explain())
     for kind, path in paths.items():
-        print(f"  {kind:<11} {path}")
+        print(f"  {kind:<12} {path}")
     return EXIT_ACCEPTED if outcome.verdict.accepted else EXIT_REJECTED
+
+
+def _library_only(path: Path, dialect: str | None) -> bool:
+    """A file that declares no scenario to run (a suite's lib.osc): as pytest collects no item from
+    it, the bench runs none. A file with errors is not: the bench reports them."""
+    from .frontend import OscError, check_file as check
+
+    try:
+        checked = check(path, dialect=dialect)
+    except OscError:
+        return False
+    return not checked.errors and not any(s.runnable for s in checked.scenarios)
 
 
 def _bench(args: argparse.Namespace) -> int:
     """Run the evaluation and write its report; exit 0 when every target is met, 1 when one is
     missed, 2 when the input is unusable."""
     from .evaluation import BenchmarkResults, BenchmarkSettings, run_benchmark, summaries, targets_met, write_report
-    from .evaluation.runner import PAPER_COUNTS, QUICK_COUNTS, RESULTS_FILE
+    from .evaluation.runner import (PAPER_COUNTS, QUICK_COUNTS, REALISTIC_COUNTS, REALISTIC_QUICK_COUNTS, RESULTS_FILE, Suite,
+                                    conftest_dialect)
 
     if args.report_only:
         try:
@@ -446,24 +463,42 @@ def _bench(args: argparse.Namespace) -> int:
             print(f"{args.out / RESULTS_FILE}: error: cannot read the results of a run ({error}); run roadlogic bench first", file=sys.stderr)
             return EXIT_INPUT
     else:
-        missing = [p for p in args.paths if not p.exists()]
+        given_paths = bool(args.paths)
+        args.paths = args.paths or [Path("scenarios")]
+        realistic_folders = args.realistic if args.realistic is not None else ([] if given_paths else [p for p in [Path("scenarios") / "realistic"] if p.is_dir()])
+        if args.no_realistic:
+            realistic_folders = []
+        missing = [p for p in [*args.paths, *realistic_folders] if not p.exists()]
         for path in missing:
             print(f"{path}: error: no such file or folder; give the .osc files or folders to evaluate", file=sys.stderr)
-        # a folder's own .osc files: scenarios/ is the paper's seven, scenarios/realistic/ is named to be run
+        # a folder's own .osc files: scenarios/ is the paper's seven, scenarios/realistic/ is its own suite
         files = osc_files(args.paths, recursive=False)
+        realistic_files = [f for f in osc_files(realistic_folders) if not _library_only(f, conftest_dialect(f, realistic_folders))]
         if missing or not files:
             if not missing:
                 print(f"{' '.join(map(str, args.paths))}: error: no .osc files there", file=sys.stderr)
             return EXIT_INPUT
         counts = QUICK_COUNTS if args.quick else PAPER_COUNTS
+        realistic_counts = REALISTIC_QUICK_COUNTS if args.quick else REALISTIC_COUNTS
+        realistic = None
+        if realistic_files:
+            # the realistic suite's timed phases need the continuous encoding (the default of a run)
+            realistic = Suite(tuple(realistic_files), *realistic_counts, run=_run_settings(args),
+                              dialects={str(f): d for f in realistic_files if (d := conftest_dialect(f, realistic_folders)) is not None})
         settings = BenchmarkSettings(
             tuple(files), base=counts[0] if args.base is None else args.base, refined=counts[1] if args.refined is None else args.refined,
             # the paper's evaluation (docs/evaluation.md) was measured on the grid encoding: it stays
             # the bench's default until the continuous one is measured there (--encoding continuous)
             run=_run_settings(args, **({} if args.setting_encoding else {"encoding": "grid"})), artifacts=not args.no_artifacts,
+            realistic=realistic,
         )
         total = len(files) * (settings.base + settings.refined)
-        print(f"{len(files)} scenarios, {settings.base} base and {settings.refined} refined instances each ({total} in all), seed {settings.run.seed}", file=sys.stderr)
+        also = ""
+        if realistic is not None:
+            total += len(realistic_files) * (realistic.base + realistic.refined)
+            also = f"; {len(realistic_files)} realistic, {realistic.base} base and {realistic.refined} refined each"
+        print(f"{len(files)} scenarios, {settings.base} base and {settings.refined} refined instances each{also} ({total} in all), seed {settings.run.seed}",
+              file=sys.stderr)
         bar = ProgressBar(total)
         conformant = 0
 

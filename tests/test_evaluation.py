@@ -4,6 +4,7 @@ selected with --run-bench (about 10 minutes on two cores)."""
 import json
 import math
 import re
+import shutil
 import subprocess
 import sys
 
@@ -210,6 +211,27 @@ def test_a_bad_file_is_reported_and_the_others_still_run(tmp_path):
     report = (tmp_path / "out" / "report.md").read_text()
     assert "## Scenarios that could not run" in report and "broken.osc:4:" in report
     assert "| follow | 1 | 100.0% |" in report
+
+
+def test_a_realistic_suite_runs_beside_the_papers_in_each_files_dialect_and_is_reported_apart(tmp_path):
+    """Issue 21: the bench runs a second suite (scenarios/realistic/ by default) and reports it in
+    its own section; a file is read in the dialect its folder's conftest.py gives, as under pytest,
+    and a suite's library file (no scenario to run) is not a scenario."""
+    suite = tmp_path / "realistic"
+    shutil.copytree(ROOT / "scenarios" / "realistic" / "carla_dialect", suite / "carla_dialect")
+    shutil.copy(ROOT / "scenarios" / "realistic" / "lead_brake.osc", suite)
+    result = bench("scenarios/follow.osc", "--realistic", str(suite), "--quick", "--base", "1", "--refined", "1", "--no-artifacts", "--out", str(tmp_path / "out"))
+    assert result.returncode in (0, 1), result.stdout + result.stderr
+    raw = json.loads((tmp_path / "out" / "results.json").read_text())
+    assert raw["scenarios"] == ["follow"] and raw["realistic"] == ["slow_cut_in", "lead_brake"]
+    assert raw["settings"]["realistic"]["dialects"] == {str(suite / "carla_dialect" / "slow_cut_in.osc"): "carla"}
+    assert raw["settings"]["realistic"]["encoding"] == "continuous" and raw["settings"]["encoding"] == "grid"
+    assert {r["scenario"] for r in raw["instances"]} == {"follow", "slow_cut_in", "lead_brake"}
+    report = (tmp_path / "out" / "report.md").read_text()
+    realistic = report[report.index("## Realistic scenarios"):]
+    rows = {row["scenario"]: row for row in table_after(realistic, "### Base strategy")}
+    assert sorted(rows) == ["lead_brake", "slow_cut_in"] and all(row["instances"] == "1" for row in rows.values())
+    assert "slow_cut_in" not in report[:report.index("## Realistic scenarios")], "the targets and RQ tables are the paper's suite's"
 
 
 def test_a_missing_path_or_results_file_is_a_usage_error(tmp_path):

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import os
 from pathlib import Path
 
 from . import figures
@@ -86,8 +87,30 @@ def render(results: BenchmarkResults, table: dict[tuple[str, str], StrategySumma
     lines += ["### Outcomes, refined strategy", "", *_outcome_table(table, scenarios, REFINED), ""]
     if "outcomes" in plots:
         lines += [f"![Outcomes, refined strategy]({plots['outcomes']})", ""]
+    lines += _realistic(results, table)
     lines += _unsuccessful(results)
     return "\n".join(lines)
+
+
+def _realistic(results: BenchmarkResults, table: dict[tuple[str, str], StrategySummary]) -> list[str]:
+    """The realistic suite beside the paper's seven: outcomes and time per stage, no targets (they
+    are the paper's). Two of its files are infeasible on purpose: "no plan" is their right answer."""
+    scenarios = [s for s in results.realistic if s not in results.errors]
+    suite = results.settings.get("realistic")
+    if not suite or not scenarios:
+        return []
+    lines = [
+        "## Realistic scenarios",
+        "",
+        f"`{os.path.commonpath(suite['paths']) if suite['paths'] else ''}`: {len(scenarios)} scenarios written the way testing "
+        f"engineers write them (kph, timed phases, headways, events, braking to a stop, up to five vehicles); "
+        f"{suite['base']} base and {suite['refined']} refined instances each, {suite['encoding']} encoding. "
+        "The files named infeasible_* are infeasible on purpose: their right outcome is no plan, with the clashing constraints named.",
+        "",
+    ]
+    for strategy in STRATEGIES:
+        lines += [f"### {strategy.capitalize()} strategy", "", *_time_table(table, scenarios, strategy), "", *_outcome_table(table, scenarios, strategy), ""]
+    return lines
 
 
 def _time_table(table, scenarios: list[str], strategy: str) -> list[str]:

@@ -39,6 +39,26 @@ PACKAGES = ("pytest-roadlogic", "clingo", "clingo-dl", "clingo-lpx", "frenetix",
 # instances per scenario: the paper's (which the targets are set for), and a run to try the setup
 PAPER_COUNTS = (10, 50)
 QUICK_COUNTS = (2, 5)
+# the realistic suite's (scenarios/realistic/): its instances drive up to a minute with five vehicles,
+# seconds to tens of seconds each, where the paper's take about one
+REALISTIC_COUNTS = (2, 10)
+REALISTIC_QUICK_COUNTS = (1, 2)
+
+
+@dataclass(frozen=True)
+class Suite:
+    """A second set of scenarios run beside the paper's seven and reported apart from them (the
+    targets are the paper's): the realistic suite, with its own counts and run settings (the
+    continuous encoding, which its timed phases need) and each file's dialect."""
+
+    paths: tuple[Path, ...]
+    base: int = REALISTIC_COUNTS[0]
+    refined: int = REALISTIC_COUNTS[1]
+    run: RunSettings = field(default_factory=RunSettings)
+    dialects: dict[str, str] = field(default_factory=dict)  # file path -> dialect, where not the run's
+
+    def record(self) -> dict[str, Any]:
+        return {"paths": [str(p) for p in self.paths], "base": self.base, "refined": self.refined, "encoding": self.run.encoding, "dialects": self.dialects}
 
 
 @dataclass(frozen=True)
@@ -50,13 +70,23 @@ class BenchmarkSettings:
     refined: int = PAPER_COUNTS[1]
     run: RunSettings = field(default_factory=RunSettings)  # seed, tries, time limits, ...
     artifacts: bool = True  # plan, trace, CommonRoad XML, plot and verdict of every instance (timed)
+    realistic: Suite | None = None
 
     def record(self) -> dict[str, Any]:
         """For results.json: flat, as the report reads it (seed, tries, time limits, ...)."""
-        return {"paths": [str(p) for p in self.paths], "base": self.base, "refined": self.refined, "artifacts": self.artifacts, **dataclasses.asdict(self.run)}
+        return {"paths": [str(p) for p in self.paths], "base": self.base, "refined": self.refined, "artifacts": self.artifacts, **dataclasses.asdict(self.run),
+                "realistic": self.realistic.record() if self.realistic is not None else None}
 
     def count(self, strategy: str) -> int:
         return self.base if strategy == BASE else self.refined
+
+    def suites(self) -> list[tuple[tuple[Path, ...], int, int, RunSettings, dict[str, str]]]:
+        """(files, base count, refined count, run settings, dialects) of the paper's suite, then the realistic one."""
+        suites = [(self.paths, self.base, self.refined, self.run, {})]
+        if self.realistic is not None:
+            r = self.realistic
+            suites.append((r.paths, r.base, r.refined, r.run, r.dialects))
+        return suites
 
 
 @dataclass
@@ -91,10 +121,11 @@ class BenchmarkResults:
 
     settings: dict[str, Any]
     environment: dict[str, Any]
-    scenarios: list[str]  # in run order
+    scenarios: list[str]  # the paper's suite, in run order: what the targets and RQ1/RQ2 cover
     instances: list[InstanceRecord] = field(default_factory=list)
     errors: dict[str, str] = field(default_factory=dict)  # scenario -> why it could not run
     seconds: float = 0.0  # wall clock of the whole run
+    realistic: list[str] = field(default_factory=list)  # the realistic suite's scenarios, reported apart
 
     def of(self, scenario: str, strategy: str) -> list[InstanceRecord]:
         return [r for r in self.instances if r.scenario == scenario and r.strategy == strategy]
@@ -121,8 +152,13 @@ def run_benchmark(settings: BenchmarkSettings, out: Path, progress: Progress | N
     out.mkdir(parents=True, exist_ok=True)
     started = time.perf_counter()
     settings_record = {**settings.record(), "command": command}
-    results = BenchmarkResults(settings_record, environment(), [p.stem for p in settings.paths])
-    total = len(settings.paths) * (settings.base + settings.refined)
+    suites = settings.suites()
+    results = BenchmarkResults(settings_record, environment(), [p.stem for p in settings.paths],
+                               realistic=[p.stem for p in settings.realistic.paths] if settings.realistic is not None else [])
+    clashing = set(results.scenarios) & set(results.realistic)
+    if clashing:
+        raise ValueError(f"a realistic scenario has the name of one of the paper's: {', '.join(sorted(clashing))}; rename its file")
+    total = sum(len(paths) * (base + refined) for paths, base, refined, _, _ in suites)
     done = 0
 
     def record(instance: InstanceRecord) -> None:
@@ -132,18 +168,22 @@ def run_benchmark(settings: BenchmarkSettings, out: Path, progress: Progress | N
         if progress is not None:
             progress(instance, done, total)
 
-    for path in settings.paths:
-        try:
-            scenario = load_scenario(path)
-        except OscError as error:
-            results.errors[path.stem] = error.report()
-            done += settings.base + settings.refined
-            continue
-        for strategy in STRATEGIES:
-            runner = _run_base if strategy == BASE else _run_refined
-            runner(scenario, path.stem, settings, out, record)
-            results.seconds = time.perf_counter() - started
-            results.save(out)
+    for paths, base, refined, run, dialects in suites:
+        suite = dataclasses.replace(settings, base=base, refined=refined)
+        for path in paths:
+            dialect = dialects.get(str(path), run.dialect)
+            try:
+                scenario = load_scenario(path, dialect=dialect)
+            except OscError as error:
+                results.errors[path.stem] = error.report()
+                done += base + refined
+                continue
+            file_settings = dataclasses.replace(suite, run=dataclasses.replace(run, dialect=dialect))
+            for strategy in STRATEGIES:
+                runner = _run_base if strategy == BASE else _run_refined
+                runner(scenario, path.stem, file_settings, out, record)
+                results.seconds = time.perf_counter() - started
+                results.save(out)
     results.seconds = time.perf_counter() - started
     results.save(out)
     return results
@@ -199,6 +239,30 @@ def _record(result: CaseResult, name: str, strategy: str, index: int, settings: 
         name, strategy, index, result.outcome, outcome.tries, seconds, values,
         verdict.robustness, outcome.plan.horizon, result.message, Occupancy.of_trace(outcome.simulation.trace), directory,
     )
+
+
+def conftest_dialect(path: Path, roots: list[Path]) -> str | None:
+    """The dialect pytest would read ``path`` in: what the nearest ``pytest_roadlogic_dialect`` hook
+    of a ``conftest.py`` between the file and its suite folder returns (CARLA suites say so in a
+    conftest.py beside their files), None where none does. The bench runs outside pytest, so it
+    calls the hook itself, as the plugin's hook call would."""
+    import importlib.util
+
+    path = Path(path).resolve()
+    tops = [Path(r).resolve() for r in roots]
+    for folder in path.parents:
+        conftest = folder / "conftest.py"
+        if conftest.is_file():
+            spec = importlib.util.spec_from_file_location(f"_roadlogic_bench_conftest_{abs(hash(str(conftest)))}", conftest)
+            module = importlib.util.module_from_spec(spec)
+            spec.loader.exec_module(module)
+            hook = getattr(module, "pytest_roadlogic_dialect", None)
+            answer = hook(config=None, path=path) if hook is not None else None
+            if answer is not None:
+                return answer
+        if folder in tops or not any(top in folder.parents for top in tops):
+            return None
+    return None
 
 
 def environment() -> dict[str, Any]:

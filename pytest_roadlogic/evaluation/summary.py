@@ -55,7 +55,7 @@ def summarize(records: list[InstanceRecord], scenario: str, strategy: str) -> St
 def summaries(results: BenchmarkResults) -> dict[tuple[str, str], StrategySummary]:
     return {
         (scenario, strategy): summarize(results.of(scenario, strategy), scenario, strategy)
-        for scenario in results.scenarios if scenario not in results.errors for strategy in STRATEGIES
+        for scenario in [*results.scenarios, *results.realistic] if scenario not in results.errors for strategy in STRATEGIES
     }
 
 
