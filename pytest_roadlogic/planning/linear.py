@@ -29,7 +29,9 @@ from collections import defaultdict
 from dataclasses import dataclass, field
 from fractions import Fraction
 import math
+import os
 import re
+import sys
 
 import clingo
 import numpy as np
@@ -38,6 +40,31 @@ import numpy as np
 # that made the interpreter hang at exit (measured)
 import highspy
 from scipy.sparse import csr_matrix, hstack, identity, vstack
+
+
+_BANNER_SILENCED = False
+
+
+def quiet_highs() -> "highspy.Highs":
+    """A HiGHS instance that prints nothing. Its first construction in a process writes HiGHS's
+    banner to the standard output from C++, before any option can be set (seen as two lines at the
+    top of every `roadlogic run`), so that one construction runs with file descriptor 1 on /dev/null."""
+    global _BANNER_SILENCED
+    if _BANNER_SILENCED:
+        solver = highspy.Highs()
+    else:
+        sys.stdout.flush()
+        saved = os.dup(1)
+        try:
+            with open(os.devnull, "w") as null:
+                os.dup2(null.fileno(), 1)
+                solver = highspy.Highs()
+        finally:
+            os.dup2(saved, 1)
+            os.close(saved)
+        _BANNER_SILENCED = True
+    solver.setOptionValue("output_flag", False)
+    return solver
 
 THEORY = """
 #theory lpx {
@@ -282,8 +309,7 @@ def solve_linear(cost: np.ndarray, a_ub, b_ub: np.ndarray, a_eq, b_eq: np.ndarra
     lp.a_matrix_.start_ = matrix.indptr
     lp.a_matrix_.index_ = matrix.indices
     lp.a_matrix_.value_ = matrix.data
-    solver = highspy.Highs()
-    solver.setOptionValue("output_flag", False)
+    solver = quiet_highs()
     solver.passModel(lp)
     solver.run()
     if solver.getModelStatus() != highspy.HighsModelStatus.kOptimal:
@@ -310,8 +336,7 @@ class SwitchedCheck:
     """
 
     def __init__(self) -> None:
-        self.highs = highspy.Highs()
-        self.highs.setOptionValue("output_flag", False)
+        self.highs = quiet_highs()
         self.highs.setOptionValue("presolve", "off")
         self.column: list[int] = []  # per variable of the program: its column
         self.hard = 0  # rows of ``program.always`` added so far
