@@ -26,6 +26,7 @@ def test_roadlogic_run_writes_every_artifact_and_accepts(tmp_path):
     assert verdict["accepted"] is True
     for stage in ("planning", "simulation", "monitoring"):
         assert stage in result.stdout
+    assert "HiGHS" not in result.stdout, "the LP solver's banner is not part of the report"
 
 
 def test_the_same_seed_gives_the_same_plan_and_trace(tmp_path):
