@@ -58,7 +58,9 @@ def animate_simulation(simulation: Simulation, verdict: Verdict | None, path: st
     corners = np.array([[-1, -1], [1, -1], [1, 1], [-1, 1]]) * [CAR_LENGTH / 2, CAR_WIDTH / 2]
     images = []
     for k in frames:
-        left = float(xs[:, k].mean()) - view / 2
+        # centred between the rearmost and the foremost vehicle: around their mean, a car far ahead
+        # of two others fell outside the view (found by tests/test_animation.py)
+        left = float(xs[:, k].min() + xs[:, k].max()) / 2 - view / 2
         image = Image.new("P", (PIXELS_WIDE, height), BACKGROUND)
         image.putpalette(palette)
         draw = ImageDraw.Draw(image)
