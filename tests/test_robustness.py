@@ -198,3 +198,18 @@ def test_item_1_a_scenario_without_any_guard_passes_under_pytest(pytester):
     result = pytester.runpytest_subprocess("--roadlogic-examples", "2", *QUIET)
     result.assert_outcomes(passed=1)
     assert "InvalidArgument" not in result.stdout.str()
+
+
+def test_item_6_the_suites_follow_replays_without_a_collision_at_the_reported_values(tmp_path, capsys):
+    """The default driver had driven the tail into the lead at 10.4 s of this case (replayed exactly,
+    every time); the whole-suite sample is in the closing note (the ci profile, seeds 1-5)."""
+    import json
+
+    from pytest_roadlogic.cli import main
+
+    values = json.dumps({"end_gap": 10.0, "lead_speed": 8.5, "start_gap": 22.5})
+    code = main(["replay", "scenarios/follow.osc", "--scenario", "follow", "--seed", "3", "--values", values, "--out", str(tmp_path / "out")])
+    said = capsys.readouterr().out
+    assert code == 0, said
+    verdict = json.loads((tmp_path / "out" / "verdict.json").read_text())
+    assert verdict["accepted"] and not verdict["incidents"], said
