@@ -63,6 +63,25 @@ def measure_one(path: str, seed: int) -> dict:
     }
 
 
+def measure_together(path: str, seed: int, forked: bool) -> float:
+    """Seconds of ``writer.write_artifacts`` as ``roadlogic run`` calls it (called in a fresh process):
+    the OpenSCENARIO writer in a forked process beside the others, or (``forked`` false) after them,
+    as before it was forked."""
+    from pytest_roadlogic.artifacts import writer
+    from pytest_roadlogic.pipeline import load_scenario, run_scenario
+
+    if not forked:
+        def in_turn(write):
+            write()
+            return lambda cancel=False: None
+        writer.beside = in_turn
+    outcome = run_scenario(load_scenario(ROOT / path), seed=seed)
+    with tempfile.TemporaryDirectory() as folder:
+        started = time.perf_counter()
+        writer.write_artifacts(outcome, Path(folder) / "o")
+        return time.perf_counter() - started
+
+
 def cli_run(seed: int) -> tuple[float, float]:
     """(wall seconds of `roadlogic run scenarios/overtake.osc`, its planning+simulation+monitoring)."""
     with tempfile.TemporaryDirectory() as folder:
@@ -80,8 +99,12 @@ def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser()
     parser.add_argument("--seed", type=int, default=1)
     parser.add_argument("--one", help=argparse.SUPPRESS)  # the measuring child process
+    parser.add_argument("--together", choices=("forked", "in-turn"), help=argparse.SUPPRESS)  # likewise, write_artifacts whole
     parser.add_argument("paths", nargs="*")
     args = parser.parse_args(argv)
+    if args.one and args.together:
+        print(json.dumps(measure_together(args.one, args.seed, args.together == "forked")))
+        return 0
     if args.one:
         print(json.dumps(measure_one(args.one, args.seed)))
         return 0
@@ -96,6 +119,13 @@ def main(argv: list[str] | None = None) -> int:
         writers = row["writers"]
         print(f"{row['scenario']:22} {row['vehicles']:>4} {row['trace_s']:>7.1f} {sum(row['stages'].values()):>8.2f} "
               + " ".join(f"{writers[w]:>18.2f}" for w in WRITERS) + f" {sum(writers.values()):>6.2f} {row['gif_kb']:>6.0f}")
+    print("\nwrite_artifacts whole, as run calls it, in a fresh process: the OpenSCENARIO writer after the others / forked beside them")
+    for path in args.paths or DEFAULT:
+        seconds = []
+        for mode in ("in-turn", "forked"):
+            child = subprocess.run([sys.executable, __file__, "--one", path, "--together", mode, "--seed", str(args.seed)], capture_output=True, text=True, cwd=ROOT)
+            seconds.append(float(child.stdout.strip().splitlines()[-1]) if child.returncode == 0 else float("nan"))
+        print(f"{Path(path).stem:22} {seconds[0]:6.2f} s  {seconds[1]:6.2f} s")
     wall, stages = cli_run(args.seed)
     print(f"roadlogic run scenarios/overtake.osc: wall {wall:.2f} s; planning+simulation+monitoring {stages:.2f} s; ratio {wall / stages:.1f}")
     return 0

@@ -103,10 +103,15 @@ def openscenario(simulation: Simulation, name: str = "roadlogic", road_file: str
     )
 
 
+def openscenario_paths(directory: str | Path) -> tuple[Path, Path]:
+    """Where ``write_openscenario`` writes the scenario and its road in ``directory``."""
+    return Path(directory) / "scenario.xosc", Path(directory) / ROAD_FILE
+
+
 def write_openscenario(simulation: Simulation, directory: str | Path, name: str = "roadlogic") -> tuple[Path, Path]:
     """Write ``scenario.xosc`` and ``road.xodr`` into ``directory``, each atomically."""
     directory = Path(directory)
-    scenario_path, road_path = directory / "scenario.xosc", directory / ROAD_FILE
+    scenario_path, road_path = openscenario_paths(directory)
     with replaced(road_path) as temporary:
         road_opendrive(simulation).write_xml(str(temporary))
     with replaced(scenario_path) as temporary:

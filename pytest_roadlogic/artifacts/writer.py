@@ -4,14 +4,17 @@ OpenSCENARIO XML with its OpenDRIVE road), plot, animation, verdict."""
 from __future__ import annotations
 
 import json
+import os
 import re
+import signal
+from collections.abc import Callable
 from pathlib import Path
 
 from ..pipeline import Outcome
 from .animation import animate_simulation
 from .commonroad import write_commonroad_xml
 from .files import write_text
-from .openscenario import write_openscenario
+from .openscenario import openscenario_paths, write_openscenario
 
 # every name a run writes into its output folder (run --instances: a folder per instance), and
 # what an interrupted write leaves: what `run` may replace there (files.replaced_directory)
@@ -35,14 +38,65 @@ def write_artifacts(outcome: Outcome, directory: str | Path, animation: bool = T
         "seconds": outcome.seconds,
         **outcome.verdict.to_dict(),
     }
-    paths = {
-        "plan": write_text(directory / "plan.json", outcome.plan.to_json()),
-        "trace": write_text(directory / "trace.csv", outcome.simulation.trace.to_csv()),
-        "commonroad": write_commonroad_xml(outcome.simulation, directory / "scenario.xml"),
-        **dict(zip(("openscenario", "opendrive"), write_openscenario(outcome.simulation, directory, name))),
-        "plot": plot_simulation(outcome.simulation, outcome.verdict, directory / "trajectories.png", title=name),
-        "verdict": write_text(directory / "verdict.json", json.dumps(verdict, indent=2)),
-    }
-    if animation:
-        paths["animation"] = animate_simulation(outcome.simulation, outcome.verdict, directory / "simulation.gif", title=name)
-    return paths
+    openscenario = beside(lambda: write_openscenario(outcome.simulation, directory, name))
+    try:
+        paths = {
+            "plan": write_text(directory / "plan.json", outcome.plan.to_json()),
+            "trace": write_text(directory / "trace.csv", outcome.simulation.trace.to_csv()),
+            "commonroad": write_commonroad_xml(outcome.simulation, directory / "scenario.xml"),
+            "plot": plot_simulation(outcome.simulation, outcome.verdict, directory / "trajectories.png", title=name),
+            "verdict": write_text(directory / "verdict.json", json.dumps(verdict, indent=2)),
+        }
+        if animation:
+            paths["animation"] = animate_simulation(outcome.simulation, outcome.verdict, directory / "simulation.gif", title=name)
+    except BaseException:
+        openscenario(cancel=True)
+        raise
+    openscenario()
+    written = dict(zip(("openscenario", "opendrive"), openscenario_paths(directory)))
+    order = ("plan", "trace", "commonroad", "openscenario", "opendrive", "plot", "verdict", "animation")
+    return {kind: {**paths, **written}[kind] for kind in order if kind in paths or kind in written}
+
+
+def beside(write: Callable[[], object]) -> Callable[..., None]:
+    """``write`` run in a forked process while this one writes the rest; returns a function that
+    waits for it and raises its error (or, with ``cancel``, stops it).
+
+    Why: the OpenSCENARIO writer's first call is mostly the import of ``scenariogeneration`` (0.8 s
+    on a slow machine, 0.5 s of it scipy.integrate, which its OpenDRIVE geometry imports), and the
+    plot's is matplotlib's; on two cores the two overlap. Measured (``benchmarks/artifacts.py``,
+    each in a fresh process): the whole set of overtake 2.13 -> 1.69 s, of overtake_third_actor
+    2.28 -> 1.59 s, on a machine where overtake's stages took 0.6-0.85 s.
+    The child writes its files through ``files.replaced`` like every writer and returns nothing but
+    its exit status and, when it fails, the error's text. Without fork (or on one core) it runs here.
+    """
+    if not hasattr(os, "fork") or (os.cpu_count() or 1) < 2:
+        write()
+        return lambda cancel=False: None
+    read_end, write_end = os.pipe()
+    pid = os.fork()
+    if pid == 0:  # the child: write, report a failure on the pipe, and leave without running any
+        os.close(read_end)  # of the parent's exit handlers or flushing its buffers twice
+        code = 0
+        try:
+            write()
+        except BaseException as error:  # noqa: BLE001 (reported to the parent, which raises it)
+            os.write(write_end, f"{type(error).__name__}: {error}".encode()[:4000])
+            code = 1
+        finally:
+            os._exit(code)
+    os.close(write_end)
+
+    def wait(cancel: bool = False):
+        if cancel:
+            os.kill(pid, signal.SIGKILL)
+        with os.fdopen(read_end, "rb") as pipe:
+            message = pipe.read().decode(errors="replace")
+        _, status = os.waitpid(pid, 0)
+        if cancel:
+            return None
+        if os.waitstatus_to_exitcode(status) != 0:
+            raise OSError(message or f"the OpenSCENARIO writer's process ended with status {os.waitstatus_to_exitcode(status)}")
+        return None
+
+    return wait
