@@ -71,10 +71,7 @@ def measure_together(path: str, seed: int, forked: bool) -> float:
     from pytest_roadlogic.pipeline import load_scenario, run_scenario
 
     if not forked:
-        def in_turn(write):
-            write()
-            return lambda cancel=False: None
-        writer.beside = in_turn
+        writer.beside = writer.in_turn
     outcome = run_scenario(load_scenario(ROOT / path), seed=seed)
     with tempfile.TemporaryDirectory() as folder:
         started = time.perf_counter()

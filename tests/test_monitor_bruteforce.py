@@ -26,7 +26,6 @@ from hypothesis import strategies as st
 from pytest_roadlogic.automaton import SymbolicAutomaton, build_automaton
 from pytest_roadlogic.frontend import load_file
 from pytest_roadlogic.monitor import monitor
-from pytest_roadlogic.monitor.monitor import _monitor as keeping_every_run
 from pytest_roadlogic.simulation import Trace
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -170,7 +169,7 @@ def test_the_monitor_agrees_with_the_brute_force_semantics(path):
         if verdict.robustness < 0:
             assert not verdict.accepted
         # the monitor's passes with a floor drop runs below it: the verdict is the one that keeps them all
-        every_run = keeping_every_run(automaton, trace, -math.inf)
+        every_run = monitor(automaton, trace, floors=(-math.inf,))
         assert (verdict.furthest, verdict.run, verdict.miss) == (every_run.furthest, every_run.run, every_run.miss)
 
     check()

@@ -38,12 +38,15 @@ def write_artifacts(outcome: Outcome, directory: str | Path, animation: bool = T
         "seconds": outcome.seconds,
         **outcome.verdict.to_dict(),
     }
+    scenario_xosc, road_xodr = openscenario_paths(directory)
     openscenario = beside(lambda: write_openscenario(outcome.simulation, directory, name))
     try:
         paths = {
             "plan": write_text(directory / "plan.json", outcome.plan.to_json()),
             "trace": write_text(directory / "trace.csv", outcome.simulation.trace.to_csv()),
             "commonroad": write_commonroad_xml(outcome.simulation, directory / "scenario.xml"),
+            "openscenario": scenario_xosc,  # written by the forked process, waited for below
+            "opendrive": road_xodr,
             "plot": plot_simulation(outcome.simulation, outcome.verdict, directory / "trajectories.png", title=name),
             "verdict": write_text(directory / "verdict.json", json.dumps(verdict, indent=2)),
         }
@@ -53,9 +56,13 @@ def write_artifacts(outcome: Outcome, directory: str | Path, animation: bool = T
         openscenario(cancel=True)
         raise
     openscenario()
-    written = dict(zip(("openscenario", "opendrive"), openscenario_paths(directory)))
-    order = ("plan", "trace", "commonroad", "openscenario", "opendrive", "plot", "verdict", "animation")
-    return {kind: {**paths, **written}[kind] for kind in order if kind in paths or kind in written}
+    return paths
+
+
+def in_turn(write: Callable[[], object]) -> Callable[..., None]:
+    """``write`` run here and now, with ``beside``'s interface (where there is no fork, or one core)."""
+    write()
+    return lambda cancel=False: None
 
 
 def beside(write: Callable[[], object]) -> Callable[..., None]:
@@ -71,8 +78,7 @@ def beside(write: Callable[[], object]) -> Callable[..., None]:
     its exit status and, when it fails, the error's text. Without fork (or on one core) it runs here.
     """
     if not hasattr(os, "fork") or (os.cpu_count() or 1) < 2:
-        write()
-        return lambda cancel=False: None
+        return in_turn(write)
     read_end, write_end = os.pipe()
     pid = os.fork()
     if pid == 0:  # the child: write, report a failure on the pipe, and leave without running any
@@ -97,6 +103,5 @@ def beside(write: Callable[[], object]) -> Callable[..., None]:
             return None
         if os.waitstatus_to_exitcode(status) != 0:
             raise OSError(message or f"the OpenSCENARIO writer's process ended with status {os.waitstatus_to_exitcode(status)}")
-        return None
 
     return wait

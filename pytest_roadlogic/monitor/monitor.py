@@ -97,7 +97,7 @@ class Verdict:
         }
 
 
-def monitor(automaton: SymbolicAutomaton, trace: Trace) -> Verdict:
+def monitor(automaton: SymbolicAutomaton, trace: Trace, floors: tuple[float, ...] | None = None) -> Verdict:
     """Whether ``trace`` is a run of ``automaton``, with its robustness and, when it is not, why.
 
     Passes with a falling floor (``FLOORS``): a pass keeps only the runs whose robustness so far is
@@ -108,9 +108,10 @@ def monitor(automaton: SymbolicAutomaton, trace: Trace) -> Verdict:
     mostly sit below 0 (a guard of a phase to come is far from holding), and keeping all of them
     was 12.1 s of monitoring for one accepted 49 s trace, more than its simulation; the first pass
     takes 0.09 s. A rejected trace pays the first pass on top of the last (measured:
-    ``benchmarks/monitor.py --simulated``).
+    ``benchmarks/monitor.py --simulated``). ``floors`` other than those: for the tests and the
+    benchmark, which compare with a single pass that keeps every run, ``(-math.inf,)``.
     """
-    for floor in FLOORS:
+    for floor in floors or FLOORS:
         verdict = _monitor(automaton, trace, floor)
         if verdict.robustness >= floor:
             return verdict
