@@ -22,7 +22,7 @@ from .case import Case
 from .frontend import CheckedScenario
 from .outcomes import CONFORMANT, NO_PLAN, NON_CONFORMANT, STAGES, TIMED_OUT
 from .pipeline import Outcome, run_instances
-from .planning import HorizonTooShort, NoPlanError, PlanningTimeout, UnsatisfiableScenario
+from .planning import HorizonTooShort, LimitsBind, NoPlanError, PlanningTimeout, UnsatisfiableScenario
 from .settings import BASE, DISCARD, REFINED, RunSettings
 from .simulation import DriverFactory, SimulationTimeout, Simulator
 
@@ -55,15 +55,18 @@ class CaseResult:
     @property
     def kind(self) -> str:
         """Which of the two kinds of failure this is, or neither (the words of reports and JUnit):
-        the scenario cannot be instantiated at these values (its constraints clash), a limit of the
-        tool binds there (margins, horizon, time limit: the message names the setting), or the
-        simulation of the vehicles was not accepted."""
+        the scenario cannot be instantiated at these values (its constraints clash, or only a plan
+        beyond a real car's limits meets them: the message names the limits), a limit of the tool
+        binds there (margins, planning step, spacing between cars, horizon, time limit: the message
+        names the setting), or the simulation of the vehicles was not accepted."""
         if self.outcome == CONFORMANT:
             return "accepted"
         if self.outcome == NON_CONFORMANT:
             return NOT_ACCEPTED
         if isinstance(self.error, UnsatisfiableScenario) or (self.outcome == NO_PLAN and self.error is not None and type(self.error) is NoPlanError):
             return CANNOT_INSTANTIATE
+        if isinstance(self.error, LimitsBind) and self.error.beyond_a_car:
+            return CANNOT_INSTANTIATE  # only plans no car can drive: the values ask too much, not the tool
         return TOOL_LIMIT
 
 
@@ -223,7 +226,11 @@ class Runner:
         ending 32 m ahead), whose simulations were then not accepted, at 20-30 s each; every one
         of their values alone had plans within them. So the values are tried alone first, within
         the margins and limits, and only a sample with a value that has none there is planned again
-        with the fallbacks (``pipeline._with_fallbacks``), whose result it then reports."""
+        with the fallbacks (``pipeline._with_fallbacks``), whose result it then reports. When that
+        result is that only a plan beyond a real car's limits exists, the culprit is a value that
+        alone has no plan within them even with the other fallbacks; without one, the sample is a
+        combination no car can drive and is set aside like any other (follow_then_overtake's long
+        passes from far behind to close ahead)."""
         from .pipeline import has_plan
 
         values = case.values
@@ -238,21 +245,22 @@ class Runner:
             return result
         result = self.run_case(case, explain=False)
         if result.kind == CANNOT_INSTANTIATE and values:
-            alone = candidates if len(values) == 1 else self.without_plan_alone({n: values[n] for n in candidates})
+            alone = candidates if len(values) == 1 else self.without_plan_alone({n: values[n] for n in candidates}, beyond_limits=False)
             result.culprit = next(iter(alone), None)
         return result
 
-    def without_plan_alone(self, values: dict[str, Any], fallbacks: bool = True, first: bool = True) -> list[str]:
+    def without_plan_alone(self, values: dict[str, Any], fallbacks: bool = True, first: bool = True, beyond_limits: bool = True) -> list[str]:
         """The sampled parameters whose value alone, the others left to their ranges, has no plan
         (only the first unless ``first`` is false; with ``fallbacks``, or within the planner's
-        margins and limits); empty when each has one (then only the combination has none).
-        Planning alone, one parameter at a time, in the order of the report."""
+        margins and limits; without ``beyond_limits``, none beyond a real car's limits); empty
+        when each has one (then only the combination has none). Planning alone, one parameter at
+        a time, in the order of the report."""
         from .pipeline import has_plan
 
         settings = self.settings.planning(False)
         found = []
         for name, value in values.items():
-            if not has_plan(self.scenario, {name: value}, self.settings.seed, settings, fallbacks):
+            if not has_plan(self.scenario, {name: value}, self.settings.seed, settings, fallbacks, beyond_limits):
                 found.append(name)
                 if first:
                     break

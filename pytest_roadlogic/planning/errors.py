@@ -52,18 +52,23 @@ class StepBinds(NoPlanError):
 
 class LimitsBind(NoPlanError):
     """No plan exists within the planner's vehicle limits, one does with some of them relaxed, and
-    its simulation was not accepted: the scenario itself can be met at these values, a setting of
-    the tool binds. ``limits`` names each setting with its value and the value it was relaxed to."""
+    its simulation was not accepted. ``limits`` names each setting with its value and the value it
+    was relaxed to. ``beyond_a_car``: among them a real car's (jerk, accelerations, top speed), so
+    no concrete scenario a car can drive has these values: the scenario cannot be instantiated here
+    (with these settings, which the report names). Otherwise only the planner's spacing between
+    cars binds: a setting of the tool."""
 
-    def __init__(self, limits: list[str], explanation: str = "") -> None:
+    def __init__(self, limits: list[str], explanation: str = "", beyond_a_car: bool = True) -> None:
         self.limits = limits
-        super().__init__(
-            "no plan within the planner's vehicle limits at these values, but one exists with "
-            + " and ".join(limits)
-            + ": the scenario itself can be met here, a limit of the tool binds (a ContinuousSettings field; "
-            "the defaults are a real car's, so move the values away from what only a harder-driven car could do)"
-            + (f"; that plan's simulation was not accepted: {explanation}" if explanation else "")
-        )
+        self.beyond_a_car = beyond_a_car
+        relaxed = " and ".join(limits)
+        if beyond_a_car:
+            text = (f"no concrete scenario within a real car's limits has these values: plans exist only with {relaxed}, "
+                    "beyond what a car can do (ContinuousSettings fields; their defaults are a real car's)")
+        else:
+            text = (f"no plan within the planner's spacing between cars at these values, but one exists with {relaxed}: "
+                    "the scenario itself can be met here, a setting of the tool binds (a ContinuousSettings field)")
+        super().__init__(text + (f"; that plan's simulation was not accepted: {explanation}" if explanation else ""))
 
 
 class UnsatisfiableScenario(NoPlanError):
