@@ -274,3 +274,21 @@ def test_durations_that_clash_at_every_length_are_not_blamed_on_the_horizon_limi
         next(ContinuousPlanner(automaton, settings, 1).plans())
     assert not isinstance(caught.value, HorizonTooShort), str(caught.value)
     assert "durations cannot all hold at any length" in str(caught.value)
+
+
+def test_durations_that_clash_among_themselves_are_named_at_their_lines():
+    # 3 s and 4 s one after the other beside 9 s, all ending together: the three durations clash
+    # whatever the bounds (the diagnosis had solved no horizon and named nothing: emit_wait_brake's
+    # 6.8 s brake, which must equal its wait plus its lane change, at most 6.5 s)
+    from pytest_roadlogic.frontend import check_text
+
+    text = (
+        "scenario s:\n  a: car\n  b: car\n  do parallel(overlap: equal):\n"
+        "    serial:\n      a.drive(duration: 3s)\n      a.drive(duration: 4s) with:\n        speed([10mps..20mps])\n"
+        "    b.drive(duration: 9s)\n"
+    )
+    automaton = build_automaton(check_text(text).scenarios[0])
+    with pytest.raises(UnsatisfiableScenario) as caught:
+        next(ContinuousPlanner(automaton, SETTINGS, 1).plans())
+    (group,) = caught.value.conflicts
+    assert sorted(member.source.line for member in group) == [6, 7, 9], "the three durations, not the speed bound"

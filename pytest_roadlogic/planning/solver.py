@@ -27,7 +27,7 @@ from clingo.ast import ProgramBuilder, parse_string
 from clingodl import ClingoDLTheory
 
 from ..automaton.guards import contradiction
-from ..automaton.model import SymbolicAutomaton
+from ..automaton.model import SymbolicAutomaton, Timing
 from .errors import HorizonTooShort, NoPlanError, PlanningTimeout, UnsatisfiableScenario, conflict_message
 from .instance import PlanningSettings, build_instance, relaxable_constraints, start_preferences
 from .plan import Plan, PlanState
@@ -247,7 +247,13 @@ class Planner:
         relaxed = [clingo.Function("relaxed", [clingo.Number(k)]) for k in range(count)]
         # only the horizons the kept durations allow (a relaxed one leaves its phase open)
         window = self.window(deadline, program[0], [(relaxed[k], False) for k in kept])
-        earliest = window.earliest(settings.max_horizon) or 0
+        earliest = window.earliest(settings.max_horizon)
+        if earliest is None:
+            # the kept durations let no run end within the horizon limit: they fail among themselves,
+            # whatever the bounds (emit_wait_brake's brake of 6.3-7.3 s that must equal its 0.5-1 s
+            # wait plus its 3-3.5 s lane change had been reported with no constraint named)
+            timings = {k for k, constraint in enumerate(relaxable_constraints(self.automaton)) if isinstance(constraint, Timing)}
+            return sorted(k for k in kept if k in timings)
         last_open = window.last_open(settings.max_horizon)
         last = settings.max_horizon if last_open is None else min(settings.max_horizon, last_open + 1)
         control = self._control(*program)
