@@ -275,8 +275,11 @@ def _with_fallbacks(plans: Iterator[Plan], guide: Guide, settings, seed: int, li
         quiet = dataclasses.replace(thinned, explain_unsatisfiable=False)
         # half the planning step: durations between whole seconds (a 0.5 s wait, a 3.6 s brake)
         finer = dataclasses.replace(quiet, dt=quiet.dt / 2, max_horizon=quiet.max_horizon * 2, lane_change_gap=quiet.lane_change_gap * 2)
-        relaxed = _relaxed(quiet, None if beyond_limits else SPACING)
-        for fallback_settings, mark in ((quiet, "thinned_margins"), (finer, "finer_step"), (relaxed, "relaxed_limits")):
+        # the spacing first, then a car's limits too: a plan within a car's limits is one a car can
+        # drive (cut_out_obstacle's stop 5 m behind its wreck, planned with every limit relaxed,
+        # braked with a jerk of 4 m/s^3 and its simulated ego hit the wreck)
+        relaxed = [(_relaxed(quiet, SPACING), "relaxed_limits")] + ([(_relaxed(quiet), "relaxed_limits")] if beyond_limits else [])
+        for fallback_settings, mark in ((quiet, "thinned_margins"), (finer, "finer_step"), *relaxed):
             try:
                 fallback = planner_for(guide(fallback_settings), fallback_settings, seed).plans(limit=limit)
                 plan = next(fallback, None)
