@@ -259,16 +259,20 @@ def test_the_grid_encoding_refuses_a_time_headway_at_its_place():
     assert "46_time_headway.osc:15:" in report and "continuous" in report, report
 
 
+# 3 s and 4 s one after the other beside 9 s, all ending together: the durations clash whatever
+# the speed bound (line 8)
+CLASHING_DURATIONS = (
+    "scenario s:\n  a: car\n  b: car\n  do parallel(overlap: equal):\n"
+    "    serial:\n      a.drive(duration: 3s)\n      a.drive(duration: 4s) with:\n        speed([10mps..20mps])\n"
+    "    b.drive(duration: 9s)\n"
+)
+
+
 def test_durations_that_clash_at_every_length_are_not_blamed_on_the_horizon_limit():
     from pytest_roadlogic.frontend import check_text
     from pytest_roadlogic.planning import HorizonTooShort, NoPlanError
 
-    text = (
-        "scenario s:\n  a: car\n  b: car\n  do parallel(overlap: equal):\n"
-        "    serial:\n      a.drive(duration: 3s)\n      a.drive(duration: 4s)\n"
-        "    b.drive(duration: 9s)\n"
-    )
-    automaton = build_automaton(check_text(text).scenarios[0])
+    automaton = build_automaton(check_text(CLASHING_DURATIONS).scenarios[0])
     settings = dataclasses.replace(SETTINGS, explain_unsatisfiable=False)
     with pytest.raises(NoPlanError) as caught:
         next(ContinuousPlanner(automaton, settings, 1).plans())
@@ -277,17 +281,11 @@ def test_durations_that_clash_at_every_length_are_not_blamed_on_the_horizon_limi
 
 
 def test_durations_that_clash_among_themselves_are_named_at_their_lines():
-    # 3 s and 4 s one after the other beside 9 s, all ending together: the three durations clash
-    # whatever the bounds (the diagnosis had solved no horizon and named nothing: emit_wait_brake's
-    # 6.8 s brake, which must equal its wait plus its lane change, at most 6.5 s)
+    # the diagnosis had solved no horizon and named nothing (emit_wait_brake's 6.8 s brake, which
+    # must equal its wait plus its lane change, at most 6.5 s)
     from pytest_roadlogic.frontend import check_text
 
-    text = (
-        "scenario s:\n  a: car\n  b: car\n  do parallel(overlap: equal):\n"
-        "    serial:\n      a.drive(duration: 3s)\n      a.drive(duration: 4s) with:\n        speed([10mps..20mps])\n"
-        "    b.drive(duration: 9s)\n"
-    )
-    automaton = build_automaton(check_text(text).scenarios[0])
+    automaton = build_automaton(check_text(CLASHING_DURATIONS).scenarios[0])
     with pytest.raises(UnsatisfiableScenario) as caught:
         next(ContinuousPlanner(automaton, SETTINGS, 1).plans())
     (group,) = caught.value.conflicts
