@@ -200,7 +200,8 @@ RELAXED_LIMITS = (
 # 19 s pass ending 15 m ahead after starting 39 m behind needs a 27 m drop back in 3 s). The others
 # (the gap between cars) are how closely the tool dares to plan cars: settings of the tool
 CAR_LIMITS = frozenset({"max_jerk", "min_acceleration", "max_acceleration", "max_speed"})
-SPACING = frozenset(name for name, _, _ in RELAXED_LIMITS) - CAR_LIMITS
+ALL_LIMITS = frozenset(name for name, _, _ in RELAXED_LIMITS)
+SPACING = ALL_LIMITS - CAR_LIMITS
 
 
 def _relaxed(settings, names=None):
@@ -245,11 +246,10 @@ def _binding_limits(guide: Guide, settings, seed: int) -> frozenset[str]:
         except NoPlanError:
             return False
 
-    everything = frozenset(name for name, _, _ in RELAXED_LIMITS)
     for names in (*(frozenset({name}) for name, _, _ in RELAXED_LIMITS), CAR_LIMITS, SPACING):
         if plannable(names):
             return names
-    return everything
+    return ALL_LIMITS
 
 
 def _with_fallbacks(plans: Iterator[Plan], guide: Guide, settings, seed: int, limit: int, beyond_limits: bool = True) -> Iterator[Plan]:

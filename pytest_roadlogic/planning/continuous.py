@@ -440,30 +440,19 @@ class ContinuousPlanner(Planner):
                 raise
             self._explain(error, deadline, window)
 
-    def _stretch_target(self, shortest: int) -> int:
-        """A random start's horizon: uniform from the shortest up to ``stretch_limit`` (never past
-        the horizon limit); the shortest for any other planning, or a scenario as long already."""
+    def _stretch_target(self, shortest: int, longest: int | None = None) -> int:
+        """As the grid planner's, but never past ``stretch_limit``."""
         longest = min(self.settings.max_horizon, math.floor(self.settings.stretch_limit / self.settings.dt + 1e-9))
-        if not self.settings.random_start or longest <= shortest:
-            return shortest
-        return shortest + math.floor(self.stretch * (longest - shortest + 1))
+        return super()._stretch_target(shortest, longest)
 
     def _model(self, control, deadline: float, where: str, conflicts: int | None = None) -> tuple[list, dict[str, object]] | None:
         """(shown symbols, the linear program's values) of the next model; None when there is none,
         or none within ``conflicts``."""
-        theory = self._theories[control]
-        if conflicts is not None:  # set only here: touching the configuration changes later searches
-            control.configuration.solve.solve_limit = f"{conflicts},umax"
-        answer = None
-        with control.solve(yield_=True, async_=True) as handle:
-            self._wait(handle, deadline, f"planning ran out of its time limit ({self.settings.time_limit:g} s) {where}")
-            model = handle.model()
-            if model is not None:
-                theory.on_model(model)
-                answer = (list(model.symbols(shown=True)), {str(key): value for key, value in theory.assignment(model.thread_id)})
-        if conflicts is not None:
-            control.configuration.solve.solve_limit = "umax,umax"
-        return answer
+
+        def answer(model, theory) -> tuple[list, dict[str, object]]:
+            return list(model.symbols(shown=True)), {str(key): value for key, value in theory.assignment(model.thread_id)}
+
+        return self._next_model(control, deadline, f" {where}", answer, conflicts)
 
     def _exclude(self, control, symbols, count: int) -> None:
         """Never these transition times and lanes together again."""

@@ -340,7 +340,7 @@ class Planner:
                     self._advance(control, horizon)
                     continue
                 source, plan_horizon = control, horizon
-                target = horizon + math.floor(self.stretch * (self.settings.max_horizon - horizon + 1))  # uniform
+                target = self._stretch_target(horizon)
                 if found == 0 and target > horizon:
                     longer = self._stretched(base_program, state_program, target, deadline)
                     if longer is not None:
@@ -353,6 +353,14 @@ class Planner:
             yield plan
             deadline = self._renewed()
             self._exclude(source, symbols, found)
+
+    def _stretch_target(self, shortest: int, longest: int | None = None) -> int:
+        """A random start's horizon: uniform from ``shortest`` up to ``longest`` (default the
+        horizon limit); the shortest for any other planning, or when it is the longest already."""
+        longest = self.settings.max_horizon if longest is None else longest
+        if not self.settings.random_start or longest <= shortest:
+            return shortest
+        return shortest + math.floor(self.stretch * (longest - shortest + 1))
 
     def _stretched(self, base_program: str, state_program: str, horizon: int, deadline: float) -> tuple[clingo.Control, list[clingo.Symbol]] | None:
         """A search for plans of exactly ``horizon`` steps and its first plan; None when none is
@@ -376,25 +384,34 @@ class Planner:
 
     def _solve(self, control: clingo.Control, deadline: float, conflicts: int | None = None) -> list[clingo.Symbol] | None:
         """The shown atoms of the next model; None when there is none, or none within ``conflicts``."""
+
+        def symbols(model: clingo.Model, theory) -> list[clingo.Symbol]:
+            return list(model.symbols(shown=True)) + [
+                clingo.Function("pos", [symbol.arguments[0], clingo.Number(int(value)), symbol.arguments[1]])
+                for symbol, value in theory.assignment(model.thread_id)
+                if symbol.name == "p"
+            ]
+
+        return self._next_model(control, deadline, "", symbols, conflicts)
+
+    def _next_model(self, control: clingo.Control, deadline: float, where: str, read, conflicts: int | None = None):
+        """What ``read(model, theory)`` makes of the next model; None when there is none, or none
+        within ``conflicts``. ``where`` ends the time limit's message."""
         start = time.perf_counter()
-        model_symbols: list[clingo.Symbol] | None = None
+        answer = None
+        theory = self._theories[control]
         if conflicts is not None:  # set only here: touching the configuration changes later searches
             control.configuration.solve.solve_limit = f"{conflicts},umax"
         with control.solve(yield_=True, async_=True) as handle:
-            self._wait(handle, deadline, f"planning ran out of its time limit ({self.settings.time_limit:g} s)")
+            self._wait(handle, deadline, f"planning ran out of its time limit ({self.settings.time_limit:g} s){where}")
             model = handle.model()
             if model is not None:
-                self._theories[control].on_model(model)
-                model_symbols = list(model.symbols(shown=True))
-                model_symbols += [
-                    clingo.Function("pos", [symbol.arguments[0], clingo.Number(int(value)), symbol.arguments[1]])
-                    for symbol, value in self._theories[control].assignment(model.thread_id)
-                    if symbol.name == "p"
-                ]
+                theory.on_model(model)
+                answer = read(model, theory)
         if conflicts is not None:
             control.configuration.solve.solve_limit = "umax,umax"
         self.stats["solve_s"] += time.perf_counter() - start
-        return model_symbols
+        return answer
 
     def _exclude(self, control: clingo.Control, symbols: list[clingo.Symbol], count: int) -> None:
         """Forbid this exact plan from being found again.
