@@ -103,11 +103,11 @@ def test_a_bad_no_plan_value_names_the_option(pytester):
 
 @pytest.mark.parametrize(
     "start_gap, error, named",
-    [(28.0, "MarginsBind", "speed_margin 0.5 m/s"), (30.0, "StepBinds", "plans in steps of 0.5 s exist")],
+    [(30.0, "MarginsBind", "speed_margin 0.5 m/s"), (32.0, "StepBinds", "plans in steps of 0.5 s exist")],
     ids=["only-thinner-margins", "only-in-half-steps"],
 )
 def test_a_case_only_plans_beyond_the_tools_margins_or_step_meet_is_a_tool_limit_when_not_accepted(start_gap, error, named):
-    # close_in at 28 m has plans only with thinner margins, at 30 m only in half steps (measured);
+    # close_in at 30 m has plans only with thinner margins, at 32 m only in half steps (measured);
     # a vehicle that never goes faster than 15 m/s makes every simulation fail
     from pytest_roadlogic.pipeline import load_scenario
     from pytest_roadlogic.runner import TOOL_LIMIT, Runner

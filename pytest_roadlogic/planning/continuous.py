@@ -382,9 +382,12 @@ class ContinuousPlanner(Planner):
         found = 0
         try:
             window = self.window(deadline)
-            earliest = self.needed_horizon(deadline, window)
-            if earliest is None:
-                raise NoPlanError(f"the phases' durations cannot all hold at any length, in steps of {self.settings.dt:g} s")
+            # the search starts at the automaton's floor, where every scenario measured can end
+            # (planning/window.py); the window's own solver is asked when no plan ends there, or
+            # when the floor is past the horizon limit (measured: five_vehicle_minute's first
+            # plan 0.98 s with the window asked first at the floor, 0.77 s without)
+            checked = window.floor > self.settings.max_horizon
+            earliest = self._earliest(deadline, window) if checked else window.floor
             control = self._control(self.base_program, self.state_program)
             self._advance_to(control, earliest)
             horizon = earliest
@@ -400,11 +403,17 @@ class ContinuousPlanner(Planner):
                     source, plan_horizon = stretched
                 else:
                     answer = self._model(control, deadline, f"at horizon {horizon}")
+                    if answer is None and not checked:
+                        checked, grounded = True, horizon
+                        earliest = horizon = max(horizon, self._earliest(deadline, window))
+                        if horizon > grounded:
+                            self._advance_to(control, horizon, grounded)
+                            continue
                     if answer is None:
                         # one question, not the whole window's bisection (5 solves, a fifth of
                         # change_lane's first plan): open_at is monotone, so a run not under way at
                         # this horizon is under way at no later one
-                        if horizon >= self.settings.max_horizon or not window.open_at(horizon):
+                        if horizon >= self.settings.max_horizon or window.past_end(horizon + 1):
                             break  # no run of the automaton lasts longer: no longer plan either
                         horizon += 1
                         self._advance(control, horizon)
@@ -439,6 +448,13 @@ class ContinuousPlanner(Planner):
             if not self.settings.explain_unsatisfiable:
                 raise
             self._explain(error, deadline, window)
+
+    def _earliest(self, deadline: float, window) -> int:
+        """The first horizon the durations allow (``needed_horizon``); ``NoPlanError`` when none does."""
+        earliest = self.needed_horizon(deadline, window)
+        if earliest is None:
+            raise NoPlanError(f"the phases' durations cannot all hold at any length, in steps of {self.settings.dt:g} s")
+        return earliest
 
     def _stretch_target(self, shortest: int, longest: int | None = None) -> int:
         """As the grid planner's, but never past ``stretch_limit``."""

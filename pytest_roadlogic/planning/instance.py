@@ -17,7 +17,7 @@ import random
 from dataclasses import dataclass
 
 from ..automaton.guards import HEADWAY, LANE, POSITION, SPEED, TRAVELED, And, Bound, Guard, Not, Or
-from ..automaton.model import SymbolicAutomaton
+from ..automaton.model import SymbolicAutomaton, Timing
 from ..settings import DEFAULT_HORIZON, DEFAULT_PLAN_TIMEOUT
 from ..frontend.errors import OscError, error_at
 
@@ -279,11 +279,17 @@ def automaton_facts(automaton: SymbolicAutomaton, dt: float, relax: dict | None 
         facts.extend(f"ends({t.id},{p})." for p in sorted(t.ends) if p in automaton.timings)
     facts.extend(f"#external relaxed({k})." for k in relax.values())
     for phase, timing in automaton.timings.items():
-        low = math.ceil(timing.low / dt - 1e-9)
-        high = math.floor(timing.high / dt + 1e-9) if math.isfinite(timing.high) else "#sup"
+        low, high = timing_steps(timing, dt)
+        high = "#sup" if high is None else high
         condition = f" :- not relaxed({relax[timing.source]})" if timing.source in relax else ""
         facts.append(f"timing({phase},{low},{high}){condition}.  % {timing}")
     return facts
+
+
+def timing_steps(timing: Timing, dt: float) -> tuple[int, int | None]:
+    """A timed phase's shortest and longest length in whole steps of ``dt`` (None: no longest)."""
+    low = math.ceil(timing.low / dt - 1e-9)
+    return low, math.floor(timing.high / dt + 1e-9) if math.isfinite(timing.high) else None
 
 
 def _runup_fact(cells_per_step: int, steps: int, settings: PlanningSettings) -> str:

@@ -31,7 +31,7 @@ from ..automaton.model import SymbolicAutomaton, Timing
 from .errors import HorizonTooShort, NoPlanError, PlanningTimeout, UnsatisfiableScenario, conflict_message
 from .instance import PlanningSettings, build_instance, relaxable_constraints, start_preferences
 from .plan import Plan, PlanState
-from .window import DurationWindow
+from .window import DurationWindow, shortest_run
 
 ASP_DIR = Path(__file__).resolve().parent.parent / "asp"
 if not ASP_DIR.is_dir():  # running from a source checkout: asp/ sits at the top level
@@ -194,8 +194,10 @@ class Planner:
 
     def window(self, deadline: float, base_program: str | None = None, assumptions: list | None = None) -> DurationWindow:
         """The horizons the durations allow, for this scenario's instance or the diagnosis's
-        relaxable one (``base_program`` with the ``assumptions`` it keeps)."""
-        return DurationWindow(ASP_DIR / "automaton.lp", base_program or self.base_program, self._waiter(deadline), assumptions)
+        relaxable one (``base_program`` with the ``assumptions`` it keeps). Only the scenario's own
+        instance has every duration in force, so only its window starts at the automaton's floor."""
+        floor = shortest_run(self.automaton, self.settings.dt) if base_program is None else 0
+        return DurationWindow(ASP_DIR / "automaton.lp", base_program or self.base_program, self._waiter(deadline), assumptions, floor)
 
     def _waiter(self, deadline: float):
         """A window's wait: for a solve, until ``deadline``."""
@@ -254,8 +256,7 @@ class Planner:
             # wait plus its 3-3.5 s lane change had been reported with no constraint named)
             timings = {k for k, constraint in enumerate(relaxable_constraints(self.automaton)) if isinstance(constraint, Timing)}
             return sorted(k for k in kept if k in timings)
-        last_open = window.last_open(settings.max_horizon)
-        last = settings.max_horizon if last_open is None else min(settings.max_horizon, last_open + 1)
+        last = window.last_horizon(settings.max_horizon)
         control = self._control(*program)
         union: set[int] = set()
         for horizon in range(earliest, last + 1):
@@ -283,15 +284,16 @@ class Planner:
             control.assign_external(clingo.Function("query", [clingo.Number(horizon - 1)]), False)
         control.assign_external(clingo.Function("query", [t]), True)
 
-    def _advance_to(self, control: clingo.Control, horizon: int) -> None:
-        """Ground steps 0 to ``horizon`` in one call and ask for acceptance at ``horizon`` only
-        (measured on five_vehicle_minute: 45 steps in one call 0.36 s, one call per step 2.5 s)."""
-        parts = [("base", []), ("state", [clingo.Number(0)]), ("check", [clingo.Number(0)])]
-        for step in range(1, horizon + 1):
+    def _advance_to(self, control: clingo.Control, horizon: int, grounded: int = -1) -> None:
+        """Ground the steps after ``grounded`` (-1: none yet, the base program too) up to
+        ``horizon`` in one call and ask for acceptance at ``horizon`` only (measured on
+        five_vehicle_minute: 45 steps in one call 0.36 s, one call per step 2.5 s)."""
+        parts = [("base", []), ("state", [clingo.Number(0)]), ("check", [clingo.Number(0)])] if grounded < 0 else []
+        for step in range(max(1, grounded + 1), horizon + 1):
             t = clingo.Number(step)
             parts += [("dynamics", [t]), ("state", [t]), ("check", [t])]
         self._ground(control, parts)
-        for step in range(horizon):
+        for step in range(max(0, grounded), horizon):
             control.assign_external(clingo.Function("query", [clingo.Number(step)]), False)
         control.assign_external(clingo.Function("query", [clingo.Number(horizon)]), True)
 

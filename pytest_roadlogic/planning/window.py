@@ -2,9 +2,12 @@
 
 The automaton alone, with every guard holding, says how long a run can last: no plan ends before
 the first horizon at which it can reach its final location (``earliest``), and none needs a
-horizon past the last step at which a run can still be under way (``last_open``): the final
-location is absorbing, so a plan that ends earlier is a shorter plan the planner met first.
-Planning and the diagnosis solve only between the two. Measured: follow_then_overtake's
+horizon more than one step past the last step at which a run can still be under way
+(``last_open``; ``last_horizon``): the final location is absorbing, so a longer plan only idles
+longer. The one step is the plan's own: the checks of its last state (asp/continuous.lp, nobody
+closes in at the end) may need a step after the scenario's last transition (measured: close_in's
+34 m start gap at half steps has a plan only so). Planning and the diagnosis solve only between
+``earliest`` and ``last_horizon``. Measured: follow_then_overtake's
 durations rule out horizons 0-23, which the continuous encoding spent 60 s refuting with the
 dynamics; infeasible_order (every phase 5-10 s) was refuted at all 120 horizons of the limit
 (21 s) where its durations allow 5 to 11 steps.
@@ -13,6 +16,12 @@ Both questions are monotone in the horizon (reaching the final location by h, be
 h), so each is answered by doubling and then bisecting, on steps grounded in as few calls as
 possible: measured on five_vehicle_minute (481 transitions), 45 steps grounded one call per step
 took 2.5 s and in one call 0.36 s.
+
+The search for ``earliest`` starts at a floor read off the automaton's graph (``shortest_run``), a
+step no run can end before: a scenario of serial phases ends exactly there, and one solve says so.
+Measured on five_vehicle_minute (three phases of at least 15 s, earliest 45): from step 0 the
+window grounded 64 steps and solved 9 times, 0.38 s of its 1.18 s first plan; from the floor it
+grounds 45 steps and solves once.
 """
 
 from __future__ import annotations
@@ -21,6 +30,9 @@ from collections.abc import Callable
 from pathlib import Path
 
 import clingo
+
+from ..automaton.model import SymbolicAutomaton
+from .instance import timing_steps
 
 # every guard holds: the durations alone decide (as free choices, measured 7.5 s for
 # five_vehicle_minute's window, against well under a second this way)
@@ -36,13 +48,15 @@ class DurationWindow:
     ``wait(handle, message)`` waits for a solve and raises when time is up.
     """
 
-    def __init__(self, automaton_lp: Path, base_program: str, wait: Callable[[clingo.SolveHandle, str], None], assumptions: list | None = None) -> None:
+    def __init__(self, automaton_lp: Path, base_program: str, wait: Callable[[clingo.SolveHandle, str], None], assumptions: list | None = None,
+                 floor: int = 0) -> None:
         self.control = clingo.Control(["--warn=none"], logger=lambda c, m: None)
         self.control.add("base", [], automaton_lp.read_text(encoding="utf-8") + "\n#program base.\n" + base_program
                          + "\n#program state(t).\n" + GUARDS_HOLD + "\n" + OPEN)
         self.wait = wait
         self.assumptions = assumptions or []
         self.grounded = -1
+        self.floor = floor  # no run ends before this step (the caller's proof: shortest_run)
         self.answers: dict[tuple[str, int], bool] = {}
 
     def _ground_to(self, horizon: int) -> None:
@@ -64,7 +78,10 @@ class DurationWindow:
         return self.answers[(external, horizon)]
 
     def _solve(self, external: str, horizon: int) -> bool:
-        self._ground_to(horizon)
+        # a phase past its longest is cut off at the step after it: without that step grounded, a
+        # run seemed still under way at a step where its phase must have ended (measured:
+        # infeasible_gain's 3-step phase, open at step 3 when asked with 3 steps grounded)
+        self._ground_to(horizon + 1 if external == "open" else horizon)
         atom = clingo.Function(external, [clingo.Number(horizon)])
         self.control.assign_external(atom, True)
         try:
@@ -84,7 +101,17 @@ class DurationWindow:
 
     def earliest(self, limit: int) -> int | None:
         """The first horizon up to ``limit`` by which a run can end; None when there is none."""
-        return _first(self.ends_by, limit)
+        return _first(self.ends_by, limit, self.floor)
+
+    def past_end(self, horizon: int) -> bool:
+        """No plan needs this horizon or a longer one: every run has ended more than a step
+        before it (``horizon > last_horizon``, in one question where ``last_horizon`` bisects)."""
+        return horizon >= 2 and not self.open_at(horizon - 2)
+
+    def last_horizon(self, limit: int) -> int:
+        """The longest horizon up to ``limit`` that a plan may need (see the module's docstring)."""
+        last_open = self.last_open(limit)
+        return limit if last_open is None else min(limit, last_open + 2)
 
     def last_open(self, limit: int) -> int | None:
         """The last step up to ``limit`` at which a run can be under way (-1: none, not even at
@@ -93,16 +120,20 @@ class DurationWindow:
         return None if first_closed is None else first_closed - 1
 
 
-def _first(holds: Callable[[int], bool], limit: int) -> int | None:
-    """The first h in 0..limit with ``holds(h)`` for a monotone ``holds``, or None."""
-    low, high = 0, 8  # holds(low - 1) is false; doubling finds a true high
+def _first(holds: Callable[[int], bool], limit: int, floor: int = 0) -> int | None:
+    """The first h in 0..limit with ``holds(h)`` for a monotone ``holds`` that is false below
+    ``floor``, or None."""
+    if floor > limit:
+        return None
+    # holds(low - 1) is false; a stride doubling from 8 finds a true high
+    low, high, stride = floor, floor if floor else 8, 8
     while True:
         high = min(high, limit)
         if holds(high):
             break
         if high == limit:
             return None
-        low, high = high + 1, 2 * high
+        low, high, stride = high + 1, high + stride, 2 * stride
     while low < high:
         middle = (low + high) // 2
         if holds(middle):
@@ -110,3 +141,56 @@ def _first(holds: Callable[[int], bool], limit: int) -> int | None:
         else:
             low = middle + 1
     return high
+
+
+def shortest_run(automaton: SymbolicAutomaton, dt: float) -> int:
+    """A step before which no run of ``automaton`` reaches its final location (asp/automaton.lp,
+    every guard holding): a transition fires at least one step after the one before it, and one
+    that ends a timed phase at least the phase's shortest length after the earliest step any
+    transition can begin it, when every path to it has begun the phase.
+
+    These are inequalities that the earliest firing steps of every run meet; their least solution,
+    found by raising all from 0 until they hold, is below each run's steps (a least fixpoint lies
+    below every point the inequalities allow). Whether a run ends there is the solver's to say.
+    """
+    outgoing: dict[int, list] = {}
+    for t in automaton.transitions:
+        outgoing.setdefault(t.source, []).append(t)
+    reachable, frontier = {automaton.initial}, [automaton.initial]
+    while frontier:
+        location = frontier.pop()
+        for t in outgoing.get(location, ()):
+            if t.target not in reachable:
+                reachable.add(t.target)
+                frontier.append(t.target)
+    # only reachable ones: a cycle no run enters would raise its steps without end
+    transitions = [t for t in automaton.transitions if t.source in reachable]
+    incoming: dict[int, list] = {}
+    for t in transitions:
+        incoming.setdefault(t.target, []).append(t)
+    phases = frozenset(automaton.timings)
+    # the timed phases that every path to a location has begun (a must-analysis, from above)
+    begun: dict[int, frozenset[int]] = {loc.id: phases for loc in automaton.locations}
+    begun[automaton.initial] = frozenset()
+    changed = True
+    while changed:
+        changed = False
+        for location, into in incoming.items():
+            if location == automaton.initial:
+                continue
+            meet = frozenset.intersection(*(begun[t.source] | (t.starts & phases) for t in into))
+            if meet != begun[location]:
+                begun[location], changed = meet, True
+    shortest = {p: timing_steps(timing, dt)[0] for p, timing in automaton.timings.items()}
+    fires = {t.id: 0 for t in transitions}
+    changed = True
+    while changed:
+        changed = False
+        beginning = {p: min((fires[t.id] for t in transitions if p in t.starts), default=0) for p in phases}
+        for t in transitions:
+            step = 0 if t.source == automaton.initial else 1 + min((fires[e.id] for e in incoming.get(t.source, ())), default=0)
+            for p in t.ends & begun[t.source]:
+                step = max(step, beginning[p] + shortest[p])
+            if step > fires[t.id]:
+                fires[t.id], changed = step, True
+    return min((fires[t.id] for t in incoming.get(automaton.final, ())), default=0)
