@@ -174,6 +174,29 @@ def test_an_infeasible_timed_scenario_is_refuted_only_over_the_lengths_its_durat
         assert f"infeasible_gain.osc:{line}:" in message, f"line {line}'s constraint clashes too: {message}"
 
 
+def test_farthest_is_the_value_of_a_band_farthest_from_every_earlier_one():
+    from pytest_roadlogic.planning.continuous import farthest
+
+    assert farthest([0.0], 0.0, 1.0) == 1.0
+    assert farthest([0.0, 1.0], 0.0, 1.0) == 0.5
+    assert farthest([0.0, 1.0, 0.5], 0.0, 1.0) == 0.25, "the lowest of ties"
+    assert farthest([], 8.0, 40.0) == 8.0
+
+
+def test_each_next_plan_is_steered_to_start_elsewhere_in_the_start_band_and_only_that_plan():
+    # the base strategy's plans: without steering, all ten of overtake's started at 8 m/s
+    automaton = build_automaton(load_scenario(ROOT / "scenarios" / "overtake.osc"))
+    plans = list(ContinuousPlanner(automaton, SETTINGS, 1).plans(limit=4))
+    starts = [plan.states["v1"][0].speed for plan in plans]
+    low, high = SETTINGS.initial_speed
+    # steered to the band's high end, its middle, its lower quarter: a nudge of an earlier plan
+    # left on would pull each towards the high end instead
+    for plan_speed, place in zip(starts[1:], (1.0, 0.5, 0.25)):
+        assert plan_speed == pytest.approx(low + place * (high - low), abs=2.0), f"start speeds {starts}"
+    for plan in plans:
+        check_continuous_plan(plan, automaton)
+
+
 def test_a_random_start_draws_different_plans_from_different_seeds():
     import dataclasses
 
