@@ -213,16 +213,29 @@ def _rate_rules(automaton: SymbolicAutomaton, settings: ContinuousSettings, rela
 
 def start_preferences(automaton: SymbolicAutomaton, settings: ContinuousSettings, draw: random.Random) -> str:
     """A random start's draws, in a fixed order so that one seed gives one set: per vehicle a
-    preferred start lane (a sign heuristic) and, for a driving one, a preferred start speed (a
-    preference of the linear program, which a scenario's own speeds override)."""
+    preferred lane (a heuristic) and, for a driving one, a preferred start speed (a preference of
+    the linear program, which a scenario's own speeds override).
+
+    A driving vehicle prefers its lane at the start and at the plan's last step: one that keeps
+    its lane keeps the drawn one, and one the scenario moves out of its lane (a dodge, an
+    overtake) returns to it or goes to it where the scenario lets it. Measured (roadlogic bench
+    scenarios/ --encoding continuous, seed 1), refined mean similarity with the start lane alone
+    and with the end lane too: dodge_obstacle 0.569 -> 0.377 (its ego always dodged into the
+    next lane), overtake_obstacle 0.494 -> 0.396, overtake_fixed_lane 0.296 -> 0.282, change_lane
+    0.217 -> 0.225, follow 0.209 -> 0.210, overtake 0.238 -> 0.272, overtake_third_actor 0.242 ->
+    0.276. An end lane drawn apart from the start lane made free vehicles change lane for nothing
+    (follow 0.209 -> 0.233)."""
     low, high = max(settings.initial_speed[0], settings.min_speed), min(settings.initial_speed[1], settings.max_speed)
-    rules = []
+    rules, ends = [], []
     for vehicle in automaton.actors:
         name = _atom(vehicle)
-        rules.append(f"#heuristic lane({name},{draw.randrange(automaton.lanes)},0). [2,true]")
+        lane = draw.randrange(automaton.lanes)
+        rules.append(f"#heuristic lane({name},{lane},0). [2,true]")
         if vehicle not in automaton.stationary:
             rules.append(f"&nudge{{ v({name},0) }} = {_number(round(draw.uniform(low, high), 1))}.")
-    return "\n".join(rules) + "\n"
+            ends.append(f"#heuristic lane({name},{lane},t) : query(t). [3,true]")
+    # the last step's lane atoms exist once that step is grounded, and query(t) says which is last
+    return "\n".join([*rules, "#program check(t).", *ends, "#program base."]) + "\n"
 
 
 def farthest(points: list[float], low: float, high: float) -> float:
