@@ -25,6 +25,7 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
 from pytest_roadlogic.automaton import build_automaton  # noqa: E402
+from pytest_roadlogic.evaluation.runner import conftest_dialect  # noqa: E402
 from pytest_roadlogic.frontend import OscError, check_file  # noqa: E402
 from pytest_roadlogic.planning import NoPlanError, Planner, PlanningSettings, PlanningTimeout, UnsatisfiableScenario  # noqa: E402
 from pytest_roadlogic.planning.continuous import ContinuousPlanner, ContinuousSettings  # noqa: E402
@@ -55,7 +56,7 @@ def main() -> int:
         if path.name == "lib.osc":
             continue
         name = path.stem
-        dialect = "carla" if "carla" in path.parent.name else "standard"  # as the folder's conftest.py chooses
+        dialect = conftest_dialect(path, [ROOT / "scenarios"])  # as the folder's conftest.py chooses
         try:
             checked = check_file(path, dialect=dialect)
         except OscError as error:

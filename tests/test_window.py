@@ -8,6 +8,7 @@ from pathlib import Path
 import pytest
 
 from pytest_roadlogic.automaton import build_automaton
+from pytest_roadlogic.evaluation.runner import conftest_dialect
 from pytest_roadlogic.frontend import check_file
 from pytest_roadlogic.planning.continuous import ContinuousPlanner, ContinuousSettings
 from pytest_roadlogic.planning.window import shortest_run
@@ -21,7 +22,7 @@ FILES = sorted(
 
 
 def automaton_of(path: Path):
-    checked = check_file(path, dialect="carla" if "carla" in path.parent.name else "standard")
+    checked = check_file(path, dialect=conftest_dialect(path, [ROOT / "scenarios"]))  # as pytest would read it
     assert not checked.errors, checked.report()
     return build_automaton(checked.scenario_to_run())
 

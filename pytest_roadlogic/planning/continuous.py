@@ -108,6 +108,11 @@ class ContinuousSettings:
         return {"length": 2 * self.position_margin, "speed": 2 * self.speed_margin, "time": self.dt, "acceleration": 0.5,
                 "headway": 2 * self.headway_margin}
 
+    def start_band(self) -> tuple[float, float]:
+        """The start speeds (m/s) a driving vehicle is preferred to have where the scenario leaves
+        them open: ``initial_speed`` within the speed limits."""
+        return max(self.initial_speed[0], self.min_speed), min(self.initial_speed[1], self.max_speed)
+
     def margins(self) -> dict[str | None, float]:
         """How far inside a range's edges the plan keeps, per physical dimension."""
         return {"length": self.position_margin, "speed": self.speed_margin, "headway": self.headway_margin, "acceleration": self.acceleration_margin,
@@ -148,6 +153,7 @@ def build_continuous_instance(automaton: SymbolicAutomaton, settings: Continuous
     ``relaxed(K)``, as in the grid encoding, for the diagnosis of a scenario without a plan."""
     s = settings
     vehicles = automaton.actors
+    start_low, start_high = s.start_band()
     base = [
         "% scenario instance, continuous encoding (generated)",
         f"#const dt = {_number(s.dt)}.",
@@ -157,8 +163,8 @@ def build_continuous_instance(automaton: SymbolicAutomaton, settings: Continuous
         f"#const jerk = {_number(s.max_jerk * s.dt)}.",
         f"#const vmin = {_number(s.min_speed)}.",
         f"#const vmax = {_number(s.max_speed)}.",
-        f"#const v0min = {_number(max(s.initial_speed[0], s.min_speed))}.",
-        f"#const v0max = {_number(min(s.initial_speed[1], s.max_speed))}.",
+        f"#const v0min = {_number(start_low)}.",
+        f"#const v0max = {_number(start_high)}.",
         f"#const gap = {_number(s.min_gap)}.",
         f"#const closing_time = {_number(s.closing_time)}.",
         f"#const lane_change_speed = {_number(s.lane_change_speed)}.",
@@ -227,7 +233,7 @@ def start_preferences(automaton: SymbolicAutomaton, settings: ContinuousSettings
     of their lanes for nothing (follow's lead and tail changed lane in 34 of 50 samples, against
     10 without and 17 with this; follow 0.210, overtake_third_actor 0.276); drawn apart from the
     start lane, follow 0.233."""
-    low, high = max(settings.initial_speed[0], settings.min_speed), min(settings.initial_speed[1], settings.max_speed)
+    low, high = settings.start_band()
     rules, ends = [], []
     for vehicle in automaton.actors:
         name = _atom(vehicle)
@@ -525,7 +531,7 @@ class ContinuousPlanner(Planner):
         the next, and bands shrunk to the speeds reached ended overtake's plans at 8 m/s."""
         if self.settings.theory != "lazy":
             return []  # clingo-lpx has no preferences
-        low, high = max(self.settings.initial_speed[0], self.settings.min_speed), min(self.settings.initial_speed[1], self.settings.max_speed)
+        low, high = self.settings.start_band()
         place = farthest([0.0, *places], 0.0, 1.0)  # the first plan, unsteered, starts low
         places.append(place)
         rules = [f"#external steer({count})."]

@@ -153,16 +153,7 @@ def shortest_run(automaton: SymbolicAutomaton, dt: float) -> int:
     found by raising all from 0 until they hold, is below each run's steps (a least fixpoint lies
     below every point the inequalities allow). Whether a run ends there is the solver's to say.
     """
-    outgoing: dict[int, list] = {}
-    for t in automaton.transitions:
-        outgoing.setdefault(t.source, []).append(t)
-    reachable, frontier = {automaton.initial}, [automaton.initial]
-    while frontier:
-        location = frontier.pop()
-        for t in outgoing.get(location, ()):
-            if t.target not in reachable:
-                reachable.add(t.target)
-                frontier.append(t.target)
+    reachable = automaton.depth()  # the locations a run can reach
     # only reachable ones: a cycle no run enters would raise its steps without end
     transitions = [t for t in automaton.transitions if t.source in reachable]
     incoming: dict[int, list] = {}
