@@ -208,6 +208,31 @@ def test_a_random_start_draws_different_plans_from_different_seeds():
     assert again.states == ContinuousPlanner(automaton, settings, 3).first().states, "one seed, one plan"
 
 
+def test_a_random_start_keeps_each_free_vehicles_drawn_acceleration_within_the_drift_speeds(tmp_path):
+    """The refined strategy's vehicles do not all cruise at their start speed: each accelerates at
+    its drawn -2, 0 or +2 m/s^2 (as the grid planner's do) until it reaches the drift's speeds."""
+    automaton = scenario_file(tmp_path, """scenario free:
+    ego: vehicle
+
+    do ego.drive(duration: 12s)
+""")
+    settings = dataclasses.replace(SETTINGS, random_start=True)
+    slow, fast = settings.drift_speeds
+    seen = set()
+    for seed in range(1, 10):
+        planner = ContinuousPlanner(automaton, settings, seed)
+        plan = planner.first()
+        check_continuous_plan(plan, automaton)
+        (aim,) = [float(line.split("=")[1].strip(' ."')) for line in planner.preferences.splitlines() if line.startswith("&drift{ a(")]
+        seen.add(aim)
+        speeds = [state.speed for state in plan.states["ego"]]
+        start, steps = speeds[0], len(speeds) - 1
+        expected = min(max(start + aim * steps, slow), fast) if aim else start
+        assert speeds[-1] == pytest.approx(expected, abs=0.6), f"seed {seed}, drawn {aim:+g} m/s^2: speeds {[round(v, 1) for v in speeds]}"
+        assert all(min(slow, start) - 1e-6 <= v <= max(fast, start) + 1e-6 for v in speeds), f"seed {seed}: left the drift's speeds {speeds}"
+    assert seen == {-settings.drift, 0.0, settings.drift}, "each of the three accelerations drawn in nine seeds"
+
+
 def test_the_clingo_lpx_theory_plans_a_random_start_too():
     # kept selectable to compare: it has no preferences, so a random start's nudges must not reach it
     import dataclasses

@@ -15,8 +15,8 @@ is kept for the whole search.
 
 The plan itself comes from one more linear program over the accepted choices, which minimises
 the sum of the absolute accelerations and their changes: smooth plans a motion planner follows.
-Preferences (``&prefer{ ... } <= k``, same syntax; ``&nudge`` for weak ones) never decide
-feasibility; that last program pays ``PREFERENCE_WEIGHT`` (``NUDGE_WEIGHT``) per unit by which it misses one (a start speed a scenario leaves open
+Preferences (``&prefer{ ... } <= k``, same syntax; ``&nudge`` and ``&drift`` for weaker ones) never decide
+feasibility; that last program pays ``PREFERENCE_WEIGHT`` (``NUDGE_WEIGHT``, ``DRIFT_WEIGHT``) per unit by which it misses one (a start speed a scenario leaves open
 lies at highway speeds, but a scenario that asks for 200 kph at its start still gets it).
 
 Semantics as clingo-lpx's default (non-strict): a true theory atom's constraint must hold; a
@@ -71,7 +71,8 @@ THEORY = """
     term { - : 3, unary; * : 2, binary, left };
     &sum/0 : term, {<=, >=, =}, term, any;
     &prefer/0 : term, {<=, >=, =}, term, any;
-    &nudge/0 : term, {<=, >=, =}, term, any
+    &nudge/0 : term, {<=, >=, =}, term, any;
+    &drift/0 : term, {<=, >=, =}, term, any
 }.
 """
 
@@ -84,7 +85,12 @@ PREFERENCE_WEIGHT = 100.0
 # where the scenario leaves them free, and never buys itself a hard brake (measured: drawn start
 # speeds at PREFERENCE_WEIGHT made change_lane's plans brake at -8 m/s^2 from the first instant)
 NUDGE_WEIGHT = 0.1
-WEIGHTS = {"prefer": PREFERENCE_WEIGHT, "nudge": NUDGE_WEIGHT}
+# a drift (``&drift``, a random start's drawn acceleration and the speeds it holds within) weighs
+# more than an acceleration, so that a vehicle the scenario leaves free keeps accelerating at its
+# drawn rate (at 1, the weight of the acceleration itself, staying at zero would cost as much),
+# and less than a preference, so that it yields to every speed a scenario prefers
+DRIFT_WEIGHT = 2.0
+WEIGHTS = {"prefer": PREFERENCE_WEIGHT, "nudge": NUDGE_WEIGHT, "drift": DRIFT_WEIGHT}
 
 
 @dataclass
