@@ -261,8 +261,8 @@ def start_preferences(automaton: SymbolicAutomaton, settings: ContinuousSettings
     overtake_third_actor 0.244/0.243/0.246 -> 0.224/0.213/0.220; mean over the seven 0.305/0.312/
     0.321 -> 0.295/0.295/0.282, and refined below base on all seven at each seed (before, follow
     and overtake missed it at seed 2, follow and overtake_third_actor at seed 3). The drift alone
-    (seed 1): follow 0.217; drawn from -2..+2 instead of three values, 0.224; kept within the start
-    band (8-40 m/s), 0.226: drifting vehicles then all ended at its two edges. Lanes kept only by
+    (seed 1): follow 0.217; drawn from -2..+2 instead of three values, 0.224, and that kept within
+    the start band (8-40 m/s), 0.226. Lanes kept only by
     vehicles the scenario never moves across lanes: change_lane 0.228 (its v1 wove again). A lane
     change at a drawn step, or each transition's sign drawn (eager or late): neither better over
     the seven (0.305, 0.315 at seed 1)."""
