@@ -37,9 +37,9 @@ ENCODING = "continuous.lp"
 # grid's 50 000 are about 2 s there; each conflict here may cost a linear program)
 STRETCH_CONFLICTS = 2_000
 SHARED = ("automaton.lp",)
-# a random start's vehicle keeps its lane unless the scenario needs a change: a lane atom is tried
-# as the step before's first (as in preferences.lp, the grid's). Why: see start_preferences
-KEEP_LANE = ("#heuristic lane(V,L,t) : lane(V,L,t-1). [1,sign]", "#heuristic lane(V,M,t) : lane(V,L,t-1), lane_id(M), M != L. [1,false]")
+# a random start's vehicle keeps its lane unless the scenario needs a change (the grid's random
+# start loads the same file)
+KEEP_LANE = "keep_lane.lp"
 
 
 @dataclass(frozen=True)
@@ -248,7 +248,7 @@ def start_preferences(automaton: SymbolicAutomaton, settings: ContinuousSettings
 
     And, as the grid planner's random start does (asp/preferences.lp), a driving vehicle keeps
     one drawn acceleration (-drift, 0 or +drift, an ``&drift`` preference of the linear program,
-    within ``drift_speeds``) and keeps its lane unless the scenario needs a change (``KEEP_LANE``).
+    within ``drift_speeds``) and keeps its lane unless the scenario needs a change (asp/keep_lane.lp).
     Without them the smoothest plan held every vehicle the scenario leaves free at its start
     speed, and the solver's random signs moved vehicles across lanes and back for nothing (follow,
     seeds 1-30: a lane change in 11 first plans, 8 with this; both cars kept the middle lane in 2,
@@ -285,7 +285,8 @@ def start_preferences(automaton: SymbolicAutomaton, settings: ContinuousSettings
                        f"&drift{{ v({name},t) }} <= {_number(fast)}."]
     # the last step's lane atoms exist once that step is grounded, and query(t) says which is last;
     # changed(V,t): V has changed lane by step t
-    return "\n".join([*rules, "#program dynamics(t).", *drifts, *KEEP_LANE, "changed(V,t) :- changing(V,t).", "changed(V,t) :- changed(V,t-1), t > 1.",
+    keep_lane = (ASP_DIR / KEEP_LANE).read_text(encoding="utf-8")
+    return "\n".join([*rules, "#program dynamics(t).", *drifts, keep_lane, "#program dynamics(t).", "changed(V,t) :- changing(V,t).", "changed(V,t) :- changed(V,t-1), t > 1.",
                        "#program check(t).", *ends, "#program base."]) + "\n"
 
 

@@ -38,7 +38,7 @@ if not ASP_DIR.is_dir():  # running from a source checkout: asp/ sits at the top
     ASP_DIR = Path(__file__).resolve().parents[2] / "asp"
 BACKGROUND = ("dynamics.lp", "domain.lp", "automaton.lp")
 INITIAL = "initial.lp"  # the rules of the initial state, after the instance's facts (see _control)
-PREFERENCES = "preferences.lp"  # loaded for a random start only
+PREFERENCES = ("preferences.lp", "keep_lane.lp")  # loaded for a random start only, in this order
 
 
 def check_satisfiable(automaton: SymbolicAutomaton) -> None:
@@ -122,7 +122,7 @@ class Planner:
         initial = (ASP_DIR / INITIAL).read_text(encoding="utf-8")
         self._add(control, background_theory() + "\n#program base.\n" + base_program + "\n" + initial + "\n#program state(t).\n" + state_program)
         if self.preferences:
-            self._add(control, "#program base.\n" + self.preferences + (ASP_DIR / PREFERENCES).read_text(encoding="utf-8"))
+            self._add(control, "#program base.\n" + self.preferences + "".join((ASP_DIR / name).read_text(encoding="utf-8") for name in PREFERENCES))
         return control
 
     def _add(self, control: clingo.Control, program: str) -> None:
