@@ -233,6 +233,26 @@ def test_a_random_start_keeps_each_free_vehicles_drawn_acceleration_within_the_d
     assert seen == {-settings.drift, 0.0, settings.drift}, "each of the three accelerations drawn in nine seeds"
 
 
+def test_a_random_start_meets_a_guard_that_pins_a_vehicle_to_a_place_as_early_as_it_can():
+    """dodge_obstacle's end pins the ego 5-20 m past a parked car. Tried late, as every free guard
+    is, it was met at the last step of a plan stretched to its drawn length, and the ego crawled
+    towards the car all the way; a random start meets it at the first step it can, as the
+    shortest plan does, and the ego drives on for the rest of the plan. Guards between two driving
+    vehicles (follow's end gap) pin nobody and keep the solver's order."""
+    automaton = build_automaton(load_scenario(ROOT / "scenarios" / "dodge_obstacle.osc"))
+    earliest = ContinuousPlanner(automaton, SETTINGS, 1).first().transitions[-1][0]
+    settings = dataclasses.replace(SETTINGS, random_start=True)
+    stretched = 0
+    for seed in range(1, 7):
+        plan = ContinuousPlanner(automaton, settings, seed).first()
+        check_continuous_plan(plan, automaton)
+        assert plan.transitions[-1][0] == earliest, f"seed {seed}: the dodge ended at step {plan.transitions[-1][0]}, not at the earliest, {earliest}"
+        stretched += plan.horizon > earliest
+    assert stretched, "some of the plans last longer than the dodge (the ego drives on after it)"
+    follow = build_automaton(load_scenario(ROOT / "scenarios" / "follow.osc"))
+    assert "fire(" not in ContinuousPlanner(follow, settings, 1).preferences
+
+
 def test_the_clingo_lpx_theory_plans_a_random_start_too():
     # kept selectable to compare: it has no preferences, so a random start's nudges must not reach it
     import dataclasses
