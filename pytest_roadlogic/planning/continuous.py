@@ -563,8 +563,8 @@ class ContinuousPlanner(Planner):
 
     def _stretch_target(self, shortest: int, longest: int | None = None) -> int:
         """As the grid planner's, but never past ``stretch_limit``."""
-        longest = min(self.settings.max_horizon, math.floor(self.settings.stretch_limit / self.settings.dt + 1e-9))
-        return super()._stretch_target(shortest, longest)
+        cap = min(self.settings.max_horizon, math.floor(self.settings.stretch_limit / self.settings.dt + 1e-9))
+        return super()._stretch_target(shortest, cap if longest is None else min(longest, cap))
 
     def _model(self, control, deadline: float, where: str, conflicts: int | None = None) -> tuple[list, dict[str, object]] | None:
         """(shown symbols, the linear program's values) of the next model; None when there is none,
