@@ -304,8 +304,8 @@ def start_preferences(automaton: SymbolicAutomaton, settings: ContinuousSettings
     # a transition that pins a driving vehicle to a place is tried at its earliest step first (a
     # decision order, latest step last; a heuristic's level must be positive)
     top = settings.max_horizon + 1
-    early = [f"#heuristic fire({t.id},t) : t < {top}. [{top}-t,true]" for t in automaton.transitions
-             if t.source != automaton.initial and any(pins(bound, automaton.stationary) for bound in t.guard.atoms())]
+    early = [f"#heuristic fire({transition.id},t) : t < {top}. [{top}-t,true]" for transition in automaton.transitions
+             if transition.source != automaton.initial and any(pins(bound, automaton.stationary) for bound in transition.guard.atoms())]
     return "\n".join([*rules, "#program dynamics(t).", *drifts, keep_lane, "#program dynamics(t).", "changed(V,t) :- changing(V,t).", "changed(V,t) :- changed(V,t-1), t > 1.",
                        "#program check(t).", *ends, "#program state(t).", *early, "#program base."]) + "\n"
 
