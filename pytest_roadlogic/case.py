@@ -15,6 +15,7 @@ from dataclasses import asdict, dataclass, field, fields
 from pathlib import Path
 from typing import Any
 
+from .confinement import ReadRoots, project_root
 from .settings import BASE, CONTINUOUS, DEFAULT_SIMULATOR, GRID, REFINED, STANDARD_DIALECT, RunSettings
 
 
@@ -67,16 +68,25 @@ class Case:
         }
         return RunSettings(**{k: v for k, v in given.items() if v is not None})
 
-    def scenario_file(self, case_file: str | Path | None = None) -> Path:
-        """Where the scenario is: ``path`` as it stands when it exists, else relative to a folder above
-        the case file (the plugin records it relative to the rootdir, and writes the case file under it)."""
+    def scenario_file(self, case_file: str | Path | None = None, roots: ReadRoots | None = None) -> Path:
+        """Where the scenario is: ``path`` relative to the working folder, else to a folder above the
+        case file (the plugin records it relative to the rootdir, and writes the case file under it).
+
+        A case file is data from anywhere (a bug report, a pull request): its ``path`` must be
+        relative, without ``..``, and lead to a file inside ``roots`` (default: the project's root);
+        anything else raises ``CaseFileError`` and is never opened.
+        """
+        roots = roots or ReadRoots.of(project_root())
         path = Path(self.path)
-        if path.is_absolute() or path.exists() or case_file is None:
-            return path
-        for folder in Path(case_file).resolve().parents:
-            if (folder / path).exists():
-                return folder / path
-        return path
+        if path.is_absolute() or ".." in path.parts or not self.path.strip():
+            raise CaseFileError(f"the scenario path {self.path!r} is not a relative path inside the project; a case file names its scenario "
+                                "relative to the rootdir (as pytest wrote it)")
+        candidates = [path] + ([folder / path for folder in Path(case_file).resolve().parents] if case_file is not None else [])
+        for candidate in candidates:
+            if roots.allows(candidate) and candidate.exists():
+                return candidate
+        raise CaseFileError(f"the scenario {self.path!r} is not in the folders the tool reads ({roots.describe()}); run the replay from the project's "
+                            "folder, or name the folder that holds it with --allow-read DIR")
 
     def version_differences(self) -> list[str]:
         """What differs between the versions this case was written with and the installed ones."""

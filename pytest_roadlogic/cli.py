@@ -62,11 +62,13 @@ def main(argv: list[str] | None = None) -> int:
     _run_flags(replay, ("dialect",), "with an .osc file: ")
     _run_flags(replay, RUN_FLAGS, "with an .osc file: ")
     replay.add_argument("--out", type=Path, default=Path("out"), help="artifact directory (default out/)")
+    _allow_read(replay)
     check = commands.add_parser("check", help="parse and check .osc files and folders; print every problem")
     check.add_argument("paths", type=Path, nargs="+", help=".osc files or folders (searched recursively)")
     check.add_argument("--syntax-only", action="store_true", help="stop after parsing (for files written for other tools)")
     check.add_argument("--lanes", type=_flag(lane_count), default=None, help=LANES_HELP)
     _run_flags(check, ("dialect",))
+    _allow_read(check)
     automaton = _scenario_command(commands, "automaton", "write a scenario's symbolic automaton as Graphviz DOT (and PNG when dot is installed)")
     automaton.add_argument("--out", type=Path, default=None, help="the DOT file to write (default: <scenario>.dot)")
     plan = _scenario_command(commands, "plan", "solve a scenario's planning problem and print the plans as tables")
@@ -175,7 +177,21 @@ def _scenario_command(commands, name: str, help: str) -> argparse.ArgumentParser
     command.add_argument("--scenario", help="the scenario when the file declares several (default: the first)")
     command.add_argument("--lanes", type=_flag(lane_count), default=None, help=LANES_HELP)
     _run_flags(command, ("dialect",))
+    _allow_read(command)
     return command
+
+
+def _allow_read(command: argparse.ArgumentParser) -> None:
+    command.add_argument("--allow-read", type=Path, action="append", default=[], metavar="DIR",
+                         help="a folder outside the project that imports and case files may read from (repeat for several; default: the project's root "
+                              "and the named file's folder only)")
+
+
+def _roots(args: argparse.Namespace, named: Path):
+    """The folders a file named on the command line may make the tool read (confinement.ReadRoots)."""
+    from .confinement import ReadRoots
+
+    return ReadRoots.around(named, extra=getattr(args, "allow_read", []))
 
 
 def _plan(args: argparse.Namespace) -> int:
@@ -212,7 +228,10 @@ def _automaton(args: argparse.Namespace) -> int:
     if isinstance(loaded, int):
         return loaded
     scenario, automaton = loaded
-    written = write_dot(automaton, args.out or Path(f"{scenario.name}.dot"), title=f"{scenario.name} ({args.file})")
+    from .confinement import safe_name
+
+    # the name is the scenario's, which may be quoted (|../../../x|): it must not lead out of the working folder
+    written = write_dot(automaton, args.out or Path(f"{safe_name(scenario.name)}.dot"), title=f"{scenario.name} ({args.file})")
     print(automaton.describe())
     print(f"{len(automaton.locations)} locations, {len(automaton.transitions)} transitions")
     for kind, path in written.items():
@@ -223,13 +242,24 @@ def _automaton(args: argparse.Namespace) -> int:
 
 
 def osc_files(paths: list[Path], recursive: bool = True) -> list[Path]:
+    """The .osc files named or under the folders named. A special file in a folder (a FIFO named
+    x.osc made ``check`` wait forever) is skipped with a warning; one named is kept, to be refused."""
+    from .confinement import regular_file_problem
+
     found: list[Path] = []
     for path in paths:
-        found.extend(sorted(path.rglob("*.osc") if recursive else path.glob("*.osc")) if path.is_dir() else [path])
+        if not path.is_dir():
+            found.append(path)
+            continue
+        for file in sorted(path.rglob("*.osc") if recursive else path.glob("*.osc")):
+            if (problem := regular_file_problem(file)) is not None:
+                print(f"{file}: warning: skipped: {problem}", file=sys.stderr)
+                continue
+            found.append(file)
     return found
 
 
-def check_file(path: Path, syntax_only: bool = False, lanes: int | None = None, dialect: str | None = None) -> tuple[bool, str]:
+def check_file(path: Path, syntax_only: bool = False, lanes: int | None = None, dialect: str | None = None, roots=None) -> tuple[bool, str]:
     """Whether the file is free of errors, and the formatted report; never raises for bad input.
 
     Beyond the front end's checks, each scenario's automaton is built, so that a construct the
@@ -242,7 +272,7 @@ def check_file(path: Path, syntax_only: bool = False, lanes: int | None = None, 
         if syntax_only:
             parse_file(path)
             return True, ""
-        checked = check(path, lanes, dialect=dialect)
+        checked = check(path, lanes, dialect=dialect, roots=roots)
         reports = [checked.report()] if checked.diagnostics else []
         ok = not checked.errors
         for scenario in checked.scenarios if ok else ():
@@ -268,7 +298,7 @@ def _check(args: argparse.Namespace) -> int:
     files = osc_files(args.paths)
     failed = 0
     for path in files:
-        ok, report = check_file(path, args.syntax_only, args.lanes, args.setting_dialect)
+        ok, report = check_file(path, args.syntax_only, args.lanes, args.setting_dialect, _roots(args, path))
         if report:
             print(report)
         if not ok:
@@ -280,7 +310,7 @@ def _check(args: argparse.Namespace) -> int:
 def _load(args: argparse.Namespace):
     from .pipeline import load_scenario
 
-    return load_scenario(args.file, args.scenario, args.lanes, args.setting_dialect)
+    return load_scenario(args.file, args.scenario, args.lanes, args.setting_dialect, _roots(args, args.file))
 
 
 def _load_automaton(args: argparse.Namespace):

@@ -44,13 +44,14 @@ class Outcome:
     instance: int = 0  # its index among the instances of one planner (base strategy)
 
 
-def load_scenario(path: str | Path, name: str | None = None, lanes: int | None = None, dialect: str | None = None) -> CheckedScenario:
+def load_scenario(path: str | Path, name: str | None = None, lanes: int | None = None, dialect: str | None = None, roots=None) -> CheckedScenario:
     """A checked scenario of ``path`` (the first one with a behavior unless ``name`` is given).
 
     ``lanes`` overrides the road's lane count, which otherwise comes from the scenario; ``dialect``
-    (``settings.DIALECTS``) says how the file is read.
+    (``settings.DIALECTS``) says how the file is read; ``roots`` (``confinement.ReadRoots``) where
+    its imports may be read from (default: the project's root and the file's folder).
     """
-    return load_file(path, lanes, dialect=dialect).scenario_to_run(name)
+    return load_file(path, lanes, dialect=dialect, roots=roots).scenario_to_run(name)
 
 
 def run_scenario(

@@ -18,7 +18,8 @@ first scenario runs. A pytest session without ``.osc`` files pays for none of th
 from __future__ import annotations
 
 import json
-import re
+import os
+import shlex
 import time
 from dataclasses import replace
 from pathlib import Path
@@ -34,6 +35,7 @@ SLOW_ACTORS = 3  # a scenario with more moving vehicles than this is marked slow
 EXTRA_OPTIONS = (
     ("artifacts", "directory for the artifacts of failing cases", DEFAULT_ARTIFACTS),
     ("replay", "run only the case in this case.json (written for a failure), with this session's drivers", ""),
+    ("allow-read", f"folders outside the rootdir that .osc imports may read from, separated by {os.pathsep!r}", ""),
 )
 
 
@@ -104,8 +106,23 @@ SETTINGS = pytest.StashKey[RunSettings]()
 
 def pytest_collect_file(file_path: Path, parent: pytest.Collector):
     if file_path.suffix == ".osc":
+        from .confinement import regular_file_problem
+
+        problem = regular_file_problem(file_path)
+        if problem is not None:  # a FIFO named x.osc would be read forever
+            parent.warn(OscWarning(f"{file_path}: skipped: {problem}"))
+            return None
         return OscFile.from_parent(parent, path=file_path)
     return None
+
+
+def read_roots(config: pytest.Config, path: Path):
+    """Where an .osc file collected in this session may import from: the rootdir, the file's
+    folder and the folders ``--roadlogic-allow-read`` names (confinement.ReadRoots)."""
+    from .confinement import ReadRoots
+
+    extra = [Path(config.rootpath) / folder.strip() for folder in (_text(config, "allow-read") or "").split(os.pathsep) if folder.strip()]
+    return ReadRoots.of(config.rootpath, Path(path).parent, extra=extra)
 
 
 class OscWarning(pytest.PytestWarning):
@@ -123,7 +140,7 @@ class OscFile(pytest.File):
             dialect = self.ihook.pytest_roadlogic_dialect(config=self.config, path=self.path)
             if dialect is not None and dialect != settings.dialect:
                 settings = replace(settings, dialect=parse_dialect(dialect))
-            checked = check_file(self.path, settings.lanes, dialect=settings.dialect)
+            checked = check_file(self.path, settings.lanes, dialect=settings.dialect, roots=read_roots(self.config, self.path))
             checked.raise_for_errors()
         except OscError as error:
             # A broken .osc file is reported, but must not stop the other scenarios from running
@@ -239,6 +256,7 @@ class ScenarioItem(pytest.Item):
     def _report_failure(self, runner, result) -> None:
         from .artifacts.writer import write_artifacts
         from .case import installed_versions
+        from .confinement import safe_name
         from .outcomes import NO_PLAN
         from .sampling import describe_values, logical_parameters
 
@@ -247,7 +265,7 @@ class ScenarioItem(pytest.Item):
         case = replace(result.case, path=self._relative(result.case.path), drivers=dict(self.drivers.names), versions=installed_versions())
         result = replace(result, case=case)
         why = result.message  # for a clash, the report with the constraints at their lines (runner._failure)
-        directory = Path(self.config.rootpath) / _text(self.config, "artifacts") / _safe_name(self.nodeid)
+        directory = Path(self.config.rootpath) / _text(self.config, "artifacts") / safe_name(self.nodeid)
         paths: dict[str, Path] = {}
         if result.run is not None:
             started = time.perf_counter()
@@ -269,7 +287,9 @@ class ScenarioItem(pytest.Item):
         else:
             lines.append(why)
         lines += ["artifacts:", *(f"  {kind}: {path}" for kind, path in paths.items())]
-        replay = [f"pytest '{self.nodeid}' --roadlogic-replay {paths['case']}   (with this session's drivers)", case.command(paths["case"]), case.command()]
+        # shell-quoted: a file named a'$(touch P)'b.osc must not run a command when the line is pasted
+        replay = [f"{shlex.join(['pytest', self.nodeid, '--roadlogic-replay', str(paths['case'])])}   (with this session's drivers)",
+                  case.command(paths["case"]), case.command()]
         lines.append(f"replay: {replay[0]}")
         lines += [f"    or: {command}" for command in replay[1:]]
         self.failure_artifacts = (paths, replay)
@@ -369,6 +389,3 @@ class SessionSummary:
             terminalreporter.write_line(f"{c['set_aside']} samples set aside: each of their values has plans within the planner's margins and limits, but not together")
         terminalreporter.write_line(f"time per stage: {seconds}")
 
-
-def _safe_name(nodeid: str) -> str:
-    return re.sub(r"[^A-Za-z0-9_.-]+", "_", nodeid).strip("_")

@@ -264,6 +264,12 @@ def guided(
             declared[name] = Interval(band[0], band[1], parameter.dimension) if isinstance(band, tuple) else band
         else:
             narrowed[parameter.location] = band if isinstance(band, tuple) else (float(band), float(band))
+    given = {name: values[name] for name in values if name in checked.space.domains}
+    if (relation := checked.space.broken(given)) is not None:
+        # a keep relating several parameters: the monitor checks the trace, not the parameters, so a
+        # sample that breaks one would be planned and reported conformant
+        where = relation.location
+        raise UnknownParameter(f"{', '.join(f'{k} = {v!r}' for k, v in sorted(given.items()))} break the constraint at {Path(where.path).name}:{where.line}:{where.column}")
     if narrowed:
         scenario = checked.scenario
         checked = dataclasses.replace(checked, scenario=dataclasses.replace(scenario, behavior=_narrow(scenario.behavior, narrowed)))

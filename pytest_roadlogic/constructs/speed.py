@@ -32,6 +32,16 @@ def keep_speed_variants(actor: str, source: SourceLocation) -> list[Variant]:
     ]
 
 
+def refuse_negative_speed(binding: Binding, argument: str, context: CheckContext, relative: bool = False) -> None:
+    """A speed below 0 is an error at its place: vehicles drive forward, and the planner had read
+    speed(-20kph) as 0 kph, so that only ``run`` said "no plan" (issue 38)."""
+    given = binding[argument]
+    value = context.evaluate(given) if given is not None else None
+    if value is not None and value.low < 0:
+        hint = "a relative speed is by how much: swap faster_than and slower_than" if relative else "vehicles drive forward; give a speed from 0 up, e.g. [20..40]kph"
+        context.error(given.value.location, "a speed must not be negative", hint)
+
+
 class Speed(AnchoredModifier):
     """``speed(v)``, ``speed([a..b])``; relative: ``faster_than: x`` / ``slower_than: x`` (by the
     value), ``same_as: x`` (within the value, default 0 +- the tolerance)."""
@@ -43,6 +53,10 @@ class Speed(AnchoredModifier):
         required=(("speed", "same_as"),),
         description="absolute speed, or relative to another actor's",
     )
+
+    def check(self, binding: Binding, context: CheckContext) -> None:
+        super().check(binding, context)
+        refuse_negative_speed(binding, "speed", context, relative=any(binding[r] is not None for r in RELATIONS))
 
     def guard(self, use: Use) -> Guard:
         relation = use.relation(RELATIONS)
@@ -90,6 +104,7 @@ class ChangeSpeed(Action):
     )
 
     def check(self, binding: Binding, context: CheckContext) -> None:
+        refuse_negative_speed(binding, "target", context)
         profile = binding["rate_profile"]
         if profile is not None and isinstance(profile.value, model.Name) and profile.value.name.rpartition(".")[2] in ("constant", "asap"):
             context.error(profile.location, f"not supported: rate_profile: {profile.value.name.rpartition('.')[2]} (the speed's shape inside the phase)",
@@ -115,6 +130,9 @@ class AssignSpeed(Action):
     reaches it by the phase's start, and the monitor checks it there."""
 
     signature = Signature("assign_speed", (Parameter("target", "speed", positional=True), DURATION), required=(("target",),), description="the speed at the phase's start")
+
+    def check(self, binding: Binding, context: CheckContext) -> None:
+        refuse_negative_speed(binding, "target", context)
 
     def translate(self, use: Use, phase: Phase) -> None:
         low, high = widened(*use.range("target", SPEED, "a speed such as 20mps"), SPEED_TOLERANCE)

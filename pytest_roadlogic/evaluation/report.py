@@ -7,6 +7,7 @@ import os
 from pathlib import Path
 
 from . import figures
+from ..confinement import safe_name
 from ..outcomes import CONFORMANT, NO_PLAN, OUTCOMES, STAGES
 from ..settings import BASE, REFINED
 from .runner import PAPER_COUNTS, STRATEGIES, BenchmarkResults
@@ -25,7 +26,7 @@ def write_report(results: BenchmarkResults, out: Path, table: dict[tuple[str, st
         for strategy in STRATEGIES:
             plots[f"time-{strategy}"] = figures.stage_times(table, scenarios, strategy, out / f"rq1-time-{strategy}.png")
             for scenario in scenarios:
-                plots[f"{scenario}-{strategy}"] = figures.heatmap(table[scenario, strategy], out / f"rq2-similarity-{scenario}-{strategy}.png")
+                plots[f"{scenario}-{strategy}"] = figures.heatmap(table[scenario, strategy], out / f"rq2-similarity-{safe_name(scenario)}-{strategy}.png")
         plots["overview"] = figures.heatmap_overview(table, scenarios, out / "rq2-similarity.png")
         plots["outcomes"] = figures.outcomes(table, scenarios, REFINED, out / "rq2-outcomes-refined.png")
     path = out / REPORT_FILE

@@ -24,6 +24,7 @@ from typing import Any
 
 from ..artifacts.files import write_text
 from ..artifacts.writer import write_artifacts
+from ..confinement import safe_name
 from ..frontend import OscError
 from ..outcomes import NO_PLAN, STAGES
 from ..pipeline import load_scenario
@@ -230,7 +231,7 @@ def _record(result: CaseResult, name: str, strategy: str, index: int, settings: 
     directory = None
     if settings.artifacts:
         started = time.perf_counter()
-        relative = Path("instances") / name / f"{strategy}-{index + 1:03d}"
+        relative = Path("instances") / safe_name(name) / f"{strategy}-{index + 1:03d}"
         write_artifacts(outcome, out / relative, animation=False)
         seconds["artifacts"] = time.perf_counter() - started
         directory = relative.as_posix()

@@ -17,13 +17,14 @@ from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from ..confinement import ALLOW_READ_HINT, ReadRoots, project_root, regular_file_problem
 from ..settings import STANDARD_DIALECT
 from . import library, model
 from .checked import CheckedFile, CheckedScenario
 from .builtin_events import EDGES, with_builtin_events
 from .errors import Diagnostic, OscError, SourceLocation
 from .inheritance import inherited
-from .invocation import called_scenarios, expand_calls
+from .invocation import RECURSION, called_scenarios, expand_calls
 from .parameters import ParameterSpace, parameter_space
 from .parser import parse_file, parse_text
 from .physical import declared_physics, parse_with_declared_units
@@ -38,25 +39,31 @@ DEFAULT_LANES = 3
 _BUILTIN_PHYSICAL = LazyTable(lambda _: {dimension: name for name, dimension in library.PHYSICAL_TYPES.items()})
 
 
-def check_file(path: str | Path, lanes: int | None = None, registry: Registry | None = None, dialect: str | None = None) -> CheckedFile:
+def check_file(path: str | Path, lanes: int | None = None, registry: Registry | None = None, dialect: str | None = None,
+               roots: ReadRoots | None = None) -> CheckedFile:
     """Parse and check ``path`` and the files it imports. Syntax errors raise ``OscError``.
 
     ``lanes`` fixes the road's lane count; ``None`` takes it from each scenario (see ``_road_lanes``).
     ``registry`` holds the actions and modifiers the file may use (default: those of ``dialect``,
-    the standard's unless it names another of ``constructs.DIALECTS``).
+    the standard's unless it names another of ``constructs.DIALECTS``). ``roots``: the folders an
+    import may read from (default: the project's root and ``path``'s folder); an import outside
+    them is an error at the import, and the file is never opened.
     """
-    checker = _Checker(lanes, registry, dialect)
-    main, checker.units = parse_with_declared_units(path)
+    checker = _Checker(lanes, registry, dialect, roots or ReadRoots.around(path))
+    main, checker.units = parse_with_declared_units(path, checker.roots)
     return checker.run(main)
 
 
-def check_text(text: str, path: str = "<string>", lanes: int | None = None, registry: Registry | None = None, dialect: str | None = None) -> CheckedFile:
-    return _Checker(lanes, registry, dialect).run(parse_text(text, path))
+def check_text(text: str, path: str = "<string>", lanes: int | None = None, registry: Registry | None = None, dialect: str | None = None,
+               roots: ReadRoots | None = None) -> CheckedFile:
+    """``check_file`` of a text; its imports are read from ``roots`` (default: the project's root)."""
+    return _Checker(lanes, registry, dialect, roots or ReadRoots.of(project_root())).run(parse_text(text, path))
 
 
-def load_file(path: str | Path, lanes: int | None = None, registry: Registry | None = None, dialect: str | None = None) -> CheckedFile:
+def load_file(path: str | Path, lanes: int | None = None, registry: Registry | None = None, dialect: str | None = None,
+              roots: ReadRoots | None = None) -> CheckedFile:
     """``check_file`` that raises ``OscError`` when the file has errors (warnings pass)."""
-    checked = check_file(path, lanes, registry, dialect)
+    checked = check_file(path, lanes, registry, dialect, roots)
     checked.raise_for_errors()
     return checked
 
@@ -94,8 +101,23 @@ MAX_LANES = 6
 MAX_LANES_WHY = " (the simulated road is one straight highway of at most that many lanes)"
 
 
+def _reaches(start: str, goal: str, calls: dict[str, set[str]]) -> bool:
+    """Whether scenario ``start`` calls ``goal``, directly or through other scenarios."""
+    seen: set[str] = set()
+    frontier = list(calls.get(start, ()))
+    while frontier:
+        name = frontier.pop()
+        if name == goal:
+            return True
+        if name not in seen:
+            seen.add(name)
+            frontier.extend(calls.get(name, ()))
+    return False
+
+
 class _Checker:
-    def __init__(self, lanes: int | None, registry: Registry | None = None, dialect: str | None = None) -> None:
+    def __init__(self, lanes: int | None, registry: Registry | None = None, dialect: str | None = None, roots: ReadRoots | None = None) -> None:
+        self.roots = roots or ReadRoots.of(project_root())
         if registry is None:
             # imported here: the registry translates into the automaton's guards, and the
             # automaton imports the front end (a module-level import would be circular)
@@ -162,9 +184,12 @@ class _Checker:
                 self.diagnostics.extend(problems)
         is_action = lambda name: self.registry.action(name) is not None  # noqa: E731
         # a scenario another one of this file calls is checked (and run) as part of its callers
-        called = {name for s in main.scenarios for name in called_scenarios(callable_.get(s.name, s), callable_, is_action)}
+        calls = {name: called_scenarios(s, callable_, is_action) for name, s in callable_.items()}
+        called = {name for s in main.scenarios for name in calls.get(s.name, ())}
         for scenario in main.scenarios:
-            if scenario.name in called and scenario.name not in seen:
+            # a scenario that calls itself, directly or through others, is checked on its own, so that
+            # expand_calls reports the recursion at the call (it had been skipped as a callee: "no scenario")
+            if scenario.name in called and scenario.name not in seen and not _reaches(scenario.name, scenario.name, calls):
                 seen[scenario.name] = scenario
                 continue
             if scenario.name in seen:
@@ -177,6 +202,8 @@ class _Checker:
             seen[scenario.name] = scenario
             scenario, problems = expand_calls(callable_[scenario.name], callable_, is_action, lambda f: self._field_kind(self._aliased(f)) == "actor")
             self.diagnostics.extend(problems)
+            if any(RECURSION in problem.message for problem in problems):
+                continue  # the call left in place would only be reported again as an unknown action
             checked, space, lanes = self._scenario(scenario, globals_)
             scenarios.append(CheckedScenario(checked, space, lanes, self.registry, self.sources))
         self.diagnostics = list(dict.fromkeys(self.diagnostics))
@@ -199,8 +226,15 @@ class _Checker:
                 continue
             if str(target) in self.files:  # keyed by resolved path: parse_file was given ``target``
                 continue
-            if not target.is_file():
+            if not self.roots.allows(target):
+                # never opened, never shown: import "/proc/self/environ" had printed the environment's first line
+                self.error(item.location, f"the imported file {item.target!r} is outside the folders the tool reads ({self.roots.describe()})", ALLOW_READ_HINT)
+                continue
+            if not target.exists():
                 self.error(item.location, f"cannot find the imported file {item.target!r}", f"looked for {target}; paths are relative to the importing file")
+                continue
+            if (problem := regular_file_problem(target)) is not None:
+                self.error(item.location, f"cannot read the imported file {item.target!r}: {problem}", "import an .osc file")
                 continue
             try:
                 imported = parse_file(target, self.units)

@@ -45,6 +45,11 @@ class Diagnostic:
 
 
 def _read_quietly(path: str) -> str | None:
+    """The text of a regular file to show a line of, None otherwise (a FIFO is never opened)."""
+    from ..confinement import regular_file_problem
+
+    if regular_file_problem(path) is not None:
+        return None
     try:
         return Path(path).read_text(encoding="utf-8")
     except (OSError, UnicodeDecodeError):

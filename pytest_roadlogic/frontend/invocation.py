@@ -47,6 +47,9 @@ def _is_call(node, callable_: Mapping[str, model.Scenario], is_action: Callable[
     return isinstance(node, model.Invocation) and node.action in callable_ and not is_action(node.action)
 
 
+RECURSION = "calls itself"  # the words of the error for a scenario that contains itself
+
+
 def called_scenarios(scenario: model.Scenario, callable_: Mapping[str, model.Scenario], is_action: Callable[[str], bool]) -> set[str]:
     """The names of the user scenarios ``scenario``'s behavior calls directly."""
     return {node.action for behavior in scenario.behaviors for node in model.walk(behavior) if _is_call(node, callable_, is_action)}
@@ -87,7 +90,8 @@ def _expand(behavior, callable_, is_action, is_actor, expansion: Expansion, name
         return behavior
     callee = callable_[behavior.action]
     if behavior.action in stack or len(stack) > MAX_DEPTH:
-        expansion.error(behavior.location, f"scenario {behavior.action!r} calls itself (through {' -> '.join(stack)})", "a scenario cannot contain itself; remove the call")
+        cycle = (*(stack[stack.index(behavior.action):] if behavior.action in stack else stack), behavior.action)
+        expansion.error(behavior.location, f"scenario {behavior.action!r} {RECURSION} ({' -> '.join(cycle)})", "a scenario cannot contain itself; remove the call")
         return behavior
     if callee.behavior is None:
         expansion.error(behavior.location, f"scenario {behavior.action!r} has no do to call", "give it a do, or invoke an action")

@@ -18,7 +18,7 @@ from dataclasses import dataclass
 
 from . import library, model
 from .errors import Diagnostic, SourceLocation
-from .values import EvaluationError, Interval, describe, evaluate, names_in
+from .values import EvaluationError, Interval, describe, evaluate, names_in, possibly
 
 _BOUND_OPERATORS = ("==", "in", "<", "<=", ">", ">=")
 # a comparison seen from its other side: a < b is b > a
@@ -78,6 +78,14 @@ class ParameterSpace:
             return all(evaluate(relation.expression, env) is True for relation in self.relations)
         except EvaluationError:
             return False
+
+    def refutes(self, relation: model.Keep, values: dict[str, object] | None = None) -> bool:
+        """Whether ``relation`` fails for certain: at every value of the domains, ``values`` where given."""
+        return not possibly(relation.expression, self.environment(values))
+
+    def broken(self, values: dict[str, object]) -> model.Keep | None:
+        """The first relation that ``values`` (some or all of the parameters) break for certain."""
+        return next((relation for relation in self.relations if self.refutes(relation, values)), None)
 
     @property
     def free(self) -> tuple[ParameterDomain, ...]:
@@ -158,7 +166,15 @@ class _Resolver:
                 continue
             for atom in _conjuncts(constraint.expression):
                 self.apply_atom(atom, constraint)
-        return ParameterSpace({p.name: self.domain(p) for p in self.parameters}, tuple(self.relations))
+        space = ParameterSpace({p.name: self.domain(p) for p in self.parameters}, tuple(self.relations))
+        for relation in space.relations:
+            if space.refutes(relation):
+                # keep(a + b <= 20m) with a and b in [15..25]m: every sample had been filtered out
+                # (a Hypothesis traceback), and --values ran a case that breaks it as conformant
+                names = sorted({n.name for n in names_in(relation.expression)} & set(space.domains))
+                self.add_error(relation.location, "no values of the parameters' ranges meet this constraint",
+                               f"widen the ranges of {', '.join(names)} or the constraint" if names else "widen the constraint")
+        return space
 
     def domain(self, parameter: model.Field) -> ParameterDomain:
         name = parameter.name

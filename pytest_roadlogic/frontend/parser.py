@@ -22,11 +22,12 @@ from antlr4.error.ErrorListener import ErrorListener
 from antlr4.Token import Token
 from antlr4.tree.Tree import TerminalNode
 
+from ..confinement import regular_file_problem
 from . import model
 from .errors import Diagnostic, OscError, SourceLocation
 from .generated.OpenScenario2Parser import OpenScenario2Parser as P
 from .lexer import DEDENT, INDENT, IndentingLexer
-from .limits import MAX_MAGNITUDE, check_limits
+from .limits import MAX_BYTES, MAX_MAGNITUDE, check_limits
 from .standard_library import standard_library
 from .units import SI_UNIT, UNITS, split_physical_literal
 
@@ -116,8 +117,17 @@ def _parse(text: str, path: str, units: Mapping[str, tuple[str | None, float]] |
 
 def parse_file(path: str | Path, units: Mapping[str, tuple[str | None, float]] | None = None) -> model.OscFile:
     path = Path(path)
+    problem = regular_file_problem(path)
+    if problem is not None:
+        # asked before opening: a FIFO named x.osc made `roadlogic check` wait forever
+        raise OscError([Diagnostic(SourceLocation(str(path), 1, 1), f"cannot read the file: {problem}", "give an .osc file")], "") from None
     try:
-        text = path.read_text(encoding="utf-8")
+        with open(path, "rb") as stream:
+            data = stream.read(4 * MAX_BYTES + 1)  # a character is at most 4 bytes: /dev/zero-sized files stop here
+        if len(data) > 4 * MAX_BYTES:
+            raise OscError([Diagnostic(SourceLocation(str(path), 1, 1), f"the file has more than {4 * MAX_BYTES:,} bytes; the front end reads at most {MAX_BYTES:,} characters",
+                                       "split it into several files")], "")
+        text = data.decode("utf-8").replace("\r\n", "\n").replace("\r", "\n")  # as text mode reads it
     except UnicodeDecodeError as exc:
         data = exc.object
         line = data.count(b"\n", 0, exc.start) + 1

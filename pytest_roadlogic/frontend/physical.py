@@ -21,6 +21,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from ..confinement import ReadRoots, regular_file_problem
 from . import model
 from .errors import Diagnostic, OscError
 from .parser import parse_file
@@ -116,16 +117,17 @@ class _AnyUnit(dict):
         return None, 1.0
 
 
-def parse_with_declared_units(path: str | Path) -> tuple[model.OscFile, dict[str, tuple[str | None, float]]]:
+def parse_with_declared_units(path: str | Path, roots: ReadRoots | None = None) -> tuple[model.OscFile, dict[str, tuple[str | None, float]]]:
     """Parse ``path``; when it uses units that it or its imports declare, with those units.
-    Returns the file and the unit table its imports are to be parsed with."""
+    Returns the file and the unit table its imports are to be parsed with. Imports outside
+    ``roots`` are not read (the checker reports them)."""
     try:
         return parse_file(path), UNITS
     except OscError as error:
         if not any(d.message.startswith(_UNRESOLVED_UNIT) for d in error.diagnostics):
             raise
         original = error
-    files = _closure(Path(path))
+    files = _closure(Path(path), roots or ReadRoots.around(path))
     physics = declared_physics(files)
     try:
         if not physics.units:
@@ -144,7 +146,7 @@ def parse_with_declared_units(path: str | Path) -> tuple[model.OscFile, dict[str
 _UNRESOLVED_UNIT = ("unknown unit", "not supported: unit")
 
 
-def _closure(path: Path) -> list[model.OscFile]:
+def _closure(path: Path, roots: ReadRoots) -> list[model.OscFile]:
     """The file and everything it imports, parsed tolerantly (files that do not parse are left out:
     the checker reports them)."""
     files: list[model.OscFile] = []
@@ -152,7 +154,7 @@ def _closure(path: Path) -> list[model.OscFile]:
     stack = [path.resolve()]
     while stack:
         current = stack.pop()
-        if current in seen or not current.is_file():
+        if current in seen or not roots.allows(current) or regular_file_problem(current) is not None:
             continue
         seen.add(current)
         try:

@@ -153,6 +153,30 @@ def _binary(expression: model.Binary, env: Mapping[str, object]) -> Value:
     raise EvaluationError(expression.location, f"unknown operator {op!r}")
 
 
+def possibly(expression: model.Expression, env: Mapping[str, object]) -> bool:
+    """Whether ``expression`` can hold for some member of the intervals ``env`` gives; True when
+    unsure. ``evaluate`` asks whether a comparison holds for every member; this is its dual, so
+    that a constraint no member meets (``keep(a + b <= 20m)`` with a, b in [15..25]m) is found at
+    once. Sound for refuting only: False means it never holds."""
+    if isinstance(expression, model.Binary) and expression.operator in ("and", "or"):
+        left, right = possibly(expression.left, env), possibly(expression.right, env)
+        return (left and right) if expression.operator == "and" else (left or right)
+    if not (isinstance(expression, model.Binary) and expression.operator in ("in", "==", "!=", "<", "<=", ">", ">=")):
+        return True
+    try:
+        left, right = evaluate(expression.left, env), evaluate(expression.right, env)
+    except EvaluationError:
+        return True
+    if not (isinstance(left, Interval) and isinstance(right, Interval)) or left.dimension != right.dimension:
+        return True
+    op = expression.operator
+    if op in ("in", "=="):
+        return left.low <= right.high and right.low <= left.high
+    if op == "!=":
+        return not (left.is_point and right.is_point and left.low == right.low)
+    return {"<": left.low < right.high, "<=": left.low <= right.high, ">": left.high > right.low, ">=": left.high >= right.low}[op]
+
+
 def _symbol(value: object) -> object:
     if isinstance(value, model.Name):
         return value.name
