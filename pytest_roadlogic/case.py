@@ -15,8 +15,8 @@ from dataclasses import asdict, dataclass, field, fields
 from pathlib import Path
 from typing import Any
 
-from .confinement import ReadRoots, project_root
-from .settings import BASE, CONTINUOUS, DEFAULT_SIMULATOR, GRID, REFINED, STANDARD_DIALECT, RunSettings
+from .confinement import ReadRoots, project_root, regular_file_problem
+from .settings import BASE, CONTINUOUS, DEFAULT_SIMULATOR, GRID, OPTIONS_BY_NAME, REFINED, STANDARD_DIALECT, OptionError, RunSettings
 
 
 class CaseFileError(ValueError):
@@ -83,7 +83,7 @@ class Case:
                                 "relative to the rootdir (as pytest wrote it)")
         candidates = [path] + ([folder / path for folder in Path(case_file).resolve().parents] if case_file is not None else [])
         for candidate in candidates:
-            if roots.allows(candidate) and candidate.exists():
+            if roots.allows(candidate) and regular_file_problem(candidate) is None:
                 return candidate
         raise CaseFileError(f"the scenario {self.path!r} is not in the folders the tool reads ({roots.describe()}); run the replay from the project's "
                             "folder, or name the folder that holds it with --allow-read DIR")
@@ -109,11 +109,14 @@ class Case:
             known = {f.name for f in fields(cls)}
             if not isinstance(data, dict) or not {"path", "scenario"} <= set(data) or set(data) - known:
                 raise TypeError(f"expected the keys {', '.join(sorted(known))}")
+            _check_kinds(data)
             return cls(**data)
         except OSError as error:
             raise CaseFileError(f"cannot read the case file ({error.strerror})") from None
-        except (json.JSONDecodeError, TypeError, UnicodeDecodeError) as error:
+        except (json.JSONDecodeError, TypeError, UnicodeDecodeError, RecursionError) as error:
             raise CaseFileError(f"not a case file written by pytest-roadlogic ({error})") from None
+        except OptionError as error:
+            raise CaseFileError(f"a value the tool cannot run with: {error}") from None
 
     def command(self, case_file: str | Path | None = None) -> str:
         """The shell command that replays this case: from its case file when there is one."""
@@ -132,6 +135,36 @@ class Case:
         for vehicle, name in sorted(self.drivers.items()):
             parts += ["--driver", f"{vehicle}={name}"]
         return shlex.join(parts)
+
+
+# the case's fields that are run settings, by the option (settings.OPTIONS) that reads and checks them
+_SETTING_OPTIONS = {"seed": "seed", "strategy": "strategy", "lanes": "lanes", "dialect": "dialect", "encoding": "encoding", "max_horizon": "horizon",
+                    "planning_time_limit": "plan-timeout", "simulation_time_limit": "sim-timeout", "max_tries": "tries", "simulator": "simulator"}
+
+
+def _check_kinds(data: dict[str, Any]) -> None:
+    """Raise ``TypeError`` or ``OptionError`` for a field of a case file that is not what the tool
+    writes there: a case file is data from anywhere, checked before anything runs (a non-numeric
+    seed had been a traceback under pytest)."""
+    for name in ("path", "scenario"):
+        if not isinstance(data[name], str):
+            raise TypeError(f"{name} must be a string")
+    for name, option in _SETTING_OPTIONS.items():
+        value = data.get(name)
+        if value is None:
+            continue
+        if isinstance(value, bool) or not isinstance(value, (str, int, float)):
+            raise TypeError(f"{name} must be a {'string' if name in ('strategy', 'dialect', 'encoding', 'simulator') else 'number'}")
+        OPTIONS_BY_NAME[option].parse(str(value))
+    if not isinstance(data.get("instance", 0), int) or isinstance(data.get("instance", 0), bool) or data.get("instance", 0) < 0:
+        raise TypeError("instance must be a whole number from 0 up")
+    values = data.get("values", {})
+    if not isinstance(values, dict) or not all(isinstance(v, (str, int, float, bool)) for v in values.values()):
+        raise TypeError("values must map parameter names to numbers, names or booleans")
+    for name in ("drivers", "versions"):
+        given = data.get(name, {})
+        if not isinstance(given, dict) or not all(isinstance(k, str) and isinstance(v, str) for k, v in given.items()):
+            raise TypeError(f"{name} must map names to strings")
 
 
 # what a replay depends on besides the case: a different solver or motion planner may plan or drive otherwise

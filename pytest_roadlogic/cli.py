@@ -19,8 +19,10 @@ Exit codes of ``replay``: as ``run``.
 from __future__ import annotations
 
 import argparse
+import contextlib
 import json
 import os
+import shlex
 import sys
 import time
 from pathlib import Path
@@ -92,7 +94,8 @@ def main(argv: list[str] | None = None) -> int:
     args.argv = list(sys.argv[1:] if argv is None else argv)
     command = {"run": _run, "check": _check, "automaton": _automaton, "plan": _plan, "replay": _replay, "bench": _bench}[args.command]
     try:
-        return command(args)
+        with contextlib.ExitStack() as args.held:  # what a command holds while it runs (its --out folder's claim)
+            return command(args)
     except KeyboardInterrupt:
         # Ctrl-C: a line, not the traceback of wherever the solver or the simulation was
         print(f"roadlogic {args.command}: interrupted", file=sys.stderr)
@@ -127,7 +130,7 @@ def _run_flags(command: argparse.ArgumentParser, names: tuple[str, ...], prefix:
     for name in names:
         option = OPTIONS_BY_NAME[name]
         command.add_argument(f"--{name}", type=_flag(option.parse), default=None, dest=f"setting_{name.replace('-', '_')}", metavar=name.upper().replace('-', '_'),
-                             help=f"{prefix}{option.help} (default {option.default})")
+                             help=f"{prefix}{option.help} (default {option.default_text})")
 
 
 def _run_settings(args: argparse.Namespace, **extra) -> RunSettings:
@@ -149,14 +152,31 @@ def _driver(text: str) -> tuple[str, str]:
     return vehicle, name
 
 
-def _driver_factory(names: dict[str, str], scenario_file: Path):
-    """The drivers ``names`` gives, imported as pytest would (from the folders above the scenario),
-    or ``DriverLoadError``; None when there are none (the simulator's own drive)."""
+def _driver_factory(names: dict[str, str], scenario_file: Path, roots=None):
+    """The drivers ``names`` gives, or ``DriverLoadError``; None when there are none (the
+    simulator's own drive). ``names`` come from the command line only (``--driver``), never from a
+    case file; they are imported as pytest would, from the working folder and the folders above
+    the scenario inside the project (``roots``)."""
     from .simulation.named_drivers import drivers_from_names
 
     if not names:
         return None
-    return drivers_from_names(names, [Path.cwd(), *scenario_file.resolve().parents])
+    search = [Path.cwd(), *(folder for folder in scenario_file.resolve().parents if roots is None or roots.allows(folder))]
+    return drivers_from_names(names, search)
+
+
+def _drivers_of_case(case, given: dict[str, str]) -> dict[str, str]:
+    """The drivers a case file's replay uses: those the command line gives, which must be the ones
+    the case records. A case file is data: the module names in it are never imported on its word
+    (one named os:abort or sys:exit had run); the user names them with --driver after reading them."""
+    from .simulation.named_drivers import DriverLoadError
+
+    if given == case.drivers:
+        return given
+    recorded = ", ".join(f"{vehicle} by {name!r}" for vehicle, name in sorted(case.drivers.items())) or "the simulator's own only"
+    flags = ", ".join(f"{vehicle} by {name!r}" for vehicle, name in sorted(given.items())) or "none"
+    raise DriverLoadError(f"the case was found with the drivers {recorded}; the command line gives {flags}. A case file's module names are not "
+                          "imported on its word: read them, then give each as --driver VEHICLE=MODULE:CLASS")
 
 
 def _values(text: str) -> dict:
@@ -331,7 +351,7 @@ def _reporting_input_errors(args: argparse.Namespace, action):
         print(f"{args.file}: error: {error}", file=sys.stderr)
         return EXIT_INPUT
     except DriverLoadError as error:
-        replay_hint = f" (pytest --roadlogic-replay {args.file})" if str(args.file).endswith(".json") else ""
+        replay_hint = f" (pytest --roadlogic-replay {shlex.quote(str(args.file))})" if str(args.file).endswith(".json") else ""
         print(f"{args.file}: error: {error}; other drivers would not reproduce the case\n"
               f"    hint: make the module importable from here, or run it with pytest from the session whose conftest.py gives it{replay_hint}", file=sys.stderr)
         return EXIT_INPUT
@@ -410,17 +430,22 @@ def _replay(args: argparse.Namespace) -> int:
 
     def run_again():
         if args.case.suffix == ".json":
+            from .confinement import ReadRoots, project_root
+
+            roots = ReadRoots.of(project_root(), extra=args.allow_read)  # not the case file's folder: it may be anywhere
             case = Case.load(args.case)
-            case = replaced(case, path=str(case.scenario_file(args.case)))
+            case = replaced(case, path=str(case.scenario_file(args.case, roots)))
+            _drivers_of_case(case, dict(args.driver))
             for difference in case.version_differences():
                 print(f"{args.case}: warning: written with {difference}; the replay may plan or drive otherwise", file=sys.stderr)
         else:
             from .frontend import load_file
 
-            name = load_file(args.case, args.lanes, dialect=args.setting_dialect).scenario_to_run(args.scenario).name
+            roots = _roots(args, args.case)
+            name = load_file(args.case, args.lanes, dialect=args.setting_dialect, roots=roots).scenario_to_run(args.scenario).name
             identity = {"values": args.values or {}} if args.strategy == REFINED else {"instance": args.instance}
             case = Case.of(args.case, name, _run_settings(args), strategy=args.strategy, drivers=dict(args.driver), **identity)
-        return replay(case, drivers=_driver_factory(case.drivers, Path(case.path)))
+        return replay(case, drivers=_driver_factory(case.drivers, Path(case.path), roots), roots=roots)
 
     args.file = args.case
     if _out_refused(args):
@@ -431,11 +456,12 @@ def _replay(args: argparse.Namespace) -> int:
 
 def _out_refused(args: argparse.Namespace) -> bool:
     """``--out`` names a folder that a run may not replace: say so before running (True)."""
-    from .artifacts.files import NotAnArtifactFolder, check_replaceable
+    from .artifacts.files import NotAnArtifactFolder, check_replaceable, claimed
     from .artifacts.writer import ARTIFACT_NAMES
 
     try:
         check_replaceable(args.out, ARTIFACT_NAMES)
+        args.held.enter_context(claimed(args.out))  # held until the command ends: a second run into it is refused
     except NotAnArtifactFolder as error:
         print(f"roadlogic {args.command}: --out: {error}", file=sys.stderr)
         return True

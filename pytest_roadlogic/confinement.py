@@ -18,6 +18,7 @@ Nothing heavy is imported here: the plugin loads it in every session.
 
 from __future__ import annotations
 
+import errno
 import os
 import re
 import stat
@@ -70,7 +71,10 @@ class ReadRoots:
 
     def allows(self, path: str | Path) -> bool:
         """Whether ``path`` (followed through symbolic links) lies under one of the roots."""
-        target = Path(path).resolve()
+        try:
+            target = Path(path).resolve()
+        except (OSError, ValueError, RuntimeError):  # a name too long, a NUL byte, a loop of links
+            return False
         return any(target == root or root in target.parents for root in self.folders)
 
     def check(self, path: str | Path, what: str) -> Path:
@@ -86,13 +90,18 @@ class ReadRoots:
 ALLOW_READ_HINT = "copy the file into the project, or name its folder with --allow-read DIR (roadlogic) or --roadlogic-allow-read DIR (pytest)"
 
 
+MISSING = os.strerror(errno.ENOENT)  # "No such file or directory", as the system says it
+
+
 def regular_file_problem(path: str | Path) -> str | None:
     """Why ``path`` is not a file to read (missing, a folder, a FIFO, a device), None when it is one.
     Asked before opening: reading a FIFO named ``x.osc`` waited forever."""
     try:
         mode = os.stat(path).st_mode
-    except OSError as error:
-        return error.strerror or "cannot be read"
+    except FileNotFoundError:
+        return MISSING
+    except (OSError, ValueError) as error:  # a name too long, a NUL byte
+        return getattr(error, "strerror", None) or "cannot be read"
     if stat.S_ISREG(mode):
         return None
     kind = "a folder" if stat.S_ISDIR(mode) else "a FIFO" if stat.S_ISFIFO(mode) else "a socket" if stat.S_ISSOCK(mode) else "a device"
@@ -104,8 +113,10 @@ _UNSAFE = re.compile(r"[^A-Za-z0-9_.-]+")
 
 def safe_name(text: str, fallback: str = "scenario") -> str:
     """``text`` as one file name that stays in its folder: runs of anything but letters, digits,
-    ``_``, ``.`` and ``-`` become ``_``, leading dots go (no ``..``, no hidden file), at most 100
+    ``_``, ``.`` and ``-`` become ``_``, and so do runs of dots (no ``..``); no leading dot (no
+    hidden file) or ``_``; at most 100
     characters; ``fallback`` when nothing is left. The one place a name from a scenario or a test
     id becomes part of a path."""
-    name = _UNSAFE.sub("_", text).strip("_").lstrip(".")
+    name = re.sub(r"\.{2,}", "_", _UNSAFE.sub("_", text))
+    name = re.sub(r"_{2,}", "_", name).strip("_").lstrip(".").strip("_")
     return name[:100] or fallback

@@ -48,14 +48,14 @@ def pytest_addhooks(pluginmanager) -> None:
 def pytest_addoption(parser: pytest.Parser) -> None:
     group = parser.getgroup("roadlogic", "scenario-based testing with OpenSCENARIO DSL files")
 
-    def add(name: str, help: str, default) -> None:
+    def add(name: str, help: str, default, shown: str = "") -> None:
         ini = f"roadlogic_{name.replace('-', '_')}"
-        shown = "each scenario's own" if default is None else default
+        shown = shown or ("none" if default in (None, "") else default)
         group.addoption(f"--roadlogic-{name}", default=None, help=f"{help} (ini: {ini}; default {shown})")
         parser.addini(ini, help, default="" if default is None else str(default))
 
     for option in OPTIONS:
-        add(option.name, option.help, option.default)
+        add(option.name, option.help, option.default, option.default_text)
     for name, help, default in EXTRA_OPTIONS:
         add(name, help, default)
 
@@ -64,6 +64,12 @@ def pytest_configure(config: pytest.Config) -> None:
     config.addinivalue_line("markers", "roadlogic: a scenario collected from an .osc file")
     config.addinivalue_line("markers", "slow: a long scenario or suite; deselect with -m 'not slow'")
     config.stash[SETTINGS] = _settings(config)  # a bad option value stops the session here, once
+    from .artifacts.files import NotAnArtifactFolder, check_writable
+
+    try:
+        check_writable(Path(config.rootpath) / _text(config, "artifacts"))
+    except NotAnArtifactFolder as error:
+        raise pytest.UsageError(f"roadlogic: --roadlogic-artifacts (ini roadlogic_artifacts): {error}") from None
     replay = _text(config, "replay")
     if replay:
         from .case import Case, CaseFileError
@@ -242,9 +248,14 @@ class ScenarioItem(pytest.Item):
     def _replay(self, runner, case) -> None:
         """The one case of a case file, when it is this item's (other items are skipped), with this
         session's drivers: a run with other drivers than the case's is refused, not reported."""
-        if (Path(self.config.rootpath) / case.path).resolve() != self.path.resolve() or case.scenario != self.scenario.name:
+        from .sampling import UnknownParameter
+
+        if not _replays(self, case):
             pytest.skip(f"--roadlogic-replay runs {case.path}::{case.scenario} only")
-        result = runner.run_case(case)
+        try:
+            result = runner.run_case(case)
+        except UnknownParameter as error:  # a case file's values are data: a located message, not a traceback
+            pytest.fail(f"--roadlogic-replay {_text(self.config, 'replay')}: {error}", pytrace=False)
         if result.run is not None and self.drivers.names != case.drivers:
             pytest.fail(f"--roadlogic-replay: the case was found with the drivers {_drivers_text(case.drivers)}, "
                         f"this session drives with {_drivers_text(self.drivers.names)}; "
@@ -320,6 +331,25 @@ class ScenarioItem(pytest.Item):
 
     def reportinfo(self):
         return self.path, self.scenario.scenario.location.line - 1, f"scenario {self.scenario.name}"
+
+
+def _replays(item: "ScenarioItem", case) -> bool:
+    """Whether ``case`` is a case of ``item``: its file (relative to the rootdir) and its scenario."""
+    return (Path(item.config.rootpath) / case.path).resolve() == item.path.resolve() and case.scenario == item.scenario.name
+
+
+def pytest_collection_modifyitems(session: pytest.Session, config: pytest.Config, items: list) -> None:
+    """With ``--roadlogic-replay``, a case that no collected item runs is a usage error: it had
+    skipped every item and passed (exit 0)."""
+    replay = _text(config, "replay")
+    if not replay:
+        return
+    from .case import Case
+
+    case = Case.load(replay)
+    if not any(isinstance(item, ScenarioItem) and _replays(item, case) for item in items):
+        raise pytest.UsageError(f"roadlogic: --roadlogic-replay {replay}: no collected scenario is {case.path}::{case.scenario}; "
+                                f"give pytest the folder or file that holds it (paths are relative to the rootdir {config.rootpath})")
 
 
 def _hypothesis_statistics(item: pytest.Item):

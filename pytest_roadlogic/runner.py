@@ -289,11 +289,12 @@ class Runner:
         )
 
 
-def replay(case: Case, drivers: DriverFactory | None = None, simulator: Simulator | None = None) -> CaseResult:
-    """Run a recorded case again: the same plan and the same trace (with the same drivers)."""
+def replay(case: Case, drivers: DriverFactory | None = None, simulator: Simulator | None = None, roots=None) -> CaseResult:
+    """Run a recorded case again: the same plan and the same trace (with the same drivers).
+    ``roots`` (``confinement.ReadRoots``): where the scenario's imports may be read from."""
     from .frontend import load_file
 
-    scenario = load_file(case.path, case.lanes, dialect=case.dialect).scenario(case.scenario)
+    scenario = load_file(case.path, case.lanes, dialect=case.dialect, roots=roots).scenario(case.scenario)
     return Runner(scenario, case.settings(), drivers, simulator).run_case(case)
 
 

@@ -59,11 +59,17 @@ def seconds(text: str) -> float:
     return value
 
 
+MAX_SEED = 2**32 - 1  # clingo's --seed takes 0..2^32-1; past it a RuntimeError traceback came from the solver
+
+
 def seed(text: str) -> int:
     try:
-        return int(str(text).strip())
+        number = int(str(text).strip())
     except ValueError:
-        raise OptionError(f"{text!r} is not a seed; give a whole number, e.g. 1") from None
+        number = -1
+    if not 0 <= number <= MAX_SEED:
+        raise OptionError(f"{text!r} is not a seed; give a whole number from 0 to {MAX_SEED}, e.g. 1")
+    return number
 
 
 def or_none(parse: Callable[[str], Any]) -> Callable[[str | None], Any]:
@@ -79,7 +85,20 @@ def or_none(parse: Callable[[str], Any]) -> Callable[[str | None], Any]:
 
 lane_count = whole_number(1, "a lane count")
 lanes_or_none = or_none(lane_count)  # a lane count, or each scenario's own road
-horizon_or_none = or_none(whole_number(1, "a planning horizon"))  # a horizon limit, or the encoding's own
+# an hour of scenario time in steps of 1 s: far past a driving scenario (the realistic suite's
+# longest is a minute), and a bound on what planning grounds (--horizon 2000000 with a 1e6 s
+# duration had grown to 8.8 GB)
+MAX_HORIZON = 3600
+
+
+def horizon(text: str) -> int:
+    number = whole_number(1, "a planning horizon")(text)
+    if number > MAX_HORIZON:
+        raise OptionError(f"{text!r} is past the longest planning horizon; give a whole number of steps from 1 to {MAX_HORIZON}")
+    return number
+
+
+horizon_or_none = or_none(horizon)  # a horizon limit, or the encoding's own
 count = whole_number(0, "an instance count")
 
 
@@ -116,6 +135,11 @@ class Option:
     parse: Callable[[str], Any]
     default: Any
     help: str
+    shown: str = ""  # how help texts name the default, when it is not a value (None: decided elsewhere)
+
+    @property
+    def default_text(self) -> str:
+        return self.shown or str(self.default)
 
     @property
     def ini(self) -> str:
@@ -129,12 +153,13 @@ OPTIONS = (
     Option("no-plan", "no_plan", no_plan_policy, FAIL,
            "a sample at which no plan exists: fail the item (the scenario's ranges hold values no concrete scenario meets), or discard it like assume() (refined)"),
     Option("tries", "tries", whole_number(1, "a number of tries"), 5, "plans to try per case when the monitor rejects the simulation"),
-    Option("lanes", "lanes", lanes_or_none, None, "lanes of the road for every scenario (default: each scenario's own)"),
+    Option("lanes", "lanes", lanes_or_none, None, "lanes of the road for every scenario", "each scenario's own"),
     Option("dialect", "dialect", dialect, STANDARD_DIALECT,
            "how files are read: standard (ASAM), or carla (CARLA's scenario runner: lanes numbered from the left, speed(v) a target)"),
     Option("encoding", "encoding", encoding, CONTINUOUS,
            "continuous: real-valued speeds and positions (asp/continuous.lp); grid: the paper's integer grid with a run-up from standstill"),
-    Option("horizon", "max_horizon", horizon_or_none, None, f"planning horizon limit in steps of 1 s (default: {CONTINUOUS_HORIZON} continuous, {DEFAULT_HORIZON} grid)"),
+    Option("horizon", "max_horizon", horizon_or_none, None, f"planning horizon limit in steps of 1 s, at most {MAX_HORIZON}",
+           f"the encoding's: {CONTINUOUS_HORIZON} continuous, {DEFAULT_HORIZON} grid"),
     Option("plan-timeout", "planning_time_limit", seconds, DEFAULT_PLAN_TIMEOUT, "seconds one planning may take"),
     Option("sim-timeout", "simulation_time_limit", seconds, DEFAULT_SIM_TIMEOUT, "seconds (wall clock) one simulation may take"),
     Option("simulator", "simulator", name, DEFAULT_SIMULATOR, "the simulation backend (frenetix, or one a package registers)"),

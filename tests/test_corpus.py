@@ -1,7 +1,7 @@
 """A corpus of realistic .osc files: every file checks, and together they cover tier 1.
 
 The files in tests/corpus are written from the examples in the standard's text and from
-docs/os2-subset.md. Coverage is asserted, not hoped for: each tier-1 construct is matched by a
+docs/language.md. Coverage is asserted, not hoped for: each tier-1 construct is matched by a
 pattern over the corpus text, so deleting the only file that uses a construct fails here.
 """
 

@@ -15,8 +15,14 @@ limits (a 6-step horizon, 1 s).
 
 from __future__ import annotations
 
+import contextlib
+import io
+import json
+import os
 import resource
+import tempfile
 import time
+from pathlib import Path
 
 from hypothesis import HealthCheck, event, example, given, settings
 from hypothesis import strategies as st
@@ -159,3 +165,75 @@ def test_any_generated_or_mutated_scenario_is_planned_or_refused_with_the_projec
     event(through_the_pipeline(text))  # any other exception fails the test with this input
     assert time.perf_counter() - started < SECONDS_PER_INPUT
     assert (resource.getrusage(resource.RUSAGE_SELF).ru_maxrss - peak) / 1024 < MEGABYTES_PER_INPUT
+
+
+# ------------------------------------------------------------------ issue 38: hostile paths, names and case files
+
+HOSTILE_PATHS = ["/etc/passwd", "/proc/self/environ", "../../../../etc/shadow", "..", ".", "", "/dev/zero", "a/../../outside.osc",
+                 "~/x.osc", "%2e%2e/outside.osc", "lib.osc/../../outside.osc", "link.osc", "fifo.osc", "sub", "inside.osc", "x" * 300]
+HOSTILE_NAMES = ["|../../../x|", "|/etc/passwd|", "|..|", "|a b|", "|$(touch P)|", "|x\\y|", "|.hidden|", "plain"]
+SECRET = "TOKEN=must-never-be-printed"
+
+
+def _hostile_project(folder: Path) -> Path:
+    """A project beside a secret file, with a link to the secret, a FIFO and a file it may import."""
+    (folder / "outside.osc").write_text(SECRET + "\n")
+    root = folder / "p"
+    (root / "sub").mkdir(parents=True)
+    (root / "pyproject.toml").write_text("")
+    (root / "inside.osc").write_text("enum colour: [red, blue]\n")
+    (root / "link.osc").symlink_to(folder / "outside.osc")
+    os.mkfifo(root / "fifo.osc")
+    return root
+
+
+@settings(max_examples=300, deadline=None, derandomize=True, database=None, suppress_health_check=list(HealthCheck))
+@given(st.lists(st.sampled_from(HOSTILE_PATHS), min_size=1, max_size=3), st.sampled_from(HOSTILE_NAMES))
+def test_hostile_imports_and_scenario_names_read_nothing_outside_and_write_nothing_outside(targets, name):
+    from pytest_roadlogic import cli
+
+    with tempfile.TemporaryDirectory() as folder:
+        root = _hostile_project(Path(folder))
+        imports = "".join(f'import "{target}"\n' for target in targets)
+        (root / "sub" / "a.osc").write_text(f"{imports}scenario {name}:\n    v1: car\n    do v1.drive(duration: 3s)\n")
+        before = {p for p in Path(folder).rglob("*")}
+        with _working_folder(root / "sub"), contextlib.redirect_stdout(io.StringIO()) as out, contextlib.redirect_stderr(io.StringIO()) as err:
+            code = cli.main(["automaton", "a.osc"])
+        said = out.getvalue() + err.getvalue()
+        assert SECRET not in said and "root:" not in said
+        assert code in (0, 2), said
+        written = {p for p in Path(folder).rglob("*")} - before
+        assert all(p.parent == root / "sub" and p.suffix in (".dot", ".png") for p in written), written
+
+
+@settings(max_examples=300, deadline=None, derandomize=True, database=None, suppress_health_check=list(HealthCheck))
+@given(st.dictionaries(st.sampled_from(["path", "scenario", "seed", "values", "drivers", "strategy", "instance", "max_horizon", "simulator", "encoding", "lanes"]),
+                       st.one_of(st.sampled_from(HOSTILE_PATHS), st.integers(-2**70, 2**70), st.floats(allow_nan=True), st.none(), st.booleans(),
+                                 st.dictionaries(st.text(max_size=5), st.one_of(st.text(max_size=5), st.integers(), st.lists(st.integers(), max_size=2)), max_size=2),
+                                 st.lists(st.integers(), max_size=2)),
+                       min_size=0, max_size=6))
+def test_a_crafted_case_file_is_refused_or_leads_only_inside_the_project(fields):
+    from pytest_roadlogic.case import Case, CaseFileError
+    from pytest_roadlogic.confinement import ReadRoots
+
+    with tempfile.TemporaryDirectory() as folder:
+        root = _hostile_project(Path(folder))
+        case_file = Path(folder) / "case.json"
+        case_file.write_text(json.dumps(fields))
+        with _working_folder(root):
+            try:
+                case = Case.load(case_file)
+                found = case.scenario_file(case_file, ReadRoots.of(root))
+            except CaseFileError:
+                return
+            assert ReadRoots.of(root).allows(found), found
+
+
+@contextlib.contextmanager
+def _working_folder(folder: Path):
+    previous = Path.cwd()
+    os.chdir(folder)
+    try:
+        yield
+    finally:
+        os.chdir(previous)

@@ -101,7 +101,7 @@ def test_the_driver_hook_drives_the_vehicle_under_test_and_a_bad_one_fails_with_
     artifacts = pytester.path / "roadlogic-artifacts" / "overtake.osc_overtake"
     for name in ("plan.json", "trace.csv", "scenario.xml", "trajectories.png", "simulation.gif", "case.json"):
         assert (artifacts / name).is_file(), name
-    assert f"pytest 'overtake.osc::overtake' --roadlogic-replay {artifacts / 'case.json'}" in report
+    assert f"pytest overtake.osc::overtake --roadlogic-replay {artifacts / 'case.json'}" in report
 
     assert "closest at t =" in report, "the monitor says when the run came closest"
 
@@ -123,8 +123,13 @@ def test_the_driver_hook_drives_the_vehicle_under_test_and_a_bad_one_fails_with_
     case = json.loads((artifacts / "case.json").read_text())
     assert case["path"] == "overtake.osc" and case["drivers"] == {"v1": "tests.drivers:NeverChangesLane"}, case
     assert "--driver v1=tests.drivers:NeverChangesLane" in report
-    cli = subprocess.run([sys.executable, "-m", "pytest_roadlogic.cli", "replay", str(artifacts / "case.json"), "--out", str(pytester.path / "cli")],
-                         capture_output=True, text=True, cwd=ROOT)
+    # issue 38: the drivers come from the command line, never from the case file's word; the scenario
+    # is read inside the project (the pytester folder, named with --allow-read from this checkout)
+    refused = subprocess.run([sys.executable, "-m", "pytest_roadlogic.cli", "replay", str(artifacts / "case.json"), "--out", str(pytester.path / "cli"),
+                              "--allow-read", str(pytester.path)], capture_output=True, text=True, cwd=ROOT)
+    assert refused.returncode == 2 and "not imported on its word" in refused.stderr, refused.stderr
+    cli = subprocess.run([sys.executable, "-m", "pytest_roadlogic.cli", "replay", str(artifacts / "case.json"), "--out", str(pytester.path / "cli"),
+                          "--allow-read", str(pytester.path), "--driver", "v1=tests.drivers:NeverChangesLane"], capture_output=True, text=True, cwd=ROOT)
     assert cli.returncode == 1, cli.stdout + cli.stderr
     assert (pytester.path / "cli" / "trace.csv").read_text() == (artifacts / "trace.csv").read_text()
 
@@ -148,14 +153,15 @@ def test_pytest_html_shows_a_failing_scenarios_plot_animation_and_replay_command
     assert "--roadlogic-replay" in report and "roadlogic replay" in report, "the replay commands are shown"
 
 
-def test_a_replay_that_cannot_build_the_cases_drivers_says_so_and_runs_nothing(tmp_path, capsys):
+def test_a_replay_that_cannot_build_the_cases_drivers_says_so_and_runs_nothing(tmp_path, capsys, monkeypatch):
     from pytest_roadlogic.case import Case
     from pytest_roadlogic.cli import main
 
-    case = Case(path=str(SCENARIOS / "follow.osc"), scenario="follow", values={"start_gap": 20.0, "end_gap": 20.0, "lead_speed": 10.0},
+    case = Case(path="scenarios/follow.osc", scenario="follow", values={"start_gap": 20.0, "end_gap": 20.0, "lead_speed": 10.0},
                 drivers={"tail": "nowhere.to.be.found:Planner"})
     case.save(tmp_path / "case.json")
-    assert main(["replay", str(tmp_path / "case.json"), "--out", str(tmp_path / "out")]) == 2
+    monkeypatch.chdir(ROOT)
+    assert main(["replay", str(tmp_path / "case.json"), "--out", str(tmp_path / "out"), "--driver", "tail=nowhere.to.be.found:Planner"]) == 2
     said = capsys.readouterr().err
     assert "error: the driver of tail, nowhere.to.be.found:Planner, does not load here (ModuleNotFoundError" in said
     assert not (tmp_path / "out").exists()

@@ -51,7 +51,9 @@ def replaced_directory(directory: Path, artifact: re.Pattern) -> Iterator[Path]:
     directory = Path(directory)
     check_replaceable(directory, artifact)
     directory.parent.mkdir(parents=True, exist_ok=True)
-    staging = Path(tempfile.mkdtemp(prefix=f".{directory.name}.", suffix=".partial", dir=directory.parent))
+    remove_stale(directory)
+    staging = Path(tempfile.mkdtemp(prefix=f".{directory.name}.{os.getpid()}.", suffix=".partial", dir=directory.parent))
+    staging.chmod(0o777 & ~_umask())  # mkdtemp's 0700 would have become the artifacts folder's mode
     retired = None
     try:
         yield staging
@@ -66,8 +68,28 @@ def replaced_directory(directory: Path, artifact: re.Pattern) -> Iterator[Path]:
                 shutil.rmtree(leftover, ignore_errors=True)
 
 
+def check_writable(directory: Path) -> None:
+    """Raise ``NotAnArtifactFolder`` unless a folder can be made at ``directory``: asked when a
+    command or session starts, so that ``--out /proc/x`` or an artifacts path that is a file stops
+    it at once rather than after the run (a traceback had come at the first failure). The test is a
+    folder made and removed in the nearest folder that exists, which says what permissions do."""
+    directory = Path(directory)
+    existing = directory
+    while not existing.exists() and existing != existing.parent:
+        existing = existing.parent
+    if existing == directory and not directory.is_dir():
+        raise NotAnArtifactFolder(f"{directory} is a file, not a folder of artifacts")
+    if not existing.is_dir():
+        raise NotAnArtifactFolder(f"{existing} is a file: no folder can be made under it")
+    try:
+        os.rmdir(tempfile.mkdtemp(prefix=".roadlogic-probe.", dir=existing))
+    except OSError as error:
+        raise NotAnArtifactFolder(f"cannot make a folder in {existing} ({error.strerror}); give a folder you can write") from None
+
+
 def check_replaceable(directory: Path, artifact: re.Pattern) -> None:
     """Raise ``NotAnArtifactFolder`` unless ``directory`` is new, empty, or holds only names ``artifact`` matches."""
+    check_writable(directory)
     if not directory.exists():
         return
     if not directory.is_dir():
@@ -76,6 +98,68 @@ def check_replaceable(directory: Path, artifact: re.Pattern) -> None:
     if foreign:
         raise NotAnArtifactFolder(f"{directory} holds files a run does not write ({', '.join(foreign[:3])}{', ...' if len(foreign) > 3 else ''}); "
                                   "give a new or empty folder, or one a run wrote")
+
+
+def _umask() -> int:
+    mask = os.umask(0)
+    os.umask(mask)
+    return mask
+
+
+def _alive(pid: int) -> bool:
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:
+        return True  # another user's process
+    return True
+
+
+def remove_stale(directory: Path) -> None:
+    """Remove what a killed run left beside ``directory``: its ``.NAME.PID.*.partial`` staging
+    folders and files (``kill -9`` during ``run --out`` had left them for good), when that process
+    is gone."""
+    pattern = re.compile(rf"\.{re.escape(directory.name)}\.(\d+)\..*(partial|old).*")
+    try:
+        entries = list(directory.parent.iterdir())
+    except OSError:
+        return
+    for entry in entries:
+        match = pattern.fullmatch(entry.name)
+        if match is None or _alive(int(match.group(1))):
+            continue
+        if entry.is_dir() and not entry.is_symlink():
+            shutil.rmtree(entry, ignore_errors=True)
+        else:
+            entry.unlink(missing_ok=True)
+
+
+class FolderBusy(NotAnArtifactFolder):
+    """Another run is writing the same output folder."""
+
+
+@contextmanager
+def claimed(directory: Path) -> Iterator[None]:
+    """Hold ``directory`` for one run: a second run into it, while this one lasts, is refused
+    (``FolderBusy``) instead of both reporting success with one set lost. The claim is a lock on
+    ``.NAME.lock`` beside the folder, which the system releases when the process ends, however it
+    ends; the file is removed when the block ends."""
+    import fcntl
+
+    directory = Path(directory)
+    check_writable(directory)
+    directory.parent.mkdir(parents=True, exist_ok=True)
+    lock = directory.parent / f".{directory.name}.lock"
+    with open(lock, "a+") as handle:
+        try:
+            fcntl.flock(handle, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except BlockingIOError:
+            raise FolderBusy(f"another run is writing {directory}; wait for it to end, or give another folder") from None
+        try:
+            yield
+        finally:
+            lock.unlink(missing_ok=True)
 
 
 @contextmanager

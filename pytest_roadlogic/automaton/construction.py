@@ -310,19 +310,23 @@ def _parallel(children: list[_Fragment], location=None) -> _Fragment:
     frontier = [initial]
     while frontier:
         current = frontier.pop()
-        options = []
+        # members of a parallel end together: each member's moves split into those that leave it
+        # final and those that do not, and only all-final or none-final combinations are made (the
+        # product of all moves had been enumerated and filtered: 2^30 combinations for 30 members)
+        ending: list[list[_Edge | None]] = []
+        going_on: list[list[_Edge | None]] = []
         for child, key in zip(children, current):
             moves: list[_Edge | None] = list(child.outgoing(key))
             if current != initial:
                 moves.append(None)  # this component stays
-            options.append(moves)
-        for combination in itertools.product(*options):
+            ending.append([m for m in moves if (m.target if m is not None else key) == child.final])
+            going_on.append([m for m in moves if (m.target if m is not None else key) != child.final])
+        for options in (going_on, ending):
+            _check_size(math.prod(len(o) for o in options) - 1, location, "parallel")  # an upper bound of the edges it makes, before making them
+        for combination in itertools.chain(itertools.product(*going_on), itertools.product(*ending)):
             if all(m is None for m in combination):
                 continue
             target = tuple(m.target if m is not None else key for m, key in zip(combination, current))
-            finished = [t == c.final for t, c in zip(target, children)]
-            if any(finished) and not all(finished):
-                continue  # members of a parallel end together
             moving = [m for m in combination if m is not None]
             staying = frozenset().union(*(c.listening.get(k, frozenset()) for m, c, k in zip(combination, children, current) if m is None))
             edge = _simultaneous(current, moving, target, staying)

@@ -17,7 +17,7 @@ from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from ..confinement import ALLOW_READ_HINT, ReadRoots, project_root, regular_file_problem
+from ..confinement import ALLOW_READ_HINT, MISSING, ReadRoots, project_root, regular_file_problem
 from ..settings import STANDARD_DIALECT
 from . import library, model
 from .checked import CheckedFile, CheckedScenario
@@ -230,11 +230,11 @@ class _Checker:
                 # never opened, never shown: import "/proc/self/environ" had printed the environment's first line
                 self.error(item.location, f"the imported file {item.target!r} is outside the folders the tool reads ({self.roots.describe()})", ALLOW_READ_HINT)
                 continue
-            if not target.exists():
-                self.error(item.location, f"cannot find the imported file {item.target!r}", f"looked for {target}; paths are relative to the importing file")
-                continue
             if (problem := regular_file_problem(target)) is not None:
-                self.error(item.location, f"cannot read the imported file {item.target!r}: {problem}", "import an .osc file")
+                if problem == MISSING:
+                    self.error(item.location, f"cannot find the imported file {item.target!r}", f"looked for {target}; paths are relative to the importing file")
+                else:
+                    self.error(item.location, f"cannot read the imported file {item.target!r}: {problem}", "import an .osc file")
                 continue
             try:
                 imported = parse_file(target, self.units)

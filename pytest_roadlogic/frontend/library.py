@@ -4,7 +4,7 @@ and the signature machinery (``Signature``, ``bind``).
 The actions and modifiers themselves are specified in ``pytest_roadlogic.constructs``, each with
 its signature from here. The checker validates every invocation against these signatures, so a
 misspelt argument or a speed given where a length belongs is reported with its place before
-anything runs. A signature's ``tier`` follows docs/os2-subset.md: tier-2 entries check, but the
+anything runs. A signature's ``tier`` says how far it is executed (docs/language.md): tier-2 entries check, but the
 automaton may still refuse to translate them (it says so by name); arguments marked unsupported
 are refused by the checker.
 """

@@ -1,6 +1,6 @@
 """How a single value is read: a continuous trace never meets a point exactly.
 
-docs/os2-subset.md: a point value in a modifier or a duration stands for a small band around it.
+docs/language.md: a point value in a modifier or a duration stands for a small band around it.
 The planner plans inside the band and the monitor checks the band, so both read these numbers.
 """
 

@@ -168,6 +168,7 @@ def _monitor(automaton: SymbolicAutomaton, trace: Trace, floor: float) -> Verdic
     Key = tuple  # sorted ((phase, start sample), ...)
     states: list[dict[Key, tuple[float, tuple]]] = [{} for _ in range(n_loc)]
     first_met = [None] * n_loc  # first sample at which a run with all guards met is in the location
+    met_run: list = [None] * n_loc  # that run's transitions, (sample, transition id)
     best_final, best_final_run = NONE, ()
     for k in range(len(times)):
         # staying: the run was in q at k-1, q's drivers progressed over (k-1, k], no timed phase overran
@@ -231,6 +232,7 @@ def _monitor(automaton: SymbolicAutomaton, trace: Trace, floor: float) -> Verdic
         for q in range(n_loc):
             if states[q] and first_met[q] is None and max(v for v, _ in states[q].values()) >= 0:
                 first_met[q] = k
+                met_run[q] = max(states[q].values(), key=lambda state: state[0])[1]
         for value, run in states[final].values():
             if value > best_final:
                 best_final, best_final_run = value, run
@@ -240,7 +242,10 @@ def _monitor(automaton: SymbolicAutomaton, trace: Trace, floor: float) -> Verdic
     furthest = max(met, key=lambda q: (depth.get(q, 0), -(first_met[q] or 0)))
     accepted = best_final >= 0 and not trace.incidents
     events = {t.id: t.label for t in automaton.transitions}
-    best_run = [(float(times[k]), events[tid]) for k, tid in best_final_run]
+    # a rejected run's report marks only the transitions whose guards held (the best run to the end
+    # had marked guards that the explanation says never held: issue 38)
+    shown = best_final_run if accepted else (met_run[furthest] or [])
+    best_run = [(float(times[k]), events[tid]) for k, tid in shown]
     miss = None
     if best_final < 0:
         miss = _closest_miss(automaton, furthest, first_met[furthest] or 0, trace.snapshots(), times)

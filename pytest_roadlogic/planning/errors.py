@@ -17,6 +17,11 @@ class PlanningTimeout(NoPlanError):
     """The time limit ran out before a plan was found (a plan may still exist)."""
 
 
+class PlanningTooLarge(PlanningTimeout):
+    """Grounding grew the process past the planner's memory limit: a limit of the tool, reported as
+    a time limit is (the outcome "timed out"), with the memory named."""
+
+
 class HorizonTooShort(NoPlanError):
     """The scenario's phases cannot all end within the horizon limit: a setting of the tool binds,
     not the scenario's constraints. The message names the setting and how to raise it."""

@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import os
 import random
 import time
 import weakref
@@ -28,7 +29,7 @@ from clingodl import ClingoDLTheory
 
 from ..automaton.guards import contradiction
 from ..automaton.model import SymbolicAutomaton, Timing
-from .errors import HorizonTooShort, NoPlanError, PlanningTimeout, UnsatisfiableScenario, conflict_message
+from .errors import HorizonTooShort, NoPlanError, PlanningTimeout, PlanningTooLarge, UnsatisfiableScenario, conflict_message
 from .instance import PlanningSettings, build_instance, relaxable_constraints, start_preferences
 from .plan import Plan, PlanState
 from .window import DurationWindow, shortest_run
@@ -73,6 +74,20 @@ def background_theory() -> str:
 # of conflicts, unlike a time limit, ends it at the same point on every machine (50 000: about 2 s
 # here; past it the plan keeps the shortest horizon)
 STRETCH_CONFLICTS = 50_000
+# steps grounded in one call before the time limit is looked at again (a call cannot be stopped;
+# one per step had cost 2.5 s over 45 steps against 0.36 s in one call)
+GROUND_CHUNK = 50
+# what the process may hold while grounding: measured, 3,500 steps of five vehicles held 1.7 GB
+MAX_PLANNING_BYTES = 8 * 2**30
+
+
+def resident_bytes() -> int:
+    """The process's resident memory now (Linux's /proc; 0 where it cannot be read)."""
+    try:
+        with open("/proc/self/statm") as statm:
+            return int(statm.read().split()[1]) * os.sysconf("SC_PAGE_SIZE")
+    except (OSError, ValueError, IndexError):
+        return 0
 
 
 class Planner:
@@ -197,7 +212,7 @@ class Planner:
         relaxable one (``base_program`` with the ``assumptions`` it keeps). Only the scenario's own
         instance has every duration in force, so only its window starts at the automaton's floor."""
         floor = shortest_run(self.automaton, self.settings.dt) if base_program is None else 0
-        return DurationWindow(ASP_DIR / "automaton.lp", base_program or self.base_program, self._waiter(deadline), assumptions, floor)
+        return DurationWindow(ASP_DIR / "automaton.lp", base_program or self.base_program, self._waiter(deadline), assumptions, floor, deadline)
 
     def _waiter(self, deadline: float):
         """A window's wait: for a solve, until ``deadline``."""
@@ -292,17 +307,30 @@ class Planner:
         for step in range(max(1, grounded + 1), horizon + 1):
             t = clingo.Number(step)
             parts += [("dynamics", [t]), ("state", [t]), ("check", [t])]
+            if step % GROUND_CHUNK == 0 and step < horizon:
+                # a grounding call cannot be interrupted: ground in chunks and keep to the time limit
+                # between them (a 3,500 s scenario of five vehicles had grounded for 55 s under a 5 s limit)
+                self._ground(control, parts)
+                parts = []
+                if time.monotonic() > self._deadline:
+                    raise PlanningTimeout(f"planning ran out of its time limit ({self.settings.time_limit:g} s) while grounding step {step} of {horizon}")
+                if (resident := resident_bytes()) > MAX_PLANNING_BYTES:
+                    raise PlanningTooLarge(f"planning stopped at {resident / 2**30:.1f} GiB while grounding step {step} of {horizon} (the planner's "
+                                           f"limit is {MAX_PLANNING_BYTES / 2**30:g} GiB): lower the horizon with --horizon, or split the scenario")
         self._ground(control, parts)
         for step in range(max(0, grounded), horizon):
             control.assign_external(clingo.Function("query", [clingo.Number(step)]), False)
         control.assign_external(clingo.Function("query", [clingo.Number(horizon)]), True)
+
+    _deadline = math.inf  # of the planning under way (_renewed): what grounding keeps to
 
     def _renewed(self) -> float:
         """The deadline of the next plan: the whole time limit from now. The time a caller spends
         with a plan before asking for the next (simulating it) is not planning time (measured:
         five_vehicle_minute's second plan takes 0.24 s, but after its first plan's 45 s simulation
         it ran out of the 60 s limit before it started)."""
-        return time.monotonic() + self.settings.time_limit
+        self._deadline = time.monotonic() + self.settings.time_limit
+        return self._deadline
 
     @staticmethod
     def _wait(handle: clingo.SolveHandle, deadline: float, message: str) -> None:

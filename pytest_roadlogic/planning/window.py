@@ -26,12 +26,15 @@ grounds 45 steps and solves once.
 
 from __future__ import annotations
 
+import math
+import time
 from collections.abc import Callable
 from pathlib import Path
 
 import clingo
 
 from ..automaton.model import SymbolicAutomaton
+from .errors import PlanningTimeout
 from .instance import timing_steps
 
 # every guard holds: the durations alone decide (as free choices, measured 7.5 s for
@@ -49,7 +52,8 @@ class DurationWindow:
     """
 
     def __init__(self, automaton_lp: Path, base_program: str, wait: Callable[[clingo.SolveHandle, str], None], assumptions: list | None = None,
-                 floor: int = 0) -> None:
+                 floor: int = 0, deadline: float = math.inf) -> None:
+        self.deadline = deadline
         self.control = clingo.Control(["--warn=none"], logger=lambda c, m: None)
         self.control.add("base", [], automaton_lp.read_text(encoding="utf-8") + "\n#program base.\n" + base_program
                          + "\n#program state(t).\n" + GUARDS_HOLD + "\n" + OPEN)
@@ -66,6 +70,11 @@ class DurationWindow:
         for step in range(self.grounded + 1, horizon + 1):
             t = clingo.Number(step)
             parts += [("state", [t]), ("check", [t]), ("open", [t])]
+            if step % 200 == 0 and step < horizon:  # the time limit covers grounding too (a call cannot be stopped)
+                self.control.ground(parts)
+                parts = []
+                if time.monotonic() > self.deadline:
+                    raise PlanningTimeout(f"planning ran out of its time limit while grounding step {step} of {horizon}")
         self.control.ground(parts)
         if self.grounded < 0:
             for atom in self.control.symbolic_atoms.by_signature("relaxed", 1):

@@ -1,7 +1,7 @@
 // Grammar of the ASAM OpenSCENARIO DSL that pytest-roadlogic reads.
 //
 // Written for this project from the language description in the standard (section 7.2) and
-// docs/os2-subset.md. It covers the syntax of ASAM OpenSCENARIO DSL 2.x: constructs the tool does
+// docs/language.md (what the tool reads, for its users). It covers the syntax of ASAM OpenSCENARIO DSL 2.x: constructs the tool does
 // not execute (on, call, cover/record, namespace/export, var and sample, external methods, type
 // tests, user modifiers, the 2.1 namespace qualifier `ns::name`) parse here so that the checker can
 // refuse them by name and place instead of a syntax error.
