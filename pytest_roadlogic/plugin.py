@@ -255,7 +255,11 @@ class ScenarioItem(pytest.Item):
         try:
             result = runner.run_case(case)
         except UnknownParameter as error:  # a case file's values are data: a located message, not a traceback
-            pytest.fail(f"--roadlogic-replay {_text(self.config, 'replay')}: {error}", pytrace=False)
+            refused = f"--roadlogic-replay {_text(self.config, 'replay')}: {error}"
+        else:
+            refused = ""
+        if refused:
+            pytest.fail(refused, pytrace=False)
         if result.run is not None and self.drivers.names != case.drivers:
             pytest.fail(f"--roadlogic-replay: the case was found with the drivers {_drivers_text(case.drivers)}, "
                         f"this session drives with {_drivers_text(self.drivers.names)}; "

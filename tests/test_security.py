@@ -14,7 +14,6 @@ import pytest
 
 from pytest_roadlogic import cli
 from pytest_roadlogic.case import Case, CaseFileError
-from pytest_roadlogic.confinement import ReadRoots, safe_name
 from pytest_roadlogic.frontend import check_file
 from tests.conftest import ROOT
 
@@ -79,6 +78,8 @@ def test_item_2_a_case_file_kept_outside_the_project_finds_its_scenario_inside_i
     case = Case(path="scenarios/follow.osc", scenario="follow")
     monkeypatch.chdir(root)
     assert case.scenario_file(tmp_path / "downloads" / "case.json").resolve() == (root / "scenarios" / "follow.osc").resolve()
+    from pytest_roadlogic.confinement import ReadRoots
+
     with pytest.raises(CaseFileError, match="not in the folders the tool reads"):
         Case(path="elsewhere.osc", scenario="follow").scenario_file(tmp_path / "downloads" / "case.json", ReadRoots.of(root))
 
@@ -137,6 +138,8 @@ def test_item_3_a_quoted_scenario_name_does_not_lead_a_written_file_out_of_the_w
 
 @pytest.mark.parametrize("name, safe", [("../../../x", "x"), ("a/b\\c", "a_b_c"), ("..", "scenario"), (".hidden", "hidden"), ("ok_name-1.2", "ok_name-1.2")])
 def test_item_3_a_name_from_a_scenario_becomes_one_file_name_inside_its_folder(name, safe):
+    from pytest_roadlogic.confinement import safe_name
+
     assert safe_name(name) == safe
     assert "/" not in safe_name(name) and not safe_name(name).startswith(".")
 
