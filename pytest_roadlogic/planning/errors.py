@@ -27,11 +27,14 @@ class HorizonTooShort(NoPlanError):
     not the scenario's constraints. The message names the setting and how to raise it."""
 
     def __init__(self, limit_steps: int, dt: float, needed_steps: int | None) -> None:
+        from ..settings import MAX_HORIZON
+
         needed = f"at least {needed_steps * dt:g} s" if needed_steps is not None else f"more than {4 * limit_steps * dt:g} s"
-        super().__init__(
-            f"no plan within the horizon limit of {limit_steps} steps ({limit_steps * dt:g} s): the scenario's phases need {needed} "
-            "together; raise the limit with --roadlogic-horizon N (ini roadlogic_horizon) or --horizon N of roadlogic run, plan, replay and bench"
-        )
+        if needed_steps is not None and needed_steps <= MAX_HORIZON or needed_steps is None and limit_steps < MAX_HORIZON:
+            what = "raise the limit with --roadlogic-horizon N (ini roadlogic_horizon) or --horizon N of roadlogic run, plan, replay and bench"
+        else:  # past the longest horizon the tool plans: no setting helps
+            what = f"the tool plans at most {MAX_HORIZON} steps: shorten the scenario's phases or split it"
+        super().__init__(f"no plan within the horizon limit of {limit_steps} steps ({limit_steps * dt:g} s): the scenario's phases need {needed} together; {what}")
         self.limit_steps, self.needed_steps = limit_steps, needed_steps
 
 
