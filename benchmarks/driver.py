@@ -27,7 +27,7 @@ from pytest_roadlogic.automaton import build_automaton  # noqa: E402
 from pytest_roadlogic.frontend import OscError, load_file  # noqa: E402
 from pytest_roadlogic.monitor import monitor  # noqa: E402
 from pytest_roadlogic.pipeline import _guided  # noqa: E402
-from pytest_roadlogic.planning import NoPlanError, planner_for  # noqa: E402
+from pytest_roadlogic.planning import NoPlanError, planner_for, settings_for  # noqa: E402
 from pytest_roadlogic.sampling import strategy  # noqa: E402
 from pytest_roadlogic.settings import RunSettings  # noqa: E402
 from pytest_roadlogic.simulation import SimulationLimits  # noqa: E402
@@ -54,7 +54,7 @@ def samples(scenario, count: int, seed: int) -> list[dict]:
 
 def plans(scenario, values: list[dict], seed: int):
     """The first plan of each sample (None where it has none within the planner's margins and limits)."""
-    settings = RunSettings().planning(explain_unsatisfiable=False)
+    settings = settings_for(RunSettings(), explain_unsatisfiable=False)
     specification = build_automaton(scenario)
     found = []
     for sample in values:

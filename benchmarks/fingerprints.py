@@ -29,6 +29,7 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
 from pytest_roadlogic.pipeline import load_scenario, run_scenario  # noqa: E402
+from pytest_roadlogic.planning import settings_for  # noqa: E402
 from pytest_roadlogic.sampling import STEP, logical_parameters  # noqa: E402
 from pytest_roadlogic.settings import ENCODINGS, RunSettings  # noqa: E402
 
@@ -64,7 +65,7 @@ def main() -> int:
     parser.add_argument("--seeds", nargs="+", type=int, default=[1, 2, 3])
     parser.add_argument("--encoding", choices=ENCODINGS, default=RunSettings.encoding)
     args = parser.parse_args()
-    settings = RunSettings(encoding=args.encoding).planning()
+    settings = settings_for(RunSettings(encoding=args.encoding))
     started = time.perf_counter()
     for path in args.files:
         checked = load_scenario(path)

@@ -215,12 +215,12 @@ def _roots(args: argparse.Namespace, named: Path):
 
 
 def _plan(args: argparse.Namespace) -> int:
-    from .planning import planner_for
+    from .planning import planner_for, settings_for
 
     def solve():
         scenario, automaton = _load_automaton(args)
         settings = _run_settings(args)
-        planner = planner_for(automaton, settings.planning(), settings.seed)
+        planner = planner_for(automaton, settings_for(settings), settings.seed)
         if args.show_asp:
             print(planner.instance_program())
         started = time.perf_counter()
@@ -242,7 +242,7 @@ def _plan(args: argparse.Namespace) -> int:
 
 
 def _automaton(args: argparse.Namespace) -> int:
-    from .automaton.dot import write_dot
+    from .artifacts.automaton import write_dot
 
     loaded = _reporting_input_errors(args, lambda: _load_automaton(args))
     if isinstance(loaded, int):

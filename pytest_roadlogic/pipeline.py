@@ -19,7 +19,7 @@ from typing import TYPE_CHECKING
 from .automaton import SymbolicAutomaton, build_automaton
 from .frontend import CheckedScenario, load_file
 from .monitor import Verdict, monitor
-from .planning import Plan, PlanningSettings
+from .planning import Plan, PlanningSettings, settings_for
 from .sampling import guided, sample_seed
 from .settings import DEFAULT_SIM_TIMEOUT, RunSettings
 from .simulation import DriverFactory, Simulation, SimulationLimits, Simulator
@@ -99,7 +99,7 @@ def run_instances(
     from .planning import planner_for
     from .simulation.backends import simulator as default_simulator
 
-    settings = settings or RunSettings().planning()  # the default encoding's
+    settings = settings or settings_for(RunSettings())  # the default encoding's
     simulator = simulator or default_simulator()
     limits = SimulationLimits(time_limit=simulation_time_limit)
     start = time.perf_counter()
@@ -176,7 +176,7 @@ def has_plan(scenario: CheckedScenario, values: dict[str, object], seed: int = 1
     the values have none, and counts as a plan."""
     from .planning import HorizonTooShort, NoPlanError, PlanningTimeout, planner_for
 
-    settings = dataclasses.replace(settings or RunSettings().planning(), explain_unsatisfiable=False)
+    settings = dataclasses.replace(settings or settings_for(RunSettings()), explain_unsatisfiable=False)
     guide, settings, seed = _guided(scenario, build_automaton(scenario), values, settings, seed)
     try:
         plans = planner_for(guide(settings), settings, seed).plans(limit=1)

@@ -22,7 +22,7 @@ from .case import Case
 from .frontend import CheckedScenario
 from .outcomes import CONFORMANT, NO_PLAN, NON_CONFORMANT, STAGES, TIMED_OUT
 from .pipeline import Outcome, run_instances
-from .planning import HorizonTooShort, LimitsBind, NoPlanError, PlanningTimeout, UnsatisfiableScenario
+from .planning import HorizonTooShort, LimitsBind, NoPlanError, PlanningTimeout, UnsatisfiableScenario, settings_for
 from .settings import BASE, DISCARD, REFINED, RunSettings
 from .simulation import DriverFactory, SimulationTimeout, Simulator
 
@@ -235,7 +235,7 @@ class Runner:
 
         values = case.values
         if self._plannable is None:  # once per runner: one planning of the scenario as written
-            self._plannable = has_plan(self.scenario, {}, self.settings.seed, self.settings.planning(False))
+            self._plannable = has_plan(self.scenario, {}, self.settings.seed, settings_for(self.settings, False))
         if not self._plannable:
             result.at_no_values = True  # no value is to blame: none has a plan (infeasible_order)
             return result
@@ -257,7 +257,7 @@ class Runner:
         a time, in the order of the report."""
         from .pipeline import has_plan
 
-        settings = self.settings.planning(False)
+        settings = settings_for(self.settings, False)
         found = []
         for name, value in values.items():
             if not has_plan(self.scenario, {name: value}, self.settings.seed, settings, fallbacks, beyond_limits):
@@ -283,7 +283,7 @@ class Runner:
 
     def _instances(self, count: int, values, explain: bool, fallbacks: bool = True) -> Iterator[Outcome]:
         return run_instances(
-            self.scenario, count, seed=self.settings.seed, settings=self.settings.planning(explain), max_tries=self.settings.tries,
+            self.scenario, count, seed=self.settings.seed, settings=settings_for(self.settings, explain), max_tries=self.settings.tries,
             drivers=self.drivers, values=values, simulation_time_limit=self.settings.simulation_time_limit, simulator=self.simulator,
             fallbacks=fallbacks,
         )

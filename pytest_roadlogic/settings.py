@@ -198,13 +198,3 @@ class RunSettings:
             except OptionError as error:
                 raise OptionError(f"{origin(option)}: {error}") from None
         return cls(**values)
-
-    def planning(self, explain_unsatisfiable: bool = True):
-        """The planner's settings for this run: ``ContinuousSettings`` or the grid's ``PlanningSettings``."""
-        if self.encoding == GRID:
-            from .planning.instance import PlanningSettings
-
-            return PlanningSettings(max_horizon=self.max_horizon or DEFAULT_HORIZON, time_limit=self.planning_time_limit, explain_unsatisfiable=explain_unsatisfiable)
-        from .planning.continuous import ContinuousSettings
-
-        return ContinuousSettings(max_horizon=self.max_horizon or CONTINUOUS_HORIZON, time_limit=self.planning_time_limit, explain_unsatisfiable=explain_unsatisfiable)

@@ -9,7 +9,7 @@ import pytest
 from pytest_roadlogic.constructs import CARLA, STANDARD, conditions
 from pytest_roadlogic.frontend import check_text, library
 from pytest_roadlogic.frontend.standard_library import part_file, part_names, standard_library
-from pytest_roadlogic.frontend.units import UNITS
+from pytest_roadlogic.frontend.standard_library import UNITS
 
 
 def declared_kind(type_name: str) -> str:

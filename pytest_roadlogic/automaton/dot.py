@@ -1,16 +1,11 @@
-"""The automaton as a Graphviz drawing, guards printed as in the paper's Figure 4.
+"""The automaton as Graphviz DOT text, guards printed as in the paper's Figure 4 (``to_dot``).
 
-DOT is plain text, so it is always written; the PNG needs Graphviz's ``dot`` program and is
-skipped (with a note) when it is not installed, rather than making Graphviz a dependency.
+Writing it, and the PNG beside it, is an artifact's job (``artifacts/automaton.py``): this stage
+only says what the drawing is.
 """
 
 from __future__ import annotations
 
-import shutil
-import subprocess
-from pathlib import Path
-
-from ..artifacts.files import write_text
 from .model import SymbolicAutomaton
 
 
@@ -38,17 +33,3 @@ def to_dot(automaton: SymbolicAutomaton, title: str = "") -> str:
         lines.append(f"  q{transition.source} -> q{transition.target} [label={_quote(guard)}];")
     lines.append("}")
     return "\n".join(lines) + "\n"
-
-
-def write_dot(automaton: SymbolicAutomaton, path: str | Path, title: str = "", png: bool = True) -> dict[str, Path]:
-    """Write ``path`` (DOT) and, when Graphviz is installed and ``png``, the PNG beside it."""
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    write_text(path, to_dot(automaton, title))
-    written = {"dot": path}
-    dot = shutil.which("dot")
-    if png and dot is not None:
-        image = path.with_suffix(".png")
-        subprocess.run([dot, "-Tpng", str(path), "-o", str(image)], check=True, capture_output=True)
-        written["png"] = image
-    return written

@@ -28,8 +28,8 @@ from .invocation import RECURSION, called_scenarios, expand_calls
 from .parameters import ParameterSpace, parameter_space
 from .parser import parse_file, parse_text
 from .physical import declared_physics, parse_with_declared_units
-from .standard_library import LazyTable, part_file, part_names, standard_library
-from .units import SPEED, TIME, UNITS
+from .standard_library import UNITS, LazyTable, part_file, part_names, standard_library
+from .units import SPEED, TIME
 from .values import EvaluationError, Interval, calls_in, describe, evaluate, names_in
 
 if TYPE_CHECKING:

@@ -25,27 +25,10 @@ from ..confinement import ReadRoots, regular_file_problem
 from . import model
 from .errors import Diagnostic, OscError
 from .parser import parse_file
-from .standard_library import standard_library
-from .units import UNITS
-from .values import _DIMENSIONS
+from .standard_library import UNITS, standard_library
+from .units import dimension_of
 
 FACTOR_TOLERANCE = 1e-6  # relative: CARLA's libraries write kph's factor with 9 digits
-_MODELLED_BASES = ("m", "s")
-
-
-def dimension_of(exponents: tuple[tuple[str, float], ...]) -> str | None:
-    """The dimension with these SI exponents, or None when the pipeline does not model it."""
-    powers = {base: 0.0 for base in _MODELLED_BASES}
-    for base, exponent in exponents:
-        if base not in _MODELLED_BASES:
-            if exponent != 0:
-                return None
-            continue
-        powers[base] += exponent
-    key = (powers["m"], powers["s"])
-    if not all(float(p).is_integer() for p in key):
-        return None
-    return _DIMENSIONS.get((int(key[0]), int(key[1])))
 
 
 @dataclass

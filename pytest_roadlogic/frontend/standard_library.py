@@ -7,8 +7,8 @@ The tool's meaning of each construct is in ``pytest_roadlogic.constructs`` (and 
 construct's parameters equal to its declaration here); a construct declared here that the tool
 does not provide is refused by name where it is used.
 
-The files are parsed by the project's own parser on first use, not at import: the parser reads
-literals with the unit table this module builds, so the tables are lazy mappings (``LazyTable``).
+The files are read with the project's syntax (``frontend.syntax``, which needs no unit table of
+its own) on first use, not at import, so the tables are lazy mappings (``LazyTable``).
 """
 
 from __future__ import annotations
@@ -17,6 +17,9 @@ import functools
 from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass
 from pathlib import Path
+
+from .syntax import parse_text
+from .units import dimension_of
 
 STDLIB_DIR = Path(__file__).resolve().parent.parent / "stdlib"
 LIBRARY_ROOT = "osc"
@@ -71,12 +74,10 @@ def part_names() -> list[str]:
 
 @functools.cache
 def standard_library() -> StandardLibrary:
-    # imported here: the parser reads literals with UNITS, which this function builds
-    from .parser import parse_file
-    from .physical import dimension_of
-
+    """The library's declarations, its files read once with the syntax alone (they declare the units
+    every other file is read with, and write no literal with a unit themselves)."""
     parts = {name: part_file(name) for name in part_names()}
-    files = {name: parse_file(path, {}) for name, path in parts.items()}
+    files = {name: parse_text(path.read_text(encoding="utf-8"), str(path), {}) for name, path in parts.items()}
     types: dict[str, str | None] = {}
     units: dict[str, tuple[str, float]] = {}
     enums: dict[str, tuple[str, ...]] = {}
@@ -128,3 +129,8 @@ class LazyTable(Mapping):
 
     def __repr__(self) -> str:
         return f"LazyTable({dict(self._table)!r})"
+
+
+# unit name -> (dimension, factor to SI): the modelled units the standard library declares
+# (stdlib/osc/physical.osc), read on first use
+UNITS: Mapping[str, tuple[str, float]] = LazyTable(lambda library: library.units)

@@ -15,17 +15,8 @@ from typing import Mapping, Union
 from . import model
 from .errors import SourceLocation, error_at
 from .library import UNSUPPORTED_EXPRESSIONS
-from .units import ACCELERATION, LENGTH, SI_UNIT, SPEED, TIME
+from .units import DIMENSIONS as _DIMENSIONS, EXPONENTS as _EXPONENTS, SI_UNIT
 
-# dimension -> exponents of (metre, second)
-_EXPONENTS: dict[str | None, tuple[int, int]] = {
-    None: (0, 0),
-    LENGTH: (1, 0),
-    TIME: (0, 1),
-    SPEED: (1, -1),
-    ACCELERATION: (1, -2),
-}
-_DIMENSIONS = {v: k for k, v in _EXPONENTS.items()}
 
 
 def describe(dimension: str | None) -> str:
