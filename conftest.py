@@ -8,13 +8,17 @@ import os
 
 from hypothesis import HealthCheck, settings
 
-settings.register_profile("ci", max_examples=50, deadline=None, derandomize=True, suppress_health_check=[HealthCheck.too_slow])
+settings.register_profile(
+    "ci", max_examples=50, deadline=None, derandomize=True, suppress_health_check=[HealthCheck.too_slow]
+)
 settings.register_profile("dev", max_examples=50, deadline=None)
 settings.load_profile("ci" if os.environ.get("CI") else "dev")
 
 
 def pytest_addoption(parser):
-    parser.addoption("--run-bench", action="store_true", help="also run the full evaluation (tests marked bench; about 6 minutes)")
+    parser.addoption(
+        "--run-bench", action="store_true", help="also run the full evaluation (tests marked bench; about 6 minutes)"
+    )
 
 
 def pytest_collection_modifyitems(config, items):

@@ -65,7 +65,11 @@ def main() -> int:
         except OscError as error:
             text = f"refused: {error.report().splitlines()[0].split(': error: ')[-1][:70]}"
         print(f"{path.name:34} {dialect:8} {seconds:8.3f}  {text} ({time.perf_counter() - t0:.1f} s)")
-    print(f"\n{len(files)} files; check of the whole corpus {time.perf_counter() - started:.1f} s in all" if args.check_only else f"\n{len(files)} files, {runs} run, {accepted} accepted at seed {args.seed}")
+    print(
+        f"\n{len(files)} files; check of the whole corpus {time.perf_counter() - started:.1f} s in all"
+        if args.check_only
+        else f"\n{len(files)} files, {runs} run, {accepted} accepted at seed {args.seed}"
+    )
     print(f"slowest parse + check: {slowest[1]} {slowest[0]:.3f} s")
     return 0
 

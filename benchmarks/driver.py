@@ -46,8 +46,15 @@ def samples(scenario, count: int, seed: int) -> list[dict]:
         if len(drawn) < count:
             drawn.append(values)
 
-    chosen = hypothesis.settings(hypothesis.settings.get_profile("default"), max_examples=count, database=None, deadline=None,
-                                 derandomize=False, phases=[Phase.generate], suppress_health_check=list(HealthCheck))
+    chosen = hypothesis.settings(
+        hypothesis.settings.get_profile("default"),
+        max_examples=count,
+        database=None,
+        deadline=None,
+        derandomize=False,
+        phases=[Phase.generate],
+        suppress_health_check=list(HealthCheck),
+    )
     hypothesis.seed(seed)(chosen(hypothesis.given(strategy(scenario))(keep)))()
     return drawn
 
@@ -80,7 +87,9 @@ def drive(specification, plan, variant: dict) -> tuple[bool, bool]:
 
 
 def default_files() -> list[Path]:
-    realistic = sorted(p for p in (ROOT / "scenarios" / "realistic").glob("*.osc") if not p.name.startswith("infeasible"))
+    realistic = sorted(
+        p for p in (ROOT / "scenarios" / "realistic").glob("*.osc") if not p.name.startswith("infeasible")
+    )
     return sorted((ROOT / "scenarios").glob("*.osc")) + realistic
 
 
@@ -89,7 +98,12 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("files", nargs="*", type=Path)
     parser.add_argument("--samples", type=int, default=20)
     parser.add_argument("--seed", type=int, default=11)
-    parser.add_argument("--variant", action="append", type=json.loads, help="FrenetixDriver attributes as JSON ({} is the driver as it is)")
+    parser.add_argument(
+        "--variant",
+        action="append",
+        type=json.loads,
+        help="FrenetixDriver attributes as JSON ({} is the driver as it is)",
+    )
     args = parser.parse_args(argv)
     variants = args.variant or [{}]
     totals = [[0, 0] for _ in variants]
@@ -112,7 +126,9 @@ def main(argv: list[str] | None = None) -> int:
             totals[index][0] += accepted
             totals[index][1] += collided
             cells.append(f"{accepted}/{collided}".rjust(26))
-        print(f"{path.stem:<24}", str(len(found)).rjust(5), *cells, f"  {time.perf_counter() - started:.0f} s", flush=True)
+        print(
+            f"{path.stem:<24}", str(len(found)).rjust(5), *cells, f"  {time.perf_counter() - started:.0f} s", flush=True
+        )
     print(f"{'all':<24}", str(planned).rjust(5), *(f"{a}/{c}".rjust(26) for a, c in totals))
     for index, variant in enumerate(variants):
         print(f"v{index}: {json.dumps(variant)}")

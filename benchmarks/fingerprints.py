@@ -73,7 +73,10 @@ def main() -> int:
             for strategy, values in (("base", None), ("refined", midpoint_sample(checked))):
                 outcome = run_scenario(checked, seed=seed, settings=settings, values=values)
                 verdict = "accepted" if outcome.verdict.accepted else "rejected"
-                print(f"{path.stem:<22} seed {seed} {strategy:<7} plan {digest(plan_text(outcome.plan))} trace {digest(outcome.simulation.trace.to_csv())} tries {outcome.tries} {verdict} rules {int(outcome.plan.stats.get('rules', 0))}", flush=True)
+                print(
+                    f"{path.stem:<22} seed {seed} {strategy:<7} plan {digest(plan_text(outcome.plan))} trace {digest(outcome.simulation.trace.to_csv())} tries {outcome.tries} {verdict} rules {int(outcome.plan.stats.get('rules', 0))}",
+                    flush=True,
+                )
     print(f"{time.perf_counter() - started:.1f} s", file=sys.stderr)
     return 0
 

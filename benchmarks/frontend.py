@@ -1,6 +1,6 @@
 """Front-end speed: parse and check time per .osc file (the median of several runs).
 
-    python benchmarks/frontend.py [PATH ...]     (default: scenarios/ and tests/corpus/)
+python benchmarks/frontend.py [PATH ...]     (default: scenarios/ and tests/corpus/)
 """
 
 from __future__ import annotations
@@ -35,16 +35,20 @@ def main(argv: list[str]) -> int:
         try:
             # the parse the checker does: with the units the file or its imports declare (a file
             # that declares yard had stopped the benchmark with a traceback)
-            parse = median_ms(lambda: parse_with_declared_units(path))
+            parse = median_ms(lambda path=path: parse_with_declared_units(path))
         except OscError as error:  # a file the front end refuses is a row, not the end of the run
             print(f"{path.name:40} {path.stat().st_size:6d} refused: {error.report().splitlines()[0]}")
             continue
-        check = median_ms(lambda: check_file(path))
+        check = median_ms(lambda path=path: check_file(path))
         rows.append((path, path.stat().st_size, parse, check))
         print(f"{path.name:40} {path.stat().st_size:6d} {parse:9.2f} {check:9.2f}")
     largest = max(rows, key=lambda r: r[1])
-    print(f"largest: {largest[0].name} ({largest[1]} bytes): parse {largest[2]:.2f} ms, parse+check {largest[3]:.2f} ms")
-    print(f"all {len(rows)} files: median parse {statistics.median(r[2] for r in rows):.2f} ms, median parse+check {statistics.median(r[3] for r in rows):.2f} ms")
+    print(
+        f"largest: {largest[0].name} ({largest[1]} bytes): parse {largest[2]:.2f} ms, parse+check {largest[3]:.2f} ms"
+    )
+    print(
+        f"all {len(rows)} files: median parse {statistics.median(r[2] for r in rows):.2f} ms, median parse+check {statistics.median(r[3] for r in rows):.2f} ms"
+    )
     return 0
 
 

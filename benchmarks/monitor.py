@@ -43,8 +43,14 @@ def synthetic_trace(actors: tuple[str, ...], stationary: frozenset[str]) -> Trac
         speed = 0.0 if actor in stationary else 20.0 - 2.0 * index
         x = -15.0 * index + speed * times if actor not in stationary else np.full(n, 300.0)
         lane = np.where((times // 10).astype(int) % 3 == 1, 0, 1) if index == 0 else np.full(n, 1 + index % 2)
-        columns[actor] = {"x": x, "y": np.zeros(n), "heading": np.zeros(n), "speed": np.full(n, speed),
-                          "acceleration": np.zeros(n), "lane": lane}
+        columns[actor] = {
+            "x": x,
+            "y": np.zeros(n),
+            "heading": np.zeros(n),
+            "speed": np.full(n, speed),
+            "acceleration": np.zeros(n),
+            "lane": lane,
+        }
     return Trace(times, columns)
 
 
@@ -63,15 +69,19 @@ def timed(judge, automaton, trace) -> tuple[float, object]:
 def row(name: str, automaton, trace) -> None:
     after, verdict = timed(monitor, automaton, trace)
     before, _ = timed(lambda a, t: monitor(a, t, floors=(-math.inf,)), automaton, trace)
-    print(f"{name:24} {len(automaton.actors):6d} {len(automaton.locations):9d} {len(automaton.transitions):11d} "
-          f"{'accepted' if verdict.accepted else 'rejected':>9} {before:12.1f} {after:10.1f}")
+    print(
+        f"{name:24} {len(automaton.actors):6d} {len(automaton.locations):9d} {len(automaton.transitions):11d} "
+        f"{'accepted' if verdict.accepted else 'rejected':>9} {before:12.1f} {after:10.1f}"
+    )
 
 
 HEADER = f"{'scenario':24} {'actors':>6} {'locations':>9} {'transitions':>11} {'verdict':>9} {'every run ms':>12} {'monitor ms':>10}"
 
 
 def main() -> int:
-    print(f"monitor on a synthetic {DURATION:.0f} s trace at {DT} s ({int(DURATION / DT) + 1} samples), median of {REPEATS}")
+    print(
+        f"monitor on a synthetic {DURATION:.0f} s trace at {DT} s ({int(DURATION / DT) + 1} samples), median of {REPEATS}"
+    )
     print(HEADER)
     for path in sorted((ROOT / "scenarios").glob("*.osc")) + sorted((ROOT / "scenarios" / "realistic").glob("*.osc")):
         try:

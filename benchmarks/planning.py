@@ -54,8 +54,12 @@ def main(argv: list[str] | None = None) -> int:
     if args.initial_speed is not None:
         settings = dataclasses.replace(settings, initial_speed=tuple(args.initial_speed))
     paths = args.paths or sorted((ROOT / "scenarios").glob("*.osc"))
-    print(f"max speed {settings.max_speed:g} m/s, grid {settings.grid:g} m, step {settings.dt:g} s; first plan: median of {args.repeats} seeds")
-    print(f"{'scenario':24} {'horizon':>7} {'ground s':>8} {'solve s':>8} {'rules':>8} {'first s':>8} {f'{args.plans} plans s':>10} {'jaccard':>8} {'distinct':>8}")
+    print(
+        f"max speed {settings.max_speed:g} m/s, grid {settings.grid:g} m, step {settings.dt:g} s; first plan: median of {args.repeats} seeds"
+    )
+    print(
+        f"{'scenario':24} {'horizon':>7} {'ground s':>8} {'solve s':>8} {'rules':>8} {'first s':>8} {f'{args.plans} plans s':>10} {'jaccard':>8} {'distinct':>8}"
+    )
     for path in paths:
         automaton = build_automaton(load_file(path).scenarios[0])
         firsts = []

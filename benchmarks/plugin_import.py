@@ -47,19 +47,43 @@ def main() -> int:
         env["PYTHONPATH"] = os.pathsep.join(filter(None, [args.source, env.get("PYTHONPATH")]))
     # run from a neutral folder: the current one comes first on sys.path and would shadow --source
     os.chdir(tempfile.gettempdir())
-    where = subprocess.run([sys.executable, "-c", "import pytest_roadlogic; print(pytest_roadlogic.__file__)"], env=env, capture_output=True, text=True, check=True)
+    where = subprocess.run(
+        [sys.executable, "-c", "import pytest_roadlogic; print(pytest_roadlogic.__file__)"],
+        env=env,
+        capture_output=True,
+        text=True,
+        check=True,
+    )
     print(f"package: {where.stdout.strip()}")
     with_plugin = timed([sys.executable, "-m", "pytest", "--version"], env, args.repeat)
     without = timed([sys.executable, "-m", "pytest", "--version", "-p", "no:roadlogic"], env, args.repeat)
     with tempfile.TemporaryDirectory() as empty:  # a session that collects nothing: every plugin loaded, no .osc file
-        session = [sys.executable, "-m", "pytest", "--collect-only", "-q", "-p", "no:cacheprovider", "--rootdir", empty, empty]
+        session = [
+            sys.executable,
+            "-m",
+            "pytest",
+            "--collect-only",
+            "-q",
+            "-p",
+            "no:cacheprovider",
+            "--rootdir",
+            empty,
+            empty,
+        ]
         collect_with = timed(session, env, args.repeat, ok=(0, 5))
         collect_without = timed([*session, "-p", "no:roadlogic"], env, args.repeat, ok=(0, 5))
     plugin = timed([sys.executable, "-c", "import pytest_roadlogic.plugin"], env, args.repeat)
     bare = timed([sys.executable, "-c", "import pytest"], env, args.repeat)
     heavy = subprocess.run(
-        [sys.executable, "-c", f"import sys, pytest_roadlogic.plugin; print(' '.join(sorted({{m.split('.')[0] for m in sys.modules}} & set({HEAVY!r}))))"],
-        env=env, capture_output=True, text=True, check=True,
+        [
+            sys.executable,
+            "-c",
+            f"import sys, pytest_roadlogic.plugin; print(' '.join(sorted({{m.split('.')[0] for m in sys.modules}} & set({HEAVY!r}))))",
+        ],
+        env=env,
+        capture_output=True,
+        text=True,
+        check=True,
     ).stdout.strip()
     print(f"pytest --version                      {with_plugin * 1000:7.0f} ms (fastest of {args.repeat})")
     print(f"pytest --version -p no:roadlogic      {without * 1000:7.0f} ms")

@@ -79,7 +79,9 @@ def main() -> int:
                 print(f"{name:<22} {encoding:<11} refused: {first_error(error.report())}")
                 medians[encoding] = None
         if None not in medians.values() and len(medians) == 2 and medians["grid"] > 0:
-            print(f"{'':<22} {'ratio':<11} {medians['continuous'] / medians['grid']:8.2f}x (continuous / grid, medians)")
+            print(
+                f"{'':<22} {'ratio':<11} {medians['continuous'] / medians['grid']:8.2f}x (continuous / grid, medians)"
+            )
     return 0
 
 

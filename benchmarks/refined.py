@@ -33,8 +33,24 @@ def run(tree: Path, file: Path, examples: int, seed: int, extra: list[str]) -> d
     """The JUnit properties of one file's item run in ``tree``, with ``result`` and ``seconds``."""
     with tempfile.TemporaryDirectory() as scratch:
         junit = Path(scratch) / "junit.xml"
-        command = [sys.executable, "-m", "pytest", str(file), "-q", "-p", "no:cacheprovider", "--roadlogic-examples", str(examples),
-                   "--roadlogic-seed", str(seed), "--junitxml", str(junit), "--basetemp", str(Path(scratch) / "tmp"), *extra]
+        command = [
+            sys.executable,
+            "-m",
+            "pytest",
+            str(file),
+            "-q",
+            "-p",
+            "no:cacheprovider",
+            "--roadlogic-examples",
+            str(examples),
+            "--roadlogic-seed",
+            str(seed),
+            "--junitxml",
+            str(junit),
+            "--basetemp",
+            str(Path(scratch) / "tmp"),
+            *extra,
+        ]
         start = time.perf_counter()
         done = subprocess.run(command, cwd=tree, capture_output=True, text=True)
         seconds = time.perf_counter() - start
@@ -44,7 +60,9 @@ def run(tree: Path, file: Path, examples: int, seed: int, extra: list[str]) -> d
         if case is None:
             return {"result": "not collected", "seconds": f"{seconds:.0f}"}
         properties = {p.get("name", ""): p.get("value", "") for p in case.iter("property")}
-        properties["result"] = "failed" if case.find("failure") is not None or case.find("error") is not None else "passed"
+        properties["result"] = (
+            "failed" if case.find("failure") is not None or case.find("error") is not None else "passed"
+        )
         properties["seconds"] = f"{seconds:.0f}"
         return properties
 
@@ -67,15 +85,21 @@ def main() -> int:
     args = parser.parse_args()
     trees = args.tree or [ROOT]
     files = [f if f.is_absolute() else REALISTIC / f for f in args.files] or sorted(
-        p.relative_to(ROOT) for p in (ROOT / REALISTIC).rglob("*.osc") if p.name != "lib.osc")
+        p.relative_to(ROOT) for p in (ROOT / REALISTIC).rglob("*.osc") if p.name != "lib.osc"
+    )
     print(f"{args.examples} refined examples, seed {args.seed}")
-    print(f"{'scenario':<22} {'tree':<14} {'ex':>3} {'acc':>4} {'nopl':>4} {'rej':>4} {'tout':>4} {'aside':>5} {'result':<7} {'s':>4}  failure")
+    print(
+        f"{'scenario':<22} {'tree':<14} {'ex':>3} {'acc':>4} {'nopl':>4} {'rej':>4} {'tout':>4} {'aside':>5} {'result':<7} {'s':>4}  failure"
+    )
     for file in files:
         for tree in trees:
             p = run(tree.resolve(), file, args.examples, args.seed, args.pytest_arg)
             failure = f"{p.get('failure_kind', p.get('verdict', ''))}: {values(p)}" if p["result"] == "failed" else ""
-            print(f"{file.stem:<22} {tree.resolve().name[:14]:<14} {p.get('examples', '-'):>3} {p.get('conformant', '-'):>4} {p.get('no_plan', '-'):>4} "
-                  f"{p.get('non_conformant', '-'):>4} {p.get('timed_out', '-'):>4} {p.get('discarded', '-'):>5} {p['result']:<7} {p['seconds']:>4}  {failure}", flush=True)
+            print(
+                f"{file.stem:<22} {tree.resolve().name[:14]:<14} {p.get('examples', '-'):>3} {p.get('conformant', '-'):>4} {p.get('no_plan', '-'):>4} "
+                f"{p.get('non_conformant', '-'):>4} {p.get('timed_out', '-'):>4} {p.get('discarded', '-'):>5} {p['result']:<7} {p['seconds']:>4}  {failure}",
+                flush=True,
+            )
     return 0
 
 

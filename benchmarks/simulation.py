@@ -32,7 +32,9 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("paths", nargs="*", type=Path)
     args = parser.parse_args(argv)
     paths = args.paths or sorted((ROOT / "scenarios").glob("*.osc"))
-    header = f"{'scenario':22} {'actors':>6} {'accepted':>8} {'tries':>5} " + " ".join(f"{s[:5] + ' med/max s':>16}" for s in (*STAGES, "total"))
+    header = f"{'scenario':22} {'actors':>6} {'accepted':>8} {'tries':>5} " + " ".join(
+        f"{s[:5] + ' med/max s':>16}" for s in (*STAGES, "total")
+    )
     print(f"base strategy, seeds 1..{args.seeds}")
     print(header)
     for path in paths:
@@ -59,7 +61,9 @@ def main(argv: list[str] | None = None) -> int:
             outcome = run_scenario(scenario, seed=1, max_tries=1)
             profile.disable()
             steps = len(outcome.simulation.trace)
-            print(f"\n{path.stem}: {steps} simulation steps, {outcome.seconds['simulation'] / steps * 1000:.1f} ms per step")
+            print(
+                f"\n{path.stem}: {steps} simulation steps, {outcome.seconds['simulation'] / steps * 1000:.1f} ms per step"
+            )
             pstats.Stats(profile).sort_stats("tottime").print_stats(8)
     return 0
 

@@ -78,7 +78,10 @@ def main() -> int:
     parser.add_argument("files", nargs="*", type=Path)
     parser.add_argument("--seeds", type=int, default=5)
     args = parser.parse_args()
-    files = args.files or [*sorted((ROOT / "scenarios").glob("*.osc")), *sorted((ROOT / "scenarios" / "realistic").glob("*.osc"))]
+    files = args.files or [
+        *sorted((ROOT / "scenarios").glob("*.osc")),
+        *sorted((ROOT / "scenarios" / "realistic").glob("*.osc")),
+    ]
     columns = ("position", "gap", "speed", "lag")
     print(f"{'scenario':<22} {'plans':>5}  " + "  ".join(f"{c + ' (med p95 max)':<20}" for c in columns))
     total: dict[str, list[float]] = {c: [] for c in columns}

@@ -24,14 +24,30 @@ def run(workers: int, examples: int, seed: int) -> tuple[float, list[str]]:
     with tempfile.TemporaryDirectory() as scratch:
         for path in (ROOT / "scenarios").glob("*.osc"):
             shutil.copy(path, scratch)
-        command = [sys.executable, "-m", "pytest", scratch, "-q", "-rA", "-p", "no:cacheprovider", "--rootdir", scratch,
-                   "--roadlogic-examples", str(examples), "--roadlogic-seed", str(seed)]
+        command = [
+            sys.executable,
+            "-m",
+            "pytest",
+            scratch,
+            "-q",
+            "-rA",
+            "-p",
+            "no:cacheprovider",
+            "--rootdir",
+            scratch,
+            "--roadlogic-examples",
+            str(examples),
+            "--roadlogic-seed",
+            str(seed),
+        ]
         if workers > 1:
             command += ["-n", str(workers)]
         started = time.perf_counter()
         result = subprocess.run(command, capture_output=True, text=True, cwd=scratch)
         seconds = time.perf_counter() - started
-    outcomes = sorted(line.split(" - ")[0] for line in result.stdout.splitlines() if line.startswith(("PASSED", "FAILED")))
+    outcomes = sorted(
+        line.split(" - ")[0] for line in result.stdout.splitlines() if line.startswith(("PASSED", "FAILED"))
+    )
     return seconds, outcomes
 
 

@@ -16,7 +16,17 @@ from pathlib import Path
 from typing import Any
 
 from .confinement import ReadRoots, project_root, regular_file_problem
-from .settings import BASE, CONTINUOUS, DEFAULT_SIMULATOR, GRID, OPTIONS_BY_NAME, REFINED, STANDARD_DIALECT, OptionError, RunSettings
+from .settings import (
+    BASE,
+    CONTINUOUS,
+    DEFAULT_SIMULATOR,
+    GRID,
+    OPTIONS_BY_NAME,
+    REFINED,
+    STANDARD_DIALECT,
+    OptionError,
+    RunSettings,
+)
 
 
 class CaseFileError(ValueError):
@@ -45,13 +55,22 @@ class Case:
     versions: dict[str, str] = field(default_factory=dict)  # of the packages a run depends on, when written
 
     @classmethod
-    def of(cls, path: str | Path, scenario: str, settings: RunSettings, **identity) -> "Case":
+    def of(cls, path: str | Path, scenario: str, settings: RunSettings, **identity) -> Case:
         """The case of ``scenario`` in ``path`` under ``settings``; ``identity`` gives the strategy,
         the values (refined) or the instance (base)."""
         return cls(
-            path=str(path), scenario=scenario, seed=settings.seed, lanes=settings.lanes, dialect=settings.dialect, encoding=settings.encoding, max_horizon=settings.max_horizon,
-            planning_time_limit=settings.planning_time_limit, simulation_time_limit=settings.simulation_time_limit,
-            max_tries=settings.tries, simulator=settings.simulator, **identity,
+            path=str(path),
+            scenario=scenario,
+            seed=settings.seed,
+            lanes=settings.lanes,
+            dialect=settings.dialect,
+            encoding=settings.encoding,
+            max_horizon=settings.max_horizon,
+            planning_time_limit=settings.planning_time_limit,
+            simulation_time_limit=settings.simulation_time_limit,
+            max_tries=settings.tries,
+            simulator=settings.simulator,
+            **identity,
         )
 
     @property
@@ -62,9 +81,16 @@ class Case:
     def settings(self) -> RunSettings:
         """The run settings this case was made under (defaults where an older case file is silent)."""
         given = {
-            "seed": self.seed, "strategy": self.strategy, "lanes": self.lanes, "dialect": self.dialect, "max_horizon": self.max_horizon,
-            "encoding": self.planning_encoding, "planning_time_limit": self.planning_time_limit, "simulation_time_limit": self.simulation_time_limit,
-            "tries": self.max_tries, "simulator": self.simulator,
+            "seed": self.seed,
+            "strategy": self.strategy,
+            "lanes": self.lanes,
+            "dialect": self.dialect,
+            "max_horizon": self.max_horizon,
+            "encoding": self.planning_encoding,
+            "planning_time_limit": self.planning_time_limit,
+            "simulation_time_limit": self.simulation_time_limit,
+            "tries": self.max_tries,
+            "simulator": self.simulator,
         }
         return RunSettings(**{k: v for k, v in given.items() if v is not None})
 
@@ -79,19 +105,29 @@ class Case:
         roots = roots or ReadRoots.of(project_root())
         path = Path(self.path)
         if path.is_absolute() or ".." in path.parts or not self.path.strip():
-            raise CaseFileError(f"the scenario path {self.path!r} is not a relative path inside the project; a case file names its scenario "
-                                "relative to the rootdir (as pytest wrote it)")
-        candidates = [path] + ([folder / path for folder in Path(case_file).resolve().parents] if case_file is not None else [])
+            raise CaseFileError(
+                f"the scenario path {self.path!r} is not a relative path inside the project; a case file names its scenario "
+                "relative to the rootdir (as pytest wrote it)"
+            )
+        candidates = [path] + (
+            [folder / path for folder in Path(case_file).resolve().parents] if case_file is not None else []
+        )
         for candidate in candidates:
             if roots.allows(candidate) and regular_file_problem(candidate) is None:
                 return candidate
-        raise CaseFileError(f"the scenario {self.path!r} is not in the folders the tool reads ({roots.describe()}); run the replay from the project's "
-                            "folder, or name the folder that holds it with --allow-read DIR")
+        raise CaseFileError(
+            f"the scenario {self.path!r} is not in the folders the tool reads ({roots.describe()}); run the replay from the project's "
+            "folder, or name the folder that holds it with --allow-read DIR"
+        )
 
     def version_differences(self) -> list[str]:
         """What differs between the versions this case was written with and the installed ones."""
         now = installed_versions()
-        return [f"{name} {was} (now {now.get(name, 'not installed')})" for name, was in sorted(self.versions.items()) if now.get(name) != was]
+        return [
+            f"{name} {was} (now {now.get(name, 'not installed')})"
+            for name, was in sorted(self.versions.items())
+            if now.get(name) != was
+        ]
 
     def to_json(self) -> str:
         return json.dumps(asdict(self), indent=2, sort_keys=True)
@@ -103,7 +139,7 @@ class Case:
         return write_text(Path(path), self.to_json())
 
     @classmethod
-    def load(cls, path: str | Path) -> "Case":
+    def load(cls, path: str | Path) -> Case:
         try:
             data = json.loads(Path(path).read_text())
             known = {f.name for f in fields(cls)}
@@ -127,7 +163,13 @@ class Case:
             parts += ["--strategy", BASE, "--instance", str(self.instance)]
         if self.values:
             parts += ["--values", json.dumps(self.values, sort_keys=True)]
-        for option, value in (("--lanes", self.lanes), ("--dialect", None if self.dialect == STANDARD_DIALECT else self.dialect), ("--encoding", None if self.planning_encoding == CONTINUOUS else self.planning_encoding), ("--horizon", self.max_horizon), ("--tries", self.max_tries)):
+        for option, value in (
+            ("--lanes", self.lanes),
+            ("--dialect", None if self.dialect == STANDARD_DIALECT else self.dialect),
+            ("--encoding", None if self.planning_encoding == CONTINUOUS else self.planning_encoding),
+            ("--horizon", self.max_horizon),
+            ("--tries", self.max_tries),
+        ):
             if value is not None:
                 parts += [option, str(value)]
         if self.simulator != DEFAULT_SIMULATOR:
@@ -138,8 +180,18 @@ class Case:
 
 
 # the case's fields that are run settings, by the option (settings.OPTIONS) that reads and checks them
-_SETTING_OPTIONS = {"seed": "seed", "strategy": "strategy", "lanes": "lanes", "dialect": "dialect", "encoding": "encoding", "max_horizon": "horizon",
-                    "planning_time_limit": "plan-timeout", "simulation_time_limit": "sim-timeout", "max_tries": "tries", "simulator": "simulator"}
+_SETTING_OPTIONS = {
+    "seed": "seed",
+    "strategy": "strategy",
+    "lanes": "lanes",
+    "dialect": "dialect",
+    "encoding": "encoding",
+    "max_horizon": "horizon",
+    "planning_time_limit": "plan-timeout",
+    "simulation_time_limit": "sim-timeout",
+    "max_tries": "tries",
+    "simulator": "simulator",
+}
 
 
 def _check_kinds(data: dict[str, Any]) -> None:
@@ -154,9 +206,15 @@ def _check_kinds(data: dict[str, Any]) -> None:
         if value is None:
             continue
         if isinstance(value, bool) or not isinstance(value, (str, int, float)):
-            raise TypeError(f"{name} must be a {'string' if name in ('strategy', 'dialect', 'encoding', 'simulator') else 'number'}")
+            raise TypeError(
+                f"{name} must be a {'string' if name in ('strategy', 'dialect', 'encoding', 'simulator') else 'number'}"
+            )
         OPTIONS_BY_NAME[option].parse(str(value))
-    if not isinstance(data.get("instance", 0), int) or isinstance(data.get("instance", 0), bool) or data.get("instance", 0) < 0:
+    if (
+        not isinstance(data.get("instance", 0), int)
+        or isinstance(data.get("instance", 0), bool)
+        or data.get("instance", 0) < 0
+    ):
         raise TypeError("instance must be a whole number from 0 up")
     values = data.get("values", {})
     if not isinstance(values, dict) or not all(isinstance(v, (str, int, float, bool)) for v in values.values()):

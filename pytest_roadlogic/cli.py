@@ -33,7 +33,19 @@ from .outcomes import CONFORMANT
 from .planning import NoPlanError, UnsatisfiableScenario
 from .progress import ProgressBar
 from .sampling import UnknownParameter
-from .settings import BASE, OPTIONS_BY_NAME, REFINED, STRATEGIES, OptionError, RunSettings, count as parse_count, lane_count, whole_number
+from .settings import (
+    BASE,
+    OPTIONS_BY_NAME,
+    REFINED,
+    STRATEGIES,
+    OptionError,
+    RunSettings,
+    lane_count,
+    whole_number,
+)
+from .settings import (
+    count as parse_count,
+)
 from .simulation.backends import UnknownSimulator
 from .simulation.named_drivers import DriverLoadError
 
@@ -45,54 +57,124 @@ RUN_FLAGS = ("seed", "tries", "encoding", "horizon", "plan-timeout", "sim-timeou
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog="roadlogic", description="Concrete, monitored simulations from OpenSCENARIO DSL scenarios.")
+    parser = argparse.ArgumentParser(
+        prog="roadlogic", description="Concrete, monitored simulations from OpenSCENARIO DSL scenarios."
+    )
     commands = parser.add_subparsers(dest="command", required=True)
     run = _scenario_command(commands, "run", "plan, simulate and monitor one scenario; write the artifacts")
     _run_flags(run, RUN_FLAGS)
     run.add_argument("--out", type=Path, default=Path("out"), help="artifact directory (default out/)")
-    run.add_argument("--instances", type=_flag(whole_instances), default=1, help="run the planner's first N different plans, artifacts in --out/instance-NNN (default 1)")
-    run.add_argument("--values", type=_values, default=None, help='logical parameter values as JSON, e.g. \'{"start_gap": 12.5}\' (SI units)')
-    run.add_argument("--driver", type=_driver, action="append", default=[], metavar="VEHICLE=MODULE:CLASS", help=DRIVER_HELP)
-    replay = commands.add_parser("replay", help="run one case again exactly: from the case.json of a failure, or from a file and values")
+    run.add_argument(
+        "--instances",
+        type=_flag(whole_instances),
+        default=1,
+        help="run the planner's first N different plans, artifacts in --out/instance-NNN (default 1)",
+    )
+    run.add_argument(
+        "--values",
+        type=_values,
+        default=None,
+        help="logical parameter values as JSON, e.g. '{\"start_gap\": 12.5}' (SI units)",
+    )
+    run.add_argument(
+        "--driver", type=_driver, action="append", default=[], metavar="VEHICLE=MODULE:CLASS", help=DRIVER_HELP
+    )
+    replay = commands.add_parser(
+        "replay", help="run one case again exactly: from the case.json of a failure, or from a file and values"
+    )
     replay.add_argument("case", type=Path, help="a case.json written for a failure, or an .osc file")
     replay.add_argument("--scenario", help="with an .osc file: the scenario (default: the first)")
-    replay.add_argument("--strategy", choices=STRATEGIES, default=REFINED, help="with an .osc file: how the case was made")
-    replay.add_argument("--values", type=_values, default=None, help="with an .osc file: the sampled values as JSON (refined)")
-    replay.add_argument("--instance", type=_flag(parse_count), default=0, help="with an .osc file: which plan, from 0 (base)")
+    replay.add_argument(
+        "--strategy", choices=STRATEGIES, default=REFINED, help="with an .osc file: how the case was made"
+    )
+    replay.add_argument(
+        "--values", type=_values, default=None, help="with an .osc file: the sampled values as JSON (refined)"
+    )
+    replay.add_argument(
+        "--instance", type=_flag(parse_count), default=0, help="with an .osc file: which plan, from 0 (base)"
+    )
     replay.add_argument("--lanes", type=_flag(lane_count), default=None, help=LANES_HELP)
-    replay.add_argument("--driver", type=_driver, action="append", default=[], metavar="VEHICLE=MODULE:CLASS", help="with an .osc file: " + DRIVER_HELP)
+    replay.add_argument(
+        "--driver",
+        type=_driver,
+        action="append",
+        default=[],
+        metavar="VEHICLE=MODULE:CLASS",
+        help="with an .osc file: " + DRIVER_HELP,
+    )
     _run_flags(replay, ("dialect",), "with an .osc file: ")
     _run_flags(replay, RUN_FLAGS, "with an .osc file: ")
     replay.add_argument("--out", type=Path, default=Path("out"), help="artifact directory (default out/)")
     _allow_read(replay)
     check = commands.add_parser("check", help="parse and check .osc files and folders; print every problem")
     check.add_argument("paths", type=Path, nargs="+", help=".osc files or folders (searched recursively)")
-    check.add_argument("--syntax-only", action="store_true", help="stop after parsing (for files written for other tools)")
+    check.add_argument(
+        "--syntax-only", action="store_true", help="stop after parsing (for files written for other tools)"
+    )
     check.add_argument("--lanes", type=_flag(lane_count), default=None, help=LANES_HELP)
     _run_flags(check, ("dialect",))
     _allow_read(check)
-    automaton = _scenario_command(commands, "automaton", "write a scenario's symbolic automaton as Graphviz DOT (and PNG when dot is installed)")
+    automaton = _scenario_command(
+        commands, "automaton", "write a scenario's symbolic automaton as Graphviz DOT (and PNG when dot is installed)"
+    )
     automaton.add_argument("--out", type=Path, default=None, help="the DOT file to write (default: <scenario>.dot)")
     plan = _scenario_command(commands, "plan", "solve a scenario's planning problem and print the plans as tables")
     plan.add_argument("--plans", type=int, default=1, help="how many plans to enumerate (default 1)")
     _run_flags(plan, ("seed", "encoding", "horizon", "plan-timeout"))
     plan.add_argument("--show-asp", action="store_true", help="also print the generated instance program")
-    bench = commands.add_parser("bench", help="the paper's evaluation (RQ1 time and conformance, RQ2 diversity): results, plots and report.md")
+    bench = commands.add_parser(
+        "bench", help="the paper's evaluation (RQ1 time and conformance, RQ2 diversity): results, plots and report.md"
+    )
     bench.add_argument("paths", type=Path, nargs="*", default=None, help=".osc files or folders (default: scenarios/)")
-    bench.add_argument("--base", type=_flag(parse_count), default=None, help="instances per scenario with the base strategy (default 10, --quick 2)")
-    bench.add_argument("--refined", type=_flag(parse_count), default=None, help="instances per scenario with the refined strategy (default 50, --quick 5)")
-    bench.add_argument("--quick", action="store_true", help="a small run (2 base and 5 refined instances per scenario, 1 and 2 realistic) to try the setup")
-    bench.add_argument("--realistic", type=Path, action="append", default=None, metavar="FOLDER",
-                       help="a suite run beside the paper's and reported apart, its .osc files at any depth, each in the dialect its folder's "
-                            "conftest.py gives (default: scenarios/realistic/ when no paths are given)")
+    bench.add_argument(
+        "--base",
+        type=_flag(parse_count),
+        default=None,
+        help="instances per scenario with the base strategy (default 10, --quick 2)",
+    )
+    bench.add_argument(
+        "--refined",
+        type=_flag(parse_count),
+        default=None,
+        help="instances per scenario with the refined strategy (default 50, --quick 5)",
+    )
+    bench.add_argument(
+        "--quick",
+        action="store_true",
+        help="a small run (2 base and 5 refined instances per scenario, 1 and 2 realistic) to try the setup",
+    )
+    bench.add_argument(
+        "--realistic",
+        type=Path,
+        action="append",
+        default=None,
+        metavar="FOLDER",
+        help="a suite run beside the paper's and reported apart, its .osc files at any depth, each in the dialect its folder's "
+        "conftest.py gives (default: scenarios/realistic/ when no paths are given)",
+    )
     bench.add_argument("--no-realistic", action="store_true", help="run the paper's scenarios only")
     _run_flags(bench, RUN_FLAGS)
-    bench.add_argument("--out", type=Path, default=Path("bench-report"), help="report directory (default bench-report/)")
-    bench.add_argument("--no-artifacts", action="store_true", help="do not write each instance's plan, trace, CommonRoad XML and plot")
-    bench.add_argument("--report-only", action="store_true", help="rebuild report.md and the plots from --out/results.json, without running")
+    bench.add_argument(
+        "--out", type=Path, default=Path("bench-report"), help="report directory (default bench-report/)"
+    )
+    bench.add_argument(
+        "--no-artifacts", action="store_true", help="do not write each instance's plan, trace, CommonRoad XML and plot"
+    )
+    bench.add_argument(
+        "--report-only",
+        action="store_true",
+        help="rebuild report.md and the plots from --out/results.json, without running",
+    )
     args = parser.parse_args(argv)
     args.argv = list(sys.argv[1:] if argv is None else argv)
-    command = {"run": _run, "check": _check, "automaton": _automaton, "plan": _plan, "replay": _replay, "bench": _bench}[args.command]
+    command = {
+        "run": _run,
+        "check": _check,
+        "automaton": _automaton,
+        "plan": _plan,
+        "replay": _replay,
+        "bench": _bench,
+    }[args.command]
     try:
         with contextlib.ExitStack() as args.held:  # what a command holds while it runs (its --out folder's claim)
             return command(args)
@@ -129,8 +211,14 @@ def _run_flags(command: argparse.ArgumentParser, names: tuple[str, ...], prefix:
     """The run settings ``names`` as flags, each read and checked by its ``settings.OPTIONS`` entry."""
     for name in names:
         option = OPTIONS_BY_NAME[name]
-        command.add_argument(f"--{name}", type=_flag(option.parse), default=None, dest=f"setting_{name.replace('-', '_')}", metavar=name.upper().replace('-', '_'),
-                             help=f"{prefix}{option.help} (default {option.default_text})")
+        command.add_argument(
+            f"--{name}",
+            type=_flag(option.parse),
+            default=None,
+            dest=f"setting_{name.replace('-', '_')}",
+            metavar=name.upper().replace("-", "_"),
+            help=f"{prefix}{option.help} (default {option.default_text})",
+        )
 
 
 def _run_settings(args: argparse.Namespace, **extra) -> RunSettings:
@@ -148,7 +236,9 @@ def _driver(text: str) -> tuple[str, str]:
     """A ``--driver`` option: ``VEHICLE=MODULE:CLASS``."""
     vehicle, _, name = text.partition("=")
     if not vehicle or ":" not in name or name.startswith(":") or name.endswith(":"):
-        raise argparse.ArgumentTypeError(f"{text!r} is not VEHICLE=MODULE:CLASS, e.g. ego=tests.drivers:NeverChangesLane")
+        raise argparse.ArgumentTypeError(
+            f"{text!r} is not VEHICLE=MODULE:CLASS, e.g. ego=tests.drivers:NeverChangesLane"
+        )
     return vehicle, name
 
 
@@ -161,7 +251,10 @@ def _driver_factory(names: dict[str, str], scenario_file: Path, roots=None):
 
     if not names:
         return None
-    search = [Path.cwd(), *(folder for folder in scenario_file.resolve().parents if roots is None or roots.allows(folder))]
+    search = [
+        Path.cwd(),
+        *(folder for folder in scenario_file.resolve().parents if roots is None or roots.allows(folder)),
+    ]
     return drivers_from_names(names, search)
 
 
@@ -173,10 +266,15 @@ def _drivers_of_case(case, given: dict[str, str]) -> dict[str, str]:
 
     if given == case.drivers:
         return given
-    recorded = ", ".join(f"{vehicle} by {name!r}" for vehicle, name in sorted(case.drivers.items())) or "the simulator's own only"
+    recorded = (
+        ", ".join(f"{vehicle} by {name!r}" for vehicle, name in sorted(case.drivers.items()))
+        or "the simulator's own only"
+    )
     flags = ", ".join(f"{vehicle} by {name!r}" for vehicle, name in sorted(given.items())) or "none"
-    raise DriverLoadError(f"the case was found with the drivers {recorded}; the command line gives {flags}. A case file's module names are not "
-                          "imported on its word: read them, then give each as --driver VEHICLE=MODULE:CLASS")
+    raise DriverLoadError(
+        f"the case was found with the drivers {recorded}; the command line gives {flags}. A case file's module names are not "
+        "imported on its word: read them, then give each as --driver VEHICLE=MODULE:CLASS"
+    )
 
 
 def _values(text: str) -> dict:
@@ -202,9 +300,15 @@ def _scenario_command(commands, name: str, help: str) -> argparse.ArgumentParser
 
 
 def _allow_read(command: argparse.ArgumentParser) -> None:
-    command.add_argument("--allow-read", type=Path, action="append", default=[], metavar="DIR",
-                         help="a folder outside the project that imports and case files may read from (repeat for several; default: the project's root "
-                              "and the named file's folder only)")
+    command.add_argument(
+        "--allow-read",
+        type=Path,
+        action="append",
+        default=[],
+        metavar="DIR",
+        help="a folder outside the project that imports and case files may read from (repeat for several; default: the project's root "
+        "and the named file's folder only)",
+    )
 
 
 def _roots(args: argparse.Namespace, named: Path):
@@ -233,7 +337,9 @@ def _plan(args: argparse.Namespace) -> int:
     scenario, automaton, plans, seconds = solved
     events = {t.id: t.label for t in automaton.transitions}
     for plan in plans:
-        print(f"plan {plan.index + 1} of scenario {scenario.name} (seed {plan.seed}): horizon {plan.horizon} steps of {plan.dt:g} s")
+        print(
+            f"plan {plan.index + 1} of scenario {scenario.name} (seed {plan.seed}): horizon {plan.horizon} steps of {plan.dt:g} s"
+        )
         print(plan.table())
         for step, transition in plan.transitions:
             print(f"  step {step}: {events[transition]}")
@@ -251,7 +357,9 @@ def _automaton(args: argparse.Namespace) -> int:
     from .confinement import safe_name
 
     # the name is the scenario's, which may be quoted (|../../../x|): it must not lead out of the working folder
-    written = write_dot(automaton, args.out or Path(f"{safe_name(scenario.name)}.dot"), title=f"{scenario.name} ({args.file})")
+    written = write_dot(
+        automaton, args.out or Path(f"{safe_name(scenario.name)}.dot"), title=f"{scenario.name} ({args.file})"
+    )
     print(automaton.describe())
     print(f"{len(automaton.locations)} locations, {len(automaton.transitions)} transitions")
     for kind, path in written.items():
@@ -279,14 +387,17 @@ def osc_files(paths: list[Path], recursive: bool = True) -> list[Path]:
     return found
 
 
-def check_file(path: Path, syntax_only: bool = False, lanes: int | None = None, dialect: str | None = None, roots=None) -> tuple[bool, str]:
+def check_file(
+    path: Path, syntax_only: bool = False, lanes: int | None = None, dialect: str | None = None, roots=None
+) -> tuple[bool, str]:
     """Whether the file is free of errors, and the formatted report; never raises for bad input.
 
     Beyond the front end's checks, each scenario's automaton is built, so that a construct the
     automaton cannot translate is reported here rather than when the scenario runs.
     """
     from .automaton import build_automaton
-    from .frontend import check_file as check, parse_file
+    from .frontend import check_file as check
+    from .frontend import parse_file
 
     try:
         if syntax_only:
@@ -306,7 +417,10 @@ def check_file(path: Path, syntax_only: bool = False, lanes: int | None = None, 
     except OscError as error:
         return False, error.report()
     except Exception as error:  # a bug of ours must not hide the other files' results
-        return False, f"{path}:1:1: error: internal error while checking ({type(error).__name__}: {error}); please report it"
+        return (
+            False,
+            f"{path}:1:1: error: internal error while checking ({type(error).__name__}: {error}); please report it",
+        )
 
 
 def _check(args: argparse.Namespace) -> int:
@@ -351,9 +465,14 @@ def _reporting_input_errors(args: argparse.Namespace, action):
         print(f"{args.file}: error: {error}", file=sys.stderr)
         return EXIT_INPUT
     except DriverLoadError as error:
-        replay_hint = f" (pytest --roadlogic-replay {shlex.quote(str(args.file))})" if str(args.file).endswith(".json") else ""
-        print(f"{args.file}: error: {error}; other drivers would not reproduce the case\n"
-              f"    hint: make the module importable from here, or run it with pytest from the session whose conftest.py gives it{replay_hint}", file=sys.stderr)
+        replay_hint = (
+            f" (pytest --roadlogic-replay {shlex.quote(str(args.file))})" if str(args.file).endswith(".json") else ""
+        )
+        print(
+            f"{args.file}: error: {error}; other drivers would not reproduce the case\n"
+            f"    hint: make the module importable from here, or run it with pytest from the session whose conftest.py gives it{replay_hint}",
+            file=sys.stderr,
+        )
         return EXIT_INPUT
     except KeyError as error:
         print(f"{args.file}: error: no scenario named {error.args[0]!r} in the file", file=sys.stderr)
@@ -376,7 +495,9 @@ def _run(args: argparse.Namespace) -> int:
 
     def run_one():
         runner = Runner(_load(args), _run_settings(args), _driver_factory(dict(args.driver), args.file))
-        case = runner.case(strategy=REFINED, values=args.values) if args.values else runner.case(strategy=BASE, instance=0)
+        case = (
+            runner.case(strategy=REFINED, values=args.values) if args.values else runner.case(strategy=BASE, instance=0)
+        )
         return runner.run_case(case)
 
     result = _reporting_input_errors(args, run_one)
@@ -391,7 +512,9 @@ def _run_many(args: argparse.Namespace) -> int:
     from .runner import Runner
 
     def all_instances():
-        with replaced_directory(args.out, ARTIFACT_NAMES) as staging:  # the folder gets the new set whole, or keeps the old
+        with replaced_directory(
+            args.out, ARTIFACT_NAMES
+        ) as staging:  # the folder gets the new set whole, or keeps the old
             return list(instances(staging))
 
     def instances(staging: Path):
@@ -409,7 +532,10 @@ def _run_many(args: argparse.Namespace) -> int:
             conformant += not result.failed
             bar.update(done, f"{CONFORMANT} {conformant}")
             tries = result.run.tries
-            yield f"instance {done}: {result.outcome} after {tries} tr{'y' if tries == 1 else 'ies'}, {sum(result.seconds.values()):.2f} s  {directory}", not result.failed
+            yield (
+                f"instance {done}: {result.outcome} after {tries} tr{'y' if tries == 1 else 'ies'}, {sum(result.seconds.values()):.2f} s  {directory}",
+                not result.failed,
+            )
         bar.close()
 
     results = _reporting_input_errors(args, all_instances)
@@ -432,19 +558,30 @@ def _replay(args: argparse.Namespace) -> int:
         if args.case.suffix == ".json":
             from .confinement import ReadRoots, project_root
 
-            roots = ReadRoots.of(project_root(), extra=args.allow_read)  # not the case file's folder: it may be anywhere
+            roots = ReadRoots.of(
+                project_root(), extra=args.allow_read
+            )  # not the case file's folder: it may be anywhere
             case = Case.load(args.case)
             case = replaced(case, path=str(case.scenario_file(args.case, roots)))
             _drivers_of_case(case, dict(args.driver))
             for difference in case.version_differences():
-                print(f"{args.case}: warning: written with {difference}; the replay may plan or drive otherwise", file=sys.stderr)
+                print(
+                    f"{args.case}: warning: written with {difference}; the replay may plan or drive otherwise",
+                    file=sys.stderr,
+                )
         else:
             from .frontend import load_file
 
             roots = _roots(args, args.case)
-            name = load_file(args.case, args.lanes, dialect=args.setting_dialect, roots=roots).scenario_to_run(args.scenario).name
+            name = (
+                load_file(args.case, args.lanes, dialect=args.setting_dialect, roots=roots)
+                .scenario_to_run(args.scenario)
+                .name
+            )
             identity = {"values": args.values or {}} if args.strategy == REFINED else {"instance": args.instance}
-            case = Case.of(args.case, name, _run_settings(args), strategy=args.strategy, drivers=dict(args.driver), **identity)
+            case = Case.of(
+                args.case, name, _run_settings(args), strategy=args.strategy, drivers=dict(args.driver), **identity
+            )
         return replay(case, drivers=_driver_factory(case.drivers, Path(case.path), roots), roots=roots)
 
     args.file = args.case
@@ -484,7 +621,9 @@ def _show(result, out: Path) -> int:
     with replaced_directory(out, ARTIFACT_NAMES) as staging:  # the folder gets the new set whole, or keeps the old
         paths = {kind: out / path.name for kind, path in write_artifacts(outcome, staging).items()}
     result.seconds["artifacts"] = time.perf_counter() - started
-    print(f"scenario {case.scenario} (seed {case.seed}): {result.outcome} after {outcome.tries} tr{'y' if outcome.tries == 1 else 'ies'}")
+    print(
+        f"scenario {case.scenario} (seed {case.seed}): {result.outcome} after {outcome.tries} tr{'y' if outcome.tries == 1 else 'ies'}"
+    )
     for stage, seconds in result.seconds.items():
         print(f"  {stage:<12} {seconds:7.3f} s")
     print(outcome.verdict.explain())
@@ -496,7 +635,8 @@ def _show(result, out: Path) -> int:
 def _library_only(path: Path, dialect: str | None) -> bool:
     """A file that declares no scenario to run (a suite's lib.osc): as pytest collects no item from
     it, the bench runs none. A file with errors is not: the bench reports them."""
-    from .frontend import OscError, check_file as check
+    from .frontend import OscError
+    from .frontend import check_file as check
 
     try:
         checked = check(path, dialect=dialect)
@@ -509,19 +649,33 @@ def _bench(args: argparse.Namespace) -> int:
     """Run the evaluation and write its report; exit 0 when every target is met, 1 when one is
     missed, 2 when the input is unusable."""
     from .evaluation import BenchmarkResults, BenchmarkSettings, run_benchmark, summaries, targets_met, write_report
-    from .evaluation.runner import (PAPER_COUNTS, QUICK_COUNTS, REALISTIC_COUNTS, REALISTIC_QUICK_COUNTS, RESULTS_FILE, Suite,
-                                    conftest_dialect)
+    from .evaluation.runner import (
+        PAPER_COUNTS,
+        QUICK_COUNTS,
+        REALISTIC_COUNTS,
+        REALISTIC_QUICK_COUNTS,
+        RESULTS_FILE,
+        Suite,
+        conftest_dialect,
+    )
 
     if args.report_only:
         try:
             results = BenchmarkResults.load(args.out / RESULTS_FILE)
         except (OSError, ValueError, KeyError, TypeError) as error:
-            print(f"{args.out / RESULTS_FILE}: error: cannot read the results of a run ({error}); run roadlogic bench first", file=sys.stderr)
+            print(
+                f"{args.out / RESULTS_FILE}: error: cannot read the results of a run ({error}); run roadlogic bench first",
+                file=sys.stderr,
+            )
             return EXIT_INPUT
     else:
         given_paths = bool(args.paths)
         args.paths = args.paths or [Path("scenarios")]
-        realistic_folders = args.realistic if args.realistic is not None else ([] if given_paths else [p for p in [Path("scenarios") / "realistic"] if p.is_dir()])
+        realistic_folders = (
+            args.realistic
+            if args.realistic is not None
+            else ([] if given_paths else [p for p in [Path("scenarios") / "realistic"] if p.is_dir()])
+        )
         if args.no_realistic:
             realistic_folders = []
         missing = [p for p in [*args.paths, *realistic_folders] if not p.exists()]
@@ -529,7 +683,9 @@ def _bench(args: argparse.Namespace) -> int:
             print(f"{path}: error: no such file or folder; give the .osc files or folders to evaluate", file=sys.stderr)
         # a folder's own .osc files: scenarios/ is the paper's seven, scenarios/realistic/ is its own suite
         files = osc_files(args.paths, recursive=False)
-        realistic_files = [f for f in osc_files(realistic_folders) if not _library_only(f, conftest_dialect(f, realistic_folders))]
+        realistic_files = [
+            f for f in osc_files(realistic_folders) if not _library_only(f, conftest_dialect(f, realistic_folders))
+        ]
         if missing or not files:
             if not missing:
                 print(f"{' '.join(map(str, args.paths))}: error: no .osc files there", file=sys.stderr)
@@ -539,13 +695,22 @@ def _bench(args: argparse.Namespace) -> int:
         realistic = None
         if realistic_files:
             # the realistic suite's timed phases need the continuous encoding (the default of a run)
-            realistic = Suite(tuple(realistic_files), *realistic_counts, run=_run_settings(args),
-                              dialects={str(f): d for f in realistic_files if (d := conftest_dialect(f, realistic_folders)) is not None})
+            realistic = Suite(
+                tuple(realistic_files),
+                *realistic_counts,
+                run=_run_settings(args),
+                dialects={
+                    str(f): d for f in realistic_files if (d := conftest_dialect(f, realistic_folders)) is not None
+                },
+            )
         settings = BenchmarkSettings(
-            tuple(files), base=counts[0] if args.base is None else args.base, refined=counts[1] if args.refined is None else args.refined,
+            tuple(files),
+            base=counts[0] if args.base is None else args.base,
+            refined=counts[1] if args.refined is None else args.refined,
             # the paper's evaluation (docs/evaluation.md) was measured on the grid encoding: it stays
             # the bench's default until the continuous one is measured there (--encoding continuous)
-            run=_run_settings(args, **({} if args.setting_encoding else {"encoding": "grid"})), artifacts=not args.no_artifacts,
+            run=_run_settings(args, **({} if args.setting_encoding else {"encoding": "grid"})),
+            artifacts=not args.no_artifacts,
             realistic=realistic,
         )
         total = len(files) * (settings.base + settings.refined)
@@ -553,8 +718,10 @@ def _bench(args: argparse.Namespace) -> int:
         if realistic is not None:
             total += len(realistic_files) * (realistic.base + realistic.refined)
             also = f"; {len(realistic_files)} realistic, {realistic.base} base and {realistic.refined} refined each"
-        print(f"{len(files)} scenarios, {settings.base} base and {settings.refined} refined instances each{also} ({total} in all), seed {settings.run.seed}",
-              file=sys.stderr)
+        print(
+            f"{len(files)} scenarios, {settings.base} base and {settings.refined} refined instances each{also} ({total} in all), seed {settings.run.seed}",
+            file=sys.stderr,
+        )
         bar = ProgressBar(total)
         conformant = 0
 
@@ -565,7 +732,7 @@ def _bench(args: argparse.Namespace) -> int:
 
         results = run_benchmark(settings, args.out, progress, command=["roadlogic", *args.argv])
         bar.close()
-        for name, message in results.errors.items():
+        for message in results.errors.values():
             print(message, file=sys.stderr)
     table = summaries(results)
     report = write_report(results, args.out, table)

@@ -51,7 +51,7 @@ class ReadRoots:
     folders: tuple[Path, ...]
 
     @classmethod
-    def of(cls, *folders: str | Path | None, extra: Iterable[str | Path] = ()) -> "ReadRoots":
+    def of(cls, *folders: str | Path | None, extra: Iterable[str | Path] = ()) -> ReadRoots:
         """Roots from folders (None skipped; a file stands for its folder), resolved once."""
         resolved: list[Path] = []
         for folder in (*folders, *extra):
@@ -65,7 +65,7 @@ class ReadRoots:
         return cls(tuple(resolved))
 
     @classmethod
-    def around(cls, named: str | Path, extra: Iterable[str | Path] = ()) -> "ReadRoots":
+    def around(cls, named: str | Path, extra: Iterable[str | Path] = ()) -> ReadRoots:
         """The default roots of a file the user named: the project's root and the file's folder."""
         return cls.of(project_root(), Path(named).resolve().parent, extra=extra)
 
@@ -104,7 +104,15 @@ def regular_file_problem(path: str | Path) -> str | None:
         return getattr(error, "strerror", None) or "cannot be read"
     if stat.S_ISREG(mode):
         return None
-    kind = "a folder" if stat.S_ISDIR(mode) else "a FIFO" if stat.S_ISFIFO(mode) else "a socket" if stat.S_ISSOCK(mode) else "a device"
+    kind = (
+        "a folder"
+        if stat.S_ISDIR(mode)
+        else "a FIFO"
+        if stat.S_ISFIFO(mode)
+        else "a socket"
+        if stat.S_ISSOCK(mode)
+        else "a device"
+    )
     return f"not a regular file ({kind})"
 
 

@@ -44,7 +44,9 @@ class Outcome:
     instance: int = 0  # its index among the instances of one planner (base strategy)
 
 
-def load_scenario(path: str | Path, name: str | None = None, lanes: int | None = None, dialect: str | None = None, roots=None) -> CheckedScenario:
+def load_scenario(
+    path: str | Path, name: str | None = None, lanes: int | None = None, dialect: str | None = None, roots=None
+) -> CheckedScenario:
     """A checked scenario of ``path`` (the first one with a behavior unless ``name`` is given).
 
     ``lanes`` overrides the road's lane count, which otherwise comes from the scenario; ``dialect``
@@ -74,7 +76,9 @@ def run_scenario(
     Without it (the base strategy) the planner chooses every open value itself. ``simulator`` is the
     backend (default: frenetix).
     """
-    return next(run_instances(scenario, 1, seed, settings, max_tries, drivers, values, simulation_time_limit, simulator))
+    return next(
+        run_instances(scenario, 1, seed, settings, max_tries, drivers, values, simulation_time_limit, simulator)
+    )
 
 
 def run_instances(
@@ -141,7 +145,9 @@ def run_instances(
 Guide = Callable[[object], SymbolicAutomaton]  # planner settings -> the automaton they solve
 
 
-def _guided(scenario: CheckedScenario, specification: SymbolicAutomaton, values, settings, seed: int) -> tuple[Guide, object, int]:
+def _guided(
+    scenario: CheckedScenario, specification: SymbolicAutomaton, values, settings, seed: int
+) -> tuple[Guide, object, int]:
     """The automaton a planner solves for a sample, as a function of that planner's settings
     (``specification`` without a sample), and the settings and seed it solves with: each sample is
     its own random concrete scenario, fixed by the run's seed and the values.
@@ -167,8 +173,14 @@ def _guided(scenario: CheckedScenario, specification: SymbolicAutomaton, values,
     return guide, dataclasses.replace(settings, random_start=True), sample_seed(seed, values)
 
 
-def has_plan(scenario: CheckedScenario, values: dict[str, object], seed: int = 1, settings: PlanningSettings | ContinuousSettings | None = None,
-             fallbacks: bool = True, beyond_limits: bool = True) -> bool:
+def has_plan(
+    scenario: CheckedScenario,
+    values: dict[str, object],
+    seed: int = 1,
+    settings: PlanningSettings | ContinuousSettings | None = None,
+    fallbacks: bool = True,
+    beyond_limits: bool = True,
+) -> bool:
     """Whether the scenario narrowed to ``values`` has a plan (planning alone: no simulation), with
     every fallback ``run_instances`` tries or, without ``fallbacks``, within the planner's margins
     and limits; without ``beyond_limits``, the fallbacks stay within a real car's limits
@@ -180,7 +192,10 @@ def has_plan(scenario: CheckedScenario, values: dict[str, object], seed: int = 1
     guide, settings, seed = _guided(scenario, build_automaton(scenario), values, settings, seed)
     try:
         plans = planner_for(guide(settings), settings, seed).plans(limit=1)
-        return next(_with_fallbacks(plans, guide, settings, seed, 1, beyond_limits) if fallbacks else plans, None) is not None
+        return (
+            next(_with_fallbacks(plans, guide, settings, seed, 1, beyond_limits) if fallbacks else plans, None)
+            is not None
+        )
     except (PlanningTimeout, HorizonTooShort):
         return True
     except NoPlanError:
@@ -193,8 +208,12 @@ def has_plan(scenario: CheckedScenario, values: dict[str, object], seed: int = 1
 # bumpers, and a scenario may ask for less (cut_out_obstacle stops the ego 5-15 m behind a wreck,
 # which had been reported as a value no concrete scenario has); relaxed, 0.5 m between bumpers
 RELAXED_LIMITS = (
-    ("max_jerk", 50.0, "m/s^3"), ("min_acceleration", -20.0, "m/s^2"), ("max_acceleration", 12.0, "m/s^2"),
-    ("max_speed", 100.0, "m/s"), ("closing_time", 0.0, "s"), ("min_gap", 5.0, "m"),
+    ("max_jerk", 50.0, "m/s^3"),
+    ("min_acceleration", -20.0, "m/s^2"),
+    ("max_acceleration", 12.0, "m/s^2"),
+    ("max_speed", 100.0, "m/s"),
+    ("closing_time", 0.0, "s"),
+    ("min_gap", 5.0, "m"),
 )
 # of those, a real car's: a plan that needs one of them relaxed asks more than a car can do, so
 # its values have no concrete scenario (the scenario's, not the tool's; follow_then_overtake's
@@ -207,11 +226,17 @@ SPACING = ALL_LIMITS - CAR_LIMITS
 
 def _relaxed(settings, names=None):
     """``settings`` with the ``RELAXED_LIMITS`` named (all by default) relaxed."""
-    return dataclasses.replace(settings, **{name: value for name, value, _ in RELAXED_LIMITS if names is None or name in names})
+    return dataclasses.replace(
+        settings, **{name: value for name, value, _ in RELAXED_LIMITS if names is None or name in names}
+    )
 
 
 def _relaxed_names(settings, names=None) -> list[str]:
-    return [f"{name} {getattr(settings, name):g} {unit} relaxed to {value:g}" for name, value, unit in RELAXED_LIMITS if names is None or name in names]
+    return [
+        f"{name} {getattr(settings, name):g} {unit} relaxed to {value:g}"
+        for name, value, unit in RELAXED_LIMITS
+        if names is None or name in names
+    ]
 
 
 def _tool_limit(outcome: Outcome, guide: Guide, settings, seed: int):
@@ -223,12 +248,16 @@ def _tool_limit(outcome: Outcome, guide: Guide, settings, seed: int):
     if outcome.plan.stats.get("thinned_margins"):
         return MarginsBind(settings.describe_margins(), settings.thinned().describe_margins(), explanation)
     if outcome.plan.stats.get("finer_step"):
-        return StepBinds(f"no plan in steps of {settings.dt:g} s; plans in steps of {settings.dt / 2:g} s exist, so the scenario itself "
-                         f"can be met at these values, but their simulation was not accepted (the planning step is a setting of the tool): "
-                         f"{explanation}")
+        return StepBinds(
+            f"no plan in steps of {settings.dt:g} s; plans in steps of {settings.dt / 2:g} s exist, so the scenario itself "
+            f"can be met at these values, but their simulation was not accepted (the planning step is a setting of the tool): "
+            f"{explanation}"
+        )
     if outcome.plan.stats.get("relaxed_limits"):
         names = _binding_limits(guide, settings, seed)
-        return LimitsBind(_relaxed_names(settings, names), explanation=explanation, beyond_a_car=bool(names & CAR_LIMITS))
+        return LimitsBind(
+            _relaxed_names(settings, names), explanation=explanation, beyond_a_car=bool(names & CAR_LIMITS)
+        )
     return None
 
 
@@ -253,7 +282,9 @@ def _binding_limits(guide: Guide, settings, seed: int) -> frozenset[str]:
     return ALL_LIMITS
 
 
-def _with_fallbacks(plans: Iterator[Plan], guide: Guide, settings, seed: int, limit: int, beyond_limits: bool = True) -> Iterator[Plan]:
+def _with_fallbacks(
+    plans: Iterator[Plan], guide: Guide, settings, seed: int, limit: int, beyond_limits: bool = True
+) -> Iterator[Plan]:
     """``plans``, or, when the planner has none at all, those of a planner that keeps
     ``settings.fallback_margins`` of its margins (``stats["thinned_margins"]``), or else those of
     one that also plans in half the step (``stats["finer_step"]``), or else of one that drives
@@ -275,11 +306,15 @@ def _with_fallbacks(plans: Iterator[Plan], guide: Guide, settings, seed: int, li
             raise
         quiet = dataclasses.replace(thinned, explain_unsatisfiable=False)
         # half the planning step: durations between whole seconds (a 0.5 s wait, a 3.6 s brake)
-        finer = dataclasses.replace(quiet, dt=quiet.dt / 2, max_horizon=quiet.max_horizon * 2, lane_change_gap=quiet.lane_change_gap * 2)
+        finer = dataclasses.replace(
+            quiet, dt=quiet.dt / 2, max_horizon=quiet.max_horizon * 2, lane_change_gap=quiet.lane_change_gap * 2
+        )
         # the spacing first, then a car's limits too: a plan within a car's limits is one a car can
         # drive (cut_out_obstacle's stop 5 m behind its wreck, planned with every limit relaxed,
         # braked with a jerk of 4 m/s^3 and its simulated ego hit the wreck)
-        relaxed = [(_relaxed(quiet, SPACING), "relaxed_limits")] + ([(_relaxed(quiet), "relaxed_limits")] if beyond_limits else [])
+        relaxed = [(_relaxed(quiet, SPACING), "relaxed_limits")] + (
+            [(_relaxed(quiet), "relaxed_limits")] if beyond_limits else []
+        )
         for fallback_settings, mark in ((quiet, "thinned_margins"), (finer, "finer_step"), *relaxed):
             try:
                 fallback = planner_for(guide(fallback_settings), fallback_settings, seed).plans(limit=limit)

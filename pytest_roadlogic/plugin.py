@@ -27,7 +27,8 @@ from pathlib import Path
 import pytest
 
 from .outcomes import OUTCOMES, STAGES, Tally, key
-from .settings import BASE, OPTIONS, REFINED, OptionError, RunSettings, dialect as parse_dialect
+from .settings import BASE, OPTIONS, REFINED, OptionError, RunSettings
+from .settings import dialect as parse_dialect
 
 DEFAULT_ARTIFACTS = "roadlogic-artifacts"
 SLOW_ACTORS = 3  # a scenario with more moving vehicles than this is marked slow
@@ -103,7 +104,9 @@ def _settings(config: pytest.Config) -> RunSettings:
     from .simulation.backends import available  # names only: no backend is imported
 
     if settings.simulator not in available():
-        raise pytest.UsageError(f"roadlogic: --roadlogic-simulator (ini roadlogic_simulator): no simulator named {settings.simulator!r}; available: {', '.join(available())}")
+        raise pytest.UsageError(
+            f"roadlogic: --roadlogic-simulator (ini roadlogic_simulator): no simulator named {settings.simulator!r}; available: {', '.join(available())}"
+        )
     return settings
 
 
@@ -127,7 +130,11 @@ def read_roots(config: pytest.Config, path: Path):
     folder and the folders ``--roadlogic-allow-read`` names (confinement.ReadRoots)."""
     from .confinement import ReadRoots
 
-    extra = [Path(config.rootpath) / folder.strip() for folder in (_text(config, "allow-read") or "").split(os.pathsep) if folder.strip()]
+    extra = [
+        Path(config.rootpath) / folder.strip()
+        for folder in (_text(config, "allow-read") or "").split(os.pathsep)
+        if folder.strip()
+    ]
     return ReadRoots.of(config.rootpath, Path(path).parent, extra=extra)
 
 
@@ -146,7 +153,9 @@ class OscFile(pytest.File):
             dialect = self.ihook.pytest_roadlogic_dialect(config=self.config, path=self.path)
             if dialect is not None and dialect != settings.dialect:
                 settings = replace(settings, dialect=parse_dialect(dialect))
-            checked = check_file(self.path, settings.lanes, dialect=settings.dialect, roots=read_roots(self.config, self.path))
+            checked = check_file(
+                self.path, settings.lanes, dialect=settings.dialect, roots=read_roots(self.config, self.path)
+            )
             checked.raise_for_errors()
         except OscError as error:
             # A broken .osc file is reported, but must not stop the other scenarios from running
@@ -158,7 +167,9 @@ class OscFile(pytest.File):
             raise self.CollectError(f"{self.path}: pytest_roadlogic_dialect: {error}") from None
         except Exception as error:  # a bug of ours must not stop the other files either
             self.config.option.continue_on_collection_errors = True
-            raise self.CollectError(f"{self.path}:1:1: error: internal error while checking ({type(error).__name__}: {error}); please report it") from None
+            raise self.CollectError(
+                f"{self.path}:1:1: error: internal error while checking ({type(error).__name__}: {error}); please report it"
+            ) from None
         for warning in checked.warnings:
             self.warn(OscWarning(OscError([warning], sources=checked.sources).report()))
         for scenario in checked.scenarios:
@@ -186,7 +197,9 @@ class ScenarioItem(pytest.Item):
         self.settings = settings  # the session's, with this file's dialect
         self.tally = Tally()
         self.drivers = None  # the hook's drivers, recording which class drove which vehicle (set in runtest)
-        self.failure_artifacts: tuple[dict, list[str]] | None = None  # (artifact paths, replay commands) of the reported case
+        self.failure_artifacts: tuple[dict, list[str]] | None = (
+            None  # (artifact paths, replay commands) of the reported case
+        )
 
     # ---------------------------------------------------------------- running
 
@@ -212,15 +225,26 @@ class ScenarioItem(pytest.Item):
             else:
                 sampling_seed = self.config.getoption("hypothesis_seed", None)
                 if sampling_seed is not None:
-                    sampling_seed = int(sampling_seed) if sampling_seed.lstrip("-").isdigit() else sampling_seed  # as Hypothesis reads it
+                    sampling_seed = (
+                        int(sampling_seed) if sampling_seed.lstrip("-").isdigit() else sampling_seed
+                    )  # as Hypothesis reads it
                     self.user_properties.append(("hypothesis_seed", sampling_seed))
                 with _hypothesis_statistics(self):
-                    runner.refined(self._count, key=self.nodeid.encode(), discarded=self._discard, set_aside=lambda result: self.tally.aside(result.seconds),
-                                   sampling_seed=sampling_seed)
+                    runner.refined(
+                        self._count,
+                        key=self.nodeid.encode(),
+                        discarded=self._discard,
+                        set_aside=lambda result: self.tally.aside(result.seconds),
+                        sampling_seed=sampling_seed,
+                    )
         except ScenarioFailed as failure:
             self._report_failure(runner, failure.result)
         finally:
-            self.user_properties += [("examples", self.tally.cases), ("discarded", self.tally.discarded), ("set_aside", self.tally.set_aside)]
+            self.user_properties += [
+                ("examples", self.tally.cases),
+                ("discarded", self.tally.discarded),
+                ("set_aside", self.tally.set_aside),
+            ]
             self.user_properties += [(key(outcome), self.tally.outcomes[outcome]) for outcome in OUTCOMES]
             self.user_properties += [(f"seconds_{stage}", round(self.tally.seconds[stage], 3)) for stage in STAGES]
 
@@ -261,9 +285,12 @@ class ScenarioItem(pytest.Item):
         if refused:
             pytest.fail(refused, pytrace=False)
         if result.run is not None and self.drivers.names != case.drivers:
-            pytest.fail(f"--roadlogic-replay: the case was found with the drivers {_drivers_text(case.drivers)}, "
-                        f"this session drives with {_drivers_text(self.drivers.names)}; "
-                        "replay it from the session (conftest.py files) that found it", pytrace=False)
+            pytest.fail(
+                f"--roadlogic-replay: the case was found with the drivers {_drivers_text(case.drivers)}, "
+                f"this session drives with {_drivers_text(self.drivers.names)}; "
+                "replay it from the session (conftest.py files) that found it",
+                pytrace=False,
+            )
         self._count(result)
 
     # ---------------------------------------------------------------- reporting
@@ -277,7 +304,12 @@ class ScenarioItem(pytest.Item):
 
         if result.outcome == NO_PLAN:
             result = runner.explained(result)  # the search did not ask why; ask for the reported case
-        case = replace(result.case, path=self._relative(result.case.path), drivers=dict(self.drivers.names), versions=installed_versions())
+        case = replace(
+            result.case,
+            path=self._relative(result.case.path),
+            drivers=dict(self.drivers.names),
+            versions=installed_versions(),
+        )
         result = replace(result, case=case)
         why = result.message  # for a clash, the report with the constraints at their lines (runner._failure)
         directory = Path(self.config.rootpath) / _text(self.config, "artifacts") / safe_name(self.nodeid)
@@ -290,11 +322,15 @@ class ScenarioItem(pytest.Item):
         where = "at" if case.strategy == REFINED else f"at instance {case.instance} of"
         if result.at_no_values:
             where = "at any values; for example at"
-        lines = [f"scenario {self.scenario.name}: {result.kind} ({result.outcome}) {where} these values (seed {case.seed}{self._sampled_with()}, {self.tally.cases} examples run):"]
+        lines = [
+            f"scenario {self.scenario.name}: {result.kind} ({result.outcome}) {where} these values (seed {case.seed}{self._sampled_with()}, {self.tally.cases} examples run):"
+        ]
         if case.values:
             for line in describe_values(logical_parameters(self.scenario), case.values):
                 alone = result.culprit is not None and line.startswith(f"{result.culprit} = ")
-                lines.append(f"  {line}" + (": no concrete scenario has this value, whatever the others" if alone else ""))
+                lines.append(
+                    f"  {line}" + (": no concrete scenario has this value, whatever the others" if alone else "")
+                )
         else:
             lines.append("  (no logical parameters: the planner chose every value)")
         if result.run is not None:
@@ -303,8 +339,11 @@ class ScenarioItem(pytest.Item):
             lines.append(why)
         lines += ["artifacts:", *(f"  {kind}: {path}" for kind, path in paths.items())]
         # shell-quoted: a file named a'$(touch P)'b.osc must not run a command when the line is pasted
-        replay = [f"{shlex.join(['pytest', self.nodeid, '--roadlogic-replay', str(paths['case'])])}   (with this session's drivers)",
-                  case.command(paths["case"]), case.command()]
+        replay = [
+            f"{shlex.join(['pytest', self.nodeid, '--roadlogic-replay', str(paths['case'])])}   (with this session's drivers)",
+            case.command(paths["case"]),
+            case.command(),
+        ]
         lines.append(f"replay: {replay[0]}")
         lines += [f"    or: {command}" for command in replay[1:]]
         self.failure_artifacts = (paths, replay)
@@ -317,7 +356,11 @@ class ScenarioItem(pytest.Item):
 
     def _sampled_with(self) -> str:
         seed = self.config.getoption("hypothesis_seed", None)
-        return f", samples drawn with --hypothesis-seed {seed}" if seed is not None and self.settings.strategy == REFINED else ""
+        return (
+            f", samples drawn with --hypothesis-seed {seed}"
+            if seed is not None and self.settings.strategy == REFINED
+            else ""
+        )
 
     def _relative(self, path: str) -> str:
         """``path`` relative to the rootdir, where it is under it: a case file that replays on another checkout."""
@@ -337,9 +380,11 @@ class ScenarioItem(pytest.Item):
         return self.path, self.scenario.scenario.location.line - 1, f"scenario {self.scenario.name}"
 
 
-def _replays(item: "ScenarioItem", case) -> bool:
+def _replays(item: ScenarioItem, case) -> bool:
     """Whether ``case`` is a case of ``item``: its file (relative to the rootdir) and its scenario."""
-    return (Path(item.config.rootpath) / case.path).resolve() == item.path.resolve() and case.scenario == item.scenario.name
+    return (
+        Path(item.config.rootpath) / case.path
+    ).resolve() == item.path.resolve() and case.scenario == item.scenario.name
 
 
 def pytest_collection_modifyitems(session: pytest.Session, config: pytest.Config, items: list) -> None:
@@ -352,8 +397,10 @@ def pytest_collection_modifyitems(session: pytest.Session, config: pytest.Config
 
     case = Case.load(replay)
     if not any(isinstance(item, ScenarioItem) and _replays(item, case) for item in items):
-        raise pytest.UsageError(f"roadlogic: --roadlogic-replay {replay}: no collected scenario is {case.path}::{case.scenario}; "
-                                f"give pytest the folder or file that holds it (paths are relative to the rootdir {config.rootpath})")
+        raise pytest.UsageError(
+            f"roadlogic: --roadlogic-replay {replay}: no collected scenario is {case.path}::{case.scenario}; "
+            f"give pytest the folder or file that holds it (paths are relative to the rootdir {config.rootpath})"
+        )
 
 
 def _hypothesis_statistics(item: pytest.Item):
@@ -417,9 +464,14 @@ class SessionSummary:
         outcomes = ", ".join(f"{c.get(key(o), 0)} {o}" for o in OUTCOMES)
         seconds = ", ".join(f"{stage} {c.get(f'seconds_{stage}', 0):.1f} s" for stage in STAGES)
         terminalreporter.write_sep("-", "roadlogic")
-        discarded = f" ({c['discarded']} samples without a plan discarded: --roadlogic-no-plan discard)" if c.get("discarded") else ""
+        discarded = (
+            f" ({c['discarded']} samples without a plan discarded: --roadlogic-no-plan discard)"
+            if c.get("discarded")
+            else ""
+        )
         terminalreporter.write_line(f"{self.items} scenarios, {c.get('examples', 0)} examples: {outcomes}{discarded}")
         if c.get("set_aside"):
-            terminalreporter.write_line(f"{c['set_aside']} samples set aside: each of their values has plans within the planner's margins and limits, but not together")
+            terminalreporter.write_line(
+                f"{c['set_aside']} samples set aside: each of their values has plans within the planner's margins and limits, but not together"
+            )
         terminalreporter.write_line(f"time per stage: {seconds}")
-

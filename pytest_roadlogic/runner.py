@@ -26,7 +26,6 @@ from .planning import HorizonTooShort, LimitsBind, NoPlanError, PlanningTimeout,
 from .settings import BASE, DISCARD, REFINED, RunSettings
 from .simulation import DriverFactory, SimulationTimeout, Simulator
 
-
 CANNOT_INSTANTIATE = "the scenario cannot be instantiated"
 TOOL_LIMIT = "a limit of the tool binds"
 NOT_ACCEPTED = "the simulation was not accepted"
@@ -63,7 +62,9 @@ class CaseResult:
             return "accepted"
         if self.outcome == NON_CONFORMANT:
             return NOT_ACCEPTED
-        if isinstance(self.error, UnsatisfiableScenario) or (self.outcome == NO_PLAN and self.error is not None and type(self.error) is NoPlanError):
+        if isinstance(self.error, UnsatisfiableScenario) or (
+            self.outcome == NO_PLAN and self.error is not None and type(self.error) is NoPlanError
+        ):
             return CANNOT_INSTANTIATE
         if isinstance(self.error, LimitsBind) and self.error.beyond_a_car:
             return CANNOT_INSTANTIATE  # only plans no car can drive: the values ask too much, not the tool
@@ -80,8 +81,12 @@ class Runner:
     """
 
     def __init__(
-        self, scenario: CheckedScenario, settings: RunSettings, drivers: DriverFactory | None = None,
-        simulator: Simulator | None = None, explain: bool = True,
+        self,
+        scenario: CheckedScenario,
+        settings: RunSettings,
+        drivers: DriverFactory | None = None,
+        simulator: Simulator | None = None,
+        explain: bool = True,
     ) -> None:
         self.scenario = scenario
         self.settings = settings
@@ -111,7 +116,7 @@ class Runner:
         started = time.perf_counter()
         last = None
         try:
-            for last in self._instances(count, case.values or None, explain, fallbacks):
+            for last in self._instances(count, case.values or None, explain, fallbacks):  # noqa: B007 (the last one is what counts)
                 pass
         except (NoPlanError, SimulationTimeout) as error:
             return _failure(case, error, started)
@@ -137,8 +142,13 @@ class Runner:
             yield _failure(self.case(strategy=BASE, instance=index), error, started)
 
     def refined(
-        self, each: Callable[[CaseResult], None], count: int | None = None, search: bool = True, key: bytes | None = None,
-        discarded: Callable[[CaseResult], None] = lambda result: None, set_aside: Callable[[CaseResult], None] = lambda result: None,
+        self,
+        each: Callable[[CaseResult], None],
+        count: int | None = None,
+        search: bool = True,
+        key: bytes | None = None,
+        discarded: Callable[[CaseResult], None] = lambda result: None,
+        set_aside: Callable[[CaseResult], None] = lambda result: None,
         sampling_seed: int | str | None = None,
     ) -> None:
         """``count`` (default: ``settings.examples``) samples drawn by Hypothesis, each run and handed to ``each``.
@@ -181,7 +191,14 @@ class Runner:
             if result.kind == CANNOT_INSTANTIATE:
                 result = self._blamed(case, result)
                 if search:
-                    hypothesis.event("no plan", "no value alone has a plan" if result.at_no_values else f"{result.culprit} alone has none" if result.culprit else "only the values together have none (set aside)")
+                    hypothesis.event(
+                        "no plan",
+                        "no value alone has a plan"
+                        if result.at_no_values
+                        else f"{result.culprit} alone has none"
+                        if result.culprit
+                        else "only the values together have none (set aside)",
+                    )
                 if values and result.kind == CANNOT_INSTANTIATE and result.culprit is None and not result.at_no_values:
                     # each value has concrete scenarios, only not together: a combination outside
                     # the logical scenario, drawn by independent sampling and set aside as
@@ -201,14 +218,28 @@ class Runner:
             profile = hypothesis.settings()
             chosen = hypothesis.settings(
                 # one failure per item: the report is about its shrunk case, whatever kind it is
-                profile, max_examples=count, deadline=None, print_blob=False, report_multiple_bugs=False,
+                profile,
+                max_examples=count,
+                deadline=None,
+                print_blob=False,
+                report_multiple_bugs=False,
                 # samples discarded for having no plan are what the filter health check is for
-                suppress_health_check=[*profile.suppress_health_check, HealthCheck.too_slow, *([] if discard else [HealthCheck.filter_too_much])],
+                suppress_health_check=[
+                    *profile.suppress_health_check,
+                    HealthCheck.too_slow,
+                    *([] if discard else [HealthCheck.filter_too_much]),
+                ],
             )
         else:
             chosen = hypothesis.settings(
-                hypothesis.settings.get_profile("default"), max_examples=count, database=None, deadline=None, derandomize=False,
-                phases=[Phase.generate], print_blob=False, suppress_health_check=list(HealthCheck),
+                hypothesis.settings.get_profile("default"),
+                max_examples=count,
+                database=None,
+                deadline=None,
+                derandomize=False,
+                phases=[Phase.generate],
+                print_blob=False,
+                suppress_health_check=list(HealthCheck),
             )
         seed = self.settings.seed if sampling_seed is None else sampling_seed
         hypothesis.seed(seed)(chosen(hypothesis.given(strategy(self.scenario))(example)))()
@@ -245,11 +276,17 @@ class Runner:
             return result
         result = self.run_case(case, explain=False)
         if result.kind == CANNOT_INSTANTIATE and values:
-            alone = candidates if len(values) == 1 else self.without_plan_alone({n: values[n] for n in candidates}, beyond_limits=False)
+            alone = (
+                candidates
+                if len(values) == 1
+                else self.without_plan_alone({n: values[n] for n in candidates}, beyond_limits=False)
+            )
             result.culprit = next(iter(alone), None)
         return result
 
-    def without_plan_alone(self, values: dict[str, Any], fallbacks: bool = True, first: bool = True, beyond_limits: bool = True) -> list[str]:
+    def without_plan_alone(
+        self, values: dict[str, Any], fallbacks: bool = True, first: bool = True, beyond_limits: bool = True
+    ) -> list[str]:
         """The sampled parameters whose value alone, the others left to their ranges, has no plan
         (only the first unless ``first`` is false; with ``fallbacks``, or within the planner's
         margins and limits; without ``beyond_limits``, none beyond a real car's limits); empty
@@ -283,13 +320,22 @@ class Runner:
 
     def _instances(self, count: int, values, explain: bool, fallbacks: bool = True) -> Iterator[Outcome]:
         return run_instances(
-            self.scenario, count, seed=self.settings.seed, settings=settings_for(self.settings, explain), max_tries=self.settings.tries,
-            drivers=self.drivers, values=values, simulation_time_limit=self.settings.simulation_time_limit, simulator=self.simulator,
+            self.scenario,
+            count,
+            seed=self.settings.seed,
+            settings=settings_for(self.settings, explain),
+            max_tries=self.settings.tries,
+            drivers=self.drivers,
+            values=values,
+            simulation_time_limit=self.settings.simulation_time_limit,
+            simulator=self.simulator,
             fallbacks=fallbacks,
         )
 
 
-def replay(case: Case, drivers: DriverFactory | None = None, simulator: Simulator | None = None, roots=None) -> CaseResult:
+def replay(
+    case: Case, drivers: DriverFactory | None = None, simulator: Simulator | None = None, roots=None
+) -> CaseResult:
     """Run a recorded case again: the same plan and the same trace (with the same drivers).
     ``roots`` (``confinement.ReadRoots``): where the scenario's imports may be read from."""
     from .frontend import load_file
@@ -312,7 +358,10 @@ def _events(result: CaseResult) -> None:
 def _result(case: Case, outcome: Outcome) -> CaseResult:
     accepted = outcome.verdict.accepted
     return CaseResult(
-        case, CONFORMANT if accepted else NON_CONFORMANT, outcome, "" if accepted else outcome.verdict.explain(),
+        case,
+        CONFORMANT if accepted else NON_CONFORMANT,
+        outcome,
+        "" if accepted else outcome.verdict.explain(),
         {stage: outcome.seconds.get(stage, 0.0) for stage in STAGES},
     )
 
@@ -324,10 +373,21 @@ def _failure(case: Case, error: Exception, started: float) -> CaseResult:
     seconds = {stage: 0.0 for stage in STAGES}
     if isinstance(error, SimulationTimeout):
         seconds["simulation"] = elapsed
-        return CaseResult(case, TIMED_OUT, message=f"simulation timed out: {error} (a limit of the tool: raise it with --roadlogic-sim-timeout, or --sim-timeout on the command line)", seconds=seconds)
+        return CaseResult(
+            case,
+            TIMED_OUT,
+            message=f"simulation timed out: {error} (a limit of the tool: raise it with --roadlogic-sim-timeout, or --sim-timeout on the command line)",
+            seconds=seconds,
+        )
     seconds["planning"] = elapsed
     if isinstance(error, PlanningTimeout):
-        return CaseResult(case, TIMED_OUT, message=f"planning timed out: {error} (a limit of the tool, not the scenario: raise it with --roadlogic-plan-timeout, or --plan-timeout on the command line)", seconds=seconds, error=error)
+        return CaseResult(
+            case,
+            TIMED_OUT,
+            message=f"planning timed out: {error} (a limit of the tool, not the scenario: raise it with --roadlogic-plan-timeout, or --plan-timeout on the command line)",
+            seconds=seconds,
+            error=error,
+        )
     if isinstance(error, UnsatisfiableScenario):
         return CaseResult(case, NO_PLAN, message=error.report(), seconds=seconds, error=error)
     if isinstance(error, HorizonTooShort):

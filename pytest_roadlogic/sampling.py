@@ -57,15 +57,21 @@ def checked_value(parameter: LogicalParameter, value: Any) -> Any:
     (issue 20: start_gap 99 of [10..30] planned at 28 m), and a string was a ValueError traceback."""
     if parameter.choices:
         if value not in parameter.choices:
-            raise UnknownParameter(f"{parameter.name} = {value!r} is not one of {', '.join(map(str, parameter.choices))}")
+            raise UnknownParameter(
+                f"{parameter.name} = {value!r} is not one of {', '.join(map(str, parameter.choices))}"
+            )
         return value
     if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
-        raise UnknownParameter(f"{parameter.name} = {value!r} is not a number; give one in SI units ({UNIT[parameter.dimension] or 'no unit'})")
+        raise UnknownParameter(
+            f"{parameter.name} = {value!r} is not a number; give one in SI units ({UNIT[parameter.dimension] or 'no unit'})"
+        )
     if parameter.integer and not float(value).is_integer():
         raise UnknownParameter(f"{parameter.name} = {value!r} is not a whole number")
     if not parameter.low - 1e-9 <= value <= parameter.high + 1e-9:
-        raise UnknownParameter(f"{parameter.name} = {value:g} is outside its range {parameter.show(parameter.low)}..{parameter.show(parameter.high)} "
-                               f"(line {parameter.location.line})")
+        raise UnknownParameter(
+            f"{parameter.name} = {value:g} is outside its range {parameter.show(parameter.low)}..{parameter.show(parameter.high)} "
+            f"(line {parameter.location.line})"
+        )
     return value
 
 
@@ -117,7 +123,19 @@ def logical_parameters(checked: CheckedScenario) -> list[LogicalParameter]:
             name = f"{name}@{node.location.line}"
         low, high = sorted((node.low.value, node.high.value))
         integer = node.dimension is None and float(low).is_integer() and float(high).is_integer()
-        found.append(LogicalParameter(name, node.location, node.dimension, low, high, integer, declared=False, sampled_as=sampled_as, kind=kind))
+        found.append(
+            LogicalParameter(
+                name,
+                node.location,
+                node.dimension,
+                low,
+                high,
+                integer,
+                declared=False,
+                sampled_as=sampled_as,
+                kind=kind,
+            )
+        )
     return found
 
 
@@ -149,14 +167,25 @@ def _inline_ranges(checked: CheckedScenario):
                     yield f"{node.label or 'wait'}.{node.condition.function}", argument.value, None, "duration"
 
 
-def _ranges_of(prefix: str, arguments: tuple[model.Argument, ...], binding: Binding | None, construct=None, only: tuple[str, ...] | None = None):
+def _ranges_of(
+    prefix: str,
+    arguments: tuple[model.Argument, ...],
+    binding: Binding | None,
+    construct=None,
+    only: tuple[str, ...] | None = None,
+):
     named = {id(a): n for n, a in binding.arguments.items()} if binding is not None else {}
     for argument in arguments:
         if isinstance(argument.value, model.Range):
             name = argument.name or named.get(id(argument), "value")
             if only is not None and name not in only:
                 continue
-            yield f"{prefix}.{name}", argument.value, construct.sampled_as(name) if construct is not None else None, _kind(name, binding, construct)
+            yield (
+                f"{prefix}.{name}",
+                argument.value,
+                construct.sampled_as(name) if construct is not None else None,
+                _kind(name, binding, construct),
+            )
 
 
 def _kind(name: str, binding: Binding | None, construct) -> str:
@@ -177,7 +206,8 @@ def strategy(checked: CheckedScenario):
     Relations between declared parameters (``keep(b_gap > a_gap + 5m)``) are met by construction
     where they bound one parameter by others drawn before it; any other relation filters samples.
     """
-    from hypothesis import assume, strategies as st
+    from hypothesis import assume
+    from hypothesis import strategies as st
 
     space = checked.space
     parameters = logical_parameters(checked)
@@ -213,7 +243,10 @@ def _bounded_by_relations(parameter: LogicalParameter, space: ParameterSpace, dr
         atom = relation.expression
         if not (isinstance(atom, model.Binary) and atom.operator in ("<", "<=", ">", ">=", "==")):
             continue
-        for this, other, operator in ((atom.left, atom.right, atom.operator), (atom.right, atom.left, MIRRORED[atom.operator])):
+        for this, other, operator in (
+            (atom.left, atom.right, atom.operator),
+            (atom.right, atom.left, MIRRORED[atom.operator]),
+        ):
             if not (isinstance(this, model.Name) and this.name == parameter.name):
                 continue
             try:
@@ -223,7 +256,9 @@ def _bounded_by_relations(parameter: LogicalParameter, space: ParameterSpace, dr
             if not (isinstance(bound, Interval) and bound.is_point):
                 continue  # depends on a parameter not drawn yet
             value = bound.low
-            strict = STEP if operator in ("<", ">") and not parameter.integer else (1.0 if operator in ("<", ">") else 0.0)
+            strict = (
+                STEP if operator in ("<", ">") and not parameter.integer else (1.0 if operator in ("<", ">") else 0.0)
+            )
             if operator in ("<", "<=", "=="):
                 high = min(high, value - strict)
             if operator in (">", ">=", "=="):
@@ -249,7 +284,9 @@ def guided(
     by_name = {p.name: p for p in logical_parameters(checked)}
     unknown = sorted(set(values) - set(by_name))
     if unknown:
-        raise UnknownParameter(f"no logical parameter named {', '.join(map(repr, unknown))}; the scenario has {', '.join(by_name) or 'none'}")
+        raise UnknownParameter(
+            f"no logical parameter named {', '.join(map(repr, unknown))}; the scenario has {', '.join(by_name) or 'none'}"
+        )
     declared: dict[str, object] = {}
     narrowed: dict[SourceLocation, tuple[float, float]] = {}
     for name, value in values.items():
@@ -269,10 +306,14 @@ def guided(
         # a keep relating several parameters: the monitor checks the trace, not the parameters, so a
         # sample that breaks one would be planned and reported conformant
         where = relation.location
-        raise UnknownParameter(f"{', '.join(f'{k} = {v!r}' for k, v in sorted(given.items()))} break the constraint at {Path(where.path).name}:{where.line}:{where.column}")
+        raise UnknownParameter(
+            f"{', '.join(f'{k} = {v!r}' for k, v in sorted(given.items()))} break the constraint at {Path(where.path).name}:{where.line}:{where.column}"
+        )
     if narrowed:
         scenario = checked.scenario
-        checked = dataclasses.replace(checked, scenario=dataclasses.replace(scenario, behavior=_narrow(scenario.behavior, narrowed)))
+        checked = dataclasses.replace(
+            checked, scenario=dataclasses.replace(scenario, behavior=_narrow(scenario.behavior, narrowed))
+        )
     return checked, declared
 
 
@@ -288,7 +329,9 @@ def _narrow(node: Any, narrowed: dict[SourceLocation, tuple[float, float]]) -> A
     if isinstance(node, model.Range):
         if node.location in narrowed:
             low, high = narrowed[node.location]
-            return dataclasses.replace(node, low=dataclasses.replace(node.low, value=low), high=dataclasses.replace(node.high, value=high))
+            return dataclasses.replace(
+                node, low=dataclasses.replace(node.low, value=low), high=dataclasses.replace(node.high, value=high)
+            )
         return node
     if isinstance(node, tuple):
         return tuple(_narrow(item, narrowed) for item in node)
@@ -314,7 +357,11 @@ def sample_seed(seed: int, values: Values) -> int:
 def describe_values(parameters: list[LogicalParameter], values: Values) -> list[str]:
     """``name = value unit (line L, kind)`` for every sampled value, for reports."""
     by_name = {p.name: p for p in parameters}
-    return [f"{name} = {by_name[name].show(value)} (line {by_name[name].location.line}, {by_name[name].kind})" for name, value in values.items() if name in by_name]
+    return [
+        f"{name} = {by_name[name].show(value)} (line {by_name[name].location.line}, {by_name[name].kind})"
+        for name, value in values.items()
+        if name in by_name
+    ]
 
 
 def parameters(path: str | Path, scenario: str | None = None, lanes: int | None = None):

@@ -94,7 +94,9 @@ MAX_HORIZON = 3600
 def horizon(text: str) -> int:
     number = whole_number(1, "a planning horizon")(text)
     if number > MAX_HORIZON:
-        raise OptionError(f"{text!r} is past the longest planning horizon; give a whole number of steps from 1 to {MAX_HORIZON}")
+        raise OptionError(
+            f"{text!r} is past the longest planning horizon; give a whole number of steps from 1 to {MAX_HORIZON}"
+        )
     return number
 
 
@@ -147,22 +149,73 @@ class Option:
 
 
 OPTIONS = (
-    Option("strategy", "strategy", strategy, REFINED, "refined: sample the logical parameters with Hypothesis; base: the planner's first N plans"),
-    Option("examples", "examples", whole_number(1, "a number of examples"), 10, "samples (refined) or plans (base) per scenario"),
+    Option(
+        "strategy",
+        "strategy",
+        strategy,
+        REFINED,
+        "refined: sample the logical parameters with Hypothesis; base: the planner's first N plans",
+    ),
+    Option(
+        "examples",
+        "examples",
+        whole_number(1, "a number of examples"),
+        10,
+        "samples (refined) or plans (base) per scenario",
+    ),
     Option("seed", "seed", seed, 1, "fixes sampling, planning and simulation"),
-    Option("no-plan", "no_plan", no_plan_policy, FAIL,
-           "a sample at which no plan exists: fail the item (the scenario's ranges hold values no concrete scenario meets), or discard it like assume() (refined)"),
-    Option("tries", "tries", whole_number(1, "a number of tries"), 5, "plans to try per case when the monitor rejects the simulation"),
+    Option(
+        "no-plan",
+        "no_plan",
+        no_plan_policy,
+        FAIL,
+        "a sample at which no plan exists: fail the item (the scenario's ranges hold values no concrete scenario meets), or discard it like assume() (refined)",
+    ),
+    Option(
+        "tries",
+        "tries",
+        whole_number(1, "a number of tries"),
+        5,
+        "plans to try per case when the monitor rejects the simulation",
+    ),
     Option("lanes", "lanes", lanes_or_none, None, "lanes of the road for every scenario", "each scenario's own"),
-    Option("dialect", "dialect", dialect, STANDARD_DIALECT,
-           "how files are read: standard (ASAM), or carla (CARLA's scenario runner: lanes numbered from the left, speed(v) a target)"),
-    Option("encoding", "encoding", encoding, CONTINUOUS,
-           "continuous: real-valued speeds and positions (asp/continuous.lp); grid: the paper's integer grid with a run-up from standstill"),
-    Option("horizon", "max_horizon", horizon_or_none, None, f"planning horizon limit in steps of 1 s, at most {MAX_HORIZON}",
-           f"the encoding's: {CONTINUOUS_HORIZON} continuous, {DEFAULT_HORIZON} grid"),
+    Option(
+        "dialect",
+        "dialect",
+        dialect,
+        STANDARD_DIALECT,
+        "how files are read: standard (ASAM), or carla (CARLA's scenario runner: lanes numbered from the left, speed(v) a target)",
+    ),
+    Option(
+        "encoding",
+        "encoding",
+        encoding,
+        CONTINUOUS,
+        "continuous: real-valued speeds and positions (asp/continuous.lp); grid: the paper's integer grid with a run-up from standstill",
+    ),
+    Option(
+        "horizon",
+        "max_horizon",
+        horizon_or_none,
+        None,
+        f"planning horizon limit in steps of 1 s, at most {MAX_HORIZON}",
+        f"the encoding's: {CONTINUOUS_HORIZON} continuous, {DEFAULT_HORIZON} grid",
+    ),
     Option("plan-timeout", "planning_time_limit", seconds, DEFAULT_PLAN_TIMEOUT, "seconds one planning may take"),
-    Option("sim-timeout", "simulation_time_limit", seconds, DEFAULT_SIM_TIMEOUT, "seconds (wall clock) one simulation may take"),
-    Option("simulator", "simulator", name, DEFAULT_SIMULATOR, "the simulation backend (frenetix, or one a package registers)"),
+    Option(
+        "sim-timeout",
+        "simulation_time_limit",
+        seconds,
+        DEFAULT_SIM_TIMEOUT,
+        "seconds (wall clock) one simulation may take",
+    ),
+    Option(
+        "simulator",
+        "simulator",
+        name,
+        DEFAULT_SIMULATOR,
+        "the simulation backend (frenetix, or one a package registers)",
+    ),
 )
 OPTIONS_BY_NAME = {option.name: option for option in OPTIONS}
 
@@ -185,7 +238,9 @@ class RunSettings:
     simulator: str = DEFAULT_SIMULATOR
 
     @classmethod
-    def from_texts(cls, texts: Mapping[str, str | None], origin: Callable[[Option], str] = lambda o: o.name) -> "RunSettings":
+    def from_texts(
+        cls, texts: Mapping[str, str | None], origin: Callable[[Option], str] = lambda o: o.name
+    ) -> RunSettings:
         """Settings from option texts by option name (a missing or None text keeps the default);
         an unusable text raises ``OptionError`` naming the option as ``origin`` spells it."""
         values = {}

@@ -47,7 +47,14 @@ def speed_trace(automaton, profile: list[tuple[float, float]], dt: float = 0.1) 
     speed = np.interp(times, *zip(*profile))
     x = np.concatenate([[0.0], np.cumsum((speed[1:] + speed[:-1]) / 2 * dt)])
     n = len(times)
-    columns = {"x": x, "y": np.zeros(n), "heading": np.zeros(n), "speed": speed, "acceleration": np.gradient(speed, dt), "lane": np.full(n, lane)}
+    columns = {
+        "x": x,
+        "y": np.zeros(n),
+        "heading": np.zeros(n),
+        "speed": speed,
+        "acceleration": np.gradient(speed, dt),
+        "lane": np.full(n, lane),
+    }
     return Trace(times, {"car1": columns})
 
 
@@ -77,10 +84,13 @@ scenario s:
 """
 
 
-@pytest.mark.parametrize("modifier, message", [
-    ("acceleration(-3mpsps, at: end)", "not supported: acceleration at: end"),
-    ("acceleration(3mps)", "acceleration"),
-])
+@pytest.mark.parametrize(
+    "modifier, message",
+    [
+        ("acceleration(-3mpsps, at: end)", "not supported: acceleration at: end"),
+        ("acceleration(3mps)", "acceleration"),
+    ],
+)
 def test_an_acceleration_the_tool_cannot_read_is_a_located_error(modifier, message):
     checked = check_text(scenario(modifier), "a.osc")
     if checked.errors:

@@ -15,11 +15,15 @@ def outcome():
 
 
 def test_every_frame_shows_every_vehicle_in_its_colour_at_the_runs_pace(outcome, tmp_path):
-    path = animate_simulation(outcome.simulation, outcome.verdict, tmp_path / "simulation.gif", title="overtake_third_actor")
+    path = animate_simulation(
+        outcome.simulation, outcome.verdict, tmp_path / "simulation.gif", title="overtake_third_actor"
+    )
     trace = outcome.simulation.trace
     colours = [PALETTE[FIRST_VEHICLE + k] for k in range(len(trace.actors))]
     with Image.open(path) as gif:
-        assert gif.n_frames == len(range(0, len(trace), 2)) + (len(trace) % 2 == 0), "a frame every 0.2 s, and the last sample"
+        assert gif.n_frames == len(range(0, len(trace), 2)) + (len(trace) % 2 == 0), (
+            "a frame every 0.2 s, and the last sample"
+        )
         for index in range(gif.n_frames):
             gif.seek(index)
             assert gif.info["duration"] == 200, "played at the run's pace"

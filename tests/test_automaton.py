@@ -23,7 +23,7 @@ def test_overtake_automaton_is_the_papers_figure_4(overtake_automaton):
 
 def test_both_vehicles_drive_in_every_phase(overtake_automaton):
     for name in ("A", "B", "C"):
-        loc = next(l for l in overtake_automaton.locations if l.name == name)
+        loc = next(location for location in overtake_automaton.locations if location.name == name)
         assert loc.drivers == {"v1", "v2"}
 
 
@@ -87,7 +87,10 @@ def test_keep_lane_is_a_choice_of_the_lane_held_throughout():
 def test_change_lane_ends_num_of_lanes_to_the_side_of_the_starting_lane():
     text = "scenario s:\n  a: car\n  do a.change_lane(1, left)\n"
     a = build_automaton(check_text(text).scenarios[0])
-    pairs = sorted((str(a.outgoing(a.initial)[i].guard), str(a.outgoing(t.target)[0].guard)) for i, t in enumerate(a.outgoing(a.initial)))
+    pairs = sorted(
+        (str(a.outgoing(a.initial)[i].guard), str(a.outgoing(t.target)[0].guard))
+        for i, t in enumerate(a.outgoing(a.initial))
+    )
     assert pairs == [("l(a) = 1", "l(a) = 0"), ("l(a) = 2", "l(a) = 1")]
 
 
@@ -166,7 +169,11 @@ def test_durations_and_waits_become_timed_phases():
         "    wait elapsed([1..2]s)\n    a.drive()\n"
     )
     a = build_automaton(check_text(text).scenarios[0])
-    assert sorted(str(t) for t in a.timings.values()) == ["a.drive lasts 2.5..3.5 s", "serial lasts 8..12 s", "wait lasts 1..2 s"]
+    assert sorted(str(t) for t in a.timings.values()) == [
+        "a.drive lasts 2.5..3.5 s",
+        "serial lasts 8..12 s",
+        "wait lasts 1..2 s",
+    ]
     serial = next(p for p, t in a.timings.items() if t.name == "serial")
     assert [t.id for t in a.transitions if serial in t.starts] == [a.outgoing(a.initial)[0].id]
     assert all(serial in t.ends for t in a.transitions if t.target == a.final)

@@ -46,7 +46,11 @@ def test_a_plan_ends_the_phase_where_the_follower_has_covered_120_to_140_m_from_
     a = automaton(FOLLOW_THEN_PASS)
     plan = ContinuousPlanner(a, seed=seed).first()
     check_continuous_plan(plan, a)
-    (end_step,) = [step for step, tid in plan.transitions if a.location(a.transitions[tid].target).name.startswith("ego.change_lane")]
+    (end_step,) = [
+        step
+        for step, tid in plan.transitions
+        if a.location(a.transitions[tid].target).name.startswith("ego.change_lane")
+    ]
     covered = plan.at("ego", end_step).position - plan.at("ego", 0).position
     assert 120 <= covered <= 140
     assert plan.at("ego", 0).position != 0, "the test means something only when the ego does not start at 0"
@@ -67,7 +71,9 @@ def test_the_grid_encoding_refuses_it_at_its_place():
 
 def test_it_is_a_length_compared_with_a_length():
     checked = check_text(FOLLOW_THEN_PASS.replace(">= 120m", ">= 12s"), "t.osc")
-    assert any("traveled_distance is a length, compared here with a time" in d.message for d in checked.errors), checked.report()
+    assert any("traveled_distance is a length, compared here with a time" in d.message for d in checked.errors), (
+        checked.report()
+    )
 
 
 def test_relative_lane_counts_the_lanes_to_the_left_of_the_reference_in_either_dialect():

@@ -31,7 +31,10 @@ TOY = "scenario s:\n  a: car\n  do a.drive() with:\n    at_least({speed})\n"
 
 
 def messages(text, registry=None):
-    return [f"{d.location.line}:{d.location.column}: {d.message}" for d in check_text(text, "t.osc", registry=registry).errors]
+    return [
+        f"{d.location.line}:{d.location.column}: {d.message}"
+        for d in check_text(text, "t.osc", registry=registry).errors
+    ]
 
 
 def test_a_modifier_added_to_a_registry_is_checked_and_translated_by_it_alone():
@@ -46,8 +49,12 @@ def test_a_modifier_added_to_a_registry_is_checked_and_translated_by_it_alone():
 def test_the_checker_binds_and_type_checks_a_registered_construct_from_its_signature():
     registry = STANDARD.extended(AtLeast())
     assert messages(TOY.format(speed="15m"), registry) == ["4:14: at_least() expects a speed for speed, got a length"]
-    assert messages(TOY.format(speed="25mps"), registry) == ["4:14: at_least() takes at most 20 m/s here"], "its own check() runs"
-    assert messages("scenario s:\n  a: car\n  do a.drive() with:\n    at_least(fast: 1mps)\n", registry)[0].startswith("4:14: unknown argument 'fast'")
+    assert messages(TOY.format(speed="25mps"), registry) == ["4:14: at_least() takes at most 20 m/s here"], (
+        "its own check() runs"
+    )
+    assert messages("scenario s:\n  a: car\n  do a.drive() with:\n    at_least(fast: 1mps)\n", registry)[0].startswith(
+        "4:14: unknown argument 'fast'"
+    )
 
 
 def test_without_the_construct_the_same_file_names_it_unknown():
@@ -56,7 +63,9 @@ def test_without_the_construct_the_same_file_names_it_unknown():
 
 
 def test_a_construct_that_is_not_translated_yet_checks_and_is_refused_by_the_automaton_at_its_place():
-    checked = check_text("scenario s:\n  a: car\n  b: car\n  do a.drive() with:\n    lateral(1m, side_of: b)\n", "t.osc")
+    checked = check_text(
+        "scenario s:\n  a: car\n  b: car\n  do a.drive() with:\n    lateral(1m, side_of: b)\n", "t.osc"
+    )
     assert not checked.errors, checked.report()
     with pytest.raises(OscError) as refused:
         build_automaton(checked.scenarios[0])

@@ -131,7 +131,10 @@ TIER_1 = {
 
 # The files written for issue 18 (the public suites' styles, the standard's whole vocabulary):
 # 46-59 and 60-104 with carla_types.osc, carla_highway.osc and lib/maneuvers.osc.
-ISSUE_18_FILES = [p for p in FILES if p.stem[:2].isdigit() and int(p.stem.split("_")[0]) >= 46] + [CORPUS / "carla_types.osc", CORPUS / "carla_highway.osc"]
+ISSUE_18_FILES = [p for p in FILES if p.stem[:2].isdigit() and int(p.stem.split("_")[0]) >= 46] + [
+    CORPUS / "carla_types.osc",
+    CORPUS / "carla_highway.osc",
+]
 
 
 def corpus_text() -> str:
@@ -146,7 +149,9 @@ def test_the_corpus_has_at_least_60_files_written_for_the_standards_whole_langua
 @pytest.mark.parametrize("path", FILES, ids=[p.name for p in FILES])
 def test_every_corpus_file_says_in_its_first_comment_what_it_exercises(path):
     text = path.read_bytes().decode("utf-8").replace("\t", " ")
-    assert re.match(r"#\s*\S.{20,}", text) or path.name in ("32_tabs.osc", "33_crlf_no_final_newline.osc"), "start the file with a comment line saying what it exercises"
+    assert re.match(r"#\s*\S.{20,}", text) or path.name in ("32_tabs.osc", "33_crlf_no_final_newline.osc"), (
+        "start the file with a comment line saying what it exercises"
+    )
 
 
 @pytest.mark.parametrize("path", FILES, ids=[p.name for p in FILES])
@@ -164,24 +169,60 @@ def test_the_corpus_covers_every_tier_1_construct(construct):
 # within the tries a rejection allows), in the styles of the public suites; (file, dialect).
 # benchmarks/corpus.py prints the whole corpus's table.
 RUNNABLE = [
-    ("03_cut_in.osc", None), ("04_cut_in_dut.osc", None), ("15_serial_labels.osc", None), ("16_one_of.osc", None),
-    ("19_lane_relative.osc", None), ("23_change_speed.osc", None), ("27_wait.osc", None), ("37_import_library.osc", None),
-    ("39_events.osc", None), ("46_time_headway.osc", None), ("47_conditions.osc", None), ("48_emit_wait.osc", None),
-    ("49_carla_style.osc", "carla"), ("50_acceleration.osc", None), ("51_scenario_call.osc", None),
-    ("52_carla_cut_in_call.osc", "carla"), ("53_stop_and_go.osc", None), ("54_headway_then_brake.osc", None),
-    ("55_event_after_cut_in.osc", None), ("56_three_lane_weave.osc", None), ("57_paper_listing_overtake.osc", None),
-    ("58_obstacle_keep_speed.osc", None), ("59_library_call_twice.osc", None),
-    ("60_distance_cruise.osc", None), ("61_parked_keep_position.osc", None), ("62_assign_then_slow.osc", None),
-    ("63_change_lane_range.osc", None), ("64_along_no_collision_follow.osc", None), ("65_carla_lead_slowdown.osc", "carla"),
-    ("66_carla_overtake_van.osc", "carla"), ("67_physical_part_import.osc", None), ("68_wait_until_slow.osc", None),
-    ("69_headway_kph.osc", None), ("70_one_of_pass_side.osc", None), ("71_truck_overtake.osc", None),
-    ("72_overlap_equal.osc", None), ("78_event_with_parameter.osc", None), ("79_robot_style_params.osc", None),
-    ("81_dut_owned_cut_out.osc", None), ("85_wait_event_if.osc", None), ("86_event_is_condition.osc", None),
-    ("95_scenario_calls_positional.osc", None), ("99_same_lane_relative.osc", None), ("100_until_condition_or.osc", None),
-    ("101_stationary_obstacle_dodge.osc", None), ("103_time_headway_ahead.osc", None), ("104_acceleration_then_distance.osc", None),
-    ("105_scenario_inheritance.osc", None), ("106_traveled_distance_condition.osc", None),
-    ("107_relative_lane_condition.osc", None), ("108_builtin_end_event.osc", None),
-    ("42_gap_actions.osc", None), ("75_keep_space_gap.osc", None), ("76_change_time_gap.osc", None),
+    ("03_cut_in.osc", None),
+    ("04_cut_in_dut.osc", None),
+    ("15_serial_labels.osc", None),
+    ("16_one_of.osc", None),
+    ("19_lane_relative.osc", None),
+    ("23_change_speed.osc", None),
+    ("27_wait.osc", None),
+    ("37_import_library.osc", None),
+    ("39_events.osc", None),
+    ("46_time_headway.osc", None),
+    ("47_conditions.osc", None),
+    ("48_emit_wait.osc", None),
+    ("49_carla_style.osc", "carla"),
+    ("50_acceleration.osc", None),
+    ("51_scenario_call.osc", None),
+    ("52_carla_cut_in_call.osc", "carla"),
+    ("53_stop_and_go.osc", None),
+    ("54_headway_then_brake.osc", None),
+    ("55_event_after_cut_in.osc", None),
+    ("56_three_lane_weave.osc", None),
+    ("57_paper_listing_overtake.osc", None),
+    ("58_obstacle_keep_speed.osc", None),
+    ("59_library_call_twice.osc", None),
+    ("60_distance_cruise.osc", None),
+    ("61_parked_keep_position.osc", None),
+    ("62_assign_then_slow.osc", None),
+    ("63_change_lane_range.osc", None),
+    ("64_along_no_collision_follow.osc", None),
+    ("65_carla_lead_slowdown.osc", "carla"),
+    ("66_carla_overtake_van.osc", "carla"),
+    ("67_physical_part_import.osc", None),
+    ("68_wait_until_slow.osc", None),
+    ("69_headway_kph.osc", None),
+    ("70_one_of_pass_side.osc", None),
+    ("71_truck_overtake.osc", None),
+    ("72_overlap_equal.osc", None),
+    ("78_event_with_parameter.osc", None),
+    ("79_robot_style_params.osc", None),
+    ("81_dut_owned_cut_out.osc", None),
+    ("85_wait_event_if.osc", None),
+    ("86_event_is_condition.osc", None),
+    ("95_scenario_calls_positional.osc", None),
+    ("99_same_lane_relative.osc", None),
+    ("100_until_condition_or.osc", None),
+    ("101_stationary_obstacle_dodge.osc", None),
+    ("103_time_headway_ahead.osc", None),
+    ("104_acceleration_then_distance.osc", None),
+    ("105_scenario_inheritance.osc", None),
+    ("106_traveled_distance_condition.osc", None),
+    ("107_relative_lane_condition.osc", None),
+    ("108_builtin_end_event.osc", None),
+    ("42_gap_actions.osc", None),
+    ("75_keep_space_gap.osc", None),
+    ("76_change_time_gap.osc", None),
 ]
 
 

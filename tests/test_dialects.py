@@ -81,6 +81,13 @@ def test_every_dialect_option_value_has_its_registry_and_no_registry_lacks_an_op
 def test_a_carla_speed_range_is_a_parameter_reported_as_held_at_the_end():
     from pytest_roadlogic.sampling import logical_parameters
 
-    text = "scenario s:\n    a: car\n    do a.drive(duration: 5s) with:\n        speed([20mps..25mps])\n        lane(1)\n"
-    kinds = {dialect: [(p.name, p.kind) for p in logical_parameters(check_text(text, "k.osc", dialect=dialect).scenarios[0])] for dialect in ("standard", "carla")}
-    assert kinds == {"standard": [], "carla": [("a.drive.speed.speed", "at: end")]}, "a standard speed range is a bound; CARLA's is a target at the end"
+    text = (
+        "scenario s:\n    a: car\n    do a.drive(duration: 5s) with:\n        speed([20mps..25mps])\n        lane(1)\n"
+    )
+    kinds = {
+        dialect: [(p.name, p.kind) for p in logical_parameters(check_text(text, "k.osc", dialect=dialect).scenarios[0])]
+        for dialect in ("standard", "carla")
+    }
+    assert kinds == {"standard": [], "carla": [("a.drive.speed.speed", "at: end")]}, (
+        "a standard speed range is a bound; CARLA's is a target at the end"
+    )

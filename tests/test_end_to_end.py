@@ -8,13 +8,24 @@ from tests.conftest import OVERTAKE, ROOT
 
 
 def run_cli(*args):
-    return subprocess.run([sys.executable, "-m", "pytest_roadlogic.cli", *args], capture_output=True, text=True, cwd=ROOT)
+    return subprocess.run(
+        [sys.executable, "-m", "pytest_roadlogic.cli", *args], capture_output=True, text=True, cwd=ROOT
+    )
 
 
 def test_roadlogic_run_writes_every_artifact_and_accepts(tmp_path):
     result = run_cli("run", str(OVERTAKE), "--seed", "1", "--out", str(tmp_path))
     assert result.returncode == 0, result.stdout + result.stderr
-    for name in ("plan.json", "trace.csv", "scenario.xml", "scenario.xosc", "road.xodr", "trajectories.png", "simulation.gif", "verdict.json"):
+    for name in (
+        "plan.json",
+        "trace.csv",
+        "scenario.xml",
+        "scenario.xosc",
+        "road.xodr",
+        "trajectories.png",
+        "simulation.gif",
+        "verdict.json",
+    ):
         assert (tmp_path / name).stat().st_size > 0, name
     assert not [p.name for p in tmp_path.iterdir() if "partial" in p.name], "a temporary file was left behind"
     from PIL import Image
@@ -53,10 +64,26 @@ def test_a_broken_file_is_a_clear_error_not_a_traceback(tmp_path):
 def test_pytest_collects_osc_files_runs_them_and_reports_broken_ones(tmp_path):
     (tmp_path / "overtake.osc").write_text(OVERTAKE.read_text())
     (tmp_path / "broken.osc").write_text("scenario s:\n  v1 car\n")
-    (tmp_path / "unknown.osc").write_text("scenario u:\n  v1: car\n  do v1.drive() with:\n    lane(same_as: v7, at: end)\n")
+    (tmp_path / "unknown.osc").write_text(
+        "scenario u:\n  v1: car\n  do v1.drive() with:\n    lane(same_as: v7, at: end)\n"
+    )
     result = subprocess.run(
-        [sys.executable, "-m", "pytest", str(tmp_path), "-p", "no:cacheprovider", "--roadlogic-artifacts", str(tmp_path / "art"), "-q", "--rootdir", str(tmp_path)],
-        capture_output=True, text=True, cwd=tmp_path,
+        [
+            sys.executable,
+            "-m",
+            "pytest",
+            str(tmp_path),
+            "-p",
+            "no:cacheprovider",
+            "--roadlogic-artifacts",
+            str(tmp_path / "art"),
+            "-q",
+            "--rootdir",
+            str(tmp_path),
+        ],
+        capture_output=True,
+        text=True,
+        cwd=tmp_path,
     )
     assert "1 passed" in result.stdout and "2 errors" in result.stdout, result.stdout
     assert "broken.osc:2:" in result.stdout
@@ -71,10 +98,15 @@ def test_pytest_collects_osc_files_runs_them_and_reports_broken_ones(tmp_path):
 def test_roadlogic_check_reports_every_bad_file_with_a_summary(tmp_path):
     (tmp_path / "good.osc").write_text(OVERTAKE.read_text())
     (tmp_path / "sub").mkdir()
-    (tmp_path / "sub" / "unit.osc").write_text("scenario s:\n  a: car\n  b: car\n  do a.drive() with:\n    position(3s, behind: b, at: end)\n")
+    (tmp_path / "sub" / "unit.osc").write_text(
+        "scenario s:\n  a: car\n  b: car\n  do a.drive() with:\n    position(3s, behind: b, at: end)\n"
+    )
     result = run_cli("check", str(tmp_path))
     assert result.returncode == 1
-    assert f"{tmp_path / 'sub' / 'unit.osc'}:5:14: error: position() expects a length for distance, got a time" in result.stdout
+    assert (
+        f"{tmp_path / 'sub' / 'unit.osc'}:5:14: error: position() expects a length for distance, got a time"
+        in result.stdout
+    )
     assert result.stdout.strip().endswith("2 files, 1 ok, 1 with errors")
 
 

@@ -16,7 +16,9 @@ pytest_plugins = ["pytester"]
 
 
 def run_cli(*args, cwd=ROOT):
-    return subprocess.run([sys.executable, "-m", "pytest_roadlogic.cli", *args], capture_output=True, text=True, cwd=cwd)
+    return subprocess.run(
+        [sys.executable, "-m", "pytest_roadlogic.cli", *args], capture_output=True, text=True, cwd=cwd
+    )
 
 
 def test_the_plugin_samples_a_parameter_of_the_files_own_enum(pytester):

@@ -21,7 +21,9 @@ OUTCOMES = ("conformant", "non-conformant", "timed out", "no plan")
 
 
 def bench(*args, cwd=ROOT):
-    return subprocess.run([sys.executable, "-m", "pytest_roadlogic.cli", "bench", *args], capture_output=True, text=True, cwd=cwd)
+    return subprocess.run(
+        [sys.executable, "-m", "pytest_roadlogic.cli", "bench", *args], capture_output=True, text=True, cwd=cwd
+    )
 
 
 # ------------------------------------------------------------------ the metric
@@ -80,7 +82,7 @@ def quick(tmp_path_factory):
 
 def table_after(report: str, heading: str) -> list[dict[str, str]]:
     """The first Markdown table after ``heading``, as rows of column -> cell."""
-    lines = report[report.index(heading):].splitlines()
+    lines = report[report.index(heading) :].splitlines()
     start = next(k for k, line in enumerate(lines) if line.startswith("|"))
     rows = []
     for line in lines[start:]:
@@ -139,7 +141,11 @@ def test_every_instance_is_recorded_with_its_artifacts(quick):
 def test_the_base_strategy_conforms_on_every_scenario(quick):
     out, _ = quick
     raw = json.loads((out / "results.json").read_text())
-    rejected = [(r["scenario"], r["index"], r["message"]) for r in raw["instances"] if r["strategy"] == "base" and r["outcome"] != "conformant"]
+    rejected = [
+        (r["scenario"], r["index"], r["message"])
+        for r in raw["instances"]
+        if r["strategy"] == "base" and r["outcome"] != "conformant"
+    ]
     assert not rejected
 
 
@@ -172,8 +178,12 @@ def test_rq2_similarity_table_matches_the_raw_results(quick):
     for scenario, row in rows.items():
         means = {}
         for strategy in ("base", "refined"):
-            grids = [cells_of(r["occupancy"]) for r in raw["instances"] if r["scenario"] == scenario and r["strategy"] == strategy and r["occupancy"]]
-            pairs = [len(a & b) / len(a | b) for i, a in enumerate(grids) for b in grids[i + 1:]]
+            grids = [
+                cells_of(r["occupancy"])
+                for r in raw["instances"]
+                if r["scenario"] == scenario and r["strategy"] == strategy and r["occupancy"]
+            ]
+            pairs = [len(a & b) / len(a | b) for i, a in enumerate(grids) for b in grids[i + 1 :]]
             means[strategy] = sum(pairs) / len(pairs)
             assert float(row[strategy]) == pytest.approx(means[strategy], abs=0.0006), (scenario, strategy)
         assert row["refined lower"] == ("yes" if means["refined"] < means["base"] else "no")
@@ -220,7 +230,19 @@ def test_a_realistic_suite_runs_beside_the_papers_in_each_files_dialect_and_is_r
     suite = tmp_path / "realistic"
     shutil.copytree(ROOT / "scenarios" / "realistic" / "carla_dialect", suite / "carla_dialect")
     shutil.copy(ROOT / "scenarios" / "realistic" / "lead_brake.osc", suite)
-    result = bench("scenarios/follow.osc", "--realistic", str(suite), "--quick", "--base", "1", "--refined", "1", "--no-artifacts", "--out", str(tmp_path / "out"))
+    result = bench(
+        "scenarios/follow.osc",
+        "--realistic",
+        str(suite),
+        "--quick",
+        "--base",
+        "1",
+        "--refined",
+        "1",
+        "--no-artifacts",
+        "--out",
+        str(tmp_path / "out"),
+    )
     assert result.returncode in (0, 1), result.stdout + result.stderr
     raw = json.loads((tmp_path / "out" / "results.json").read_text())
     assert raw["scenarios"] == ["follow"] and raw["realistic"] == ["slow_cut_in", "lead_brake"]
@@ -228,10 +250,12 @@ def test_a_realistic_suite_runs_beside_the_papers_in_each_files_dialect_and_is_r
     assert raw["settings"]["realistic"]["encoding"] == "continuous" and raw["settings"]["encoding"] == "grid"
     assert {r["scenario"] for r in raw["instances"]} == {"follow", "slow_cut_in", "lead_brake"}
     report = (tmp_path / "out" / "report.md").read_text()
-    realistic = report[report.index("## Realistic scenarios"):]
+    realistic = report[report.index("## Realistic scenarios") :]
     rows = {row["scenario"]: row for row in table_after(realistic, "### Base strategy")}
     assert sorted(rows) == ["lead_brake", "slow_cut_in"] and all(row["instances"] == "1" for row in rows.values())
-    assert "slow_cut_in" not in report[:report.index("## Realistic scenarios")], "the targets and RQ tables are the paper's suite's"
+    assert "slow_cut_in" not in report[: report.index("## Realistic scenarios")], (
+        "the targets and RQ tables are the paper's suite's"
+    )
 
 
 def test_a_missing_path_or_results_file_is_a_usage_error(tmp_path):
@@ -244,9 +268,22 @@ def test_a_missing_path_or_results_file_is_a_usage_error(tmp_path):
 def test_the_same_seed_gives_the_same_instances(tmp_path):
     runs = []
     for name in ("a", "b"):
-        assert bench("scenarios/change_lane.osc", "--base", "1", "--refined", "2", "--seed", "5", "--no-artifacts", "--out", str(tmp_path / name)).returncode in (0, 1)
+        assert bench(
+            "scenarios/change_lane.osc",
+            "--base",
+            "1",
+            "--refined",
+            "2",
+            "--seed",
+            "5",
+            "--no-artifacts",
+            "--out",
+            str(tmp_path / name),
+        ).returncode in (0, 1)
         raw = json.loads((tmp_path / name / "results.json").read_text())
-        runs.append([(r["strategy"], r["values"], r["outcome"], r["horizon"], r["occupancy"]) for r in raw["instances"]])
+        runs.append(
+            [(r["strategy"], r["values"], r["outcome"], r["horizon"], r["occupancy"]) for r in raw["instances"]]
+        )
     assert runs[0] == runs[1]
 
 
@@ -264,7 +301,11 @@ def full_run(tmp_path_factory):
 
 @pytest.mark.bench
 def test_the_full_run_conforms(full_run):
-    for target in ("base strategy: 100% conformant", "refined strategy: at least 98% conformant", "refined strategy: no timeouts"):
+    for target in (
+        "base strategy: 100% conformant",
+        "refined strategy: at least 98% conformant",
+        "refined strategy: no timeouts",
+    ):
         assert f"met: {target}" in full_run, full_run
 
 

@@ -158,7 +158,13 @@ scenario s:
 
 def b_ends_with(a) -> set[str]:
     """The phases of a whose end can coincide with the end of b's wait."""
-    return {ev.split()[0] for t in a.transitions if "b.drive end" in t.events for ev in t.events if ev.endswith(" end") and not ev.startswith("b.")}
+    return {
+        ev.split()[0]
+        for t in a.transitions
+        if "b.drive end" in t.events
+        for ev in t.events
+        if ev.endswith(" end") and not ev.startswith("b.")
+    }
 
 
 def test_a_wait_ends_at_the_first_emission_of_its_event():
@@ -181,7 +187,6 @@ def test_the_realistic_event_scenarios_check_and_build():
         checked = check_file(Path(__file__).parent.parent / "scenarios" / "realistic" / f"{name}.osc")
         assert not checked.errors, checked.report()
         build_automaton(checked.scenarios[0])
-
 
 
 BUILTIN = """\
@@ -221,12 +226,20 @@ def test_a_wait_for_a_phases_built_in_start_event_ends_at_the_instant_that_phase
 def test_a_built_in_event_of_a_label_no_phase_has_is_an_error_that_lists_the_labels():
     checked = check_text(BUILTIN.format(edge="end", after="2s..3s").replace("@pass_b.end", "@pass.end"), "e.osc")
     (error,) = checked.errors
-    assert (error.location.line, error.message) == (10, "@pass.end is the end of the phase labelled 'pass', and no phase has that label")
+    assert (error.location.line, error.message) == (
+        10,
+        "@pass.end is the end of the phase labelled 'pass', and no phase has that label",
+    )
     assert "labels here: pass_b" in error.hint
 
 
 def test_a_called_scenarios_built_in_event_refers_to_its_own_label_which_the_call_renames():
-    callee = BUILTIN.format(edge="end", after="2s..3s").replace("scenario s:\n    a: car\n    b: car\n", "scenario a.pass_then_go:\n    b: car\n").replace("a.change_lane", "change_lane").replace("a.drive", "drive")
+    callee = (
+        BUILTIN.format(edge="end", after="2s..3s")
+        .replace("scenario s:\n    a: car\n    b: car\n", "scenario a.pass_then_go:\n    b: car\n")
+        .replace("a.change_lane", "change_lane")
+        .replace("a.drive", "drive")
+    )
     a = automaton(callee + "scenario top:\n    a: car\n    b: car\n    do a.pass_then_go()\n")
     ending = [t for t in a.transitions if "pass_then_go.pass_b end" in t.events]
     assert ending and all({"pass_b.end emitted", "b.drive end"} <= set(t.events) for t in ending), a.describe()

@@ -43,11 +43,20 @@ def test_a_band_no_plan_meets_fails_at_its_edge_as_a_scenario_that_cannot_be_ins
     # whole message untruncated.
     failure = report.split("short test summary info")[0]
     values = re.findall(r"^  (\S+) = ([\d.]+) m \(line (\d+), ([^)]*)\)(.*)$", failure, re.MULTILINE)
-    assert [(name, line, kind) for name, _, line, kind, _ in values] == [("start_gap", "7", "declared parameter"), ("ego.drive.position.distance", "17", "at: end")], failure
-    blamed = [name for name, _, _, _, suffix in values if suffix == ": no concrete scenario has this value, whatever the others"]
+    assert [(name, line, kind) for name, _, line, kind, _ in values] == [
+        ("start_gap", "7", "declared parameter"),
+        ("ego.drive.position.distance", "17", "at: end"),
+    ], failure
+    blamed = [
+        name
+        for name, _, _, _, suffix in values
+        if suffix == ": no concrete scenario has this value, whatever the others"
+    ]
     assert blamed == ["start_gap"], "the start gap alone is blamed, not the end gap"
     gap = float(values[0][1])
-    assert EXACT_EDGE <= gap <= TOLERANT_EDGE, f"the shrunk start gap {gap} m is not at the band's edge ({EXACT_EDGE}-{TOLERANT_EDGE} m)"
+    assert EXACT_EDGE <= gap <= TOLERANT_EDGE, (
+        f"the shrunk start gap {gap} m is not at the band's edge ({EXACT_EDGE}-{TOLERANT_EDGE} m)"
+    )
     assert "cannot hold together" in report, "the constraints that clash are named"
     properties = {p.get("name"): p.get("value") for p in ET.parse(pytester.path / "junit.xml").iter("property")}
     assert properties["failure_kind"] == "the scenario cannot be instantiated" and properties["verdict"] == "no plan"
@@ -87,7 +96,9 @@ def test_samples_whose_values_clash_only_together_are_set_aside_not_failed(monke
 def test_with_no_plan_discard_the_samples_without_a_plan_are_set_aside_and_counted(pytester):
     # the range reaches a little past the edge: most samples have plans, a few do not
     (pytester.path / CLOSE_IN.name).write_text(CLOSE_IN.read_text().replace("[12m..80m]", "[12m..40m]"))
-    result = pytester.runpytest_subprocess("--roadlogic-examples", "10", "--roadlogic-no-plan", "discard", "--junitxml", "junit.xml", *QUIET)
+    result = pytester.runpytest_subprocess(
+        "--roadlogic-examples", "10", "--roadlogic-no-plan", "discard", "--junitxml", "junit.xml", *QUIET
+    )
     result.assert_outcomes(passed=1)
     properties = {p.get("name"): p.get("value") for p in ET.parse(pytester.path / "junit.xml").iter("property")}
     assert int(properties["discarded"]) >= 1 and int(properties["discarded"]) == int(properties["no_plan"])
@@ -98,7 +109,9 @@ def test_a_bad_no_plan_value_names_the_option(pytester):
     (pytester.path / CLOSE_IN.name).write_text(CLOSE_IN.read_text())
     result = pytester.runpytest_subprocess("--roadlogic-no-plan", "skip", *QUIET)
     assert result.ret != 0
-    result.stderr.fnmatch_lines(["*--roadlogic-no-plan*'skip' is not what to do with a sample without a plan; give fail or discard*"])
+    result.stderr.fnmatch_lines(
+        ["*--roadlogic-no-plan*'skip' is not what to do with a sample without a plan; give fail or discard*"]
+    )
 
 
 @pytest.mark.parametrize(
@@ -106,7 +119,9 @@ def test_a_bad_no_plan_value_names_the_option(pytester):
     [(30.0, "MarginsBind", "speed_margin 0.5 m/s"), (32.0, "StepBinds", "plans in steps of 0.5 s exist")],
     ids=["only-thinner-margins", "only-in-half-steps"],
 )
-def test_a_case_only_plans_beyond_the_tools_margins_or_step_meet_is_a_tool_limit_when_not_accepted(start_gap, error, named):
+def test_a_case_only_plans_beyond_the_tools_margins_or_step_meet_is_a_tool_limit_when_not_accepted(
+    start_gap, error, named
+):
     # close_in at 30 m has plans only with thinner margins, at 32 m only in half steps (measured);
     # a vehicle that never goes faster than 15 m/s makes every simulation fail
     from pytest_roadlogic.pipeline import load_scenario
@@ -114,7 +129,11 @@ def test_a_case_only_plans_beyond_the_tools_margins_or_step_meet_is_a_tool_limit
     from pytest_roadlogic.settings import REFINED, RunSettings
     from tests.drivers import NeverChangesLane
 
-    runner = Runner(load_scenario(CLOSE_IN), RunSettings(tries=1), drivers=lambda vehicle: NeverChangesLane() if vehicle == "ego" else None)
+    runner = Runner(
+        load_scenario(CLOSE_IN),
+        RunSettings(tries=1),
+        drivers=lambda vehicle: NeverChangesLane() if vehicle == "ego" else None,
+    )
     result = runner.run_case(runner.case(strategy=REFINED, values={"start_gap": start_gap}), explain=False)
     assert (result.kind, type(result.error).__name__) == (TOOL_LIMIT, error), result.message
     assert named in result.message and "not accepted" in result.message
@@ -189,14 +208,35 @@ def test_a_sample_that_only_a_car_beyond_a_real_cars_limits_meets_is_set_aside_w
     # limits (with the thinner margins), and so has every other value: the combination is no
     # instance of the scenario, set aside. It had failed the item as "a limit of the tool binds",
     # naming max_jerk, min_acceleration, max_acceleration, max_speed and the gaps
-    sample = {"slow_speed": 19.1, "follow.duration": 10.0, "ego.drive.position.distance@17": 38.6, "pull_out.duration": 3.0,
-              "pass.duration": 19.3, "ego.drive.position.distance@29": 15.1, "cut_back.duration": 3.9, "ego.change_lane.position.distance": 33.2}
+    sample = {
+        "slow_speed": 19.1,
+        "follow.duration": 10.0,
+        "ego.drive.position.distance@17": 38.6,
+        "pull_out.duration": 3.0,
+        "pass.duration": 19.3,
+        "ego.drive.position.distance@29": 15.1,
+        "cut_back.duration": 3.9,
+        "ego.change_lane.position.distance": 33.2,
+    }
     # and one the refined strategy accepted (this ego fails it): Hypothesis needs one sample it keeps
-    kept = {"slow_speed": 21.0, "follow.duration": 14.3, "ego.drive.position.distance@17": 31.9, "pull_out.duration": 4.1,
-            "pass.duration": 8.0, "ego.drive.position.distance@29": 35.3, "cut_back.duration": 4.1, "ego.change_lane.position.distance": 22.9}
+    kept = {
+        "slow_speed": 21.0,
+        "follow.duration": 14.3,
+        "ego.drive.position.distance@17": 31.9,
+        "pull_out.duration": 4.1,
+        "pass.duration": 8.0,
+        "ego.drive.position.distance@29": 35.3,
+        "cut_back.duration": 4.1,
+        "ego.change_lane.position.distance": 22.9,
+    }
     ran, aside = _refined_on(ROOT / "scenarios" / "realistic" / "follow_then_overtake.osc", [sample, kept], monkeypatch)
-    assert [r.case.values for r in ran] == [kept] and [r.case.values for r in aside] == [sample], [r.message for r in ran]
-    assert aside[0].kind == "the scenario cannot be instantiated" and "no concrete scenario within a real car's limits" in aside[0].message, aside[0].message
+    assert [r.case.values for r in ran] == [kept] and [r.case.values for r in aside] == [sample], [
+        r.message for r in ran
+    ]
+    assert (
+        aside[0].kind == "the scenario cannot be instantiated"
+        and "no concrete scenario within a real car's limits" in aside[0].message
+    ), aside[0].message
 
 
 def test_a_value_that_only_a_car_beyond_a_real_cars_limits_meets_is_blamed_naming_the_limits(monkeypatch, tmp_path):
@@ -207,5 +247,11 @@ def test_a_value_that_only_a_car_beyond_a_real_cars_limits_meets_is_blamed_namin
     ran, aside = _refined_on(path, [{"start_speed": 60.0, "brake_time": 4.0}], monkeypatch)
     assert aside == [] and len(ran) == 1
     result = ran[0]
-    assert (result.outcome, result.kind, result.culprit) == ("no plan", "the scenario cannot be instantiated", "start_speed"), result.message
-    assert "no concrete scenario within a real car's limits" in result.message and "relaxed to" in result.message, result.message
+    assert (result.outcome, result.kind, result.culprit) == (
+        "no plan",
+        "the scenario cannot be instantiated",
+        "start_speed",
+    ), result.message
+    assert "no concrete scenario within a real car's limits" in result.message and "relaxed to" in result.message, (
+        result.message
+    )

@@ -8,8 +8,7 @@ import math
 
 import pytest
 
-from pytest_roadlogic.frontend import OscError, check_text, parse_text
-from pytest_roadlogic.frontend import model
+from pytest_roadlogic.frontend import OscError, check_text, model, parse_text
 
 
 def checked(text: str):
@@ -41,13 +40,22 @@ def test_tabs_indent_to_eight_column_stops():
 
 
 def test_a_backslash_joins_lines():
-    scenario = checked(PAIR + "    do parallel:\n        b.drive()\n        a.drive() with:\n            lane(same_as: b, \\\n at: start)\n").scenarios[0].scenario
+    scenario = (
+        checked(
+            PAIR
+            + "    do parallel:\n        b.drive()\n        a.drive() with:\n            lane(same_as: b, \\\n at: start)\n"
+        )
+        .scenarios[0]
+        .scenario
+    )
     modifier = scenario.behavior.children[1].modifiers[0]
     assert [arg.name for arg in modifier.arguments] == ["same_as", "at"]
 
 
 def test_comments_and_blank_lines_anywhere_are_ignored():
-    checked("# head\n\nscenario s:  # trailing\n\n    a: car\n# column zero inside a block\n        # deeper\n    do a.drive()\n")
+    checked(
+        "# head\n\nscenario s:  # trailing\n\n    a: car\n# column zero inside a block\n        # deeper\n    do a.drive()\n"
+    )
 
 
 def test_a_byte_order_mark_is_ignored():
@@ -56,7 +64,16 @@ def test_a_byte_order_mark_is_ignored():
 
 @pytest.mark.parametrize(
     "literal, value",
-    [("42", 42.0), ("0x1F", 31.0), ("1.5", 1.5), ("2e3", 2000.0), ("-4", -4.0), ("inf", math.inf), (".5", 0.5), (".1e+7", 1e6)],
+    [
+        ("42", 42.0),
+        ("0x1F", 31.0),
+        ("1.5", 1.5),
+        ("2e3", 2000.0),
+        ("-4", -4.0),
+        ("inf", math.inf),
+        (".5", 0.5),
+        (".1e+7", 1e6),
+    ],
 )
 def test_number_literals(literal, value):
     osc = parse_text(f"scenario s:\n    x: float = {literal}\n")
@@ -65,9 +82,17 @@ def test_number_literals(literal, value):
 
 @pytest.mark.parametrize(
     "literal, value, dimension",
-    [("10m", 10.0, "length"), ("2km", 2000.0, "length"), ("50cm", 0.5, "length"), ("3.6kph", 1.0, "speed"),
-     ("1mph", 0.44704, "speed"), ("2mpsps", 2.0, "acceleration"), ("1500ms", 1.5, "time"), ("2min", 120.0, "time"),
-     ("1e2m", 100.0, "length")],
+    [
+        ("10m", 10.0, "length"),
+        ("2km", 2000.0, "length"),
+        ("50cm", 0.5, "length"),
+        ("3.6kph", 1.0, "speed"),
+        ("1mph", 0.44704, "speed"),
+        ("2mpsps", 2.0, "acceleration"),
+        ("1500ms", 1.5, "time"),
+        ("2min", 120.0, "time"),
+        ("1e2m", 100.0, "length"),
+    ],
 )
 def test_physical_literals_are_converted_to_si(literal, value, dimension):
     default = parse_text(f"scenario s:\n    x: length = {literal}\n").scenarios[0].fields[0].default
@@ -87,13 +112,20 @@ def test_a_range_written_high_to_low_is_an_error_not_silently_swapped():
         parse_text("scenario s:\n    x: length = [20m..10m]\n")
 
 
-@pytest.mark.parametrize("literal, value", [('"two words"', "two words"), ("'single'", "single"), ('"""triple"""', "triple"), ('"esc\\"aped"', 'esc"aped')])
+@pytest.mark.parametrize(
+    "literal, value",
+    [('"two words"', "two words"), ("'single'", "single"), ('"""triple"""', "triple"), ('"esc\\"aped"', 'esc"aped')],
+)
 def test_string_literals(literal, value):
     assert parse_text(f"scenario s:\n    x: string = {literal}\n").scenarios[0].fields[0].default.value == value
 
 
 def test_bool_enum_and_list_literals():
-    fields = parse_text("scenario s:\n    p: bool = false\n    q: side = side!left\n    r: float = [1, 2]\n").scenarios[0].fields
+    fields = (
+        parse_text("scenario s:\n    p: bool = false\n    q: side = side!left\n    r: float = [1, 2]\n")
+        .scenarios[0]
+        .fields
+    )
     assert fields[0].default.value is False
     assert (fields[1].default.name, fields[1].default.enum) == ("left", "side")
     assert isinstance(fields[2].default, model.ListValue) and len(fields[2].default.items) == 2
@@ -117,13 +149,28 @@ def test_operator_precedence():
 
 
 def test_actor_fields_declared_together_and_their_types():
-    scenario = checked("scenario s:\n    a, b: vehicle\n    t: truck\n    o: stationary_object\n    do parallel:\n        a.drive()\n        b.drive()\n        t.drive()\n        o.remain_stationary()\n").scenarios[0].scenario
-    assert [(a.name, a.type) for a in scenario.actors] == [("a", "vehicle"), ("b", "vehicle"), ("t", "truck"), ("o", "stationary_object")]
+    scenario = (
+        checked(
+            "scenario s:\n    a, b: vehicle\n    t: truck\n    o: stationary_object\n    do parallel:\n        a.drive()\n        b.drive()\n        t.drive()\n        o.remain_stationary()\n"
+        )
+        .scenarios[0]
+        .scenario
+    )
+    assert [(a.name, a.type) for a in scenario.actors] == [
+        ("a", "vehicle"),
+        ("b", "vehicle"),
+        ("t", "truck"),
+        ("o", "stationary_object"),
+    ]
     assert scenario.actor("o").stationary
 
 
 def test_a_declared_actor_type_derives_from_a_built_in_one():
-    scenario = checked("actor police inherits car:\n    siren: bool = false\nscenario s:\n    p: police\n    do p.drive()\n").scenarios[0].scenario
+    scenario = (
+        checked("actor police inherits car:\n    siren: bool = false\nscenario s:\n    p: police\n    do p.drive()\n")
+        .scenarios[0]
+        .scenario
+    )
     assert (scenario.actors[0].type, scenario.actors[0].base) == ("police", "car")
 
 
@@ -133,7 +180,9 @@ def test_the_device_under_test_needs_no_declaration():
 
 
 def test_a_parameter_range_from_keep_in():
-    assert domains(PAIR + "    gap: length with:\n        keep(it in [10..20]m)\n" + uses("gap")) == {"gap": "[10..20]m"}
+    assert domains(PAIR + "    gap: length with:\n        keep(it in [10..20]m)\n" + uses("gap")) == {
+        "gap": "[10..20]m"
+    }
 
 
 def test_bounds_from_several_keeps_intersect():
@@ -150,12 +199,18 @@ def test_a_hard_in_overrides_the_default():
 
 
 def test_a_default_keep_is_soft_and_a_later_default_replaces_it():
-    text = PAIR + "    gap: length with:\n        keep(default it == 12m)\n        keep(default it == 14m)\n        keep(it <= 40m)\n        keep(it >= 0m)\n" + uses("gap")
+    text = (
+        PAIR
+        + "    gap: length with:\n        keep(default it == 12m)\n        keep(default it == 14m)\n        keep(it <= 40m)\n        keep(it >= 0m)\n"
+        + uses("gap")
+    )
     assert domains(text) == {"gap": "14m"}
 
 
 def test_remove_default_restores_the_range():
-    text = PAIR + "    gap: length = 12m with:\n        keep(it in [5..15]m)\n        remove_default(it)\n" + uses("gap")
+    text = (
+        PAIR + "    gap: length = 12m with:\n        keep(it in [5..15]m)\n        remove_default(it)\n" + uses("gap")
+    )
     assert domains(text) == {"gap": "[5..15]m"}
 
 
@@ -170,13 +225,21 @@ def test_globals_are_parameters_of_every_scenario():
 
 
 def test_enum_bool_and_string_parameters_have_choices():
-    text = "enum mood: [calm, hasty]\n" + PAIR + "    m: mood\n    flag: bool\n    name: string = \"x\"\n    do parallel:\n        a.drive()\n        b.drive()\n"
+    text = (
+        "enum mood: [calm, hasty]\n"
+        + PAIR
+        + '    m: mood\n    flag: bool\n    name: string = "x"\n    do parallel:\n        a.drive()\n        b.drive()\n'
+    )
     result = domains(text)
     assert result == {"m": "calm | hasty", "flag": "false | true", "name": "x"}
 
 
 def test_a_relation_between_parameters_is_checked_on_samples():
-    text = PAIR + "    g1: length with:\n        keep(it in [0..10]m)\n    g2: length with:\n        keep(it in [0..10]m)\n    keep(g1 + g2 <= 12m)\n" + uses("g1", "g2")
+    text = (
+        PAIR
+        + "    g1: length with:\n        keep(it in [0..10]m)\n    g2: length with:\n        keep(it in [0..10]m)\n    keep(g1 + g2 <= 12m)\n"
+        + uses("g1", "g2")
+    )
     result = checked(text)
     space = result.scenario("s").space
     assert space.accepts({"g1": 5.0, "g2": 6.0}) and not space.accepts({"g1": 7.0, "g2": 6.0})
@@ -197,7 +260,10 @@ def test_arithmetic_in_an_argument_is_evaluated_over_the_range():
 
 
 def test_compositions_with_arguments_and_labels():
-    text = PAIR + "    do top: serial(duration: [10..20]s):\n        p: parallel(overlap: equal, duration: 5s):\n            a.drive()\n            b.drive()\n        o: one_of:\n            a.drive()\n            b.drive()\n"
+    text = (
+        PAIR
+        + "    do top: serial(duration: [10..20]s):\n        p: parallel(overlap: equal, duration: 5s):\n            a.drive()\n            b.drive()\n        o: one_of:\n            a.drive()\n            b.drive()\n"
+    )
     behavior = checked(text).scenarios[0].scenario.behavior
     assert (behavior.label, behavior.operator) == ("top", "serial")
     duration = behavior.argument("duration").value
@@ -206,7 +272,10 @@ def test_compositions_with_arguments_and_labels():
 
 
 def test_an_invocation_with_arguments_modifiers_keep_and_until():
-    text = PAIR + "    event go\n    do serial:\n        a.change_lane(1, left) with:\n            speed([20..30]mps)\n            keep(it.duration <= 5s)\n            until @go\n        emit go\n        b.drive()\n"
+    text = (
+        PAIR
+        + "    event go\n    do serial:\n        a.change_lane(1, left) with:\n            speed([20..30]mps)\n            keep(it.duration <= 5s)\n            until @go\n        emit go\n        b.drive()\n"
+    )
     invocation = checked(text).scenarios[0].scenario.behavior.children[0]
     assert (invocation.actor, invocation.action) == ("a", "change_lane")
     assert [a.name for a in invocation.arguments] == [None, None]
@@ -216,7 +285,10 @@ def test_an_invocation_with_arguments_modifiers_keep_and_until():
 
 
 def test_waits_take_a_time_an_event_or_a_condition():
-    text = PAIR + "    event e\n    do serial:\n        wait elapsed([1..2]s)\n        a.drive()\n        wait a.speed > 10mps\n        emit e\n        wait @e\n        b.drive()\n"
+    text = (
+        PAIR
+        + "    event e\n    do serial:\n        wait elapsed([1..2]s)\n        a.drive()\n        wait a.speed > 10mps\n        emit e\n        wait @e\n        b.drive()\n"
+    )
     waits = [c for c in checked(text).scenarios[0].scenario.behavior.children if isinstance(c, model.Wait)]
     assert isinstance(waits[0].condition, model.Call) and waits[0].condition.function == "elapsed"
     assert isinstance(waits[1].condition, model.Binary)
@@ -230,7 +302,11 @@ def test_extend_adds_members_to_a_scenario():
 
 
 def test_extend_adds_members_to_an_enum_in_either_spelling():
-    text = "enum color: [red]\nextend color: [green, blue]\nextend color:\n    white\n    black = 9\n" + PAIR + "    tint: color\n    do parallel:\n        a.drive()\n        b.drive()\n"
+    text = (
+        "enum color: [red]\nextend color: [green, blue]\nextend color:\n    white\n    black = 9\n"
+        + PAIR
+        + "    tint: color\n    do parallel:\n        a.drive()\n        b.drive()\n"
+    )
     assert domains(text)["tint"] == "red | green | blue | white | black"
 
 
@@ -250,7 +326,9 @@ STANDARD_SYNTAX_REFUSED = [
 ]
 
 
-@pytest.mark.parametrize("members, message, line", STANDARD_SYNTAX_REFUSED, ids=[m for _, m, _ in STANDARD_SYNTAX_REFUSED])
+@pytest.mark.parametrize(
+    "members, message, line", STANDARD_SYNTAX_REFUSED, ids=[m for _, m, _ in STANDARD_SYNTAX_REFUSED]
+)
 def test_the_standards_syntax_parses_and_what_the_tool_does_not_execute_is_refused_by_name(members, message, line):
     result = check_text(PAIR + members + "    do parallel:\n        a.drive()\n        b.drive()\n", "t.osc")
     report = result.report()
@@ -263,22 +341,38 @@ def test_a_type_test_in_a_wait_is_refused_by_name():
 
 
 def test_keywords_name_fields_where_the_standard_allows_it():
-    checked("struct origin:\n    namespace: string\n    sample: int\n    expression: float\n" + PAIR + "    do parallel:\n        a.drive()\n        b.drive()\n")
+    checked(
+        "struct origin:\n    namespace: string\n    sample: int\n    expression: float\n"
+        + PAIR
+        + "    do parallel:\n        a.drive()\n        b.drive()\n"
+    )
 
 
 def test_a_method_is_an_expression_with_or_without_the_keyword():
-    osc = parse_text("scenario s:\n    def twice() -> length is expression 2 * 3m\n    def once() -> length is only 3m\n")
-    assert [m.body.value if hasattr(m.body, "value") else m.body.operator for m in osc.scenarios[0].methods] == ["*", 3.0]
+    osc = parse_text(
+        "scenario s:\n    def twice() -> length is expression 2 * 3m\n    def once() -> length is only 3m\n"
+    )
+    assert [m.body.value if hasattr(m.body, "value") else m.body.operator for m in osc.scenarios[0].methods] == [
+        "*",
+        3.0,
+    ]
 
 
 # ---------------------------------------------------------------- several errors, imports
 
 
 def test_every_error_of_a_file_is_reported_not_just_the_first():
-    text = PAIR + "    do parallel:\n        ghost.drive()\n        a.fly()\n        b.drive() with:\n            lane(0, at: start)\n"
+    text = (
+        PAIR
+        + "    do parallel:\n        ghost.drive()\n        a.fly()\n        b.drive() with:\n            lane(0, at: start)\n"
+    )
     result = check_text(text, "t.osc")
     messages = [f"{d.location.line}: {d.message}" for d in result.errors]
-    assert messages == ["5: unknown actor 'ghost'", "6: unknown action 'fly'", "8: lane 0 is outside the road's 3 lanes"]
+    assert messages == [
+        "5: unknown actor 'ghost'",
+        "6: unknown action 'fly'",
+        "8: lane 0 is outside the road's 3 lanes",
+    ]
 
 
 def test_an_import_loads_declarations_relative_to_the_importing_file(tmp_path):

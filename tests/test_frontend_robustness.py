@@ -14,18 +14,44 @@ from pytest_roadlogic.frontend import OscError, check_text
 from tests.conftest import ROOT
 
 # Seeds: the benchmark scenarios and a spread of corpus files (parameters, keeps, events, imports).
-SEEDS = sorted((ROOT / "scenarios").glob("*.osc")) + [
-    ROOT / "tests" / "corpus" / name
-    for name in ("04_cut_in_dut.osc", "06_defaults.osc", "27_wait.osc", "31_line_joining.osc", "34_literals.osc",
-                 "35_expressions.osc", "39_events.osc", "40_actor_struct_decl.osc", "43_one_of_duration_overlap.osc",
-                 # issue 18's corpus: conditions, events, CARLA-style declarations, acceleration, calls
-                 "47_conditions.osc", "48_emit_wait.osc", "carla_types.osc", "50_acceleration.osc", "51_scenario_call.osc",
-                 "54_headway_then_brake.osc", "55_event_after_cut_in.osc", "57_paper_listing_overtake.osc",
-                 # the motion vocabulary, library parts, calls by position, events by condition
-                 "60_distance_cruise.osc", "62_assign_then_slow.osc", "63_change_lane_range.osc", "64_along_no_collision_follow.osc",
-                 "carla_highway.osc", "78_event_with_parameter.osc", "86_event_is_condition.osc", "89_actor_hierarchy.osc",
-                 "95_scenario_calls_positional.osc", "102_quoted_and_keyword_fields.osc")
-] + sorted((ROOT / "scenarios" / "realistic").glob("*.osc"))
+SEEDS = (
+    sorted((ROOT / "scenarios").glob("*.osc"))
+    + [
+        ROOT / "tests" / "corpus" / name
+        for name in (
+            "04_cut_in_dut.osc",
+            "06_defaults.osc",
+            "27_wait.osc",
+            "31_line_joining.osc",
+            "34_literals.osc",
+            "35_expressions.osc",
+            "39_events.osc",
+            "40_actor_struct_decl.osc",
+            "43_one_of_duration_overlap.osc",
+            # issue 18's corpus: conditions, events, CARLA-style declarations, acceleration, calls
+            "47_conditions.osc",
+            "48_emit_wait.osc",
+            "carla_types.osc",
+            "50_acceleration.osc",
+            "51_scenario_call.osc",
+            "54_headway_then_brake.osc",
+            "55_event_after_cut_in.osc",
+            "57_paper_listing_overtake.osc",
+            # the motion vocabulary, library parts, calls by position, events by condition
+            "60_distance_cruise.osc",
+            "62_assign_then_slow.osc",
+            "63_change_lane_range.osc",
+            "64_along_no_collision_follow.osc",
+            "carla_highway.osc",
+            "78_event_with_parameter.osc",
+            "86_event_is_condition.osc",
+            "89_actor_hierarchy.osc",
+            "95_scenario_calls_positional.osc",
+            "102_quoted_and_keyword_fields.osc",
+        )
+    ]
+    + sorted((ROOT / "scenarios" / "realistic").glob("*.osc"))
+)
 # the standard's syntax the tool reads and refuses by name (var, sample, on, methods, type tests, ...)
 STANDARD_SYNTAX = """import osc.standard
 enum color: [red, green]

@@ -39,7 +39,12 @@ MEGABYTES_PER_INPUT = 300  # growth of the process's peak memory from one input
 
 ORDINARY = ["0", "1", "2.5", "3", "5", "8", "15", "20", "30", "50", "120", ".5"]
 EXTREME = ["1e3", "1e6", "1e7", "1e308", "-3", "-0.5", "0.001", "0x10"]
-UNITS = {"length": ["m", "km", "cm"], "speed": ["kph", "mps", "mph"], "time": ["s", "ms", "min"], "acceleration": ["mpsps", "mpss"]}
+UNITS = {
+    "length": ["m", "km", "cm"],
+    "speed": ["kph", "mps", "mph"],
+    "time": ["s", "ms", "min"],
+    "acceleration": ["mpsps", "mpss"],
+}
 
 
 @st.composite
@@ -53,7 +58,9 @@ def quantity(draw, kind: str) -> str:
     unit = draw(st.sampled_from(UNITS[kind][:1] if draw(st.integers(0, 3)) else UNITS[kind]))
     if draw(st.integers(0, 3)) == 0:
         low, high = draw(number()), draw(number())
-        bounds = sorted((low, high), key=_value) if draw(st.integers(0, 5)) else (low, high)  # one in six as written, maybe reversed
+        bounds = (
+            sorted((low, high), key=_value) if draw(st.integers(0, 5)) else (low, high)
+        )  # one in six as written, maybe reversed
         return f"[{bounds[0]}..{bounds[1]}]{unit}"
     return f"{draw(number())}{unit}"
 
@@ -158,7 +165,9 @@ def through_the_pipeline(text: str) -> str:
 @given(scenario_text())
 # found by this test on a fresh-clone CI run (another Hypothesis release draws other inputs): a
 # scenario that declares no vehicle reached the planner, which indexed its first vehicle
-@example("import osc.standard\nscenario fuzz:\n    event go\n    do serial:\n        serial:\n            wait elapsed(1e3s)\n")
+@example(
+    "import osc.standard\nscenario fuzz:\n    event go\n    do serial:\n        serial:\n            wait elapsed(1e3s)\n"
+)
 def test_any_generated_or_mutated_scenario_is_planned_or_refused_with_the_projects_errors(text):
     peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
     started = time.perf_counter()
@@ -169,8 +178,24 @@ def test_any_generated_or_mutated_scenario_is_planned_or_refused_with_the_projec
 
 # ------------------------------------------------------------------ issue 38: hostile paths, names and case files
 
-HOSTILE_PATHS = ["/etc/passwd", "/proc/self/environ", "../../../../etc/shadow", "..", ".", "", "/dev/zero", "a/../../outside.osc",
-                 "~/x.osc", "%2e%2e/outside.osc", "lib.osc/../../outside.osc", "link.osc", "fifo.osc", "sub", "inside.osc", "x" * 300]
+HOSTILE_PATHS = [
+    "/etc/passwd",
+    "/proc/self/environ",
+    "../../../../etc/shadow",
+    "..",
+    ".",
+    "",
+    "/dev/zero",
+    "a/../../outside.osc",
+    "~/x.osc",
+    "%2e%2e/outside.osc",
+    "lib.osc/../../outside.osc",
+    "link.osc",
+    "fifo.osc",
+    "sub",
+    "inside.osc",
+    "x" * 300,
+]
 HOSTILE_NAMES = ["|../../../x|", "|/etc/passwd|", "|..|", "|a b|", "|$(touch P)|", "|x\\y|", "|.hidden|", "plain"]
 SECRET = "TOKEN=must-never-be-printed"
 
@@ -197,7 +222,11 @@ def test_hostile_imports_and_scenario_names_read_nothing_outside_and_write_nothi
         imports = "".join(f'import "{target}"\n' for target in targets)
         (root / "sub" / "a.osc").write_text(f"{imports}scenario {name}:\n    v1: car\n    do v1.drive(duration: 3s)\n")
         before = {p for p in Path(folder).rglob("*")}
-        with _working_folder(root / "sub"), contextlib.redirect_stdout(io.StringIO()) as out, contextlib.redirect_stderr(io.StringIO()) as err:
+        with (
+            _working_folder(root / "sub"),
+            contextlib.redirect_stdout(io.StringIO()) as out,
+            contextlib.redirect_stderr(io.StringIO()) as err,
+        ):
             code = cli.main(["automaton", "a.osc"])
         said = out.getvalue() + err.getvalue()
         assert SECRET not in said and "root:" not in said
@@ -207,11 +236,40 @@ def test_hostile_imports_and_scenario_names_read_nothing_outside_and_write_nothi
 
 
 @settings(max_examples=300, deadline=None, derandomize=True, database=None, suppress_health_check=list(HealthCheck))
-@given(st.dictionaries(st.sampled_from(["path", "scenario", "seed", "values", "drivers", "strategy", "instance", "max_horizon", "simulator", "encoding", "lanes"]),
-                       st.one_of(st.sampled_from(HOSTILE_PATHS), st.integers(-2**70, 2**70), st.floats(allow_nan=True), st.none(), st.booleans(),
-                                 st.dictionaries(st.text(max_size=5), st.one_of(st.text(max_size=5), st.integers(), st.lists(st.integers(), max_size=2)), max_size=2),
-                                 st.lists(st.integers(), max_size=2)),
-                       min_size=0, max_size=6))
+@given(
+    st.dictionaries(
+        st.sampled_from(
+            [
+                "path",
+                "scenario",
+                "seed",
+                "values",
+                "drivers",
+                "strategy",
+                "instance",
+                "max_horizon",
+                "simulator",
+                "encoding",
+                "lanes",
+            ]
+        ),
+        st.one_of(
+            st.sampled_from(HOSTILE_PATHS),
+            st.integers(-(2**70), 2**70),
+            st.floats(allow_nan=True),
+            st.none(),
+            st.booleans(),
+            st.dictionaries(
+                st.text(max_size=5),
+                st.one_of(st.text(max_size=5), st.integers(), st.lists(st.integers(), max_size=2)),
+                max_size=2,
+            ),
+            st.lists(st.integers(), max_size=2),
+        ),
+        min_size=0,
+        max_size=6,
+    )
+)
 def test_a_crafted_case_file_is_refused_or_leads_only_inside_the_project(fields):
     from pytest_roadlogic.case import Case, CaseFileError
     from pytest_roadlogic.confinement import ReadRoots

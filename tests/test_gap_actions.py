@@ -34,9 +34,14 @@ def checked(text):
 
 def test_a_kept_gap_holds_throughout_and_a_changed_gap_holds_at_the_end():
     described = build_automaton(checked(GAPS.format(kept="2s", target="15m"))).describe()
-    assert "lead.drive | ego.keep_time_gap invariant: l(lead) = 2 and 20 <= v(lead) <= 22 and 1.8 <= h(lead, ego) <= 2.2" in described
+    assert (
+        "lead.drive | ego.keep_time_gap invariant: l(lead) = 2 and 20 <= v(lead) <= 22 and 1.8 <= h(lead, ego) <= 2.2"
+        in described
+    )
     assert "-> fin: l(lead) = 2 and 20 <= v(lead) <= 22 and 14 <= p(lead) - p(ego) <= 16" in described
-    assert "lead.drive | ego.change_space_gap invariant: l(lead) = 2 and 20 <= v(lead) <= 22 and l(ego) = 2\n" in described
+    assert (
+        "lead.drive | ego.change_space_gap invariant: l(lead) = 2 and 20 <= v(lead) <= 22 and l(ego) = 2\n" in described
+    )
 
 
 @pytest.mark.parametrize("seed", [1, 2, 3])

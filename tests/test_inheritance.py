@@ -29,7 +29,9 @@ def errors_of(text: str) -> list[str]:
 
 
 def test_a_child_runs_its_parents_do_with_its_own_keep_narrowing_the_parents_parameter():
-    result = check_text(PARENT + "\nscenario vehicle.close_follow inherits follow_base:\n    keep(gap <= 20m)\n", "c.osc")
+    result = check_text(
+        PARENT + "\nscenario vehicle.close_follow inherits follow_base:\n    keep(gap <= 20m)\n", "c.osc"
+    )
     assert not result.errors, result.report()
     child = next(s for s in result.scenarios if s.scenario.name == "close_follow")
     assert child.space.domains["gap"].describe() == "[15..20]m"
@@ -39,7 +41,9 @@ def test_a_child_runs_its_parents_do_with_its_own_keep_narrowing_the_parents_par
 
 
 def test_the_parent_stays_a_scenario_of_its_own_with_its_own_range():
-    result = check_text(PARENT + "\nscenario vehicle.close_follow inherits follow_base:\n    keep(gap <= 20m)\n", "c.osc")
+    result = check_text(
+        PARENT + "\nscenario vehicle.close_follow inherits follow_base:\n    keep(gap <= 20m)\n", "c.osc"
+    )
     parent = next(s for s in result.scenarios if s.scenario.name == "follow_base")
     assert parent.space.domains["gap"].describe() == "[15..40]m"
 
@@ -70,7 +74,10 @@ scenario vehicle.narrowed inherits with_do:
 @pytest.mark.parametrize(
     "child, expected",
     [
-        ("scenario vehicle.c inherits nowhere:\n    keep(gap > 1m)\n", "scenario 'c' inherits an unknown scenario 'nowhere'"),
+        (
+            "scenario vehicle.c inherits nowhere:\n    keep(gap > 1m)\n",
+            "scenario 'c' inherits an unknown scenario 'nowhere'",
+        ),
         (
             "scenario vehicle.a inherits b:\n    keep(gap > 1m)\nscenario vehicle.b inherits a:\n    keep(gap > 1m)\n",
             "the inherits of scenario 'a' form a cycle (a -> b -> a)",
@@ -80,7 +87,10 @@ scenario vehicle.narrowed inherits with_do:
             "scenario 'c' declares a do and inherits one from 'follow_base' (line 6); a scenario has one do",
         ),
         ("scenario vehicle.c inherits follow_base:\n    lead: truck\n", "'lead' is already declared on line 3"),
-        ("scenario vehicle.c inherits follow_base(gap == 20m):\n    keep(gap > 1m)\n", "not supported: conditional inheritance"),
+        (
+            "scenario vehicle.c inherits follow_base(gap == 20m):\n    keep(gap > 1m)\n",
+            "not supported: conditional inheritance",
+        ),
     ],
     ids=["unknown-parent", "cycle", "second-do", "field-declared-again", "conditional"],
 )

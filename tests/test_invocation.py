@@ -36,7 +36,9 @@ def checked(text: str):
 
 
 def test_a_call_binds_its_argument_and_keeps_the_other_parameter_as_the_callers_named_after_the_call():
-    result = checked(CALLEE + "scenario top:\n    dut: car\n    lead: car\n    do dut.follow_at(lead_speed: [20mps..25mps])\n")
+    result = checked(
+        CALLEE + "scenario top:\n    dut: car\n    lead: car\n    do dut.follow_at(lead_speed: [20mps..25mps])\n"
+    )
     assert [s.scenario.name for s in result.scenarios] == ["top"], "the called scenario runs only as part of its caller"
     top = result.scenarios[0]
     assert {n: d.describe() for n, d in top.space.domains.items()} == {"follow_at.gap": "[20..40]m"}
@@ -45,7 +47,9 @@ def test_a_call_binds_its_argument_and_keeps_the_other_parameter_as_the_callers_
 
 
 def test_positional_arguments_bind_parameters_in_declaration_order_and_an_actor_argument_renames_the_actor():
-    result = checked(CALLEE + "scenario top:\n    dut: car\n    front: car\n    do dut.follow_at(30m, 22mps, lead: front)\n")
+    result = checked(
+        CALLEE + "scenario top:\n    dut: car\n    front: car\n    do dut.follow_at(30m, 22mps, lead: front)\n"
+    )
     top = result.scenarios[0]
     assert top.space.domains == {}
     described = build_automaton(top).describe()
@@ -58,25 +62,40 @@ def test_an_actor_the_caller_does_not_declare_becomes_its_actor():
 
 
 def test_a_scenario_called_twice_has_its_phases_labelled_per_call():
-    text = CALLEE + "scenario top:\n    dut: car\n    lead: car\n    do serial:\n        first: dut.follow_at(lead_speed: 20mps)\n        second: dut.follow_at(lead_speed: 25mps)\n"
+    text = (
+        CALLEE
+        + "scenario top:\n    dut: car\n    lead: car\n    do serial:\n        first: dut.follow_at(lead_speed: 20mps)\n        second: dut.follow_at(lead_speed: 25mps)\n"
+    )
     top = checked(text).scenarios[0]
     labels = [c.label for c in top.scenario.behavior.children]
     assert labels == ["first", "second"]
     assert set(top.space.domains) == {"first.gap", "second.gap"}
 
 
-@pytest.mark.parametrize("call, message", [
-    ("dut.follow_at(speed_of_lead: 20mps)", "scenario 'follow_at' has no field 'speed_of_lead'"),
-    ("dut.follow_at(lead: 3m, lead_speed: 20mps)", "'lead' is an actor: pass the name of one of the caller's actors"),
-    ("dut.follow_at(lead_speed: 20mps) with:\n        lane(1)", "not supported: modifiers on a call of scenario 'follow_at'"),
-])
+@pytest.mark.parametrize(
+    "call, message",
+    [
+        ("dut.follow_at(speed_of_lead: 20mps)", "scenario 'follow_at' has no field 'speed_of_lead'"),
+        (
+            "dut.follow_at(lead: 3m, lead_speed: 20mps)",
+            "'lead' is an actor: pass the name of one of the caller's actors",
+        ),
+        (
+            "dut.follow_at(lead_speed: 20mps) with:\n        lane(1)",
+            "not supported: modifiers on a call of scenario 'follow_at'",
+        ),
+    ],
+)
 def test_a_wrong_call_is_a_located_error(call, message):
     result = check_text(CALLEE + f"scenario top:\n    dut: car\n    lead: car\n    do {call}\n", "c.osc")
     assert "c.osc:16:" in result.report() and message in result.report(), result.report()
 
 
 def test_a_scenario_that_calls_itself_is_a_located_error():
-    result = check_text("scenario loop:\n    dut: car\n    do serial:\n        dut.drive(duration: 2s)\n        dut.loop()\nscenario top:\n    dut: car\n    do dut.loop()\n", "c.osc")
+    result = check_text(
+        "scenario loop:\n    dut: car\n    do serial:\n        dut.drive(duration: 2s)\n        dut.loop()\nscenario top:\n    dut: car\n    do dut.loop()\n",
+        "c.osc",
+    )
     assert "calls itself" in result.report(), result.report()
 
 

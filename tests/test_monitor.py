@@ -12,9 +12,17 @@ DT = 0.5
 
 def make_trace(v1_x, v1_lane, v2_x, v2_lane):
     n = len(v1_x)
+
     def columns(x, lane):
-        return {"x": np.array(x, float), "y": np.zeros(n), "heading": np.zeros(n), "speed": np.full(n, 10.0),
-                "acceleration": np.zeros(n), "lane": np.array(lane, int)}
+        return {
+            "x": np.array(x, float),
+            "y": np.zeros(n),
+            "heading": np.zeros(n),
+            "speed": np.full(n, 10.0),
+            "acceleration": np.zeros(n),
+            "lane": np.array(lane, int),
+        }
+
     return Trace(np.arange(n) * DT, {"v1": columns(v1_x, v1_lane), "v2": columns(v2_x, v2_lane)})
 
 
@@ -76,11 +84,19 @@ def test_a_wait_must_last_its_time():
 
     text = "scenario s:\n  v1: car\n  do serial:\n    v1.drive()\n    wait elapsed(2s)\n    v1.drive() with:\n      lane(0 + 1, at: end)\n"
     automaton = build_automaton(check_text(text).scenarios[0])
+
     def trace(lanes):
         n = len(lanes)
-        columns = {"x": np.arange(n) * 5.0, "y": np.zeros(n), "heading": np.zeros(n), "speed": np.full(n, 10.0),
-                   "acceleration": np.zeros(n), "lane": np.array(lanes)}
+        columns = {
+            "x": np.arange(n) * 5.0,
+            "y": np.zeros(n),
+            "heading": np.zeros(n),
+            "speed": np.full(n, 10.0),
+            "acceleration": np.zeros(n),
+            "lane": np.array(lanes),
+        }
         return Trace(np.arange(n) * DT, {"v1": columns})
+
     # at 0.5 s per sample, the wait needs 3 to 5 samples (1.5..2.5 s) between its start and end
     assert monitor(automaton, trace([0, 0, 0, 0, 0, 0, 0, 2])).accepted
     assert not monitor(automaton, trace([0, 0, 0, 0, 2])).accepted
@@ -91,21 +107,32 @@ def _one_car_trace(lanes):
     n = len(lanes)
     speed = np.full(n, 12.0)
     speed[0] = 10.0
-    columns = {"x": np.arange(n) * 5.0, "y": np.zeros(n), "heading": np.zeros(n), "speed": speed,
-               "acceleration": np.zeros(n), "lane": np.array(lanes)}
+    columns = {
+        "x": np.arange(n) * 5.0,
+        "y": np.zeros(n),
+        "heading": np.zeros(n),
+        "speed": speed,
+        "acceleration": np.zeros(n),
+        "lane": np.array(lanes),
+    }
     return Trace(np.arange(n) * DT, {"v1": columns})
 
 
-TIMED = ("scenario s:\n  v1: car\n  do serial:\n    a: v1.drive(duration: {a}) with:\n      speed(10mps, at: start)\n"
-         "    v1.drive() with:\n      lane(2)\n")
+TIMED = (
+    "scenario s:\n  v1: car\n  do serial:\n    a: v1.drive(duration: {a}) with:\n      speed(10mps, at: start)\n"
+    "    v1.drive() with:\n      lane(2)\n"
+)
 
 
-@pytest.mark.parametrize("duration, lanes, why", [
-    # the car reaches lane 2 (index 1) after 3.5 s, where a lasts at most 2 s
-    ("[1s..2s]", [0] * 7 + [1] * 4, "a lasts 1..2 s but had lasted 2.0 s by t = 2.0 s, before the guard held"),
-    # the car is in lane 2 at 1-1.5 s only, where a lasts at least 3 s
-    ("[3s..4s]", [0] * 2 + [1] * 2 + [0] * 7, "a lasts 3..4 s but had lasted 1.5 s there (1.5 s short)"),
-])
+@pytest.mark.parametrize(
+    "duration, lanes, why",
+    [
+        # the car reaches lane 2 (index 1) after 3.5 s, where a lasts at most 2 s
+        ("[1s..2s]", [0] * 7 + [1] * 4, "a lasts 1..2 s but had lasted 2.0 s by t = 2.0 s, before the guard held"),
+        # the car is in lane 2 at 1-1.5 s only, where a lasts at least 3 s
+        ("[3s..4s]", [0] * 2 + [1] * 2 + [0] * 7, "a lasts 3..4 s but had lasted 1.5 s there (1.5 s short)"),
+    ],
+)
 def test_a_guard_that_held_out_of_time_is_explained_by_the_duration_not_as_never_held(duration, lanes, why):
     """Issue 20: a rejection must not print values that meet the guard it says never held."""
     from pytest_roadlogic.automaton import build_automaton

@@ -32,7 +32,15 @@ ROOT = Path(__file__).resolve().parent.parent
 # The benchmark suite, and corpus files that add what it lacks: waits, durations, one_of, side_of,
 # time headways, a distance travelled.
 SCENARIOS = sorted((ROOT / "scenarios").glob("*.osc")) + [
-    ROOT / "tests" / "corpus" / name for name in ("16_one_of.osc", "19_lane_relative.osc", "27_wait.osc", "28_durations.osc", "46_time_headway.osc", "106_traveled_distance_condition.osc")
+    ROOT / "tests" / "corpus" / name
+    for name in (
+        "16_one_of.osc",
+        "19_lane_relative.osc",
+        "27_wait.osc",
+        "28_durations.osc",
+        "46_time_headway.osc",
+        "106_traveled_distance_condition.osc",
+    )
 ]
 DT = 0.5
 # Placements enumerated per example at most: keeps the brute force to about a second.
@@ -105,15 +113,24 @@ def traces(draw, actors: tuple[str, ...], stationary: frozenset[str], n_max: int
             speed = [draw(st.sampled_from([0.0, 0.05, 0.5]))] * n
         else:
             pace = draw(st.integers(1, 6))
-            steps = [pace + d for d in draw(st.lists(st.sampled_from([0, 0, 0, 1, -1, -pace, -pace - 1]), min_size=n - 1, max_size=n - 1))]
+            steps = [
+                pace + d
+                for d in draw(
+                    st.lists(st.sampled_from([0, 0, 0, 1, -1, -pace, -pace - 1]), min_size=n - 1, max_size=n - 1)
+                )
+            ]
             speed = [pace / DT + draw(st.sampled_from([0.0, 0.5, -0.5, 2.0]))] * n
         x = np.cumsum([start, *steps]).astype(float)
         lane = [draw(st.integers(0, 2))]
         for _ in range(n - 1):
             lane.append(min(2, max(0, lane[-1] + draw(st.sampled_from([0, 0, 0, 0, -1, 1])))))
         columns[actor] = {
-            "x": x, "y": np.zeros(n), "heading": np.zeros(n), "speed": np.array(speed),
-            "acceleration": np.zeros(n), "lane": np.array(lane),
+            "x": x,
+            "y": np.zeros(n),
+            "heading": np.zeros(n),
+            "speed": np.array(speed),
+            "acceleration": np.zeros(n),
+            "lane": np.array(lane),
         }
     return Trace(np.arange(n) * DT, columns)
 
@@ -124,8 +141,12 @@ def plan_trace(plan) -> Trace:
     columns = {}
     for vehicle, states in plan.states.items():
         columns[vehicle] = {
-            "x": np.array([s.position for s in states]), "y": np.zeros(n), "heading": np.zeros(n),
-            "speed": np.array([s.speed for s in states]), "acceleration": np.zeros(n), "lane": np.array([s.lane for s in states]),
+            "x": np.array([s.position for s in states]),
+            "y": np.zeros(n),
+            "heading": np.zeros(n),
+            "speed": np.array([s.speed for s in states]),
+            "acceleration": np.zeros(n),
+            "lane": np.array([s.lane for s in states]),
         }
     return Trace(np.arange(n) * plan.dt, columns)
 
@@ -138,8 +159,18 @@ def perturbed(draw, base: Trace, n_max: int) -> Trace:
     last = min(n, first + n_max)
     columns = {}
     for actor, c in base.actors.items():
-        x = c["x"][first:last] + np.array(draw(st.lists(st.sampled_from([0.0, 0.0, 0.0, 0.5, -0.5, 2.0, -2.0, -9.0]), min_size=last - first, max_size=last - first)))
-        lane = c["lane"][first:last] + np.array(draw(st.lists(st.sampled_from([0, 0, 0, 0, 0, 0, 1, -1]), min_size=last - first, max_size=last - first)))
+        x = c["x"][first:last] + np.array(
+            draw(
+                st.lists(
+                    st.sampled_from([0.0, 0.0, 0.0, 0.5, -0.5, 2.0, -2.0, -9.0]),
+                    min_size=last - first,
+                    max_size=last - first,
+                )
+            )
+        )
+        lane = c["lane"][first:last] + np.array(
+            draw(st.lists(st.sampled_from([0, 0, 0, 0, 0, 0, 1, -1]), min_size=last - first, max_size=last - first))
+        )
         columns[actor] = {**{k: v[first:last] for k, v in c.items()}, "x": x, "lane": np.clip(lane, 0, 2)}
     return Trace(base.times[first:last] - base.times[first], columns)
 

@@ -19,13 +19,16 @@ from tests.test_planning_continuous import check_continuous_plan
 
 HEADER = "import osc.standard\n\nscenario top:\n    path: Path\n    car1: car\n"
 
-DISTANCE = HEADER + """    do serial:
+DISTANCE = (
+    HEADER
+    + """    do serial:
         cruise: car1.drive(duration: [3s..5s]) with:
             speed([15mps..25mps])
         run: car1.drive() with:
             distance([100m..120m])
             speed([15mps..25mps])
 """
+)
 
 
 def automaton_of(text: str):
@@ -53,7 +56,14 @@ def cruise_trace(automaton, speed: float, seconds: float, dt: float = 0.1) -> Tr
     lane = ContinuousPlanner(automaton, ContinuousSettings(), 1).first().states["car1"][0].lane
     times = np.arange(0, seconds + dt / 2, dt)
     n = len(times)
-    columns = {"x": speed * times, "y": np.zeros(n), "heading": np.zeros(n), "speed": np.full(n, speed), "acceleration": np.zeros(n), "lane": np.full(n, lane)}
+    columns = {
+        "x": speed * times,
+        "y": np.zeros(n),
+        "heading": np.zeros(n),
+        "speed": np.full(n, speed),
+        "acceleration": np.zeros(n),
+        "lane": np.full(n, lane),
+    }
     return Trace(times, {"car1": columns})
 
 
@@ -93,18 +103,23 @@ def test_a_motion_modifier_the_tool_cannot_read_is_a_located_error(modifier, mes
 
 def test_along_and_avoid_collisions_ask_nothing_more_than_the_road_and_the_collision_rule():
     plain = automaton_of(HEADER + "    do car1.drive(duration: 5s)\n")
-    written = automaton_of(HEADER + "    do car1.drive(path, duration: 5s) with:\n        along(path)\n        avoid_collisions(true)\n")
+    written = automaton_of(
+        HEADER + "    do car1.drive(path, duration: 5s) with:\n        along(path)\n        avoid_collisions(true)\n"
+    )
     assert written.describe() == plain.describe()
 
 
 def test_keep_position_stands_still_and_assign_speed_holds_at_the_phases_start():
-    automaton = automaton_of(HEADER + """    parked: vehicle
+    automaton = automaton_of(
+        HEADER
+        + """    parked: vehicle
     do parallel(duration: 6s):
         parked.keep_position()
         serial:
             car1.assign_speed(20mps)
             car1.change_speed(target: 10mps, rate_peak: 3mpss)
-""")
+"""
+    )
     assert not any("parked" in location.drivers for location in automaton.locations)  # no progress asked of it
     plan = ContinuousPlanner(automaton, ContinuousSettings(), 1).first()
     check_continuous_plan(plan, automaton)
@@ -116,7 +131,10 @@ def test_keep_position_stands_still_and_assign_speed_holds_at_the_phases_start()
 
 
 def test_change_lane_with_a_range_of_lanes_may_change_one_or_two():
-    automaton = automaton_of(HEADER + "    do car1.drive(duration: 6s) with:\n        lane(1, at: start)\n        change_lane([1..2], left)\n")
+    automaton = automaton_of(
+        HEADER
+        + "    do car1.drive(duration: 6s) with:\n        lane(1, at: start)\n        change_lane([1..2], left)\n"
+    )
     assert automaton.lanes >= 3
     ends = set()
     for transition in automaton.transitions:
@@ -140,5 +158,11 @@ def test_rate_profile_smooth_is_what_every_run_does_and_the_shapes_the_plan_does
     plain = automaton_of(HEADER + change.format(""))
     assert automaton_of(HEADER + change.format(", rate_profile: smooth")).describe() == plain.describe()
     for shape in ("constant", "asap"):
-        errors = [d for d in check_text(HEADER + change.format(f", rate_profile: {shape}"), "top.osc").diagnostics if d.severity == "error"]
-        assert [(d.location.line, d.message) for d in errors] == [(6, f"not supported: rate_profile: {shape} (the speed's shape inside the phase)")]
+        errors = [
+            d
+            for d in check_text(HEADER + change.format(f", rate_profile: {shape}"), "top.osc").diagnostics
+            if d.severity == "error"
+        ]
+        assert [(d.location.line, d.message) for d in errors] == [
+            (6, f"not supported: rate_profile: {shape} (the speed's shape inside the phase)")
+        ]

@@ -32,7 +32,12 @@ def schema_path() -> Path:
     """The XSD that scenariogeneration ships for the version written (installed beside it)."""
     import scenariogeneration
 
-    name = {0: "OpenSCENARIO_1_0.xsd", 1: "OpenSCENARIO_1_1.xsd", 2: "OpenSCENARIO_1_2.xsd", 3: "OpenSCENARIO_1_3_1.xsd"}[OPENSCENARIO_MINOR_VERSION]
+    name = {
+        0: "OpenSCENARIO_1_0.xsd",
+        1: "OpenSCENARIO_1_1.xsd",
+        2: "OpenSCENARIO_1_2.xsd",
+        3: "OpenSCENARIO_1_3_1.xsd",
+    }[OPENSCENARIO_MINOR_VERSION]
     return Path(scenariogeneration.__file__).parent.parent / "schemas" / name
 
 
@@ -97,7 +102,11 @@ def test_the_road_has_the_simulated_roads_lanes_widths_and_place(written):
     road = simulation.road
     root = etree.parse(str(folder / "road.xodr")).getroot()
     (geometry,) = root.iter("geometry")
-    assert float(geometry.get("x")) == road.x_start and float(geometry.get("y")) == road.width and float(geometry.get("hdg")) == 0.0
+    assert (
+        float(geometry.get("x")) == road.x_start
+        and float(geometry.get("y")) == road.width
+        and float(geometry.get("hdg")) == 0.0
+    )
     assert abs(float(geometry.get("length")) - (road.x_end - road.x_start)) < 1e-9
     assert geometry.find("line") is not None, "a straight road"
     (section,) = root.iter("laneSection")
@@ -117,14 +126,34 @@ def test_an_openscenario_player_replays_the_file_along_the_trace(written, tmp_pa
     simulation, folder = written
     log = tmp_path / "esmini.csv"
     dt = f"{simulation.dt:g}"
-    result = subprocess.run([player, "--headless", "--osc", str(folder / "scenario.xosc"), "--fixed_timestep", dt, "--csv_logger", str(log)],
-                            capture_output=True, text=True, timeout=120)
+    result = subprocess.run(
+        [
+            player,
+            "--headless",
+            "--osc",
+            str(folder / "scenario.xosc"),
+            "--fixed_timestep",
+            dt,
+            "--csv_logger",
+            str(log),
+        ],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
     assert result.returncode == 0, result.stdout + result.stderr
     lines = [line for line in log.read_text().splitlines() if line.strip()]
-    header_at = next(k for k, line in enumerate(lines) if "time" in line.lower() and "x" in [c.strip().lower() for c in line.split(",")])
+    header_at = next(
+        k
+        for k, line in enumerate(lines)
+        if "time" in line.lower() and "x" in [c.strip().lower() for c in line.split(",")]
+    )
     header = [c.strip().lower() for c in lines[header_at].split(",")]
     time_column = next(k for k, c in enumerate(header) if "time" in c)
-    rows = [dict(zip(header, (c.strip() for c in line.split(",")))) | {"time": line.split(",")[time_column].strip()} for line in lines[header_at + 1:]]
+    rows = [
+        dict(zip(header, (c.strip() for c in line.split(",")))) | {"time": line.split(",")[time_column].strip()}
+        for line in lines[header_at + 1 :]
+    ]
     for vehicle in simulation.trace.actors:
         played = [r for r in rows if r.get("name") == vehicle]
         assert played, f"esmini logged no {vehicle}"

@@ -19,7 +19,9 @@ def check_plan(plan, automaton, settings=SETTINGS):
     for v in vehicles:
         states = plan.states[v]
         if v in automaton.stationary:
-            assert all(s.speed == 0 and s.position == states[0].position and s.lane == states[0].lane for s in states), f"{v} moved"
+            assert all(
+                s.speed == 0 and s.position == states[0].position and s.lane == states[0].lane for s in states
+            ), f"{v} moved"
             continue
         changes = [k for k in range(1, len(states)) if states[k].lane != states[k - 1].lane]
         for k in range(len(states)):
@@ -73,7 +75,9 @@ def check_run(plan, automaton):
                     value = end.position - start.position
                 else:  # the mean acceleration over the phase
                     value = (end.speed - start.speed) / ((step - begun) * plan.dt)
-                assert rate.low - 1e-6 <= value <= rate.high + 1e-6, f"{rate} broken: {value:.2f} from step {begun} to {step}"
+                assert rate.low - 1e-6 <= value <= rate.high + 1e-6, (
+                    f"{rate} broken: {value:.2f} from step {begun} to {step}"
+                )
         location, last_step = transition.target, step
     assert location == automaton.final
 
@@ -184,7 +188,9 @@ def test_an_impossible_scenario_is_reported_with_both_conflicting_modifiers(tmp_
     )
     assert main(["plan", str(path)]) == 1
     err = capsys.readouterr().err
-    assert f"{path}:7:7: error: 30 <= p(a) - p(b) <= 40 cannot hold together with 10 <= p(b) - p(a) <= 20 (line 8)" in err
+    assert (
+        f"{path}:7:7: error: 30 <= p(a) - p(b) <= 40 cannot hold together with 10 <= p(b) - p(a) <= 20 (line 8)" in err
+    )
     assert f"{path}:8:7: error:" in err and "Traceback" not in err
 
 
@@ -234,13 +240,19 @@ def test_a_constraint_the_domain_rules_forbid_is_named_with_those_rules():
     with pytest.raises(UnsatisfiableScenario) as caught:
         Planner(automaton, PlanningSettings(max_horizon=8)).first()
     report = caught.value.report()
-    assert "fast.osc:4:5: error: 50 <= v(a) <= 60 cannot hold in any plan under the domain rules (speeds 2..40 m/s" in report
+    assert (
+        "fast.osc:4:5: error: 50 <= v(a) <= 60 cannot hold in any plan under the domain rules (speeds 2..40 m/s"
+        in report
+    )
 
 
 def test_roadlogic_plan_prints_each_plan_as_a_table_and_the_instance_on_request(capsys):
     from pytest_roadlogic.cli import main
 
-    assert main(["plan", str(Path(__file__).parent.parent / "scenarios" / "overtake.osc"), "--plans", "2", "--show-asp"]) == 0
+    assert (
+        main(["plan", str(Path(__file__).parent.parent / "scenarios" / "overtake.osc"), "--plans", "2", "--show-asp"])
+        == 0
+    )
     out = capsys.readouterr().out
     assert "#program state(t)." in out and "transition(0," in out
     assert "plan 1 of scenario overtake" in out and "plan 2 of scenario overtake" in out
@@ -299,9 +311,15 @@ def test_a_random_start_drives_a_free_vehicle_as_preferred():
     followed = steps = kept_lane = 0
     for seed in range(1, 13):
         planner = Planner(automaton, settings, seed=seed)
-        preferred = int(re.search(r"preferred_acc\(v3,(-?\d+)\)", planner.preferences).group(1)) * settings.grid / settings.dt
+        preferred = (
+            int(re.search(r"preferred_acc\(v3,(-?\d+)\)", planner.preferences).group(1)) * settings.grid / settings.dt
+        )
         states = planner.first().states["v3"]
-        possible = [(a.speed, b.speed) for a, b in zip(states, states[1:]) if settings.min_speed <= a.speed + preferred <= settings.max_speed]
+        possible = [
+            (a.speed, b.speed)
+            for a, b in zip(states, states[1:])
+            if settings.min_speed <= a.speed + preferred <= settings.max_speed
+        ]
         followed += sum(after - before == preferred for before, after in possible)
         steps += len(possible)
         kept_lane += len({s.lane for s in states}) == 1
@@ -317,9 +335,13 @@ def test_a_random_start_prefers_and_never_forces():
     from pytest_roadlogic.frontend import check_text
     from pytest_roadlogic.planning.instance import start_preferences
 
-    automaton = build_automaton(check_text("scenario s:\n  v1: car\n  do v1.drive() with:\n    speed(9mps, at: start)\n").scenarios[0])
+    automaton = build_automaton(
+        check_text("scenario s:\n  v1: car\n  do v1.drive() with:\n    speed(9mps, at: start)\n").scenarios[0]
+    )
     rules = start_preferences(automaton, RANDOM_START, random.Random(1))
-    assert rules and all(line.startswith(("#heuristic ", "#program ", "preferred_acc(")) for line in rules.splitlines()), "only heuristics and the facts they read"
+    assert rules and all(
+        line.startswith(("#heuristic ", "#program ", "preferred_acc(")) for line in rules.splitlines()
+    ), "only heuristics and the facts they read"
     for seed in range(1, 6):
         plan = Planner(automaton, RANDOM_START, seed=seed).first()
         assert 8.0 <= plan.states["v1"][0].speed <= 10.0
@@ -337,5 +359,11 @@ def test_a_horizon_limit_that_binds_is_named_not_the_scenarios_durations():
     with pytest.raises(HorizonTooShort) as refused:
         Planner(automaton, SETTINGS, 1).first()
     message = str(refused.value)
-    assert "horizon limit of 25 steps (25 s)" in message and "at least 30 s" in message and "--roadlogic-horizon" in message
-    assert Planner(automaton, dataclasses.replace(SETTINGS, max_horizon=32), 1).first().horizon >= 30, "with the limit raised it plans"
+    assert (
+        "horizon limit of 25 steps (25 s)" in message
+        and "at least 30 s" in message
+        and "--roadlogic-horizon" in message
+    )
+    assert Planner(automaton, dataclasses.replace(SETTINGS, max_horizon=32), 1).first().horizon >= 30, (
+        "with the limit raised it plans"
+    )

@@ -26,15 +26,21 @@ def check_continuous_plan(plan, automaton, settings=SETTINGS):
         least = 0.0 if v in may_stop or v in plan.stationary else settings.min_speed
         if v not in plan.stationary and len(states) > 1:
             first = (states[1].speed - states[0].speed) / dt
-            assert abs(first) <= settings.max_jerk * dt + 1e-6, f"{v} starts with acceleration {first}: the simulation starts without one"
+            assert abs(first) <= settings.max_jerk * dt + 1e-6, (
+                f"{v} starts with acceleration {first}: the simulation starts without one"
+            )
         for k, s in enumerate(states):
             assert least - 1e-6 <= s.speed <= settings.max_speed + 1e-6, f"{v} speed {s.speed} at {k}"
             assert 0 <= s.lane < automaton.lanes
             if k:
                 p = states[k - 1]
                 acceleration = (s.speed - p.speed) / dt
-                assert settings.min_acceleration - 1e-6 <= acceleration <= settings.max_acceleration + 1e-6, f"{v} acceleration {acceleration} at {k}"
-                assert s.position == pytest.approx(p.position + (p.speed + s.speed) / 2 * dt, abs=1e-6), f"{v} kinematics at {k}"
+                assert settings.min_acceleration - 1e-6 <= acceleration <= settings.max_acceleration + 1e-6, (
+                    f"{v} acceleration {acceleration} at {k}"
+                )
+                assert s.position == pytest.approx(p.position + (p.speed + s.speed) / 2 * dt, abs=1e-6), (
+                    f"{v} kinematics at {k}"
+                )
             if k >= 2:
                 change = (s.speed - 2 * states[k - 1].speed + states[k - 2].speed) / dt
                 assert abs(change) <= settings.max_jerk * dt + 1e-6, f"{v} acceleration jumps by {change} at {k}"
@@ -43,7 +49,9 @@ def check_continuous_plan(plan, automaton, settings=SETTINGS):
             assert b - a >= settings.lane_change_gap
         for k in changes:
             assert k >= 2, f"{v} changes lane in the first step, before the simulation could start the move"
-            assert min(states[k - 1].speed, states[k].speed) >= settings.lane_change_speed - 1e-6, f"{v} changes lane at a crawl at {k}"
+            assert min(states[k - 1].speed, states[k].speed) >= settings.lane_change_speed - 1e-6, (
+                f"{v} changes lane at a crawl at {k}"
+            )
 
     vehicles = plan.vehicles
     for i, a in enumerate(vehicles):
@@ -56,7 +64,9 @@ def check_continuous_plan(plan, automaton, settings=SETTINGS):
                     gap = plan.at(front, k).position - plan.at(back, k).position
                     closing = plan.at(back, k).speed - plan.at(front, k).speed
                     assert gap >= settings.min_gap - 1e-6, f"{a} and {b} too close at {k}"
-                    assert gap >= settings.min_gap + settings.closing_time * closing - 1e-6, f"{back} closes in on {front} too fast at {k}"
+                    assert gap >= settings.min_gap + settings.closing_time * closing - 1e-6, (
+                        f"{back} closes in on {front} too fast at {k}"
+                    )
     # a vehicle changing into a lane at step k leans into it before k (the simulation's lane change
     # is a 3 s move): at k-1 it keeps the gap to the vehicles of that lane and to those entering it
     # at k too, on the side it is at k
@@ -71,11 +81,21 @@ def check_continuous_plan(plan, automaton, settings=SETTINGS):
                 ahead = plan.at(a, k).position > plan.at(b, k).position
                 front, back = (a, b) if ahead else (b, a)
                 gap = plan.at(front, k - 1).position - plan.at(back, k - 1).position
-                assert gap >= settings.min_gap - 1e-6, f"{a} enters the lane of {b} at {k} without the gap at {k - 1} ({gap:.1f} m)"
+                assert gap >= settings.min_gap - 1e-6, (
+                    f"{a} enters the lane of {b} at {k} without the gap at {k - 1} ({gap:.1f} m)"
+                )
     check_run(plan, automaton)
 
 
-@pytest.mark.parametrize("path", [ROOT / "scenarios" / "overtake.osc", ROOT / "scenarios" / "overtake_third_actor.osc", ROOT / "scenarios" / "realistic" / "cut_in.osc"], ids=lambda p: p.stem)
+@pytest.mark.parametrize(
+    "path",
+    [
+        ROOT / "scenarios" / "overtake.osc",
+        ROOT / "scenarios" / "overtake_third_actor.osc",
+        ROOT / "scenarios" / "realistic" / "cut_in.osc",
+    ],
+    ids=lambda p: p.stem,
+)
 @pytest.mark.parametrize("seed", [1, 2])
 def test_a_continuous_plan_obeys_the_limits_the_kinematics_and_the_guards(path, seed):
     automaton = build_automaton(load_scenario(path))
@@ -94,7 +114,9 @@ def test_no_horizon_shorter_than_the_durations_allow_is_searched():
     automaton = build_automaton(load_scenario(ROOT / "scenarios" / "realistic" / "follow_then_overtake.osc"))
     import time
 
-    assert ContinuousPlanner(automaton, SETTINGS, 1).earliest_horizon(time.monotonic() + 30) == 24, "10 + 3 + 8 + 3 s at least"
+    assert ContinuousPlanner(automaton, SETTINGS, 1).earliest_horizon(time.monotonic() + 30) == 24, (
+        "10 + 3 + 8 + 3 s at least"
+    )
 
 
 def test_a_plan_without_a_run_up_is_simulated_from_its_first_state_and_can_be_accepted():
@@ -108,7 +130,9 @@ def test_a_plan_without_a_run_up_is_simulated_from_its_first_state_and_can_be_ac
     trace = simulation.trace
     for vehicle, states in plan.states.items():
         assert trace.actors[vehicle]["x"][0] == pytest.approx(states[0].position)
-        assert trace.actors[vehicle]["speed"][0] == pytest.approx(states[0].speed), "no standstill start: the scenario's first instant is the simulation's"
+        assert trace.actors[vehicle]["speed"][0] == pytest.approx(states[0].speed), (
+            "no standstill start: the scenario's first instant is the simulation's"
+        )
     assert monitor(automaton, trace).accepted
 
 
@@ -129,7 +153,9 @@ def test_further_plans_differ_in_their_timing_or_lanes_and_each_obeys_every_rule
 
 
 def test_a_vehicle_stops_when_the_scenario_asks_and_only_that_one(tmp_path):
-    automaton = scenario_file(tmp_path, """scenario stop:
+    automaton = scenario_file(
+        tmp_path,
+        """scenario stop:
     ego: vehicle
     lead: vehicle
 
@@ -144,7 +170,8 @@ def test_a_vehicle_stops_when_the_scenario_asks_and_only_that_one(tmp_path):
         halt: parallel(duration: [5s..9s]):
             lead.drive()
             ego.change_speed(target: 0kph)
-""")
+""",
+    )
     assert stopping(automaton, SETTINGS) == {"ego"}
     plan = ContinuousPlanner(automaton, SETTINGS, 1).first()
     check_continuous_plan(plan, automaton)
@@ -154,12 +181,15 @@ def test_a_vehicle_stops_when_the_scenario_asks_and_only_that_one(tmp_path):
 
 def test_a_start_speed_the_scenario_asks_for_is_never_refused_for_a_default(tmp_path):
     # the default start speeds (8-40 m/s) are a preference: 200 kph at the start is 55.6 m/s
-    automaton = scenario_file(tmp_path, """scenario fast:
+    automaton = scenario_file(
+        tmp_path,
+        """scenario fast:
     ego: vehicle
 
     do ego.drive(duration: 5s) with:
         speed(200kph, at: start)
-""")
+""",
+    )
     plan = ContinuousPlanner(automaton, SETTINGS, 1).first()
     assert plan.states["ego"][0].speed == pytest.approx(200 / 3.6, abs=1.0)
 
@@ -202,7 +232,12 @@ def test_a_random_start_draws_different_plans_from_different_seeds():
 
     automaton = build_automaton(load_scenario(ROOT / "scenarios" / "overtake.osc"))
     settings = dataclasses.replace(SETTINGS, random_start=True)
-    starts = {tuple(round(states[0].speed, 3) for states in ContinuousPlanner(automaton, settings, seed).first().states.values()) for seed in range(1, 6)}
+    starts = {
+        tuple(
+            round(states[0].speed, 3) for states in ContinuousPlanner(automaton, settings, seed).first().states.values()
+        )
+        for seed in range(1, 6)
+    }
     assert len(starts) >= 4
     again = ContinuousPlanner(automaton, settings, 3).first()
     assert again.states == ContinuousPlanner(automaton, settings, 3).first().states, "one seed, one plan"
@@ -211,11 +246,14 @@ def test_a_random_start_draws_different_plans_from_different_seeds():
 def test_a_random_start_keeps_each_free_vehicles_drawn_acceleration_within_the_drift_speeds(tmp_path):
     """The refined strategy's vehicles do not all cruise at their start speed: each accelerates at
     its drawn -2, 0 or +2 m/s^2 (as the grid planner's do) until it reaches the drift's speeds."""
-    automaton = scenario_file(tmp_path, """scenario free:
+    automaton = scenario_file(
+        tmp_path,
+        """scenario free:
     ego: vehicle
 
     do ego.drive(duration: 12s)
-""")
+""",
+    )
     settings = dataclasses.replace(SETTINGS, random_start=True)
     slow, fast = settings.drift_speeds
     seen = set()
@@ -223,13 +261,21 @@ def test_a_random_start_keeps_each_free_vehicles_drawn_acceleration_within_the_d
         planner = ContinuousPlanner(automaton, settings, seed)
         plan = planner.first()
         check_continuous_plan(plan, automaton)
-        (aim,) = [float(line.split("=")[1].strip(' ."')) for line in planner.preferences.splitlines() if line.startswith("&drift{ a(")]
+        (aim,) = [
+            float(line.split("=")[1].strip(' ."'))
+            for line in planner.preferences.splitlines()
+            if line.startswith("&drift{ a(")
+        ]
         seen.add(aim)
         speeds = [state.speed for state in plan.states["ego"]]
         start, steps = speeds[0], len(speeds) - 1
         expected = min(max(start + aim * steps, slow), fast) if aim else start
-        assert speeds[-1] == pytest.approx(expected, abs=0.6), f"seed {seed}, drawn {aim:+g} m/s^2: speeds {[round(v, 1) for v in speeds]}"
-        assert all(min(slow, start) - 1e-6 <= v <= max(fast, start) + 1e-6 for v in speeds), f"seed {seed}: left the drift's speeds {speeds}"
+        assert speeds[-1] == pytest.approx(expected, abs=0.6), (
+            f"seed {seed}, drawn {aim:+g} m/s^2: speeds {[round(v, 1) for v in speeds]}"
+        )
+        assert all(min(slow, start) - 1e-6 <= v <= max(fast, start) + 1e-6 for v in speeds), (
+            f"seed {seed}: left the drift's speeds {speeds}"
+        )
     assert seen == {-settings.drift, 0.0, settings.drift}, "each of the three accelerations drawn in nine seeds"
 
 
@@ -246,7 +292,9 @@ def test_a_random_start_meets_a_guard_that_pins_a_vehicle_to_a_place_as_early_as
     for seed in range(1, 7):
         plan = ContinuousPlanner(automaton, settings, seed).first()
         check_continuous_plan(plan, automaton)
-        assert plan.transitions[-1][0] == earliest, f"seed {seed}: the dodge ended at step {plan.transitions[-1][0]}, not at the earliest, {earliest}"
+        assert plan.transitions[-1][0] == earliest, (
+            f"seed {seed}: the dodge ended at step {plan.transitions[-1][0]}, not at the earliest, {earliest}"
+        )
         stretched += plan.horizon > earliest
     assert stretched, "some of the plans last longer than the dodge (the ego drives on after it)"
     follow = build_automaton(load_scenario(ROOT / "scenarios" / "follow.osc"))
@@ -258,7 +306,10 @@ def test_the_clingo_lpx_theory_plans_a_random_start_too():
     import dataclasses
 
     automaton = build_automaton(load_scenario(ROOT / "scenarios" / "overtake.osc"))
-    plan = ContinuousPlanner(automaton, dataclasses.replace(SETTINGS, theory="lpx", random_start=True), 1).first()
+    # its search takes 33 s alone on this machine (the same at 77dc271): a limit of 60 s ran out when
+    # two test workers and another run shared the two cores; what is tested is that it plans at all
+    lpx = dataclasses.replace(SETTINGS, theory="lpx", random_start=True, time_limit=max(SETTINGS.time_limit, 300.0))
+    plan = ContinuousPlanner(automaton, lpx, 1).first()
     check_continuous_plan(plan, automaton)
 
 
@@ -271,7 +322,11 @@ def test_the_time_a_caller_spends_with_a_plan_is_not_the_next_plans_planning_tim
     from pytest_roadlogic.planning import Planner, PlanningSettings
 
     automaton = build_automaton(load_scenario(ROOT / "scenarios" / "overtake.osc"))
-    planner = ContinuousPlanner(automaton, ContinuousSettings(time_limit=1.0), 1) if encoding == "continuous" else Planner(automaton, PlanningSettings(time_limit=1.0), 1)
+    planner = (
+        ContinuousPlanner(automaton, ContinuousSettings(time_limit=1.0), 1)
+        if encoding == "continuous"
+        else Planner(automaton, PlanningSettings(time_limit=1.0), 1)
+    )
     plans = planner.plans()
     first = next(plans)
     time.sleep(1.2)  # longer than the limit: the caller simulating the first plan
@@ -283,7 +338,9 @@ def test_a_speed_range_a_phase_holds_is_reached_a_step_before_the_phase_and_kept
     """The motion planner rounds off the plan's changes of speed (late in, early out), so the plan
     prefers each speed bound to hold one step either side of the steps it must hold at, where the
     hard constraints let it."""
-    automaton = scenario_file(tmp_path, """scenario speed_up:
+    automaton = scenario_file(
+        tmp_path,
+        """scenario speed_up:
     ego: vehicle
 
     do serial:
@@ -292,14 +349,19 @@ def test_a_speed_range_a_phase_holds_is_reached_a_step_before_the_phase_and_kept
         free: ego.drive(duration: 6s)
         fast: ego.drive(duration: 4s) with:
             speed([80kph..85kph])
-""")
+""",
+    )
     plan = ContinuousPlanner(automaton, SETTINGS, 1).first()
     check_continuous_plan(plan, automaton)
     fast_starts = max(step for step, _ in plan.transitions[:-1])  # the last transition ends the scenario
     slow_ends = sorted(step for step, _ in plan.transitions)[1]
     speeds = [s.speed for s in plan.states["ego"]]
-    assert 80 / 3.6 - 0.01 <= speeds[fast_starts - 1] <= 85 / 3.6 + 0.01, f"fast's range already at the step before it ({speeds})"
-    assert 40 / 3.6 - 0.01 <= speeds[slow_ends] <= 45 / 3.6 + 0.01, f"slow's range still at the step after it ({speeds})"
+    assert 80 / 3.6 - 0.01 <= speeds[fast_starts - 1] <= 85 / 3.6 + 0.01, (
+        f"fast's range already at the step before it ({speeds})"
+    )
+    assert 40 / 3.6 - 0.01 <= speeds[slow_ends] <= 45 / 3.6 + 0.01, (
+        f"slow's range still at the step after it ({speeds})"
+    )
 
 
 def test_a_time_headway_is_planned_as_a_gap_over_the_followers_speed():

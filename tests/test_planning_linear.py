@@ -30,26 +30,26 @@ def solve(program: str, parts=(("base", []),)) -> tuple[list[list[str]], dict[st
 
 
 def test_a_model_meets_every_constraint_its_atoms_switch_on():
-    models, values = solve('''
+    models, values = solve("""
         { fast }.
         &sum{ x } >= "1".
         &sum{ x } <= "2" :- not fast.
         &sum{ x } >= "10" :- fast.
         &sum{ y; -1*x } = "3".
         #show fast/0.
-    ''')
+    """)
     assert sorted(models) == [[], ["fast"]], "both choices have a solution"
     assert values["y"] == pytest.approx(values["x"] + 3)
 
 
 def test_choices_whose_constraints_clash_are_never_a_model():
-    models, _ = solve('''
+    models, _ = solve("""
         { a; b; c }.
         &sum{ x } >= "5" :- a.
         &sum{ x } <= "4" :- b.
         &sum{ z } >= "0" :- c.
         #show a/0. #show b/0. #show c/0.
-    ''')
+    """)
     assert ["a", "b"] not in models and ["a", "b", "c"] not in models
     assert ["a", "c"] in models and ["b", "c"] in models, "c is innocent: it is never excluded with them"
 
@@ -84,12 +84,12 @@ def test_constraints_of_later_steps_join_those_of_earlier_ones():
 
 
 def test_preferences_shape_the_values_but_never_decide_feasibility():
-    models, values = solve('''
+    models, values = solve("""
         &sum{ v } >= "0". &sum{ v } <= "30".
         &prefer{ v } >= "40".
         &nudge{ w } = "7".
         &sum{ w } >= "0".
-    ''')
+    """)
     assert models == [[]], "a preference that cannot be met leaves the model in place"
     assert values["v"] == pytest.approx(30), "as close to the preference as the constraints allow"
     assert values["w"] == pytest.approx(7)
@@ -127,7 +127,9 @@ def test_a_theory_atom_read_from_its_printed_form_is_the_atom_its_terms_give(mon
     root = Path(__file__).resolve().parent.parent
     for path in (root / "scenarios" / "overtake_third_actor.osc", root / "tests" / "corpus" / "46_time_headway.osc"):
         ContinuousPlanner(build_automaton(load_scenario(path)), ContinuousSettings(random_start=True), 1).first()
-    assert any(re.search(r"\*v\(ego,[0-9]+\)", text) and "p(lead" in text for text in compared), "a time headway's row was read"
+    assert any(re.search(r"\*v\(ego,[0-9]+\)", text) and "p(lead" in text for text in compared), (
+        "a time headway's row was read"
+    )
     assert len(compared) > 100
     assert any("&prefer" in text or "&nudge" in text for text in compared)
 
@@ -154,7 +156,9 @@ def test_every_check_of_a_planning_run_agrees_with_a_program_built_afresh(monkey
         return conflict, solution
 
     monkeypatch.setattr(linear, "check_rows", check)
-    automaton = build_automaton(load_scenario(Path(__file__).resolve().parent.parent / "scenarios" / "overtake_third_actor.osc"))
+    automaton = build_automaton(
+        load_scenario(Path(__file__).resolve().parent.parent / "scenarios" / "overtake_third_actor.osc")
+    )
     ContinuousPlanner(automaton, ContinuousSettings(), 1).first()
     assert len(conflicts) >= 5, "the run should meet some infeasible choices to compare"
     assert all(kept == afresh for kept, afresh in checks), "a check disagreed with the program built afresh"

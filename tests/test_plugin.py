@@ -28,7 +28,12 @@ def copy(pytester, *paths):
 
 
 def test_collect_only_lists_one_item_per_scenario_and_never_plans(pytester):
-    pytester.makefile(".osc", two=SQUEEZE.read_text() + "\n" + SQUEEZE.read_text().replace("scenario traffic.squeeze", "scenario traffic.other"))
+    pytester.makefile(
+        ".osc",
+        two=SQUEEZE.read_text()
+        + "\n"
+        + SQUEEZE.read_text().replace("scenario traffic.squeeze", "scenario traffic.other"),
+    )
     # planning during collection would raise here
     pytester.makeconftest("import pytest_roadlogic.planning.solver as s\ns.Planner.plans = None\n")
     result = pytester.runpytest_subprocess("--collect-only", "-q", *QUIET)
@@ -42,18 +47,25 @@ def test_a_band_of_failing_values_shrinks_to_its_boundary_and_replays(pytester):
     copy(pytester, SQUEEZE)
     # the band's edge is the grid's (8 m gaps); the continuous encoding adds 1 s of closing speed to
     # a gap, which moves it (issue 19 redoes this check for the default encoding)
-    result = pytester.runpytest_subprocess("--roadlogic-encoding", "grid", "--roadlogic-horizon", "6", "--roadlogic-examples", "10", *QUIET)
+    result = pytester.runpytest_subprocess(
+        "--roadlogic-encoding", "grid", "--roadlogic-horizon", "6", "--roadlogic-examples", "10", *QUIET
+    )
     result.assert_outcomes(failed=1)
     report = result.stdout.str()
     gap = float(re.search(r"gap = ([\d.]+) m \(line 7,", report).group(1))
     assert 22.0 <= gap <= 24.0, f"the shrunk gap {gap} m is not at the band's edge (22.5 m):\n{report}"
-    assert "the scenario cannot be instantiated (no plan) at these values" in report and "cannot hold together" in report
+    assert (
+        "the scenario cannot be instantiated (no plan) at these values" in report and "cannot hold together" in report
+    )
     assert "gap = " in report and "(line 7, declared parameter)" in report, "each value names its kind"
     case_file = pytester.path / "roadlogic-artifacts" / "squeeze.osc_squeeze" / "case.json"
     assert f"roadlogic replay {case_file}" in report
     assert json.loads(case_file.read_text())["values"]["gap"] == gap
-    replay = subprocess.run([sys.executable, "-m", "pytest_roadlogic.cli", "replay", str(case_file), "--out", str(pytester.path / "r")],
-                            capture_output=True, text=True)
+    replay = subprocess.run(
+        [sys.executable, "-m", "pytest_roadlogic.cli", "replay", str(case_file), "--out", str(pytester.path / "r")],
+        capture_output=True,
+        text=True,
+    )
     assert replay.returncode == 1, replay.stdout + replay.stderr
     assert f"{gap - 0.5:g} <= p(middle) - p(back)" in replay.stderr, "replay plans the same narrowed scenario"
 
@@ -107,14 +119,21 @@ def test_the_driver_hook_drives_the_vehicle_under_test_and_a_bad_one_fails_with_
 
     # the case replays exactly, with the same driver: same plan, same trace (in a fresh process:
     # pytester restores sys.modules after a test, which frenetix's extension does not survive)
-    replay = REPLAY_SCRIPT.format(root=str(ROOT), case=str(artifacts / "case.json"), out=str(pytester.path / "replayed"))
+    replay = REPLAY_SCRIPT.format(
+        root=str(ROOT), case=str(artifacts / "case.json"), out=str(pytester.path / "replayed")
+    )
     done = subprocess.run([sys.executable, "-c", replay], capture_output=True, text=True)
     assert done.returncode == 0, done.stderr
     replayed = pytester.path / "replayed"
-    assert json.loads((replayed / "plan.json").read_text())["states"] == json.loads((artifacts / "plan.json").read_text())["states"]
+    assert (
+        json.loads((replayed / "plan.json").read_text())["states"]
+        == json.loads((artifacts / "plan.json").read_text())["states"]
+    )
     assert (replayed / "trace.csv").read_text() == (artifacts / "trace.csv").read_text()
 
-    again = pytester.runpytest_subprocess("--roadlogic-replay", str(artifacts / "case.json"), "--roadlogic-tries", "1", *QUIET)
+    again = pytester.runpytest_subprocess(
+        "--roadlogic-replay", str(artifacts / "case.json"), "--roadlogic-tries", "1", *QUIET
+    )
     again.assert_outcomes(failed=1)
     assert "1 examples" in again.stdout.str()
 
@@ -125,19 +144,54 @@ def test_the_driver_hook_drives_the_vehicle_under_test_and_a_bad_one_fails_with_
     assert "--driver v1=tests.drivers:NeverChangesLane" in report
     # issue 38: the drivers come from the command line, never from the case file's word; the scenario
     # is read inside the project (the pytester folder, named with --allow-read from this checkout)
-    refused = subprocess.run([sys.executable, "-m", "pytest_roadlogic.cli", "replay", str(artifacts / "case.json"), "--out", str(pytester.path / "cli"),
-                              "--allow-read", str(pytester.path)], capture_output=True, text=True, cwd=ROOT)
+    refused = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "pytest_roadlogic.cli",
+            "replay",
+            str(artifacts / "case.json"),
+            "--out",
+            str(pytester.path / "cli"),
+            "--allow-read",
+            str(pytester.path),
+        ],
+        capture_output=True,
+        text=True,
+        cwd=ROOT,
+    )
     assert refused.returncode == 2 and "not imported on its word" in refused.stderr, refused.stderr
-    cli = subprocess.run([sys.executable, "-m", "pytest_roadlogic.cli", "replay", str(artifacts / "case.json"), "--out", str(pytester.path / "cli"),
-                          "--allow-read", str(pytester.path), "--driver", "v1=tests.drivers:NeverChangesLane"], capture_output=True, text=True, cwd=ROOT)
+    cli = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "pytest_roadlogic.cli",
+            "replay",
+            str(artifacts / "case.json"),
+            "--out",
+            str(pytester.path / "cli"),
+            "--allow-read",
+            str(pytester.path),
+            "--driver",
+            "v1=tests.drivers:NeverChangesLane",
+        ],
+        capture_output=True,
+        text=True,
+        cwd=ROOT,
+    )
     assert cli.returncode == 1, cli.stdout + cli.stderr
     assert (pytester.path / "cli" / "trace.csv").read_text() == (artifacts / "trace.csv").read_text()
 
     # a session with other drivers does not pass the case off as replayed
     (pytester.path / "conftest.py").write_text(PROFILE)
-    other = pytester.runpytest_subprocess("--roadlogic-replay", str(artifacts / "case.json"), "--roadlogic-tries", "1", *QUIET)
+    other = pytester.runpytest_subprocess(
+        "--roadlogic-replay", str(artifacts / "case.json"), "--roadlogic-tries", "1", *QUIET
+    )
     other.assert_outcomes(failed=1)
-    assert "the case was found with the drivers v1: tests.drivers:NeverChangesLane, this session drives with the simulator's own only" in other.stdout.str()
+    assert (
+        "the case was found with the drivers v1: tests.drivers:NeverChangesLane, this session drives with the simulator's own only"
+        in other.stdout.str()
+    )
 
 
 def test_pytest_html_shows_a_failing_scenarios_plot_animation_and_replay_command(pytester):
@@ -145,7 +199,16 @@ def test_pytest_html_shows_a_failing_scenarios_plot_animation_and_replay_command
     pytest.importorskip("pytest_html")
     copy(pytester, SCENARIOS / "overtake.osc")
     pytester.makeconftest(DRIVER_CONFTEST + PROFILE)
-    result = pytester.runpytest_subprocess("--hypothesis-profile", "quick", "--roadlogic-tries", "1", "--html", "report.html", "--self-contained-html", *QUIET)
+    result = pytester.runpytest_subprocess(
+        "--hypothesis-profile",
+        "quick",
+        "--roadlogic-tries",
+        "1",
+        "--html",
+        "report.html",
+        "--self-contained-html",
+        *QUIET,
+    )
     result.assert_outcomes(failed=1)
     report = (pytester.path / "report.html").read_text()
     assert "data:image/png;base64,iVBORw0KGgo" in report, "the plot (a PNG) is embedded"
@@ -157,11 +220,27 @@ def test_a_replay_that_cannot_build_the_cases_drivers_says_so_and_runs_nothing(t
     from pytest_roadlogic.case import Case
     from pytest_roadlogic.cli import main
 
-    case = Case(path="scenarios/follow.osc", scenario="follow", values={"start_gap": 20.0, "end_gap": 20.0, "lead_speed": 10.0},
-                drivers={"tail": "nowhere.to.be.found:Planner"})
+    case = Case(
+        path="scenarios/follow.osc",
+        scenario="follow",
+        values={"start_gap": 20.0, "end_gap": 20.0, "lead_speed": 10.0},
+        drivers={"tail": "nowhere.to.be.found:Planner"},
+    )
     case.save(tmp_path / "case.json")
     monkeypatch.chdir(ROOT)
-    assert main(["replay", str(tmp_path / "case.json"), "--out", str(tmp_path / "out"), "--driver", "tail=nowhere.to.be.found:Planner"]) == 2
+    assert (
+        main(
+            [
+                "replay",
+                str(tmp_path / "case.json"),
+                "--out",
+                str(tmp_path / "out"),
+                "--driver",
+                "tail=nowhere.to.be.found:Planner",
+            ]
+        )
+        == 2
+    )
     said = capsys.readouterr().err
     assert "error: the driver of tail, nowhere.to.be.found:Planner, does not load here (ModuleNotFoundError" in said
     assert not (tmp_path / "out").exists()
@@ -172,7 +251,9 @@ def test_ini_options_the_base_strategy_the_summary_and_junit_properties(pytester
     pytester.makeini("[pytest]\nroadlogic_strategy = base\nroadlogic_examples = 2\n")
     result = pytester.runpytest_subprocess("--junitxml", "junit.xml", *QUIET)
     result.assert_outcomes(passed=1)
-    result.stdout.fnmatch_lines(["*1 scenarios, 2 examples: 2 conformant, 0 non-conformant, 0 no plan, 0 timed out*", "time per stage: *"])
+    result.stdout.fnmatch_lines(
+        ["*1 scenarios, 2 examples: 2 conformant, 0 non-conformant, 0 no plan, 0 timed out*", "time per stage: *"]
+    )
     properties = {p.get("name"): p.get("value") for p in ET.parse(pytester.path / "junit.xml").iter("property")}
     assert properties["strategy"] == "base" and properties["examples"] == "2" and properties["conformant"] == "2"
 
@@ -208,7 +289,11 @@ def test_pytest_xdist_gives_the_same_outcomes_as_a_serial_run(pytester):
         return verdicts, summary
 
     assert outcomes(serial) == outcomes(parallel)
-    assert outcomes(serial)[0] == ["FAILED squeeze.osc::squeeze", "PASSED change_lane.osc::change_lane", "PASSED follow.osc::follow"]
+    assert outcomes(serial)[0] == [
+        "FAILED squeeze.osc::squeeze",
+        "PASSED change_lane.osc::change_lane",
+        "PASSED follow.osc::follow",
+    ]
 
 
 def test_the_strategy_is_public_for_ordinary_given_tests():
@@ -252,9 +337,13 @@ def pytest_roadlogic_simulator(config, scenario):
 def test_a_simulator_from_the_hook_simulates_every_case(pytester):
     copy(pytester, SCENARIOS / "follow.osc")
     pytester.makeconftest(SIMULATOR_CONFTEST)
-    result = pytester.runpytest_subprocess("--roadlogic-strategy", "base", "--roadlogic-examples", "2", "--roadlogic-sim-timeout", "90", *QUIET)
+    result = pytester.runpytest_subprocess(
+        "--roadlogic-strategy", "base", "--roadlogic-examples", "2", "--roadlogic-sim-timeout", "90", *QUIET
+    )
     result.assert_outcomes(passed=1)
-    assert (pytester.path / "simulations.txt").read_text().splitlines() == ["0.1 90.0", "0.1 90.0"], "one simulation per case, with the session's limits"
+    assert (pytester.path / "simulations.txt").read_text().splitlines() == ["0.1 90.0", "0.1 90.0"], (
+        "one simulation per case, with the session's limits"
+    )
 
 
 PLAN_RECORDING_CONFTEST = """
@@ -284,11 +373,19 @@ def test_hypothesis_seed_draws_the_samples_and_the_statistics_show_the_projects_
     def plans(seed: str) -> list[str]:
         record = pytester.path / "plans.txt"
         record.unlink(missing_ok=True)
-        shutil.rmtree(pytester.path / ".hypothesis", ignore_errors=True)  # the example database replays earlier runs' samples first
-        result = pytester.runpytest_subprocess("--hypothesis-seed", seed, "--roadlogic-examples", "3", "--hypothesis-show-statistics", *QUIET)
+        shutil.rmtree(
+            pytester.path / ".hypothesis", ignore_errors=True
+        )  # the example database replays earlier runs' samples first
+        result = pytester.runpytest_subprocess(
+            "--hypothesis-seed", seed, "--roadlogic-examples", "3", "--hypothesis-show-statistics", *QUIET
+        )
         result.assert_outcomes(passed=1)
         statistics = result.stdout.str().split("Hypothesis Statistics")[1]
-        assert "follow.osc::follow:" in statistics and "outcome: conformant" in statistics and "plans tried: 1" in statistics, statistics
+        assert (
+            "follow.osc::follow:" in statistics
+            and "outcome: conformant" in statistics
+            and "plans tried: 1" in statistics
+        ), statistics
         return record.read_text().splitlines()
 
     five = plans("5")
@@ -299,9 +396,17 @@ def test_hypothesis_seed_draws_the_samples_and_the_statistics_show_the_projects_
 def test_a_bad_option_value_stops_the_session_with_a_message_naming_the_option(pytester):
     copy(pytester, SCENARIOS / "follow.osc")
     for option, value, message in (
-        ("--roadlogic-examples", "abc", "--roadlogic-examples (ini roadlogic_examples): 'abc' is not a number of examples; give a whole number from 1 up"),
+        (
+            "--roadlogic-examples",
+            "abc",
+            "--roadlogic-examples (ini roadlogic_examples): 'abc' is not a number of examples; give a whole number from 1 up",
+        ),
         ("--roadlogic-seed", "x", "--roadlogic-seed (ini roadlogic_seed): 'x' is not a seed"),
-        ("--roadlogic-plan-timeout", "-1", "--roadlogic-plan-timeout (ini roadlogic_plan_timeout): '-1' is not a time limit"),
+        (
+            "--roadlogic-plan-timeout",
+            "-1",
+            "--roadlogic-plan-timeout (ini roadlogic_plan_timeout): '-1' is not a time limit",
+        ),
         ("--roadlogic-simulator", "nope", "no simulator named 'nope'; available: frenetix"),
     ):
         result = pytester.runpytest_subprocess(option, value, *QUIET)
@@ -324,7 +429,9 @@ def test_a_dialect_hook_that_names_no_dialect_is_a_collection_error_of_that_file
     copy(pytester, SCENARIOS / "change_lane.osc")
     pytester.makeconftest("def pytest_roadlogic_dialect(config, path):\n    return 'carl'\n")
     result = pytester.runpytest_subprocess("--collect-only", "-q", *QUIET)
-    result.stdout.fnmatch_lines(["*change_lane.osc: pytest_roadlogic_dialect: 'carl' is not a dialect; give standard or carla*"])
+    result.stdout.fnmatch_lines(
+        ["*change_lane.osc: pytest_roadlogic_dialect: 'carl' is not a dialect; give standard or carla*"]
+    )
 
 
 def test_a_folders_conftest_hooks_apply_to_that_folders_files_only(pytester):

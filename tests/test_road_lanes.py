@@ -10,10 +10,10 @@ import sys
 
 import pytest
 
+from pytest_roadlogic.artifacts.commonroad import commonroad_scenario
 from pytest_roadlogic.automaton import build_automaton
 from pytest_roadlogic.frontend import check_text
 from pytest_roadlogic.pipeline import run_scenario
-from pytest_roadlogic.artifacts.commonroad import commonroad_scenario
 
 PAIR = "scenario s:\n    a: car\n    b: car\n"
 
@@ -25,32 +25,62 @@ def lanes_of(text: str, lanes: int | None = None) -> int:
 
 
 def errors_of(text: str, lanes: int | None = None) -> list[str]:
-    return [f"{d.location.line}:{d.location.column}: {d.message}" for d in check_text(text, "t.osc", lanes=lanes).errors]
+    return [
+        f"{d.location.line}:{d.location.column}: {d.message}" for d in check_text(text, "t.osc", lanes=lanes).errors
+    ]
 
 
 def side_by_side(a_lane: str, b_lane: str = "lane(1, at: all)", head: str = PAIR) -> str:
-    return head + f"    do parallel(duration: 3s):\n        a.drive() with:\n            {a_lane}\n        b.drive() with:\n            {b_lane}\n"
+    return (
+        head
+        + f"    do parallel(duration: 3s):\n        a.drive() with:\n            {a_lane}\n        b.drive() with:\n            {b_lane}\n"
+    )
 
 
-@pytest.mark.parametrize("text, expected", [
-    pytest.param(side_by_side("lane(same_as: b, at: all)", "keep_lane()"), 3, id="no lane number: the default 3"),
-    pytest.param(side_by_side("lane(2, at: all)"), 3, id="lanes within the default"),
-    pytest.param(side_by_side("lane(5, at: all)"), 5, id="the highest lane number"),
-    pytest.param(side_by_side("lane(4, from: left, at: all)"), 4, id="counted from the left"),
-    pytest.param(PAIR + "    k: int with:\n        keep(it in [2..4])\n" + "    do parallel(duration: 3s):\n        a.drive() with:\n            lane(k, at: all)\n        b.drive()\n", 4, id="a lane parameter's range"),
-    pytest.param(PAIR + "    do serial:\n        a.change_lane(3, left)\n        b.drive()\n", 4, id="a change of 3 lanes"),
-    pytest.param(side_by_side("change_lane(4, right)"), 5, id="a change_lane modifier"),
-    pytest.param(side_by_side("lane(2, at: all)", head=PAIR + "    road: Path\n    road.path_min_driving_lanes(5)\n"), 5, id="path_min_driving_lanes"),
-    pytest.param(side_by_side("lane(2, at: all)", head=PAIR + "    road: Path\n    road.path_max_lanes(2)\n"), 2, id="path_max_lanes below the default"),
-    pytest.param(side_by_side("lane(2, at: all)", head=PAIR + "    path_min_driving_lanes(4)\n"), 4, id="the bare form without a Path field"),
-])
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        pytest.param(side_by_side("lane(same_as: b, at: all)", "keep_lane()"), 3, id="no lane number: the default 3"),
+        pytest.param(side_by_side("lane(2, at: all)"), 3, id="lanes within the default"),
+        pytest.param(side_by_side("lane(5, at: all)"), 5, id="the highest lane number"),
+        pytest.param(side_by_side("lane(4, from: left, at: all)"), 4, id="counted from the left"),
+        pytest.param(
+            PAIR
+            + "    k: int with:\n        keep(it in [2..4])\n"
+            + "    do parallel(duration: 3s):\n        a.drive() with:\n            lane(k, at: all)\n        b.drive()\n",
+            4,
+            id="a lane parameter's range",
+        ),
+        pytest.param(
+            PAIR + "    do serial:\n        a.change_lane(3, left)\n        b.drive()\n", 4, id="a change of 3 lanes"
+        ),
+        pytest.param(side_by_side("change_lane(4, right)"), 5, id="a change_lane modifier"),
+        pytest.param(
+            side_by_side("lane(2, at: all)", head=PAIR + "    road: Path\n    road.path_min_driving_lanes(5)\n"),
+            5,
+            id="path_min_driving_lanes",
+        ),
+        pytest.param(
+            side_by_side("lane(2, at: all)", head=PAIR + "    road: Path\n    road.path_max_lanes(2)\n"),
+            2,
+            id="path_max_lanes below the default",
+        ),
+        pytest.param(
+            side_by_side("lane(2, at: all)", head=PAIR + "    path_min_driving_lanes(4)\n"),
+            4,
+            id="the bare form without a Path field",
+        ),
+    ],
+)
 def test_the_road_is_as_wide_as_the_scenario_needs(text, expected):
     assert lanes_of(text) == expected
 
 
 def test_the_lanes_option_wins_over_the_inferred_count():
     assert lanes_of(side_by_side("lane(2, at: all)"), lanes=6) == 6
-    assert errors_of(side_by_side("lane(5, at: all)"), lanes=4) == ["6:18: lane 5 is outside the road's 4 lanes (set by the lanes option)"]
+    assert errors_of(side_by_side("lane(5, at: all)"), lanes=4) == [
+        "6:18: lane 5 is outside the road's 4 lanes (set by the lanes option)"
+    ]
 
 
 def test_a_lanes_option_that_contradicts_the_scenario_names_the_declaration():
@@ -79,7 +109,9 @@ def test_the_scenarios_road_reaches_the_automaton_the_plan_and_the_simulation():
     outcome = run_scenario(scenario, seed=1)
     assert outcome.verdict.accepted, outcome.verdict.explain()
     assert outcome.plan.lanes == 4
-    assert {s.lane for s in outcome.plan.states["a"]} == {0}, "lane(4) counted from the right is internal lane 0, the leftmost"
+    assert {s.lane for s in outcome.plan.states["a"]} == {0}, (
+        "lane(4) counted from the right is internal lane 0, the leftmost"
+    )
     assert {s.lane for s in outcome.plan.states["b"]} == {3}
     assert outcome.simulation.road.lanes == 4
     commonroad, _problems = commonroad_scenario(outcome.simulation)
@@ -91,7 +123,9 @@ def test_roadlogic_check_takes_the_road_from_the_file_and_the_option_overrides_i
     path.write_text(side_by_side("lane(5, at: all)"))
 
     def check(*extra):
-        return subprocess.run([sys.executable, "-m", "pytest_roadlogic.cli", "check", str(path), *extra], capture_output=True, text=True)
+        return subprocess.run(
+            [sys.executable, "-m", "pytest_roadlogic.cli", "check", str(path), *extra], capture_output=True, text=True
+        )
 
     assert check().returncode == 0, check().stdout
     narrow = check("--lanes", "3")
@@ -104,8 +138,22 @@ def test_the_plugin_takes_the_road_from_the_file_unless_the_lanes_option_is_give
 
     def collect(*extra):
         return subprocess.run(
-            [sys.executable, "-m", "pytest", "--collect-only", "-q", "-p", "no:cacheprovider", "--rootdir", str(tmp_path), str(tmp_path), *extra],
-            capture_output=True, text=True, cwd=tmp_path,
+            [
+                sys.executable,
+                "-m",
+                "pytest",
+                "--collect-only",
+                "-q",
+                "-p",
+                "no:cacheprovider",
+                "--rootdir",
+                str(tmp_path),
+                str(tmp_path),
+                *extra,
+            ],
+            capture_output=True,
+            text=True,
+            cwd=tmp_path,
         )
 
     wide = collect()

@@ -39,7 +39,8 @@ def test_a_sampled_time_headway_is_narrowed_to_the_headway_band_not_a_durations_
     from pytest_roadlogic.planning.continuous import ContinuousSettings
     from pytest_roadlogic.sampling import guided
 
-    checked = check_text("""
+    checked = check_text(
+        """
 scenario headway:
     ego: car
     lead: car
@@ -48,13 +49,17 @@ scenario headway:
         ego.drive() with:
             lane(same_as: lead)
             position(time: [1.5s..2.5s], behind: lead, at: start)
-""", "headway.osc")
+""",
+        "headway.osc",
+    )
     checked.raise_for_errors()
     checked = checked.scenario_to_run()
     parameters = {p.name: p for p in logical_parameters(checked)}
     assert parameters["ego.drive.position.time"].sampled_as == "headway"
     settings = ContinuousSettings()
-    narrowed, _ = guided(checked, {"ego.drive.position.time": 2.0, "parallel.duration": 6.0}, settings.resolution(), settings.margins())
+    narrowed, _ = guided(
+        checked, {"ego.drive.position.time": 2.0, "parallel.duration": 6.0}, settings.resolution(), settings.margins()
+    )
     from pytest_roadlogic.automaton import build_automaton
     from pytest_roadlogic.automaton.guards import HEADWAY
 

@@ -22,7 +22,9 @@ QUIET = ["-p", "no:cacheprovider", "-p", "no:randomly"]
 FOLLOW = ROOT / "scenarios" / "follow.osc"
 FOLLOW_VALUES = {"start_gap": 20.0, "end_gap": 20.0, "lead_speed": 10.0}
 # a module a hostile case file names: importing it leaves a mark
-MARKING_MODULE = "from pathlib import Path\nPath(__file__).with_name('IMPORTED').write_text('ran')\nclass Driver:\n    pass\n"
+MARKING_MODULE = (
+    "from pathlib import Path\nPath(__file__).with_name('IMPORTED').write_text('ran')\nclass Driver:\n    pass\n"
+)
 
 
 def project(tmp_path: Path) -> Path:
@@ -39,7 +41,9 @@ def test_item_1_a_replay_never_imports_or_calls_what_a_case_file_names(tmp_path,
     root = project(tmp_path)
     (root / "scenarios" / "marker.py").write_text(MARKING_MODULE)  # beside the scenario, as an attacker would put it
     (root / "marker.py").write_text(MARKING_MODULE)  # and in the working folder
-    Case(path="scenarios/follow.osc", scenario="follow", values=FOLLOW_VALUES, drivers={"tail": driver}).save(root / "case.json")
+    Case(path="scenarios/follow.osc", scenario="follow", values=FOLLOW_VALUES, drivers={"tail": driver}).save(
+        root / "case.json"
+    )
     monkeypatch.chdir(root)
     assert cli.main(["replay", "case.json", "--out", str(root / "out")]) == cli.EXIT_INPUT
     said = capsys.readouterr().err
@@ -49,16 +53,28 @@ def test_item_1_a_replay_never_imports_or_calls_what_a_case_file_names(tmp_path,
     assert not (root / "out").exists()
 
 
-def test_item_1_drivers_given_on_the_command_line_other_than_the_cases_are_refused_naming_both(tmp_path, monkeypatch, capsys):
+def test_item_1_drivers_given_on_the_command_line_other_than_the_cases_are_refused_naming_both(
+    tmp_path, monkeypatch, capsys
+):
     root = project(tmp_path)
-    Case(path="scenarios/follow.osc", scenario="follow", values=FOLLOW_VALUES, drivers={"tail": "tests.drivers:NeverChangesLane"}).save(root / "case.json")
+    Case(
+        path="scenarios/follow.osc",
+        scenario="follow",
+        values=FOLLOW_VALUES,
+        drivers={"tail": "tests.drivers:NeverChangesLane"},
+    ).save(root / "case.json")
     monkeypatch.chdir(root)
-    assert cli.main(["replay", "case.json", "--driver", "tail=tests.drivers:Other", "--out", str(root / "out")]) == cli.EXIT_INPUT
+    assert (
+        cli.main(["replay", "case.json", "--driver", "tail=tests.drivers:Other", "--out", str(root / "out")])
+        == cli.EXIT_INPUT
+    )
     said = capsys.readouterr().err
     assert "tail by 'tests.drivers:NeverChangesLane'; the command line gives tail by 'tests.drivers:Other'" in said
 
 
-@pytest.mark.parametrize("path", ["/etc/passwd", "../../../../etc/passwd", "scenarios/../../outside.osc", "", "/proc/self/environ"])
+@pytest.mark.parametrize(
+    "path", ["/etc/passwd", "../../../../etc/passwd", "scenarios/../../outside.osc", "", "/proc/self/environ"]
+)
 def test_item_2_a_case_files_scenario_path_must_be_relative_and_inside_the_project(tmp_path, monkeypatch, capsys, path):
     root = project(tmp_path / "p")
     (tmp_path / "outside.osc").write_text(FOLLOW.read_text())
@@ -77,11 +93,16 @@ def test_item_2_a_case_file_kept_outside_the_project_finds_its_scenario_inside_i
     (tmp_path / "downloads" / "scenarios" / "follow.osc").write_text("a file beside the case, outside the project")
     case = Case(path="scenarios/follow.osc", scenario="follow")
     monkeypatch.chdir(root)
-    assert case.scenario_file(tmp_path / "downloads" / "case.json").resolve() == (root / "scenarios" / "follow.osc").resolve()
+    assert (
+        case.scenario_file(tmp_path / "downloads" / "case.json").resolve()
+        == (root / "scenarios" / "follow.osc").resolve()
+    )
     from pytest_roadlogic.confinement import ReadRoots
 
     with pytest.raises(CaseFileError, match="not in the folders the tool reads"):
-        Case(path="elsewhere.osc", scenario="follow").scenario_file(tmp_path / "downloads" / "case.json", ReadRoots.of(root))
+        Case(path="elsewhere.osc", scenario="follow").scenario_file(
+            tmp_path / "downloads" / "case.json", ReadRoots.of(root)
+        )
 
 
 @pytest.mark.parametrize("target", ["/etc/passwd", "/proc/self/environ", "../secret.osc"])
@@ -118,14 +139,18 @@ def test_item_2_a_folder_named_with_allow_read_may_be_imported_from(tmp_path, mo
 
 
 def test_item_2_under_pytest_an_import_outside_the_rootdir_is_a_collection_error(pytester):
-    pytester.makefile(".osc", a='import "/proc/self/environ"\nscenario s:\n    v1: car\n    do v1.drive(duration: 3s)\n')
+    pytester.makefile(
+        ".osc", a='import "/proc/self/environ"\nscenario s:\n    v1: car\n    do v1.drive(duration: 3s)\n'
+    )
     result = pytester.runpytest_subprocess(*QUIET)
     result.assert_outcomes(errors=1)
     assert "is outside the folders the tool reads" in result.stdout.str()
     assert "PATH=" not in result.stdout.str() and "HOME=" not in result.stdout.str()
 
 
-def test_item_3_a_quoted_scenario_name_does_not_lead_a_written_file_out_of_the_working_folder(tmp_path, monkeypatch, capsys):
+def test_item_3_a_quoted_scenario_name_does_not_lead_a_written_file_out_of_the_working_folder(
+    tmp_path, monkeypatch, capsys
+):
     work = tmp_path / "a" / "b" / "c"
     work.mkdir(parents=True)
     (work / "x.osc").write_text("scenario |../../../x|:\n    v1: car\n    do v1.drive(duration: 3s)\n")
@@ -136,7 +161,16 @@ def test_item_3_a_quoted_scenario_name_does_not_lead_a_written_file_out_of_the_w
     assert "x.dot" in capsys.readouterr().out
 
 
-@pytest.mark.parametrize("name, safe", [("../../../x", "x"), ("a/b\\c", "a_b_c"), ("..", "scenario"), (".hidden", "hidden"), ("ok_name-1.2", "ok_name-1.2")])
+@pytest.mark.parametrize(
+    "name, safe",
+    [
+        ("../../../x", "x"),
+        ("a/b\\c", "a_b_c"),
+        ("..", "scenario"),
+        (".hidden", "hidden"),
+        ("ok_name-1.2", "ok_name-1.2"),
+    ],
+)
 def test_item_3_a_name_from_a_scenario_becomes_one_file_name_inside_its_folder(name, safe):
     from pytest_roadlogic.confinement import safe_name
 
@@ -149,15 +183,19 @@ def test_item_4_the_printed_pytest_replay_line_is_shell_quoted(pytester):
     name = "a'$(touch P)'b"
     (pytester.path / f"{name}.osc").write_text((ROOT / "scenarios" / "overtake.osc").read_text())
     pytester.makeconftest(DRIVER_CONFTEST)  # a vehicle under test that never changes lane: the overtake fails
-    result = pytester.runpytest_subprocess("--roadlogic-strategy", "base", "--roadlogic-examples", "1", "--roadlogic-tries", "1", *QUIET)
+    result = pytester.runpytest_subprocess(
+        "--roadlogic-strategy", "base", "--roadlogic-examples", "1", "--roadlogic-tries", "1", *QUIET
+    )
     result.assert_outcomes(failed=1)
     lines = [line for line in result.stdout.lines if line.startswith("replay: pytest ")]
     assert lines, result.stdout.str()
-    command = lines[0][len("replay: "):].split("   (with")[0]
+    command = lines[0][len("replay: ") :].split("   (with")[0]
     words = shlex.split(command)
     assert words[:2] == ["pytest", f"{name}.osc::overtake"], words
     # pasted into a shell, the line runs only pytest: echo stands in for it
-    done = subprocess.run(["bash", "-c", "echo " + command[len("pytest "):]], cwd=pytester.path, capture_output=True, text=True)
+    done = subprocess.run(
+        ["bash", "-c", "echo " + command[len("pytest ") :]], cwd=pytester.path, capture_output=True, text=True
+    )
     assert done.returncode == 0 and not (pytester.path / "P").exists()
 
 
@@ -179,11 +217,20 @@ def test_every_printed_replay_command_of_a_case_is_shell_quoted():
     assert shlex.split(case.command(Path("out dir/case.json"))) == ["roadlogic", "replay", "out dir/case.json"]
 
 
-@pytest.mark.parametrize("field, value, said", [
-    ("seed", "abc", "is not a seed"), ("seed", -5, "is not a seed"), ("seed", 2**40, "is not a seed"), ("max_tries", 0, "is not a number of tries"),
-    ("values", {"start_gap": [1, 2]}, "values must map"), ("drivers", {"tail": 3}, "drivers must map"), ("strategy", "evil", "is not a strategy"),
-    ("path", 3, "path must be a string"), ("instance", -1, "instance must be"),
-])
+@pytest.mark.parametrize(
+    "field, value, said",
+    [
+        ("seed", "abc", "is not a seed"),
+        ("seed", -5, "is not a seed"),
+        ("seed", 2**40, "is not a seed"),
+        ("max_tries", 0, "is not a number of tries"),
+        ("values", {"start_gap": [1, 2]}, "values must map"),
+        ("drivers", {"tail": 3}, "drivers must map"),
+        ("strategy", "evil", "is not a strategy"),
+        ("path", 3, "path must be a string"),
+        ("instance", -1, "instance must be"),
+    ],
+)
 def test_a_crafted_case_file_is_refused_when_it_is_read_naming_the_field(tmp_path, field, value, said):
     data = json.loads(Case(path="scenarios/follow.osc", scenario="follow").to_json())
     data[field] = value

@@ -3,9 +3,9 @@
 import numpy as np
 import pytest
 
+from pytest_roadlogic.artifacts.commonroad import write_commonroad_xml
 from pytest_roadlogic.planning import Planner
 from pytest_roadlogic.simulation import Road, references, simulate
-from pytest_roadlogic.artifacts.commonroad import write_commonroad_xml
 
 
 @pytest.fixture(scope="module")
@@ -106,11 +106,16 @@ class _Misbehaving:
 @pytest.mark.parametrize("incident", ["off-road", "collision"])
 def test_a_collision_or_leaving_the_road_is_never_accepted_even_when_the_guards_hold(overtake, incident):
     from pytest_roadlogic.pipeline import run_scenario
-
     from pytest_roadlogic.planning import PlanningSettings
 
     # a grid plan whose guards are known to hold at seed 3; the rule under test is the monitor's
-    outcome = run_scenario(overtake, seed=3, settings=PlanningSettings(), max_tries=1, drivers=lambda v: _Misbehaving(incident) if v == "v2" else None)
+    outcome = run_scenario(
+        overtake,
+        seed=3,
+        settings=PlanningSettings(),
+        max_tries=1,
+        drivers=lambda v: _Misbehaving(incident) if v == "v2" else None,
+    )
     verdict = outcome.verdict
     assert verdict.robustness >= 0, "the guards should hold: the incident comes after the plan's end"
     assert [i.kind for i in verdict.incidents] == [incident]

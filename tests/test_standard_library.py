@@ -8,8 +8,7 @@ import pytest
 
 from pytest_roadlogic.constructs import CARLA, STANDARD, conditions
 from pytest_roadlogic.frontend import check_text, library
-from pytest_roadlogic.frontend.standard_library import part_file, part_names, standard_library
-from pytest_roadlogic.frontend.standard_library import UNITS
+from pytest_roadlogic.frontend.standard_library import UNITS, part_file, part_names, standard_library
 
 
 def declared_kind(type_name: str) -> str:
@@ -27,7 +26,10 @@ def declared_kind(type_name: str) -> str:
 @pytest.mark.parametrize("registry", [STANDARD, CARLA], ids=["standard", "carla"])
 def test_every_construct_the_tool_executes_is_declared_with_the_same_parameters(registry):
     lib = standard_library()
-    for kind, provided, declared in (("action", registry.actions, lib.actions), ("modifier", registry.modifiers, lib.modifiers)):
+    for kind, provided, declared in (
+        ("action", registry.actions, lib.actions),
+        ("modifier", registry.modifiers, lib.modifiers),
+    ):
         for name, construct in provided.items():
             assert name in declared, f"the {kind} {name} is provided but stdlib/osc/movement.osc does not declare it"
             written = {p: declared_kind(t) for p, t in declared[name].parameters}
@@ -39,7 +41,9 @@ def test_every_observable_a_condition_reads_is_a_declared_method_with_its_type()
     methods = standard_library().methods
     for name, observable in conditions.OBSERVABLES.items():
         assert name in methods, f"conditions read {name}, which stdlib/osc/methods.osc does not declare"
-        assert methods[name].returns == (observable.dimension or "int"), "a plain number is declared as an int (a count of lanes)"
+        assert methods[name].returns == (observable.dimension or "int"), (
+            "a plain number is declared as an int (a count of lanes)"
+        )
         assert [p for p, _ in methods[name].parameters] == (["reference"] if observable.needs_reference else [])
 
 
@@ -49,7 +53,12 @@ def test_the_unit_table_is_the_one_the_physical_part_declares():
     assert UNITS["kph"] == ("speed", pytest.approx(1 / 3.6)) and UNITS["km"] == ("length", 1000.0)
     assert UNITS["mph"][1] == 0.44704 and UNITS["min"] == ("time", 60.0)
     assert "deg" not in UNITS and lib.types["angle"] is None  # declared, not modelled
-    assert dict(library.PHYSICAL_TYPES) == {"length": "length", "time": "time", "speed": "speed", "acceleration": "acceleration"}
+    assert dict(library.PHYSICAL_TYPES) == {
+        "length": "length",
+        "time": "time",
+        "speed": "speed",
+        "acceleration": "acceleration",
+    }
     assert all(math.isfinite(factor) and factor > 0 for _, factor in UNITS.values())
 
 
@@ -62,13 +71,22 @@ def test_the_tools_actor_types_are_the_libraries_road_users():
 
 
 def test_osc_standard_imports_every_part_and_each_part_imports_alone():
-    assert set(part_names()) >= {"osc.standard", "osc.physical", "osc.types", "osc.actors", "osc.movement", "osc.methods"}
+    assert set(part_names()) >= {
+        "osc.standard",
+        "osc.physical",
+        "osc.types",
+        "osc.actors",
+        "osc.movement",
+        "osc.methods",
+    }
     standard = part_file("osc.standard").read_text()
     for part in part_names():
         if part != "osc.standard":
             assert f"import {part}" in standard
     for part in part_names():
-        checked = check_text(f"import {part}\n\nscenario s:\n    a: car\n    do a.drive(duration: 3s) with:\n        speed(20kph)\n")
+        checked = check_text(
+            f"import {part}\n\nscenario s:\n    a: car\n    do a.drive(duration: 3s) with:\n        speed(20kph)\n"
+        )
         assert not checked.diagnostics, (part, [d.message for d in checked.diagnostics])
 
 
@@ -77,14 +95,19 @@ def test_an_unknown_library_is_an_error_and_an_unknown_part_a_warning():
     [error] = check_text("import carla.standard" + body).diagnostics
     assert (error.severity, error.location.line) == ("error", 1) and "unknown library 'carla.standard'" in error.message
     [warning] = check_text("import osc.helpers" + body).diagnostics
-    assert warning.severity == "warning" and "no part 'osc.helpers'" in warning.message and "osc.physical" in warning.hint
+    assert (
+        warning.severity == "warning" and "no part 'osc.helpers'" in warning.message and "osc.physical" in warning.hint
+    )
 
 
-@pytest.mark.parametrize("use, message", [
-    ("a.drive(duration: 3s) with:\n        yaw(at: start)", "not supported: the standard's modifier 'yaw'"),
-    ("a.follow_trajectory(duration: 3s)", "not supported: the standard's action 'follow_trajectory'"),
-    ("a.fly(duration: 3s)", "unknown action 'fly'"),
-])
+@pytest.mark.parametrize(
+    "use, message",
+    [
+        ("a.drive(duration: 3s) with:\n        yaw(at: start)", "not supported: the standard's modifier 'yaw'"),
+        ("a.follow_trajectory(duration: 3s)", "not supported: the standard's action 'follow_trajectory'"),
+        ("a.fly(duration: 3s)", "unknown action 'fly'"),
+    ],
+)
 def test_a_construct_the_library_declares_and_the_tool_does_not_execute_is_refused_by_name(use, message):
     checked = check_text(f"scenario s:\n    a: car\n    do {use}\n")
     errors = [d for d in checked.diagnostics if d.severity == "error"]
@@ -110,9 +133,14 @@ def test_a_file_that_declares_a_library_unit_as_another_dimension_is_told_so_at_
     from pytest_roadlogic.frontend import OscError, check_file
 
     (tmp_path / "lib.osc").write_text("type length is SI(m: 1)\nunit deg of length is SI(m: 1, factor: 0.5)\n")
-    (tmp_path / "s.osc").write_text("import lib.osc\nscenario s:\n    a, b: car\n    do b.drive(duration: 3s) with:\n        position(40deg, behind: a, at: start)\n")
+    (tmp_path / "s.osc").write_text(
+        "import lib.osc\nscenario s:\n    a, b: car\n    do b.drive(duration: 3s) with:\n        position(40deg, behind: a, at: start)\n"
+    )
     with pytest.raises(OscError) as caught:
         check_file(tmp_path / "s.osc")
     report = str(caught.value)
-    assert "lib.osc:2:6: error: unit 'deg' is declared as a length unit, but deg is a unit of angle in the standard library" in report
+    assert (
+        "lib.osc:2:6: error: unit 'deg' is declared as a length unit, but deg is a unit of angle in the standard library"
+        in report
+    )
     assert "s.osc:5:18: error: not supported: unit 'deg'" in report

@@ -24,7 +24,9 @@ README = (ROOT / "README.md").read_text()
 
 
 def roadlogic(*args: str, cwd: Path | None = None, timeout: float = 120) -> subprocess.CompletedProcess:
-    return subprocess.run([sys.executable, "-m", "pytest_roadlogic.cli", *args], capture_output=True, text=True, cwd=cwd, timeout=timeout)
+    return subprocess.run(
+        [sys.executable, "-m", "pytest_roadlogic.cli", *args], capture_output=True, text=True, cwd=cwd, timeout=timeout
+    )
 
 
 def parallel_of(members: int, action: str = "drive() with:\n            speed([10..20]kph)") -> str:
@@ -34,6 +36,7 @@ def parallel_of(members: int, action: str = "drive() with:\n            speed([1
 
 
 # ------------------------------------------------------------------ hangs and resources
+
 
 def test_item_5_a_parallel_of_thirty_members_checks_without_enumerating_their_product(tmp_path):
     """30 members had never finished: every combination of their moves was made, then filtered."""
@@ -46,14 +49,19 @@ def test_item_5_a_parallel_whose_product_is_too_large_is_refused_at_the_composit
     (tmp_path / "many.osc").write_text(parallel_of(24, "change_lane(side: left)"))
     done = roadlogic("check", str(tmp_path / "many.osc"), timeout=60)
     assert done.returncode == 1
-    assert re.search(r"many\.osc:26:8: error: this parallel's automaton grows past 20,000 transitions", done.stdout), done.stdout
+    assert re.search(r"many\.osc:26:8: error: this parallel's automaton grows past 20,000 transitions", done.stdout), (
+        done.stdout
+    )
 
 
 def test_item_6_a_horizon_past_the_longest_is_a_usage_error_naming_the_option(capsys):
     with pytest.raises(SystemExit) as ended:
         cli.main(["plan", str(ROOT / "scenarios" / "follow.osc"), "--horizon", "2000000"])
     assert ended.value.code == 2
-    assert "argument --horizon: '2000000' is past the longest planning horizon; give a whole number of steps from 1 to 3600" in capsys.readouterr().err
+    assert (
+        "argument --horizon: '2000000' is past the longest planning horizon; give a whole number of steps from 1 to 3600"
+        in capsys.readouterr().err
+    )
 
 
 def test_item_6_the_plan_timeout_bounds_grounding_too(tmp_path):
@@ -104,7 +112,10 @@ def test_item_8_a_keep_that_no_values_of_the_ranges_meet_is_a_located_error():
 
 def test_item_8_values_that_break_a_keep_relating_parameters_are_refused_where_they_enter(tmp_path, capsys):
     (tmp_path / "keep.osc").write_text(KEEP.format(limit=40))
-    assert cli.main(["run", str(tmp_path / "keep.osc"), "--values", '{"a": 16, "b": 25}', "--out", str(tmp_path / "o")]) == cli.EXIT_INPUT
+    assert (
+        cli.main(["run", str(tmp_path / "keep.osc"), "--values", '{"a": 16, "b": 25}', "--out", str(tmp_path / "o")])
+        == cli.EXIT_INPUT
+    )
     assert "a = 16, b = 25 break the constraint at keep.osc:8:5" in capsys.readouterr().err
     assert not (tmp_path / "o").exists()
 
@@ -131,10 +142,17 @@ scenario b:
 """
 
 
-@pytest.mark.parametrize("text, where, cycle", [
-    ("scenario s:\n    v1: vehicle\n    do serial:\n        v1.drive(duration: 3s)\n        s()\n", (5, 9), "s -> s"),
-    (RECURSIVE, (5, 9), "b -> a -> b"),
-])
+@pytest.mark.parametrize(
+    "text, where, cycle",
+    [
+        (
+            "scenario s:\n    v1: vehicle\n    do serial:\n        v1.drive(duration: 3s)\n        s()\n",
+            (5, 9),
+            "s -> s",
+        ),
+        (RECURSIVE, (5, 9), "b -> a -> b"),
+    ],
+)
 def test_item_9_a_scenario_that_calls_itself_is_a_located_error(text, where, cycle):
     with pytest.raises(OscError) as refused:
         check_text(text, "r.osc").raise_for_errors()
@@ -201,12 +219,16 @@ def test_item_12_a_replay_with_a_value_of_the_wrong_kind_fails_with_one_line_und
 
 # ------------------------------------------------------------------ usage errors that crashed later
 
+
 @pytest.mark.parametrize("seed", ["-5", "99999999999"])
 def test_item_13_a_seed_clingo_cannot_take_is_a_usage_error(pytester, capsys, seed):
     pytester.makefile(".osc", good="scenario good:\n    v1: car\n    do v1.drive(duration: 3s)\n")
     result = pytester.runpytest_subprocess("--roadlogic-seed", seed, *QUIET)
     assert result.ret == pytest.ExitCode.USAGE_ERROR
-    assert f"--roadlogic-seed (ini roadlogic_seed): '{seed}' is not a seed; give a whole number from 0 to 4294967295" in result.stderr.str()
+    assert (
+        f"--roadlogic-seed (ini roadlogic_seed): '{seed}' is not a seed; give a whole number from 0 to 4294967295"
+        in result.stderr.str()
+    )
     with pytest.raises(SystemExit):
         cli.main(["plan", str(ROOT / "scenarios" / "follow.osc"), "--seed", seed])
     assert "is not a seed" in capsys.readouterr().err
@@ -217,7 +239,9 @@ def test_item_14_an_artifacts_option_naming_a_file_stops_the_session_at_its_star
     (pytester.path / "taken").write_text("a file")
     result = pytester.runpytest_subprocess("--roadlogic-artifacts", "taken", *QUIET)
     assert result.ret == pytest.ExitCode.USAGE_ERROR
-    assert "--roadlogic-artifacts (ini roadlogic_artifacts):" in result.stderr.str() and "is a file" in result.stderr.str()
+    assert (
+        "--roadlogic-artifacts (ini roadlogic_artifacts):" in result.stderr.str() and "is a file" in result.stderr.str()
+    )
 
 
 def test_item_14_run_with_an_out_folder_that_cannot_be_made_stops_before_running(capsys):
@@ -230,7 +254,9 @@ def test_item_15_what_a_killed_run_left_is_removed_and_the_folder_gets_the_umask
     from pytest_roadlogic.artifacts.files import replaced_directory
     from pytest_roadlogic.artifacts.writer import ARTIFACT_NAMES
 
-    dead = subprocess.run([sys.executable, "-c", "import os; print(os.getpid())"], capture_output=True, text=True).stdout.strip()
+    dead = subprocess.run(
+        [sys.executable, "-c", "import os; print(os.getpid())"], capture_output=True, text=True
+    ).stdout.strip()
     left = tmp_path / f".out.{dead}.k2j3.partial"
     left.mkdir()
     (left / "plan.json").write_text("{}")
@@ -249,14 +275,22 @@ def test_item_15_a_second_run_into_an_out_folder_another_run_holds_is_refused(tm
     from pytest_roadlogic.artifacts.files import FolderBusy, claimed
 
     # the claim is a lock the system holds per open file: a second process is refused as a second open is
-    other = subprocess.Popen([sys.executable, "-c", f"""
+    other = subprocess.Popen(
+        [
+            sys.executable,
+            "-c",
+            f"""
 import time
 from pathlib import Path
 from pytest_roadlogic.artifacts.files import claimed
-with claimed(Path({str(tmp_path / 'out')!r})):
+with claimed(Path({str(tmp_path / "out")!r})):
     print('held', flush=True)
     time.sleep(5)
-"""], stdout=subprocess.PIPE, text=True)
+""",
+        ],
+        stdout=subprocess.PIPE,
+        text=True,
+    )
     try:
         assert other.stdout.readline().strip() == "held"
         with pytest.raises(FolderBusy, match="another run is writing"):
@@ -271,6 +305,7 @@ with claimed(Path({str(tmp_path / 'out')!r})):
 
 
 # ------------------------------------------------------------------ the README, in a new shell
+
 
 def commands_after(heading: str) -> str:
     """The first fenced block after a line of the README."""
@@ -291,15 +326,32 @@ def test_item_17_the_project_has_its_own_language_reference_and_links_nothing_of
     reference = ROOT / "docs" / "language.md"
     assert reference.is_file() and "(docs/language.md)" in README
     text = reference.read_text()
-    for subject in ("## What is read", "Refused, by name", "## Values that mean nothing are errors", "## Files an `.osc` file may import"):
+    for subject in (
+        "## What is read",
+        "Refused, by name",
+        "## Values that mean nothing are errors",
+        "## Files an `.osc` file may import",
+    ):
         assert subject in text
-    shipped = [README, text, *(p.read_text() for p in (ROOT / "pytest_roadlogic").rglob("*.py") if "generated" not in p.parts)]
+    shipped = [
+        README,
+        text,
+        *(p.read_text() for p in (ROOT / "pytest_roadlogic").rglob("*.py") if "generated" not in p.parts),
+    ]
     assert not any("os2-subset.md" in t or "../shared" in t for t in shipped)
 
 
 def test_item_18_the_frontend_benchmark_reads_a_file_that_declares_its_own_units():
-    done = subprocess.run([sys.executable, str(ROOT / "benchmarks" / "frontend.py"), str(ROOT / "tests" / "corpus" / "49_carla_style.osc")],
-                          capture_output=True, text=True, timeout=120)
+    done = subprocess.run(
+        [
+            sys.executable,
+            str(ROOT / "benchmarks" / "frontend.py"),
+            str(ROOT / "tests" / "corpus" / "49_carla_style.osc"),
+        ],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
     assert done.returncode == 0, done.stderr
     assert "49_carla_style.osc" in done.stdout and "Traceback" not in done.stderr
 

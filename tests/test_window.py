@@ -16,7 +16,11 @@ from pytest_roadlogic.planning.window import shortest_run
 ROOT = Path(__file__).resolve().parent.parent
 FILES = sorted(
     path
-    for path in [*ROOT.glob("scenarios/*.osc"), *ROOT.glob("scenarios/realistic/**/*.osc"), *ROOT.glob("tests/scenarios/*.osc")]
+    for path in [
+        *ROOT.glob("scenarios/*.osc"),
+        *ROOT.glob("scenarios/realistic/**/*.osc"),
+        *ROOT.glob("tests/scenarios/*.osc"),
+    ]
     if path.name != "lib.osc"
 )
 
@@ -38,10 +42,14 @@ def test_no_run_of_the_automaton_ends_before_its_floor(path, dt):
     automaton = automaton_of(path)
     earliest = window_without_floor(automaton, dt).earliest(480)
     floor = shortest_run(automaton, dt)
-    assert earliest is None or floor <= earliest, f"the floor {floor} passes the first step a run ends at, {earliest}: planning would miss plans"
+    assert earliest is None or floor <= earliest, (
+        f"the floor {floor} passes the first step a run ends at, {earliest}: planning would miss plans"
+    )
 
 
-@pytest.mark.parametrize("name", ["realistic/five_vehicle_minute", "realistic/follow_then_overtake", "realistic/one_of_reaction", "overtake"])
+@pytest.mark.parametrize(
+    "name", ["realistic/five_vehicle_minute", "realistic/follow_then_overtake", "realistic/one_of_reaction", "overtake"]
+)
 def test_the_floor_of_phases_in_series_is_where_a_run_ends(name):
     # why planning starts there without asking the window (planning/continuous.py): one solve less
     automaton = automaton_of(ROOT / "scenarios" / f"{name}.osc")
@@ -58,7 +66,9 @@ def test_the_window_says_the_same_however_far_it_has_grounded(name):
         last = far.last_open(80)
         for step in range(last + 3):
             near = window_without_floor(automaton, dt)  # grounds only what the question needs
-            assert near.open_at(step) == far.open_at(step), f"under way at step {step} (dt {dt}): a window grounded to the step answered otherwise"
+            assert near.open_at(step) == far.open_at(step), (
+                f"under way at step {step} (dt {dt}): a window grounded to the step answered otherwise"
+            )
 
 
 def test_a_plan_may_need_one_step_after_the_last_end_and_no_more():

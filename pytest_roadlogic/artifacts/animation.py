@@ -32,7 +32,9 @@ PIXELS_WIDE = 1000
 MARGIN = 40  # px above the road for the title line and below it for the scale
 
 
-def animate_simulation(simulation: Simulation, verdict: Verdict | None, path: str | Path, title: str = "", frame_dt: float = 0.2) -> Path:
+def animate_simulation(
+    simulation: Simulation, verdict: Verdict | None, path: str | Path, title: str = "", frame_dt: float = 0.2
+) -> Path:
     """Write the GIF atomically (a temporary file renamed into place) and return its path."""
     from PIL import Image, ImageDraw, ImageFont
 

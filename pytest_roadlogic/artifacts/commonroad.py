@@ -24,9 +24,9 @@ FIRST_PROBLEM_ID = 2000
 
 
 def commonroad_scenario(simulation: Simulation):
+    import shapely
     from commonroad.common.common_scenario import ScenarioID
     from commonroad.common.util import AngleInterval, Interval
-    import shapely
     from commonroad.geometry.obstacle_shapes.rect_obstacle_shape import RectObstacleShape
     from commonroad.geometry.occupancy.rect_occupancy import RectOccupancy
     from commonroad.planning.goal import GoalRegion
@@ -55,8 +55,13 @@ def commonroad_scenario(simulation: Simulation):
             for k in range(len(trace))
         ]
         initial = InitialState(
-            time_step=0, position=states[0].position, orientation=states[0].orientation,
-            velocity=0.0, acceleration=0.0, yaw_rate=0.0, slip_angle=0.0,
+            time_step=0,
+            position=states[0].position,
+            orientation=states[0].orientation,
+            velocity=0.0,
+            acceleration=0.0,
+            yaw_rate=0.0,
+            slip_angle=0.0,
         )
         if vehicle in simulation.stationary:
             scenario.add_objects(StaticObstacle(FIRST_OBSTACLE_ID + index, ObstacleType.PARKED_VEHICLE, shape, initial))
@@ -67,14 +72,21 @@ def commonroad_scenario(simulation: Simulation):
         for k, goal in enumerate(simulation.references[vehicle].waypoints):
             goal_state = CustomState(
                 time_step=Interval(max(0, math.ceil(goal.earliest / dt - 1e-9)), math.floor(goal.latest / dt + 1e-9)),
-                position=RectOccupancy(shapely.Point(goal.position, road.center_y(goal.lane)), road.lane_width, 2 * goal.reach, 0.0),
+                position=RectOccupancy(
+                    shapely.Point(goal.position, road.center_y(goal.lane)), road.lane_width, 2 * goal.reach, 0.0
+                ),
                 orientation=AngleInterval(-0.3, 0.3),
             )
             problem_id = FIRST_PROBLEM_ID + 100 * index + k
             problems.add_planning_problem(PlanningProblem(problem_id, start, GoalRegion([goal_state])))
             start = InitialState(
-                time_step=int(round(goal.time / dt)), position=np.array([goal.position, road.center_y(goal.lane)]), orientation=0.0,
-                velocity=goal.speed, acceleration=0.0, yaw_rate=0.0, slip_angle=0.0,
+                time_step=int(round(goal.time / dt)),
+                position=np.array([goal.position, road.center_y(goal.lane)]),
+                orientation=0.0,
+                velocity=goal.speed,
+                acceleration=0.0,
+                yaw_rate=0.0,
+                slip_angle=0.0,
             )
     return scenario, problems
 
@@ -88,8 +100,13 @@ def write_commonroad_xml(simulation: Simulation, path: str | Path) -> Path:
     path = Path(path)
     scenario, problems = commonroad_scenario(simulation)
     writer = CommonRoadFileWriter(
-        scenario, problems, author="pytest-roadlogic", affiliation="", source="pytest-roadlogic",
-        tags={Tag.HIGHWAY, Tag.MULTI_LANE}, file_format=FileFormat.XML,
+        scenario,
+        problems,
+        author="pytest-roadlogic",
+        affiliation="",
+        source="pytest-roadlogic",
+        tags={Tag.HIGHWAY, Tag.MULTI_LANE},
+        file_format=FileFormat.XML,
     )
     with replaced(path) as temporary:
         writer.write_to_file(temporary, OverwriteExistingFile.ALWAYS)

@@ -52,7 +52,9 @@ def replaced_directory(directory: Path, artifact: re.Pattern) -> Iterator[Path]:
     check_replaceable(directory, artifact)
     directory.parent.mkdir(parents=True, exist_ok=True)
     remove_stale(directory)
-    staging = Path(tempfile.mkdtemp(prefix=f".{directory.name}.{os.getpid()}.", suffix=".partial", dir=directory.parent))
+    staging = Path(
+        tempfile.mkdtemp(prefix=f".{directory.name}.{os.getpid()}.", suffix=".partial", dir=directory.parent)
+    )
     staging.chmod(0o777 & ~_umask())  # mkdtemp's 0700 would have become the artifacts folder's mode
     retired = None
     try:
@@ -84,7 +86,9 @@ def check_writable(directory: Path) -> None:
     try:
         os.rmdir(tempfile.mkdtemp(prefix=".roadlogic-probe.", dir=existing))
     except OSError as error:
-        raise NotAnArtifactFolder(f"cannot make a folder in {existing} ({error.strerror}); give a folder you can write") from None
+        raise NotAnArtifactFolder(
+            f"cannot make a folder in {existing} ({error.strerror}); give a folder you can write"
+        ) from None
 
 
 def check_replaceable(directory: Path, artifact: re.Pattern) -> None:
@@ -96,8 +100,10 @@ def check_replaceable(directory: Path, artifact: re.Pattern) -> None:
         raise NotAnArtifactFolder(f"{directory} is a file, not a folder of artifacts")
     foreign = sorted(p.name for p in directory.iterdir() if not artifact.fullmatch(p.name))
     if foreign:
-        raise NotAnArtifactFolder(f"{directory} holds files a run does not write ({', '.join(foreign[:3])}{', ...' if len(foreign) > 3 else ''}); "
-                                  "give a new or empty folder, or one a run wrote")
+        raise NotAnArtifactFolder(
+            f"{directory} holds files a run does not write ({', '.join(foreign[:3])}{', ...' if len(foreign) > 3 else ''}); "
+            "give a new or empty folder, or one a run wrote"
+        )
 
 
 def _umask() -> int:
@@ -155,7 +161,9 @@ def claimed(directory: Path) -> Iterator[None]:
         try:
             fcntl.flock(handle, fcntl.LOCK_EX | fcntl.LOCK_NB)
         except BlockingIOError:
-            raise FolderBusy(f"another run is writing {directory}; wait for it to end, or give another folder") from None
+            raise FolderBusy(
+                f"another run is writing {directory}; wait for it to end, or give another folder"
+            ) from None
         try:
             yield
         finally:

@@ -20,10 +20,16 @@ def report_extras(paths: dict[str, Path], replay: list[str]) -> list[dict]:
     if "plot" in paths:
         result.append(extras.png(_base64(paths["plot"]), name="trajectories"))
     if "animation" in paths:
-        result.append(extras.image(_base64(paths["animation"]), name="simulation", mime_type="image/gif", extension="gif"))
+        result.append(
+            extras.image(_base64(paths["animation"]), name="simulation", mime_type="image/gif", extension="gif")
+        )
     commands = "\n".join(html.escape(line) for line in replay)
     # wrapped: one replay line is wider than a screen and would push the pictures out of view
-    result.append(extras.html(f'<div class="roadlogic-replay"><p>replay this case:</p><pre style="white-space: pre-wrap; overflow-wrap: anywhere">{commands}</pre></div>'))
+    result.append(
+        extras.html(
+            f'<div class="roadlogic-replay"><p>replay this case:</p><pre style="white-space: pre-wrap; overflow-wrap: anywhere">{commands}</pre></div>'
+        )
+    )
     return result
 
 

@@ -39,7 +39,12 @@ def road_opendrive(simulation: Simulation):
     road = simulation.road
     marks = xodr.RoadMark(xodr.RoadMarkType.solid, 0.12)
     opendrive_road = xodr.create_road(
-        xodr.Line(road.x_end - road.x_start), id=1, left_lanes=0, right_lanes=road.lanes, lane_width=road.lane_width, center_road_mark=marks
+        xodr.Line(road.x_end - road.x_start),
+        id=1,
+        left_lanes=0,
+        right_lanes=road.lanes,
+        lane_width=road.lane_width,
+        center_road_mark=marks,
     )
     opendrive_road.planview.set_start_point(road.x_start, road.width, 0.0)
     opendrive = xodr.OpenDrive("pytest-roadlogic straight road")
@@ -62,18 +67,27 @@ def openscenario(simulation: Simulation, name: str = "roadlogic", road_file: str
     init = xosc.Init()
     story = xosc.Story("simulated trajectories")
     end = float(trace.times[-1])
-    act_start = xosc.ValueTrigger("at start", 0, xosc.ConditionEdge.none, xosc.SimulationTimeCondition(0, xosc.Rule.greaterOrEqual))
+    act_start = xosc.ValueTrigger(
+        "at start", 0, xosc.ConditionEdge.none, xosc.SimulationTimeCondition(0, xosc.Rule.greaterOrEqual)
+    )
     act = xosc.Act("drive", act_start)
     for vehicle, columns in trace.actors.items():
         box = xosc.BoundingBox(CAR_WIDTH, CAR_LENGTH, CAR_HEIGHT, WHEELBASE / 2, 0.0, CAR_HEIGHT / 2)
         front = xosc.Axle(0.6, 0.65, 1.6, WHEELBASE, 0.325)
         rear = xosc.Axle(0.0, 0.65, 1.6, 0.0, 0.325)
-        entities.add_scenario_object(vehicle, xosc.Vehicle(vehicle, xosc.VehicleCategory.car, box, front, rear, 70.0, 10.0, 10.0))
+        entities.add_scenario_object(
+            vehicle, xosc.Vehicle(vehicle, xosc.VehicleCategory.car, box, front, rear, 70.0, 10.0, 10.0)
+        )
         x0, y0 = rear_axle(float(columns["x"][0]), float(columns["y"][0]), float(columns["heading"][0]))
-        init.add_init_action(vehicle, xosc.TeleportAction(xosc.WorldPosition(x0, y0, 0.0, float(columns["heading"][0]))))
+        init.add_init_action(
+            vehicle, xosc.TeleportAction(xosc.WorldPosition(x0, y0, 0.0, float(columns["heading"][0])))
+        )
         init.add_init_action(
             vehicle,
-            xosc.AbsoluteSpeedAction(float(columns["speed"][0]), xosc.TransitionDynamics(xosc.DynamicsShapes.step, xosc.DynamicsDimension.time, 0)),
+            xosc.AbsoluteSpeedAction(
+                float(columns["speed"][0]),
+                xosc.TransitionDynamics(xosc.DynamicsShapes.step, xosc.DynamicsDimension.time, 0),
+            ),
         )
         if vehicle in simulation.stationary:
             continue
@@ -83,10 +97,19 @@ def openscenario(simulation: Simulation, name: str = "roadlogic", road_file: str
         ]
         trajectory = xosc.Trajectory(f"{vehicle} simulated", False)
         trajectory.add_shape(xosc.Polyline([float(t) for t in trace.times], positions))
-        follow = xosc.FollowTrajectoryAction(trajectory, xosc.FollowingMode.position, xosc.ReferenceContext.absolute, 1, 0)
+        follow = xosc.FollowTrajectoryAction(
+            trajectory, xosc.FollowingMode.position, xosc.ReferenceContext.absolute, 1, 0
+        )
         event = xosc.Event(f"{vehicle} follows", xosc.Priority.override)
         event.add_action(f"{vehicle} trajectory", follow)
-        event.add_trigger(xosc.ValueTrigger(f"{vehicle} starts", 0, xosc.ConditionEdge.none, xosc.SimulationTimeCondition(0, xosc.Rule.greaterOrEqual)))
+        event.add_trigger(
+            xosc.ValueTrigger(
+                f"{vehicle} starts",
+                0,
+                xosc.ConditionEdge.none,
+                xosc.SimulationTimeCondition(0, xosc.Rule.greaterOrEqual),
+            )
+        )
         maneuver = xosc.Maneuver(f"{vehicle} maneuver")
         maneuver.add_event(event)
         group = xosc.ManeuverGroup(f"{vehicle} group")
@@ -94,12 +117,21 @@ def openscenario(simulation: Simulation, name: str = "roadlogic", road_file: str
         group.add_maneuver(maneuver)
         act.add_maneuver_group(group)
     story.add_act(act)
-    stop = xosc.ValueTrigger("trace ends", 0, xosc.ConditionEdge.rising, xosc.SimulationTimeCondition(end, xosc.Rule.greaterThan), "stop")
+    stop = xosc.ValueTrigger(
+        "trace ends", 0, xosc.ConditionEdge.rising, xosc.SimulationTimeCondition(end, xosc.Rule.greaterThan), "stop"
+    )
     storyboard = xosc.StoryBoard(init, stop)
     storyboard.add_story(story)
     return xosc.Scenario(
-        name, "pytest-roadlogic", xosc.ParameterDeclarations(), entities, storyboard, xosc.RoadNetwork(roadfile=road_file), xosc.Catalog(),
-        osc_minor_version=OPENSCENARIO_MINOR_VERSION, creation_date=CREATION_DATE,
+        name,
+        "pytest-roadlogic",
+        xosc.ParameterDeclarations(),
+        entities,
+        storyboard,
+        xosc.RoadNetwork(roadfile=road_file),
+        xosc.Catalog(),
+        osc_minor_version=OPENSCENARIO_MINOR_VERSION,
+        creation_date=CREATION_DATE,
     )
 
 

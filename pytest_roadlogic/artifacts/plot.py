@@ -39,8 +39,16 @@ def plot_simulation(simulation: Simulation, verdict: Verdict, path: str | Path, 
         for k, _ in run_indices:
             x, y, heading = columns["x"][k], columns["y"][k], columns["heading"][k]
             top.add_patch(
-                Rectangle((x - CAR_LENGTH / 2, y - CAR_WIDTH / 2), CAR_LENGTH, CAR_WIDTH, angle=float(heading) * 57.2958,
-                          rotation_point="center", facecolor=colour, alpha=0.35, edgecolor=colour)
+                Rectangle(
+                    (x - CAR_LENGTH / 2, y - CAR_WIDTH / 2),
+                    CAR_LENGTH,
+                    CAR_WIDTH,
+                    angle=float(heading) * 57.2958,
+                    rotation_point="center",
+                    facecolor=colour,
+                    alpha=0.35,
+                    edgecolor=colour,
+                )
             )
     for number, (k, events) in enumerate(run_indices, start=1):
         time = trace.times[k]
@@ -58,7 +66,9 @@ def plot_simulation(simulation: Simulation, verdict: Verdict, path: str | Path, 
     bottom.set_xlabel("time [s]")
     bottom.set_ylabel("x [m]")
     status = "accepted" if verdict.accepted else "REJECTED"
-    figure.suptitle(f"{title}  {status} (robustness {verdict.robustness:+.2f}); numbered marks: guards met", fontsize=10)
+    figure.suptitle(
+        f"{title}  {status} (robustness {verdict.robustness:+.2f}); numbered marks: guards met", fontsize=10
+    )
     with warnings.catch_warnings():
         # five_vehicle_minute's 13 guard labels leave tight_layout no room, and matplotlib said so
         # on stderr of every run ("Tight layout not applied"); the figure is drawn as laid out

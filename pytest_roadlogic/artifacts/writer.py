@@ -15,11 +15,13 @@ from .animation import animate_simulation
 from .commonroad import write_commonroad_xml
 from .files import write_text
 from .openscenario import openscenario_paths, write_openscenario
+from .plot import plot_simulation
 
 # every name a run writes into its output folder (run --instances: a folder per instance), and
 # what an interrupted write leaves: what `run` may replace there (files.replaced_directory)
-ARTIFACT_NAMES = re.compile(r"plan\.json|trace\.csv|scenario\.xml|scenario\.xosc|road\.xodr|trajectories\.png|verdict\.json|simulation\.gif|case\.json|instance-\d+|\..*\.partial.*")
-from .plot import plot_simulation
+ARTIFACT_NAMES = re.compile(
+    r"plan\.json|trace\.csv|scenario\.xml|scenario\.xosc|road\.xodr|trajectories\.png|verdict\.json|simulation\.gif|case\.json|instance-\d+|\..*\.partial.*"
+)
 
 
 def write_artifacts(outcome: Outcome, directory: str | Path, animation: bool = True) -> dict[str, Path]:
@@ -51,7 +53,9 @@ def write_artifacts(outcome: Outcome, directory: str | Path, animation: bool = T
             "verdict": write_text(directory / "verdict.json", json.dumps(verdict, indent=2)),
         }
         if animation:
-            paths["animation"] = animate_simulation(outcome.simulation, outcome.verdict, directory / "simulation.gif", title=name)
+            paths["animation"] = animate_simulation(
+                outcome.simulation, outcome.verdict, directory / "simulation.gif", title=name
+            )
     except BaseException:
         openscenario(cancel=True)
         raise
@@ -102,6 +106,8 @@ def beside(write: Callable[[], object]) -> Callable[..., None]:
         if cancel:
             return None
         if os.waitstatus_to_exitcode(status) != 0:
-            raise OSError(message or f"the OpenSCENARIO writer's process ended with status {os.waitstatus_to_exitcode(status)}")
+            raise OSError(
+                message or f"the OpenSCENARIO writer's process ended with status {os.waitstatus_to_exitcode(status)}"
+            )
 
     return wait

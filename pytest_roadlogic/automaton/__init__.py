@@ -5,6 +5,20 @@ from .guards import LANE, POSITION, SPEED, TRUE, And, Bound, Guard, Not, Or, Ter
 from .model import Location, SymbolicAutomaton, Timing, Transition
 
 __all__ = [
-    "LANE", "POSITION", "SPEED", "TRUE", "And", "Bound", "Guard", "Location", "Not", "Or",
-    "SymbolicAutomaton", "Term", "Timing", "Transition", "build_automaton", "conjunction",
+    "LANE",
+    "POSITION",
+    "SPEED",
+    "TRUE",
+    "And",
+    "Bound",
+    "Guard",
+    "Location",
+    "Not",
+    "Or",
+    "SymbolicAutomaton",
+    "Term",
+    "Timing",
+    "Transition",
+    "build_automaton",
+    "conjunction",
 ]

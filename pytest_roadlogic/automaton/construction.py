@@ -22,8 +22,8 @@ from __future__ import annotations
 
 import itertools
 import math
+from collections.abc import Hashable
 from dataclasses import dataclass, field, replace
-from typing import Hashable
 
 from ..constructs.conditions import condition_guard
 from ..frontend import model
@@ -57,9 +57,15 @@ def _simultaneous(source: Key, moves: list[_Edge], target: Key, deaf: frozenset[
     staying put wait for."""
     emits = frozenset().union(*(m.emits for m in moves))
     return _Edge(
-        source, conjunction([m.guard for m in moves]), tuple(ev for m in moves for ev in m.events), target,
-        frozenset().union(*(m.starts for m in moves)), frozenset().union(*(m.ends for m in moves)),
-        emits, frozenset().union(*(m.awaits for m in moves)) - emits, frozenset().union(deaf, *(m.deaf for m in moves)),
+        source,
+        conjunction([m.guard for m in moves]),
+        tuple(ev for m in moves for ev in m.events),
+        target,
+        frozenset().union(*(m.starts for m in moves)),
+        frozenset().union(*(m.ends for m in moves)),
+        emits,
+        frozenset().union(*(m.awaits for m in moves)) - emits,
+        frozenset().union(deaf, *(m.deaf for m in moves)),
     )
 
 
@@ -87,10 +93,16 @@ def build_automaton(checked: CheckedScenario, values: dict[str, object] | None =
     keeps its range, which the planner then chooses within (the base strategy).
     """
     if not isinstance(checked, CheckedScenario):
-        raise TypeError("build_automaton takes a CheckedScenario: load it with frontend.check_file, load_file or pipeline.load_scenario")
+        raise TypeError(
+            "build_automaton takes a CheckedScenario: load it with frontend.check_file, load_file or pipeline.load_scenario"
+        )
     scenario = checked.scenario
     if scenario.behavior is None:
-        raise error_at(scenario.location, f"scenario {scenario.name!r} has no `do` behavior", hint="add do: with what the actors must do")
+        raise error_at(
+            scenario.location,
+            f"scenario {scenario.name!r} has no `do` behavior",
+            hint="add do: with what the actors must do",
+        )
     env = checked.space.environment(values)
     builder = _Builder(checked, env)
     fragment = builder.translate(scenario.behavior)
@@ -113,7 +125,9 @@ class _Builder:
         if isinstance(behavior, model.Invocation):
             fragment, rates = _atomic(behavior, self.checked, self.counter, self.env)
             if behavior.until is not None:
-                fragment = self.end_on(fragment, behavior.until, behavior.label or _phase_name(behavior), behavior.location, rising=True)
+                fragment = self.end_on(
+                    fragment, behavior.until, behavior.label or _phase_name(behavior), behavior.location, rising=True
+                )
             duration = behavior.argument("duration")
         elif isinstance(behavior, model.Wait):
             return self.wait(behavior)
@@ -121,9 +135,17 @@ class _Builder:
             fragment = self.composition(behavior)
             duration = behavior.argument("duration")
         elif isinstance(behavior, model.Emit):
-            raise error_at(behavior.location, "emit is a member of a serial: it marks the instant between its neighbours", hint="put it in a serial, after the phase whose end it announces")
+            raise error_at(
+                behavior.location,
+                "emit is a member of a serial: it marks the instant between its neighbours",
+                hint="put it in a serial, after the phase whose end it announces",
+            )
         else:
-            raise error_at(behavior.location, "not supported yet by the automaton: call", hint="methods with side effects cannot be planned; remove the call")
+            raise error_at(
+                behavior.location,
+                "not supported yet by the automaton: call",
+                hint="methods with side effects cannot be planned; remove the call",
+            )
         name = getattr(behavior, "label", None) or _phase_name(behavior)
         if duration is not None:
             low, high = duration_interval(duration, self.env)
@@ -159,7 +181,11 @@ class _Builder:
             pending = []
             result = fragment if result is None else _serial(result, fragment, behavior.location)
         if result is None:
-            raise error_at(behavior.location, "a serial of only emit has no instant to emit at", hint="emit between two phases, or after one")
+            raise error_at(
+                behavior.location,
+                "a serial of only emit has no instant to emit at",
+                hint="emit between two phases, or after one",
+            )
         _emit([e for e in result.edges if e.target == result.final], pending)
         return result
 
@@ -169,7 +195,9 @@ class _Builder:
         fragment = _phase(next(self.counter), name, wait.label is not None, Variant(), frozenset())
         return self.end_on(fragment, wait.condition, name, wait.location)
 
-    def end_on(self, fragment: _Fragment, spec: model.EventSpecification, name: str, location, rising: bool = False) -> _Fragment:
+    def end_on(
+        self, fragment: _Fragment, spec: model.EventSpecification, name: str, location, rising: bool = False
+    ) -> _Fragment:
         """The fragment ending as ``spec`` says (``until``, ``wait``): where a condition holds, at an
         emitted event, or ``elapsed(t)`` after it began (a timed phase). ``rising``: an ``until``
         condition is an event that happens when the condition becomes true, so it does not hold
@@ -183,7 +211,9 @@ class _Builder:
         _end_on(fragment, guard, event, first)
         return fragment
 
-    def ending(self, spec: model.EventSpecification, seen: tuple[str, ...] = ()) -> tuple[Guard, str | None, bool, tuple[float, float] | None]:
+    def ending(
+        self, spec: model.EventSpecification, seen: tuple[str, ...] = ()
+    ) -> tuple[Guard, str | None, bool, tuple[float, float] | None]:
         """What ends a phase on ``spec``: a guard at its end, the event its end awaits, whether it
         ends at the event's first emission (no ``if`` condition), and how long it lasts when the
         event is ``elapsed(t)`` (counted from the phase's start)."""
@@ -194,14 +224,20 @@ class _Builder:
         declared = self.events.get(spec.name)
         if declared is None or spec.name in seen:
             what = "an undeclared event" if declared is None else "an event defined through itself"
-            raise error_at(spec.location, f"not supported yet by the automaton: @{spec.name} ({what})", hint="wait for an event the scenario declares and emits, or on a condition")
+            raise error_at(
+                spec.location,
+                f"not supported yet by the automaton: @{spec.name} ({what})",
+                hint="wait for an event the scenario declares and emits, or on a condition",
+            )
         extra = condition_guard(spec.condition, self.env, self.actors) if spec.condition is not None else TRUE
         if declared.specification is not None:  # event e is @other / is (condition) / is elapsed(t)
             guard, event, first, timed = self.ending(declared.specification, seen + (spec.name,))
             return conjunction([guard, extra]), event, first and spec.condition is None, timed
         return extra, spec.name, spec.condition is None, None
 
-    def timed(self, fragment: _Fragment, name: str, low: float, high: float, source, rates: tuple[PhaseBound, ...] = ()) -> _Fragment:
+    def timed(
+        self, fragment: _Fragment, name: str, low: float, high: float, source, rates: tuple[PhaseBound, ...] = ()
+    ) -> _Fragment:
         """Mark the fragment's first and last instants as one timed phase lasting low..high seconds
         (with the bounds ``rates`` over its two ends)."""
         phase = next(self.counter)
@@ -221,7 +257,9 @@ def _phase_name(behavior: model.Behavior) -> str:
     return getattr(behavior, "operator", "phase")
 
 
-def _atomic(invocation: model.Invocation, checked: CheckedScenario, counter, env: dict) -> tuple[_Fragment, tuple[PhaseBound, ...]]:
+def _atomic(
+    invocation: model.Invocation, checked: CheckedScenario, counter, env: dict
+) -> tuple[_Fragment, tuple[PhaseBound, ...]]:
     """The phase's fragment, and what it asks of its start and end together."""
     phase = phase_guards(invocation, checked.registry, checked.lanes, env)
     labelled = invocation.label is not None
@@ -297,9 +335,12 @@ MAX_TRANSITIONS = 20_000
 
 def _check_size(transitions: int, location, composition: str) -> None:
     if transitions > MAX_TRANSITIONS:
-        raise error_at(location, f"this {composition}'s automaton grows past {MAX_TRANSITIONS:,} transitions: its members' choices multiply "
-                       "(a variant per starting lane for keep_lane() and change_lane(), per speed band for keep_speed())",
-                       hint="give the lanes the members start in (lane(k, at: start)), narrow the road (path_max_lanes), or split the parallel into phases")
+        raise error_at(
+            location,
+            f"this {composition}'s automaton grows past {MAX_TRANSITIONS:,} transitions: its members' choices multiply "
+            "(a variant per starting lane for keep_lane() and change_lane(), per speed band for keep_speed())",
+            hint="give the lanes the members start in (lane(k, at: start)), narrow the road (path_max_lanes), or split the parallel into phases",
+        )
 
 
 def _parallel(children: list[_Fragment], location=None) -> _Fragment:
@@ -322,13 +363,17 @@ def _parallel(children: list[_Fragment], location=None) -> _Fragment:
             ending.append([m for m in moves if (m.target if m is not None else key) == child.final])
             going_on.append([m for m in moves if (m.target if m is not None else key) != child.final])
         for options in (going_on, ending):
-            _check_size(math.prod(len(o) for o in options) - 1, location, "parallel")  # an upper bound of the edges it makes, before making them
+            _check_size(
+                math.prod(len(o) for o in options) - 1, location, "parallel"
+            )  # an upper bound of the edges it makes, before making them
         for combination in itertools.chain(itertools.product(*going_on), itertools.product(*ending)):
             if all(m is None for m in combination):
                 continue
             target = tuple(m.target if m is not None else key for m, key in zip(combination, current))
             moving = [m for m in combination if m is not None]
-            staying = frozenset().union(*(c.listening.get(k, frozenset()) for m, c, k in zip(combination, children, current) if m is None))
+            staying = frozenset().union(
+                *(c.listening.get(k, frozenset()) for m, c, k in zip(combination, children, current) if m is None)
+            )
             edge = _simultaneous(current, moving, target, staying)
             if edge.deaf & edge.emits:
                 continue  # a member waiting for the event would miss it
@@ -375,7 +420,9 @@ def _one_of(children: list[_Fragment], uid: int) -> _Fragment:
     return _Fragment(initial, final, edges, names, drivers, invariants, listening)
 
 
-def _finish(fragment: _Fragment, actors: tuple[str, ...], scenario: model.Scenario, timings: dict[int, Timing], lanes: int) -> SymbolicAutomaton:
+def _finish(
+    fragment: _Fragment, actors: tuple[str, ...], scenario: model.Scenario, timings: dict[int, Timing], lanes: int
+) -> SymbolicAutomaton:
     # an edge still awaiting an event here awaits one that no member emits at that instant
     unmatched = sorted({event for e in fragment.edges for event in e.awaits})
     fragment = replace(fragment, edges=[e for e in fragment.edges if not e.awaits])
@@ -392,7 +439,9 @@ def _finish(fragment: _Fragment, actors: tuple[str, ...], scenario: model.Scenar
         hint = "check that the members of each parallel can end together"
         if unmatched:
             hint += f"; a wait for {', '.join('@' + e for e in unmatched)} ends only while another member emits it (an emit before the wait began is missed)"
-        raise error_at(scenario.location, f"scenario {scenario.name!r} can never finish: its phases cannot all end", hint=hint)
+        raise error_at(
+            scenario.location, f"scenario {scenario.name!r} can never finish: its phases cannot all end", hint=hint
+        )
     order = _bfs_order(fragment, useful, successors)
     ids = {key: index for index, key in enumerate(order)}
     used: dict[str, int] = {}
@@ -407,15 +456,31 @@ def _finish(fragment: _Fragment, actors: tuple[str, ...], scenario: model.Scenar
         used[name] = used.get(name, 0) + 1
         if used[name] > 1:
             name = f"{name}#{used[name]}"
-        locations.append(Location(ids[key], name, fragment.drivers.get(key, frozenset()), fragment.invariants.get(key, TRUE)))
+        locations.append(
+            Location(ids[key], name, fragment.drivers.get(key, frozenset()), fragment.invariants.get(key, TRUE))
+        )
     transitions = []
     for edge in fragment.edges:
         if edge.source in useful and edge.target in useful:
-            transitions.append(Transition(len(transitions), ids[edge.source], ids[edge.target], edge.guard, edge.events, edge.starts, edge.ends))
+            transitions.append(
+                Transition(
+                    len(transitions),
+                    ids[edge.source],
+                    ids[edge.target],
+                    edge.guard,
+                    edge.events,
+                    edge.starts,
+                    edge.ends,
+                )
+            )
     transitions.sort(key=lambda t: (t.source, t.target))
-    transitions = [Transition(i, t.source, t.target, t.guard, t.events, t.starts, t.ends) for i, t in enumerate(transitions)]
+    transitions = [
+        Transition(i, t.source, t.target, t.guard, t.events, t.starts, t.ends) for i, t in enumerate(transitions)
+    ]
     stationary = frozenset(a.name for a in scenario.actors if a.stationary)
-    return SymbolicAutomaton(locations, transitions, ids[fragment.initial], ids[fragment.final], actors, stationary, timings, lanes)
+    return SymbolicAutomaton(
+        locations, transitions, ids[fragment.initial], ids[fragment.final], actors, stationary, timings, lanes
+    )
 
 
 def _closure(start: Key, neighbours) -> set[Key]:

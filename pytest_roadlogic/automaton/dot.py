@@ -15,7 +15,12 @@ def _quote(text: str) -> str:
 
 
 def to_dot(automaton: SymbolicAutomaton, title: str = "") -> str:
-    lines = ["digraph automaton {", "  rankdir=LR;", '  node [shape=circle, fontname="Helvetica"];', '  edge [fontname="Helvetica", fontsize=10];']
+    lines = [
+        "digraph automaton {",
+        "  rankdir=LR;",
+        '  node [shape=circle, fontname="Helvetica"];',
+        '  edge [fontname="Helvetica", fontsize=10];',
+    ]
     if title:
         lines.append(f"  label={_quote(title)}; labelloc=t;")
     lines.append('  start [shape=point, label=""];')

@@ -23,8 +23,9 @@ which one instant does not have.
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass
-from typing import Mapping, Protocol
+from typing import Protocol
 
 import numpy as np
 
@@ -106,7 +107,7 @@ class Guard:
         """``robustness`` at every sample of a trace at once (``columns``: actor -> column -> array)."""
         raise NotImplementedError
 
-    def atoms(self) -> tuple["Bound", ...]:
+    def atoms(self) -> tuple[Bound, ...]:
         """The bounds this guard is built from, in order."""
         raise NotImplementedError
 
@@ -114,7 +115,7 @@ class Guard:
     def is_true(self) -> bool:
         return False
 
-    def __and__(self, other: "Guard") -> "Guard":
+    def __and__(self, other: Guard) -> Guard:
         return conjunction([self, other])
 
 
@@ -150,7 +151,7 @@ class Bound(Guard):
         slack = 0.5 if self.term.quantity == LANE else 0.0
         return min(value - (self.low - slack), (self.high + slack) - value)
 
-    def atoms(self) -> tuple["Bound", ...]:
+    def atoms(self) -> tuple[Bound, ...]:
         return (self,)
 
     def __str__(self) -> str:
@@ -268,7 +269,9 @@ def _num(value: float) -> str:
 def _normalised(bound: Bound) -> tuple[tuple[str, str, str | None], float, float]:
     """The bound over a canonical term: differences always as x(first) - x(second) by name."""
     term = bound.term
-    if term.reference is not None and term.reference < term.actor and term.quantity != HEADWAY:  # h(a, b) is no -h(b, a)
+    if (
+        term.reference is not None and term.reference < term.actor and term.quantity != HEADWAY
+    ):  # h(a, b) is no -h(b, a)
         return (term.quantity, term.reference, term.actor), -bound.high, -bound.low
     return (term.quantity, term.actor, term.reference), bound.low, bound.high
 

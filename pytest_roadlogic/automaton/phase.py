@@ -52,7 +52,9 @@ class Phase:
     def branch(self, options: list[Variant]) -> None:
         """Multiply the variants by ``options`` (each existing variant combined with each option)."""
         self.variants = [
-            Variant(conjunction([v.start, o.start]), conjunction([v.end, o.end]), conjunction([v.invariant, o.invariant]))
+            Variant(
+                conjunction([v.start, o.start]), conjunction([v.end, o.end]), conjunction([v.invariant, o.invariant])
+            )
             for v in self.variants
             for o in options
         ]

@@ -26,7 +26,7 @@ if TYPE_CHECKING:
     from ..constructs import Registry
 
 
-def phase_guards(invocation: model.Invocation, registry: "Registry", lanes: int, env: dict) -> Phase:
+def phase_guards(invocation: model.Invocation, registry: Registry, lanes: int, env: dict) -> Phase:
     """The guards of one atomic phase; ``env`` gives the parameters' values or ranges."""
     actor = _actor(invocation)
     action = registry.action(invocation.action)
@@ -38,14 +38,17 @@ def phase_guards(invocation: model.Invocation, registry: "Registry", lanes: int,
             hint=f"this version translates {', '.join(a + '()' for a in translated)}",
         )
     if invocation.constraints:
-        raise error_at(invocation.constraints[0].location, "not supported yet by the automaton: keep() on an invocation")
+        raise error_at(
+            invocation.constraints[0].location, "not supported yet by the automaton: keep() on an invocation"
+        )
     phase = Phase(actor, drives=action.moves)
     action.apply(invocation, actor, lanes, env, phase)
     for modifier in invocation.modifiers:
         construct = registry.modifier(modifier.name)
         if construct is None or not construct.translated:
             raise error_at(
-                modifier.location, f"not supported yet by the automaton: modifier {modifier.name!r}",
+                modifier.location,
+                f"not supported yet by the automaton: modifier {modifier.name!r}",
                 hint=f"supported: {', '.join(registry.translated('modifier'))}",
             )
         construct.apply(modifier, actor, lanes, env, phase)
@@ -54,7 +57,9 @@ def phase_guards(invocation: model.Invocation, registry: "Registry", lanes: int,
 
 def _actor(invocation: model.Invocation) -> str:
     if invocation.actor is None:  # the checker reports this; a scenario with errors is no input here
-        raise ValueError(f"{invocation.location}: build_automaton needs a scenario the checker accepted (an invocation without an actor)")
+        raise ValueError(
+            f"{invocation.location}: build_automaton needs a scenario the checker accepted (an invocation without an actor)"
+        )
     return invocation.actor
 
 
@@ -69,8 +74,15 @@ def duration_interval(argument: model.Argument, env: dict) -> tuple[float, float
 
 def check_behavior_arguments(composition: model.Composition) -> None:
     for argument in composition.arguments:
-        if argument.name == "overlap" and isinstance(argument.value, model.Name) and argument.value.name in ("start", "equal"):
+        if (
+            argument.name == "overlap"
+            and isinstance(argument.value, model.Name)
+            and argument.value.name in ("start", "equal")
+        ):
             continue  # members start (and here also end) together: what the product builds
         if argument.name == "duration":
             continue  # a timed phase, handled by the construction
-        raise error_at(argument.location, f"not supported yet by the automaton: {argument.name or 'arguments'} on {composition.operator}")
+        raise error_at(
+            argument.location,
+            f"not supported yet by the automaton: {argument.name or 'arguments'} on {composition.operator}",
+        )

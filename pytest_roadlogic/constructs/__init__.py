@@ -12,9 +12,30 @@ from .base import Action, AnchoredModifier, CheckContext, Construct, Modifier, R
 from .lanes import LANE_CONVENTION
 
 # in the order hints list them ("known actions: drive, remain_stationary, ...")
-STANDARD = Registry((*motion.CONSTRUCTS, *lanes.CONSTRUCTS, *speed.CONSTRUCTS, *position.CONSTRUCTS, *gaps.CONSTRUCTS, *pending.CONSTRUCTS))
+STANDARD = Registry(
+    (
+        *motion.CONSTRUCTS,
+        *lanes.CONSTRUCTS,
+        *speed.CONSTRUCTS,
+        *position.CONSTRUCTS,
+        *gaps.CONSTRUCTS,
+        *pending.CONSTRUCTS,
+    )
+)
 CARLA = STANDARD.extended(*carla.CONSTRUCTS, dialect=carla.DIALECT)
 # by their names, which settings.DIALECTS lists (the options' values)
 DIALECTS = {STANDARD.dialect: STANDARD, CARLA.dialect: CARLA}
 
-__all__ = ["Action", "AnchoredModifier", "CARLA", "CheckContext", "Construct", "DIALECTS", "LANE_CONVENTION", "Modifier", "Registry", "STANDARD", "Use"]
+__all__ = [
+    "Action",
+    "AnchoredModifier",
+    "CARLA",
+    "CheckContext",
+    "Construct",
+    "DIALECTS",
+    "LANE_CONVENTION",
+    "Modifier",
+    "Registry",
+    "STANDARD",
+    "Use",
+]

@@ -191,7 +191,7 @@ class Registry:
     def modifier(self, name: str) -> Modifier | None:
         return self.modifiers.get(name)
 
-    def extended(self, *constructs: Construct, dialect: str | None = None) -> "Registry":
+    def extended(self, *constructs: Construct, dialect: str | None = None) -> Registry:
         """A copy with ``constructs`` added (replacing any of the same kind and name)."""
         copy = Registry([*self.actions.values(), *self.modifiers.values()], dialect or self.dialect)
         for construct in constructs:

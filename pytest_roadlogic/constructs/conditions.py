@@ -30,11 +30,24 @@ automaton translates: the two cannot disagree about what is supported.
 from __future__ import annotations
 
 import math
-from collections.abc import Collection
+from collections.abc import Callable, Collection
 from dataclasses import dataclass
-from typing import Callable
 
-from ..automaton.guards import HEADWAY, LANE, POSITION, SPEED as SPEED_Q, TRAVELED, Bound, Guard, Not, Or, Term, conjunction
+from ..automaton.guards import (
+    HEADWAY,
+    LANE,
+    POSITION,
+    TRAVELED,
+    Bound,
+    Guard,
+    Not,
+    Or,
+    Term,
+    conjunction,
+)
+from ..automaton.guards import (
+    SPEED as SPEED_Q,
+)
 from ..frontend import model
 from ..frontend.errors import error_at
 from ..frontend.library import refused_call
@@ -86,14 +99,22 @@ def condition_guard(condition: model.Expression, env: dict, actors: Collection[s
             left, right, operator = right, left, _MIRROR[operator]
             found = _observable(left, actors)
         if found is None:
-            raise error_at(condition.location, "a condition compares an actor's observable with a value", f"observables: {usage()}; {_EXAMPLE}")
+            raise error_at(
+                condition.location,
+                "a condition compares an actor's observable with a value",
+                f"observables: {usage()}; {_EXAMPLE}",
+            )
         observable, term = found
         try:
             value = argument_interval(model.Argument(None, right, right.location), env)
         except EvaluationError as error:
             raise error_at(error.location, error.message, error.hint) from None
         if value.dimension != observable.dimension:
-            raise error_at(right.location, f"{observable.name} is {describe(observable.dimension)}, compared here with {describe(value.dimension)}", "write the value with a unit of the same kind")
+            raise error_at(
+                right.location,
+                f"{observable.name} is {describe(observable.dimension)}, compared here with {describe(value.dimension)}",
+                "write the value with a unit of the same kind",
+            )
         low = value.low if operator in (">", ">=", "==") else -math.inf
         high = value.high if operator in ("<", "<=", "==") else math.inf
         if operator == "==" and observable.dimension == SPEED:
@@ -101,12 +122,22 @@ def condition_guard(condition: model.Expression, env: dict, actors: Collection[s
         return Bound(term, low, high, condition.location)
     refused = refused_call(condition)
     if refused is not None:
-        raise error_at(condition.location, f"not supported: {refused}", "compare an observable with a value, or wait for an event")
+        raise error_at(
+            condition.location, f"not supported: {refused}", "compare an observable with a value, or wait for an event"
+        )
     if isinstance(condition, model.Call) and condition.function == "elapsed":
-        raise error_at(condition.location, "elapsed() is the whole condition of a wait", "write wait elapsed(3s) as its own member of a serial")
+        raise error_at(
+            condition.location,
+            "elapsed() is the whole condition of a wait",
+            "write wait elapsed(3s) as its own member of a serial",
+        )
     location = getattr(condition, "location", None)
     if isinstance(condition, model.Call) and "." not in condition.function:
-        raise error_at(location, f"unknown function {condition.function!r}", f"a wait takes elapsed(t), an event (@e) or a comparison: {_EXAMPLE}")
+        raise error_at(
+            location,
+            f"unknown function {condition.function!r}",
+            f"a wait takes elapsed(t), an event (@e) or a comparison: {_EXAMPLE}",
+        )
     raise error_at(location, "not a condition this tool can read", f"observables: {usage()}; {_EXAMPLE}")
 
 
@@ -130,10 +161,14 @@ def _observable(expression: model.Expression, actors: Collection[str]) -> tuple[
     reference = None
     for argument in expression.arguments:
         if argument.name not in (None, "reference") or not isinstance(argument.value, model.Name):
-            raise error_at(argument.location, f"{method}() takes reference: <actor>", f"e.g. {actor}.{method}(reference: lead)")
+            raise error_at(
+                argument.location, f"{method}() takes reference: <actor>", f"e.g. {actor}.{method}(reference: lead)"
+            )
         reference = argument.value.name
         if reference not in actors:
             raise error_at(argument.location, f"unknown actor {reference!r}", f"actors: {', '.join(sorted(actors))}")
     if observable.needs_reference and reference is None:
-        raise error_at(expression.location, f"{method}() needs reference: <actor>", f"e.g. {actor}.{method}(reference: lead)")
+        raise error_at(
+            expression.location, f"{method}() needs reference: <actor>", f"e.g. {actor}.{method}(reference: lead)"
+        )
     return observable, observable.term(actor, reference)

@@ -35,9 +35,16 @@ class GapAction(Action):
 
     def check(self, binding: Binding, context: CheckContext) -> None:
         direction = binding["direction"]
-        if direction is not None and isinstance(direction.value, model.Name) and direction.value.name.rpartition(".")[2] == "lateral":
-            context.error(direction.location, f"not supported: {self.name}(direction: lateral)",
-                          "a lateral gap needs lateral positions, which the plan does not have: use lane(side_of: ...)")
+        if (
+            direction is not None
+            and isinstance(direction.value, model.Name)
+            and direction.value.name.rpartition(".")[2] == "lateral"
+        ):
+            context.error(
+                direction.location,
+                f"not supported: {self.name}(direction: lateral)",
+                "a lateral gap needs lateral positions, which the plan does not have: use lane(side_of: ...)",
+            )
 
     def held_throughout(self, binding: Binding) -> bool:
         return self.anchor == "all"
@@ -54,11 +61,23 @@ class GapAction(Action):
 def _gap_action(name: str, argument: str, gap: Gap, what: str, anchor: str, description: str) -> GapAction:
     signature = Signature(
         name,
-        (Parameter(argument, gap.dimension, positional=True), Parameter("direction", "enum:direction"), Parameter("reference", "actor"), DURATION),
+        (
+            Parameter(argument, gap.dimension, positional=True),
+            Parameter("direction", "enum:direction"),
+            Parameter("reference", "actor"),
+            DURATION,
+        ),
         required=((argument,), ("reference",)),
         description=description,
     )
-    attributes = {"signature": signature, "argument": argument, "gap": gap, "what": what, "anchor": anchor, "__doc__": f"``{name}()``: {description}"}
+    attributes = {
+        "signature": signature,
+        "argument": argument,
+        "gap": gap,
+        "what": what,
+        "anchor": anchor,
+        "__doc__": f"``{name}()``: {description}",
+    }
     return type(name, (GapAction,), attributes)()
 
 
@@ -66,6 +85,20 @@ SPACE, TIME_GAP = GAPS["distance"], GAPS["time"]
 CONSTRUCTS = (
     _gap_action("keep_space_gap", "gap", SPACE, "a space gap", "all", "follow the reference at a space gap throughout"),
     _gap_action("keep_time_gap", "gap", TIME_GAP, "a time gap", "all", "follow the reference at a time gap throughout"),
-    _gap_action("change_space_gap", "target", SPACE, "a space gap", "end", "reach a space gap to the reference by the phase's end"),
-    _gap_action("change_time_gap", "target", TIME_GAP, "a time gap", "end", "reach a time gap to the reference by the phase's end"),
+    _gap_action(
+        "change_space_gap",
+        "target",
+        SPACE,
+        "a space gap",
+        "end",
+        "reach a space gap to the reference by the phase's end",
+    ),
+    _gap_action(
+        "change_time_gap",
+        "target",
+        TIME_GAP,
+        "a time gap",
+        "end",
+        "reach a time gap to the reference by the phase's end",
+    ),
 )

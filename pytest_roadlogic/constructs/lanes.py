@@ -17,7 +17,9 @@ from ..frontend.errors import SourceLocation, error_at
 from ..frontend.library import AT, DURATION, RATE, Binding, Parameter, Signature
 from .base import Action, AnchoredModifier, CheckContext, Modifier, Use
 
-LANE_CONVENTION = "lanes are numbered from 1 on the right (lane(1) is the rightmost); lane(k, from: left) counts from the left"
+LANE_CONVENTION = (
+    "lanes are numbered from 1 on the right (lane(1) is the rightmost); lane(k, from: left) counts from the left"
+)
 RELATIVE = ("same_as", "left_of", "right_of", "side_of")
 
 
@@ -61,7 +63,11 @@ class Lane(AnchoredModifier):
         value = context.evaluate(number)
         if value is not None and value.dimension is None and (value.low < 1 or value.high > context.lanes):
             shown = f"{value.low:g}" if value.is_point else str(value)
-            context.error(number.value.location, f"lane {shown} is outside the road's {context.lanes} lanes{context.lanes_origin}", self.convention)
+            context.error(
+                number.value.location,
+                f"lane {shown} is outside the road's {context.lanes} lanes{context.lanes_origin}",
+                self.convention,
+            )
 
     def lanes_needed(self, binding, highest) -> int:
         relative = any(binding[name] is not None for name in ("left_of", "right_of", "side_of"))
@@ -76,7 +82,9 @@ class Lane(AnchoredModifier):
             low, high = {"same_as": (0, 0), "left_of": (-math.inf, -1), "right_of": (1, math.inf)}[keyword]
             return Bound(Term(LANE, use.actor, other), low, high, use.location)
         if use.argument("lane") is None:
-            raise error_at(use.location, "lane() needs a lane number or same_as:/left_of:/right_of:", hint=self.convention)
+            raise error_at(
+                use.location, "lane() needs a lane number or same_as:/left_of:/right_of:", hint=self.convention
+            )
         value = use.interval("lane")
         if value.dimension is not None or not float(value.low).is_integer() or not float(value.high).is_integer():
             raise error_at(use.argument("lane").location, "a lane number must be a whole number", hint=self.convention)
@@ -98,7 +106,9 @@ class KeepLane(Modifier):
 class FollowLane(Action):
     """``follow_lane()``: drive on in the lane the phase starts in."""
 
-    signature = Signature("follow_lane", (DURATION, Parameter("offset", "length", supported=False)), description="stay in the lane")
+    signature = Signature(
+        "follow_lane", (DURATION, Parameter("offset", "length", supported=False)), description="stay in the lane"
+    )
 
     def translate(self, use: Use, phase: Phase) -> None:
         phase.branch(keep_lane_variants(use.actor, use.lanes, use.location))
@@ -114,9 +124,15 @@ class _LaneChange:
         if count is None:
             return
         value = context.evaluate(count)
-        if value is not None and value.dimension is None and value.low >= 0 and (value.low < 1 or value.high > context.lanes - 1):
+        if (
+            value is not None
+            and value.dimension is None
+            and value.low >= 0
+            and (value.low < 1 or value.high > context.lanes - 1)
+        ):
             context.error(
-                count.value.location, f"a change of {value} lanes is impossible on a road of {context.lanes} lanes{context.lanes_origin}",
+                count.value.location,
+                f"a change of {value} lanes is impossible on a road of {context.lanes} lanes{context.lanes_origin}",
                 f"num_of_lanes must be between 1 and {context.lanes - 1}",
             )
 
@@ -128,7 +144,10 @@ class _LaneChange:
         if use.argument("num_of_lanes") is not None:
             value = use.interval("num_of_lanes")
             if not float(value.low).is_integer() or not float(value.high).is_integer():
-                raise error_at(use.argument("num_of_lanes").location, "the number of lanes to change must be a whole number or a range of them, e.g. [1..2]")
+                raise error_at(
+                    use.argument("num_of_lanes").location,
+                    "the number of lanes to change must be a whole number or a range of them, e.g. [1..2]",
+                )
             counts = range(max(1, int(value.low)), int(value.high) + 1)
         side = use.name("side")
         reference = use.name("reference")
@@ -142,7 +161,10 @@ class _LaneChange:
                 for lane in range(use.lanes):
                     if 0 <= lane + step < use.lanes:
                         variants.append(
-                            Variant(start=Bound(Term(LANE, use.actor), lane, lane, use.location), end=Bound(Term(LANE, use.actor), lane + step, lane + step, use.location))
+                            Variant(
+                                start=Bound(Term(LANE, use.actor), lane, lane, use.location),
+                                end=Bound(Term(LANE, use.actor), lane + step, lane + step, use.location),
+                            )
                         )
         if not variants:
             shown = f"{counts[0]}" if len(counts) == 1 else f"{counts[0]} to {counts[-1]}"
@@ -153,14 +175,21 @@ class _LaneChange:
 class ChangeLaneAction(_LaneChange, Action):
     signature = Signature(
         "change_lane",
-        (Parameter("num_of_lanes", "uint", positional=True), Parameter("side", "enum:side", positional=True), Parameter("reference", "actor"), DURATION, *RATE),
+        (
+            Parameter("num_of_lanes", "uint", positional=True),
+            Parameter("side", "enum:side", positional=True),
+            Parameter("reference", "actor"),
+            DURATION,
+            *RATE,
+        ),
         description="move num_of_lanes lanes (default 1) to the side",
     )
 
 
 class ChangeLaneModifier(_LaneChange, Modifier):
     signature = Signature(
-        "change_lane", (Parameter("num_of_lanes", "uint", positional=True), Parameter("side", "enum:side", positional=True)),
+        "change_lane",
+        (Parameter("num_of_lanes", "uint", positional=True), Parameter("side", "enum:side", positional=True)),
         description="change lanes during the phase",
     )
 

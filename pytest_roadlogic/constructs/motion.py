@@ -17,7 +17,9 @@ class Drive(Action):
     """``drive()``: the actor drives forward for the phase; its modifiers say how."""
 
     # ``drive(path)``: CARLA suites name the road; there is one, so it changes nothing
-    signature = Signature("drive", (Parameter("path", "road", positional=True), DURATION), description="drive forward for the phase")
+    signature = Signature(
+        "drive", (Parameter("path", "road", positional=True), DURATION), description="drive forward for the phase"
+    )
 
     def translate(self, use: Use, phase: Phase) -> None:
         pass  # forward progress is what a moving phase means (Phase.drives)
@@ -44,12 +46,21 @@ class Distance(Modifier):
     value is read +- the position tolerance. Like a duration, a range of it is left open by the
     scenario (a logical parameter), not a bound held at every instant."""
 
-    signature = Signature("distance", (Parameter("distance", "length", positional=True),), required=(("distance",),), description="the distance travelled in the phase")
+    signature = Signature(
+        "distance",
+        (Parameter("distance", "length", positional=True),),
+        required=(("distance",),),
+        description="the distance travelled in the phase",
+    )
 
     def check(self, binding: Binding, context: CheckContext) -> None:
         value = context.evaluate(binding["distance"]) if binding["distance"] is not None else None
         if value is not None and value.low < 0:
-            context.error(binding["distance"].value.location, "a distance travelled must not be negative", "vehicles drive forward; e.g. distance([50..80]m)")
+            context.error(
+                binding["distance"].value.location,
+                "a distance travelled must not be negative",
+                "vehicles drive forward; e.g. distance([50..80]m)",
+            )
 
     def translate(self, use: Use, phase: Phase) -> None:
         low, high = widened(*use.range("distance", LENGTH, "a length such as 50m or [50..80]m"), POSITION_TOLERANCE)
@@ -59,7 +70,12 @@ class Distance(Modifier):
 class Along(Modifier):
     """``along(path)``: the motion follows the road; there is one straight road, so it holds always."""
 
-    signature = Signature("along", (Parameter("route", "road", positional=True),), required=(("route",),), description="follow the road (there is one)")
+    signature = Signature(
+        "along",
+        (Parameter("route", "road", positional=True),),
+        required=(("route",),),
+        description="follow the road (there is one)",
+    )
 
     def translate(self, use: Use, phase: Phase) -> None:
         pass
@@ -69,12 +85,18 @@ class AvoidCollisions(Modifier):
     """``avoid_collisions(true)``: the collision rule, which this tool applies to every run anyway;
     ``avoid_collisions(false)`` (a crash asked for) is refused: no plan here ever collides."""
 
-    signature = Signature("avoid_collisions", (Parameter("avoid", "bool", positional=True),), description="no collisions (always applied)")
+    signature = Signature(
+        "avoid_collisions", (Parameter("avoid", "bool", positional=True),), description="no collisions (always applied)"
+    )
 
     def check(self, binding: Binding, context: CheckContext) -> None:
         given = binding["avoid"]
         if given is not None and isinstance(given.value, model.Literal) and given.value.value is False:
-            context.error(given.location, "not supported: avoid_collisions(false)", "this tool never plans a collision: every run keeps the vehicles apart")
+            context.error(
+                given.location,
+                "not supported: avoid_collisions(false)",
+                "this tool never plans a collision: every run keeps the vehicles apart",
+            )
 
     def translate(self, use: Use, phase: Phase) -> None:
         pass

@@ -12,9 +12,24 @@ from .base import Modifier
 
 
 def _pending_modifier(signature: Signature) -> Modifier:
-    return type(signature.name, (Modifier,), {"signature": signature, "translated": False, "__doc__": f"``{signature.name}()`` (tier 2)"})()
+    return type(
+        signature.name,
+        (Modifier,),
+        {"signature": signature, "translated": False, "__doc__": f"``{signature.name}()`` (tier 2)"},
+    )()
 
 
 CONSTRUCTS = (
-    _pending_modifier(Signature("lateral", (Parameter("distance", "length", positional=True), Parameter("side_of", "actor"), Parameter("side", "enum:side"), AT), tier=2)),
+    _pending_modifier(
+        Signature(
+            "lateral",
+            (
+                Parameter("distance", "length", positional=True),
+                Parameter("side_of", "actor"),
+                Parameter("side", "enum:side"),
+                AT,
+            ),
+            tier=2,
+        )
+    ),
 )

@@ -21,7 +21,13 @@ class Position(AnchoredModifier):
 
     signature = Signature(
         "position",
-        (Parameter("distance", "length", positional=True), Parameter("time", "time"), Parameter("ahead_of", "actor"), Parameter("behind", "actor"), AT),
+        (
+            Parameter("distance", "length", positional=True),
+            Parameter("time", "time"),
+            Parameter("ahead_of", "actor"),
+            Parameter("behind", "actor"),
+            AT,
+        ),
         exclusive=(("ahead_of", "behind"), ("distance", "time")),
         required=(("ahead_of", "behind"), ("distance", "time")),
         description="longitudinal gap to another actor",
@@ -39,7 +45,9 @@ class Position(AnchoredModifier):
             raise error_at(use.location, "position() needs a distance, e.g. position([10..20]m, behind: v2)")
         keyword, other = relation
         ahead, behind = (other, use.actor) if keyword == "behind" else (use.actor, other)
-        return gap_bound(use, argument, GAPS[argument], ahead, behind, "use behind: instead of ahead_of: (or the reverse)")
+        return gap_bound(
+            use, argument, GAPS[argument], ahead, behind, "use behind: instead of ahead_of: (or the reverse)"
+        )
 
 
 @dataclass(frozen=True)
@@ -69,5 +77,6 @@ def gap_bound(use: Use, argument: str, gap: Gap, ahead: str, behind: str, hint: 
         raise error_at(use.argument(argument).location, f"{what or gap.what} must not be negative", hint=hint)
     low, high = widened(low, high, gap.tolerance)
     return Bound(Term(gap.quantity, ahead, behind), max(0.0, low), high, use.location)
+
 
 CONSTRUCTS = (Position(),)

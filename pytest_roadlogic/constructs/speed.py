@@ -7,7 +7,8 @@ and stays within a band of it, so it varies by 1.5 m/s at most).
 
 from __future__ import annotations
 
-from ..automaton.guards import SPEED as SPEED_Q, Bound, Guard, Term
+from ..automaton.guards import SPEED as SPEED_Q
+from ..automaton.guards import Bound, Guard, Term
 from ..automaton.model import MeanAcceleration
 from ..automaton.phase import Phase, Variant
 from ..frontend import model
@@ -38,7 +39,11 @@ def refuse_negative_speed(binding: Binding, argument: str, context: CheckContext
     given = binding[argument]
     value = context.evaluate(given) if given is not None else None
     if value is not None and value.low < 0:
-        hint = "a relative speed is by how much: swap faster_than and slower_than" if relative else "vehicles drive forward; give a speed from 0 up, e.g. [20..40]kph"
+        hint = (
+            "a relative speed is by how much: swap faster_than and slower_than"
+            if relative
+            else "vehicles drive forward; give a speed from 0 up, e.g. [20..40]kph"
+        )
         context.error(given.value.location, "a speed must not be negative", hint)
 
 
@@ -99,16 +104,29 @@ class ChangeSpeed(Action):
 
     signature = Signature(
         "change_speed",
-        (Parameter("target", "speed", positional=True), DURATION, Parameter("rate_profile", "enum:rate_profile"), Parameter("rate_peak", "acceleration")),
-        required=(("target",),), description="reach the target speed",
+        (
+            Parameter("target", "speed", positional=True),
+            DURATION,
+            Parameter("rate_profile", "enum:rate_profile"),
+            Parameter("rate_peak", "acceleration"),
+        ),
+        required=(("target",),),
+        description="reach the target speed",
     )
 
     def check(self, binding: Binding, context: CheckContext) -> None:
         refuse_negative_speed(binding, "target", context)
         profile = binding["rate_profile"]
-        if profile is not None and isinstance(profile.value, model.Name) and profile.value.name.rpartition(".")[2] in ("constant", "asap"):
-            context.error(profile.location, f"not supported: rate_profile: {profile.value.name.rpartition('.')[2]} (the speed's shape inside the phase)",
-                          "the plan fixes the speed at the phase's ends: bound the mean rate with rate_peak, or drop rate_profile (smooth is what every run does)")
+        if (
+            profile is not None
+            and isinstance(profile.value, model.Name)
+            and profile.value.name.rpartition(".")[2] in ("constant", "asap")
+        ):
+            context.error(
+                profile.location,
+                f"not supported: rate_profile: {profile.value.name.rpartition('.')[2]} (the speed's shape inside the phase)",
+                "the plan fixes the speed at the phase's ends: bound the mean rate with rate_peak, or drop rate_profile (smooth is what every run does)",
+            )
         peak = binding["rate_peak"]
         value = context.evaluate(peak) if peak is not None else None
         if value is not None and value.low <= 0:
@@ -129,7 +147,12 @@ class AssignSpeed(Action):
     The standard's assignment is instantaneous; a simulated car cannot jump to a speed, so the plan
     reaches it by the phase's start, and the monitor checks it there."""
 
-    signature = Signature("assign_speed", (Parameter("target", "speed", positional=True), DURATION), required=(("target",),), description="the speed at the phase's start")
+    signature = Signature(
+        "assign_speed",
+        (Parameter("target", "speed", positional=True), DURATION),
+        required=(("target",),),
+        description="the speed at the phase's start",
+    )
 
     def check(self, binding: Binding, context: CheckContext) -> None:
         refuse_negative_speed(binding, "target", context)
@@ -145,21 +168,29 @@ class Acceleration(Modifier):
     A range held over the phase is a bound, not a sampled parameter."""
 
     signature = Signature(
-        "acceleration", (Parameter("acceleration", "acceleration", positional=True), AT),
-        required=(("acceleration",),), description="the mean acceleration over the phase",
+        "acceleration",
+        (Parameter("acceleration", "acceleration", positional=True), AT),
+        required=(("acceleration",),),
+        description="the mean acceleration over the phase",
     )
 
     def check(self, binding: Binding, context: CheckContext) -> None:
         at = binding["at"]
         if at is not None and isinstance(at.value, model.Name) and at.value.name in ("start", "end"):
-            context.error(at.location, f"not supported: acceleration at: {at.value.name} (the acceleration of one instant)",
-                          "drop at: the phase's mean acceleration is what this tool plans and checks")
+            context.error(
+                at.location,
+                f"not supported: acceleration at: {at.value.name} (the acceleration of one instant)",
+                "drop at: the phase's mean acceleration is what this tool plans and checks",
+            )
 
     def held_throughout(self, binding: Binding) -> bool:
         return True
 
     def translate(self, use: Use, phase: Phase) -> None:
-        low, high = widened(*use.range("acceleration", ACCELERATION, "an acceleration such as -3mpsps or [-6..-3]mpsps"), ACCELERATION_TOLERANCE)
+        low, high = widened(
+            *use.range("acceleration", ACCELERATION, "an acceleration such as -3mpsps or [-6..-3]mpsps"),
+            ACCELERATION_TOLERANCE,
+        )
         phase.rates.append(MeanAcceleration(use.actor, low, high, source=use.location))
 
 

@@ -6,8 +6,18 @@ from .report import write_report
 from .runner import BenchmarkResults, BenchmarkSettings, InstanceRecord, run_benchmark
 from .summary import StrategySummary, summaries, targets, targets_met
 
-
 __all__ = [
-    "BenchmarkResults", "BenchmarkSettings", "InstanceRecord", "Occupancy", "StrategySummary", "jaccard", "mean_pairwise",
-    "run_benchmark", "similarity_matrix", "summaries", "targets", "targets_met", "write_report",
+    "BenchmarkResults",
+    "BenchmarkSettings",
+    "InstanceRecord",
+    "Occupancy",
+    "StrategySummary",
+    "jaccard",
+    "mean_pairwise",
+    "run_benchmark",
+    "similarity_matrix",
+    "summaries",
+    "targets",
+    "targets_met",
+    "write_report",
 ]

@@ -9,7 +9,13 @@ from ..outcomes import CONFORMANT, NO_PLAN, NON_CONFORMANT, OUTCOMES, STAGES, TI
 from .runner import STRATEGIES
 from .summary import StrategySummary
 
-STAGE_COLOURS = {"automaton": "tab:purple", "planning": "tab:orange", "simulation": "tab:blue", "monitoring": "tab:green", "artifacts": "tab:grey"}
+STAGE_COLOURS = {
+    "automaton": "tab:purple",
+    "planning": "tab:orange",
+    "simulation": "tab:blue",
+    "monitoring": "tab:green",
+    "artifacts": "tab:grey",
+}
 OUTCOME_COLOURS = {CONFORMANT: "tab:blue", NON_CONFORMANT: "tab:orange", TIMED_OUT: "tab:grey", NO_PLAN: "tab:red"}
 COLOUR_MAP = "viridis"
 
@@ -26,10 +32,25 @@ def _pyplot():
 def stage_times(table: dict[tuple[str, str], StrategySummary], scenarios: list[str], strategy: str, path: Path) -> Path:
     """Mean seconds per instance, one bar per scenario, stacked by pipeline stage."""
     series = {stage: [table[s, strategy].mean_seconds[stage] for s in scenarios] for stage in STAGES}
-    return _stacked_bars(scenarios, series, STAGE_COLOURS, "seconds per instance (mean)", f"Time per pipeline stage, {strategy} strategy", path)
+    return _stacked_bars(
+        scenarios,
+        series,
+        STAGE_COLOURS,
+        "seconds per instance (mean)",
+        f"Time per pipeline stage, {strategy} strategy",
+        path,
+    )
 
 
-def _stacked_bars(scenarios: list[str], series: dict[str, list[float]], colours: dict[str, str], ylabel: str, title: str, path: Path, legend: str = "best") -> Path:
+def _stacked_bars(
+    scenarios: list[str],
+    series: dict[str, list[float]],
+    colours: dict[str, str],
+    ylabel: str,
+    title: str,
+    path: Path,
+    legend: str = "best",
+) -> Path:
     plt = _pyplot()
     figure, axes = plt.subplots(figsize=(max(6, 1.3 * len(scenarios)), 4.2))
     bottoms = [0.0] * len(scenarios)
@@ -53,7 +74,9 @@ def heatmap(summary: StrategySummary, path: Path) -> Path:
     plt = _pyplot()
     figure, axes = plt.subplots(figsize=(4.6, 4))
     image = axes.imshow(summary.similarity or [[float("nan")]], vmin=0.0, vmax=1.0, cmap=COLOUR_MAP)
-    axes.set_title(f"{summary.scenario} ({summary.strategy})\nmean pairwise similarity {summary.mean_similarity:.2f}", fontsize=9)
+    axes.set_title(
+        f"{summary.scenario} ({summary.strategy})\nmean pairwise similarity {summary.mean_similarity:.2f}", fontsize=9
+    )
     axes.set_xlabel("instance")
     axes.set_ylabel("instance")
     figure.colorbar(image, ax=axes, label="Jaccard index")
@@ -89,4 +112,6 @@ def outcomes(table: dict[tuple[str, str], StrategySummary], scenarios: list[str]
     series = {outcome: [table[s, strategy].outcomes[outcome] for s in scenarios] for outcome in OUTCOMES}
     if not any(series[NO_PLAN]):
         del series[NO_PLAN]
-    return _stacked_bars(scenarios, series, OUTCOME_COLOURS, "instances", f"Outcomes, {strategy} strategy", path, legend="lower right")
+    return _stacked_bars(
+        scenarios, series, OUTCOME_COLOURS, "instances", f"Outcomes, {strategy} strategy", path, legend="lower right"
+    )

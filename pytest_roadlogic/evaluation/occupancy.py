@@ -27,7 +27,7 @@ class Occupancy:
     runs: dict[int, tuple[tuple[int, int], ...]]
 
     @classmethod
-    def of_trace(cls, trace: Trace, cell: float = 1.0, length: float = CAR_LENGTH) -> "Occupancy":
+    def of_trace(cls, trace: Trace, cell: float = 1.0, length: float = CAR_LENGTH) -> Occupancy:
         cells: dict[int, set[int]] = {}
         for columns in trace.actors.values():
             lanes = columns["lane"].astype(int)
@@ -44,7 +44,7 @@ class Occupancy:
         return {str(lane): [list(run) for run in runs] for lane, runs in self.runs.items()}
 
     @classmethod
-    def from_json(cls, data: dict[str, list[list[int]]]) -> "Occupancy":
+    def from_json(cls, data: dict[str, list[list[int]]]) -> Occupancy:
         return cls({int(lane): tuple((low, high) for low, high in runs) for lane, runs in data.items()})
 
 

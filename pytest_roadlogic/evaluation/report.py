@@ -6,17 +6,19 @@ import math
 import os
 from pathlib import Path
 
-from . import figures
 from ..confinement import safe_name
 from ..outcomes import CONFORMANT, NO_PLAN, OUTCOMES, STAGES
 from ..settings import BASE, REFINED
+from . import figures
 from .runner import PAPER_COUNTS, STRATEGIES, BenchmarkResults
 from .summary import StrategySummary, summaries, targets
 
 REPORT_FILE = "report.md"
 
 
-def write_report(results: BenchmarkResults, out: Path, table: dict[tuple[str, str], StrategySummary] | None = None) -> Path:
+def write_report(
+    results: BenchmarkResults, out: Path, table: dict[tuple[str, str], StrategySummary] | None = None
+) -> Path:
     """Write every figure and ``report.md`` into ``out``; returns the report's path. ``table`` is
     ``summaries(results)`` when the caller has it already."""
     table = table if table is not None else summaries(results)
@@ -24,9 +26,13 @@ def write_report(results: BenchmarkResults, out: Path, table: dict[tuple[str, st
     plots: dict[str, Path] = {}
     if scenarios:
         for strategy in STRATEGIES:
-            plots[f"time-{strategy}"] = figures.stage_times(table, scenarios, strategy, out / f"rq1-time-{strategy}.png")
+            plots[f"time-{strategy}"] = figures.stage_times(
+                table, scenarios, strategy, out / f"rq1-time-{strategy}.png"
+            )
             for scenario in scenarios:
-                plots[f"{scenario}-{strategy}"] = figures.heatmap(table[scenario, strategy], out / f"rq2-similarity-{safe_name(scenario)}-{strategy}.png")
+                plots[f"{scenario}-{strategy}"] = figures.heatmap(
+                    table[scenario, strategy], out / f"rq2-similarity-{safe_name(scenario)}-{strategy}.png"
+                )
         plots["overview"] = figures.heatmap_overview(table, scenarios, out / "rq2-similarity.png")
         plots["outcomes"] = figures.outcomes(table, scenarios, REFINED, out / "rq2-outcomes-refined.png")
     path = out / REPORT_FILE
@@ -34,7 +40,12 @@ def write_report(results: BenchmarkResults, out: Path, table: dict[tuple[str, st
     return path
 
 
-def render(results: BenchmarkResults, table: dict[tuple[str, str], StrategySummary], scenarios: list[str], plots: dict[str, str]) -> str:
+def render(
+    results: BenchmarkResults,
+    table: dict[tuple[str, str], StrategySummary],
+    scenarios: list[str],
+    plots: dict[str, str],
+) -> str:
     s, env = results.settings, results.environment
     lines = [
         "# RoadLogic evaluation",
@@ -59,7 +70,10 @@ def render(results: BenchmarkResults, table: dict[tuple[str, str], StrategySumma
         "",
     ]
     if s["base"] < PAPER_COUNTS[0] or s["refined"] < PAPER_COUNTS[1]:
-        lines += [f"Fewer instances than the paper's {PAPER_COUNTS[0]} and {PAPER_COUNTS[1]}: the targets are set for those; with two base instances a mean similarity rests on one pair.", ""]
+        lines += [
+            f"Fewer instances than the paper's {PAPER_COUNTS[0]} and {PAPER_COUNTS[1]}: the targets are set for those; with two base instances a mean similarity rests on one pair.",
+            "",
+        ]
     if results.errors:
         lines += ["## Scenarios that could not run", ""]
         lines += [f"- {name}: {message.splitlines()[0]}" for name, message in sorted(results.errors.items())]
@@ -80,11 +94,17 @@ def render(results: BenchmarkResults, table: dict[tuple[str, str], StrategySumma
     ]
     for scenario in scenarios:
         base, refined = table[scenario, BASE].mean_similarity, table[scenario, REFINED].mean_similarity
-        lines.append(f"| {scenario} | {_number(base, 3)} | {_number(refined, 3)} | {'yes' if refined < base else 'no'} |")
+        lines.append(
+            f"| {scenario} | {_number(base, 3)} | {_number(refined, 3)} | {'yes' if refined < base else 'no'} |"
+        )
     lines.append("")
     if "overview" in plots:
         lines += [f"![Similarity heatmaps]({plots['overview']})", ""]
-        lines += ["Heatmaps per scenario: " + ", ".join(f"[{sc} {st}]({plots[f'{sc}-{st}']})" for sc in scenarios for st in STRATEGIES), ""]
+        lines += [
+            "Heatmaps per scenario: "
+            + ", ".join(f"[{sc} {st}]({plots[f'{sc}-{st}']})" for sc in scenarios for st in STRATEGIES),
+            "",
+        ]
     lines += ["### Outcomes, refined strategy", "", *_outcome_table(table, scenarios, REFINED), ""]
     if "outcomes" in plots:
         lines += [f"![Outcomes, refined strategy]({plots['outcomes']})", ""]
@@ -110,13 +130,22 @@ def _realistic(results: BenchmarkResults, table: dict[tuple[str, str], StrategyS
         "",
     ]
     for strategy in STRATEGIES:
-        lines += [f"### {strategy.capitalize()} strategy", "", *_time_table(table, scenarios, strategy), "", *_outcome_table(table, scenarios, strategy), ""]
+        lines += [
+            f"### {strategy.capitalize()} strategy",
+            "",
+            *_time_table(table, scenarios, strategy),
+            "",
+            *_outcome_table(table, scenarios, strategy),
+            "",
+        ]
     return lines
 
 
 def _time_table(table, scenarios: list[str], strategy: str) -> list[str]:
     lines = [
-        "| scenario | instances | conformant | tries | " + " | ".join(f"{stage} s" for stage in STAGES) + " | total s | all instances min |",
+        "| scenario | instances | conformant | tries | "
+        + " | ".join(f"{stage} s" for stage in STAGES)
+        + " | total s | all instances min |",
         "|---" * (6 + len(STAGES)) + "|",
     ]
     for scenario in scenarios:
@@ -149,7 +178,10 @@ def _unsuccessful(results: BenchmarkResults) -> list[str]:
         reason = " / ".join(line.strip() for line in r.message.splitlines()[:3]) or r.outcome
         lines.append(f"- {r.scenario} {r.strategy} #{r.index + 1}: {r.outcome}{values}{where}: {reason}")
     if any(r.outcome == NO_PLAN for r in failed):
-        lines += ["", "Replay a sample with `roadlogic replay FILE --values JSON --seed S`; without a plan it prints the conflicting constraints."]
+        lines += [
+            "",
+            "Replay a sample with `roadlogic replay FILE --values JSON --seed S`; without a plan it prints the conflicting constraints.",
+        ]
     return lines + [""]
 
 

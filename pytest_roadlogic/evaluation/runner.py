@@ -34,7 +34,18 @@ from .occupancy import Occupancy
 
 STRATEGIES = (BASE, REFINED)  # the order the bench runs them in
 RESULTS_FILE = "results.json"
-PACKAGES = ("pytest-roadlogic", "clingo", "clingo-dl", "clingo-lpx", "frenetix", "commonroad-io", "hypothesis", "numpy", "matplotlib", "pytest")
+PACKAGES = (
+    "pytest-roadlogic",
+    "clingo",
+    "clingo-dl",
+    "clingo-lpx",
+    "frenetix",
+    "commonroad-io",
+    "hypothesis",
+    "numpy",
+    "matplotlib",
+    "pytest",
+)
 
 
 # instances per scenario: the paper's (which the targets are set for), and a run to try the setup
@@ -59,7 +70,13 @@ class Suite:
     dialects: dict[str, str] = field(default_factory=dict)  # file path -> dialect, where not the run's
 
     def record(self) -> dict[str, Any]:
-        return {"paths": [str(p) for p in self.paths], "base": self.base, "refined": self.refined, "encoding": self.run.encoding, "dialects": self.dialects}
+        return {
+            "paths": [str(p) for p in self.paths],
+            "base": self.base,
+            "refined": self.refined,
+            "encoding": self.run.encoding,
+            "dialects": self.dialects,
+        }
 
 
 @dataclass(frozen=True)
@@ -75,8 +92,14 @@ class BenchmarkSettings:
 
     def record(self) -> dict[str, Any]:
         """For results.json: flat, as the report reads it (seed, tries, time limits, ...)."""
-        return {"paths": [str(p) for p in self.paths], "base": self.base, "refined": self.refined, "artifacts": self.artifacts, **dataclasses.asdict(self.run),
-                "realistic": self.realistic.record() if self.realistic is not None else None}
+        return {
+            "paths": [str(p) for p in self.paths],
+            "base": self.base,
+            "refined": self.refined,
+            "artifacts": self.artifacts,
+            **dataclasses.asdict(self.run),
+            "realistic": self.realistic.record() if self.realistic is not None else None,
+        }
 
     def count(self, strategy: str) -> int:
         return self.base if strategy == BASE else self.refined
@@ -111,7 +134,7 @@ class InstanceRecord:
         return data
 
     @classmethod
-    def from_json(cls, data: dict[str, Any]) -> "InstanceRecord":
+    def from_json(cls, data: dict[str, Any]) -> InstanceRecord:
         occupancy = Occupancy.from_json(data["occupancy"]) if data.get("occupancy") is not None else None
         return cls(**{**data, "occupancy": occupancy})
 
@@ -136,7 +159,7 @@ class BenchmarkResults:
         return write_text(directory / RESULTS_FILE, json.dumps(data, indent=1))
 
     @classmethod
-    def load(cls, path: Path) -> "BenchmarkResults":
+    def load(cls, path: Path) -> BenchmarkResults:
         data = json.loads(Path(path).read_text(encoding="utf-8"))
         return cls(**{**data, "instances": [InstanceRecord.from_json(r) for r in data["instances"]]})
 
@@ -144,7 +167,9 @@ class BenchmarkResults:
 Progress = Callable[[InstanceRecord, int, int], None]  # (record, done, total)
 
 
-def run_benchmark(settings: BenchmarkSettings, out: Path, progress: Progress | None = None, command: list[str] | None = None) -> BenchmarkResults:
+def run_benchmark(
+    settings: BenchmarkSettings, out: Path, progress: Progress | None = None, command: list[str] | None = None
+) -> BenchmarkResults:
     """Run every scenario with the base strategy, then with the refined one; save results as they come.
 
     ``results.json`` in ``out`` is rewritten after each scenario and strategy, so an interrupted run
@@ -154,11 +179,17 @@ def run_benchmark(settings: BenchmarkSettings, out: Path, progress: Progress | N
     started = time.perf_counter()
     settings_record = {**settings.record(), "command": command}
     suites = settings.suites()
-    results = BenchmarkResults(settings_record, environment(), [p.stem for p in settings.paths],
-                               realistic=[p.stem for p in settings.realistic.paths] if settings.realistic is not None else [])
+    results = BenchmarkResults(
+        settings_record,
+        environment(),
+        [p.stem for p in settings.paths],
+        realistic=[p.stem for p in settings.realistic.paths] if settings.realistic is not None else [],
+    )
     clashing = set(results.scenarios) & set(results.realistic)
     if clashing:
-        raise ValueError(f"a realistic scenario has the name of one of the paper's: {', '.join(sorted(clashing))}; rename its file")
+        raise ValueError(
+            f"a realistic scenario has the name of one of the paper's: {', '.join(sorted(clashing))}; rename its file"
+        )
     total = sum(len(paths) * (base + refined) for paths, base, refined, _, _ in suites)
     done = 0
 
@@ -190,7 +221,9 @@ def run_benchmark(settings: BenchmarkSettings, out: Path, progress: Progress | N
     return results
 
 
-def _run_base(scenario, name: str, settings: BenchmarkSettings, out: Path, record: Callable[[InstanceRecord], None]) -> None:
+def _run_base(
+    scenario, name: str, settings: BenchmarkSettings, out: Path, record: Callable[[InstanceRecord], None]
+) -> None:
     """The planner's first N different plans. A planning failure ends the sequence (the planner's
     search state is gone with it); the instances it did not reach get its outcome too, and a
     planner that runs out of plans leaves the rest without a plan."""
@@ -208,7 +241,9 @@ def _run_base(scenario, name: str, settings: BenchmarkSettings, out: Path, recor
         record(InstanceRecord(name, BASE, k, ending, message=message))
 
 
-def _run_refined(scenario, name: str, settings: BenchmarkSettings, out: Path, record: Callable[[InstanceRecord], None]) -> None:
+def _run_refined(
+    scenario, name: str, settings: BenchmarkSettings, out: Path, record: Callable[[InstanceRecord], None]
+) -> None:
     """N samples of the logical parameters, drawn by Hypothesis from the run's seed as the pytest
     plugin draws them, each planned, simulated and monitored once (with retries)."""
     runner = Runner(scenario, settings.run, explain=False)
@@ -222,11 +257,15 @@ def _run_refined(scenario, name: str, settings: BenchmarkSettings, out: Path, re
     runner.refined(sample, settings.refined, search=False)
 
 
-def _record(result: CaseResult, name: str, strategy: str, index: int, settings: BenchmarkSettings, out: Path) -> InstanceRecord:
+def _record(
+    result: CaseResult, name: str, strategy: str, index: int, settings: BenchmarkSettings, out: Path
+) -> InstanceRecord:
     seconds = {stage: result.seconds.get(stage, 0.0) for stage in STAGES}
     values = result.case.values if strategy == REFINED else None
     if result.run is None:
-        return InstanceRecord(name, strategy, index, result.outcome, values=values, message=result.message, seconds=seconds)
+        return InstanceRecord(
+            name, strategy, index, result.outcome, values=values, message=result.message, seconds=seconds
+        )
     outcome = result.run
     directory = None
     if settings.artifacts:
@@ -237,8 +276,18 @@ def _record(result: CaseResult, name: str, strategy: str, index: int, settings: 
         directory = relative.as_posix()
     verdict = outcome.verdict
     return InstanceRecord(
-        name, strategy, index, result.outcome, outcome.tries, seconds, values,
-        verdict.robustness, outcome.plan.horizon, result.message, Occupancy.of_trace(outcome.simulation.trace), directory,
+        name,
+        strategy,
+        index,
+        result.outcome,
+        outcome.tries,
+        seconds,
+        values,
+        verdict.robustness,
+        outcome.plan.horizon,
+        result.message,
+        Occupancy.of_trace(outcome.simulation.trace),
+        directory,
     )
 
 
@@ -254,7 +303,9 @@ def conftest_dialect(path: Path, roots: list[Path]) -> str | None:
     for folder in path.parents:
         conftest = folder / "conftest.py"
         if conftest.is_file():
-            spec = importlib.util.spec_from_file_location(f"_roadlogic_bench_conftest_{abs(hash(str(conftest)))}", conftest)
+            spec = importlib.util.spec_from_file_location(
+                f"_roadlogic_bench_conftest_{abs(hash(str(conftest)))}", conftest
+            )
             module = importlib.util.module_from_spec(spec)
             spec.loader.exec_module(module)
             hook = getattr(module, "pytest_roadlogic_dialect", None)

@@ -10,9 +10,9 @@ import math
 import statistics
 from dataclasses import dataclass
 
-from .occupancy import mean_pairwise, similarity_matrix
 from ..outcomes import CONFORMANT, OUTCOMES, STAGES, TIMED_OUT
 from ..settings import BASE, REFINED
+from .occupancy import mean_pairwise, similarity_matrix
 from .runner import STRATEGIES, BenchmarkResults, InstanceRecord
 
 # the acceptance targets
@@ -43,19 +43,24 @@ def summarize(records: list[InstanceRecord], scenario: str, strategy: str) -> St
     simulated = [r for r in records if r.occupancy is not None]
     matrix = similarity_matrix([r.occupancy for r in simulated])
     return StrategySummary(
-        scenario, strategy, len(records),
+        scenario,
+        strategy,
+        len(records),
         {outcome: sum(r.outcome == outcome for r in records) for outcome in OUTCOMES},
         {stage: statistics.fmean(r.seconds.get(stage, 0.0) for r in records) if records else 0.0 for stage in STAGES},
         sum(sum(r.seconds.values()) for r in records),
         statistics.fmean(r.tries for r in simulated) if simulated else math.nan,
-        matrix, mean_pairwise(matrix),
+        matrix,
+        mean_pairwise(matrix),
     )
 
 
 def summaries(results: BenchmarkResults) -> dict[tuple[str, str], StrategySummary]:
     return {
         (scenario, strategy): summarize(results.of(scenario, strategy), scenario, strategy)
-        for scenario in [*results.scenarios, *results.realistic] if scenario not in results.errors for strategy in STRATEGIES
+        for scenario in [*results.scenarios, *results.realistic]
+        if scenario not in results.errors
+        for strategy in STRATEGIES
     }
 
 
@@ -79,9 +84,17 @@ def targets(results: BenchmarkResults, table: dict[tuple[str, str], StrategySumm
         return "all scenarios" if not misses else "missed by " + ", ".join(misses)
 
     return [
-        Target("every scenario loads and runs", not errors, "all scenarios" if not errors else "failed: " + ", ".join(errors)),
+        Target(
+            "every scenario loads and runs",
+            not errors,
+            "all scenarios" if not errors else "failed: " + ", ".join(errors),
+        ),
         Target("base strategy: 100% conformant", not base_misses, detail(base_misses)),
-        Target(f"refined strategy: at least {REFINED_CONFORMANT:.0%} conformant", not refined_misses, detail(refined_misses)),
+        Target(
+            f"refined strategy: at least {REFINED_CONFORMANT:.0%} conformant",
+            not refined_misses,
+            detail(refined_misses),
+        ),
         Target("refined strategy: no timeouts", not timeouts, detail(timeouts)),
         Target("refined mean similarity below base", not diversity_misses, detail(diversity_misses)),
     ]

@@ -40,7 +40,11 @@ def with_builtin_events(scenario: model.Scenario) -> model.Scenario:
             wanted.setdefault(label, []).append(edge)
     if not wanted:
         return scenario
-    events = tuple(model.Event(f"{label}.{edge}", None, labelled[label].location) for label, edges in wanted.items() for edge in edges)
+    events = tuple(
+        model.Event(f"{label}.{edge}", None, labelled[label].location)
+        for label, edges in wanted.items()
+        for edge in edges
+    )
     behaviors = tuple(_marked(b, wanted) for b in scenario.behaviors)
     return dataclasses.replace(
         scenario,

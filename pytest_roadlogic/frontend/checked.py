@@ -27,7 +27,7 @@ class CheckedScenario:
     scenario: model.Scenario
     space: ParameterSpace
     lanes: int
-    registry: "Registry"
+    registry: Registry
     sources: dict[str, str] = field(default_factory=dict, compare=False, repr=False)  # path -> text, for error reports
 
     @property
@@ -75,7 +75,10 @@ class CheckedFile:
         for checked in self.scenarios:
             if checked.runnable:
                 return checked
-        raise OscError([Diagnostic(SourceLocation(self.file.path, 1, 1), "the file declares no scenario with a `do` behavior")], sources=self.sources)
+        raise OscError(
+            [Diagnostic(SourceLocation(self.file.path, 1, 1), "the file declares no scenario with a `do` behavior")],
+            sources=self.sources,
+        )
 
     def raise_for_errors(self) -> None:
         if self.errors:

@@ -20,8 +20,8 @@ from typing import TYPE_CHECKING
 from ..confinement import ALLOW_READ_HINT, MISSING, ReadRoots, project_root, regular_file_problem
 from ..settings import STANDARD_DIALECT
 from . import library, model
-from .checked import CheckedFile, CheckedScenario
 from .builtin_events import EDGES, with_builtin_events
+from .checked import CheckedFile, CheckedScenario
 from .errors import Diagnostic, OscError, SourceLocation
 from .inheritance import inherited
 from .invocation import RECURSION, called_scenarios, expand_calls
@@ -39,8 +39,13 @@ DEFAULT_LANES = 3
 _BUILTIN_PHYSICAL = LazyTable(lambda _: {dimension: name for name, dimension in library.PHYSICAL_TYPES.items()})
 
 
-def check_file(path: str | Path, lanes: int | None = None, registry: Registry | None = None, dialect: str | None = None,
-               roots: ReadRoots | None = None) -> CheckedFile:
+def check_file(
+    path: str | Path,
+    lanes: int | None = None,
+    registry: Registry | None = None,
+    dialect: str | None = None,
+    roots: ReadRoots | None = None,
+) -> CheckedFile:
     """Parse and check ``path`` and the files it imports. Syntax errors raise ``OscError``.
 
     ``lanes`` fixes the road's lane count; ``None`` takes it from each scenario (see ``_road_lanes``).
@@ -54,14 +59,25 @@ def check_file(path: str | Path, lanes: int | None = None, registry: Registry | 
     return checker.run(main)
 
 
-def check_text(text: str, path: str = "<string>", lanes: int | None = None, registry: Registry | None = None, dialect: str | None = None,
-               roots: ReadRoots | None = None) -> CheckedFile:
+def check_text(
+    text: str,
+    path: str = "<string>",
+    lanes: int | None = None,
+    registry: Registry | None = None,
+    dialect: str | None = None,
+    roots: ReadRoots | None = None,
+) -> CheckedFile:
     """``check_file`` of a text; its imports are read from ``roots`` (default: the project's root)."""
     return _Checker(lanes, registry, dialect, roots or ReadRoots.of(project_root())).run(parse_text(text, path))
 
 
-def load_file(path: str | Path, lanes: int | None = None, registry: Registry | None = None, dialect: str | None = None,
-              roots: ReadRoots | None = None) -> CheckedFile:
+def load_file(
+    path: str | Path,
+    lanes: int | None = None,
+    registry: Registry | None = None,
+    dialect: str | None = None,
+    roots: ReadRoots | None = None,
+) -> CheckedFile:
     """``check_file`` that raises ``OscError`` when the file has errors (warnings pass)."""
     checked = check_file(path, lanes, registry, dialect, roots)
     checked.raise_for_errors()
@@ -72,7 +88,7 @@ def load_file(path: str | Path, lanes: int | None = None, registry: Registry | N
 class _ConstructContext:
     """What a construct's ``check`` sees of the checker (``constructs.CheckContext``)."""
 
-    checker: "_Checker"
+    checker: _Checker
     env: dict
 
     @property
@@ -116,7 +132,13 @@ def _reaches(start: str, goal: str, calls: dict[str, set[str]]) -> bool:
 
 
 class _Checker:
-    def __init__(self, lanes: int | None, registry: Registry | None = None, dialect: str | None = None, roots: ReadRoots | None = None) -> None:
+    def __init__(
+        self,
+        lanes: int | None,
+        registry: Registry | None = None,
+        dialect: str | None = None,
+        roots: ReadRoots | None = None,
+    ) -> None:
         self.roots = roots or ReadRoots.of(project_root())
         if registry is None:
             # imported here: the registry translates into the automaton's guards, and the
@@ -167,7 +189,11 @@ class _Checker:
         extensions = [e for f in (*self.files.values(), main) for e in f.extensions]
         for extension in extensions:
             if extension.target not in self.scenarios and extension.target not in own:
-                self.error(extension.location, f"extend names an unknown scenario {extension.target!r}", self._known("scenarios", [*self.scenarios, *own]))
+                self.error(
+                    extension.location,
+                    f"extend names an unknown scenario {extension.target!r}",
+                    self._known("scenarios", [*self.scenarios, *own]),
+                )
         seen: dict[str, model.Scenario] = {}
         # this file's scenarios over imported ones of the same name, the first of two with one name
         # (the second is an error below)
@@ -189,25 +215,41 @@ class _Checker:
         for scenario in main.scenarios:
             # a scenario that calls itself, directly or through others, is checked on its own, so that
             # expand_calls reports the recursion at the call (it had been skipped as a callee: "no scenario")
-            if scenario.name in called and scenario.name not in seen and not _reaches(scenario.name, scenario.name, calls):
+            if (
+                scenario.name in called
+                and scenario.name not in seen
+                and not _reaches(scenario.name, scenario.name, calls)
+            ):
                 seen[scenario.name] = scenario
                 continue
             if scenario.name in seen:
                 first = seen[scenario.name].location
-                self.error(scenario.location, f"scenario {scenario.name!r} is already declared on line {first.line}", "give each scenario its own name")
+                self.error(
+                    scenario.location,
+                    f"scenario {scenario.name!r} is already declared on line {first.line}",
+                    "give each scenario its own name",
+                )
                 continue
             if scenario.name in self.scenarios and self.scenarios[scenario.name].path != main.path:
                 other = self.scenarios[scenario.name].location
-                self.error(scenario.location, f"scenario {scenario.name!r} is already declared in {other.path}:{other.line}", "rename one of them")
+                self.error(
+                    scenario.location,
+                    f"scenario {scenario.name!r} is already declared in {other.path}:{other.line}",
+                    "rename one of them",
+                )
             seen[scenario.name] = scenario
-            scenario, problems = expand_calls(callable_[scenario.name], callable_, is_action, lambda f: self._field_kind(self._aliased(f)) == "actor")
+            scenario, problems = expand_calls(
+                callable_[scenario.name], callable_, is_action, lambda f: self._field_kind(self._aliased(f)) == "actor"
+            )
             self.diagnostics.extend(problems)
             if any(RECURSION in problem.message for problem in problems):
                 continue  # the call left in place would only be reported again as an unknown action
             checked, space, lanes = self._scenario(scenario, globals_)
             scenarios.append(CheckedScenario(checked, space, lanes, self.registry, self.sources))
         self.diagnostics = list(dict.fromkeys(self.diagnostics))
-        self.diagnostics.sort(key=lambda d: (d.location.path != main.path, d.location.path, d.location.line, d.location.column))
+        self.diagnostics.sort(
+            key=lambda d: (d.location.path != main.path, d.location.path, d.location.line, d.location.column)
+        )
         checked_file = replace(main, scenarios=tuple(c.scenario for c in scenarios))
         return CheckedFile(checked_file, self.diagnostics, self.sources, tuple(scenarios))
 
@@ -217,24 +259,48 @@ class _Checker:
             if target is None:
                 if part_file(item.target) is None and item.target.startswith("osc."):
                     # other tools split the library differently (osc.helpers): read it as the whole
-                    self.warning(item.location, f"the standard library has no part {item.target!r} here; read as osc.standard", f"parts: {', '.join(part_names())}")
+                    self.warning(
+                        item.location,
+                        f"the standard library has no part {item.target!r} here; read as osc.standard",
+                        f"parts: {', '.join(part_names())}",
+                    )
                 elif part_file(item.target) is None:
-                    self.error(item.location, f"unknown library {item.target!r}", f"the standard library is osc.standard (parts: {', '.join(part_names())}); import a file by its path: import \"lib.osc\" or import lib.osc")
+                    self.error(
+                        item.location,
+                        f"unknown library {item.target!r}",
+                        f'the standard library is osc.standard (parts: {", ".join(part_names())}); import a file by its path: import "lib.osc" or import lib.osc',
+                    )
                 continue
             if str(target) in stack:
-                self.error(item.location, f"{item.target!r} imports itself (through {' -> '.join(Path(s).name for s in stack)})", "remove the circular import")
+                self.error(
+                    item.location,
+                    f"{item.target!r} imports itself (through {' -> '.join(Path(s).name for s in stack)})",
+                    "remove the circular import",
+                )
                 continue
             if str(target) in self.files:  # keyed by resolved path: parse_file was given ``target``
                 continue
             if not self.roots.allows(target):
                 # never opened, never shown: import "/proc/self/environ" had printed the environment's first line
-                self.error(item.location, f"the imported file {item.target!r} is outside the folders the tool reads ({self.roots.describe()})", ALLOW_READ_HINT)
+                self.error(
+                    item.location,
+                    f"the imported file {item.target!r} is outside the folders the tool reads ({self.roots.describe()})",
+                    ALLOW_READ_HINT,
+                )
                 continue
             if (problem := regular_file_problem(target)) is not None:
                 if problem == MISSING:
-                    self.error(item.location, f"cannot find the imported file {item.target!r}", f"looked for {target}; paths are relative to the importing file")
+                    self.error(
+                        item.location,
+                        f"cannot find the imported file {item.target!r}",
+                        f"looked for {target}; paths are relative to the importing file",
+                    )
                 else:
-                    self.error(item.location, f"cannot read the imported file {item.target!r}: {problem}", "import an .osc file")
+                    self.error(
+                        item.location,
+                        f"cannot read the imported file {item.target!r}: {problem}",
+                        "import an .osc file",
+                    )
                 continue
             try:
                 imported = parse_file(target, self.units)
@@ -253,7 +319,11 @@ class _Checker:
             for scenario in imported.scenarios:
                 if scenario.name in self.scenarios:
                     other = self.scenarios[scenario.name].location
-                    self.error(scenario.location, f"scenario {scenario.name!r} is already declared in {other.path}:{other.line}", "rename one of them")
+                    self.error(
+                        scenario.location,
+                        f"scenario {scenario.name!r} is already declared in {other.path}:{other.line}",
+                        "rename one of them",
+                    )
                 self.scenarios[scenario.name] = scenario
 
     def _declarations(self, osc: model.OscFile) -> None:
@@ -271,7 +341,12 @@ class _Checker:
                 members.append(member)
             self.enums[enum.name] = tuple(members)
         for declared in osc.types:
-            if declared.name in self.types or declared.name in self.enums or declared.name in library.SCALAR_TYPES or declared.name in library.ACTOR_TYPES:
+            if (
+                declared.name in self.types
+                or declared.name in self.enums
+                or declared.name in library.SCALAR_TYPES
+                or declared.name in library.ACTOR_TYPES
+            ):
                 self.error(declared.location, f"type {declared.name!r} is already declared", "rename the declaration")
                 continue
             self.types[declared.name] = declared
@@ -279,7 +354,11 @@ class _Checker:
     def _extend_enum(self, extension: model.EnumDeclaration) -> None:
         """``extend e: [a, b]``: members added to an enum this file or an import declares."""
         if extension.name not in self.enums:
-            self.error(extension.location, f"extend of an unknown enum {extension.name!r}", "declare the enum first: enum name: [a, b]")
+            self.error(
+                extension.location,
+                f"extend of an unknown enum {extension.name!r}",
+                "declare the enum first: enum name: [a, b]",
+            )
             return
         members = list(self.enums[extension.name])
         for member in extension.members:
@@ -294,14 +373,23 @@ class _Checker:
         does not provide would need its meaning, which a declaration without a body does not give."""
         for declared in osc.modifier_declarations:
             if declared.parameters:
-                self.error(declared.location, "not supported: modifier declarations", "use the built-in modifiers (speed, position, lane, ...)")
+                self.error(
+                    declared.location,
+                    "not supported: modifier declarations",
+                    "use the built-in modifiers (speed, position, lane, ...)",
+                )
                 continue
             if declared.owner == library.ROAD_TYPE:
                 known = declared.name in library.ROAD_MODIFIERS
             else:
                 known = self.registry.modifier(declared.name) is not None
             if not known:
-                self.error(declared.location, f"not supported: the declared modifier {declared.name!r}", "the tool plans only the modifiers it provides; " + self._known("modifiers", [*self.registry.modifiers, *library.ROAD_MODIFIERS]))
+                self.error(
+                    declared.location,
+                    f"not supported: the declared modifier {declared.name!r}",
+                    "the tool plans only the modifiers it provides; "
+                    + self._known("modifiers", [*self.registry.modifiers, *library.ROAD_MODIFIERS]),
+                )
 
     def _aliased(self, item: model.Field) -> model.Field:
         """The field with a declared alias of a physical type (``velocity``) read as the built-in one."""
@@ -314,14 +402,20 @@ class _Checker:
 
     # -------------------------------------------------------------- scenarios
 
-    def _scenario(self, scenario: model.Scenario, globals_: tuple[model.Field, ...]) -> tuple[model.Scenario, ParameterSpace, int]:
+    def _scenario(
+        self, scenario: model.Scenario, globals_: tuple[model.Field, ...]
+    ) -> tuple[model.Scenario, ParameterSpace, int]:
         for item in scenario.unsupported:
             self._unsupported(item)
         if scenario.kind == "action":
             self.error(scenario.location, "not supported: action declarations", "declare a scenario instead")
         owner = scenario.actor_type
         if owner is not None and owner not in library.SCENARIO_OWNERS and self._actor_base(owner) is None:
-            self.error(scenario.location, f"unknown actor type {owner!r}", self._known("actor types", [*library.SCENARIO_OWNERS, *self._actor_type_names()]))
+            self.error(
+                scenario.location,
+                f"unknown actor type {owner!r}",
+                self._known("actor types", [*library.SCENARIO_OWNERS, *self._actor_type_names()]),
+            )
 
         actors: list[model.Actor] = []
         parameters: list[model.Field] = []
@@ -330,7 +424,11 @@ class _Checker:
         for item in (*globals_, *scenario.fields):
             item = self._aliased(item)
             if item.name in declared:
-                self.error(item.location, f"{item.name!r} is already declared on line {declared[item.name].line}", "give each field its own name")
+                self.error(
+                    item.location,
+                    f"{item.name!r} is already declared on line {declared[item.name].line}",
+                    "give each field its own name",
+                )
                 continue
             declared[item.name] = item.location
             kind = self._field_kind(item)
@@ -339,7 +437,11 @@ class _Checker:
                 actors.append(model.Actor(item.name, item.type, item.location, base))
                 if item.constraints or item.default is not None:
                     where = item.constraints[0].location if item.constraints else item.default.location
-                    self.error(where, "not supported: constraints on an actor's fields", "constrain the actor through modifiers (speed, position, lane)")
+                    self.error(
+                        where,
+                        "not supported: constraints on an actor's fields",
+                        "constrain the actor through modifiers (speed, position, lane)",
+                    )
             elif kind == "parameter":
                 parameters.append(item)
             elif kind == "road":
@@ -356,13 +458,21 @@ class _Checker:
 
         if len(scenario.behaviors) > 1:
             for extra in scenario.behaviors[1:]:
-                self.error(extra.location, "a scenario has at most one `do`", "compose the behaviors with serial: or parallel: under one do")
+                self.error(
+                    extra.location,
+                    "a scenario has at most one `do`",
+                    "compose the behaviors with serial: or parallel: under one do",
+                )
         for event in scenario.events:
             if event.specification is not None:
                 self._event_specification(event.specification, checked, env, event.location, waits=True)
         for method in scenario.methods:
             if method.parameters:
-                self.error(method.location, "not supported: methods with parameters", "write the value as an expression where it is used")
+                self.error(
+                    method.location,
+                    "not supported: methods with parameters",
+                    "write the value as an expression where it is used",
+                )
         labels: dict[str, SourceLocation] = {}
         used_actors: set[str] = set()
         used_names: set[str] = set()
@@ -371,7 +481,11 @@ class _Checker:
                 label = getattr(node, "label", None)
                 if label is not None:
                     if label in labels:
-                        self.error(node.location, f"label {label!r} is already used on line {labels[label].line}", "give each phase its own label")
+                        self.error(
+                            node.location,
+                            f"label {label!r} is already used on line {labels[label].line}",
+                            "give each phase its own label",
+                        )
                     else:
                         labels[label] = node.location
                 self._behavior(node, checked, env, used_actors, used_names)
@@ -397,7 +511,11 @@ class _Checker:
         if scenario.behaviors:
             for actor in actors:
                 if actor.name not in used_actors:
-                    self.warning(actor.location, f"actor {actor.name!r} takes no part in the behavior", "give it an action, or remove it")
+                    self.warning(
+                        actor.location,
+                        f"actor {actor.name!r} takes no part in the behavior",
+                        "give it an action, or remove it",
+                    )
         return checked, space, lanes
 
     def _field_kind(self, item: model.Field) -> str | None:
@@ -407,28 +525,55 @@ class _Checker:
             return None
         if item.type == library.ROAD_TYPE:
             if item.constraints or item.default is not None:
-                self.error(location, "a road takes no value or keep()", "constrain it with path_min_driving_lanes(n) or path_max_lanes(n)")
+                self.error(
+                    location,
+                    "a road takes no value or keep()",
+                    "constrain it with path_min_driving_lanes(n) or path_max_lanes(n)",
+                )
             return "road"
         if self._actor_base(item.type) is not None:
             if self._driven_as_vehicle(item.type):
-                self.warning(location, f"actor type {item.type!r} does not derive from a road user: it is driven as a vehicle", f"declare it as `actor {item.type} inherits vehicle` (or car, truck)")
+                self.warning(
+                    location,
+                    f"actor type {item.type!r} does not derive from a road user: it is driven as a vehicle",
+                    f"declare it as `actor {item.type} inherits vehicle` (or car, truck)",
+                )
             return "actor"
         if item.type in library.SCALAR_TYPES or item.type in self.enums:
             return "parameter"
         if item.type in self.physical_types:
-            self.error(location, f"not supported: parameters of type {item.type!r} (a dimension this tool does not model)", f"use one of {', '.join(library.PHYSICAL_TYPES)}")
+            self.error(
+                location,
+                f"not supported: parameters of type {item.type!r} (a dimension this tool does not model)",
+                f"use one of {', '.join(library.PHYSICAL_TYPES)}",
+            )
             return None
         if item.type in library.UNSUPPORTED_ACTOR_TYPES:
-            self.error(location, f"not supported: actor type {item.type!r} (the road is a highway)", f"use one of {', '.join(library.ACTOR_TYPES)}")
+            self.error(
+                location,
+                f"not supported: actor type {item.type!r} (the road is a highway)",
+                f"use one of {', '.join(library.ACTOR_TYPES)}",
+            )
             return None
         if item.type in self.types:
             declared = self.types[item.type]
             if declared.kind == "actor":
-                self.error(location, f"actor type {item.type!r} does not derive from a road user", f"declare it as `actor {item.type} inherits vehicle`")
+                self.error(
+                    location,
+                    f"actor type {item.type!r} does not derive from a road user",
+                    f"declare it as `actor {item.type} inherits vehicle`",
+                )
             else:
-                self.error(location, "not supported: parameters of struct type", "use scalar parameters (length, speed, ...)")
+                self.error(
+                    location, "not supported: parameters of struct type", "use scalar parameters (length, speed, ...)"
+                )
             return None
-        known = [*library.ACTOR_TYPES, *library.SCALAR_TYPES, *sorted(set(self.enums) - set(library.ENUMS)), *sorted(self.types)]
+        known = [
+            *library.ACTOR_TYPES,
+            *library.SCALAR_TYPES,
+            *sorted(set(self.enums) - set(library.ENUMS)),
+            *sorted(self.types),
+        ]
         self.error(location, f"unknown type {item.type!r}", self._known("types", known))
         return None
 
@@ -447,7 +592,9 @@ class _Checker:
 
     def _unrooted(self, declared: model.TypeDeclaration) -> bool:
         """A declared actor type with no parent, or whose parent is an abstract actor of the library."""
-        return declared.parent is None or (declared.parent not in self.types and declared.parent in library.ABSTRACT_ACTOR_TYPES)
+        return declared.parent is None or (
+            declared.parent not in self.types and declared.parent in library.ABSTRACT_ACTOR_TYPES
+        )
 
     def _driven_as_vehicle(self, type_name: str) -> bool:
         """Whether a declared actor type reaches no road user and is driven as a vehicle (a warning)."""
@@ -469,26 +616,44 @@ class _Checker:
 
     # -------------------------------------------------------------- behavior
 
-    def _behavior(self, node: model.Behavior, scenario: model.Scenario, env: dict, used_actors: set[str], used_names: set[str]) -> None:
+    def _behavior(
+        self, node: model.Behavior, scenario: model.Scenario, env: dict, used_actors: set[str], used_names: set[str]
+    ) -> None:
         if isinstance(node, model.Composition):
             signature = library.COMPOSITIONS[node.operator]
-            self._arguments(signature, node.arguments, node.location, scenario, env, used_actors, used_names, what=node.operator)
+            self._arguments(
+                signature, node.arguments, node.location, scenario, env, used_actors, used_names, what=node.operator
+            )
             if not node.children:
                 self.error(node.location, f"{node.operator} has no members")
             overlap = node.argument("overlap")
-            if overlap is not None and isinstance(overlap.value, model.Name) and overlap.value.name not in ("start", "equal"):
-                self.error(overlap.location, f"not supported: overlap: {overlap.value.name}", "parallel supports overlap: start (the default) and equal")
+            if (
+                overlap is not None
+                and isinstance(overlap.value, model.Name)
+                and overlap.value.name not in ("start", "equal")
+            ):
+                self.error(
+                    overlap.location,
+                    f"not supported: overlap: {overlap.value.name}",
+                    "parallel supports overlap: start (the default) and equal",
+                )
             return
         if isinstance(node, model.Invocation):
             self._invocation(node, scenario, env, used_actors, used_names)
             return
         if isinstance(node, model.Wait):
-            used_names.update(n.name for n in names_in(node.condition) if not isinstance(node.condition, model.EventReference))
+            used_names.update(
+                n.name for n in names_in(node.condition) if not isinstance(node.condition, model.EventReference)
+            )
             self._event_specification(node.condition, scenario, env, node.location, waits=True)
             return
         if isinstance(node, model.Emit):
             if node.event not in {e.name for e in scenario.events}:
-                self.error(node.location, f"emit names an undeclared event {node.event!r}", f"declare it in the scenario: event {node.event}")
+                self.error(
+                    node.location,
+                    f"emit names an undeclared event {node.event!r}",
+                    f"declare it in the scenario: event {node.event}",
+                )
             return
         self.error(node.location, "not supported: call", "methods with side effects cannot be planned; remove the call")
 
@@ -496,16 +661,27 @@ class _Checker:
         """An action or modifier the registry lacks: one the standard library declares is refused
         by name (the tool does not execute it), any other is unknown."""
         if name in declared:
-            self.error(location, f"not supported: the standard's {kind} {name!r}", f"declared in {declared[name].part}; this tool does not execute it. " + self._known(f"{kind}s", provided))
+            self.error(
+                location,
+                f"not supported: the standard's {kind} {name!r}",
+                f"declared in {declared[name].part}; this tool does not execute it. "
+                + self._known(f"{kind}s", provided),
+            )
         else:
             self.error(location, f"unknown {kind} {name!r}", self._known(f"{kind}s", provided))
 
     def _invocation(self, node: model.Invocation, scenario, env, used_actors, used_names) -> None:
         actor = node.actor
         if actor is None:
-            self.error(node.location, f"{node.action}() needs an actor", f"write it as {scenario.actors[0].name if scenario.actors else 'v1'}.{node.action}()")
+            self.error(
+                node.location,
+                f"{node.action}() needs an actor",
+                f"write it as {scenario.actors[0].name if scenario.actors else 'v1'}.{node.action}()",
+            )
         elif scenario.actor(actor) is None:
-            self.error(node.location, f"unknown actor {actor!r}", self._known("actors", [a.name for a in scenario.actors]))
+            self.error(
+                node.location, f"unknown actor {actor!r}", self._known("actors", [a.name for a in scenario.actors])
+            )
         else:
             used_actors.add(actor)
         context = _ConstructContext(self, env)
@@ -513,21 +689,49 @@ class _Checker:
         if action is None:
             self._unprovided(node.location, "action", node.action, standard_library().actions, self.registry.actions)
         else:
-            binding = self._arguments(action.signature, node.arguments, node.location, scenario, env, used_actors, used_names, what=f"{node.action}()")
+            binding = self._arguments(
+                action.signature,
+                node.arguments,
+                node.location,
+                scenario,
+                env,
+                used_actors,
+                used_names,
+                what=f"{node.action}()",
+            )
             action.check(binding, context)
             if actor is not None and scenario.actor(actor) is not None:
                 stationary = scenario.actor(actor).stationary
                 if stationary and action.moves:
                     standing = [name for name, a in self.registry.actions.items() if not a.moves]
-                    self.error(node.location, f"{actor!r} is a stationary_object: it can only {' or '.join(n + '()' for n in standing)}", "declare it as a car if it should move")
+                    self.error(
+                        node.location,
+                        f"{actor!r} is a stationary_object: it can only {' or '.join(n + '()' for n in standing)}",
+                        "declare it as a car if it should move",
+                    )
         for modifier in node.modifiers:
             if modifier.actor is not None and modifier.actor != actor:
-                self.error(modifier.location, f"this modifier names {modifier.actor!r} but the invocation is for {actor!r}", "put it in a with: block of that actor's invocation")
+                self.error(
+                    modifier.location,
+                    f"this modifier names {modifier.actor!r} but the invocation is for {actor!r}",
+                    "put it in a with: block of that actor's invocation",
+                )
             construct = self.registry.modifier(modifier.name)
             if construct is None:
-                self._unprovided(modifier.location, "modifier", modifier.name, standard_library().modifiers, self.registry.modifiers)
+                self._unprovided(
+                    modifier.location, "modifier", modifier.name, standard_library().modifiers, self.registry.modifiers
+                )
                 continue
-            binding = self._arguments(construct.signature, modifier.arguments, modifier.location, scenario, env, used_actors, used_names, what=f"{modifier.name}()")
+            binding = self._arguments(
+                construct.signature,
+                modifier.arguments,
+                modifier.location,
+                scenario,
+                env,
+                used_actors,
+                used_names,
+                what=f"{modifier.name}()",
+            )
             construct.check(binding, context)
         local = dict(env)
         local["it.duration"] = Interval(0.0, math.inf, TIME)
@@ -536,7 +740,11 @@ class _Checker:
                 continue
             for name in names_in(constraint.expression):
                 if name.name != "it.duration" and name.name not in local and name.enum is None:
-                    self.error(name.location, f"unknown name {name.name!r}", "inside an invocation's with:, keep() can constrain it.duration")
+                    self.error(
+                        name.location,
+                        f"unknown name {name.name!r}",
+                        "inside an invocation's with:, keep() can constrain it.duration",
+                    )
                     break
             else:
                 try:
@@ -550,19 +758,27 @@ class _Checker:
         if node.until is not None:
             self._event_specification(node.until, scenario, env, node.location)
 
-    def _arguments(self, signature, arguments, location, scenario, env, used_actors, used_names, what: str) -> library.Binding:
+    def _arguments(
+        self, signature, arguments, location, scenario, env, used_actors, used_names, what: str
+    ) -> library.Binding:
         binding = library.bind(signature, arguments)
         for argument in binding.surplus:
             self.error(argument.location, f"too many positional arguments to {what}", f"usage: {signature.usage()}")
         for argument in binding.unknown:
-            self.error(argument.location, f"unknown argument {argument.name!r} of {what}", f"usage: {signature.usage()}")
+            self.error(
+                argument.location, f"unknown argument {argument.name!r} of {what}", f"usage: {signature.usage()}"
+            )
         for argument, parameter in binding.repeated:
             self.error(argument.location, f"{what} is given {parameter.name!r} twice")
         given: dict[str, model.Argument] = {}
         for name, argument in binding.arguments.items():
             parameter = signature.parameter(name)
             if not parameter.supported:
-                self.error(argument.location, f"not supported: argument {parameter.name!r} of {what}", f"usage: {signature.usage()}")
+                self.error(
+                    argument.location,
+                    f"not supported: argument {parameter.name!r} of {what}",
+                    f"usage: {signature.usage()}",
+                )
                 continue
             given[name] = argument
             used_names.update(n.name for n in names_in(argument.value))
@@ -573,24 +789,37 @@ class _Checker:
                 self.error(present[1].location, f"{what} takes only one of {', '.join(group)}")
         for group in signature.required if not binding.unknown else ():
             if not any(name in given for name in group):
-                options = " or ".join(f"{name}:" if signature.parameter(name) and not signature.parameter(name).positional else name for name in group)
+                options = " or ".join(
+                    f"{name}:" if signature.parameter(name) and not signature.parameter(name).positional else name
+                    for name in group
+                )
                 self.error(location, f"{what} needs {options}", f"usage: {signature.usage()}")
         return binding
 
-    def _value(self, argument: model.Argument, parameter: library.Parameter, scenario, env, used_actors, what: str) -> None:
+    def _value(
+        self, argument: model.Argument, parameter: library.Parameter, scenario, env, used_actors, what: str
+    ) -> None:
         value = argument.value
         kind = parameter.kind
         if kind == "actor":
             if not isinstance(value, model.Name) or value.enum is not None:
-                self.error(value.location, f"{parameter.name}: takes an actor", self._known("actors", [a.name for a in scenario.actors]))
+                self.error(
+                    value.location,
+                    f"{parameter.name}: takes an actor",
+                    self._known("actors", [a.name for a in scenario.actors]),
+                )
             elif scenario.actor(value.name) is None:
-                self.error(value.location, f"unknown actor {value.name!r}", self._known("actors", [a.name for a in scenario.actors]))
+                self.error(
+                    value.location,
+                    f"unknown actor {value.name!r}",
+                    self._known("actors", [a.name for a in scenario.actors]),
+                )
             else:
                 used_actors.add(value.name)
             return
         if kind == "string":
             if not (isinstance(value, model.Literal) and isinstance(value.value, str)):
-                self.error(value.location, f"{parameter.name}: takes a string, e.g. \"Town04\"")
+                self.error(value.location, f'{parameter.name}: takes a string, e.g. "Town04"')
             return
         if kind == "bool":
             if not (isinstance(value, model.Literal) and isinstance(value.value, bool)):
@@ -598,20 +827,38 @@ class _Checker:
             return
         if kind == "road":
             if not isinstance(value, model.Name) or value.name not in self.roads:
-                self.error(value.location, f"{parameter.name}: takes the scenario's road", f"declare one: path: {library.ROAD_TYPE}")
+                self.error(
+                    value.location,
+                    f"{parameter.name}: takes the scenario's road",
+                    f"declare one: path: {library.ROAD_TYPE}",
+                )
             return
         if kind.startswith("enum:"):
             enum = kind[5:]
             members = self.enums[enum]
             if isinstance(value, model.Name) and scenario.parameter(value.name) is not None:
                 if scenario.parameter(value.name).type != enum:
-                    self.error(value.location, f"{parameter.name}: takes a {enum}, but {value.name!r} is a {scenario.parameter(value.name).type}")
+                    self.error(
+                        value.location,
+                        f"{parameter.name}: takes a {enum}, but {value.name!r} is a {scenario.parameter(value.name).type}",
+                    )
                 return
-            if not isinstance(value, model.Name) or value.name not in members or (value.enum is not None and value.enum != enum):
-                self.error(value.location, f"{parameter.name}: takes {', '.join(members[:-1])} or {members[-1]}" if len(members) > 1 else f"{parameter.name}: takes {members[0]}")
+            if (
+                not isinstance(value, model.Name)
+                or value.name not in members
+                or (value.enum is not None and value.enum != enum)
+            ):
+                self.error(
+                    value.location,
+                    f"{parameter.name}: takes {', '.join(members[:-1])} or {members[-1]}"
+                    if len(members) > 1
+                    else f"{parameter.name}: takes {members[0]}",
+                )
             return
         for call in calls_in(value):
-            self.error(call.location, f"a function call is not allowed in {parameter.name}:", "write the value, or a parameter")
+            self.error(
+                call.location, f"a function call is not allowed in {parameter.name}:", "write the value, or a parameter"
+            )
             return
         try:
             result = evaluate(value, env)
@@ -622,7 +869,9 @@ class _Checker:
         example = {"length": "10m", "time": "3s", "speed": "20mps", "acceleration": "2mpss"}.get(kind, "1")
         if isinstance(result, model.Name):
             if scenario.actor(result.name) is not None:
-                self.error(value.location, f"{parameter.name}: takes {describe(expected)}, not the actor {result.name!r}")
+                self.error(
+                    value.location, f"{parameter.name}: takes {describe(expected)}, not the actor {result.name!r}"
+                )
             else:
                 self.error(value.location, f"unknown name {result.name!r}", "declare it as a parameter of the scenario")
             return
@@ -636,7 +885,11 @@ class _Checker:
                 hint = f"write it with a unit of {expected}, e.g. {example}"
             else:
                 hint = f"use a unit of {expected}, e.g. {example}"
-            self.error(value.location, f"{what} expects {describe(expected)} for {parameter.name}, got {describe(result.dimension)}", hint)
+            self.error(
+                value.location,
+                f"{what} expects {describe(expected)} for {parameter.name}, got {describe(result.dimension)}",
+                hint,
+            )
             return
         if parameter.name == "duration" and result.low < 0:
             # here rather than where the automaton reads it, so that every negative one is reported
@@ -658,16 +911,28 @@ class _Checker:
         bounds = self._road_bounds(scenario, env, roads)
         least, most = bounds.get("path_min_driving_lanes"), bounds.get("path_max_lanes")
         if least and most and least[0] > most[0]:
-            self.error(most[1], f"at most {most[0]} lanes contradicts at least {least[0]} (line {least[1].line})", "make path_max_lanes at least path_min_driving_lanes")
+            self.error(
+                most[1],
+                f"at most {most[0]} lanes contradicts at least {least[0]} (line {least[1].line})",
+                "make path_max_lanes at least path_min_driving_lanes",
+            )
         if self.requested_lanes is not None:
             lanes = self.requested_lanes
             self.lanes_origin = " (set by the lanes option)"
             for name, (value, location) in bounds.items():
                 if (name == "path_min_driving_lanes" and lanes < value) or (name == "path_max_lanes" and lanes > value):
                     bound = "at least" if name == "path_min_driving_lanes" else "at most"
-                    self.error(location, f"the scenario asks for {bound} {value} lanes, but the lanes option sets {lanes}", "leave out the lanes option (--lanes, roadlogic_lanes) to take the road from the scenario")
+                    self.error(
+                        location,
+                        f"the scenario asks for {bound} {value} lanes, but the lanes option sets {lanes}",
+                        "leave out the lanes option (--lanes, roadlogic_lanes) to take the road from the scenario",
+                    )
             if lanes > MAX_LANES:
-                self.error(scenario.location, f"a road of {lanes} lanes (the lanes option); the tool drives at most {MAX_LANES}", "give a smaller --lanes" + MAX_LANES_WHY)
+                self.error(
+                    scenario.location,
+                    f"a road of {lanes} lanes (the lanes option); the tool drives at most {MAX_LANES}",
+                    "give a smaller --lanes" + MAX_LANES_WHY,
+                )
         else:
             used, where = self._lanes_used(scenario, env)
             if least and least[0] >= used:
@@ -679,41 +944,72 @@ class _Checker:
                 self.lanes_origin = f" (path_max_lanes({lanes}) on line {most[1].line})"
             if lanes > MAX_LANES:
                 # the one error for it: the road keeps the lanes asked for, so the lane checks stay quiet
-                self.error(where, f"a road of {lanes} lanes; the tool drives at most {MAX_LANES}", f"use lanes 1 to {MAX_LANES}" + MAX_LANES_WHY)
+                self.error(
+                    where,
+                    f"a road of {lanes} lanes; the tool drives at most {MAX_LANES}",
+                    f"use lanes 1 to {MAX_LANES}" + MAX_LANES_WHY,
+                )
         self.lanes = lanes
         return lanes
 
-    def _road_bounds(self, scenario: model.Scenario, env: dict, roads: list[str]) -> dict[str, tuple[int, SourceLocation]]:
+    def _road_bounds(
+        self, scenario: model.Scenario, env: dict, roads: list[str]
+    ) -> dict[str, tuple[int, SourceLocation]]:
         """The lane bounds the scenario's road modifiers state, by modifier name; other scenario-wide modifiers are refused."""
         bounds: dict[str, tuple[int, SourceLocation]] = {}
         for modifier in scenario.modifiers:
             on_road = modifier.actor in roads or (modifier.actor is None and modifier.name in library.ROAD_MODIFIERS)
             if not on_road:
                 if modifier.actor is None or scenario.actor(modifier.actor) is not None:
-                    self.error(modifier.location, "not supported: a modifier applied to the whole scenario", "put it in the with: block of an invocation")
+                    self.error(
+                        modifier.location,
+                        "not supported: a modifier applied to the whole scenario",
+                        "put it in the with: block of an invocation",
+                    )
                 else:
-                    self.error(modifier.location, f"unknown road {modifier.actor!r}", f"declare it in the scenario: {modifier.actor}: {library.ROAD_TYPE}")
+                    self.error(
+                        modifier.location,
+                        f"unknown road {modifier.actor!r}",
+                        f"declare it in the scenario: {modifier.actor}: {library.ROAD_TYPE}",
+                    )
                 continue
             signature = library.ROAD_MODIFIERS.get(modifier.name)
             if signature is None:
-                self.error(modifier.location, f"not supported: {modifier.name}() of the road", f"the road is one straight highway; {self._known('road modifiers', library.ROAD_MODIFIERS)}")
+                self.error(
+                    modifier.location,
+                    f"not supported: {modifier.name}() of the road",
+                    f"the road is one straight highway; {self._known('road modifiers', library.ROAD_MODIFIERS)}",
+                )
                 continue
             before = len(self.diagnostics)
-            binding = self._arguments(signature, modifier.arguments, modifier.location, scenario, env, set(), set(), what=f"{modifier.name}()")
+            binding = self._arguments(
+                signature, modifier.arguments, modifier.location, scenario, env, set(), set(), what=f"{modifier.name}()"
+            )
             if modifier.name == "set_map":
                 hint = "give the road's lanes with path_min_driving_lanes(n)"
                 if self.registry.dialect == STANDARD_DIALECT:
                     hint += "; a file written for CARLA's scenario runner is read with --dialect carla (pytest: --roadlogic-dialect carla or roadlogic_dialect = carla): lanes numbered from the left, speed(v) a target"
-                self.warning(modifier.location, "the map is not available: the scenario runs on one straight road", hint)
+                self.warning(
+                    modifier.location, "the map is not available: the scenario runs on one straight road", hint
+                )
                 continue
             argument = binding["lanes"]
             if argument is None or any(d.severity == "error" for d in self.diagnostics[before:]):
                 continue
             value = evaluate(argument.value, env)
-            if not (isinstance(value, Interval) and value.is_point and float(value.low).is_integer() and value.low >= 1):
-                self.error(argument.value.location, f"{modifier.name}() takes one whole number of lanes from 1 up, e.g. {modifier.name}(3)")
+            if not (
+                isinstance(value, Interval) and value.is_point and float(value.low).is_integer() and value.low >= 1
+            ):
+                self.error(
+                    argument.value.location,
+                    f"{modifier.name}() takes one whole number of lanes from 1 up, e.g. {modifier.name}(3)",
+                )
             elif modifier.name in bounds:
-                self.error(modifier.location, f"{modifier.name}() is already given on line {bounds[modifier.name][1].line}", "give it once")
+                self.error(
+                    modifier.location,
+                    f"{modifier.name}() is already given on line {bounds[modifier.name][1].line}",
+                    "give it once",
+                )
             else:
                 bounds[modifier.name] = (int(value.low), modifier.location)
         return bounds
@@ -745,7 +1041,9 @@ class _Checker:
                             needed, where = lanes, location
         return needed, where
 
-    def _event_specification(self, spec, scenario: model.Scenario, env: dict, location: SourceLocation, waits: bool = False) -> None:
+    def _event_specification(
+        self, spec, scenario: model.Scenario, env: dict, location: SourceLocation, waits: bool = False
+    ) -> None:
         """An event reference or a condition (``constructs.conditions`` says which ones the tool reads);
         ``waits``: it is a ``wait``'s, which may also be ``elapsed(t)``."""
         from ..constructs.conditions import condition_guard  # imported here for the reason given in __init__
@@ -755,15 +1053,24 @@ class _Checker:
             if spec.name not in events:
                 label, _, edge = spec.name.rpartition(".")
                 if edge in EDGES:  # with_builtin_events declared those of every labelled phase
-                    labels = sorted({n.label for b in scenario.behaviors for n in model.walk(b) if getattr(n, "label", None)})
-                    self.error(spec.location, f"@{spec.name} is the {edge} of the phase labelled {label!r}, and no phase has that label",
-                               f"label the phase ({label}: ...); labels here: {', '.join(labels) or 'none'}")
+                    labels = sorted(
+                        {n.label for b in scenario.behaviors for n in model.walk(b) if getattr(n, "label", None)}
+                    )
+                    self.error(
+                        spec.location,
+                        f"@{spec.name} is the {edge} of the phase labelled {label!r}, and no phase has that label",
+                        f"label the phase ({label}: ...); labels here: {', '.join(labels) or 'none'}",
+                    )
                 else:
                     self.error(spec.location, f"unknown event {spec.name!r}", f"declare it: event {spec.name}")
                 return
             declared = events[spec.name]
             if declared.specification is None and spec.name not in self._emitted(scenario):
-                self.error(spec.location, f"nothing emits the event {spec.name!r}: this wait never ends", f"emit it where it happens: emit {spec.name}")
+                self.error(
+                    spec.location,
+                    f"nothing emits the event {spec.name!r}: this wait never ends",
+                    f"emit it where it happens: emit {spec.name}",
+                )
             if spec.condition is not None:
                 self._event_specification(spec.condition, scenario, env, location)
             return
@@ -778,7 +1085,12 @@ class _Checker:
 
     @staticmethod
     def _emitted(scenario: model.Scenario) -> set[str]:
-        return {node.event for behavior in scenario.behaviors for node in model.walk(behavior) if isinstance(node, model.Emit)}
+        return {
+            node.event
+            for behavior in scenario.behaviors
+            for node in model.walk(behavior)
+            if isinstance(node, model.Emit)
+        }
 
     def _elapsed(self, call: model.Call, env: dict) -> None:
         if len(call.arguments) != 1 or call.arguments[0].name is not None:
@@ -791,7 +1103,9 @@ class _Checker:
             return
         if not isinstance(value, Interval) or value.dimension != TIME:
             got = describe(value.dimension) if isinstance(value, Interval) else "a name"
-            self.error(call.arguments[0].location, f"elapsed() expects a time, got {got}", "write it with a unit, e.g. 3s")
+            self.error(
+                call.arguments[0].location, f"elapsed() expects a time, got {got}", "write it with a unit, e.g. 3s"
+            )
 
     def _environment(self, scenario: model.Scenario, space: ParameterSpace) -> dict[str, object]:
         """Names an expression of this scenario may read: parameters (their ranges) and actors' speed and lane."""
@@ -830,6 +1144,8 @@ def _extend(scenario: model.Scenario, extra: model.Scenario) -> model.Scenario:
         events=scenario.events + extra.events,
         methods=scenario.methods + extra.methods,
         behaviors=scenario.behaviors + extra.behaviors,
-        behavior=scenario.behavior if scenario.behavior is not None else (extra.behaviors[0] if extra.behaviors else None),
+        behavior=scenario.behavior
+        if scenario.behavior is not None
+        else (extra.behaviors[0] if extra.behaviors else None),
         unsupported=scenario.unsupported + extra.unsupported,
     )

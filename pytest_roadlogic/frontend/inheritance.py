@@ -22,7 +22,9 @@ from . import model
 from .errors import Diagnostic
 
 
-def inherited(scenario: model.Scenario, scenarios: Mapping[str, model.Scenario]) -> tuple[model.Scenario, list[Diagnostic]]:
+def inherited(
+    scenario: model.Scenario, scenarios: Mapping[str, model.Scenario]
+) -> tuple[model.Scenario, list[Diagnostic]]:
     """``scenario`` with the members of its ancestors, and the problems of its ``inherits`` chain."""
     problems: list[Diagnostic] = []
     chain = [scenario]
@@ -31,11 +33,23 @@ def inherited(scenario: model.Scenario, scenarios: Mapping[str, model.Scenario])
         parent = scenarios.get(child.parent)
         if parent is None:
             known = ", ".join(sorted(n for n in scenarios if n != scenario.name)) or "none"
-            problems.append(Diagnostic(child.location, f"scenario {child.name!r} inherits an unknown scenario {child.parent!r}", f"scenarios declared here or imported: {known}"))
+            problems.append(
+                Diagnostic(
+                    child.location,
+                    f"scenario {child.name!r} inherits an unknown scenario {child.parent!r}",
+                    f"scenarios declared here or imported: {known}",
+                )
+            )
             break
         if any(parent is seen for seen in chain):
             names = " -> ".join(s.name for s in (*chain, parent))
-            problems.append(Diagnostic(scenario.location, f"the inherits of scenario {scenario.name!r} form a cycle ({names})", "remove one inherits from the cycle"))
+            problems.append(
+                Diagnostic(
+                    scenario.location,
+                    f"the inherits of scenario {scenario.name!r} form a cycle ({names})",
+                    "remove one inherits from the cycle",
+                )
+            )
             break
         chain.append(parent)
     result = chain[-1]
@@ -51,11 +65,13 @@ def _merged(parent: model.Scenario, child: model.Scenario) -> tuple[model.Scenar
     if parent.behaviors and child.behaviors:
         behaviors = parent.behaviors
         first = parent.behaviors[0]
-        problems.append(Diagnostic(
-            child.behaviors[0].location,
-            f"scenario {child.name!r} declares a do and inherits one from {parent.name!r} (line {first.location.line}); a scenario has one do",
-            f"remove this do to keep {parent.name}'s, or declare {child.name} without inherits and call {parent.name}() in its do",
-        ))
+        problems.append(
+            Diagnostic(
+                child.behaviors[0].location,
+                f"scenario {child.name!r} declares a do and inherits one from {parent.name!r} (line {first.location.line}); a scenario has one do",
+                f"remove this do to keep {parent.name}'s, or declare {child.name} without inherits and call {parent.name}() in its do",
+            )
+        )
     return dataclasses.replace(
         child,
         actor_type=child.actor_type if child.actor_type is not None else parent.actor_type,

@@ -50,9 +50,16 @@ def _is_call(node, callable_: Mapping[str, model.Scenario], is_action: Callable[
 RECURSION = "calls itself"  # the words of the error for a scenario that contains itself
 
 
-def called_scenarios(scenario: model.Scenario, callable_: Mapping[str, model.Scenario], is_action: Callable[[str], bool]) -> set[str]:
+def called_scenarios(
+    scenario: model.Scenario, callable_: Mapping[str, model.Scenario], is_action: Callable[[str], bool]
+) -> set[str]:
     """The names of the user scenarios ``scenario``'s behavior calls directly."""
-    return {node.action for behavior in scenario.behaviors for node in model.walk(behavior) if _is_call(node, callable_, is_action)}
+    return {
+        node.action
+        for behavior in scenario.behaviors
+        for node in model.walk(behavior)
+        if _is_call(node, callable_, is_action)
+    }
 
 
 def expand_calls(
@@ -68,7 +75,9 @@ def expand_calls(
         return scenario, []
     expansion = Expansion()
     names = {f.name for f in scenario.fields}
-    behaviors = tuple(_expand(b, callable_, is_action, is_actor, expansion, names, (scenario.name,)) for b in scenario.behaviors)
+    behaviors = tuple(
+        _expand(b, callable_, is_action, is_actor, expansion, names, (scenario.name,)) for b in scenario.behaviors
+    )
     known_events = {e.name for e in scenario.events}
     events = [e for e in expansion.events if e.name not in known_events]
     expanded = dataclasses.replace(
@@ -90,14 +99,24 @@ def _expand(behavior, callable_, is_action, is_actor, expansion: Expansion, name
         return behavior
     callee = callable_[behavior.action]
     if behavior.action in stack or len(stack) > MAX_DEPTH:
-        cycle = (*(stack[stack.index(behavior.action):] if behavior.action in stack else stack), behavior.action)
-        expansion.error(behavior.location, f"scenario {behavior.action!r} {RECURSION} ({' -> '.join(cycle)})", "a scenario cannot contain itself; remove the call")
+        cycle = (*(stack[stack.index(behavior.action) :] if behavior.action in stack else stack), behavior.action)
+        expansion.error(
+            behavior.location,
+            f"scenario {behavior.action!r} {RECURSION} ({' -> '.join(cycle)})",
+            "a scenario cannot contain itself; remove the call",
+        )
         return behavior
     if callee.behavior is None:
-        expansion.error(behavior.location, f"scenario {behavior.action!r} has no do to call", "give it a do, or invoke an action")
+        expansion.error(
+            behavior.location, f"scenario {behavior.action!r} has no do to call", "give it a do, or invoke an action"
+        )
         return behavior
     if behavior.modifiers or behavior.constraints or behavior.until is not None:
-        expansion.error(behavior.location, f"not supported: modifiers on a call of scenario {behavior.action!r}", "put the modifiers inside the called scenario, or pass values as arguments")
+        expansion.error(
+            behavior.location,
+            f"not supported: modifiers on a call of scenario {behavior.action!r}",
+            "put the modifiers inside the called scenario, or pass values as arguments",
+        )
     prefix = behavior.label or callee.name
     substitution = _bind(behavior, callee, is_actor, expansion, names, prefix)
     owner = behavior.actor
@@ -114,7 +133,9 @@ def _expand(behavior, callable_, is_action, is_actor, expansion: Expansion, name
     return body
 
 
-def _bind(call: model.Invocation, callee: model.Scenario, is_actor, expansion: Expansion, names: set[str], prefix: str) -> dict[str, model.Expression]:
+def _bind(
+    call: model.Invocation, callee: model.Scenario, is_actor, expansion: Expansion, names: set[str], prefix: str
+) -> dict[str, model.Expression]:
     """What each of the callee's field names stands for in the caller; adds the caller's new fields."""
     actors = [f for f in callee.fields if is_actor(f)]
     parameters = [f for f in callee.fields if not is_actor(f)]
@@ -124,7 +145,11 @@ def _bind(call: model.Invocation, callee: model.Scenario, is_actor, expansion: E
     for argument in call.arguments:
         if argument.name is None:
             if not positional:
-                expansion.error(argument.location, f"scenario {callee.name!r} takes no more positional arguments", "name the argument: gap: 20m")
+                expansion.error(
+                    argument.location,
+                    f"scenario {callee.name!r} takes no more positional arguments",
+                    "name the argument: gap: 20m",
+                )
                 continue
             given[positional.pop(0).name] = argument
         elif argument.name in by_name:
@@ -132,13 +157,18 @@ def _bind(call: model.Invocation, callee: model.Scenario, is_actor, expansion: E
             positional = [p for p in positional if p.name != argument.name]
         elif argument.name != "duration":
             known = ", ".join(f.name for f in callee.fields) or "none"
-            expansion.error(argument.location, f"scenario {callee.name!r} has no field {argument.name!r}", f"its fields: {known}")
+            expansion.error(
+                argument.location, f"scenario {callee.name!r} has no field {argument.name!r}", f"its fields: {known}"
+            )
     substitution: dict[str, model.Expression] = {}
     for field in actors:
         if field.name in given:
             value = given[field.name].value
             if not isinstance(value, model.Name):
-                expansion.error(given[field.name].location, f"{field.name!r} is an actor: pass the name of one of the caller's actors")
+                expansion.error(
+                    given[field.name].location,
+                    f"{field.name!r} is an actor: pass the name of one of the caller's actors",
+                )
                 continue
             substitution[field.name] = value
         elif field.name not in names:
@@ -152,7 +182,9 @@ def _bind(call: model.Invocation, callee: model.Scenario, is_actor, expansion: E
         substitution[field.name] = model.Name(renamed, field.location)
         if renamed not in names:
             constraints = tuple(
-                dataclasses.replace(_substitute(c, substitution, None), subject=renamed) if isinstance(c, model.Keep) and c.subject == field.name else _substitute(c, substitution, None)
+                dataclasses.replace(_substitute(c, substitution, None), subject=renamed)
+                if isinstance(c, model.Keep) and c.subject == field.name
+                else _substitute(c, substitution, None)
                 for c in field.constraints
             )
             expansion.fields.append(dataclasses.replace(field, name=renamed, constraints=constraints))
@@ -171,7 +203,11 @@ def _substitute(node, substitution: Mapping[str, model.Expression], owner: str |
             return node
         if not dot:
             return replacement
-        return dataclasses.replace(node, name=f"{replacement.name}.{rest}") if isinstance(replacement, model.Name) else node
+        return (
+            dataclasses.replace(node, name=f"{replacement.name}.{rest}")
+            if isinstance(replacement, model.Name)
+            else node
+        )
     if isinstance(node, tuple):
         return tuple(_substitute(item, substitution, owner) for item in node)
     if not dataclasses.is_dataclass(node) or isinstance(node, type):
@@ -194,5 +230,7 @@ def _relabel(behavior, prefix: str):
     """The callee's labels as ``prefix.label``: a scenario called twice keeps its phases apart."""
     label = f"{prefix}.{behavior.label}" if behavior.label else None
     if isinstance(behavior, model.Composition):
-        return dataclasses.replace(behavior, label=label, children=tuple(_relabel(c, prefix) for c in behavior.children))
+        return dataclasses.replace(
+            behavior, label=label, children=tuple(_relabel(c, prefix) for c in behavior.children)
+        )
     return dataclasses.replace(behavior, label=label)

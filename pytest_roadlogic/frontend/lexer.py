@@ -119,7 +119,9 @@ class IndentingLexer(OpenScenario2Lexer):
         self._pending.append(token)
 
     def _make(self, kind: int, text: str, at: Token) -> Token:
-        token = CommonToken(source=at.source, type=kind, channel=Token.DEFAULT_CHANNEL, start=at.start, stop=at.start - 1)
+        token = CommonToken(
+            source=at.source, type=kind, channel=Token.DEFAULT_CHANNEL, start=at.start, stop=at.start - 1
+        )
         token.text = text
         token.line = at.line
         token.column = at.column

@@ -27,7 +27,11 @@ DUT_ACTOR = "dut.car"
 # The standard library's actors above the road users (stdlib/osc/actors.osc): a type a file derives
 # from one of them is driven as a vehicle, with a warning, as a bare actor type is.
 ABSTRACT_ACTOR_TYPES: Mapping[str, None] = LazyTable(
-    lambda library: dict.fromkeys(name for name in library.actors if any(name in library.ancestors(t) for t in ACTOR_TYPES) and name not in ACTOR_TYPES)
+    lambda library: dict.fromkeys(
+        name
+        for name in library.actors
+        if any(name in library.ancestors(t) for t in ACTOR_TYPES) and name not in ACTOR_TYPES
+    )
 )
 # Standard actor types that cannot appear on a highway-only road.
 UNSUPPORTED_ACTOR_TYPES = ("person", "pedestrian", "animal", "cyclist", "bicycle", "traffic_light", "environment")
@@ -39,8 +43,12 @@ ROAD_TYPE = "Path"
 NUMBER_TYPES = ("int", "uint", "float")
 # the physical types the pipeline models (length, time, speed, acceleration: metres and seconds),
 # as the standard library declares them (stdlib/osc/physical.osc); read on first use
-PHYSICAL_TYPES: Mapping[str, str] = LazyTable(lambda library: {name: dimension for name, dimension in library.types.items() if dimension is not None})
-SCALAR_TYPES: Mapping[str, None] = LazyTable(lambda library: dict.fromkeys([*PHYSICAL_TYPES, *NUMBER_TYPES, "bool", "string"]))
+PHYSICAL_TYPES: Mapping[str, str] = LazyTable(
+    lambda library: {name: dimension for name, dimension in library.types.items() if dimension is not None}
+)
+SCALAR_TYPES: Mapping[str, None] = LazyTable(
+    lambda library: dict.fromkeys([*PHYSICAL_TYPES, *NUMBER_TYPES, "bool", "string"])
+)
 
 # the standard library's enums (stdlib/osc/types.osc)
 ENUMS: Mapping[str, tuple[str, ...]] = LazyTable(lambda library: library.enums)
@@ -126,7 +134,10 @@ def bind(signature: Signature, arguments: tuple[model.Argument, ...]) -> Binding
 AT = Parameter("at", "enum:at")
 DURATION = Parameter("duration", "time")
 # a lane change's rate: its lateral speed, which the motion planner chooses
-RATE = (Parameter("rate_profile", "enum:rate_profile", supported=False), Parameter("rate_peak", "speed", supported=False))
+RATE = (
+    Parameter("rate_profile", "enum:rate_profile", supported=False),
+    Parameter("rate_peak", "speed", supported=False),
+)
 
 
 def _signatures(*items: Signature) -> dict[str, Signature]:
@@ -137,7 +148,12 @@ COMPOSITIONS: dict[str, Signature] = _signatures(
     Signature("serial", (DURATION,)),
     Signature(
         "parallel",
-        (DURATION, Parameter("overlap", "enum:overlap"), Parameter("start_to_start", "time"), Parameter("end_to_end", "time")),
+        (
+            DURATION,
+            Parameter("overlap", "enum:overlap"),
+            Parameter("start_to_start", "time"),
+            Parameter("end_to_end", "time"),
+        ),
     ),
     Signature("one_of", (DURATION,)),
 )
@@ -145,17 +161,37 @@ COMPOSITIONS: dict[str, Signature] = _signatures(
 # Modifiers of the road (ROAD_TYPE), applied to the whole scenario. The road is always one straight
 # highway, so only its lane count can be asked for.
 ROAD_MODIFIERS: dict[str, Signature] = _signatures(
-    Signature("path_min_driving_lanes", (Parameter("lanes", "uint", positional=True),), required=(("lanes",),), description="the road has at least this many lanes"),
-    Signature("path_max_lanes", (Parameter("lanes", "uint", positional=True),), required=(("lanes",),), description="the road has at most this many lanes"),
+    Signature(
+        "path_min_driving_lanes",
+        (Parameter("lanes", "uint", positional=True),),
+        required=(("lanes",),),
+        description="the road has at least this many lanes",
+    ),
+    Signature(
+        "path_max_lanes",
+        (Parameter("lanes", "uint", positional=True),),
+        required=(("lanes",),),
+        description="the road has at most this many lanes",
+    ),
     # CARLA's town maps: accepted with a warning, the straight road stands in for the map
-    Signature("set_map", (Parameter("map", "string", positional=True),), required=(("map",),), description="the map the scenario was written for"),
+    Signature(
+        "set_map",
+        (Parameter("map", "string", positional=True),),
+        required=(("map",),),
+        description="the map the scenario was written for",
+    ),
 )
 
 # Functions usable in expressions, and those refused by name (tier 3).
 FUNCTIONS = ("elapsed", "range")
 UNSUPPORTED_FUNCTIONS = ("rise", "fall", "every", "sample", "random")
 # expressions the grammar reads and nothing evaluates, by the function name the parser gives them
-UNSUPPORTED_EXPRESSIONS = {"is": "a type test x.is(T)", "as": "a cast x.as(T)", "[]": "list element access x[i]", "?:": "a conditional expression c ? a : b"}
+UNSUPPORTED_EXPRESSIONS = {
+    "is": "a type test x.is(T)",
+    "as": "a cast x.as(T)",
+    "[]": "list element access x[i]",
+    "?:": "a conditional expression c ? a : b",
+}
 
 
 def refused_call(expression: object) -> str | None:

@@ -26,7 +26,13 @@ MAX_MAGNITUDE = 1e6
 def check_limits(text: str, path: str) -> None:
     """Raise ``OscError`` at the first place where ``text`` goes past a limit of this module."""
     if len(text) > MAX_BYTES:
-        _refuse(path, 1, 1, f"the file has {len(text):,} characters; the front end reads at most {MAX_BYTES:,}", "split it into several files")
+        _refuse(
+            path,
+            1,
+            1,
+            f"the file has {len(text):,} characters; the front end reads at most {MAX_BYTES:,}",
+            "split it into several files",
+        )
     blocks: list[int] = [0]
     for number, line in enumerate(text.split("\n"), start=1):
         stripped = line.lstrip(" \t")
@@ -37,8 +43,14 @@ def check_limits(text: str, path: str) -> None:
             if width > blocks[-1]:
                 blocks.append(width)
             if len(blocks) - 1 > MAX_BLOCKS:
-                _refuse(path, number, width + 1, f"blocks nested {len(blocks) - 1} deep; the front end reads at most {MAX_BLOCKS}",
-                        "flatten the behavior, or move a part into a scenario of its own and call it", text)
+                _refuse(
+                    path,
+                    number,
+                    width + 1,
+                    f"blocks nested {len(blocks) - 1} deep; the front end reads at most {MAX_BLOCKS}",
+                    "flatten the behavior, or move a part into a scenario of its own and call it",
+                    text,
+                )
     depth, line, column, quote, comment = 0, 1, 0, "", False
     name_start, name_length = (0, 0), 0
     for char in text:
@@ -68,8 +80,14 @@ def check_limits(text: str, path: str) -> None:
         elif char in "([{":
             depth += 1
             if depth > MAX_BRACKETS:
-                _refuse(path, line, column, f"brackets nested {depth} deep; the front end reads at most {MAX_BRACKETS}",
-                        "split the expression with a parameter or a def", text)
+                _refuse(
+                    path,
+                    line,
+                    column,
+                    f"brackets nested {depth} deep; the front end reads at most {MAX_BRACKETS}",
+                    "split the expression with a parameter or a def",
+                    text,
+                )
         elif char in ")]}":
             depth = max(0, depth - 1)
 

@@ -12,7 +12,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Union
 
 from .errors import SourceLocation
 
@@ -67,14 +66,14 @@ class Literal:
 
 @dataclass(frozen=True)
 class ListValue:
-    items: tuple["Expression", ...]
+    items: tuple[Expression, ...]
     location: SourceLocation
 
 
 @dataclass(frozen=True)
 class Unary:
     operator: str  # '-', '+', 'not'
-    operand: "Expression"
+    operand: Expression
     location: SourceLocation
 
 
@@ -83,8 +82,8 @@ class Binary:
     """``left op right`` for arithmetic, comparison (``==``, ``in``, ...) and logic (``and``, ``=>``)."""
 
     operator: str
-    left: "Expression"
-    right: "Expression"
+    left: Expression
+    right: Expression
     location: SourceLocation
 
 
@@ -93,11 +92,11 @@ class Call:
     """A function-style expression: ``elapsed(3s)``, ``range(1m, 2m)``, ``sample(...)``."""
 
     function: str
-    arguments: tuple["Argument", ...]
+    arguments: tuple[Argument, ...]
     location: SourceLocation
 
 
-Expression = Union[Quantity, Range, Name, Literal, ListValue, Unary, Binary, Call]
+Expression = Quantity | Range | Name | Literal | ListValue | Unary | Binary | Call
 Value = Expression  # kept for readers of older code: an argument's value is any expression
 
 
@@ -153,7 +152,7 @@ class Field:
 @dataclass(frozen=True)
 class Event:
     name: str
-    specification: "EventSpecification | None"
+    specification: EventSpecification | None
     location: SourceLocation
 
 
@@ -166,7 +165,7 @@ class EventReference:
     location: SourceLocation
 
 
-EventSpecification = Union[EventReference, Expression]
+EventSpecification = EventReference | Expression
 
 
 @dataclass(frozen=True)
@@ -232,7 +231,7 @@ class Composition:
 
     operator: str
     arguments: tuple[Argument, ...]
-    children: tuple["Behavior", ...]
+    children: tuple[Behavior, ...]
     label: str | None
     location: SourceLocation
 
@@ -266,7 +265,7 @@ class CallStatement:
     location: SourceLocation
 
 
-Behavior = Union[Invocation, Composition, Wait, Emit, CallStatement]
+Behavior = Invocation | Composition | Wait | Emit | CallStatement
 
 
 def walk(behavior: Behavior):

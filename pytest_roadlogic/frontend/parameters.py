@@ -172,8 +172,11 @@ class _Resolver:
                 # keep(a + b <= 20m) with a and b in [15..25]m: every sample had been filtered out
                 # (a Hypothesis traceback), and --values ran a case that breaks it as conformant
                 names = sorted({n.name for n in names_in(relation.expression)} & set(space.domains))
-                self.add_error(relation.location, "no values of the parameters' ranges meet this constraint",
-                               f"widen the ranges of {', '.join(names)} or the constraint" if names else "widen the constraint")
+                self.add_error(
+                    relation.location,
+                    "no values of the parameters' ranges meet this constraint",
+                    f"widen the ranges of {', '.join(names)} or the constraint" if names else "widen the constraint",
+                )
         return space
 
     def domain(self, parameter: model.Field) -> ParameterDomain:
@@ -195,7 +198,11 @@ class _Resolver:
                 if isinstance(value, Interval):
                     narrowed = interval.intersect(value)
                     if narrowed.empty:
-                        self.add_error(default[1], f"the default of {name!r} ({value}) lies outside its range {interval}; it is ignored", severity="warning")
+                        self.add_error(
+                            default[1],
+                            f"the default of {name!r} ({value}) lies outside its range {interval}; it is ignored",
+                            severity="warning",
+                        )
                     else:
                         interval = narrowed
             return ParameterDomain(name, parameter.type, parameter.location, interval=interval)
@@ -203,7 +210,9 @@ class _Resolver:
         if default is not None:
             value = default[0]
             if options and value not in options:
-                self.add_error(default[1], f"the default of {name!r} is not one of its values ({', '.join(map(str, options))})")
+                self.add_error(
+                    default[1], f"the default of {name!r} is not one of its values ({', '.join(map(str, options))})"
+                )
             else:
                 options = (value,)
         return ParameterDomain(name, parameter.type, parameter.location, choices=options)
@@ -224,12 +233,24 @@ class _Resolver:
             if (n.name == "it" and constraint.subject in by_name) or n.name in by_name
         }
         for name in names_in(atom):
-            if name.enum is None and name.name not in by_name and not (name.name == "it" and constraint.subject in by_name):
+            if (
+                name.enum is None
+                and name.name not in by_name
+                and not (name.name == "it" and constraint.subject in by_name)
+            ):
                 if not any(name.name in members for members in self.enums.values()):
-                    self.add_error(name.location, f"unknown name {name.name!r} in a constraint", "a keep() constrains parameters of this scenario")
+                    self.add_error(
+                        name.location,
+                        f"unknown name {name.name!r} in a constraint",
+                        "a keep() constrains parameters of this scenario",
+                    )
                     return
         if not mentioned:
-            self.add_error(constraint.location, "this constraint mentions no parameter", "a keep() constrains parameters of this scenario")
+            self.add_error(
+                constraint.location,
+                "this constraint mentions no parameter",
+                "a keep() constrains parameters of this scenario",
+            )
             return
         if isinstance(atom, model.Binary) and atom.operator in _BOUND_OPERATORS:
             left, right = self.subject(atom.left, constraint), self.subject(atom.right, constraint)
@@ -243,7 +264,11 @@ class _Resolver:
                 return
         # A relation between parameters (or a form with or/not/=>): checked on samples.
         if constraint.strength == "default":
-            self.add_error(constraint.location, "not supported: a default constraint relating several parameters", "make it a hard keep()")
+            self.add_error(
+                constraint.location,
+                "not supported: a default constraint relating several parameters",
+                "make it a hard keep()",
+            )
             return
         try:
             evaluate(atom, self.env)
@@ -252,7 +277,9 @@ class _Resolver:
             return
         self.relations.append(model.Keep(atom, constraint.strength, constraint.location, constraint.subject))
 
-    def bound(self, name: str, operator: str, other: model.Expression, atom: model.Expression, constraint: model.Keep) -> None:
+    def bound(
+        self, name: str, operator: str, other: model.Expression, atom: model.Expression, constraint: model.Keep
+    ) -> None:
         parameter = self.by_name[name]
         if constraint.strength == "default":
             if operator not in ("==", "in"):
@@ -272,7 +299,11 @@ class _Resolver:
             if value is not None:
                 options = self.choices[name]
                 if options and value not in options:
-                    self.add_error(other.location, f"{value!r} is not a value of {parameter.type}", f"its values: {', '.join(map(str, options))}")
+                    self.add_error(
+                        other.location,
+                        f"{value!r} is not a value of {parameter.type}",
+                        f"its values: {', '.join(map(str, options))}",
+                    )
                 else:
                     self.choices[name] = (value,)
             return
@@ -311,7 +342,11 @@ class _Resolver:
             dimension = library.PHYSICAL_TYPES.get(parameter.type)
             if not isinstance(value, Interval) or value.dimension != dimension:
                 got = describe(value.dimension) if isinstance(value, Interval) else "a name"
-                self.add_error(expression.location, f"{parameter.name!r} is {_kind(parameter)} but this is {got}", "use a unit of the parameter's kind")
+                self.add_error(
+                    expression.location,
+                    f"{parameter.name!r} is {_kind(parameter)} but this is {got}",
+                    "use a unit of the parameter's kind",
+                )
                 return None
             if not value.is_point and not allow_range:
                 self.add_error(expression.location, "expected a single value, not a range")
@@ -329,7 +364,9 @@ class _Resolver:
             return None
         if isinstance(expression, model.Name):
             if expression.enum is not None and expression.enum != parameter.type:
-                self.add_error(expression.location, f"{expression.enum}!{expression.name} is not a value of {parameter.type}")
+                self.add_error(
+                    expression.location, f"{expression.enum}!{expression.name} is not a value of {parameter.type}"
+                )
                 return None
             return expression.name
         self.add_error(expression.location, f"{parameter.name!r} is a {parameter.type}: write one of its values")

@@ -22,7 +22,9 @@ from .limits import MAX_BYTES
 from .standard_library import UNITS, standard_library
 
 
-def parse_text(text: str, path: str = "<string>", units: Mapping[str, tuple[str | None, float]] | None = None) -> model.OscFile:
+def parse_text(
+    text: str, path: str = "<string>", units: Mapping[str, tuple[str | None, float]] | None = None
+) -> model.OscFile:
     """Parse OS2 source text; raise ``OscError`` naming every syntax error found. ``units``: the
     table physical literals are read with (default: the standard library's)."""
     return syntax.parse_text(text, path, UNITS if units is None else units, standard_library().unmodelled_units)
@@ -33,23 +35,39 @@ def parse_file(path: str | Path, units: Mapping[str, tuple[str | None, float]] |
     problem = regular_file_problem(path)
     if problem is not None:
         # asked before opening: a FIFO named x.osc made `roadlogic check` wait forever
-        raise OscError([Diagnostic(SourceLocation(str(path), 1, 1), f"cannot read the file: {problem}", "give an .osc file")], "") from None
+        raise OscError(
+            [Diagnostic(SourceLocation(str(path), 1, 1), f"cannot read the file: {problem}", "give an .osc file")], ""
+        ) from None
     try:
         with open(path, "rb") as stream:
             data = stream.read(4 * MAX_BYTES + 1)  # a character is at most 4 bytes: /dev/zero-sized files stop here
         if len(data) > 4 * MAX_BYTES:
-            raise OscError([Diagnostic(SourceLocation(str(path), 1, 1), f"the file has more than {4 * MAX_BYTES:,} bytes; the front end reads at most {MAX_BYTES:,} characters",
-                                       "split it into several files")], "")
+            raise OscError(
+                [
+                    Diagnostic(
+                        SourceLocation(str(path), 1, 1),
+                        f"the file has more than {4 * MAX_BYTES:,} bytes; the front end reads at most {MAX_BYTES:,} characters",
+                        "split it into several files",
+                    )
+                ],
+                "",
+            )
         text = data.decode("utf-8").replace("\r\n", "\n").replace("\r", "\n")  # as text mode reads it
     except UnicodeDecodeError as exc:
         data = exc.object
         line = data.count(b"\n", 0, exc.start) + 1
         column = exc.start - (data.rfind(b"\n", 0, exc.start) + 1) + 1
-        shown = data[data.rfind(b"\n", 0, exc.start) + 1:].split(b"\n", 1)[0].decode("utf-8", errors="replace")
-        raise OscError([Diagnostic(SourceLocation(str(path), line, column), f"the file is not valid UTF-8: byte 0x{data[exc.start]:02x} ({exc.reason})",
-                                   "save it as UTF-8")], "\n" * (line - 1) + shown) from None
+        shown = data[data.rfind(b"\n", 0, exc.start) + 1 :].split(b"\n", 1)[0].decode("utf-8", errors="replace")
+        raise OscError(
+            [
+                Diagnostic(
+                    SourceLocation(str(path), line, column),
+                    f"the file is not valid UTF-8: byte 0x{data[exc.start]:02x} ({exc.reason})",
+                    "save it as UTF-8",
+                )
+            ],
+            "\n" * (line - 1) + shown,
+        ) from None
     except OSError as exc:
         raise OscError([Diagnostic(SourceLocation(str(path), 1, 1), f"cannot read the file: {exc.strerror}")]) from None
     return parse_text(text, str(path), units)
-
-

@@ -52,38 +52,73 @@ def declared_physics(files: Iterable[model.OscFile]) -> DeclaredPhysics:
             dimension = dimension_of(declared.exponents)
             known = physics.types.get(declared.name, "absent")
             if known != "absent" and known != dimension:
-                where = "in the standard library (osc.physical)" if declared.name in standard_library().types else "where declared before"
-                physics.problems.append(Diagnostic(declared.location, f"type {declared.name!r} is {_show(dimension)} here but {_show(known)} {where}", "give the type another name, or its exponents"))
+                where = (
+                    "in the standard library (osc.physical)"
+                    if declared.name in standard_library().types
+                    else "where declared before"
+                )
+                physics.problems.append(
+                    Diagnostic(
+                        declared.location,
+                        f"type {declared.name!r} is {_show(dimension)} here but {_show(known)} {where}",
+                        "give the type another name, or its exponents",
+                    )
+                )
                 continue
             physics.types[declared.name] = dimension
     for osc in files:
         for unit in osc.units:
             if unit.type not in physics.types:
-                physics.problems.append(Diagnostic(unit.location, f"unit {unit.name!r} is of an unknown type {unit.type!r}", f"declare it first: type {unit.type} is SI(...)"))
+                physics.problems.append(
+                    Diagnostic(
+                        unit.location,
+                        f"unit {unit.name!r} is of an unknown type {unit.type!r}",
+                        f"declare it first: type {unit.type} is SI(...)",
+                    )
+                )
                 continue
             dimension = physics.types[unit.type]
             if dimension_of(unit.exponents) != dimension:
-                physics.problems.append(Diagnostic(unit.location, f"unit {unit.name!r} has other SI exponents than its type {unit.type!r}", "write the type's exponents in the unit's SI(...)"))
+                physics.problems.append(
+                    Diagnostic(
+                        unit.location,
+                        f"unit {unit.name!r} has other SI exponents than its type {unit.type!r}",
+                        "write the type's exponents in the unit's SI(...)",
+                    )
+                )
                 continue
             if dimension is None:
                 continue  # a unit of a dimension the pipeline does not model
             if unit.factor <= 0:
-                physics.problems.append(Diagnostic(unit.location, f"unit {unit.name!r} needs a positive factor", "factor: SI units per unit, e.g. 0.277777778 for kph"))
+                physics.problems.append(
+                    Diagnostic(
+                        unit.location,
+                        f"unit {unit.name!r} needs a positive factor",
+                        "factor: SI units per unit, e.g. 0.277777778 for kph",
+                    )
+                )
                 continue
             standard_type = standard_library().unmodelled_units.get(unit.name)
             if standard_type is not None:
-                physics.problems.append(Diagnostic(
-                    unit.location, f"unit {unit.name!r} is declared as a {dimension} unit, but {unit.name} is a unit of {standard_type} in the standard library (osc.physical)",
-                    "give the unit another name",
-                ))
+                physics.problems.append(
+                    Diagnostic(
+                        unit.location,
+                        f"unit {unit.name!r} is declared as a {dimension} unit, but {unit.name} is a unit of {standard_type} in the standard library (osc.physical)",
+                        "give the unit another name",
+                    )
+                )
                 continue
             known = UNITS.get(unit.name) or physics.units.get(unit.name)
-            if known is not None and (known[0] != dimension or not math.isclose(known[1], unit.factor, rel_tol=FACTOR_TOLERANCE)):
-                physics.problems.append(Diagnostic(
-                    unit.location,
-                    f"unit {unit.name!r} is declared as {unit.factor:g} SI {dimension} units, but {unit.name} is {known[1]:.9g} SI {known[0]} units",
-                    "remove the declaration (the tool knows the unit) or give the unit another name",
-                ))
+            if known is not None and (
+                known[0] != dimension or not math.isclose(known[1], unit.factor, rel_tol=FACTOR_TOLERANCE)
+            ):
+                physics.problems.append(
+                    Diagnostic(
+                        unit.location,
+                        f"unit {unit.name!r} is declared as {unit.factor:g} SI {dimension} units, but {unit.name} is {known[1]:.9g} SI {known[0]} units",
+                        "remove the declaration (the tool knows the unit) or give the unit another name",
+                    )
+                )
                 continue
             physics.units[unit.name] = (dimension, unit.factor)
     return physics
@@ -100,7 +135,9 @@ class _AnyUnit(dict):
         return None, 1.0
 
 
-def parse_with_declared_units(path: str | Path, roots: ReadRoots | None = None) -> tuple[model.OscFile, dict[str, tuple[str | None, float]]]:
+def parse_with_declared_units(
+    path: str | Path, roots: ReadRoots | None = None
+) -> tuple[model.OscFile, dict[str, tuple[str | None, float]]]:
     """Parse ``path``; when it uses units that it or its imports declare, with those units.
     Returns the file and the unit table its imports are to be parsed with. Imports outside
     ``roots`` are not read (the checker reports them)."""

@@ -45,7 +45,16 @@ def generate(output_dir: Path) -> list[Path]:
         # writes names only the grammar file, whatever the checkout path.
         shutil.copy(GRAMMAR_DIR / GRAMMAR, scratch)
         subprocess.run(
-            [*antlr_command(), "-Dlanguage=Python3", "-visitor", "-no-listener", "-Xexact-output-dir", "-o", "out", GRAMMAR],
+            [
+                *antlr_command(),
+                "-Dlanguage=Python3",
+                "-visitor",
+                "-no-listener",
+                "-Xexact-output-dir",
+                "-o",
+                "out",
+                GRAMMAR,
+            ],
             cwd=scratch,
             check=True,
             capture_output=True,

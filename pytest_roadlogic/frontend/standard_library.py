@@ -99,12 +99,22 @@ def standard_library() -> StandardLibrary:
         for actor in osc.types:
             actors[actor.name] = actor.parent
         for action in osc.scenarios:
-            actions[action.name] = Declared(action.name, action.actor_type, tuple((f.name, f.type) for f in action.fields), part)
+            actions[action.name] = Declared(
+                action.name, action.actor_type, tuple((f.name, f.type) for f in action.fields), part
+            )
         for modifier in osc.modifier_declarations:
-            modifiers[modifier.name] = Declared(modifier.name, modifier.owner, tuple((f.name, f.type) for f in modifier.parameters), part)
+            modifiers[modifier.name] = Declared(
+                modifier.name, modifier.owner, tuple((f.name, f.type) for f in modifier.parameters), part
+            )
         for extension in osc.extensions:
             for method in extension.scenario.methods:
-                methods[method.name] = Declared(method.name, extension.target, tuple((f.name, f.type) for f in method.parameters), part, method.return_type)
+                methods[method.name] = Declared(
+                    method.name,
+                    extension.target,
+                    tuple((f.name, f.type) for f in method.parameters),
+                    part,
+                    method.return_type,
+                )
     return StandardLibrary(parts, types, units, enums, actors, actions, modifiers, methods, unmodelled)
 
 

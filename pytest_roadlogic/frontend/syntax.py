@@ -16,7 +16,7 @@ from __future__ import annotations
 import ast
 import math
 import re
-from typing import Mapping
+from collections.abc import Mapping
 
 from antlr4 import CommonTokenStream, InputStream
 from antlr4.error.ErrorListener import ErrorListener
@@ -30,15 +30,13 @@ from .lexer import DEDENT, INDENT, IndentingLexer
 from .limits import MAX_MAGNITUDE, check_limits
 from .units import SI_UNIT, split_physical_literal
 
-
-
-
 _QUALIFIER = re.compile(r"(?:[A-Za-z_][A-Za-z0-9_]*|\|[^|]*\|)?::")
 
 
 def unqualified(text: str) -> str:
     """A name as the tool reads it: a 2.1 namespace qualifier (``osc::car``, ``::car``) dropped."""
     return _QUALIFIER.sub("", text) if "::" in text else text
+
 
 class _CollectingListener(ErrorListener):
     """Collects syntax errors as diagnostics, worded for people rather than for grammar authors."""
@@ -55,7 +53,9 @@ class _CollectingListener(ErrorListener):
             return  # one syntax error per line is enough to act on
         location = SourceLocation(self.path, line, column + 1)
         if kind == INDENT:
-            self.diagnostics.append(Diagnostic(location, "unexpected indented block", "is the line before it missing a ':' at its end?"))
+            self.diagnostics.append(
+                Diagnostic(location, "unexpected indented block", "is the line before it missing a ':' at its end?")
+            )
             return
         text = getattr(offendingSymbol, "text", None)
         shown = {"\n": "end of line", "<EOF>": "end of file", "": "end of block"}.get(text, text)
@@ -72,13 +72,18 @@ def _shorten(message: str) -> str:
         return message
     head, expected = message.split("expecting {", 1)
     options = [o.strip() for o in expected.rstrip("}").split(",")]
-    options = [{"INDENT": "an indented block", "DEDENT": "the end of the block", "NEWLINE": "end of line"}.get(o, o) for o in options]
+    options = [
+        {"INDENT": "an indented block", "DEDENT": "the end of the block", "NEWLINE": "end of line"}.get(o, o)
+        for o in options
+    ]
     if len(options) > 6:
         options = options[:6] + ["..."]
     return f"{head}expecting one of {', '.join(options)}"
 
 
-def parse_text(text: str, path: str, units: Mapping[str, tuple[str | None, float]], unmodelled: Mapping[str, str] | None = None) -> model.OscFile:
+def parse_text(
+    text: str, path: str, units: Mapping[str, tuple[str | None, float]], unmodelled: Mapping[str, str] | None = None
+) -> model.OscFile:
     """Parse OS2 source text; raise ``OscError`` naming every syntax error found.
 
     ``units`` is the table physical literals are read with; ``unmodelled`` names the units of
@@ -90,10 +95,20 @@ def parse_text(text: str, path: str, units: Mapping[str, tuple[str | None, float
     try:
         return _parse(text, path, units, unmodelled or {})
     except RecursionError:  # a limit of limits.py should have refused the file first
-        raise OscError([Diagnostic(SourceLocation(path, 1, 1), "the file nests too deeply for the parser", "flatten its expressions and blocks")]) from None
+        raise OscError(
+            [
+                Diagnostic(
+                    SourceLocation(path, 1, 1),
+                    "the file nests too deeply for the parser",
+                    "flatten its expressions and blocks",
+                )
+            ]
+        ) from None
 
 
-def _parse(text: str, path: str, units: Mapping[str, tuple[str | None, float]], unmodelled: Mapping[str, str]) -> model.OscFile:
+def _parse(
+    text: str, path: str, units: Mapping[str, tuple[str | None, float]], unmodelled: Mapping[str, str]
+) -> model.OscFile:
     lexer = IndentingLexer(InputStream(text), path)
     listener = _CollectingListener(path)
     lexer.removeErrorListeners()
@@ -121,7 +136,9 @@ def _sorted(diagnostics: list[Diagnostic]) -> list[Diagnostic]:
 class _Builder:
     """Turns parse-tree contexts into model nodes, collecting spelling problems as it goes."""
 
-    def __init__(self, path: str, text: str, units: Mapping[str, tuple[str | None, float]], unmodelled: Mapping[str, str]) -> None:
+    def __init__(
+        self, path: str, text: str, units: Mapping[str, tuple[str | None, float]], unmodelled: Mapping[str, str]
+    ) -> None:
         self.path = path
         self.text = text
         self.units = units
@@ -165,10 +182,16 @@ class _Builder:
                     scenarios.append(self.scenario(decl))
                 elif isinstance(decl, P.PhysicalTypeDeclarationContext):
                     exponents, _ = self.si(decl, allow_factor=False)
-                    physical_types.append(model.PhysicalTypeDeclaration(self.name(decl.name), exponents, self.loc(decl.name)))
+                    physical_types.append(
+                        model.PhysicalTypeDeclaration(self.name(decl.name), exponents, self.loc(decl.name))
+                    )
                 elif isinstance(decl, P.UnitDeclarationContext):
                     exponents, factor = self.si(decl, allow_factor=True)
-                    units.append(model.UnitDeclaration(self.name(decl.name), self.name(decl.type_), exponents, factor, self.loc(decl.name)))
+                    units.append(
+                        model.UnitDeclaration(
+                            self.name(decl.name), self.name(decl.type_), exponents, factor, self.loc(decl.name)
+                        )
+                    )
                 elif isinstance(decl, (P.ActorDeclarationContext, P.StructDeclarationContext)):
                     declaration, refused = self.type_declaration(decl)
                     types.append(declaration)
@@ -186,25 +209,55 @@ class _Builder:
                 elif isinstance(decl, P.ExtendDeclarationContext):
                     target = decl.behaviorName()
                     members = [m.scenarioMember() for m in decl.extensionMember() if m.scenarioMember() is not None]
-                    added = [*decl.enumMember(), *(m.enumMember() for m in decl.extensionMember() if m.enumMember() is not None)]
+                    added = [
+                        *decl.enumMember(),
+                        *(m.enumMember() for m in decl.extensionMember() if m.enumMember() is not None),
+                    ]
                     if added:  # extend an enum
-                        enums.append(model.EnumDeclaration(self.name(target.name), tuple(self.name(m.identifier()) for m in added), self.loc(target.name), extends=True))
+                        enums.append(
+                            model.EnumDeclaration(
+                                self.name(target.name),
+                                tuple(self.name(m.identifier()) for m in added),
+                                self.loc(target.name),
+                                extends=True,
+                            )
+                        )
                     if members or not added:
-                        body = self.scenario_body(self.name(target.name), None, self.loc(target.name), members, "scenario")
+                        body = self.scenario_body(
+                            self.name(target.name), None, self.loc(target.name), members, "scenario"
+                        )
                         extensions.append(model.Extension(body.name, body, self.loc(decl)))
-                elif isinstance(decl, P.ModifierDeclarationContext) and decl.OF() is None and all(m.fieldDeclaration() is not None for m in decl.scenarioMember()):
+                elif (
+                    isinstance(decl, P.ModifierDeclarationContext)
+                    and decl.OF() is None
+                    and all(m.fieldDeclaration() is not None for m in decl.scenarioMember())
+                ):
                     # a modifier's signature: its name and parameters (the standard library's
                     # declarations; the checker refuses a file's own with a body)
                     target = decl.behaviorName()
                     owner = self.name(target.actorType) if target.actorType is not None else None
                     parameters = tuple(f for m in decl.scenarioMember() for f in self.fields(m.fieldDeclaration()))
-                    modifiers.append(model.ModifierDeclaration(owner, self.name(target.name), self.loc(target.name), parameters))
+                    modifiers.append(
+                        model.ModifierDeclaration(owner, self.name(target.name), self.loc(target.name), parameters)
+                    )
                 elif isinstance(decl, P.ModifierDeclarationContext):
-                    unsupported.append(model.Unsupported("modifier declarations", self.loc(decl), "use the built-in modifiers (speed, position, lane, ...)"))
+                    unsupported.append(
+                        model.Unsupported(
+                            "modifier declarations",
+                            self.loc(decl),
+                            "use the built-in modifiers (speed, position, lane, ...)",
+                        )
+                    )
                 elif isinstance(decl, P.NamespaceStatementContext):
-                    unsupported.append(model.Unsupported("namespace", self.loc(decl), "declare names at the top level of the file"))
+                    unsupported.append(
+                        model.Unsupported("namespace", self.loc(decl), "declare names at the top level of the file")
+                    )
                 elif isinstance(decl, P.ExportStatementContext):
-                    unsupported.append(model.Unsupported("export", self.loc(decl), "every top-level declaration is visible to an importing file"))
+                    unsupported.append(
+                        model.Unsupported(
+                            "export", self.loc(decl), "every top-level declaration is visible to an importing file"
+                        )
+                    )
         unsupported.extend(self.qualified_names(ctx))
         return model.OscFile(
             path=self.path,
@@ -237,7 +290,9 @@ class _Builder:
                 factor = value.value
             elif argument.name == "offset" and allow_factor:
                 if value.value != 0:
-                    self.error(argument.location, "not supported: a unit with an offset", "declare the unit without offset:")
+                    self.error(
+                        argument.location, "not supported: a unit with an offset", "declare the unit without offset:"
+                    )
             else:
                 exponents.append((argument.name, value.value))
         return tuple(exponents), factor
@@ -254,7 +309,13 @@ class _Builder:
                 continue
             if isinstance(node, (P.IdentifierContext, P.ExportSpecificationContext)) and node.DOUBLECOLON() is not None:
                 text = node.getText()
-                found.append(model.Unsupported(f"the namespace qualifier in {text!r}", self.loc(node), "namespaces are not read: drop the qualifier and keep names unique across the files of a run"))
+                found.append(
+                    model.Unsupported(
+                        f"the namespace qualifier in {text!r}",
+                        self.loc(node),
+                        "namespaces are not read: drop the qualifier and keep names unique across the files of a run",
+                    )
+                )
                 continue
             stack.extend(node.getChildren())
         return sorted(found, key=lambda u: (u.location.line, u.location.column))
@@ -303,15 +364,31 @@ class _Builder:
                 method = self.method(item)
                 methods.append(method)
                 if method.external:
-                    unsupported.append(model.Unsupported("external methods", method.location, "write the method as `def name() -> type is expression`"))
+                    unsupported.append(
+                        model.Unsupported(
+                            "external methods",
+                            method.location,
+                            "write the method as `def name() -> type is expression`",
+                        )
+                    )
             elif isinstance(item, P.DoDirectiveContext):
                 behaviors.append(self.do_member(item.doMember()))
             elif isinstance(item, P.VariableDeclarationContext):
-                unsupported.append(model.Unsupported("var", self.loc(item), "use a parameter with a range: `x: length with: keep(it in [a..b]m)`"))
+                unsupported.append(
+                    model.Unsupported(
+                        "var", self.loc(item), "use a parameter with a range: `x: length with: keep(it in [a..b]m)`"
+                    )
+                )
             elif isinstance(item, P.CoverageDeclarationContext):
-                unsupported.append(model.Unsupported(f"{item.getChild(0).getText()}()", self.loc(item), "coverage is not collected; remove the line"))
+                unsupported.append(
+                    model.Unsupported(
+                        f"{item.getChild(0).getText()}()", self.loc(item), "coverage is not collected; remove the line"
+                    )
+                )
             elif isinstance(item, P.OnDirectiveContext):
-                unsupported.append(model.Unsupported("on", self.loc(item), "express the reaction as a serial phase instead"))
+                unsupported.append(
+                    model.Unsupported("on", self.loc(item), "express the reaction as a serial phase instead")
+                )
             elif isinstance(item, P.ModifierInvocationContext):
                 modifiers.append(self.modifier(item))
         return model.Scenario(
@@ -337,7 +414,12 @@ class _Builder:
         body = self.scenario_body(name, None, self.loc(ctx.identifier()), ctx.structMember(), "type")
         parent = self.name(ctx.inheritance().parent.name) if ctx.inheritance() is not None else None
         kind = "actor" if isinstance(ctx, P.ActorDeclarationContext) else "struct"
-        refused = body.unsupported + tuple(model.Unsupported("a modifier in a type declaration", m.location, "put it in the with: block of an invocation") for m in body.modifiers)
+        refused = body.unsupported + tuple(
+            model.Unsupported(
+                "a modifier in a type declaration", m.location, "put it in the with: block of an invocation"
+            )
+            for m in body.modifiers
+        )
         return model.TypeDeclaration(kind, name, parent, body.fields, body.constraints, body.location), refused
 
     def fields(self, ctx: P.FieldDeclarationContext) -> list[model.Field]:
@@ -389,10 +471,21 @@ class _Builder:
         if ctx.parameterList() is not None:
             for p in ctx.parameterList().parameter():
                 default = self.expression(p.expression()) if p.expression() is not None else None
-                parameters.append(model.Field(self.name(p.identifier()), unqualified(p.typeDeclarator().getText()), default, (), self.loc(p)))
+                parameters.append(
+                    model.Field(
+                        self.name(p.identifier()), unqualified(p.typeDeclarator().getText()), default, (), self.loc(p)
+                    )
+                )
         body = self.expression(ctx.expression()) if ctx.expression() is not None else None
         return_type = unqualified(ctx.typeDeclarator().getText()) if ctx.typeDeclarator() is not None else None
-        return model.Method(self.name(ctx.identifier()), tuple(parameters), return_type, body, ctx.EXTERNAL() is not None, self.loc(ctx.identifier()))
+        return model.Method(
+            self.name(ctx.identifier()),
+            tuple(parameters),
+            return_type,
+            body,
+            ctx.EXTERNAL() is not None,
+            self.loc(ctx.identifier()),
+        )
 
     # -------------------------------------------------------------- behavior
 
@@ -445,7 +538,12 @@ class _Builder:
 
     def modifier(self, ctx: P.ModifierInvocationContext) -> model.Modifier:
         names = [self.name(i) for i in ctx.target.identifier()]
-        return model.Modifier(names[-1], self.arguments(ctx.argumentList()), self.loc(ctx.target.identifier()[-1]), actor=".".join(names[:-1]) or None)
+        return model.Modifier(
+            names[-1],
+            self.arguments(ctx.argumentList()),
+            self.loc(ctx.target.identifier()[-1]),
+            actor=".".join(names[:-1]) or None,
+        )
 
     def arguments(self, ctx: P.ArgumentListContext | None) -> tuple[model.Argument, ...]:
         if ctx is None:
@@ -479,7 +577,9 @@ class _Builder:
             else:
                 function = "[]" if isinstance(ctx, P.ElementAccessContext) else "?:"
             operands = ctx.getTypedRuleContexts(P.ExpressionContext)
-            return model.Call(function, tuple(model.Argument(None, self.expression(e), location) for e in operands), location)
+            return model.Call(
+                function, tuple(model.Argument(None, self.expression(e), location) for e in operands), location
+            )
         if isinstance(ctx, P.CallContext):
             function = self.expression(ctx.expression())
             arguments = self.arguments(ctx.argumentList())
@@ -541,13 +641,19 @@ class _Builder:
     def range(self, low, high, unit_token, location: SourceLocation) -> model.Expression:
         for bound in (low, high):
             if not isinstance(bound, model.Quantity):
-                self.error(bound.location, "a range bound must be a number, with its unit", "write [10m..20m] or [10..20]m")
+                self.error(
+                    bound.location, "a range bound must be a number, with its unit", "write [10m..20m] or [10..20]m"
+                )
                 return model.Literal("<bad range>", location)
         if unit_token is not None:
             # The paper's spelling `[10..20]m`: the unit after the bracket applies to both bounds.
             unit_loc = SourceLocation(self.path, unit_token.line, unit_token.column + 1)
             if low.dimension is not None or high.dimension is not None:
-                self.error(unit_loc, "a unit after the range, but a bound already has one", "write [10..20]m or [10m..20m], not both")
+                self.error(
+                    unit_loc,
+                    "a unit after the range, but a bound already has one",
+                    "write [10..20]m or [10m..20m], not both",
+                )
                 return model.Literal("<bad range>", location)
             dimension, factor = self.unit(unit_token.text, unit_loc)
             low = model.Quantity(low.value * factor, dimension, low.location)
@@ -555,11 +661,19 @@ class _Builder:
             for bound in (low, high):
                 self.bounded(bound.value, dimension, bound.location)
         elif low.dimension != high.dimension:
-            self.error(location, f"the range's bounds differ in kind ({low.dimension or 'number'} and {high.dimension or 'number'})", "give both bounds a unit of the same kind")
+            self.error(
+                location,
+                f"the range's bounds differ in kind ({low.dimension or 'number'} and {high.dimension or 'number'})",
+                "give both bounds a unit of the same kind",
+            )
             return model.Literal("<bad range>", location)
         if low.value > high.value:
             # an empty interval: no value lies in it; most likely the bounds were swapped (issue 20)
-            self.error(location, "an empty range: its first bound is above its second", "write the smaller bound first, e.g. [10..20]m")
+            self.error(
+                location,
+                "an empty range: its first bound is above its second",
+                "write the smaller bound first, e.g. [10..20]m",
+            )
             return model.Literal("<bad range>", location)
         return model.Range(low, high, location)
 
@@ -574,7 +688,11 @@ class _Builder:
         300-digit number in a message (issue 20)."""
         if dimension is not None and not abs(value) <= MAX_MAGNITUDE:
             unit = SI_UNIT.get(dimension, "")
-            self.error(location, f"{value:g} {unit} is past what the tool computes with: at most {MAX_MAGNITUDE:g} {unit}", "write a value a road scenario can have (1e6 m is 1,000 km, 1e6 s 11 days)")
+            self.error(
+                location,
+                f"{value:g} {unit} is past what the tool computes with: at most {MAX_MAGNITUDE:g} {unit}",
+                "write a value a road scenario can have (1e6 m is 1,000 km, 1e6 s 11 days)",
+            )
 
     def unit(self, unit: str, location: SourceLocation) -> tuple[str | None, float]:
         try:
@@ -583,9 +701,17 @@ class _Builder:
             known = ", ".join(sorted(self.units))
             unmodelled = self.unmodelled.get(unit)
             if unmodelled is not None:
-                self.error(location, f"not supported: unit {unit!r} (of {unmodelled}, a dimension this tool does not model)", f"the pipeline computes lengths, times, speeds and accelerations; known units: {known}")
+                self.error(
+                    location,
+                    f"not supported: unit {unit!r} (of {unmodelled}, a dimension this tool does not model)",
+                    f"the pipeline computes lengths, times, speeds and accelerations; known units: {known}",
+                )
             else:
-                self.error(location, f"unknown unit {unit!r}", f"known units: {known}; a file may declare its own: unit {unit} of length is SI(m: 1, factor: ...)")
+                self.error(
+                    location,
+                    f"unknown unit {unit!r}",
+                    f"known units: {known}; a file may declare its own: unit {unit} of length is SI(m: 1, factor: ...)",
+                )
             return None, 1.0
 
     def string(self, text: str) -> str:

@@ -15,7 +15,13 @@ ACCELERATION = "acceleration"
 SI_UNIT = {LENGTH: "m", TIME: "s", SPEED: "m/s", ACCELERATION: "m/s^2", None: ""}
 
 # dimension -> exponents of (metre, second), and back
-EXPONENTS: dict[str | None, tuple[int, int]] = {None: (0, 0), LENGTH: (1, 0), TIME: (0, 1), SPEED: (1, -1), ACCELERATION: (1, -2)}
+EXPONENTS: dict[str | None, tuple[int, int]] = {
+    None: (0, 0),
+    LENGTH: (1, 0),
+    TIME: (0, 1),
+    SPEED: (1, -1),
+    ACCELERATION: (1, -2),
+}
 DIMENSIONS = {v: k for k, v in EXPONENTS.items()}
 MODELLED_BASES = ("m", "s")
 

@@ -9,14 +9,15 @@ speed to a length is an error wherever it is written.
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass
-from typing import Mapping, Union
 
 from . import model
 from .errors import SourceLocation, error_at
 from .library import UNSUPPORTED_EXPRESSIONS
-from .units import DIMENSIONS as _DIMENSIONS, EXPONENTS as _EXPONENTS, SI_UNIT
-
+from .units import DIMENSIONS as _DIMENSIONS
+from .units import EXPONENTS as _EXPONENTS
+from .units import SI_UNIT
 
 
 def describe(dimension: str | None) -> str:
@@ -37,7 +38,7 @@ class Interval:
     def is_point(self) -> bool:
         return self.low == self.high
 
-    def intersect(self, other: "Interval") -> "Interval":
+    def intersect(self, other: Interval) -> Interval:
         return Interval(max(self.low, other.low), min(self.high, other.high), self.dimension)
 
     @property
@@ -59,7 +60,7 @@ class EvaluationError(Exception):
         self.hint = hint
 
 
-Value = Union[Interval, bool, model.Name, model.Literal, model.Call, model.ListValue]
+Value = Interval | bool | model.Name | model.Literal | model.Call | model.ListValue
 
 
 def evaluate(expression: model.Expression, env: Mapping[str, object]) -> Value:
@@ -77,7 +78,11 @@ def evaluate(expression: model.Expression, env: Mapping[str, object]) -> Value:
             return env[expression.name]
         return expression
     if isinstance(expression, model.Call) and expression.function in UNSUPPORTED_EXPRESSIONS:
-        raise EvaluationError(expression.location, f"not supported: {UNSUPPORTED_EXPRESSIONS[expression.function]}", "write the value or condition it stands for")
+        raise EvaluationError(
+            expression.location,
+            f"not supported: {UNSUPPORTED_EXPRESSIONS[expression.function]}",
+            "write the value or condition it stands for",
+        )
     if isinstance(expression, (model.Literal, model.Call, model.ListValue)):
         if isinstance(expression, model.Literal) and isinstance(expression.value, bool):
             return expression.value
@@ -165,7 +170,12 @@ def possibly(expression: model.Expression, env: Mapping[str, object]) -> bool:
         return left.low <= right.high and right.low <= left.high
     if op == "!=":
         return not (left.is_point and right.is_point and left.low == right.low)
-    return {"<": left.low < right.high, "<=": left.low <= right.high, ">": left.high > right.low, ">=": left.high >= right.low}[op]
+    return {
+        "<": left.low < right.high,
+        "<=": left.low <= right.high,
+        ">": left.high > right.low,
+        ">=": left.high >= right.low,
+    }[op]
 
 
 def _symbol(value: object) -> object:
@@ -180,7 +190,11 @@ def _interval(value: Value, expression: model.Expression) -> Interval:
     if isinstance(value, Interval):
         return value
     if isinstance(value, model.Name):
-        raise EvaluationError(expression.location, f"{value.name!r} is not a number here", "only numbers and parameters of a numeric type can be computed with")
+        raise EvaluationError(
+            expression.location,
+            f"{value.name!r} is not a number here",
+            "only numbers and parameters of a numeric type can be computed with",
+        )
     raise EvaluationError(expression.location, "expected a number or a quantity with a unit")
 
 
@@ -203,7 +217,9 @@ def _combine(left: str | None, right: str | None, sign: int, expression: model.B
     a, b = _EXPONENTS[left], _EXPONENTS[right]
     exponents = (a[0] + sign * b[0], a[1] + sign * b[1])
     if exponents not in _DIMENSIONS:
-        raise EvaluationError(expression.location, f"{describe(left)} {expression.operator} {describe(right)} has no supported unit")
+        raise EvaluationError(
+            expression.location, f"{describe(left)} {expression.operator} {describe(right)} has no supported unit"
+        )
     return _DIMENSIONS[exponents]
 
 
@@ -238,7 +254,11 @@ def to_expression(value: Interval, location: SourceLocation) -> model.Quantity |
     """An evaluated interval back as a model value, for stages that read Quantity and Range."""
     if value.is_point:
         return model.Quantity(value.low, value.dimension, location)
-    return model.Range(model.Quantity(value.low, value.dimension, location), model.Quantity(value.high, value.dimension, location), location)
+    return model.Range(
+        model.Quantity(value.low, value.dimension, location),
+        model.Quantity(value.high, value.dimension, location),
+        location,
+    )
 
 
 # ------------------------------------------------------------------ arguments, after checking
@@ -259,12 +279,16 @@ def argument_interval(argument: model.Argument, env: Mapping[str, object]) -> In
     return value
 
 
-def argument_range(argument: model.Argument, dimension: str, example: str, env: Mapping[str, object]) -> tuple[float, float]:
+def argument_range(
+    argument: model.Argument, dimension: str, example: str, env: Mapping[str, object]
+) -> tuple[float, float]:
     """An argument's bounded range in SI units of ``dimension``; an error at its place otherwise."""
     value = argument_interval(argument, env)
     if value.dimension != dimension:
         got = value.dimension or "a plain number"
         raise error_at(argument.location, f"expected {example}, got {got}", hint="add a unit of the right kind")
     if not (math.isfinite(value.low) and math.isfinite(value.high)):
-        raise error_at(argument.location, f"expected {example}, got an unbounded value", hint="give the parameter a range")
+        raise error_at(
+            argument.location, f"expected {example}, got an unbounded value", hint="give the parameter a range"
+        )
     return value.low, value.high

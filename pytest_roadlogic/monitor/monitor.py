@@ -87,10 +87,17 @@ class Verdict:
             "robustness": self.robustness,
             "furthest": self.furthest,
             "run": [{"time": t, "events": e} for t, e in self.run],
-            "miss": None if self.miss is None else {
-                "source": self.miss.source, "target": self.miss.target, "guard": self.miss.guard,
-                "events": self.miss.events, "time": self.miss.time, "robustness": self.miss.robustness,
-                "values": self.miss.values, "locations": [str(loc) for loc in self.miss.locations],
+            "miss": None
+            if self.miss is None
+            else {
+                "source": self.miss.source,
+                "target": self.miss.target,
+                "guard": self.miss.guard,
+                "events": self.miss.events,
+                "time": self.miss.time,
+                "robustness": self.miss.robustness,
+                "values": self.miss.values,
+                "locations": [str(loc) for loc in self.miss.locations],
             },
             "incidents": [str(i) for i in self.incidents],
             "explanation": self.explain(),
@@ -144,13 +151,18 @@ def _monitor(automaton: SymbolicAutomaton, trace: Trace, floor: float) -> Verdic
     for q in range(n_loc):
         grouped: dict[tuple[tuple, tuple], list] = {}
         for transition in automaton.outgoing(q):
-            effect = (tuple(sorted(p for p in transition.starts if p in timings)), tuple(sorted(p for p in transition.ends if p in timings)))
+            effect = (
+                tuple(sorted(p for p in transition.starts if p in timings)),
+                tuple(sorted(p for p in transition.ends if p in timings)),
+            )
             grouped.setdefault(effect, []).append(transition)
         effects.append(list(grouped.items()))
     invariant_locations = [q for q in range(n_loc) if not automaton.location(q).invariant.is_true]
     # every guard's robustness at every sample, computed column-wise up front
     guard_margin = {t.id: t.guard.robustness_series(trace.actors).tolist() for t in automaton.transitions}
-    invariant_margin = {q: automaton.location(q).invariant.robustness_series(trace.actors).tolist() for q in invariant_locations}
+    invariant_margin = {
+        q: automaton.location(q).invariant.robustness_series(trace.actors).tolist() for q in invariant_locations
+    }
     progress = {a: (np.diff(trace.actors[a]["x"]) > 0).tolist() for a in trace.names}
     # the columns the phases' two-end bounds read (speed for a mean acceleration, x for a distance)
     columns = {column: {a: trace.actors[a][column].tolist() for a in trace.names} for column in _end_columns(automaton)}
@@ -206,7 +218,9 @@ def _monitor(automaton: SymbolicAutomaton, trace: Trace, floor: float) -> Verdic
                     if isinstance(stepped, _Broken):
                         if value >= 0:
                             for transition in transitions:
-                                if guard_margin[transition.id][k] >= 0 and (q not in timing_miss or stepped.outside < timing_miss[q][0]):
+                                if guard_margin[transition.id][k] >= 0 and (
+                                    q not in timing_miss or stepped.outside < timing_miss[q][0]
+                                ):
                                     timing_miss[q] = (stepped.outside, k, transition, stepped.phase, stepped.seconds)
                         continue
                     if stepped is None:
@@ -256,9 +270,14 @@ def _monitor(automaton: SymbolicAutomaton, trace: Trace, floor: float) -> Verdic
         elif furthest in overrun and miss is not None and miss.robustness >= 0 and not miss.timing:
             k, phase, seconds = overrun[furthest]
             timing = automaton.timings[phase]
-            miss = dataclasses.replace(miss, timing=f"{timing} but had lasted {seconds:.1f} s by t = {times[k - 1]:.1f} s, before the guard held",
-                                       locations=tuple(dict.fromkeys([*miss.locations, *([timing.source] if timing.source else [])])))
-    return Verdict(accepted, float(best_final), automaton.location(furthest).name, best_run, miss, list(trace.incidents))
+            miss = dataclasses.replace(
+                miss,
+                timing=f"{timing} but had lasted {seconds:.1f} s by t = {times[k - 1]:.1f} s, before the guard held",
+                locations=tuple(dict.fromkeys([*miss.locations, *([timing.source] if timing.source else [])])),
+            )
+    return Verdict(
+        accepted, float(best_final), automaton.location(furthest).name, best_run, miss, list(trace.incidents)
+    )
 
 
 @dataclass(frozen=True)
@@ -271,7 +290,9 @@ class _Broken:
     outside: float
 
 
-def _advance(key: tuple, starts: tuple, ends: tuple, k: int, times, timings, columns) -> tuple[tuple, float, tuple | None] | _Broken | None:
+def _advance(
+    key: tuple, starts: tuple, ends: tuple, k: int, times, timings, columns
+) -> tuple[tuple, float, tuple | None] | _Broken | None:
     """The timed-phase state after a transition that starts the timed phases ``starts`` and ends
     ``ends`` at sample ``k``; the smallest margin of the durations (s) and the bounds over their
     two ends (``PhaseBound``, in their units) it ends; and the worst such bound it misses,
@@ -318,8 +339,11 @@ def _rate_miss(automaton: SymbolicAutomaton, found: tuple, columns, times) -> Gu
         events=f"{times[begun]:.1f} s to {times[k]:.1f} s",
         time=float(times[k]),
         robustness=float(margin),
-        values={f"{rate.symbol}({rate.actor})": float(rate.value(series[begun], series[k], seconds)),
-                f"{name}({rate.actor}) at start": float(series[begun]), f"{name}({rate.actor}) at end": float(series[k])},
+        values={
+            f"{rate.symbol}({rate.actor})": float(rate.value(series[begun], series[k], seconds)),
+            f"{name}({rate.actor}) at start": float(series[begun]),
+            f"{name}({rate.actor}) at end": float(series[k]),
+        },
         locations=(rate.source,) if rate.source is not None else (),
     )
 
@@ -338,8 +362,14 @@ def _timing_miss(automaton: SymbolicAutomaton, found: tuple, snapshots, times) -
         time=float(times[k]),
         robustness=float(transition.guard.robustness(snapshots[k])),
         values=_term_values(transition.guard, snapshots[k]),
-        locations=tuple(dict.fromkeys([*(b.source for b in transition.guard.atoms() if b.source is not None),
-                                       *([timing.source] if timing.source is not None else [])])),
+        locations=tuple(
+            dict.fromkeys(
+                [
+                    *(b.source for b in transition.guard.atoms() if b.source is not None),
+                    *([timing.source] if timing.source is not None else []),
+                ]
+            )
+        ),
         timing=f"{timing} but had lasted {seconds:.1f} s there ({outside:.1f} s {'short' if seconds < timing.low else 'over'})",
     )
 

@@ -6,7 +6,15 @@ monitor, a report) does not load the solver.
 """
 
 from ..settings import CONTINUOUS_HORIZON, DEFAULT_HORIZON, GRID, RunSettings
-from .errors import HorizonTooShort, LimitsBind, MarginsBind, NoPlanError, PlanningTimeout, StepBinds, UnsatisfiableScenario
+from .errors import (
+    HorizonTooShort,
+    LimitsBind,
+    MarginsBind,
+    NoPlanError,
+    PlanningTimeout,
+    StepBinds,
+    UnsatisfiableScenario,
+)
 from .instance import PlanningSettings, build_instance
 from .plan import Plan, PlanState
 
@@ -18,10 +26,18 @@ def settings_for(run: RunSettings, explain_unsatisfiable: bool = True):
     with the run's horizon limit (the encoding's own when it gives none) and time limit. Here, not
     in ``settings``: the run's settings sit below the planner and must not import it."""
     if run.encoding == GRID:
-        return PlanningSettings(max_horizon=run.max_horizon or DEFAULT_HORIZON, time_limit=run.planning_time_limit, explain_unsatisfiable=explain_unsatisfiable)
+        return PlanningSettings(
+            max_horizon=run.max_horizon or DEFAULT_HORIZON,
+            time_limit=run.planning_time_limit,
+            explain_unsatisfiable=explain_unsatisfiable,
+        )
     from .continuous import ContinuousSettings
 
-    return ContinuousSettings(max_horizon=run.max_horizon or CONTINUOUS_HORIZON, time_limit=run.planning_time_limit, explain_unsatisfiable=explain_unsatisfiable)
+    return ContinuousSettings(
+        max_horizon=run.max_horizon or CONTINUOUS_HORIZON,
+        time_limit=run.planning_time_limit,
+        explain_unsatisfiable=explain_unsatisfiable,
+    )
 
 
 def planner_for(automaton, settings, seed: int = 0):
@@ -43,4 +59,19 @@ def __getattr__(name: str):
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
-__all__ = ["HorizonTooShort", "LimitsBind", "MarginsBind", "NoPlanError", "Plan", "PlanState", "PlanningSettings", "PlanningTimeout", "StepBinds", "UnsatisfiableScenario", "build_instance", "planner_for", "settings_for", *_SOLVER_NAMES]
+__all__ = [
+    "HorizonTooShort",
+    "LimitsBind",
+    "MarginsBind",
+    "NoPlanError",
+    "Plan",
+    "PlanState",
+    "PlanningSettings",
+    "PlanningTimeout",
+    "StepBinds",
+    "UnsatisfiableScenario",
+    "build_instance",
+    "planner_for",
+    "settings_for",
+    *_SOLVER_NAMES,
+]

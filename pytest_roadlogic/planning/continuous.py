@@ -25,9 +25,9 @@ import clingo
 
 from ..automaton.guards import HEADWAY, LANE, POSITION, SPEED, TRAVELED, And, Bound, Guard, Not, Or
 from ..automaton.model import SymbolicAutomaton, Travelled
-from .linear import THEORY, LazyLinearTheory
 from .errors import HorizonTooShort, NoPlanError, PlanningTimeout
-from .instance import _atom, _bound_rule, _inset, _outside_rules, guard_nodes, junction_rules, with_automaton
+from .instance import atom, bound_rule, guard_nodes, inset, junction_rules, outside_rules, with_automaton
+from .linear import THEORY, LazyLinearTheory
 from .plan import Plan, PlanState
 from .solver import ASP_DIR, Planner, check_satisfiable
 
@@ -117,8 +117,13 @@ class ContinuousSettings:
         """How wide a band a sampled value is narrowed to, per physical dimension: positions and
         speeds are real-valued here, so the band is the planning margin's (the plan lies within a
         quarter of it from the sample); durations still count whole steps, time headways do not."""
-        return {"length": 2 * self.position_margin, "speed": 2 * self.speed_margin, "time": self.dt, "acceleration": 0.5,
-                "headway": 2 * self.headway_margin}
+        return {
+            "length": 2 * self.position_margin,
+            "speed": 2 * self.speed_margin,
+            "time": self.dt,
+            "acceleration": 0.5,
+            "headway": 2 * self.headway_margin,
+        }
 
     def start_band(self) -> tuple[float, float]:
         """The start speeds (m/s) a driving vehicle is preferred to have where the scenario leaves
@@ -127,22 +132,35 @@ class ContinuousSettings:
 
     def margins(self) -> dict[str | None, float]:
         """How far inside a range's edges the plan keeps, per physical dimension."""
-        return {"length": self.position_margin, "speed": self.speed_margin, "headway": self.headway_margin, "acceleration": self.acceleration_margin,
-                "time": self.duration_margin}
+        return {
+            "length": self.position_margin,
+            "speed": self.speed_margin,
+            "headway": self.headway_margin,
+            "acceleration": self.acceleration_margin,
+            "time": self.duration_margin,
+        }
 
-    def thinned(self) -> "ContinuousSettings | None":
+    def thinned(self) -> ContinuousSettings | None:
         """These settings with ``fallback_margins`` of each margin, or None when there is no such second search."""
         if not 0 <= self.fallback_margins < 1:
             return None
         f = self.fallback_margins
-        return replace(self, position_margin=self.position_margin * f, speed_margin=self.speed_margin * f,
-                       headway_margin=self.headway_margin * f, acceleration_margin=self.acceleration_margin * f,
-                       duration_margin=self.duration_margin * f, fallback_margins=1.0)
+        return replace(
+            self,
+            position_margin=self.position_margin * f,
+            speed_margin=self.speed_margin * f,
+            headway_margin=self.headway_margin * f,
+            acceleration_margin=self.acceleration_margin * f,
+            duration_margin=self.duration_margin * f,
+            fallback_margins=1.0,
+        )
 
     def describe_margins(self) -> str:
-        return (f"speed_margin {self.speed_margin:g} m/s, position_margin {self.position_margin:g} m, "
-                f"headway_margin {self.headway_margin:g} s, acceleration_margin {self.acceleration_margin:g} m/s^2, "
-                f"duration_margin {self.duration_margin:g} s")
+        return (
+            f"speed_margin {self.speed_margin:g} m/s, position_margin {self.position_margin:g} m, "
+            f"headway_margin {self.headway_margin:g} s, acceleration_margin {self.acceleration_margin:g} m/s^2, "
+            f"duration_margin {self.duration_margin:g} s"
+        )
 
     def summary(self, lanes: int) -> str:
         """The vehicle limits and bounds on a road of ``lanes`` lanes, for messages that blame them."""
@@ -159,7 +177,9 @@ def _number(value: float) -> str:
     return f'"{text}"'
 
 
-def build_continuous_instance(automaton: SymbolicAutomaton, settings: ContinuousSettings, relaxable: bool = False) -> tuple[str, str]:
+def build_continuous_instance(
+    automaton: SymbolicAutomaton, settings: ContinuousSettings, relaxable: bool = False
+) -> tuple[str, str]:
     """(base program, state(t) program) of the scenario for the continuous encoding; with
     ``relaxable``, every bound and duration of the scenario can be switched off by an external
     ``relaxed(K)``, as in the grid encoding, for the diagnosis of a scenario without a plan."""
@@ -181,17 +201,23 @@ def build_continuous_instance(automaton: SymbolicAutomaton, settings: Continuous
         f"#const closing_time = {_number(s.closing_time)}.",
         f"#const lane_change_speed = {_number(s.lane_change_speed)}.",
         f"#const spread = {_number(s.spread)}.",
-        f"#const first_vehicle = {_atom(vehicles[0])}.",
-        *(f"vehicle({_atom(v)})." for v in vehicles),
-        *(f"stationary({_atom(v)})." for v in vehicles if v in automaton.stationary),
-        *(f"may_stop({_atom(v)})." for v in sorted(stopping(automaton, s))),
+        f"#const first_vehicle = {atom(vehicles[0])}.",
+        *(f"vehicle({atom(v)})." for v in vehicles),
+        *(f"stationary({atom(v)})." for v in vehicles if v in automaton.stationary),
+        *(f"may_stop({atom(v)})." for v in sorted(stopping(automaton, s))),
         f"lane_id(0..{automaton.lanes - 1}).",
         "lateral(-1;0;1).",
         f"lane_change_gap({s.lane_change_gap}).",
         "",
     ]
-    return with_automaton(base, automaton, s.dt, relaxable, lambda node, guard, numbering, switch: _guard_rules(node, guard, numbering, s, switch),
-                          lambda relax: _rate_rules(automaton, s, relax))
+    return with_automaton(
+        base,
+        automaton,
+        s.dt,
+        relaxable,
+        lambda node, guard, numbering, switch: _guard_rules(node, guard, numbering, s, switch),
+        lambda relax: _rate_rules(automaton, s, relax),
+    )
 
 
 def _rate_rules(automaton: SymbolicAutomaton, settings: ContinuousSettings, relax: dict) -> list[str]:
@@ -207,19 +233,23 @@ def _rate_rules(automaton: SymbolicAutomaton, settings: ContinuousSettings, rela
         if not timing.rates:
             continue
         shortest = max(1, math.ceil(timing.low / settings.dt - 1e-9))
-        longest = min(settings.max_horizon, math.floor(timing.high / settings.dt + 1e-9)) if math.isfinite(timing.high) else settings.max_horizon
+        longest = (
+            min(settings.max_horizon, math.floor(timing.high / settings.dt + 1e-9))
+            if math.isfinite(timing.high)
+            else settings.max_horizon
+        )
         for rate in timing.rates:
             rules.append(f"% {rate}")
             switch = f", not relaxed({relax[rate.source]})" if rate.source in relax else ""
-            actor = _atom(rate.actor)
+            actor = atom(rate.actor)
             if isinstance(rate, Travelled):
-                low, high = _inset(rate.low, rate.high, settings.position_margin)
+                low, high = inset(rate.low, rate.high, settings.position_margin)
                 body = f":- finish({phase},t), begin({phase},T){switch}."
                 for value, operator in ((low, ">="), (high, "<=")):
                     if math.isfinite(value):
                         rules.append(f"&sum{{ p({actor},t); -1*p({actor},T) }} {operator} {_number(value)} {body}")
                 continue
-            low, high = _inset(rate.low, rate.high, settings.acceleration_margin)
+            low, high = inset(rate.low, rate.high, settings.acceleration_margin)
             for length in range(shortest, longest + 1):
                 seconds = length * settings.dt
                 body = f":- finish({phase},t), begin({phase},T), T = t-{length}{switch}."
@@ -284,7 +314,7 @@ def start_preferences(automaton: SymbolicAutomaton, settings: ContinuousSettings
     low, high = settings.start_band()
     rules, ends, drifts = [], [], []
     for vehicle in automaton.actors:
-        name = _atom(vehicle)
+        name = atom(vehicle)
         lane = draw.randrange(automaton.lanes)
         rules.append(f"#heuristic lane({name},{lane},0). [2,true]")
         if vehicle not in automaton.stationary:
@@ -294,20 +324,44 @@ def start_preferences(automaton: SymbolicAutomaton, settings: ContinuousSettings
     slow, fast = settings.drift_speeds
     for vehicle in automaton.actors:
         if vehicle not in automaton.stationary and settings.drift:
-            name = _atom(vehicle)
+            name = atom(vehicle)
             aim = draw.choice((-settings.drift, 0.0, settings.drift))
-            drifts += [f"&drift{{ a({name},t) }} = {_number(aim)}.", f"&drift{{ v({name},t) }} >= {_number(slow)}.",
-                       f"&drift{{ v({name},t) }} <= {_number(fast)}."]
+            drifts += [
+                f"&drift{{ a({name},t) }} = {_number(aim)}.",
+                f"&drift{{ v({name},t) }} >= {_number(slow)}.",
+                f"&drift{{ v({name},t) }} <= {_number(fast)}.",
+            ]
     # the last step's lane atoms exist once that step is grounded, and query(t) says which is last;
     # changed(V,t): V has changed lane by step t
     keep_lane = (ASP_DIR / KEEP_LANE).read_text(encoding="utf-8")
     # a transition that pins a driving vehicle to a place is tried at its earliest step first (a
     # decision order, latest step last; a heuristic's level must be positive)
     top = settings.max_horizon + 1
-    early = [f"#heuristic fire({transition.id},t) : t < {top}. [{top}-t,true]" for transition in automaton.transitions
-             if transition.source != automaton.initial and any(pins(bound, automaton.stationary) for bound in transition.guard.atoms())]
-    return "\n".join([*rules, "#program dynamics(t).", *drifts, keep_lane, "#program dynamics(t).", "changed(V,t) :- changing(V,t).", "changed(V,t) :- changed(V,t-1), t > 1.",
-                       "#program check(t).", *ends, "#program state(t).", *early, "#program base."]) + "\n"
+    early = [
+        f"#heuristic fire({transition.id},t) : t < {top}. [{top}-t,true]"
+        for transition in automaton.transitions
+        if transition.source != automaton.initial
+        and any(pins(bound, automaton.stationary) for bound in transition.guard.atoms())
+    ]
+    return (
+        "\n".join(
+            [
+                *rules,
+                "#program dynamics(t).",
+                *drifts,
+                keep_lane,
+                "#program dynamics(t).",
+                "changed(V,t) :- changing(V,t).",
+                "changed(V,t) :- changed(V,t-1), t > 1.",
+                "#program check(t).",
+                *ends,
+                "#program state(t).",
+                *early,
+                "#program base.",
+            ]
+        )
+        + "\n"
+    )
 
 
 def pins(bound: Bound, stationary: frozenset[str]) -> bool:
@@ -335,7 +389,10 @@ def stopping(automaton: SymbolicAutomaton, settings: ContinuousSettings) -> set[
     return {
         node.term.actor
         for node in numbering
-        if isinstance(node, Bound) and node.term.quantity == SPEED and node.term.reference is None and node.low < settings.min_speed
+        if isinstance(node, Bound)
+        and node.term.quantity == SPEED
+        and node.term.reference is None
+        and node.low < settings.min_speed
     }
 
 
@@ -343,11 +400,11 @@ def _terms(bound: Bound) -> tuple[str, str]:
     """The variable of a position or speed bound's quantity, and the &sum elements of its term."""
     variable = "p" if bound.term.quantity in (POSITION, TRAVELED) else "v"
     term = bound.term
-    elements = f"{variable}({_atom(term.actor)},t)"
+    elements = f"{variable}({atom(term.actor)},t)"
     if term.quantity == TRAVELED:  # d(a) = p(a,t) - p(a,0)
-        elements += f"; -1*p({_atom(term.actor)},0)"
+        elements += f"; -1*p({atom(term.actor)},0)"
     if term.reference is not None:
-        elements += f"; -1*{variable}({_atom(term.reference)},t)"
+        elements += f"; -1*{variable}({atom(term.reference)},t)"
     return variable, elements
 
 
@@ -363,12 +420,14 @@ def _compared(bound: Bound, value: float) -> tuple[str, str]:
     A headway ``h(a, b)`` is compared as ``gap - value * v(b)`` with 0 (the follower never
     reverses); a position or speed as the term itself with ``value``."""
     if bound.term.quantity == HEADWAY:
-        ahead, behind = _atom(bound.term.actor), _atom(bound.term.reference)
+        ahead, behind = atom(bound.term.actor), atom(bound.term.reference)
         return f"p({ahead},t); -1*p({behind},t); {_number(-value)}*v({behind},t)", "0"
     return _terms(bound)[1], _number(value)
 
 
-def _guard_rules(node: int, guard: Guard, numbering: dict[Guard, int], settings: ContinuousSettings, switch: str = "") -> list[str]:
+def _guard_rules(
+    node: int, guard: Guard, numbering: dict[Guard, int], settings: ContinuousSettings, switch: str = ""
+) -> list[str]:
     """The rules of one guard node; ``switch`` is a body condition (``, not relaxed(K)``) under
     which a bound's linear constraints apply."""
     head = f"g({node},t)"
@@ -378,12 +437,12 @@ def _guard_rules(node: int, guard: Guard, numbering: dict[Guard, int], settings:
         bound = guard.part
         assert isinstance(bound, Bound)
         if bound.term.quantity == LANE:
-            return _outside_rules(node, bound, None)  # lanes: the grid's rules, which need no settings
+            return outside_rules(node, bound, None)  # lanes: the grid's rules, which need no settings
         return _outside(node, bound, settings, switch)
     assert isinstance(guard, Bound)
     if guard.term.quantity == LANE:
-        return _bound_rule(head, guard, None)
-    low, high = _inset(guard.low, guard.high, _margin(guard, settings))
+        return bound_rule(head, guard, None)
+    low, high = inset(guard.low, guard.high, _margin(guard, settings))
     if guard.term.quantity == SPEED and guard.term.reference is None and guard.low <= 0:
         low = 0.0  # no margin below a standstill: no vehicle undershoots it (none reverses)
     # a free guard is tried false first: set at random, it would add linear constraints at steps
@@ -432,7 +491,12 @@ def _outside(node: int, bound: Bound, settings: ContinuousSettings, switch: str 
         rules.append(f"&sum{{ {elements} }} >= {right} :- above({node},t).")
     if not sides:
         return [f"% {head} never holds"]
-    return [f"{{ {head} }}.", f"#heuristic {head}. [1,false]", f"{{ {'; '.join(sides)} }} = 1 :- {head}{switch}.", *rules]
+    return [
+        f"{{ {head} }}.",
+        f"#heuristic {head}. [1,false]",
+        f"{{ {'; '.join(sides)} }} = 1 :- {head}{switch}.",
+        *rules,
+    ]
 
 
 class ContinuousPlanner(Planner):
@@ -459,7 +523,9 @@ class ContinuousPlanner(Planner):
 
         control = self._new_control()
         program = "\n".join((ASP_DIR / name).read_text(encoding="utf-8") for name in (*SHARED, ENCODING))
-        program += "\n#program base.\n" + base_program + "\n" + self.preferences + "\n#program state(t).\n" + state_program
+        program += (
+            "\n#program base.\n" + base_program + "\n" + self.preferences + "\n#program state(t).\n" + state_program
+        )
         if self.settings.theory == "lpx":
             from clingolpx import ClingoLPXTheory
 
@@ -543,7 +609,9 @@ class ContinuousPlanner(Planner):
                 return
             last_open = window.last_open(self.settings.max_horizon)
             if last_open is None:
-                raise NoPlanError(f"no plan satisfies the scenario within {self.settings.max_horizon} steps ({self.settings.max_horizon * self.settings.dt:g} s)")
+                raise NoPlanError(
+                    f"no plan satisfies the scenario within {self.settings.max_horizon} steps ({self.settings.max_horizon * self.settings.dt:g} s)"
+                )
             dt, longest = self.settings.dt, last_open + 1
             lengths = f"{earliest * dt:g} s" if longest <= earliest else f"{earliest * dt:g}..{longest * dt:g} s"
             raise NoPlanError(f"no plan satisfies the scenario in any length its durations allow ({lengths})")
@@ -558,7 +626,9 @@ class ContinuousPlanner(Planner):
         """The first horizon the durations allow (``needed_horizon``); ``NoPlanError`` when none does."""
         earliest = self.needed_horizon(deadline, window)
         if earliest is None:
-            raise NoPlanError(f"the phases' durations cannot all hold at any length, in steps of {self.settings.dt:g} s")
+            raise NoPlanError(
+                f"the phases' durations cannot all hold at any length, in steps of {self.settings.dt:g} s"
+            )
         return earliest
 
     def _stretch_target(self, shortest: int, longest: int | None = None) -> int:
@@ -566,12 +636,16 @@ class ContinuousPlanner(Planner):
         cap = min(self.settings.max_horizon, math.floor(self.settings.stretch_limit / self.settings.dt + 1e-9))
         return super()._stretch_target(shortest, cap if longest is None else min(longest, cap))
 
-    def _model(self, control, deadline: float, where: str, conflicts: int | None = None) -> tuple[list, dict[str, object]] | None:
+    def _model(
+        self, control, deadline: float, where: str, conflicts: int | None = None
+    ) -> tuple[list, dict[str, object]] | None:
         """(shown symbols, the linear program's values) of the next model; None when there is none,
         or none within ``conflicts``."""
 
         def answer(model, theory) -> tuple[list, dict[str, object]]:
-            return list(model.symbols(shown=True)), {str(key): value for key, value in theory.assignment(model.thread_id)}
+            return list(model.symbols(shown=True)), {
+                str(key): value for key, value in theory.assignment(model.thread_id)
+            }
 
         return self._next_model(control, deadline, f" {where}", answer, conflicts)
 
@@ -609,7 +683,9 @@ class ContinuousPlanner(Planner):
         rules = [f"#external steer({count})."]
         for vehicle in self.automaton.actors:
             if vehicle not in self.automaton.stationary:
-                rules.append(f"&nudge{{ v({_atom(vehicle)},0) }} = {_number(round(low + place * (high - low), 1))} :- steer({count}).")
+                rules.append(
+                    f"&nudge{{ v({atom(vehicle)},0) }} = {_number(round(low + place * (high - low), 1))} :- steer({count})."
+                )
         return rules
 
     def _continuous_plan(self, symbols, values: dict[str, object], horizon: int, index: int = 0) -> Plan:
@@ -624,12 +700,24 @@ class ContinuousPlanner(Planner):
                 transitions.append((symbol.arguments[1].number, symbol.arguments[0].number))
 
         def value(variable: str, vehicle: str, step: int) -> float:
-            raw = values.get(f"{variable}({_atom(vehicle)},{step})")
+            raw = values.get(f"{variable}({atom(vehicle)},{step})")
             return float(Fraction(str(raw).strip('"'))) if raw is not None else 0.0
 
         states = {
-            v: [PlanState(position=value("p", v, k), lane=lanes[(v, k)], speed=value("v", v, k)) for k in range(horizon + 1)]
+            v: [
+                PlanState(position=value("p", v, k), lane=lanes[(v, k)], speed=value("v", v, k))
+                for k in range(horizon + 1)
+            ]
             for v in self.automaton.actors
         }
-        return Plan(dt=self.settings.dt, lanes=self.automaton.lanes, states=states, transitions=sorted(transitions), seed=self.seed, index=index,
-                    stats=dict(self.stats), runup=0.0, stationary=tuple(v for v in self.automaton.actors if v in self.automaton.stationary))
+        return Plan(
+            dt=self.settings.dt,
+            lanes=self.automaton.lanes,
+            states=states,
+            transitions=sorted(transitions),
+            seed=self.seed,
+            index=index,
+            stats=dict(self.stats),
+            runup=0.0,
+            stationary=tuple(v for v in self.automaton.actors if v in self.automaton.stationary),
+        )

@@ -29,12 +29,21 @@ class HorizonTooShort(NoPlanError):
     def __init__(self, limit_steps: int, dt: float, needed_steps: int | None) -> None:
         from ..settings import MAX_HORIZON
 
-        needed = f"at least {needed_steps * dt:g} s" if needed_steps is not None else f"more than {4 * limit_steps * dt:g} s"
-        if needed_steps is not None and needed_steps <= MAX_HORIZON or needed_steps is None and limit_steps < MAX_HORIZON:
+        needed = (
+            f"at least {needed_steps * dt:g} s" if needed_steps is not None else f"more than {4 * limit_steps * dt:g} s"
+        )
+        if (
+            needed_steps is not None
+            and needed_steps <= MAX_HORIZON
+            or needed_steps is None
+            and limit_steps < MAX_HORIZON
+        ):
             what = "raise the limit with --roadlogic-horizon N (ini roadlogic_horizon) or --horizon N of roadlogic run, plan, replay and bench"
         else:  # past the longest horizon the tool plans: no setting helps
             what = f"the tool plans at most {MAX_HORIZON} steps: shorten the scenario's phases or split it"
-        super().__init__(f"no plan within the horizon limit of {limit_steps} steps ({limit_steps * dt:g} s): the scenario's phases need {needed} together; {what}")
+        super().__init__(
+            f"no plan within the horizon limit of {limit_steps} steps ({limit_steps * dt:g} s): the scenario's phases need {needed} together; {what}"
+        )
         self.limit_steps, self.needed_steps = limit_steps, needed_steps
 
 
@@ -71,11 +80,15 @@ class LimitsBind(NoPlanError):
         self.beyond_a_car = beyond_a_car
         relaxed = " and ".join(limits)
         if beyond_a_car:
-            text = (f"no concrete scenario within a real car's limits has these values: plans exist only with {relaxed}, "
-                    "beyond what a car can do (ContinuousSettings fields; their defaults are a real car's)")
+            text = (
+                f"no concrete scenario within a real car's limits has these values: plans exist only with {relaxed}, "
+                "beyond what a car can do (ContinuousSettings fields; their defaults are a real car's)"
+            )
         else:
-            text = (f"no plan within the planner's spacing between cars at these values, but one exists with {relaxed}: "
-                    "the scenario itself can be met here, a setting of the tool binds (a ContinuousSettings field)")
+            text = (
+                f"no plan within the planner's spacing between cars at these values, but one exists with {relaxed}: "
+                "the scenario itself can be met here, a setting of the tool binds (a ContinuousSettings field)"
+            )
         super().__init__(text + (f"; that plan's simulation was not accepted: {explanation}" if explanation else ""))
 
 
@@ -103,7 +116,9 @@ class UnsatisfiableScenario(NoPlanError):
                     together = ", ".join(f"{o} (line {o.source.line})" if o.source else str(o) for o in others)
                     message = f"{member} cannot hold together with {together}"
                 else:
-                    message = f"{member} cannot hold in any plan under the domain rules" + (f" ({self.rules})" if self.rules else "")
+                    message = f"{member} cannot hold in any plan under the domain rules" + (
+                        f" ({self.rules})" if self.rules else ""
+                    )
                 hint = "the scenario can never be met; widen or remove one of them" if member is group[0] else None
                 diagnostics.append(Diagnostic(member.source, message, hint))
         return OscError(diagnostics).report() if diagnostics else str(self)

@@ -18,8 +18,8 @@ from dataclasses import dataclass
 
 from ..automaton.guards import HEADWAY, LANE, POSITION, SPEED, TRAVELED, And, Bound, Guard, Not, Or
 from ..automaton.model import SymbolicAutomaton, Timing
-from ..settings import DEFAULT_HORIZON, DEFAULT_PLAN_TIMEOUT
 from ..frontend.errors import OscError, error_at
+from ..settings import DEFAULT_HORIZON, DEFAULT_PLAN_TIMEOUT
 
 
 @dataclass(frozen=True)
@@ -65,7 +65,12 @@ class PlanningSettings:
 
     def resolution(self) -> dict[str | None, float]:
         """The smallest difference the plan can express, per physical dimension (for sampled values)."""
-        return {"length": self.grid, "speed": self.grid / self.dt, "time": self.dt, "acceleration": self.grid / self.dt**2}
+        return {
+            "length": self.grid,
+            "speed": self.grid / self.dt,
+            "time": self.dt,
+            "acceleration": self.grid / self.dt**2,
+        }
 
     def margins(self) -> dict[str | None, float]:
         """How far inside a range's edges the plan keeps, per physical dimension."""
@@ -75,12 +80,17 @@ class PlanningSettings:
         return speed * self.dt / self.grid
 
     def speeds(self) -> range:
-        return range(math.ceil(self.cells_per_step(self.min_speed)), math.floor(self.cells_per_step(self.max_speed)) + 1)
+        return range(
+            math.ceil(self.cells_per_step(self.min_speed)), math.floor(self.cells_per_step(self.max_speed)) + 1
+        )
 
     def initial_speeds(self) -> range:
         """The start speeds in cells per step."""
         low, high = self.initial_speed
-        return range(max(math.ceil(self.cells_per_step(low) - 1e-9), self.speeds()[0]), min(math.floor(self.cells_per_step(high) + 1e-9), self.speeds()[-1]) + 1)
+        return range(
+            max(math.ceil(self.cells_per_step(low) - 1e-9), self.speeds()[0]),
+            min(math.floor(self.cells_per_step(high) + 1e-9), self.speeds()[-1]) + 1,
+        )
 
     def runup_steps(self, cells_per_step: int) -> int:
         """Steps a vehicle needs from standstill to ``cells_per_step`` at the run-up rate."""
@@ -95,7 +105,9 @@ class PlanningSettings:
         for a in self.accelerations:
             value = a * self.dt * self.dt / self.grid
             if not float(value).is_integer() or int(value) % 2:
-                raise ValueError(f"acceleration {a} m/s^2 is not an even number of cells per step^2 (exact kinematics need it)")
+                raise ValueError(
+                    f"acceleration {a} m/s^2 is not an even number of cells per step^2 (exact kinematics need it)"
+                )
             cells.append(int(value))
         return cells
 
@@ -125,7 +137,9 @@ def guard_nodes(automaton: SymbolicAutomaton) -> tuple[dict[int, int], dict[Guar
 
 def invariant_nodes(automaton: SymbolicAutomaton, numbering: dict[Guard, int]) -> dict[int, int]:
     """location id -> guard node of its invariant, for locations that have one."""
-    return {loc.id: numbering[negation_normal(loc.invariant)] for loc in automaton.locations if not loc.invariant.is_true}
+    return {
+        loc.id: numbering[negation_normal(loc.invariant)] for loc in automaton.locations if not loc.invariant.is_true
+    }
 
 
 def negation_normal(guard: Guard) -> Guard:
@@ -180,7 +194,9 @@ def relaxable_constraints(automaton: SymbolicAutomaton) -> list:
     return list(found.values())
 
 
-def build_instance(automaton: SymbolicAutomaton, settings: PlanningSettings, relaxable: bool = False) -> tuple[str, str]:
+def build_instance(
+    automaton: SymbolicAutomaton, settings: PlanningSettings, relaxable: bool = False
+) -> tuple[str, str]:
     """Returns (base program, state(t) program) of the scenario instance.
 
     With ``relaxable``, each constraint of ``relaxable_constraints`` (numbered in that order) is
@@ -188,7 +204,11 @@ def build_instance(automaton: SymbolicAutomaton, settings: PlanningSettings, rel
     """
     rate = next((rate for timing in automaton.timings.values() for rate in timing.rates), None)
     if rate is not None:
-        why = "the grid encoding's accelerations are -2, 0 and +2 cells per step^2" if rate.column == "speed" else "the grid encoding has no rows over a phase's two ends"
+        why = (
+            "the grid encoding's accelerations are -2, 0 and +2 cells per step^2"
+            if rate.column == "speed"
+            else "the grid encoding has no rows over a phase's two ends"
+        )
         raise _needs_continuous(rate.source, rate.construct, why)
     speeds = settings.speeds()
     if not speeds or speeds[0] < 1:
@@ -202,8 +222,8 @@ def build_instance(automaton: SymbolicAutomaton, settings: PlanningSettings, rel
     vehicles = automaton.actors
     base = [
         "% scenario instance (generated)",
-        *(f"vehicle({_atom(v)})." for v in vehicles),
-        *(f"stationary({_atom(v)})." for v in vehicles if v in automaton.stationary),
+        *(f"vehicle({atom(v)})." for v in vehicles),
+        *(f"stationary({atom(v)})." for v in vehicles if v in automaton.stationary),
         f"lane_id(0..{automaton.lanes - 1}).",
         f"speed({speeds[0]}..{speeds[-1]}).",
         *(f"accel({a})." for a in accels),
@@ -212,7 +232,7 @@ def build_instance(automaton: SymbolicAutomaton, settings: PlanningSettings, rel
         f"min_gap({gap}).",
         "",
         "% initial state (asp/initial.lp): the first vehicle at cell 0, the others in start zones",
-        f"#const first_vehicle = {_atom(vehicles[0])}.",
+        f"#const first_vehicle = {atom(vehicles[0])}.",
         f"#const zones = {zones}.",
         f"#const start_low = {starts[0]}.",
         f"#const start_high = {starts[-1]}.",
@@ -220,15 +240,27 @@ def build_instance(automaton: SymbolicAutomaton, settings: PlanningSettings, rel
         "% the run-up from standstill: runup_steps(X,S), the steps to reach speed X; runup(X,T,Lo,Hi),",
         "% the cells covered when the run-up lasts T steps (bounds of the exact distance)",
         *(f"runup_steps({x},{settings.runup_steps(x)})." for x in starts),
-        *(_runup_fact(x, duration, settings) for x in starts for duration in range(settings.runup_steps(x), settings.runup_steps(starts[-1]) + 1)),
+        *(
+            _runup_fact(x, duration, settings)
+            for x in starts
+            for duration in range(settings.runup_steps(x), settings.runup_steps(starts[-1]) + 1)
+        ),
         "runup_steps(0,0).",
         f"runup(0,0..{settings.runup_steps(starts[-1])},0,0).  % a stationary object has no run-up",
         "",
     ]
-    return with_automaton(base, automaton, settings.dt, relaxable, lambda node, guard, numbering, switch: _guard_rules(node, guard, numbering, settings, switch))
+    return with_automaton(
+        base,
+        automaton,
+        settings.dt,
+        relaxable,
+        lambda node, guard, numbering, switch: _guard_rules(node, guard, numbering, settings, switch),
+    )
 
 
-def with_automaton(base: list[str], automaton: SymbolicAutomaton, dt: float, relaxable: bool, rules, more_state=None) -> tuple[str, str]:
+def with_automaton(
+    base: list[str], automaton: SymbolicAutomaton, dt: float, relaxable: bool, rules, more_state=None
+) -> tuple[str, str]:
     """(base program, state(t) program): an encoding's own base facts ``base`` followed by the
     automaton's facts, and the guard program from the encoding's ``rules`` (see guard_program)
     followed by ``more_state(relax)``'s rules when given; with ``relaxable``, every bound and
@@ -297,7 +329,7 @@ def _runup_fact(cells_per_step: int, steps: int, settings: PlanningSettings) -> 
     return f"runup({cells_per_step},{steps},{math.floor(metres / settings.grid + 1e-9)},{math.ceil(metres / settings.grid - 1e-9)})."
 
 
-def _atom(name: str) -> str:
+def atom(name: str) -> str:
     """An actor name as an ASP constant (quoted when it is not a lower-case identifier)."""
     return name if name[:1].islower() and name.replace("_", "").isalnum() else f'"{name}"'
 
@@ -312,7 +344,9 @@ def junction_rules(node: int, guard: And | Or, numbering: dict[Guard, int]) -> l
     return [f"{head} :- g({numbering[p]},t)." for p in guard.parts]
 
 
-def _guard_rules(node: int, guard: Guard, numbering: dict[Guard, int], settings: PlanningSettings, switch: str = "") -> list[str]:
+def _guard_rules(
+    node: int, guard: Guard, numbering: dict[Guard, int], settings: PlanningSettings, switch: str = ""
+) -> list[str]:
     """The rules of one guard node; ``switch`` is a body condition (``, not relaxed(K)``) under
     which the difference constraints of a position bound apply."""
     head = f"g({node},t)"
@@ -321,14 +355,18 @@ def _guard_rules(node: int, guard: Guard, numbering: dict[Guard, int], settings:
     if isinstance(guard, Not):  # on a bound (negation normal form): outside the range, with a margin
         assert isinstance(guard.part, Bound)
         if guard.part.term.quantity in _CONTINUOUS_ONLY:
-            raise _needs_continuous(guard.part.source, _CONTINUOUS_ONLY[guard.part.term.quantity], "the grid encoding cannot express it")
-        return _outside_rules(node, guard.part, settings, switch)
+            raise _needs_continuous(
+                guard.part.source, _CONTINUOUS_ONLY[guard.part.term.quantity], "the grid encoding cannot express it"
+            )
+        return outside_rules(node, guard.part, settings, switch)
     assert isinstance(guard, Bound)
     if guard.term.quantity in _CONTINUOUS_ONLY:
-        raise _needs_continuous(guard.source, _CONTINUOUS_ONLY[guard.term.quantity], "the grid encoding cannot express it")
+        raise _needs_continuous(
+            guard.source, _CONTINUOUS_ONLY[guard.term.quantity], "the grid encoding cannot express it"
+        )
     if guard.term.quantity == POSITION:
         return _position_rules(node, guard, settings, switch)
-    return _bound_rule(head, guard, settings)
+    return bound_rule(head, guard, settings)
 
 
 # the grid's positions and speeds are separate integer fluents: a time headway (a gap over a
@@ -340,8 +378,11 @@ _CONTINUOUS_ONLY = {HEADWAY: HEADWAY_CONSTRUCT, TRAVELED: "a distance travelled 
 
 def _needs_continuous(source, construct: str, why: str) -> OscError:
     """A construct only the continuous encoding plans, refused by the grid at its place."""
-    return error_at(source, f"{construct} needs the continuous planner; {why}",
-                    hint="drop --roadlogic-encoding grid / --encoding grid (continuous is the default)")
+    return error_at(
+        source,
+        f"{construct} needs the continuous planner; {why}",
+        hint="drop --roadlogic-encoding grid / --encoding grid (continuous is the default)",
+    )
 
 
 def _margin_and_scale(bound: Bound, settings: PlanningSettings | None) -> tuple[float, float, str]:
@@ -370,7 +411,7 @@ def _position_rules(node: int, bound: Bound, settings: PlanningSettings, switch:
 
     Positions are not atoms, so the guard cannot be derived from them: the solver chooses
     ``g(N,t)`` and its truth imposes the bound. Guards are only used positively (negations sit on
-    bounds, ``_outside_rules``), so a false ``g`` needs no meaning.
+    bounds, ``outside_rules``), so a false ``g`` needs no meaning.
     """
     lo, hi = _planned_range(bound.low, bound.high, settings.position_margin, settings.grid)
     head = f"g({node},t)"
@@ -387,18 +428,18 @@ def _position_rules(node: int, bound: Bound, settings: PlanningSettings, switch:
 
 def _position_terms(bound: Bound) -> tuple[str, str]:
     term = bound.term
-    return f"p({_atom(term.actor)},t)", "0" if term.reference is None else f"p({_atom(term.reference)},t)"
+    return f"p({atom(term.actor)},t)", "0" if term.reference is None else f"p({atom(term.reference)},t)"
 
 
 def _fluent_terms(bound: Bound, fluent: str) -> tuple[list[str], str]:
     """The body atoms reading a speed or lane bound's term, and the term's value in them."""
     term = bound.term
     if term.reference is None:
-        return [f"{fluent}({_atom(term.actor)},X,t)"], "X"
-    return [f"{fluent}({_atom(term.actor)},X,t)", f"{fluent}({_atom(term.reference)},Y,t)"], "X-Y"
+        return [f"{fluent}({atom(term.actor)},X,t)"], "X"
+    return [f"{fluent}({atom(term.actor)},X,t)", f"{fluent}({atom(term.reference)},Y,t)"], "X-Y"
 
 
-def _outside_rules(node: int, bound: Bound, settings: PlanningSettings | None, switch: str = "") -> list[str]:
+def outside_rules(node: int, bound: Bound, settings: PlanningSettings | None, switch: str = "") -> list[str]:
     """``not bound``: the value below or above the range, planned with the margin outside it."""
     margin, scale, fluent = _margin_and_scale(bound, settings)
     head = f"g({node},t)"
@@ -425,7 +466,7 @@ def _outside_rules(node: int, bound: Bound, settings: PlanningSettings | None, s
     return rules
 
 
-def _bound_rule(head: str, bound: Bound, settings: PlanningSettings | None) -> list[str]:
+def bound_rule(head: str, bound: Bound, settings: PlanningSettings | None) -> list[str]:
     """A speed or lane bound, derived from the vel/lane atoms (speeds with a margin inside)."""
     margin, scale, fluent = _margin_and_scale(bound, settings)
     lo, hi = _planned_range(bound.low, bound.high, margin, scale)
@@ -459,16 +500,16 @@ def _planned_range(low: float, high: float, margin: float, scale: float) -> tupl
     A narrow range (a sampled value's one-cell band, say) can hold a grid value that every inset
     misses: [23, 24] inset to [23.25, 23.75] has no whole metre, so the plan uses the range itself.
     """
-    lo, hi = _grid_range(*_inset(low, high, margin), scale)
+    lo, hi = _grid_range(*inset(low, high, margin), scale)
     return (lo, hi) if lo <= hi else _grid_range(low, high, scale)
 
 
-def _inset(low: float, high: float, margin: float) -> tuple[float, float]:
+def inset(low: float, high: float, margin: float) -> tuple[float, float]:
     """Shrink a finite range by up to ``margin`` per side, keeping at least a quarter of it."""
     if low == -math.inf or high == math.inf:
         return (low if low == -math.inf else low + margin, high if high == math.inf else high - margin)
-    inset = min(margin, (high - low) / 4)
-    return low + inset, high - inset
+    kept = min(margin, (high - low) / 4)
+    return low + kept, high - kept
 
 
 def start_zones(automaton: SymbolicAutomaton, settings: PlanningSettings) -> tuple[int, int]:
@@ -488,7 +529,7 @@ def start_preferences(automaton: SymbolicAutomaton, settings: PlanningSettings, 
     accelerations = settings.acceleration_cells()
     rules = []
     for index, vehicle in enumerate(automaton.actors):
-        name = _atom(vehicle)
+        name = atom(vehicle)
         rules.append(f"#heuristic lane({name},{draw.randrange(automaton.lanes)},0). [1,true]")
         if index:
             rules.append(f"#heuristic zone({name},{draw.randint(-zones, zones)}). [1,true]")

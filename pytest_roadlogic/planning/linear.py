@@ -25,27 +25,26 @@ false one says nothing.
 
 from __future__ import annotations
 
-from collections import defaultdict
-from dataclasses import dataclass, field
-from fractions import Fraction
 import math
 import os
 import re
 import sys
+from collections import defaultdict
+from dataclasses import dataclass, field
+from fractions import Fraction
 
 import clingo
-import numpy as np
 
 # imported here, never first inside clingo's solving thread: scipy imported there left a thread
 # that made the interpreter hang at exit (measured)
 import highspy
+import numpy as np
 from scipy.sparse import csr_matrix, hstack, identity, vstack
-
 
 _BANNER_SILENCED = False
 
 
-def quiet_highs() -> "highspy.Highs":
+def quiet_highs() -> highspy.Highs:
     """A HiGHS instance that prints nothing. Its first construction in a process writes HiGHS's
     banner to the standard output from C++, before any option can be set (seen as two lines at the
     top of every `roadlogic run`), so that one construction runs with file descriptor 1 on /dev/null."""
@@ -65,6 +64,7 @@ def quiet_highs() -> "highspy.Highs":
         _BANNER_SILENCED = True
     solver.setOptionValue("output_flag", False)
     return solver
+
 
 THEORY = """
 #theory lpx {
@@ -101,7 +101,7 @@ class Row:
     bound: float
     equal: bool = False
 
-    def negated(self) -> "Row":
+    def negated(self) -> Row:
         """``-sum <= -bound``: the same row read from the other side (``>=`` as ``<=``)."""
         return Row({k: -c for k, c in self.coefficients.items()}, -self.bound)
 
@@ -119,7 +119,7 @@ class LinearProgram:
     preferred: dict[int, list[tuple[Row, float]]] = field(default_factory=lambda: defaultdict(list))
     _hard: tuple | None = field(default=None, repr=False)
     # the program of the feasibility checks, kept across them (``SwitchedCheck``)
-    checker: "SwitchedCheck | None" = field(default=None, repr=False)
+    checker: SwitchedCheck | None = field(default=None, repr=False)
 
     def variable(self, symbol: clingo.Symbol) -> int:
         key = str(symbol)
@@ -173,7 +173,9 @@ def _element(term: clingo.TheoryTerm, program: LinearProgram) -> tuple[int, floa
 
 # the printed form of the elements the encoding writes: ``x``, ``((-1)*x)``, ``((-"0.5")*x)``,
 # ``("2"*x)``, ``-x``, where x is a function term without nested parentheses; and of a bound
-_PRINTED_ELEMENT = re.compile(r'^\(*(?:\(?(-)?"?(-?[0-9.]+(?:/[0-9]+)?)"?\)?\*)?(-)?([a-z_][A-Za-z0-9_]*\([^()"]*\))\)*$')
+_PRINTED_ELEMENT = re.compile(
+    r'^\(*(?:\(?(-)?"?(-?[0-9.]+(?:/[0-9]+)?)"?\)?\*)?(-)?([a-z_][A-Za-z0-9_]*\([^()"]*\))\)*$'
+)
 _PRINTED_BOUND = re.compile(r'^\(?(-)?"?(-?[0-9.]+(?:/[0-9]+)?)"?\)?$')
 _PRINTED_ATOM = re.compile(r"^&\w+\{(.*)\}(<=|>=|=)(.*)$")
 
@@ -246,7 +248,9 @@ class LazyLinearPropagator:
             row = _row(atom, program, text)
             if atom.term.name in WEIGHTS:
                 if not init.assignment.is_false(literal):
-                    program.preferred[0 if init.assignment.is_true(literal) else literal].append((row, WEIGHTS[atom.term.name]))
+                    program.preferred[0 if init.assignment.is_true(literal) else literal].append(
+                        (row, WEIGHTS[atom.term.name])
+                    )
             elif init.assignment.is_true(literal):
                 program.always.append(row)
             elif not init.assignment.is_false(literal):
@@ -321,8 +325,12 @@ def solve_linear(cost: np.ndarray, a_ub, b_ub: np.ndarray, a_eq, b_eq: np.ndarra
     if solver.getModelStatus() != highspy.HighsModelStatus.kOptimal:
         return LinearResult(False, np.zeros(n), math.inf, np.zeros(a_ub.shape[0]))
     solution = solver.getSolution()
-    return LinearResult(True, np.array(solution.col_value), solver.getInfo().objective_function_value,
-                        np.array(solution.row_dual[: a_ub.shape[0]]))
+    return LinearResult(
+        True,
+        np.array(solution.col_value),
+        solver.getInfo().objective_function_value,
+        np.array(solution.row_dual[: a_ub.shape[0]]),
+    )
 
 
 class SwitchedCheck:
@@ -357,10 +365,19 @@ class SwitchedCheck:
         n = len(program.symbols)
         if n > len(self.column):
             new, first = n - len(self.column), highs.getNumCol()
-            highs.addCols(new, np.zeros(new), np.full(new, -inf), np.full(new, inf), 0, np.zeros(new, dtype=np.int32), np.zeros(0, dtype=np.int32), np.zeros(0))
+            highs.addCols(
+                new,
+                np.zeros(new),
+                np.full(new, -inf),
+                np.full(new, inf),
+                0,
+                np.zeros(new, dtype=np.int32),
+                np.zeros(0, dtype=np.int32),
+                np.zeros(0),
+            )
             self.column += range(first, first + new)
         if len(program.always) > self.hard:
-            rows = program.always[self.hard:]
+            rows = program.always[self.hard :]
             self._add_rows(rows, [row.bound if row.equal else -inf for row in rows], [row.bound for row in rows])
             self.hard = len(program.always)
         halves: list[tuple[Row, int]] = []
@@ -380,8 +397,15 @@ class SwitchedCheck:
     def _add_rows(self, rows: list[Row], lower: list[float], upper: list[float]) -> None:
         matrix, _ = _matrix([(row, 0) for row in rows], len(self.column))
         columns = np.asarray(self.column, dtype=np.int32)[matrix.indices]  # the model's columns
-        self.highs.addRows(len(rows), np.array(lower, dtype=float), np.array(upper, dtype=float), matrix.nnz,
-                           matrix.indptr[:-1].astype(np.int32), columns, matrix.data.astype(float))
+        self.highs.addRows(
+            len(rows),
+            np.array(lower, dtype=float),
+            np.array(upper, dtype=float),
+            matrix.nnz,
+            matrix.indptr[:-1].astype(np.int32),
+            columns,
+            matrix.data.astype(float),
+        )
 
     def conflict(self, program: LinearProgram, on: list[int]) -> list[int] | None | bool:
         """The literals of ``on`` whose rows cannot hold together with those that always hold,
@@ -422,7 +446,9 @@ def _elastic_conflict(program: LinearProgram, on: list[int]) -> list[int] | None
     soft, soft_b = _matrix(elastic, n)
     m = len(elastic)
     # min sum(s): soft x - s <= b, s >= 0
-    a_ub = vstack([hstack([hard_ub, csr_matrix((hard_ub.shape[0], m))]), hstack([soft, -identity(m, format="csr")])], format="csr")
+    a_ub = vstack(
+        [hstack([hard_ub, csr_matrix((hard_ub.shape[0], m))]), hstack([soft, -identity(m, format="csr")])], format="csr"
+    )
     b_ub = np.concatenate([hard_b, soft_b])
     a_eq = hstack([eq, csr_matrix((eq.shape[0], m))], format="csr")
     cost = np.concatenate([np.zeros(n), np.ones(m)])
@@ -431,12 +457,14 @@ def _elastic_conflict(program: LinearProgram, on: list[int]) -> list[int] | None
         return sorted(set(on))
     if result.cost <= INFEASIBLE:
         return None
-    duals = result.duals[hard_ub.shape[0]:]
+    duals = result.duals[hard_ub.shape[0] :]
     conflict = sorted({literal for (_, literal), dual in zip(elastic, duals) if abs(dual) > 1e-9})
     return conflict or sorted(set(on))
 
 
-def check_rows(program: LinearProgram, on: list[int], preferring: list[int] | None = None) -> tuple[list[int] | None, np.ndarray | None]:
+def check_rows(
+    program: LinearProgram, on: list[int], preferring: list[int] | None = None
+) -> tuple[list[int] | None, np.ndarray | None]:
     """(None, a smooth solution) when the constraints that always hold and those of the literals
     ``on`` can hold together, else (the literals of an infeasible part, None). The solution meets
     the preferences that always apply and those of the literals ``preferring`` (default: ``on``)."""
@@ -450,7 +478,11 @@ def check_rows(program: LinearProgram, on: list[int], preferring: list[int] | No
         return conflict, None
     elastic = [(half, literal) for literal in on for half in _split(program.switched[literal])]
     rows = inequalities + [(row, 0) for row, _ in elastic]
-    preferred = [row for literal in (0, *(on if preferring is None else preferring)) for row in program.preferred.get(literal, ())]
+    preferred = [
+        row
+        for literal in (0, *(on if preferring is None else preferring))
+        for row in program.preferred.get(literal, ())
+    ]
     solution = smooth(program, rows, equalities, preferred)
     if solution is None:
         # infeasible without any switched constraint to blame (the constraints that always hold
@@ -464,7 +496,9 @@ def _split(rows: list[Row]) -> list[Row]:
     return [half for row in rows for half in ((row, row.negated()) if row.equal else (row,))]
 
 
-def smooth(program: LinearProgram, inequalities, equalities, preferred: list[tuple[Row, float]] = ()) -> np.ndarray | None:
+def smooth(
+    program: LinearProgram, inequalities, equalities, preferred: list[tuple[Row, float]] = ()
+) -> np.ndarray | None:
     """A solution that minimises the absolute accelerations and their changes (variables named
     ``a(V,t)``) and what the preferences are missed by (``PREFERENCE_WEIGHT`` each), among all
     that meet the constraints."""
@@ -493,7 +527,9 @@ def smooth(program: LinearProgram, inequalities, equalities, preferred: list[tup
     a_ub = vstack([hstack([ub, csr_matrix((ub.shape[0], slacks))]), extra_ub], format="csr")
     a_eq = hstack([eq, csr_matrix((eq.shape[0], slacks))], format="csr")
     cost = np.concatenate([np.zeros(n), weights])
-    result = solve_linear(cost, a_ub, np.concatenate([b, extra_b]), a_eq, eq_b, np.concatenate([np.full(n, -np.inf), np.zeros(slacks)]))
+    result = solve_linear(
+        cost, a_ub, np.concatenate([b, extra_b]), a_eq, eq_b, np.concatenate([np.full(n, -np.inf), np.zeros(slacks)])
+    )
     return result.x[:n] if result.optimal else None
 
 

@@ -73,7 +73,7 @@ class Plan:
         }
 
     @classmethod
-    def from_dict(cls, data: dict) -> "Plan":
+    def from_dict(cls, data: dict) -> Plan:
         return cls(
             dt=data["dt"],
             lanes=data["lanes"],

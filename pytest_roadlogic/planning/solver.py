@@ -29,7 +29,14 @@ from clingodl import ClingoDLTheory
 
 from ..automaton.guards import contradiction
 from ..automaton.model import SymbolicAutomaton, Timing
-from .errors import HorizonTooShort, NoPlanError, PlanningTimeout, PlanningTooLarge, UnsatisfiableScenario, conflict_message
+from .errors import (
+    HorizonTooShort,
+    NoPlanError,
+    PlanningTimeout,
+    PlanningTooLarge,
+    UnsatisfiableScenario,
+    conflict_message,
+)
 from .instance import PlanningSettings, build_instance, relaxable_constraints, start_preferences
 from .plan import Plan, PlanState
 from .window import DurationWindow, shortest_run
@@ -126,7 +133,14 @@ class Planner:
         """A control searching as every encoding's does: seeded random signs, domain heuristics,
         one model at a time, no warnings on the console."""
         return clingo.Control(
-            [f"--seed={self.seed}", "--sign-def=rnd", "--rand-freq=0.02", "--heuristic=Domain", "--warn=none", "--models=1"],
+            [
+                f"--seed={self.seed}",
+                "--sign-def=rnd",
+                "--rand-freq=0.02",
+                "--heuristic=Domain",
+                "--warn=none",
+                "--models=1",
+            ],
             logger=lambda code, message: None,
         )
 
@@ -135,9 +149,23 @@ class Planner:
         self._theories[control] = theory = ClingoDLTheory()
         theory.register(control)
         initial = (ASP_DIR / INITIAL).read_text(encoding="utf-8")
-        self._add(control, background_theory() + "\n#program base.\n" + base_program + "\n" + initial + "\n#program state(t).\n" + state_program)
+        self._add(
+            control,
+            background_theory()
+            + "\n#program base.\n"
+            + base_program
+            + "\n"
+            + initial
+            + "\n#program state(t).\n"
+            + state_program,
+        )
         if self.preferences:
-            self._add(control, "#program base.\n" + self.preferences + "".join((ASP_DIR / name).read_text(encoding="utf-8") for name in PREFERENCES))
+            self._add(
+                control,
+                "#program base.\n"
+                + self.preferences
+                + "".join((ASP_DIR / name).read_text(encoding="utf-8") for name in PREFERENCES),
+            )
         return control
 
     def _add(self, control: clingo.Control, program: str) -> None:
@@ -184,7 +212,9 @@ class Planner:
             pass  # no time to tell: go on to the diagnosis, which says what it finds
         conflict = self.explain(deadline)
         if conflict:
-            raise UnsatisfiableScenario(f"{error}\n" + conflict_message([conflict]), [conflict], self.settings.summary(self.automaton.lanes)) from None
+            raise UnsatisfiableScenario(
+                f"{error}\n" + conflict_message([conflict]), [conflict], self.settings.summary(self.automaton.lanes)
+            ) from None
         raise error
 
     def needed_horizon(self, deadline: float, window: DurationWindow | None = None) -> int | None:
@@ -207,12 +237,21 @@ class Planner:
         plan can be shorter (planning/window.py). None when there is none up to ``limit``."""
         return self.window(deadline).earliest(self.settings.max_horizon if limit is None else limit)
 
-    def window(self, deadline: float, base_program: str | None = None, assumptions: list | None = None) -> DurationWindow:
+    def window(
+        self, deadline: float, base_program: str | None = None, assumptions: list | None = None
+    ) -> DurationWindow:
         """The horizons the durations allow, for this scenario's instance or the diagnosis's
         relaxable one (``base_program`` with the ``assumptions`` it keeps). Only the scenario's own
         instance has every duration in force, so only its window starts at the automaton's floor."""
         floor = shortest_run(self.automaton, self.settings.dt) if base_program is None else 0
-        return DurationWindow(ASP_DIR / "automaton.lp", base_program or self.base_program, self._waiter(deadline), assumptions, floor, deadline)
+        return DurationWindow(
+            ASP_DIR / "automaton.lp",
+            base_program or self.base_program,
+            self._waiter(deadline),
+            assumptions,
+            floor,
+            deadline,
+        )
 
     def _waiter(self, deadline: float):
         """A window's wait: for a solve, until ``deadline``."""
@@ -247,7 +286,9 @@ class Planner:
                 if k in core:
                     step_deadline = deadline if budget is None else min(deadline, time.monotonic() + budget)
                     try:
-                        smaller = self._failing(program, settings, [c for c in core if c != k], len(constraints), step_deadline)
+                        smaller = self._failing(
+                            program, settings, [c for c in core if c != k], len(constraints), step_deadline
+                        )
                     except PlanningTimeout:
                         if time.monotonic() >= deadline:
                             raise
@@ -258,7 +299,9 @@ class Planner:
             return None
         return tuple(constraints[k] for k in core)
 
-    def _failing(self, program: tuple[str, str], settings: PlanningSettings, kept: list[int], count: int, deadline: float) -> list[int] | None:
+    def _failing(
+        self, program: tuple[str, str], settings: PlanningSettings, kept: list[int], count: int, deadline: float
+    ) -> list[int] | None:
         """Grow the horizon as in planning with the constraints ``kept`` (the rest may be relaxed):
         None when some horizon has a plan, else the union of the unsatisfiable cores."""
         relaxed = [clingo.Function("relaxed", [clingo.Number(k)]) for k in range(count)]
@@ -269,7 +312,11 @@ class Planner:
             # the kept durations let no run end within the horizon limit: they fail among themselves,
             # whatever the bounds (emit_wait_brake's brake of 6.3-7.3 s that must equal its 0.5-1 s
             # wait plus its 3-3.5 s lane change had been reported with no constraint named)
-            timings = {k for k, constraint in enumerate(relaxable_constraints(self.automaton)) if isinstance(constraint, Timing)}
+            timings = {
+                k
+                for k, constraint in enumerate(relaxable_constraints(self.automaton))
+                if isinstance(constraint, Timing)
+            }
             return sorted(k for k in kept if k in timings)
         last = window.last_horizon(settings.max_horizon)
         control = self._control(*program)
@@ -313,10 +360,14 @@ class Planner:
                 self._ground(control, parts)
                 parts = []
                 if time.monotonic() > self._deadline:
-                    raise PlanningTimeout(f"planning ran out of its time limit ({self.settings.time_limit:g} s) while grounding step {step} of {horizon}")
+                    raise PlanningTimeout(
+                        f"planning ran out of its time limit ({self.settings.time_limit:g} s) while grounding step {step} of {horizon}"
+                    )
                 if (resident := resident_bytes()) > MAX_PLANNING_BYTES:
-                    raise PlanningTooLarge(f"planning stopped at {resident / 2**30:.1f} GiB while grounding step {step} of {horizon} (the planner's "
-                                           f"limit is {MAX_PLANNING_BYTES / 2**30:g} GiB): lower the horizon with --horizon, or split the scenario")
+                    raise PlanningTooLarge(
+                        f"planning stopped at {resident / 2**30:.1f} GiB while grounding step {step} of {horizon} (the planner's "
+                        f"limit is {MAX_PLANNING_BYTES / 2**30:g} GiB): lower the horizon with --horizon, or split the scenario"
+                    )
         self._ground(control, parts)
         for step in range(max(0, grounded), horizon):
             control.assign_external(clingo.Function("query", [clingo.Number(step)]), False)
@@ -392,7 +443,9 @@ class Planner:
             return shortest
         return shortest + math.floor(self.stretch * (longest - shortest + 1))
 
-    def _stretched(self, base_program: str, state_program: str, horizon: int, deadline: float) -> tuple[clingo.Control, list[clingo.Symbol]] | None:
+    def _stretched(
+        self, base_program: str, state_program: str, horizon: int, deadline: float
+    ) -> tuple[clingo.Control, list[clingo.Symbol]] | None:
         """A search for plans of exactly ``horizon`` steps and its first plan; None when none is
         found within STRETCH_CONFLICTS (a timed phase may forbid any)."""
         control = self._control(base_program, state_program)
@@ -412,7 +465,9 @@ class Planner:
         self._theories[control].prepare(control)
         self.stats["ground_s"] += time.perf_counter() - start
 
-    def _solve(self, control: clingo.Control, deadline: float, conflicts: int | None = None) -> list[clingo.Symbol] | None:
+    def _solve(
+        self, control: clingo.Control, deadline: float, conflicts: int | None = None
+    ) -> list[clingo.Symbol] | None:
         """The shown atoms of the next model; None when there is none, or none within ``conflicts``."""
 
         def symbols(model: clingo.Model, theory) -> list[clingo.Symbol]:
@@ -449,13 +504,19 @@ class Planner:
         A plan is a function of its start cells, start speeds, accelerations and lanes, so
         excluding that combination excludes the plan (and only it).
         """
-        literals = [s for s in symbols if s.name in ("lane", "acc", "zone") or (s.name == "vel" and s.arguments[-1].number == 0)]
+        literals = [
+            s for s in symbols if s.name in ("lane", "acc", "zone") or (s.name == "vel" and s.arguments[-1].number == 0)
+        ]
         # never this plan again, and prefer choices no earlier plan made: spread plans out instead of
         # enumerating near neighbours (a domain heuristic steers the search, it adds no constraint)
-        steer = [f"#heuristic {s}. [{count},false]" for s in literals if s.name != "lane" or s.arguments[-1].number == 0]
+        steer = [
+            f"#heuristic {s}. [{count},false]" for s in literals if s.name != "lane" or s.arguments[-1].number == 0
+        ]
         self._forbid(control, literals, count, steer)
 
-    def _forbid(self, control: clingo.Control, literals: list[clingo.Symbol], count: int, rules: list[str] = ()) -> None:
+    def _forbid(
+        self, control: clingo.Control, literals: list[clingo.Symbol], count: int, rules: list[str] = ()
+    ) -> None:
         """Add and ground, as program part ``exclude_<count>``, a constraint against ``literals``
         holding together, and ``rules`` beside it."""
         name = f"exclude_{count}"
@@ -490,6 +551,15 @@ class Planner:
         transitions.sort()
         stats = dict(self.stats)
         stats["horizon"] = horizon
-        return Plan(dt=s.dt, lanes=self.automaton.lanes, states=states, transitions=transitions, seed=self.seed, index=index, stats=stats,
-                    runup=runup_steps * s.dt, runup_acceleration=s.runup_acceleration,
-                    stationary=tuple(v for v in self.automaton.actors if v in self.automaton.stationary))
+        return Plan(
+            dt=s.dt,
+            lanes=self.automaton.lanes,
+            states=states,
+            transitions=transitions,
+            seed=self.seed,
+            index=index,
+            stats=stats,
+            runup=runup_steps * s.dt,
+            runup_acceleration=s.runup_acceleration,
+            stationary=tuple(v for v in self.automaton.actors if v in self.automaton.stationary),
+        )

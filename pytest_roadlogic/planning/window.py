@@ -51,12 +51,28 @@ class DurationWindow:
     ``wait(handle, message)`` waits for a solve and raises when time is up.
     """
 
-    def __init__(self, automaton_lp: Path, base_program: str, wait: Callable[[clingo.SolveHandle, str], None], assumptions: list | None = None,
-                 floor: int = 0, deadline: float = math.inf) -> None:
+    def __init__(
+        self,
+        automaton_lp: Path,
+        base_program: str,
+        wait: Callable[[clingo.SolveHandle, str], None],
+        assumptions: list | None = None,
+        floor: int = 0,
+        deadline: float = math.inf,
+    ) -> None:
         self.deadline = deadline
         self.control = clingo.Control(["--warn=none"], logger=lambda c, m: None)
-        self.control.add("base", [], automaton_lp.read_text(encoding="utf-8") + "\n#program base.\n" + base_program
-                         + "\n#program state(t).\n" + GUARDS_HOLD + "\n" + OPEN)
+        self.control.add(
+            "base",
+            [],
+            automaton_lp.read_text(encoding="utf-8")
+            + "\n#program base.\n"
+            + base_program
+            + "\n#program state(t).\n"
+            + GUARDS_HOLD
+            + "\n"
+            + OPEN,
+        )
         self.wait = wait
         self.assumptions = assumptions or []
         self.grounded = -1
@@ -74,7 +90,9 @@ class DurationWindow:
                 self.control.ground(parts)
                 parts = []
                 if time.monotonic() > self.deadline:
-                    raise PlanningTimeout(f"planning ran out of its time limit while grounding step {step} of {horizon}")
+                    raise PlanningTimeout(
+                        f"planning ran out of its time limit while grounding step {step} of {horizon}"
+                    )
         self.control.ground(parts)
         if self.grounded < 0:
             for atom in self.control.symbolic_atoms.by_signature("relaxed", 1):
@@ -188,7 +206,11 @@ def shortest_run(automaton: SymbolicAutomaton, dt: float) -> int:
         changed = False
         beginning = {p: min((fires[t.id] for t in transitions if p in t.starts), default=0) for p in phases}
         for t in transitions:
-            step = 0 if t.source == automaton.initial else 1 + min((fires[e.id] for e in incoming.get(t.source, ())), default=0)
+            step = (
+                0
+                if t.source == automaton.initial
+                else 1 + min((fires[e.id] for e in incoming.get(t.source, ())), default=0)
+            )
             for p in t.ends & begun[t.source]:
                 step = max(step, beginning[p] + shortest[p])
             if step > fires[t.id]:

@@ -9,12 +9,22 @@ without importing numpy, the planner's data or a backend.
 from importlib import import_module
 
 _HOMES = {
-    "Driver": "driver", "Trajectory": "driver", "VehicleState": "driver",
-    "DriverFactory": "interface", "GoalRecord": "interface", "Simulation": "interface", "SimulationLimits": "interface",
-    "SimulationTimeout": "interface", "Simulator": "interface",
-    "Reference": "reference", "Waypoint": "reference", "references": "reference",
+    "Driver": "driver",
+    "Trajectory": "driver",
+    "VehicleState": "driver",
+    "DriverFactory": "interface",
+    "GoalRecord": "interface",
+    "Simulation": "interface",
+    "SimulationLimits": "interface",
+    "SimulationTimeout": "interface",
+    "Simulator": "interface",
+    "Reference": "reference",
+    "Waypoint": "reference",
+    "references": "reference",
     "Road": "road",
-    "ActorSnapshot": "trace", "Incident": "trace", "Trace": "trace",
+    "ActorSnapshot": "trace",
+    "Incident": "trace",
+    "Trace": "trace",
 }
 
 

@@ -22,7 +22,7 @@ class UnknownSimulator(ValueError):
     """A simulator name that no backend answers to."""
 
 
-def _frenetix() -> "Simulator":
+def _frenetix() -> Simulator:
     from .frenetix import FrenetixSimulator
 
     return FrenetixSimulator()
@@ -37,7 +37,7 @@ def available() -> list[str]:
     return [*BUILT_IN, *(name for name in registered if name not in BUILT_IN)]
 
 
-def simulator(name: str = DEFAULT) -> "Simulator":
+def simulator(name: str = DEFAULT) -> Simulator:
     """The backend called ``name``; ``UnknownSimulator`` (with the known names) when there is none."""
     from .interface import Simulator
 
@@ -47,6 +47,8 @@ def simulator(name: str = DEFAULT) -> "Simulator":
         if point.name == name:
             backend = point.load()()
             if not isinstance(backend, Simulator):
-                raise UnknownSimulator(f"the entry point {point.value} for simulator {name!r} does not give a simulator (needs name and simulate())")
+                raise UnknownSimulator(
+                    f"the entry point {point.value} for simulator {name!r} does not give a simulator (needs name and simulate())"
+                )
             return backend
     raise UnknownSimulator(f"no simulator named {name!r}; available: {', '.join(available())}")

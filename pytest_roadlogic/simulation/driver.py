@@ -17,6 +17,7 @@ import numpy as np
 from .reference import Reference
 from .road import Road
 
+
 @dataclass(frozen=True)
 class VehicleState:
     """A vehicle's centre position, heading (rad), speed (m/s) and acceleration (m/s^2)."""
@@ -40,16 +41,22 @@ class Trajectory:
 
     def state(self, index: int) -> VehicleState:
         index = min(index, len(self.x) - 1)
-        return VehicleState(float(self.x[index]), float(self.y[index]), float(self.heading[index]), float(self.speed[index]), float(self.acceleration[index]))
+        return VehicleState(
+            float(self.x[index]),
+            float(self.y[index]),
+            float(self.heading[index]),
+            float(self.speed[index]),
+            float(self.acceleration[index]),
+        )
 
-    def shifted(self) -> "Trajectory":
+    def shifted(self) -> Trajectory:
         """The same motion seen one time step later (a prediction for the next cycle)."""
         if len(self.x) <= 1:
             return self
         return Trajectory(self.x[1:], self.y[1:], self.heading[1:], self.speed[1:], self.acceleration[1:])
 
     @staticmethod
-    def standing(state: VehicleState, steps: int = 1) -> "Trajectory":
+    def standing(state: VehicleState, steps: int = 1) -> Trajectory:
         ones = np.ones(steps)
         return Trajectory(state.x * ones, state.y * ones, state.heading * ones, state.speed * ones, 0 * ones)
 

@@ -51,7 +51,9 @@ def _road_around(refs: dict[str, Reference], lanes: int) -> Road:
     return Road(lanes, x_start=math.floor(start - 30.0), x_end=math.ceil(float(end) + 60.0))
 
 
-def drive_in_lockstep(plan: Plan, limits: SimulationLimits, drivers: DriverFactory | None, default: Callable[[], Driver]) -> Simulation:
+def drive_in_lockstep(
+    plan: Plan, limits: SimulationLimits, drivers: DriverFactory | None, default: Callable[[], Driver]
+) -> Simulation:
     """Drive every vehicle of ``plan`` from standstill through its waypoints.
 
     ``drivers`` maps a vehicle name to a custom driver (or ``None`` for ``default()``); stationary
@@ -75,9 +77,14 @@ def drive_in_lockstep(plan: Plan, limits: SimulationLimits, drivers: DriverFacto
         active[vehicle] = driver
     end_time = max(r.end_time for r in refs.values()) + TAIL
     steps = int(round(end_time / dt))
-    states = {v: VehicleState(r.start_position, road.center_y(r.waypoints[0].lane), 0.0, r.start_speed, 0.0) for v, r in refs.items()}
+    states = {
+        v: VehicleState(r.start_position, road.center_y(r.waypoints[0].lane), 0.0, r.start_speed, 0.0)
+        for v, r in refs.items()
+    }
     predictions = {v: Trajectory.standing(s) for v, s in states.items()}
-    columns = {v: {c: np.zeros(steps + 1) for c in ("x", "y", "heading", "speed", "acceleration", "lane")} for v in refs}
+    columns = {
+        v: {c: np.zeros(steps + 1) for c in ("x", "y", "heading", "speed", "acceleration", "lane")} for v in refs
+    }
     incidents: list[Incident] = []
     goals = {v: _GoalSequence(r.waypoints) for v, r in refs.items() if v not in plan.stationary}
 
@@ -100,7 +107,9 @@ def drive_in_lockstep(plan: Plan, limits: SimulationLimits, drivers: DriverFacto
     record(0)
     for k in range(1, steps + 1):
         if clock.monotonic() > deadline:
-            raise SimulationTimeout(f"the simulation took over its limit of {time_limit:g} s at {k * dt:.1f} s of {steps * dt:.1f} s simulated")
+            raise SimulationTimeout(
+                f"the simulation took over its limit of {time_limit:g} s at {k * dt:.1f} s of {steps * dt:.1f} s simulated"
+            )
         time = (k - 1) * dt
         chosen = {}
         for v, driver in active.items():
@@ -116,7 +125,9 @@ def drive_in_lockstep(plan: Plan, limits: SimulationLimits, drivers: DriverFacto
     fallbacks = {v: getattr(d, "fallbacks", 0) for v, d in active.items()}
     for sequence in goals.values():
         sequence.update(math.inf, math.nan, -1)  # windows still open at the end are misses
-    return Simulation(trace, road, refs, dt, fallbacks, tuple(plan.stationary), {v: g.records for v, g in goals.items()})
+    return Simulation(
+        trace, road, refs, dt, fallbacks, tuple(plan.stationary), {v: g.records for v, g in goals.items()}
+    )
 
 
 def _merge(incidents: list[Incident]) -> list[Incident]:

@@ -53,7 +53,9 @@ def drivers_from_names(names: dict[str, str], search: Iterable[Path] = ()) -> Dr
         try:
             cls()
         except Exception as error:  # a user's class: any exception means it cannot be built here
-            raise DriverLoadError(f"the driver of {vehicle}, {names[vehicle]}, cannot be built without arguments ({type(error).__name__}: {error})") from None
+            raise DriverLoadError(
+                f"the driver of {vehicle}, {names[vehicle]}, cannot be built without arguments ({type(error).__name__}: {error})"
+            ) from None
     return lambda vehicle: classes[vehicle]() if vehicle in classes else None
 
 
@@ -65,7 +67,9 @@ def _load(vehicle: str, name: str, search: Iterable[Path]) -> type:
         for part in qualname.split("."):
             target = getattr(target, part)
     except (ImportError, AttributeError) as error:
-        raise DriverLoadError(f"the driver of {vehicle}, {name}, does not load here ({type(error).__name__}: {error})") from None
+        raise DriverLoadError(
+            f"the driver of {vehicle}, {name}, does not load here ({type(error).__name__}: {error})"
+        ) from None
     return target
 
 

@@ -56,7 +56,11 @@ class Waypoint:
         return self.time + self.window
 
     def reached(self, time: float, x: float, lane: int) -> bool:
-        return self.earliest - 1e-9 <= time <= self.latest + 1e-9 and lane == self.lane and abs(x - self.position) <= self.reach
+        return (
+            self.earliest - 1e-9 <= time <= self.latest + 1e-9
+            and lane == self.lane
+            and abs(x - self.position) <= self.reach
+        )
 
 
 @dataclass
@@ -132,7 +136,8 @@ def references(plan: Plan, road: Road) -> dict[str, Reference]:
     result = {}
     for vehicle in plan.vehicles:
         waypoints = [
-            Waypoint(duration + k * plan.dt, s.position, s.lane, s.speed, window=plan.dt / 2) for k, s in enumerate(plan.states[vehicle])
+            Waypoint(duration + k * plan.dt, s.position, s.lane, s.speed, window=plan.dt / 2)
+            for k, s in enumerate(plan.states[vehicle])
         ]
         result[vehicle] = Reference(vehicle, duration, plan.runup_acceleration, waypoints, road)
     return result

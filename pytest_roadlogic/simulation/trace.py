@@ -50,7 +50,9 @@ class Trace:
 
     def snapshot(self, index: int) -> dict[str, ActorSnapshot]:
         return {
-            name: ActorSnapshot(float(c["x"][index]), int(c["lane"][index]), float(c["speed"][index]), float(c["x"][index] - c["x"][0]))
+            name: ActorSnapshot(
+                float(c["x"][index]), int(c["lane"][index]), float(c["speed"][index]), float(c["x"][index] - c["x"][0])
+            )
             for name, c in self.actors.items()
         }
 
@@ -69,7 +71,7 @@ class Trace:
         return out.getvalue()
 
     @classmethod
-    def from_csv(cls, text: str) -> "Trace":
+    def from_csv(cls, text: str) -> Trace:
         rows = list(csv.DictReader(io.StringIO(text)))
         times = sorted({float(r["time"]) for r in rows})
         index = {t: i for i, t in enumerate(times)}

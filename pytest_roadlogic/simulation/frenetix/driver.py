@@ -15,7 +15,6 @@ from ..geometry import CAR_LENGTH, CAR_WIDTH, WHEELBASE
 from ..reference import Reference
 from ..road import Road
 
-
 _COORDINATE_SYSTEMS: dict[tuple[float, float], object] = {}
 
 
@@ -91,9 +90,15 @@ class FrenetixDriver:
         self.dt = dt
         self.coordinates, self.s_origin = _coordinate_system(road)
         handler = frenetix.TrajectoryHandler(dt=dt)
-        handler.add_feasability_function(ff.CheckYawRateConstraint(deltaMax=0.4, wheelbase=WHEELBASE, wholeTrajectory=False))
-        handler.add_feasability_function(ff.CheckAccelerationConstraint(switchingVelocity=7.3, maxAcceleration=8.0, wholeTrajectory=False))
-        handler.add_feasability_function(ff.CheckCurvatureConstraint(deltaMax=0.6, wheelbase=WHEELBASE, wholeTrajectory=False))
+        handler.add_feasability_function(
+            ff.CheckYawRateConstraint(deltaMax=0.4, wheelbase=WHEELBASE, wholeTrajectory=False)
+        )
+        handler.add_feasability_function(
+            ff.CheckAccelerationConstraint(switchingVelocity=7.3, maxAcceleration=8.0, wholeTrajectory=False)
+        )
+        handler.add_feasability_function(
+            ff.CheckCurvatureConstraint(deltaMax=0.6, wheelbase=WHEELBASE, wholeTrajectory=False)
+        )
         handler.add_cost_function(cf.CalculateLateralJerkCost("lateral_jerk", 0.02))
         handler.add_cost_function(cf.CalculateLongitudinalJerkCost("longitudinal_jerk", 0.02))
         self.handler = handler
@@ -108,10 +113,21 @@ class FrenetixDriver:
         low = bool(state.speed < self.low_velocity)
         cos_h, sin_h = np.cos(state.heading), np.sin(state.heading)
         rear = np.array([state.x - cos_h * WHEELBASE / 2, state.y - sin_h * WHEELBASE / 2])
-        cartesian = frenetix.CartesianPlannerState(rear, float(state.heading), float(state.speed), float(state.acceleration), 0.0)
-        initial = frenetix.compute_initial_state(coordinate_system=self.coordinates, x_0=cartesian, wheelbase=WHEELBASE, low_velocity_mode=low)
+        cartesian = frenetix.CartesianPlannerState(
+            rear, float(state.heading), float(state.speed), float(state.acceleration), 0.0
+        )
+        initial = frenetix.compute_initial_state(
+            coordinate_system=self.coordinates, x_0=cartesian, wheelbase=WHEELBASE, low_velocity_mode=low
+        )
         handler = self.handler
-        handler.add_function(tf.FillCoordinates(lowVelocityMode=low, initialOrientation=float(state.heading), coordinateSystem=self.coordinates, horizon=self.horizon))
+        handler.add_function(
+            tf.FillCoordinates(
+                lowVelocityMode=low,
+                initialOrientation=float(state.heading),
+                coordinateSystem=self.coordinates,
+                horizon=self.horizon,
+            )
+        )
         handler.reset_Trajectories()
         handler.generate_trajectories(self._samples(time, state, initial), low)
         handler.evaluate_all_current_functions(True)
@@ -121,8 +137,14 @@ class FrenetixDriver:
             return Trajectory.standing(state, 2)
         # the reference over the tracked window, evaluated once for all candidates
         times = time + np.arange(1, self.tracked_steps) * self.dt
-        target = (self.reference.s(times) - self.s_origin - WHEELBASE / 2, self.reference.d(times), self.reference.v(times))
-        costs = self._tracking_costs(target, candidates, (self.position_weight, self.lateral_weight, self.speed_weight)) + np.array([c.cost for c in candidates])
+        target = (
+            self.reference.s(times) - self.s_origin - WHEELBASE / 2,
+            self.reference.d(times),
+            self.reference.v(times),
+        )
+        costs = self._tracking_costs(
+            target, candidates, (self.position_weight, self.lateral_weight, self.speed_weight)
+        ) + np.array([c.cost for c in candidates])
         ranked = [candidates[i] for i in np.argsort(costs, kind="stable")[:40]]
         road_now = self._road_violation(Trajectory.standing(state))
         trajectories = []
@@ -163,7 +185,9 @@ class FrenetixDriver:
         return np.array(rows, dtype=float)
 
     @staticmethod
-    def _tracking_costs(target: tuple[np.ndarray, np.ndarray, np.ndarray], candidates: list, weights: tuple[float, float, float]) -> np.ndarray:
+    def _tracking_costs(
+        target: tuple[np.ndarray, np.ndarray, np.ndarray], candidates: list, weights: tuple[float, float, float]
+    ) -> np.ndarray:
         """Mean squared distance from the reference (s of the rear axle, d, v) over the tracked
         window, for all candidates at once (they share the planning horizon, hence the length)."""
         s_ref, d_ref, v_ref = target
@@ -173,7 +197,11 @@ class FrenetixDriver:
         d = np.array([c.curvilinear.d[1:n] for c in candidates])
         v = np.array([c.cartesian.v[1:n] for c in candidates])
         w_s, w_d, w_v = weights
-        return w_s * ((s - s_ref[:m]) ** 2).mean(axis=1) + w_d * ((d - d_ref[:m]) ** 2).mean(axis=1) + w_v * ((v - v_ref[:m]) ** 2).mean(axis=1)
+        return (
+            w_s * ((s - s_ref[:m]) ** 2).mean(axis=1)
+            + w_d * ((d - d_ref[:m]) ** 2).mean(axis=1)
+            + w_v * ((v - v_ref[:m]) ** 2).mean(axis=1)
+        )
 
     def _copy(self, candidate) -> Trajectory:
         # frenetix's arrays are views into memory freed with the sample: copy before keeping
@@ -209,6 +237,9 @@ class FrenetixDriver:
         for other in others.values():
             for k in range(1, steps):
                 j = min(k, len(other.x) - 1)
-                if abs(trajectory.x[k] - other.x[j]) < CAR_LENGTH + self.longitudinal_clearance and abs(trajectory.y[k] - other.y[j]) < CAR_WIDTH + self.lateral_clearance:
+                if (
+                    abs(trajectory.x[k] - other.x[j]) < CAR_LENGTH + self.longitudinal_clearance
+                    and abs(trajectory.y[k] - other.y[j]) < CAR_WIDTH + self.lateral_clearance
+                ):
                     return True
         return False
