@@ -61,21 +61,6 @@ def test_ruff_finds_nothing_to_lint_or_to_format():
         assert done.returncode == 0, f"ruff {' '.join(command)}:\n{done.stdout}{done.stderr}"
 
 
-# The one knot left (issue 39): the checker reads the construct registry (each construct's
-# signature and check), the constructs read the front end's model and translate into the
-# automaton's guards, and the automaton's face loads its construction, which reads the constructs'
-# conditions. Breaking it puts the guard algebra below the constructs and the checker above them;
-# until then the knot may only shrink.
-KNOWN_KNOT = {
-    *(f"pytest_roadlogic.frontend{m}" for m in ("", ".checked", ".checker")),
-    *(f"pytest_roadlogic.automaton{m}" for m in ("", ".construction", ".guards", ".model", ".phase", ".translation")),
-    *(
-        f"pytest_roadlogic.constructs{m}"
-        for m in ("", ".base", ".carla", ".conditions", ".gaps", ".lanes", ".motion", ".pending", ".position", ".speed")
-    ),
-}
-
-
 def import_graph() -> tuple[dict[str, set[str]], list[tuple[str, str, str]]]:
     """The package's modules and what each imports, read from the source: imports inside functions
     and under TYPE_CHECKING too, and the packages an import runs (importing a.b.c runs a and
@@ -167,10 +152,8 @@ def test_no_module_imports_another_modules_private_name():
     assert private == [], private
 
 
-def test_no_import_circle_but_the_known_knot_and_the_knot_grows_no_wider():
+def test_no_import_circle():
     """A circle of imports (inside functions too) makes the order of loading matter and a stage
-    impossible to use alone. One knot is left (KNOWN_KNOT); no other may form, nor may it grow."""
-    found = knots(import_graph()[0])
-    assert len(found) <= 1, [sorted(group) for group in found]
-    for group in found:
-        assert group <= KNOWN_KNOT, sorted(group - KNOWN_KNOT)
+    impossible to use alone. The last one (the checker, the constructs and the automaton) was cut
+    by the guard algebra's own package (``logic``) and the registries looked up by dialect."""
+    assert knots(import_graph()[0]) == []

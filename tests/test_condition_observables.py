@@ -7,8 +7,8 @@ import numpy as np
 import pytest
 
 from pytest_roadlogic.automaton import build_automaton
-from pytest_roadlogic.automaton.guards import TRAVELED, Bound, Term
 from pytest_roadlogic.frontend import OscError, check_text
+from pytest_roadlogic.logic.guards import TRAVELED, Bound, Term
 from pytest_roadlogic.planning import Planner, PlanningSettings
 from pytest_roadlogic.planning.continuous import ContinuousPlanner
 from tests.test_planning_continuous import check_continuous_plan

@@ -8,9 +8,9 @@ import numpy as np
 import pytest
 
 from pytest_roadlogic.automaton import build_automaton
-from pytest_roadlogic.automaton.guards import LANE
-from pytest_roadlogic.automaton.model import Travelled
 from pytest_roadlogic.frontend import OscError, check_text
+from pytest_roadlogic.logic.automaton import Travelled
+from pytest_roadlogic.logic.guards import LANE
 from pytest_roadlogic.monitor import monitor
 from pytest_roadlogic.planning import Planner, PlanningSettings
 from pytest_roadlogic.planning.continuous import ContinuousPlanner, ContinuousSettings

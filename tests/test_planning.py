@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pytest
 
-from pytest_roadlogic.automaton.model import Travelled
+from pytest_roadlogic.logic.automaton import Travelled
 from pytest_roadlogic.planning import Planner, PlanningSettings
 
 SETTINGS = PlanningSettings()
@@ -135,8 +135,8 @@ def test_a_negated_guard_puts_the_value_outside_the_range_with_a_margin(seed, qu
     """``not (a within [low, high] of b)``: positions are solver variables, not atoms, and bounds
     are planned with a margin inside; the negation must force the value out of the range, with
     the margin outside it, not merely leave the range unenforced."""
-    from pytest_roadlogic.automaton.guards import Bound, Not, Term
-    from pytest_roadlogic.automaton.model import Location, SymbolicAutomaton, Transition
+    from pytest_roadlogic.logic.automaton import Location, SymbolicAutomaton, Transition
+    from pytest_roadlogic.logic.guards import Bound, Not, Term
 
     near = Bound(Term(quantity, "a", "b"), low, high)
     automaton = SymbolicAutomaton(

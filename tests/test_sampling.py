@@ -61,7 +61,7 @@ scenario headway:
         checked, {"ego.drive.position.time": 2.0, "parallel.duration": 6.0}, settings.resolution(), settings.margins()
     )
     from pytest_roadlogic.automaton import build_automaton
-    from pytest_roadlogic.automaton.guards import HEADWAY
+    from pytest_roadlogic.logic.guards import HEADWAY
 
     automaton = build_automaton(narrowed)
     bounds = {(b.low, b.high) for t in automaton.transitions for b in t.guard.atoms() if b.term.quantity == HEADWAY}

@@ -11,7 +11,7 @@ import subprocess
 from pathlib import Path
 
 from ..automaton.dot import to_dot
-from ..automaton.model import SymbolicAutomaton
+from ..logic.automaton import SymbolicAutomaton
 from .files import write_text
 
 

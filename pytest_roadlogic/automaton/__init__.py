@@ -1,8 +1,8 @@
 """Stage 2: the symbolic automaton of a scenario (``build_automaton``) and its guard algebra."""
 
+from ..logic.automaton import Location, SymbolicAutomaton, Timing, Transition
+from ..logic.guards import LANE, POSITION, SPEED, TRUE, And, Bound, Guard, Not, Or, Term, conjunction
 from .construction import build_automaton
-from .guards import LANE, POSITION, SPEED, TRUE, And, Bound, Guard, Not, Or, Term, conjunction
-from .model import Location, SymbolicAutomaton, Timing, Transition
 
 __all__ = [
     "LANE",

@@ -25,13 +25,12 @@ import math
 from collections.abc import Hashable
 from dataclasses import dataclass, field, replace
 
-from ..constructs.conditions import condition_guard
 from ..frontend import model
 from ..frontend.checked import CheckedScenario
 from ..frontend.errors import error_at
-from .guards import TRUE, Guard, Not, conjunction
-from .model import Location, PhaseBound, SymbolicAutomaton, Timing, Transition
-from .phase import Variant
+from ..logic.automaton import Location, PhaseBound, SymbolicAutomaton, Timing, Transition
+from ..logic.guards import TRUE, Guard, Not, conjunction
+from ..logic.phase import Variant
 from .translation import check_behavior_arguments, duration_interval, phase_guards
 
 Key = Hashable
@@ -220,7 +219,7 @@ class _Builder:
         if isinstance(spec, model.Call) and spec.function == "elapsed":
             return TRUE, None, False, duration_interval(spec.arguments[0], self.env)
         if not isinstance(spec, model.EventReference):
-            return condition_guard(spec, self.env, self.actors), None, False, None
+            return self.checked.registry.condition(spec, self.env, self.actors), None, False, None
         declared = self.events.get(spec.name)
         if declared is None or spec.name in seen:
             what = "an undeclared event" if declared is None else "an event defined through itself"
@@ -229,7 +228,11 @@ class _Builder:
                 f"not supported yet by the automaton: @{spec.name} ({what})",
                 hint="wait for an event the scenario declares and emits, or on a condition",
             )
-        extra = condition_guard(spec.condition, self.env, self.actors) if spec.condition is not None else TRUE
+        extra = (
+            self.checked.registry.condition(spec.condition, self.env, self.actors)
+            if spec.condition is not None
+            else TRUE
+        )
         if declared.specification is not None:  # event e is @other / is (condition) / is elapsed(t)
             guard, event, first, timed = self.ending(declared.specification, seen + (spec.name,))
             return conjunction([guard, extra]), event, first and spec.condition is None, timed

@@ -6,7 +6,7 @@ only says what the drawing is.
 
 from __future__ import annotations
 
-from .model import SymbolicAutomaton
+from ..logic.automaton import SymbolicAutomaton
 
 
 def _quote(text: str) -> str:

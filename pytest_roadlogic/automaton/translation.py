@@ -13,17 +13,13 @@ raised here are for what the automaton cannot express.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 from ..frontend import model
+from ..frontend.checked import Registry
 from ..frontend.errors import error_at
 from ..frontend.tolerances import DURATION_TOLERANCE, widened
 from ..frontend.units import TIME
 from ..frontend.values import argument_range
-from .phase import Phase
-
-if TYPE_CHECKING:
-    from ..constructs import Registry
+from ..logic.phase import Phase
 
 
 def phase_guards(invocation: model.Invocation, registry: Registry, lanes: int, env: dict) -> Phase:

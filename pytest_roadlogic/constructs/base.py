@@ -14,16 +14,16 @@ checked and translated without touching either stage.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Collection, Iterable
 from dataclasses import dataclass
 from typing import ClassVar, Protocol
 
-from ..automaton.guards import Guard
-from ..automaton.phase import Phase
 from ..frontend import model
 from ..frontend.errors import SourceLocation, error_at
 from ..frontend.library import Binding, Signature, bind
 from ..frontend.values import Interval, argument_interval, argument_range
+from ..logic.guards import Guard
+from ..logic.phase import Phase
 from ..settings import STANDARD_DIALECT
 
 AT_VALUES = ("start", "end", "all")
@@ -197,6 +197,12 @@ class Registry:
         for construct in constructs:
             copy._add(construct)
         return copy
+
+    def condition(self, expression, env: dict, actors: Collection[str]):
+        """The guard of a condition (``wait c``, ``until c``, an event's ``is c``) over ``actors``."""
+        from .conditions import condition_guard
+
+        return condition_guard(expression, env, actors)
 
     def translated(self, kind: str) -> list[str]:
         table = self.actions if kind == "action" else self.modifiers

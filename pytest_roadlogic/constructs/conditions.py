@@ -33,7 +33,13 @@ import math
 from collections.abc import Callable, Collection
 from dataclasses import dataclass
 
-from ..automaton.guards import (
+from ..frontend import model
+from ..frontend.errors import error_at
+from ..frontend.library import refused_call
+from ..frontend.tolerances import SPEED_TOLERANCE, widened
+from ..frontend.units import LENGTH, SPEED, TIME
+from ..frontend.values import EvaluationError, argument_interval, describe
+from ..logic.guards import (
     HEADWAY,
     LANE,
     POSITION,
@@ -45,15 +51,9 @@ from ..automaton.guards import (
     Term,
     conjunction,
 )
-from ..automaton.guards import (
+from ..logic.guards import (
     SPEED as SPEED_Q,
 )
-from ..frontend import model
-from ..frontend.errors import error_at
-from ..frontend.library import refused_call
-from ..frontend.tolerances import SPEED_TOLERANCE, widened
-from ..frontend.units import LENGTH, SPEED, TIME
-from ..frontend.values import EvaluationError, argument_interval, describe
 
 
 @dataclass(frozen=True)

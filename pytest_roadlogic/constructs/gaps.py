@@ -17,10 +17,10 @@ from __future__ import annotations
 
 from typing import ClassVar
 
-from ..automaton.guards import HEADWAY
-from ..automaton.phase import Phase
 from ..frontend import model
 from ..frontend.library import DURATION, Binding, Parameter, Signature
+from ..logic.guards import HEADWAY
+from ..logic.phase import Phase
 from .base import Action, CheckContext, Use
 from .position import GAPS, Gap, gap_bound
 

@@ -11,10 +11,10 @@ from __future__ import annotations
 import math
 from typing import ClassVar
 
-from ..automaton.guards import LANE, Bound, Guard, Term
-from ..automaton.phase import Phase, Variant
 from ..frontend.errors import SourceLocation, error_at
 from ..frontend.library import AT, DURATION, RATE, Binding, Parameter, Signature
+from ..logic.guards import LANE, Bound, Guard, Term
+from ..logic.phase import Phase, Variant
 from .base import Action, AnchoredModifier, CheckContext, Modifier, Use
 
 LANE_CONVENTION = (

@@ -3,13 +3,13 @@ the motion as a whole: ``distance()``, ``along()`` and ``avoid_collisions()``.""
 
 from __future__ import annotations
 
-from ..automaton.guards import SPEED, Bound, Term
-from ..automaton.model import Travelled
-from ..automaton.phase import Phase
 from ..frontend import model
 from ..frontend.library import DURATION, Binding, Parameter, Signature
 from ..frontend.tolerances import POSITION_TOLERANCE, STANDSTILL, widened
 from ..frontend.units import LENGTH
+from ..logic.automaton import Travelled
+from ..logic.guards import SPEED, Bound, Term
+from ..logic.phase import Phase
 from .base import Action, CheckContext, Modifier, Use
 
 

@@ -5,11 +5,11 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from ..automaton.guards import HEADWAY, POSITION, Bound, Guard, Term
 from ..frontend.errors import error_at
 from ..frontend.library import AT, Parameter, Signature
 from ..frontend.tolerances import HEADWAY_TOLERANCE, POSITION_TOLERANCE, widened
 from ..frontend.units import LENGTH, TIME
+from ..logic.guards import HEADWAY, POSITION, Bound, Guard, Term
 from .base import AnchoredModifier, Use
 
 

@@ -7,15 +7,15 @@ and stays within a band of it, so it varies by 1.5 m/s at most).
 
 from __future__ import annotations
 
-from ..automaton.guards import SPEED as SPEED_Q
-from ..automaton.guards import Bound, Guard, Term
-from ..automaton.model import MeanAcceleration
-from ..automaton.phase import Phase, Variant
 from ..frontend import model
 from ..frontend.errors import SourceLocation, error_at
 from ..frontend.library import AT, DURATION, Binding, Parameter, Signature
 from ..frontend.tolerances import ACCELERATION_TOLERANCE, SPEED_TOLERANCE, widened
 from ..frontend.units import ACCELERATION, SPEED
+from ..logic.automaton import MeanAcceleration
+from ..logic.guards import SPEED as SPEED_Q
+from ..logic.guards import Bound, Guard, Term
+from ..logic.phase import Phase, Variant
 from .base import Action, AnchoredModifier, CheckContext, Modifier, Use
 
 KEEP_SPEED_CENTRES = tuple(float(v) for v in range(0, 41))

@@ -9,15 +9,30 @@ see the same logical parameters.
 
 from __future__ import annotations
 
+from collections.abc import Collection
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING
+from typing import Any, Protocol
 
 from . import model
 from .errors import Diagnostic, OscError, SourceLocation
 from .parameters import ParameterSpace
 
-if TYPE_CHECKING:  # the registry imports the automaton's guards, which import the front end
-    from ..constructs import Registry
+
+class Registry(Protocol):
+    """What the checker and the automaton ask of the constructs a scenario may use: each action and
+    modifier by name (its signature, check and translation) and the guard of a condition. The
+    constructs (``pytest_roadlogic.constructs``) provide it, one registry per dialect
+    (``frontend.dialects``); the front end only names what it needs, so that it sits below them."""
+
+    dialect: str
+
+    def action(self, name: str) -> Any: ...
+
+    def modifier(self, name: str) -> Any: ...
+
+    def translated(self, kind: str) -> list[str]: ...
+
+    def condition(self, expression: Any, env: dict, actors: Collection[str]) -> Any: ...
 
 
 @dataclass(frozen=True)

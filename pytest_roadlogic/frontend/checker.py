@@ -15,13 +15,13 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, replace
 from pathlib import Path
-from typing import TYPE_CHECKING
 
 from ..confinement import ALLOW_READ_HINT, MISSING, ReadRoots, project_root, regular_file_problem
 from ..settings import STANDARD_DIALECT
 from . import library, model
 from .builtin_events import EDGES, with_builtin_events
-from .checked import CheckedFile, CheckedScenario
+from .checked import CheckedFile, CheckedScenario, Registry
+from .dialects import registry as dialect_registry
 from .errors import Diagnostic, OscError, SourceLocation
 from .inheritance import inherited
 from .invocation import RECURSION, called_scenarios, expand_calls
@@ -31,9 +31,6 @@ from .physical import declared_physics, parse_with_declared_units
 from .standard_library import UNITS, LazyTable, part_file, part_names, standard_library
 from .units import SPEED, TIME
 from .values import EvaluationError, Interval, calls_in, describe, evaluate, names_in
-
-if TYPE_CHECKING:
-    from ..constructs import Registry
 
 DEFAULT_LANES = 3
 _BUILTIN_PHYSICAL = LazyTable(lambda _: {dimension: name for name, dimension in library.PHYSICAL_TYPES.items()})
@@ -140,15 +137,7 @@ class _Checker:
         roots: ReadRoots | None = None,
     ) -> None:
         self.roots = roots or ReadRoots.of(project_root())
-        if registry is None:
-            # imported here: the registry translates into the automaton's guards, and the
-            # automaton imports the front end (a module-level import would be circular)
-            from ..constructs import DIALECTS
-
-            if (dialect or STANDARD_DIALECT) not in DIALECTS:
-                raise ValueError(f"unknown dialect {dialect!r}; give one of {', '.join(DIALECTS)}")
-            registry = DIALECTS[dialect or STANDARD_DIALECT]
-        self.registry = registry
+        self.registry = registry if registry is not None else dialect_registry(dialect or STANDARD_DIALECT)
         self.requested_lanes = lanes
         # The road of the scenario being checked, and why it has that many lanes (for error messages).
         self.lanes = lanes or DEFAULT_LANES
@@ -1046,8 +1035,6 @@ class _Checker:
     ) -> None:
         """An event reference or a condition (``constructs.conditions`` says which ones the tool reads);
         ``waits``: it is a ``wait``'s, which may also be ``elapsed(t)``."""
-        from ..constructs.conditions import condition_guard  # imported here for the reason given in __init__
-
         if isinstance(spec, model.EventReference):
             events = {e.name: e for e in scenario.events}
             if spec.name not in events:
@@ -1078,7 +1065,7 @@ class _Checker:
             self._elapsed(spec, env)
             return
         try:
-            condition_guard(spec, env, [a.name for a in scenario.actors])
+            self.registry.condition(spec, env, [a.name for a in scenario.actors])
         except OscError as error:
             for diagnostic in error.diagnostics:
                 self.error(diagnostic.location, diagnostic.message, diagnostic.hint)

@@ -22,9 +22,9 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..automaton.guards import Bound, Guard
-from ..automaton.model import SymbolicAutomaton
 from ..frontend.errors import SourceLocation
+from ..logic.automaton import SymbolicAutomaton
+from ..logic.guards import Bound, Guard
 from ..simulation.trace import Incident, Trace
 
 

@@ -23,8 +23,8 @@ from fractions import Fraction
 
 import clingo
 
-from ..automaton.guards import HEADWAY, LANE, POSITION, SPEED, TRAVELED, And, Bound, Guard, Not, Or
-from ..automaton.model import SymbolicAutomaton, Travelled
+from ..logic.automaton import SymbolicAutomaton, Travelled
+from ..logic.guards import HEADWAY, LANE, POSITION, SPEED, TRAVELED, And, Bound, Guard, Not, Or
 from .errors import HorizonTooShort, NoPlanError, PlanningTimeout
 from .instance import atom, bound_rule, guard_nodes, inset, junction_rules, outside_rules, with_automaton
 from .linear import THEORY, LazyLinearTheory

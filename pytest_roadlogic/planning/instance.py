@@ -16,9 +16,9 @@ import math
 import random
 from dataclasses import dataclass
 
-from ..automaton.guards import HEADWAY, LANE, POSITION, SPEED, TRAVELED, And, Bound, Guard, Not, Or
-from ..automaton.model import SymbolicAutomaton, Timing
 from ..frontend.errors import OscError, error_at
+from ..logic.automaton import SymbolicAutomaton, Timing
+from ..logic.guards import HEADWAY, LANE, POSITION, SPEED, TRAVELED, And, Bound, Guard, Not, Or
 from ..settings import DEFAULT_HORIZON, DEFAULT_PLAN_TIMEOUT
 
 

@@ -27,8 +27,8 @@ import clingo
 from clingo.ast import ProgramBuilder, parse_string
 from clingodl import ClingoDLTheory
 
-from ..automaton.guards import contradiction
-from ..automaton.model import SymbolicAutomaton, Timing
+from ..logic.automaton import SymbolicAutomaton, Timing
+from ..logic.guards import contradiction
 from .errors import (
     HorizonTooShort,
     NoPlanError,

@@ -33,7 +33,7 @@ from pathlib import Path
 
 import clingo
 
-from ..automaton.model import SymbolicAutomaton
+from ..logic.automaton import SymbolicAutomaton
 from .errors import PlanningTimeout
 from .instance import timing_steps
 

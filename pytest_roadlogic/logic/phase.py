@@ -11,8 +11,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+from .automaton import PhaseBound
 from .guards import TRUE, Guard, conjunction
-from .model import PhaseBound
 
 
 @dataclass(frozen=True)
