@@ -387,7 +387,7 @@ def osc_files(paths: list[Path], recursive: bool = True) -> list[Path]:
     return found
 
 
-def check_file(
+def checked_report(
     path: Path, syntax_only: bool = False, lanes: int | None = None, dialect: str | None = None, roots=None
 ) -> tuple[bool, str]:
     """Whether the file is free of errors, and the formatted report; never raises for bad input.
@@ -432,7 +432,7 @@ def _check(args: argparse.Namespace) -> int:
     files = osc_files(args.paths)
     failed = 0
     for path in files:
-        ok, report = check_file(path, args.syntax_only, args.lanes, args.setting_dialect, _roots(args, path))
+        ok, report = checked_report(path, args.syntax_only, args.lanes, args.setting_dialect, _roots(args, path))
         if report:
             print(report)
         if not ok:

@@ -31,7 +31,7 @@ MAX_TRIES = 5
 
 
 @dataclass
-class Outcome:
+class SimulatedInstance:
     """One simulated instance: its plan, simulation and verdict (the last of its tries)."""
 
     scenario: CheckedScenario
@@ -65,7 +65,7 @@ def run_scenario(
     values: dict[str, object] | None = None,
     simulation_time_limit: float | None = DEFAULT_SIM_TIMEOUT,
     simulator: Simulator | None = None,
-) -> Outcome:
+) -> SimulatedInstance:
     """One concrete instance of ``scenario``: plan, simulate, monitor, and retry with the next plan on rejection.
 
     ``values`` (the refined strategy) is a sample of the scenario's logical parameters: the planner
@@ -92,7 +92,7 @@ def run_instances(
     simulation_time_limit: float | None = DEFAULT_SIM_TIMEOUT,
     simulator: Simulator | None = None,
     fallbacks: bool = True,
-) -> Iterator[Outcome]:
+) -> Iterator[SimulatedInstance]:
     """Up to ``count`` instances from one planner, each plan different from all before it (the base strategy).
 
     Each instance takes plans until the monitor accepts one or ``max_tries`` were rejected; it ends
@@ -130,7 +130,7 @@ def run_instances(
             start = time.perf_counter()
             verdict = monitor(specification, simulation.trace)
             seconds["monitoring"] += time.perf_counter() - start
-            outcome = Outcome(scenario, specification, plan, simulation, verdict, tries, seconds, instance)
+            outcome = SimulatedInstance(scenario, specification, plan, simulation, verdict, tries, seconds, instance)
             if verdict.accepted:
                 break
         if outcome is None:
@@ -239,7 +239,7 @@ def _relaxed_names(settings, names=None) -> list[str]:
     ]
 
 
-def _tool_limit(outcome: Outcome, guide: Guide, settings, seed: int):
+def _tool_limit(outcome: SimulatedInstance, guide: Guide, settings, seed: int):
     """The error that says which setting of the tool binds, when the rejected ``outcome`` was
     planned by one of ``_with_fallbacks``'s planners; None for a plan within every setting."""
     from .planning import LimitsBind, MarginsBind, StepBinds

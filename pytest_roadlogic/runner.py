@@ -21,7 +21,7 @@ from typing import Any
 from .case import Case
 from .frontend import CheckedScenario
 from .outcomes import CONFORMANT, NO_PLAN, NON_CONFORMANT, STAGES, TIMED_OUT
-from .pipeline import Outcome, run_instances
+from .pipeline import SimulatedInstance, run_instances
 from .planning import HorizonTooShort, LimitsBind, NoPlanError, PlanningTimeout, UnsatisfiableScenario, settings_for
 from .settings import BASE, DISCARD, REFINED, RunSettings
 from .simulation import DriverFactory, SimulationTimeout, Simulator
@@ -37,7 +37,7 @@ class CaseResult:
 
     case: Case
     outcome: str  # one of outcomes.OUTCOMES
-    run: Outcome | None = None
+    run: SimulatedInstance | None = None
     message: str = ""  # the monitor's explanation, or why there is no plan
     seconds: dict[str, float] = field(default_factory=dict)  # per stage, summed over tries
     error: NoPlanError | None = None  # the planner's, when there is no plan
@@ -318,7 +318,7 @@ class Runner:
 
     # ---------------------------------------------------------------- the pipeline
 
-    def _instances(self, count: int, values, explain: bool, fallbacks: bool = True) -> Iterator[Outcome]:
+    def _instances(self, count: int, values, explain: bool, fallbacks: bool = True) -> Iterator[SimulatedInstance]:
         return run_instances(
             self.scenario,
             count,
@@ -355,7 +355,7 @@ def _events(result: CaseResult) -> None:
         hypothesis.event("without a simulation", result.kind)
 
 
-def _result(case: Case, outcome: Outcome) -> CaseResult:
+def _result(case: Case, outcome: SimulatedInstance) -> CaseResult:
     accepted = outcome.verdict.accepted
     return CaseResult(
         case,

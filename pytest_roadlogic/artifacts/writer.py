@@ -10,7 +10,7 @@ import signal
 from collections.abc import Callable
 from pathlib import Path
 
-from ..pipeline import Outcome
+from ..pipeline import SimulatedInstance
 from .animation import animate_simulation
 from .commonroad import write_commonroad_xml
 from .files import write_text
@@ -24,7 +24,7 @@ ARTIFACT_NAMES = re.compile(
 )
 
 
-def write_artifacts(outcome: Outcome, directory: str | Path, animation: bool = True) -> dict[str, Path]:
+def write_artifacts(outcome: SimulatedInstance, directory: str | Path, animation: bool = True) -> dict[str, Path]:
     """Every artifact of a run; the GIF (seconds to render) only when ``animation`` is set."""
     directory = Path(directory)
     directory.mkdir(parents=True, exist_ok=True)
