@@ -144,40 +144,20 @@ def test_the_driver_hook_drives_the_vehicle_under_test_and_a_bad_one_fails_with_
     assert "--driver v1=tests.drivers:NeverChangesLane" in report
     # issue 38: the drivers come from the command line, never from the case file's word; the scenario
     # is read inside the project (the pytester folder, named with --allow-read from this checkout)
-    refused = subprocess.run(
-        [
-            sys.executable,
-            "-m",
-            "pytest_roadlogic.cli",
-            "replay",
-            str(artifacts / "case.json"),
-            "--out",
-            str(pytester.path / "cli"),
-            "--allow-read",
-            str(pytester.path),
-        ],
-        capture_output=True,
-        text=True,
-        cwd=ROOT,
-    )
+    replay = [
+        sys.executable,
+        "-m",
+        "pytest_roadlogic.cli",
+        "replay",
+        str(artifacts / "case.json"),
+        "--out",
+        str(pytester.path / "cli"),
+    ]
+    replay += ["--allow-read", str(pytester.path)]
+    refused = subprocess.run(replay, capture_output=True, text=True, cwd=ROOT)
     assert refused.returncode == 2 and "not imported on its word" in refused.stderr, refused.stderr
     cli = subprocess.run(
-        [
-            sys.executable,
-            "-m",
-            "pytest_roadlogic.cli",
-            "replay",
-            str(artifacts / "case.json"),
-            "--out",
-            str(pytester.path / "cli"),
-            "--allow-read",
-            str(pytester.path),
-            "--driver",
-            "v1=tests.drivers:NeverChangesLane",
-        ],
-        capture_output=True,
-        text=True,
-        cwd=ROOT,
+        [*replay, "--driver", "v1=tests.drivers:NeverChangesLane"], capture_output=True, text=True, cwd=ROOT
     )
     assert cli.returncode == 1, cli.stdout + cli.stderr
     assert (pytester.path / "cli" / "trace.csv").read_text() == (artifacts / "trace.csv").read_text()
