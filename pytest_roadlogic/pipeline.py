@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import dataclasses
 import time
-from collections.abc import Callable, Iterator
+from collections.abc import Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -20,6 +20,7 @@ from .automaton import SymbolicAutomaton, build_automaton
 from .frontend import CheckedScenario, load_file
 from .monitor import Verdict, monitor
 from .planning import Plan, PlanningSettings, settings_for
+from .planning.fallbacks import Guide, tool_limit, with_fallbacks
 from .sampling import guided, sample_seed
 from .settings import DEFAULT_SIM_TIMEOUT, RunSettings
 from .simulation import DriverFactory, Simulation, SimulationLimits, Simulator
@@ -98,7 +99,7 @@ def run_instances(
     Each instance takes plans until the monitor accepts one or ``max_tries`` were rejected; it ends
     early when the planner has no further plan. Planning errors (no plan, a timeout) and
     ``SimulationTimeout`` propagate. ``fallbacks``: when the planner has no plan, try thinner
-    margins, a finer step and relaxed limits (``_with_fallbacks``) before saying so.
+    margins, a finer step and relaxed limits (``planning.fallbacks``) before saying so.
     """
     from .planning import planner_for
     from .simulation.backends import simulator as default_simulator
@@ -113,7 +114,7 @@ def run_instances(
     planner = planner_for(guide(settings), settings, seed)
     plans = planner.plans(limit=count * max_tries)
     if fallbacks:
-        plans = _with_fallbacks(plans, guide, settings, seed, count * max_tries)
+        plans = with_fallbacks(plans, guide, settings, seed, count * max_tries)
     for instance in range(count):
         seconds = {"automaton": automaton_seconds, "planning": 0.0, "simulation": 0.0, "monitoring": 0.0}
         automaton_seconds = 0.0
@@ -136,13 +137,10 @@ def run_instances(
         if outcome is None:
             return  # the planner has no plan left; the first call raises NoPlanError instead
         if not outcome.verdict.accepted:
-            limit = _tool_limit(outcome, guide, settings, seed)
+            limit = tool_limit(outcome.plan, outcome.verdict.explain(), guide, settings, seed)
             if limit is not None:
                 raise limit
         yield outcome
-
-
-Guide = Callable[[object], SymbolicAutomaton]  # planner settings -> the automaton they solve
 
 
 def _guided(
@@ -184,7 +182,7 @@ def has_plan(
     """Whether the scenario narrowed to ``values`` has a plan (planning alone: no simulation), with
     every fallback ``run_instances`` tries or, without ``fallbacks``, within the planner's margins
     and limits; without ``beyond_limits``, the fallbacks stay within a real car's limits
-    (``CAR_LIMITS`` are never relaxed). A planning timeout or a horizon that binds is no proof that
+    (``planning.fallbacks.CAR_LIMITS`` are never relaxed). A planning timeout or a horizon that binds is no proof that
     the values have none, and counts as a plan."""
     from .planning import HorizonTooShort, NoPlanError, PlanningTimeout, planner_for
 
@@ -193,140 +191,10 @@ def has_plan(
     try:
         plans = planner_for(guide(settings), settings, seed).plans(limit=1)
         return (
-            next(_with_fallbacks(plans, guide, settings, seed, 1, beyond_limits) if fallbacks else plans, None)
+            next(with_fallbacks(plans, guide, settings, seed, 1, beyond_limits) if fallbacks else plans, None)
             is not None
         )
     except (PlanningTimeout, HorizonTooShort):
         return True
     except NoPlanError:
         return False
-
-
-# the vehicle limits a plan is tried without, when none exists within them: (field, relaxed value,
-# unit). The relaxed values are beyond any car's, so a plan that needs them names the limit. The
-# gap between two cars in one lane is the planner's too: 8 m between centres is 3.5 m between
-# bumpers, and a scenario may ask for less (cut_out_obstacle stops the ego 5-15 m behind a wreck,
-# which had been reported as a value no concrete scenario has); relaxed, 0.5 m between bumpers
-RELAXED_LIMITS = (
-    ("max_jerk", 50.0, "m/s^3"),
-    ("min_acceleration", -20.0, "m/s^2"),
-    ("max_acceleration", 12.0, "m/s^2"),
-    ("max_speed", 100.0, "m/s"),
-    ("closing_time", 0.0, "s"),
-    ("min_gap", 5.0, "m"),
-)
-# of those, a real car's: a plan that needs one of them relaxed asks more than a car can do, so
-# its values have no concrete scenario (the scenario's, not the tool's; follow_then_overtake's
-# 19 s pass ending 15 m ahead after starting 39 m behind needs a 27 m drop back in 3 s). The others
-# (the gap between cars) are how closely the tool dares to plan cars: settings of the tool
-CAR_LIMITS = frozenset({"max_jerk", "min_acceleration", "max_acceleration", "max_speed"})
-ALL_LIMITS = frozenset(name for name, _, _ in RELAXED_LIMITS)
-SPACING = ALL_LIMITS - CAR_LIMITS
-
-
-def _relaxed(settings, names=None):
-    """``settings`` with the ``RELAXED_LIMITS`` named (all by default) relaxed."""
-    return dataclasses.replace(
-        settings, **{name: value for name, value, _ in RELAXED_LIMITS if names is None or name in names}
-    )
-
-
-def _relaxed_names(settings, names=None) -> list[str]:
-    return [
-        f"{name} {getattr(settings, name):g} {unit} relaxed to {value:g}"
-        for name, value, unit in RELAXED_LIMITS
-        if names is None or name in names
-    ]
-
-
-def _tool_limit(outcome: SimulatedInstance, guide: Guide, settings, seed: int):
-    """The error that says which setting of the tool binds, when the rejected ``outcome`` was
-    planned by one of ``_with_fallbacks``'s planners; None for a plan within every setting."""
-    from .planning import LimitsBind, MarginsBind, StepBinds
-
-    explanation = outcome.verdict.explain()
-    if outcome.plan.stats.get("thinned_margins"):
-        return MarginsBind(settings.describe_margins(), settings.thinned().describe_margins(), explanation)
-    if outcome.plan.stats.get("finer_step"):
-        return StepBinds(
-            f"no plan in steps of {settings.dt:g} s; plans in steps of {settings.dt / 2:g} s exist, so the scenario itself "
-            f"can be met at these values, but their simulation was not accepted (the planning step is a setting of the tool): "
-            f"{explanation}"
-        )
-    if outcome.plan.stats.get("relaxed_limits"):
-        names = _binding_limits(guide, settings, seed)
-        return LimitsBind(
-            _relaxed_names(settings, names), explanation=explanation, beyond_a_car=bool(names & CAR_LIMITS)
-        )
-    return None
-
-
-def _binding_limits(guide: Guide, settings, seed: int) -> frozenset[str]:
-    """The vehicle limits without which the sample has a plan (with the thinner margins): one at a
-    time first, so that the report names the one that binds; then a car's limits alone, the
-    spacing alone, all together; all of them when even that gives none."""
-    from .planning import NoPlanError, planner_for
-
-    settings = dataclasses.replace(settings.thinned() or settings, explain_unsatisfiable=False)
-
-    def plannable(names) -> bool:
-        try:
-            relaxed = _relaxed(settings, names)
-            return next(planner_for(guide(relaxed), relaxed, seed).plans(limit=1), None) is not None
-        except NoPlanError:
-            return False
-
-    for names in (*(frozenset({name}) for name, _, _ in RELAXED_LIMITS), CAR_LIMITS, SPACING):
-        if plannable(names):
-            return names
-    return ALL_LIMITS
-
-
-def _with_fallbacks(
-    plans: Iterator[Plan], guide: Guide, settings, seed: int, limit: int, beyond_limits: bool = True
-) -> Iterator[Plan]:
-    """``plans``, or, when the planner has none at all, those of a planner that keeps
-    ``settings.fallback_margins`` of its margins (``stats["thinned_margins"]``), or else those of
-    one that also plans in half the step (``stats["finer_step"]``), or else of one that drives
-    beyond the vehicle limits (``RELAXED_LIMITS``, ``stats["relaxed_limits"]``; without
-    ``beyond_limits`` only the spacing between cars is relaxed, never ``CAR_LIMITS``). Each
-    planner solves the sample narrowed with its own margins (``guide``).
-
-    Why: the margins and the limits are the planner's guesses at what the vehicles can track, not
-    the scenario's constraints; a plan nearer the scenario's edges is simulated and monitored like
-    any other, and an accepted simulation is an instance of the scenario. A scenario with no plan
-    even then raises the first planner's error: its constraints clash."""
-    from .planning import HorizonTooShort, NoPlanError, PlanningTimeout, planner_for
-
-    try:
-        first = next(plans, None)
-    except NoPlanError as error:
-        thinned = settings.thinned() if hasattr(settings, "thinned") else None
-        if thinned is None or isinstance(error, (PlanningTimeout, HorizonTooShort)):
-            raise
-        quiet = dataclasses.replace(thinned, explain_unsatisfiable=False)
-        # half the planning step: durations between whole seconds (a 0.5 s wait, a 3.6 s brake)
-        finer = dataclasses.replace(
-            quiet, dt=quiet.dt / 2, max_horizon=quiet.max_horizon * 2, lane_change_gap=quiet.lane_change_gap * 2
-        )
-        # the spacing first, then a car's limits too: a plan within a car's limits is one a car can
-        # drive (cut_out_obstacle's stop 5 m behind its wreck, planned with every limit relaxed,
-        # braked with a jerk of 4 m/s^3 and its simulated ego hit the wreck)
-        relaxed = [(_relaxed(quiet, SPACING), "relaxed_limits")] + (
-            [(_relaxed(quiet), "relaxed_limits")] if beyond_limits else []
-        )
-        for fallback_settings, mark in ((quiet, "thinned_margins"), (finer, "finer_step"), *relaxed):
-            try:
-                fallback = planner_for(guide(fallback_settings), fallback_settings, seed).plans(limit=limit)
-                plan = next(fallback, None)
-            except NoPlanError:
-                continue
-            while plan is not None:
-                plan.stats[mark] = 1.0
-                yield plan
-                plan = next(fallback, None)
-            return
-        raise error from None
-    if first is not None:
-        yield first
-        yield from plans

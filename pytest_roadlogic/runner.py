@@ -257,7 +257,7 @@ class Runner:
         ending 32 m ahead), whose simulations were then not accepted, at 20-30 s each; every one
         of their values alone had plans within them. So the values are tried alone first, within
         the margins and limits, and only a sample with a value that has none there is planned again
-        with the fallbacks (``pipeline._with_fallbacks``), whose result it then reports. When that
+        with the fallbacks (``planning.fallbacks``), whose result it then reports. When that
         result is that only a plan beyond a real car's limits exists, the culprit is a value that
         alone has no plan within them even with the other fallbacks; without one, the sample is a
         combination no car can drive and is set aside like any other (follow_then_overtake's long

@@ -56,6 +56,11 @@ class PlanningSettings:
     # the shortest horizon to max_horizon, instead of being the solver's first answer at the shortest
     random_start: bool = False
 
+    def thinned(self) -> None:
+        """None: the grid encoding has no fallback search (``planning.fallbacks``), so a sample it
+        has no plan for is reported at once; the continuous settings answer with thinner margins."""
+        return None
+
     def summary(self, lanes: int) -> str:
         """The domain rules' numbers on a road of ``lanes`` lanes, for messages that blame them."""
         return (

@@ -1,0 +1,149 @@
+"""What the planner tries when it finds no plan for a sample: thinner margins, a finer step, and
+vehicle limits beyond its own (``with_fallbacks``), and which of its settings binds when such a
+plan's simulation is not accepted (``tool_limit``).
+
+Why here: the margins, the step and the limits are the planner's guesses at what the vehicles can
+track, not the scenario's constraints; the pipeline asks for plans and reports what binds, and
+this module is the one policy for both.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from collections.abc import Callable, Iterator
+
+from ..logic.automaton import SymbolicAutomaton
+from .errors import HorizonTooShort, LimitsBind, MarginsBind, NoPlanError, PlanningTimeout, StepBinds
+from .plan import Plan
+
+Guide = Callable[[object], SymbolicAutomaton]  # planner settings -> the automaton they solve
+
+
+def _planner_for(automaton, settings, seed):
+    from . import planner_for  # the planners (and clingo) load when a fallback is needed
+
+    return planner_for(automaton, settings, seed)
+
+
+# the vehicle limits a plan is tried without, when none exists within them: (field, relaxed value,
+# unit). The relaxed values are beyond any car's, so a plan that needs them names the limit. The
+# gap between two cars in one lane is the planner's too: 8 m between centres is 3.5 m between
+# bumpers, and a scenario may ask for less (cut_out_obstacle stops the ego 5-15 m behind a wreck,
+# which had been reported as a value no concrete scenario has); relaxed, 0.5 m between bumpers
+RELAXED_LIMITS = (
+    ("max_jerk", 50.0, "m/s^3"),
+    ("min_acceleration", -20.0, "m/s^2"),
+    ("max_acceleration", 12.0, "m/s^2"),
+    ("max_speed", 100.0, "m/s"),
+    ("closing_time", 0.0, "s"),
+    ("min_gap", 5.0, "m"),
+)
+# of those, a real car's: a plan that needs one of them relaxed asks more than a car can do, so
+# its values have no concrete scenario (the scenario's, not the tool's; follow_then_overtake's
+# 19 s pass ending 15 m ahead after starting 39 m behind needs a 27 m drop back in 3 s). The others
+# (the gap between cars) are how closely the tool dares to plan cars: settings of the tool
+CAR_LIMITS = frozenset({"max_jerk", "min_acceleration", "max_acceleration", "max_speed"})
+ALL_LIMITS = frozenset(name for name, _, _ in RELAXED_LIMITS)
+SPACING = ALL_LIMITS - CAR_LIMITS
+
+
+def with_limits_relaxed(settings, names=None):
+    """``settings`` with the ``RELAXED_LIMITS`` named (all by default) relaxed."""
+    return dataclasses.replace(
+        settings, **{name: value for name, value, _ in RELAXED_LIMITS if names is None or name in names}
+    )
+
+
+def relaxed_names(settings, names=None) -> list[str]:
+    return [
+        f"{name} {getattr(settings, name):g} {unit} relaxed to {value:g}"
+        for name, value, unit in RELAXED_LIMITS
+        if names is None or name in names
+    ]
+
+
+def tool_limit(plan: Plan, explanation: str, guide: Guide, settings, seed: int):
+    """The error that says which setting of the tool binds, when the rejected ``plan`` (whose
+    simulation the monitor explains with ``explanation``) came from one of ``with_fallbacks``'s
+    planners; None for a plan within every setting."""
+    if plan.stats.get("thinned_margins"):
+        return MarginsBind(settings.describe_margins(), settings.thinned().describe_margins(), explanation)
+    if plan.stats.get("finer_step"):
+        return StepBinds(
+            f"no plan in steps of {settings.dt:g} s; plans in steps of {settings.dt / 2:g} s exist, so the scenario itself "
+            f"can be met at these values, but their simulation was not accepted (the planning step is a setting of the tool): "
+            f"{explanation}"
+        )
+    if plan.stats.get("relaxed_limits"):
+        names = binding_limits(guide, settings, seed)
+        return LimitsBind(
+            relaxed_names(settings, names), explanation=explanation, beyond_a_car=bool(names & CAR_LIMITS)
+        )
+    return None
+
+
+def binding_limits(guide: Guide, settings, seed: int) -> frozenset[str]:
+    """The vehicle limits without which the sample has a plan (with the thinner margins): one at a
+    time first, so that the report names the one that binds; then a car's limits alone, the
+    spacing alone, all together; all of them when even that gives none."""
+    settings = dataclasses.replace(settings.thinned() or settings, explain_unsatisfiable=False)
+
+    def plannable(names) -> bool:
+        try:
+            relaxed = with_limits_relaxed(settings, names)
+            return next(_planner_for(guide(relaxed), relaxed, seed).plans(limit=1), None) is not None
+        except NoPlanError:
+            return False
+
+    for names in (*(frozenset({name}) for name, _, _ in RELAXED_LIMITS), CAR_LIMITS, SPACING):
+        if plannable(names):
+            return names
+    return ALL_LIMITS
+
+
+def with_fallbacks(
+    plans: Iterator[Plan], guide: Guide, settings, seed: int, limit: int, beyond_limits: bool = True
+) -> Iterator[Plan]:
+    """``plans``, or, when the planner has none at all, those of a planner that keeps
+    ``settings.fallback_margins`` of its margins (``stats["thinned_margins"]``), or else those of
+    one that also plans in half the step (``stats["finer_step"]``), or else of one that drives
+    beyond the vehicle limits (``RELAXED_LIMITS``, ``stats["relaxed_limits"]``; without
+    ``beyond_limits`` only the spacing between cars is relaxed, never ``CAR_LIMITS``). Each
+    planner solves the sample narrowed with its own margins (``guide``).
+
+    Why: the margins and the limits are the planner's guesses at what the vehicles can track, not
+    the scenario's constraints; a plan nearer the scenario's edges is simulated and monitored like
+    any other, and an accepted simulation is an instance of the scenario. A scenario with no plan
+    even then raises the first planner's error: its constraints clash."""
+    try:
+        first = next(plans, None)
+    except NoPlanError as error:
+        thinned = settings.thinned()
+        if thinned is None or isinstance(error, (PlanningTimeout, HorizonTooShort)):
+            raise
+        quiet = dataclasses.replace(thinned, explain_unsatisfiable=False)
+        # half the planning step: durations between whole seconds (a 0.5 s wait, a 3.6 s brake)
+        finer = dataclasses.replace(
+            quiet, dt=quiet.dt / 2, max_horizon=quiet.max_horizon * 2, lane_change_gap=quiet.lane_change_gap * 2
+        )
+        # the spacing first, then a car's limits too: a plan within a car's limits is one a car can
+        # drive (cut_out_obstacle's stop 5 m behind its wreck, planned with every limit relaxed,
+        # braked with a jerk of 4 m/s^3 and its simulated ego hit the wreck)
+        relaxed = [(with_limits_relaxed(quiet, SPACING), "relaxed_limits")] + (
+            [(with_limits_relaxed(quiet), "relaxed_limits")] if beyond_limits else []
+        )
+        for fallback_settings, mark in ((quiet, "thinned_margins"), (finer, "finer_step"), *relaxed):
+            try:
+                fallback = _planner_for(guide(fallback_settings), fallback_settings, seed).plans(limit=limit)
+                plan = next(fallback, None)
+            except NoPlanError:
+                continue
+            while plan is not None:
+                plan.stats[mark] = 1.0
+                yield plan
+                plan = next(fallback, None)
+            return
+        raise error from None
+    if first is not None:
+        yield first
+        yield from plans
