@@ -370,21 +370,13 @@ def _automaton(args: argparse.Namespace) -> int:
 
 
 def osc_files(paths: list[Path], recursive: bool = True) -> list[Path]:
-    """The .osc files named or under the folders named. A special file in a folder (a FIFO named
-    x.osc made ``check`` wait forever) is skipped with a warning; one named is kept, to be refused."""
-    from .confinement import regular_file_problem
+    """``confinement.osc_files``, each special file it skipped said on stderr."""
+    from .confinement import osc_files as found
 
-    found: list[Path] = []
-    for path in paths:
-        if not path.is_dir():
-            found.append(path)
-            continue
-        for file in sorted(path.rglob("*.osc") if recursive else path.glob("*.osc")):
-            if (problem := regular_file_problem(file)) is not None:
-                print(f"{file}: warning: skipped: {problem}", file=sys.stderr)
-                continue
-            found.append(file)
-    return found
+    files, skipped = found(paths, recursive)
+    for warning in skipped:
+        print(warning, file=sys.stderr)
+    return files
 
 
 def checked_report(
@@ -632,32 +624,11 @@ def _show(result, out: Path) -> int:
     return EXIT_ACCEPTED if outcome.verdict.accepted else EXIT_REJECTED
 
 
-def _library_only(path: Path, dialect: str | None) -> bool:
-    """A file that declares no scenario to run (a suite's lib.osc): as pytest collects no item from
-    it, the bench runs none. A file with errors is not: the bench reports them."""
-    from .frontend import OscError
-    from .frontend import check_file as check
-
-    try:
-        checked = check(path, dialect=dialect)
-    except OscError:
-        return False
-    return not checked.errors and not any(s.runnable for s in checked.scenarios)
-
-
 def _bench(args: argparse.Namespace) -> int:
-    """Run the evaluation and write its report; exit 0 when every target is met, 1 when one is
-    missed, 2 when the input is unusable."""
-    from .evaluation import BenchmarkResults, BenchmarkSettings, run_benchmark, summaries, targets_met, write_report
-    from .evaluation.runner import (
-        PAPER_COUNTS,
-        QUICK_COUNTS,
-        REALISTIC_COUNTS,
-        REALISTIC_QUICK_COUNTS,
-        RESULTS_FILE,
-        Suite,
-        conftest_dialect,
-    )
+    """Run the evaluation (or read a run's results) and write its report; exit 0 when every target
+    is met, 1 when one is missed, 2 when the input is unusable."""
+    from .evaluation import BenchmarkResults, summaries, targets_met, write_report
+    from .evaluation.runner import RESULTS_FILE
 
     if args.report_only:
         try:
@@ -669,77 +640,72 @@ def _bench(args: argparse.Namespace) -> int:
             )
             return EXIT_INPUT
     else:
-        given_paths = bool(args.paths)
-        args.paths = args.paths or [Path("scenarios")]
-        realistic_folders = (
-            args.realistic
-            if args.realistic is not None
-            else ([] if given_paths else [p for p in [Path("scenarios") / "realistic"] if p.is_dir()])
-        )
-        if args.no_realistic:
-            realistic_folders = []
-        missing = [p for p in [*args.paths, *realistic_folders] if not p.exists()]
-        for path in missing:
-            print(f"{path}: error: no such file or folder; give the .osc files or folders to evaluate", file=sys.stderr)
-        # a folder's own .osc files: scenarios/ is the paper's seven, scenarios/realistic/ is its own suite
-        files = osc_files(args.paths, recursive=False)
-        realistic_files = [
-            f for f in osc_files(realistic_folders) if not _library_only(f, conftest_dialect(f, realistic_folders))
-        ]
-        if missing or not files:
-            if not missing:
-                print(f"{' '.join(map(str, args.paths))}: error: no .osc files there", file=sys.stderr)
+        settings = _bench_settings(args)
+        if settings is None:
             return EXIT_INPUT
-        counts = QUICK_COUNTS if args.quick else PAPER_COUNTS
-        realistic_counts = REALISTIC_QUICK_COUNTS if args.quick else REALISTIC_COUNTS
-        realistic = None
-        if realistic_files:
-            # the realistic suite's timed phases need the continuous encoding (the default of a run)
-            realistic = Suite(
-                tuple(realistic_files),
-                *realistic_counts,
-                run=_run_settings(args),
-                dialects={
-                    str(f): d for f in realistic_files if (d := conftest_dialect(f, realistic_folders)) is not None
-                },
-            )
-        settings = BenchmarkSettings(
-            tuple(files),
-            base=counts[0] if args.base is None else args.base,
-            refined=counts[1] if args.refined is None else args.refined,
-            # the paper's evaluation (docs/evaluation.md) was measured on the grid encoding: it stays
-            # the bench's default until the continuous one is measured there (--encoding continuous)
-            run=_run_settings(args, **({} if args.setting_encoding else {"encoding": "grid"})),
-            artifacts=not args.no_artifacts,
-            realistic=realistic,
-        )
-        total = len(files) * (settings.base + settings.refined)
-        also = ""
-        if realistic is not None:
-            total += len(realistic_files) * (realistic.base + realistic.refined)
-            also = f"; {len(realistic_files)} realistic, {realistic.base} base and {realistic.refined} refined each"
-        print(
-            f"{len(files)} scenarios, {settings.base} base and {settings.refined} refined instances each{also} ({total} in all), seed {settings.run.seed}",
-            file=sys.stderr,
-        )
-        bar = ProgressBar(total)
-        conformant = 0
-
-        def progress(record, done: int, total: int) -> None:
-            nonlocal conformant
-            conformant += record.outcome == CONFORMANT
-            bar.update(done, f"{record.scenario} {record.strategy}  {CONFORMANT} {conformant}")
-
-        results = run_benchmark(settings, args.out, progress, command=["roadlogic", *args.argv])
-        bar.close()
-        for message in results.errors.values():
-            print(message, file=sys.stderr)
+        results = _bench_run(args, settings)
     table = summaries(results)
     report = write_report(results, args.out, table)
     met, lines = targets_met(results, table)
     print("\n".join(lines))
     print(f"report: {report}")
     return EXIT_ACCEPTED if met else EXIT_REJECTED
+
+
+def _bench_settings(args: argparse.Namespace):
+    """The bench's suites from its arguments (``evaluation.suites``), or None after saying why not."""
+    from .evaluation.suites import benchmark_settings
+
+    given_paths = bool(args.paths)
+    paths = args.paths or [Path("scenarios")]
+    realistic = (
+        args.realistic if args.realistic is not None else ([] if given_paths else [Path("scenarios") / "realistic"])
+    )
+    settings, problems = benchmark_settings(
+        paths,
+        [] if args.no_realistic else realistic,
+        quick=args.quick,
+        base=args.base,
+        refined=args.refined,
+        run=_run_settings(args),
+        # the paper's evaluation (docs/evaluation.md) was measured on the grid encoding: it stays
+        # the bench's default until the continuous one is measured there (--encoding continuous)
+        paper_run=_run_settings(args, **({} if args.setting_encoding else {"encoding": "grid"})),
+        artifacts=not args.no_artifacts,
+        explicit_realistic=args.realistic is not None,
+    )
+    for problem in problems:
+        print(problem, file=sys.stderr)
+    return settings
+
+
+def _bench_run(args: argparse.Namespace, settings):
+    """Run the bench's suites with a progress bar on stderr; the results."""
+    from .evaluation import run_benchmark
+
+    total = len(settings.paths) * (settings.base + settings.refined)
+    also = ""
+    if (realistic := settings.realistic) is not None:
+        total += len(realistic.paths) * (realistic.base + realistic.refined)
+        also = f"; {len(realistic.paths)} realistic, {realistic.base} base and {realistic.refined} refined each"
+    print(
+        f"{len(settings.paths)} scenarios, {settings.base} base and {settings.refined} refined instances each{also} "
+        f"({total} in all), seed {settings.run.seed}",
+        file=sys.stderr,
+    )
+    bar = ProgressBar(total)
+    conformant = 0
+
+    def progress(record, done: int, total: int) -> None:
+        nonlocal conformant
+        conformant += record.outcome == CONFORMANT
+        bar.update(done, f"{record.scenario} {record.strategy}  {CONFORMANT} {conformant}")
+
+    results = run_benchmark(settings, args.out, progress, command=["roadlogic", *args.argv])
+    bar.close()
+    for message in results.errors.values():
+        print(message, file=sys.stderr)
+    return results
 
 
 if __name__ == "__main__":

@@ -128,3 +128,21 @@ def safe_name(text: str, fallback: str = "scenario") -> str:
     name = re.sub(r"\.{2,}", "_", _UNSAFE.sub("_", text))
     name = re.sub(r"_{2,}", "_", name).strip("_").lstrip(".").strip("_")
     return name[:100] or fallback
+
+
+def osc_files(paths: Iterable[str | Path], recursive: bool = True) -> tuple[list[Path], list[str]]:
+    """The ``.osc`` files named, or below the folders named (a folder's own only, unless
+    ``recursive``), and a warning for each special file skipped there: a FIFO named ``x.osc`` made
+    ``roadlogic check`` wait forever. A file named is kept as it is, to be refused where it is read."""
+    found: list[Path] = []
+    skipped: list[str] = []
+    for path in map(Path, paths):
+        if not path.is_dir():
+            found.append(path)
+            continue
+        for file in sorted(path.rglob("*.osc") if recursive else path.glob("*.osc")):
+            if (problem := regular_file_problem(file)) is not None:
+                skipped.append(f"{file}: warning: skipped: {problem}")
+            else:
+                found.append(file)
+    return found, skipped
