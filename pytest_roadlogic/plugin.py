@@ -67,8 +67,13 @@ def pytest_configure(config: pytest.Config) -> None:
     config.stash[SETTINGS] = _settings(config)  # a bad option value stops the session here, once
     from .artifacts.files import NotAnArtifactFolder, check_writable
 
+    # a folder named by the user is tried for writing; the default only for what stands in its way, so
+    # that a session in a read-only checkout without .osc files writes nothing
+    named = config.getoption("--roadlogic-artifacts") is not None or bool(
+        config.getini("roadlogic_artifacts") != DEFAULT_ARTIFACTS
+    )
     try:
-        check_writable(Path(config.rootpath) / _text(config, "artifacts"))
+        check_writable(Path(config.rootpath) / _text(config, "artifacts"), probe=named)
     except NotAnArtifactFolder as error:
         raise pytest.UsageError(f"roadlogic: --roadlogic-artifacts (ini roadlogic_artifacts): {error}") from None
     replay = _text(config, "replay")

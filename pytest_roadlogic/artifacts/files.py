@@ -70,11 +70,12 @@ def replaced_directory(directory: Path, artifact: re.Pattern) -> Iterator[Path]:
                 shutil.rmtree(leftover, ignore_errors=True)
 
 
-def check_writable(directory: Path) -> None:
+def check_writable(directory: Path, probe: bool = True) -> None:
     """Raise ``NotAnArtifactFolder`` unless a folder can be made at ``directory``: asked when a
     command or session starts, so that ``--out /proc/x`` or an artifacts path that is a file stops
-    it at once rather than after the run (a traceback had come at the first failure). The test is a
-    folder made and removed in the nearest folder that exists, which says what permissions do."""
+    it at once rather than after the run (a traceback had come at the first failure). With
+    ``probe``, a folder is made and removed in the nearest folder that exists, which says what
+    permissions do; without, only that no file stands in the way (nothing is written)."""
     directory = Path(directory)
     existing = directory
     while not existing.exists() and existing != existing.parent:
@@ -83,6 +84,8 @@ def check_writable(directory: Path) -> None:
         raise NotAnArtifactFolder(f"{directory} is a file, not a folder of artifacts")
     if not existing.is_dir():
         raise NotAnArtifactFolder(f"{existing} is a file: no folder can be made under it")
+    if not probe:
+        return
     try:
         os.rmdir(tempfile.mkdtemp(prefix=".roadlogic-probe.", dir=existing))
     except OSError as error:
