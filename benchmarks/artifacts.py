@@ -121,7 +121,7 @@ def cli_run(seed: int) -> tuple[float, float]:
 # (frenetix), reading the standard library and the scenario
 FIXED_COST = (
     "from pytest_roadlogic import cli, pipeline\n"
-    "from pytest_roadlogic.planning import continuous, linear\n"
+    "from pytest_roadlogic.planning.encodings.continuous import linear, planner as continuous\n"
     "import frenetix, pytest_roadlogic.simulation.frenetix.driver\n"
     "pipeline.load_scenario('scenarios/overtake.osc')\n"
 )

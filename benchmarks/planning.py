@@ -20,7 +20,7 @@ from pathlib import Path
 from pytest_roadlogic.automaton import build_automaton
 from pytest_roadlogic.evaluation import jaccard
 from pytest_roadlogic.frontend import load_file
-from pytest_roadlogic.planning import Planner, PlanningSettings
+from pytest_roadlogic.planning import GridPlanner, GridSettings
 from pytest_roadlogic.planning.plan import Plan
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -48,7 +48,7 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--initial-speed", type=float, nargs=2, default=None, metavar=("LOW", "HIGH"))
     parser.add_argument("paths", nargs="*", type=Path)
     args = parser.parse_args(argv)
-    settings = PlanningSettings()
+    settings = GridSettings()
     if args.max_speed is not None:
         settings = dataclasses.replace(settings, max_speed=args.max_speed)
     if args.initial_speed is not None:
@@ -64,11 +64,11 @@ def main(argv: list[str] | None = None) -> int:
         automaton = build_automaton(load_file(path).scenarios[0])
         firsts = []
         for seed in range(1, args.repeats + 1):
-            planner = Planner(automaton, settings, seed)
+            planner = GridPlanner(automaton, settings, seed)
             started = time.perf_counter()
             plan = planner.first()
             firsts.append(time.perf_counter() - started)
-        planner = Planner(automaton, settings, seed=1)
+        planner = GridPlanner(automaton, settings, seed=1)
         started = time.perf_counter()
         plans = list(planner.plans(limit=args.plans))
         many = time.perf_counter() - started

@@ -27,8 +27,15 @@ sys.path.insert(0, str(ROOT))
 from pytest_roadlogic.automaton import build_automaton  # noqa: E402
 from pytest_roadlogic.evaluation.runner import conftest_dialect  # noqa: E402
 from pytest_roadlogic.frontend import OscError, check_file  # noqa: E402
-from pytest_roadlogic.planning import NoPlanError, Planner, PlanningSettings, PlanningTimeout, UnsatisfiableScenario  # noqa: E402
-from pytest_roadlogic.planning.continuous import ContinuousPlanner, ContinuousSettings  # noqa: E402
+from pytest_roadlogic.planning import (  # noqa: E402  # noqa: E402
+    ContinuousPlanner,
+    ContinuousSettings,
+    GridPlanner,
+    GridSettings,
+    NoPlanError,
+    PlanningTimeout,
+    UnsatisfiableScenario,
+)
 
 REALISTIC = ROOT / "scenarios" / "realistic"
 
@@ -90,7 +97,7 @@ def row(name: str, encoding: str, automaton, args) -> float:
     seconds, endings, accepted = [], [], 0
     for seed in range(0, args.seeds + 1):  # seed 0 warms the imports and caches up, and is not counted
         if encoding == "grid":
-            planner = Planner(automaton, PlanningSettings(time_limit=args.plan_timeout), seed)
+            planner = GridPlanner(automaton, GridSettings(time_limit=args.plan_timeout), seed)
         else:
             planner = ContinuousPlanner(automaton, ContinuousSettings(time_limit=args.plan_timeout), seed)
         started = time.perf_counter()

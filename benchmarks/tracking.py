@@ -31,8 +31,11 @@ sys.path.insert(0, str(ROOT))
 
 from pytest_roadlogic.automaton import build_automaton  # noqa: E402
 from pytest_roadlogic.frontend import OscError, check_file  # noqa: E402
-from pytest_roadlogic.planning import NoPlanError  # noqa: E402
-from pytest_roadlogic.planning.continuous import ContinuousPlanner, ContinuousSettings  # noqa: E402
+from pytest_roadlogic.planning import (  # noqa: E402
+    ContinuousPlanner,
+    ContinuousSettings,
+    NoPlanError,  # noqa: E402
+)
 from pytest_roadlogic.simulation import simulate  # noqa: E402
 
 

@@ -14,19 +14,15 @@ import time
 from collections.abc import Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import TYPE_CHECKING
 
 from .automaton import SymbolicAutomaton, build_automaton
 from .frontend import CheckedScenario, load_file
 from .monitor import Verdict, monitor
-from .planning import Plan, PlanningSettings, settings_for
+from .planning import Plan, PlannerSettings, settings_for
 from .planning.fallbacks import Guide, tool_limit, with_fallbacks
 from .sampling import guided, sample_seed
 from .settings import DEFAULT_SIM_TIMEOUT, RunSettings
 from .simulation import DriverFactory, Simulation, SimulationLimits, Simulator
-
-if TYPE_CHECKING:
-    from .planning.continuous import ContinuousSettings
 
 MAX_TRIES = 5
 
@@ -60,7 +56,7 @@ def load_scenario(
 def run_scenario(
     scenario: CheckedScenario,
     seed: int = 1,
-    settings: PlanningSettings | ContinuousSettings | None = None,
+    settings: PlannerSettings | None = None,
     max_tries: int = MAX_TRIES,
     drivers: DriverFactory | None = None,
     values: dict[str, object] | None = None,
@@ -86,7 +82,7 @@ def run_instances(
     scenario: CheckedScenario,
     count: int,
     seed: int = 1,
-    settings: PlanningSettings | ContinuousSettings | None = None,
+    settings: PlannerSettings | None = None,
     max_tries: int = MAX_TRIES,
     drivers: DriverFactory | None = None,
     values: dict[str, object] | None = None,
@@ -175,7 +171,7 @@ def has_plan(
     scenario: CheckedScenario,
     values: dict[str, object],
     seed: int = 1,
-    settings: PlanningSettings | ContinuousSettings | None = None,
+    settings: PlannerSettings | None = None,
     fallbacks: bool = True,
     beyond_limits: bool = True,
 ) -> bool:

@@ -17,7 +17,9 @@ from typing import Any
 REFINED, BASE = "refined", "base"
 STRATEGIES = (REFINED, BASE)
 CONTINUOUS, GRID = "continuous", "grid"
-ENCODINGS = (CONTINUOUS, GRID)
+ENCODINGS = (CONTINUOUS, GRID)  # the built-in planner encodings (planning/encodings/), the default first
+# where a package registers an encoding of its own (planning/encodings/__init__.py)
+ENCODING_ENTRY_POINTS = "pytest_roadlogic.encodings"
 # what a sample at which no plan exists does to its item (refined strategy): fail it (a logical
 # scenario whose ranges hold values no concrete scenario meets is a defect of the test), or be
 # discarded as hypothesis.assume(False) discards it (the item then tests what can be instantiated)
@@ -115,7 +117,20 @@ def one_of(choices: tuple[str, ...], what: str) -> Callable[[str], str]:
     return parse
 
 
-encoding = one_of(ENCODINGS, "a planning encoding")
+def encoding_names() -> tuple[str, ...]:
+    """Every planner encoding's name: the built-in ones, then those packages register (names
+    only: nothing is imported)."""
+    from importlib import metadata
+
+    registered = [point.name for point in metadata.entry_points(group=ENCODING_ENTRY_POINTS)]
+    return (*ENCODINGS, *(name for name in registered if name not in ENCODINGS))
+
+
+def encoding(text: str) -> str:
+    """A planner encoding's name, one of ``encoding_names()``."""
+    return one_of(encoding_names(), "a planning encoding")(text)
+
+
 dialect = one_of(DIALECTS, "a dialect")
 strategy = one_of(STRATEGIES, "a strategy")
 no_plan_policy = one_of(NO_PLAN_POLICIES, "what to do with a sample without a plan")
@@ -191,7 +206,7 @@ OPTIONS = (
         "encoding",
         encoding,
         CONTINUOUS,
-        "continuous: real-valued speeds and positions (asp/continuous.lp); grid: the paper's integer grid with a run-up from standstill",
+        "continuous: real-valued speeds and positions (asp/continuous/); grid: the paper's integer grid with a run-up from standstill (asp/grid/); or one a package registers",
     ),
     Option(
         "horizon",

@@ -12,7 +12,7 @@ from pytest_roadlogic.automaton import build_automaton
 from pytest_roadlogic.frontend import OscError, check_text
 from pytest_roadlogic.monitor import monitor
 from pytest_roadlogic.pipeline import load_scenario
-from pytest_roadlogic.planning.continuous import ContinuousPlanner, ContinuousSettings
+from pytest_roadlogic.planning import ContinuousPlanner, ContinuousSettings
 from pytest_roadlogic.simulation import Trace
 from tests.test_planning_continuous import check_continuous_plan
 
@@ -103,9 +103,9 @@ def test_an_acceleration_the_tool_cannot_read_is_a_located_error(modifier, messa
 
 
 def test_the_grid_encoding_refuses_the_acceleration_modifier_at_its_place(automaton):
-    from pytest_roadlogic.planning import Planner, PlanningSettings
+    from pytest_roadlogic.planning import GridPlanner, GridSettings
 
     with pytest.raises(OscError) as raised:
-        Planner(automaton, PlanningSettings(), 1).first()
+        GridPlanner(automaton, GridSettings(), 1).first()
     report = raised.value.report()
     assert "50_acceleration.osc:13:" in report and "continuous" in report, report

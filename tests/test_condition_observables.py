@@ -9,8 +9,7 @@ import pytest
 from pytest_roadlogic.automaton import build_automaton
 from pytest_roadlogic.frontend import OscError, check_text
 from pytest_roadlogic.logic.guards import TRAVELED, Bound, Term
-from pytest_roadlogic.planning import Planner, PlanningSettings
-from pytest_roadlogic.planning.continuous import ContinuousPlanner
+from pytest_roadlogic.planning import ContinuousPlanner, GridPlanner, GridSettings
 from tests.test_planning_continuous import check_continuous_plan
 
 # the follower is not the vehicle at position 0, so its start position is not 0 in the plan
@@ -64,7 +63,7 @@ def test_the_monitor_measures_from_the_first_sample_not_from_the_origin():
 
 def test_the_grid_encoding_refuses_it_at_its_place():
     with pytest.raises(OscError) as error:
-        Planner(automaton(FOLLOW_THEN_PASS), PlanningSettings(), seed=1).first()
+        GridPlanner(automaton(FOLLOW_THEN_PASS), GridSettings(), seed=1).first()
     (diagnostic,) = error.value.diagnostics
     assert (diagnostic.location.line, "a distance travelled") == (12, diagnostic.message[:20])
 

@@ -6,7 +6,7 @@ import pytest
 
 from pytest_roadlogic.automaton import build_automaton
 from pytest_roadlogic.frontend import check_text
-from pytest_roadlogic.planning.continuous import ContinuousPlanner
+from pytest_roadlogic.planning import ContinuousPlanner
 from tests.test_planning_continuous import check_continuous_plan
 
 PARENT = """scenario vehicle.follow_base:

@@ -9,7 +9,7 @@ import pytest
 from pytest_roadlogic.automaton import build_automaton
 from pytest_roadlogic.frontend import check_text
 from pytest_roadlogic.pipeline import load_scenario
-from pytest_roadlogic.planning.continuous import ContinuousPlanner, ContinuousSettings
+from pytest_roadlogic.planning import ContinuousPlanner, ContinuousSettings
 from tests.test_planning_continuous import check_continuous_plan
 
 ROOT = Path(__file__).resolve().parent.parent

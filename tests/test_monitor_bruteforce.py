@@ -177,7 +177,7 @@ def perturbed(draw, base: Trace, n_max: int) -> Trace:
 
 @pytest.mark.parametrize("path", SCENARIOS, ids=[p.stem for p in SCENARIOS])
 def test_the_monitor_agrees_with_the_brute_force_semantics(path):
-    from pytest_roadlogic.planning.continuous import ContinuousPlanner, ContinuousSettings
+    from pytest_roadlogic.planning import ContinuousPlanner, ContinuousSettings
 
     scenario = load_file(path).scenarios[0]
     automaton = build_automaton(scenario)

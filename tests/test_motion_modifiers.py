@@ -12,8 +12,7 @@ from pytest_roadlogic.frontend import OscError, check_text
 from pytest_roadlogic.logic.automaton import Travelled
 from pytest_roadlogic.logic.guards import LANE
 from pytest_roadlogic.monitor import monitor
-from pytest_roadlogic.planning import Planner, PlanningSettings
-from pytest_roadlogic.planning.continuous import ContinuousPlanner, ContinuousSettings
+from pytest_roadlogic.planning import ContinuousPlanner, ContinuousSettings, GridPlanner, GridSettings
 from pytest_roadlogic.simulation import Trace
 from tests.test_planning_continuous import check_continuous_plan
 
@@ -80,7 +79,7 @@ def test_the_monitor_measures_the_distance_and_names_it_when_no_run_meets_it():
 def test_the_grid_encoding_refuses_distance_at_its_place():
     automaton = automaton_of(DISTANCE)
     with pytest.raises(OscError, match="distance modifier"):
-        Planner(automaton, PlanningSettings(), 1).first()
+        GridPlanner(automaton, GridSettings(), 1).first()
 
 
 @pytest.mark.parametrize(

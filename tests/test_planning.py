@@ -9,9 +9,9 @@ from pathlib import Path
 import pytest
 
 from pytest_roadlogic.logic.automaton import Travelled
-from pytest_roadlogic.planning import Planner, PlanningSettings
+from pytest_roadlogic.planning import GridPlanner, GridSettings
 
-SETTINGS = PlanningSettings()
+SETTINGS = GridSettings()
 
 
 def check_plan(plan, automaton, settings=SETTINGS):
@@ -94,7 +94,7 @@ def test_thirty_plans_of_every_benchmark_scenario_obey_the_rules_and_the_guards(
     automaton = build_automaton(load_file(path).scenarios[0])
     checked = 0
     for seed in (1, 2, 3):
-        for plan in Planner(automaton, seed=seed).plans(limit=10):
+        for plan in GridPlanner(automaton, seed=seed).plans(limit=10):
             check_plan(plan, automaton)
             checked += 1
     assert checked == 30
@@ -102,12 +102,12 @@ def test_thirty_plans_of_every_benchmark_scenario_obey_the_rules_and_the_guards(
 
 @pytest.mark.parametrize("seed", range(1, 11))
 def test_overtake_plans_obey_the_rules_and_the_guards(overtake_automaton, seed):
-    plan = Planner(overtake_automaton, seed=seed).first()
+    plan = GridPlanner(overtake_automaton, seed=seed).first()
     check_plan(plan, overtake_automaton)
 
 
 def test_next_plans_differ_and_also_obey_the_rules(overtake_automaton):
-    plans = list(Planner(overtake_automaton, seed=1).plans(limit=5))
+    plans = list(GridPlanner(overtake_automaton, seed=1).plans(limit=5))
     assert len(plans) == 5
     signatures = {tuple((s.position, s.lane) for v in p.vehicles for s in p.states[v]) for p in plans}
     assert len(signatures) == 5
@@ -116,13 +116,13 @@ def test_next_plans_differ_and_also_obey_the_rules(overtake_automaton):
 
 
 def test_the_same_seed_gives_the_same_plan(overtake_automaton):
-    first = Planner(overtake_automaton, seed=7).first()
-    again = Planner(overtake_automaton, seed=7).first()
+    first = GridPlanner(overtake_automaton, seed=7).first()
+    again = GridPlanner(overtake_automaton, seed=7).first()
     assert first.to_dict()["states"] == again.to_dict()["states"]
 
 
 def test_instance_program_lists_the_automaton_and_its_guards(overtake_automaton):
-    program = Planner(overtake_automaton).instance_program()
+    program = GridPlanner(overtake_automaton).instance_program()
     assert "transition(0,0,1)." in program
     # v1 starts 10-20 m behind v2, planned 1.5 m inside the range: a difference constraint per side
     assert "&diff{ p(v2,t) - p(v1,t) } <= 18 :- g(1,t)." in program
@@ -146,7 +146,7 @@ def test_a_negated_guard_puts_the_value_outside_the_range_with_a_margin(seed, qu
         final=1,
         actors=("a", "b"),
     )
-    plan = Planner(automaton, seed=seed).first()
+    plan = GridPlanner(automaton, seed=seed).first()
     check_plan(plan, automaton)
     step = plan.transitions[0][0]
     difference = getattr(plan.at("a", step), quantity) - getattr(plan.at("b", step), quantity)
@@ -161,7 +161,7 @@ def test_an_impossible_scenario_has_no_plan():
     text = "scenario s:\n  a: car\n  do a.drive() with:\n    speed([50..60]mps, at: end)\n"
     automaton = build_automaton(check_text(text).scenarios[0])
     with pytest.raises(NoPlanError):
-        Planner(automaton, PlanningSettings(max_horizon=6)).first()
+        GridPlanner(automaton, GridSettings(max_horizon=6)).first()
 
 
 def test_timed_phases_last_as_long_as_their_durations_allow():
@@ -169,7 +169,7 @@ def test_timed_phases_last_as_long_as_their_durations_allow():
     from pytest_roadlogic.frontend import load_file
 
     automaton = build_automaton(load_file(Path(__file__).parent / "corpus" / "28_durations.osc").scenarios[0])
-    plan = Planner(automaton, seed=3).first()
+    plan = GridPlanner(automaton, seed=3).first()
     fired = {tid: step for step, tid in plan.transitions}
     for timing in automaton.timings.values():
         begin = [step for tid, step in fired.items() if timing.phase in automaton.transitions[tid].starts]
@@ -238,7 +238,7 @@ def test_a_constraint_the_domain_rules_forbid_is_named_with_those_rules():
     text = "scenario s:\n  a: car\n  do a.drive() with:\n    speed([50..60]mps, at: end)\n"
     automaton = build_automaton(check_text(text, "fast.osc").scenarios[0])
     with pytest.raises(UnsatisfiableScenario) as caught:
-        Planner(automaton, PlanningSettings(max_horizon=8)).first()
+        GridPlanner(automaton, GridSettings(max_horizon=8)).first()
     report = caught.value.report()
     assert (
         "fast.osc:4:5: error: 50 <= v(a) <= 60 cannot hold in any plan under the domain rules (speeds 2..40 m/s"
@@ -263,13 +263,13 @@ def test_enumerated_plans_are_spread_out_not_near_neighbours(overtake_automaton)
     import itertools
     import statistics
 
-    plans = list(Planner(overtake_automaton, seed=1).plans(limit=10))
+    plans = list(GridPlanner(overtake_automaton, seed=1).plans(limit=10))
     cells = [{(v, k, s.lane, round(s.position)) for v in p.vehicles for k, s in enumerate(p.states[v])} for p in plans]
     similarity = statistics.mean(len(a & b) / len(a | b) for a, b in itertools.combinations(cells, 2))
     assert similarity < 0.3, f"mean pairwise Jaccard similarity of occupied cells is {similarity:.2f}"
 
 
-RANDOM_START = PlanningSettings(random_start=True)
+RANDOM_START = GridSettings(random_start=True)
 
 
 @pytest.mark.parametrize("path", BENCHMARK, ids=[p.stem for p in BENCHMARK])
@@ -279,19 +279,19 @@ def test_a_random_start_still_obeys_the_rules_and_the_guards(path):
 
     automaton = build_automaton(load_file(path).scenarios[0])
     for seed in range(1, 6):
-        plan = Planner(automaton, RANDOM_START, seed=seed).first()
+        plan = GridPlanner(automaton, RANDOM_START, seed=seed).first()
         check_plan(plan, automaton, RANDOM_START)
 
 
 def test_a_random_start_is_fixed_by_its_seed_and_varies_with_it(overtake_automaton):
     """The refined strategy's samples are independent random plans: one seed, one plan; other
     seeds give other start speeds, lanes and lengths, and some plans last longer than the shortest."""
-    plans = [Planner(overtake_automaton, RANDOM_START, seed=seed).first() for seed in range(1, 11)]
-    again = Planner(overtake_automaton, RANDOM_START, seed=1).first()
+    plans = [GridPlanner(overtake_automaton, RANDOM_START, seed=seed).first() for seed in range(1, 11)]
+    again = GridPlanner(overtake_automaton, RANDOM_START, seed=1).first()
     assert again.to_dict()["states"] == plans[0].to_dict()["states"]
     starts = {tuple((p.states[v][0].speed, p.states[v][0].lane) for v in p.vehicles) for p in plans}
     assert len(starts) >= 8, "random starts should rarely coincide"
-    shortest = Planner(overtake_automaton, seed=1).first().horizon
+    shortest = GridPlanner(overtake_automaton, seed=1).first().horizon
     assert max(p.horizon for p in plans) > shortest, "no plan was stretched past the shortest horizon"
     assert min(p.horizon for p in plans) >= shortest
 
@@ -310,7 +310,7 @@ def test_a_random_start_drives_a_free_vehicle_as_preferred():
     settings = dataclasses.replace(RANDOM_START, max_horizon=12)  # long enough to show a habit, and quick
     followed = steps = kept_lane = 0
     for seed in range(1, 13):
-        planner = Planner(automaton, settings, seed=seed)
+        planner = GridPlanner(automaton, settings, seed=seed)
         preferred = (
             int(re.search(r"preferred_acc\(v3,(-?\d+)\)", planner.preferences).group(1)) * settings.grid / settings.dt
         )
@@ -333,7 +333,7 @@ def test_a_random_start_prefers_and_never_forces():
 
     from pytest_roadlogic.automaton import build_automaton
     from pytest_roadlogic.frontend import check_text
-    from pytest_roadlogic.planning.instance import start_preferences
+    from pytest_roadlogic.planning.encodings.grid.instance import start_preferences
 
     automaton = build_automaton(
         check_text("scenario s:\n  v1: car\n  do v1.drive() with:\n    speed(9mps, at: start)\n").scenarios[0]
@@ -343,7 +343,7 @@ def test_a_random_start_prefers_and_never_forces():
         line.startswith(("#heuristic ", "#program ", "preferred_acc(")) for line in rules.splitlines()
     ), "only heuristics and the facts they read"
     for seed in range(1, 6):
-        plan = Planner(automaton, RANDOM_START, seed=seed).first()
+        plan = GridPlanner(automaton, RANDOM_START, seed=seed).first()
         assert 8.0 <= plan.states["v1"][0].speed <= 10.0
 
 
@@ -357,13 +357,13 @@ def test_a_horizon_limit_that_binds_is_named_not_the_scenarios_durations():
     text = "scenario s:\n  a: car\n  do serial:\n    first: a.drive(duration: [15s..20s])\n    second: a.drive(duration: [15s..20s])\n"
     automaton = build_automaton(check_text(text, "long.osc").scenarios[0])
     with pytest.raises(HorizonTooShort) as refused:
-        Planner(automaton, SETTINGS, 1).first()
+        GridPlanner(automaton, SETTINGS, 1).first()
     message = str(refused.value)
     assert (
         "horizon limit of 25 steps (25 s)" in message
         and "at least 30 s" in message
         and "--roadlogic-horizon" in message
     )
-    assert Planner(automaton, dataclasses.replace(SETTINGS, max_horizon=32), 1).first().horizon >= 30, (
+    assert GridPlanner(automaton, dataclasses.replace(SETTINGS, max_horizon=32), 1).first().horizon >= 30, (
         "with the limit raised it plans"
     )

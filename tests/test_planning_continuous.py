@@ -9,8 +9,8 @@ import pytest
 
 from pytest_roadlogic.automaton import build_automaton
 from pytest_roadlogic.pipeline import load_scenario
-from pytest_roadlogic.planning import UnsatisfiableScenario
-from pytest_roadlogic.planning.continuous import ContinuousPlanner, ContinuousSettings, stopping
+from pytest_roadlogic.planning import ContinuousPlanner, ContinuousSettings, UnsatisfiableScenario
+from pytest_roadlogic.planning.encodings.continuous.instance import stopping
 from tests.test_planning import check_run
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -205,7 +205,7 @@ def test_an_infeasible_timed_scenario_is_refuted_only_over_the_lengths_its_durat
 
 
 def test_farthest_is_the_value_of_a_band_farthest_from_every_earlier_one():
-    from pytest_roadlogic.planning.continuous import farthest
+    from pytest_roadlogic.planning.encodings.continuous.preferences import farthest
 
     assert farthest([0.0], 0.0, 1.0) == 1.0
     assert farthest([0.0, 1.0], 0.0, 1.0) == 0.5
@@ -319,13 +319,13 @@ def test_the_time_a_caller_spends_with_a_plan_is_not_the_next_plans_planning_tim
     limit (five_vehicle_minute's second plan once timed out after its first plan's simulation)."""
     import time
 
-    from pytest_roadlogic.planning import Planner, PlanningSettings
+    from pytest_roadlogic.planning import GridPlanner, GridSettings
 
     automaton = build_automaton(load_scenario(ROOT / "scenarios" / "overtake.osc"))
     planner = (
         ContinuousPlanner(automaton, ContinuousSettings(time_limit=1.0), 1)
         if encoding == "continuous"
-        else Planner(automaton, PlanningSettings(time_limit=1.0), 1)
+        else GridPlanner(automaton, GridSettings(time_limit=1.0), 1)
     )
     plans = planner.plans()
     first = next(plans)
@@ -380,11 +380,11 @@ def test_a_time_headway_is_planned_as_a_gap_over_the_followers_speed():
 
 def test_the_grid_encoding_refuses_a_time_headway_at_its_place():
     from pytest_roadlogic.frontend import OscError
-    from pytest_roadlogic.planning import Planner, PlanningSettings
+    from pytest_roadlogic.planning import GridPlanner, GridSettings
 
     automaton = build_automaton(load_scenario(ROOT / "tests" / "corpus" / "46_time_headway.osc"))
     with pytest.raises(OscError) as raised:
-        Planner(automaton, PlanningSettings(), 1).first()
+        GridPlanner(automaton, GridSettings(), 1).first()
     report = raised.value.report()
     assert "46_time_headway.osc:15:" in report and "continuous" in report, report
 

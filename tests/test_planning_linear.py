@@ -11,7 +11,13 @@ from pathlib import Path
 import clingo
 import pytest
 
-from pytest_roadlogic.planning.linear import THEORY, LazyLinearTheory, LinearProgram, Row, check_rows
+from pytest_roadlogic.planning.encodings.continuous.linear import (
+    LazyLinearTheory,
+    LinearProgram,
+    Row,
+    check_rows,
+    theory_program,
+)
 
 
 def solve(program: str, parts=(("base", []),)) -> tuple[list[list[str]], dict[str, float]]:
@@ -19,7 +25,7 @@ def solve(program: str, parts=(("base", []),)) -> tuple[list[list[str]], dict[st
     control = clingo.Control(["--models=0", "--warn=none"])
     theory = LazyLinearTheory()
     theory.register(control)
-    control.add("base", [], THEORY + program)
+    control.add("base", [], theory_program() + program)
     control.ground(list(parts))
     models, values = [], {}
     with control.solve(yield_=True) as handle:
@@ -72,7 +78,7 @@ def test_constraints_of_later_steps_join_those_of_earlier_ones():
     control = clingo.Control(["--warn=none"])
     theory = LazyLinearTheory()
     theory.register(control)
-    control.add("base", [], THEORY + '&sum{ p(0) } = "0".')
+    control.add("base", [], theory_program() + '&sum{ p(0) } = "0".')
     control.add("step", ["t"], '&sum{ p(t); -1*p(S) } = "2" :- S = t-1.\n&sum{ p(t) } <= "3".')
     control.ground([("base", [])])
     for t in (1, 2):
@@ -100,8 +106,8 @@ def test_a_theory_atom_read_from_its_printed_form_is_the_atom_its_terms_give(mon
     the continuous encoding grounds for a scenario with lane changes, gaps and preferences."""
     from pytest_roadlogic.automaton import build_automaton
     from pytest_roadlogic.pipeline import load_scenario
-    from pytest_roadlogic.planning import linear
-    from pytest_roadlogic.planning.continuous import ContinuousPlanner, ContinuousSettings
+    from pytest_roadlogic.planning import ContinuousPlanner, ContinuousSettings
+    from pytest_roadlogic.planning.encodings.continuous import linear
 
     compared = []
     walk = LinearProgram()
@@ -141,8 +147,8 @@ def test_every_check_of_a_planning_run_agrees_with_a_program_built_afresh(monkey
     choice would lose plans silently)."""
     from pytest_roadlogic.automaton import build_automaton
     from pytest_roadlogic.pipeline import load_scenario
-    from pytest_roadlogic.planning import linear
-    from pytest_roadlogic.planning.continuous import ContinuousPlanner, ContinuousSettings
+    from pytest_roadlogic.planning import ContinuousPlanner, ContinuousSettings
+    from pytest_roadlogic.planning.encodings.continuous import linear
 
     checks, conflicts = [], []
     original = linear.check_rows

@@ -35,7 +35,7 @@ def test_collect_only_lists_one_item_per_scenario_and_never_plans(pytester):
         + SQUEEZE.read_text().replace("scenario traffic.squeeze", "scenario traffic.other"),
     )
     # planning during collection would raise here
-    pytester.makeconftest("import pytest_roadlogic.planning.solver as s\ns.Planner.plans = None\n")
+    pytester.makeconftest("import pytest_roadlogic.planning.core as s\ns.IncrementalPlanner.__init__ = None\n")
     result = pytester.runpytest_subprocess("--collect-only", "-q", *QUIET)
     assert result.ret == 0, result.stdout.str()
     result.stdout.fnmatch_lines(["two.osc::squeeze", "two.osc::other"])

@@ -36,7 +36,7 @@ def test_a_sampled_time_headway_is_narrowed_to_the_headway_band_not_a_durations_
     """position(time: [1.5s..2.5s], at: start) is a time like a duration, but the planner places it
     to tenths of a second, not whole steps: its sample is planned within +-0.2 s (two headway
     margins wide), where a duration's sample gets +-0.5 s."""
-    from pytest_roadlogic.planning.continuous import ContinuousSettings
+    from pytest_roadlogic.planning import ContinuousSettings
     from pytest_roadlogic.sampling import guided
 
     checked = check_text(

@@ -4,13 +4,13 @@ import numpy as np
 import pytest
 
 from pytest_roadlogic.artifacts.commonroad import write_commonroad_xml
-from pytest_roadlogic.planning import Planner
+from pytest_roadlogic.planning import GridPlanner
 from pytest_roadlogic.simulation import Road, references, simulate
 
 
 @pytest.fixture(scope="module")
 def simulation(overtake_automaton):
-    plan = Planner(overtake_automaton, seed=1).first()
+    plan = GridPlanner(overtake_automaton, seed=1).first()
     return plan, simulate(plan)
 
 
@@ -37,7 +37,7 @@ def test_vehicles_reach_their_waypoints_closely_and_without_incidents(simulation
 
 @pytest.mark.parametrize("seed", range(1, 6))
 def test_run_up_from_standstill_keeps_vehicles_in_one_lane_apart(overtake_automaton, seed):
-    plan = Planner(overtake_automaton, seed=seed).first()
+    plan = GridPlanner(overtake_automaton, seed=seed).first()
     refs = references(plan, Road())
     times = np.linspace(0, plan.runup, 200)
     for reference in refs.values():
@@ -106,13 +106,13 @@ class _Misbehaving:
 @pytest.mark.parametrize("incident", ["off-road", "collision"])
 def test_a_collision_or_leaving_the_road_is_never_accepted_even_when_the_guards_hold(overtake, incident):
     from pytest_roadlogic.pipeline import run_scenario
-    from pytest_roadlogic.planning import PlanningSettings
+    from pytest_roadlogic.planning import GridSettings
 
     # a grid plan whose guards are known to hold at seed 3; the rule under test is the monitor's
     outcome = run_scenario(
         overtake,
         seed=3,
-        settings=PlanningSettings(),
+        settings=GridSettings(),
         max_tries=1,
         drivers=lambda v: _Misbehaving(incident) if v == "v2" else None,
     )

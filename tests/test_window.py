@@ -10,7 +10,7 @@ import pytest
 from pytest_roadlogic.automaton import build_automaton
 from pytest_roadlogic.evaluation.runner import conftest_dialect
 from pytest_roadlogic.frontend import check_file
-from pytest_roadlogic.planning.continuous import ContinuousPlanner, ContinuousSettings
+from pytest_roadlogic.planning import ContinuousPlanner, ContinuousSettings
 from pytest_roadlogic.planning.window import shortest_run
 
 ROOT = Path(__file__).resolve().parent.parent

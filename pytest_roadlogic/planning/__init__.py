@@ -1,11 +1,18 @@
-"""Stage 3: planning with clingo (``Planner``), from an automaton to ``Plan`` objects.
+"""Stage 3: planning with clingo, from an automaton to ``Plan`` objects.
 
-``Plan`` and ``PlanningSettings`` are plain data and import nothing heavy; the solver (and with it
-clingo) is imported on first use of one of its names, so that reading a plan (the simulation, the
+One protocol (``protocol``: ``PlannerSettings``, ``Planner``, ``Encoding``), one core the encodings
+share (``core``: the incremental horizon loop; ``diagnosis``: why there is no plan; ``facts``: the
+automaton as facts; ``window``: the horizons the durations allow), one folder per encoding
+(``encodings/continuous``, the default, and ``encodings/grid``), and the fallback policy
+(``fallbacks``). ``Plan``, the settings and the errors are plain data and import nothing heavy; a
+planner (and with it clingo) is imported on first use, so that reading a plan (the simulation, the
 monitor, a report) does not load the solver.
 """
 
-from ..settings import CONTINUOUS_HORIZON, DEFAULT_HORIZON, GRID, RunSettings
+from ..settings import RunSettings
+from .encodings import UnknownEncoding, available, encoding, of_settings
+from .encodings.continuous import ContinuousSettings
+from .encodings.grid import GridSettings
 from .errors import (
     HorizonTooShort,
     LimitsBind,
@@ -15,63 +22,67 @@ from .errors import (
     StepBinds,
     UnsatisfiableScenario,
 )
-from .instance import PlanningSettings, build_instance
 from .plan import Plan, PlanState
+from .protocol import Encoding, Planner, PlannerSettings
 
-_SOLVER_NAMES = ("Planner", "background_theory", "check_satisfiable")
 
-
-def settings_for(run: RunSettings, explain_unsatisfiable: bool = True):
-    """The planner's settings for a run: ``ContinuousSettings`` or the grid's ``PlanningSettings``,
-    with the run's horizon limit (the encoding's own when it gives none) and time limit. Here, not
-    in ``settings``: the run's settings sit below the planner and must not import it."""
-    if run.encoding == GRID:
-        return PlanningSettings(
-            max_horizon=run.max_horizon or DEFAULT_HORIZON,
-            time_limit=run.planning_time_limit,
-            explain_unsatisfiable=explain_unsatisfiable,
-        )
-    from .continuous import ContinuousSettings
-
-    return ContinuousSettings(
-        max_horizon=run.max_horizon or CONTINUOUS_HORIZON,
-        time_limit=run.planning_time_limit,
-        explain_unsatisfiable=explain_unsatisfiable,
+def settings_for(run: RunSettings, explain_unsatisfiable: bool = True) -> PlannerSettings:
+    """The settings of the run's encoding, with the run's horizon limit (the encoding's own when it
+    gives none) and time limit. Here, not in ``settings``: the run's settings sit below the
+    planner and must not import it."""
+    settings = encoding(run.encoding).settings(
+        time_limit=run.planning_time_limit, explain_unsatisfiable=explain_unsatisfiable
     )
+    if run.max_horizon:
+        import dataclasses
+
+        settings = dataclasses.replace(settings, max_horizon=run.max_horizon)
+    return settings
 
 
-def planner_for(automaton, settings, seed: int = 0):
-    """The planner of the encoding ``settings`` belong to: ``ContinuousSettings`` (asp/continuous.lp)
-    or the grid's ``PlanningSettings`` (asp/dynamics.lp)."""
-    from .continuous import ContinuousPlanner, ContinuousSettings
-    from .solver import Planner
-
-    if isinstance(settings, ContinuousSettings):
-        return ContinuousPlanner(automaton, settings, seed)
-    return Planner(automaton, settings, seed)
+def planner_for(automaton, settings: PlannerSettings, seed: int = 0) -> Planner:
+    """The planner of the encoding ``settings`` belong to."""
+    return of_settings(settings).planner()(automaton, settings, seed)
 
 
 def __getattr__(name: str):
-    if name in _SOLVER_NAMES:
-        from . import solver
+    # the planners by class, for Python users and tests; each imports clingo
+    if name == "GridPlanner":
+        from .encodings.grid.planner import GridPlanner
 
-        return getattr(solver, name)
+        return GridPlanner
+    if name == "ContinuousPlanner":
+        from .encodings.continuous.planner import ContinuousPlanner
+
+        return ContinuousPlanner
+    if name == "check_satisfiable":
+        from .diagnosis import check_satisfiable
+
+        return check_satisfiable
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
 __all__ = [
+    "ContinuousPlanner",
+    "ContinuousSettings",
+    "Encoding",
+    "GridPlanner",
+    "GridSettings",
     "HorizonTooShort",
     "LimitsBind",
     "MarginsBind",
     "NoPlanError",
     "Plan",
     "PlanState",
-    "PlanningSettings",
+    "Planner",
+    "PlannerSettings",
     "PlanningTimeout",
     "StepBinds",
+    "UnknownEncoding",
     "UnsatisfiableScenario",
-    "build_instance",
+    "available",
+    "check_satisfiable",
+    "encoding",
     "planner_for",
     "settings_for",
-    *_SOLVER_NAMES,
 ]

@@ -35,7 +35,7 @@ import clingo
 
 from ..logic.automaton import SymbolicAutomaton
 from .errors import PlanningTimeout
-from .instance import timing_steps
+from .facts import timing_steps
 
 # every guard holds: the durations alone decide (as free choices, measured 7.5 s for
 # five_vehicle_minute's window, against well under a second this way)

@@ -41,6 +41,8 @@ import highspy
 import numpy as np
 from scipy.sparse import csr_matrix, hstack, identity, vstack
 
+from ...core import ASP_DIR, read_programs
+
 _BANNER_SILENCED = False
 
 
@@ -66,15 +68,14 @@ def quiet_highs() -> highspy.Highs:
     return solver
 
 
-THEORY = """
-#theory lpx {
-    term { - : 3, unary; * : 2, binary, left };
-    &sum/0 : term, {<=, >=, =}, term, any;
-    &prefer/0 : term, {<=, >=, =}, term, any;
-    &nudge/0 : term, {<=, >=, =}, term, any;
-    &drift/0 : term, {<=, >=, =}, term, any
-}.
-"""
+# the theory of the rows (its header says what the atoms mean), read once
+THEORY_FILE = ASP_DIR / "continuous" / "theory.lp"
+
+
+def theory_program() -> str:
+    """The ``#theory`` the continuous encoding's rows are written in (``asp/continuous/theory.lp``)."""
+    return read_programs(THEORY_FILE)
+
 
 # HiGHS's feasibility tolerance is 1e-7; a violation cost above this counts as a conflict
 INFEASIBLE = 1e-6

@@ -1,0 +1,280 @@
+"""What every planner encoding shares: one clingo control grown step by step (multi-shot).
+
+``IncrementalPlanner`` is the core an encoding's planner (``encodings/<name>/planner.py``) builds on:
+the control with the encoding's theory, grounding one step's ``dynamics(t)``, ``state(t)`` and
+``check(t)`` parts at a time and moving the ``query(t)`` external that asks for acceptance at the
+last step (so nothing is re-grounded), grounding in chunks that keep to the time limit and the
+memory limit, the deadline of each plan, the next model within a count of conflicts, the exclusion
+of a plan found, the random start's horizon, and the window of horizons the phases' durations
+allow (``window.py``). What an encoding adds: its instance (``instance.py``), its background
+``.lp`` files, its search for plans (``plans``), and its plan decoder. Why a scenario has no plan is
+``diagnosis.py``'s.
+
+One ``seed`` fixes the result: it seeds clingo's random decisions (random signs, so that different
+seeds give different plans) and a random start's draws.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import random
+import time
+import weakref
+from collections.abc import Iterator
+from pathlib import Path
+
+import clingo
+from clingo.ast import ProgramBuilder, parse_string
+
+from ..logic.automaton import SymbolicAutomaton
+from . import diagnosis
+from .errors import HorizonTooShort, NoPlanError, PlanningTimeout, PlanningTooLarge
+from .plan import Plan
+from .window import DurationWindow, shortest_run
+
+ASP_DIR = Path(__file__).resolve().parent.parent / "asp"
+if not ASP_DIR.is_dir():  # running from a source checkout: asp/ sits at the top level
+    ASP_DIR = Path(__file__).resolve().parents[2] / "asp"
+# the run of the automaton, shared by every encoding (the window's solver reads it alone)
+AUTOMATON = ASP_DIR / "automaton.lp"
+# a random start's vehicle keeps its lane unless the scenario needs a change (both encodings)
+KEEP_LANE = ASP_DIR / "keep_lane.lp"
+# steps grounded in one call before the time limit is looked at again (a call cannot be stopped;
+# one per step had cost 2.5 s over 45 steps against 0.36 s in one call)
+GROUND_CHUNK = 50
+# what the process may hold while grounding: measured, 3,500 steps of five vehicles held 1.7 GB
+MAX_PLANNING_BYTES = 8 * 2**30
+
+
+def read_programs(*paths: Path) -> str:
+    """The text of ``.lp`` files, one after the other."""
+    return "\n".join(path.read_text(encoding="utf-8") for path in paths)
+
+
+def resident_bytes() -> int:
+    """The process's resident memory now (Linux's /proc; 0 where it cannot be read)."""
+    try:
+        with open("/proc/self/statm") as statm:
+            return int(statm.read().split()[1]) * os.sysconf("SC_PAGE_SIZE")
+    except (OSError, ValueError, IndexError):
+        return 0
+
+
+class IncrementalPlanner:
+    """Plans for one automaton with one encoding; ``plans()`` yields them lazily (``planning.protocol.Planner``).
+
+    A subclass gives ``_instance`` (its instance writer), ``_start_preferences`` (a random start's
+    draws as rules), ``_control`` (a control with its background and theory), ``_widened`` (wider
+    settings for a second try, or None) and ``plans``."""
+
+    def __init__(self, automaton: SymbolicAutomaton, settings, seed: int = 0) -> None:
+        self.automaton = automaton
+        self.settings = settings
+        self.seed = seed
+        self.base_program, self.state_program = self._instance(self.settings)
+        self.stats: dict[str, float] = {"ground_s": 0.0, "solve_s": 0.0}
+        # each control's theory propagator (weak: explaining a failure makes many controls)
+        self._theories: weakref.WeakKeyDictionary[clingo.Control, object] = weakref.WeakKeyDictionary()
+        # a random start: the first plan follows choices drawn from the seed, not the solver's habits
+        # (how long it lasts is as free as where it starts: the scenario rarely says, and a plan at
+        # the shortest horizon is only the incremental search's habit)
+        self.preferences, self.stretch = "", 0.0
+        if self.settings.random_start:
+            draw = random.Random(seed)
+            self.preferences = self._start_preferences(draw)
+            self.stretch = draw.random()  # the fraction of the steps left up to max_horizon
+
+    def _instance(self, settings, relaxable: bool = False) -> tuple[str, str]:
+        """(base program, state(t) program) of this encoding's instance; with ``relaxable``, every
+        bound and duration switched off by a ``relaxed(K)`` external (``facts.relaxable_constraints``)."""
+        raise NotImplementedError
+
+    def _start_preferences(self, draw: random.Random) -> str:
+        """A random start's draws from ``draw``, as this encoding's rules."""
+        raise NotImplementedError
+
+    def _control(self, base_program: str, state_program: str) -> clingo.Control:
+        """A control with this encoding's background, theory and the instance, nothing grounded."""
+        raise NotImplementedError
+
+    def _widened(self):
+        """Settings for a second try when the first finds no plan (a wider start), or None."""
+        return None
+
+    def plans(self, limit: int | None = None) -> Iterator[Plan]:
+        """Plans, at most ``limit``; ``NoPlanError`` (or a subclass saying why) when there is none."""
+        raise NotImplementedError
+
+    def explain(self, deadline: float | None = None) -> tuple | None:
+        """A smallest group of the scenario's constraints that no plan meets (``diagnosis``)."""
+        return diagnosis.smallest_conflict(self, deadline)
+
+    def _explain(self, error: NoPlanError, deadline: float, window: DurationWindow | None = None) -> None:
+        """Raise the reason there is no plan (``diagnosis.raise_reason``)."""
+        diagnosis.raise_reason(self, error, deadline, window)
+
+    def instance_program(self) -> str:
+        return "#program base.\n" + self.base_program + "\n#program state(t).\n" + self.state_program
+
+    def _new_control(self) -> clingo.Control:
+        """A control searching as every encoding's does: seeded random signs, domain heuristics,
+        one model at a time, no warnings on the console."""
+        return clingo.Control(
+            [
+                f"--seed={self.seed}",
+                "--sign-def=rnd",
+                "--rand-freq=0.02",
+                "--heuristic=Domain",
+                "--warn=none",
+                "--models=1",
+            ],
+            logger=lambda code, message: None,
+        )
+
+    def _add(self, control: clingo.Control, program: str) -> None:
+        """Add a program, its ``&diff`` constraints rewritten for the difference-logic theory."""
+        with ProgramBuilder(control) as builder:
+            parse_string(program, lambda statement: self._theories[control].rewrite_ast(statement, builder.add))
+
+    def needed_horizon(self, deadline: float, window: DurationWindow | None = None) -> int | None:
+        """The shortest horizon the phases' durations allow (``earliest_horizon``);
+        ``HorizonTooShort`` when that is past the horizon limit, a setting that then binds. None
+        when no horizon at all lets a run end: the durations clash (a run can no longer be under
+        way at four times the limit either), which is the scenario's matter, not the limit's."""
+        window = window or self.window(deadline)
+        reach = 4 * self.settings.max_horizon
+        needed = window.earliest(reach)
+        if needed is None and not window.open_at(reach):
+            return None
+        if needed is None or needed > self.settings.max_horizon:
+            raise HorizonTooShort(self.settings.max_horizon, self.settings.dt, needed)
+        return needed
+
+    def earliest_horizon(self, deadline: float, limit: int | None = None) -> int | None:
+        """The first horizon (up to ``limit``, default the horizon limit) at which the automaton
+        alone, every guard holding, reaches its final location within its phases' durations: no
+        plan can be shorter (planning/window.py). None when there is none up to ``limit``."""
+        return self.window(deadline).earliest(self.settings.max_horizon if limit is None else limit)
+
+    def window(
+        self, deadline: float, base_program: str | None = None, assumptions: list | None = None
+    ) -> DurationWindow:
+        """The horizons the durations allow, for this scenario's instance or the diagnosis's
+        relaxable one (``base_program`` with the ``assumptions`` it keeps). Only the scenario's own
+        instance has every duration in force, so only its window starts at the automaton's floor."""
+        floor = shortest_run(self.automaton, self.settings.dt) if base_program is None else 0
+        return DurationWindow(
+            AUTOMATON,
+            base_program or self.base_program,
+            self._waiter(deadline),
+            assumptions,
+            floor,
+            deadline,
+        )
+
+    def _waiter(self, deadline: float):
+        """A window's wait: for a solve, until ``deadline``."""
+        return lambda handle, message: self._wait(handle, deadline, f"{message} ({self.settings.time_limit:g} s)")
+
+    def _advance(self, control: clingo.Control, horizon: int) -> None:
+        """Ground step ``horizon`` (with the base program at 0) and ask for acceptance there only."""
+        t = clingo.Number(horizon)
+        if horizon == 0:
+            self._ground(control, [("base", []), ("state", [t]), ("check", [t])])
+        else:
+            self._ground(control, [("dynamics", [t]), ("state", [t]), ("check", [t])])
+            control.assign_external(clingo.Function("query", [clingo.Number(horizon - 1)]), False)
+        control.assign_external(clingo.Function("query", [t]), True)
+
+    def _advance_to(self, control: clingo.Control, horizon: int, grounded: int = -1) -> None:
+        """Ground the steps after ``grounded`` (-1: none yet, the base program too) up to
+        ``horizon`` in one call and ask for acceptance at ``horizon`` only (measured on
+        five_vehicle_minute: 45 steps in one call 0.36 s, one call per step 2.5 s)."""
+        parts = [("base", []), ("state", [clingo.Number(0)]), ("check", [clingo.Number(0)])] if grounded < 0 else []
+        for step in range(max(1, grounded + 1), horizon + 1):
+            t = clingo.Number(step)
+            parts += [("dynamics", [t]), ("state", [t]), ("check", [t])]
+            if step % GROUND_CHUNK == 0 and step < horizon:
+                # a grounding call cannot be interrupted: ground in chunks and keep to the time limit
+                # between them (a 3,500 s scenario of five vehicles had grounded for 55 s under a 5 s limit)
+                self._ground(control, parts)
+                parts = []
+                if time.monotonic() > self._deadline:
+                    raise PlanningTimeout(
+                        f"planning ran out of its time limit ({self.settings.time_limit:g} s) while grounding step {step} of {horizon}"
+                    )
+                if (resident := resident_bytes()) > MAX_PLANNING_BYTES:
+                    raise PlanningTooLarge(
+                        f"planning stopped at {resident / 2**30:.1f} GiB while grounding step {step} of {horizon} (the planner's "
+                        f"limit is {MAX_PLANNING_BYTES / 2**30:g} GiB): lower the horizon with --horizon, or split the scenario"
+                    )
+        self._ground(control, parts)
+        for step in range(max(0, grounded), horizon):
+            control.assign_external(clingo.Function("query", [clingo.Number(step)]), False)
+        control.assign_external(clingo.Function("query", [clingo.Number(horizon)]), True)
+
+    _deadline = math.inf  # of the planning under way (_renewed): what grounding keeps to
+
+    def _renewed(self) -> float:
+        """The deadline of the next plan: the whole time limit from now. The time a caller spends
+        with a plan before asking for the next (simulating it) is not planning time (measured:
+        five_vehicle_minute's second plan takes 0.24 s, but after its first plan's 45 s simulation
+        it ran out of the 60 s limit before it started)."""
+        self._deadline = time.monotonic() + self.settings.time_limit
+        return self._deadline
+
+    @staticmethod
+    def _wait(handle: clingo.SolveHandle, deadline: float, message: str) -> None:
+        """Wait for a solve until the deadline; past it, cancel and raise ``PlanningTimeout``."""
+        remaining = deadline - time.monotonic()
+        if remaining <= 0 or not handle.wait(remaining):
+            handle.cancel()
+            raise PlanningTimeout(message)
+
+    def _stretch_target(self, shortest: int, longest: int | None = None) -> int:
+        """A random start's horizon: uniform from ``shortest`` up to ``longest`` (default the
+        horizon limit); the shortest for any other planning, or when it is the longest already."""
+        longest = self.settings.max_horizon if longest is None else longest
+        if not self.settings.random_start or longest <= shortest:
+            return shortest
+        return shortest + math.floor(self.stretch * (longest - shortest + 1))
+
+    def first(self) -> Plan:
+        for plan in self.plans(limit=1):
+            return plan
+        raise NoPlanError("no plan")
+
+    def _ground(self, control: clingo.Control, parts) -> None:
+        start = time.perf_counter()
+        control.ground(parts)
+        self._theories[control].prepare(control)
+        self.stats["ground_s"] += time.perf_counter() - start
+
+    def _next_model(self, control: clingo.Control, deadline: float, where: str, read, conflicts: int | None = None):
+        """What ``read(model, theory)`` makes of the next model; None when there is none, or none
+        within ``conflicts``. ``where`` ends the time limit's message."""
+        start = time.perf_counter()
+        answer = None
+        theory = self._theories[control]
+        if conflicts is not None:  # set only here: touching the configuration changes later searches
+            control.configuration.solve.solve_limit = f"{conflicts},umax"
+        with control.solve(yield_=True, async_=True) as handle:
+            self._wait(handle, deadline, f"planning ran out of its time limit ({self.settings.time_limit:g} s){where}")
+            model = handle.model()
+            if model is not None:
+                theory.on_model(model)
+                answer = read(model, theory)
+        if conflicts is not None:
+            control.configuration.solve.solve_limit = "umax,umax"
+        self.stats["solve_s"] += time.perf_counter() - start
+        return answer
+
+    def _forbid(
+        self, control: clingo.Control, literals: list[clingo.Symbol], count: int, rules: list[str] = ()
+    ) -> None:
+        """Add and ground, as program part ``exclude_<count>``, a constraint against ``literals``
+        holding together, and ``rules`` beside it."""
+        name = f"exclude_{count}"
+        control.add(name, [], ":- " + ", ".join(map(str, literals)) + ".\n" + "\n".join(rules))
+        self._ground(control, [(name, [])])

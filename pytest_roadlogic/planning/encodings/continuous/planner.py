@@ -1,0 +1,228 @@
+"""The continuous encoding's planner (``asp/continuous/``): the default since issue 17.
+
+Positions, speeds and accelerations are real numbers in linear constraints that ``linear.py``
+checks lazily with HiGHS (or clingo-lpx, ``theory="lpx"``, kept to compare); ASP decides the
+automaton's run (``asp/automaton.lp``, shared with the grid encoding), lanes, and the order of
+vehicles that share a lane.
+
+Plans come shortest first, within the window of horizons the durations allow (``window.py``);
+each further plan excludes the transition times and lanes of those before it and steers the start
+speeds elsewhere; a random start draws start lanes and speeds as preferences (``preferences.py``).
+A plan has no run-up: the simulation starts in its first state. A scenario without a plan is
+explained by the shared diagnosis over the window's horizons.
+"""
+
+from __future__ import annotations
+
+import math
+import random
+from collections.abc import Iterator
+
+import clingo
+from clingo.ast import ProgramBuilder, parse_string
+
+from ....logic.automaton import SymbolicAutomaton
+from ...core import ASP_DIR, AUTOMATON, IncrementalPlanner, read_programs
+from ...diagnosis import check_satisfiable
+from ...errors import HorizonTooShort, NoPlanError, PlanningTimeout
+from ...facts import atom
+from ...plan import Plan
+from .decode import decode_plan
+from .instance import build_continuous_instance, number
+from .linear import LazyLinearTheory, theory_program
+from .preferences import farthest, start_preferences
+from .settings import ContinuousSettings
+
+BACKGROUND = (AUTOMATON, ASP_DIR / "continuous" / "dynamics.lp")
+# conflicts a random start's search at its drawn horizon may spend before the shortest horizon's
+# plans are taken instead: a count, not a time, so that every machine stops at the same point (the
+# grid's 50 000 are about 2 s there; each conflict here may cost a linear program)
+STRETCH_CONFLICTS = 2_000
+
+
+class ContinuousPlanner(IncrementalPlanner):
+    """Plans for one automaton with the continuous encoding; ``plans()`` yields them lazily,
+    shortest first (a random start's first at a drawn horizon)."""
+
+    def __init__(self, automaton: SymbolicAutomaton, settings: ContinuousSettings | None = None, seed: int = 0) -> None:
+        super().__init__(automaton, settings or ContinuousSettings(), seed)  # type: ignore[arg-type]
+
+    def _instance(self, settings, relaxable: bool = False) -> tuple[str, str]:
+        return build_continuous_instance(self.automaton, settings, relaxable)
+
+    def _start_preferences(self, draw: random.Random) -> str:
+        return start_preferences(self.automaton, self.settings, draw)
+
+    def _widened(self):
+        return None  # every start speed the settings allow is tried at once
+
+    def _control(self, base_program: str, state_program: str):
+
+        control = self._new_control()
+        program = read_programs(*BACKGROUND)
+        program += (
+            "\n#program base.\n" + base_program + "\n" + self.preferences + "\n#program state(t).\n" + state_program
+        )
+        if self.settings.theory == "lpx":
+            from clingolpx import ClingoLPXTheory
+
+            theory = ClingoLPXTheory()
+            # clingo-lpx has no preferences: the encoding's bind, a random start's nudges and drifts go
+            program = program.replace("&prefer{", "&sum{")
+            program = "\n".join(line for line in program.splitlines() if not line.startswith(("&nudge", "&drift")))
+            for key, value in self.settings.lpx_options:
+                theory.configure(key, value)
+        else:
+            theory = LazyLinearTheory()
+            program = theory_program() + program
+        theory.register(control)
+        self._theories[control] = theory
+        with ProgramBuilder(control) as builder:
+            parse_string(program, lambda statement: theory.rewrite_ast(statement, builder.add))
+        return control
+
+    def plans(self, limit: int | None = None) -> Iterator[Plan]:
+        """Plans, shortest horizon first; each next one differs from all before it in when a
+        transition fires or in a lane (the linear program then gives its smoothest motion)."""
+        check_satisfiable(self.automaton)
+        deadline = self._renewed()
+        found = 0
+        places: list[float] = []  # where in the start band each plan after the first was steered
+        try:
+            window = self.window(deadline)
+            # the search starts at the automaton's floor, where every scenario measured can end
+            # (planning/window.py); the window's own solver is asked when no plan ends there, or
+            # when the floor is past the horizon limit (measured: five_vehicle_minute's first
+            # plan 0.98 s with the window asked first at the floor, 0.77 s without)
+            checked = window.floor > self.settings.max_horizon
+            earliest = self._earliest(deadline, window) if checked else window.floor
+            control = self._control(self.base_program, self.state_program)
+            self._advance_to(control, earliest)
+            horizon = earliest
+            # a random start's plans come from a search of their own at a drawn, longer horizon as
+            # long as it answers within STRETCH_CONFLICTS (as the grid planner's do: _plans)
+            stretched = None  # (control, horizon)
+            while limit is None or found < limit:
+                if stretched is not None:
+                    answer = self._model(stretched[0], deadline, f"at horizon {stretched[1]}", STRETCH_CONFLICTS)
+                    if answer is None:
+                        stretched = None
+                        continue
+                    source, plan_horizon = stretched
+                else:
+                    answer = self._model(control, deadline, f"at horizon {horizon}")
+                    if answer is None and not checked:
+                        checked, grounded = True, horizon
+                        earliest = horizon = max(horizon, self._earliest(deadline, window))
+                        if horizon > grounded:
+                            self._advance_to(control, horizon, grounded)
+                            continue
+                    if answer is None:
+                        # one question, not the whole window's bisection (5 solves, a fifth of
+                        # change_lane's first plan): open_at is monotone, so a run not under way at
+                        # this horizon is under way at no later one
+                        if horizon >= self.settings.max_horizon or window.past_end(horizon + 1):
+                            break  # no run of the automaton lasts longer: no longer plan either
+                        horizon += 1
+                        self._advance(control, horizon)
+                        continue
+                    source, plan_horizon = control, horizon
+                    target = self._stretch_target(horizon)
+                    if found == 0 and target > horizon and window.open_at(target):
+                        longer = self._control(self.base_program, self.state_program)
+                        self._advance_to(longer, target)
+                        longer_answer = self._model(longer, deadline, f"at horizon {target}", STRETCH_CONFLICTS)
+                        if longer_answer is not None:
+                            answer, source, plan_horizon = longer_answer, longer, target
+                            stretched = (longer, target)
+                symbols, values = answer
+                self.stats["horizon"] = plan_horizon
+                yield decode_plan(
+                    symbols, values, plan_horizon, found, self.automaton, self.settings, self.seed, self.stats
+                )
+                deadline = self._renewed()
+                window.wait = self._waiter(deadline)
+                found += 1
+                self._exclude(source, symbols, found, self._steering(places, found))
+            if found:
+                return
+            last_open = window.last_open(self.settings.max_horizon)
+            if last_open is None:
+                raise NoPlanError(
+                    f"no plan satisfies the scenario within {self.settings.max_horizon} steps ({self.settings.max_horizon * self.settings.dt:g} s)"
+                )
+            dt, longest = self.settings.dt, last_open + 1
+            lengths = f"{earliest * dt:g} s" if longest <= earliest else f"{earliest * dt:g}..{longest * dt:g} s"
+            raise NoPlanError(f"no plan satisfies the scenario in any length its durations allow ({lengths})")
+        except (PlanningTimeout, HorizonTooShort):
+            raise
+        except NoPlanError as error:
+            if not self.settings.explain_unsatisfiable:
+                raise
+            self._explain(error, deadline, window)
+
+    def _earliest(self, deadline: float, window) -> int:
+        """The first horizon the durations allow (``needed_horizon``); ``NoPlanError`` when none does."""
+        earliest = self.needed_horizon(deadline, window)
+        if earliest is None:
+            raise NoPlanError(
+                f"the phases' durations cannot all hold at any length, in steps of {self.settings.dt:g} s"
+            )
+        return earliest
+
+    def _stretch_target(self, shortest: int, longest: int | None = None) -> int:
+        """As the grid planner's, but never past ``stretch_limit``."""
+        cap = min(self.settings.max_horizon, math.floor(self.settings.stretch_limit / self.settings.dt + 1e-9))
+        return super()._stretch_target(shortest, cap if longest is None else min(longest, cap))
+
+    def _model(
+        self, control, deadline: float, where: str, conflicts: int | None = None
+    ) -> tuple[list, dict[str, object]] | None:
+        """(shown symbols, the linear program's values) of the next model; None when there is none,
+        or none within ``conflicts``."""
+
+        def answer(model, theory) -> tuple[list, dict[str, object]]:
+            return list(model.symbols(shown=True)), {
+                str(key): value for key, value in theory.assignment(model.thread_id)
+            }
+
+        return self._next_model(control, deadline, f" {where}", answer, conflicts)
+
+    def _exclude(self, control, symbols, count: int, steering: list[str] = ()) -> None:
+        """Never these transition times and lanes together again; the next plan follows
+        ``steering`` (``_steering``) instead of the steering before it."""
+        self._forbid(control, [s for s in symbols if s.name in ("fire", "lane")], count, steering)
+        if steering:
+            control.assign_external(clingo.Function("steer", [clingo.Number(count)]), True)
+            if count > 1:
+                control.assign_external(clingo.Function("steer", [clingo.Number(count - 1)]), False)
+
+    def _steering(self, places: list[float], count: int) -> list[str]:
+        """Rules that steer the next plan's start speeds away from those of the plans before it,
+        as the grid planner's base strategy steered its choices away from every earlier plan's:
+        every driving vehicle is nudged to one place of its start band (``initial_speed``), the
+        place farthest from those of the plans before (``farthest``: the first plan's is the
+        band's low end, then the high end, the middle, the quarters...). A nudge of the linear
+        program, so a scenario's own speeds decide where they bind; switched on by
+        ``steer(count)`` for this plan only. ``places`` is the places so far, and grows.
+
+        Why: exclusion alone changes a plan's transition times and lanes, and the linear program
+        then gives every plan the same smoothest values: the base strategy's ten plans of
+        overtake all started at 8 m/s, alike but for their lanes (mean similarity 0.507 against
+        the grid's 0.391). One place for all vehicles, not one each: the scenario often ties their
+        speeds together (an overtaker faster than the one it passes), which places drawn apart
+        would pull against each other. Places are not moved by what a plan reached: a speed the
+        scenario caps in one plan (dodge_obstacle's ego, at most 20 m/s at 4 steps) may be free in
+        the next, and bands shrunk to the speeds reached ended overtake's plans at 8 m/s."""
+        if self.settings.theory != "lazy":
+            return []  # clingo-lpx has no preferences
+        low, high = self.settings.start_band()
+        place = farthest([0.0, *places], 0.0, 1.0)  # the first plan, unsteered, starts low
+        places.append(place)
+        rules = [f"#external steer({count})."]
+        for vehicle in self.automaton.actors:
+            if vehicle not in self.automaton.stationary:
+                rules.append(
+                    f"&nudge{{ v({atom(vehicle)},0) }} = {number(round(low + place * (high - low), 1))} :- steer({count})."
+                )
+        return rules

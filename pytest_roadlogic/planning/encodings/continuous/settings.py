@@ -1,0 +1,142 @@
+"""The continuous encoding's settings (``ContinuousSettings``): vehicle limits, margins, the search's knobs.
+
+Plain data, importable without clingo: the pipeline, the sampler and the reports read them.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+from typing import ClassVar
+
+from ....settings import CONTINUOUS_HORIZON
+
+
+@dataclass(frozen=True)
+class ContinuousSettings:
+    """The vehicle limits and planning bounds of the continuous encoding (SI units;
+    ``planning.protocol.PlannerSettings``)."""
+
+    encoding: ClassVar[str] = "continuous"
+
+    dt: float = 1.0  # seconds per step
+    min_acceleration: float = -8.0  # m/s^2: hard braking of a real car
+    max_acceleration: float = 4.0  # m/s^2
+    max_jerk: float = 2.0  # m/s^3: how much the acceleration may change from one step to the next
+    min_speed: float = 0.5  # m/s for a driving vehicle the scenario does not ask to stop
+    max_speed: float = 70.0  # m/s
+    # m/s at the first step: a scenario that names no speed starts at highway speeds, not at the
+    # crawl a vertex of the linear program would pick
+    initial_speed: tuple[float, float] = (8.0, 40.0)
+    lane_change_speed: float = 5.0  # m/s at least while changing lane
+    min_gap: float = 8.0  # m between the centres of two vehicles sharing a lane
+    # s: and more, by this many seconds of the speed at which the one behind closes in (a follower
+    # 15 m behind at +15 m/s is a collision in the simulation, not a gap)
+    closing_time: float = 1.0
+    lane_change_gap: int = 3  # steps from one lane change of a vehicle to its next
+    spread: float = 300.0  # m from the first vehicle within which the others start
+    position_margin: float = 1.5  # m planned inside each side of a position range, when it fits
+    speed_margin: float = 0.5  # m/s likewise for speeds
+    headway_margin: float = 0.2  # s likewise for time headways
+    # m/s^2 likewise for a phase's mean acceleration: the motion planner starts and ends a change
+    # of speed late by up to a second (see _speed_lead), which moves the speeds at a 3 s phase's
+    # ends by a few tenths of a m/s
+    acceleration_margin: float = 0.4
+    # s likewise for a sampled duration (the refined strategy's, sampling._band): the motion planner
+    # meets a phase's entry condition up to 1.2 s after the plan's step (measured on
+    # follow_then_overtake's refined samples: a relative speed the plan reached at the pass's first
+    # step, the trace reached 1.2 s later), so a phase planned at its range's shortest (8 s of
+    # [8..20] s) was simulated 6.6 s long
+    duration_margin: float = 1.0
+    # when no plan keeps the margins, a second search keeps this fraction of them: the scenario may
+    # have plans nearer its edges than the margins allow (catch_up_band: 0.5 m/s on both speeds over
+    # 20 s moved its band's edge 20 m below the true one). Such a plan is simulated and monitored
+    # like any other; when none is accepted, the margins are what binds (MarginsBind)
+    fallback_margins: float = 0.2
+    max_horizon: int = CONTINUOUS_HORIZON  # steps
+    time_limit: float = 60.0  # seconds for one solve, all horizons together
+    # how the linear constraints are kept: "lazy" checks each complete choice with HiGHS and learns
+    # nogoods from its conflicts (planning/linear.py); "lpx" keeps them at every decision with
+    # clingo-lpx's exact simplex (measured slower by orders of magnitude on long scenarios)
+    theory: str = "lazy"
+    lpx_options: tuple[tuple[str, str], ...] = ()  # clingo-lpx's own (propagate-conflicts, select, ...)
+    # when no plan exists, find the constraints that cannot hold together (UnsatisfiableScenario)
+    explain_unsatisfiable: bool = True
+    # seconds the diagnosis may spend deciding whether one constraint can leave the group that
+    # clashes; past it the constraint stays. Measured: infeasible_order's duration, once relaxed,
+    # leaves every horizon up to the limit to refute, 15 s at 120 steps, for a group that with it
+    # names one constraint more (the duration) and is still true
+    removal_time_limit: float | None = 1.0
+    # a random start (the refined strategy): start lanes and speeds the scenario leaves open are
+    # drawn from the seed (as preferences), not left to the solver's and the LP's habits
+    random_start: bool = False
+    # s: how long a random start's plan may last when it is stretched past the shortest horizon the
+    # scenario allows (drawn uniformly up to it, as the grid planner draws its plans' lengths up to
+    # its 25-step horizon limit). Measured (roadlogic bench scenarios/ --encoding continuous, seed 1):
+    # with every refined plan at its shortest horizon, the refined instances' occupancy was more
+    # alike than the grid's on six of seven scenarios (change_lane 0.415 against 0.216)
+    stretch_limit: float = 25.0
+    # m/s^2: a random start's driving vehicle prefers to accelerate at one of -drift, 0 and +drift,
+    # drawn per vehicle, as the grid planner draws one of its accelerations; kept by the linear
+    # program where the scenario and drift_speeds leave it free (a preference, never a reason for
+    # no plan). Why: see start_preferences
+    drift: float = 2.0
+    # m/s: the speeds within which a drawn acceleration is kept (the grid's speed range): a vehicle
+    # drifting down settles at the low one instead of crawling at min_speed, one drifting up at
+    # the high one
+    drift_speeds: tuple[float, float] = (2.0, 40.0)
+
+    def resolution(self) -> dict[str | None, float]:
+        """How wide a band a sampled value is narrowed to, per physical dimension: positions and
+        speeds are real-valued here, so the band is the planning margin's (the plan lies within a
+        quarter of it from the sample); durations still count whole steps, time headways do not."""
+        return {
+            "length": 2 * self.position_margin,
+            "speed": 2 * self.speed_margin,
+            "time": self.dt,
+            "acceleration": 0.5,
+            "headway": 2 * self.headway_margin,
+        }
+
+    def start_band(self) -> tuple[float, float]:
+        """The start speeds (m/s) a driving vehicle is preferred to have where the scenario leaves
+        them open: ``initial_speed`` within the speed limits."""
+        return max(self.initial_speed[0], self.min_speed), min(self.initial_speed[1], self.max_speed)
+
+    def margins(self) -> dict[str | None, float]:
+        """How far inside a range's edges the plan keeps, per physical dimension."""
+        return {
+            "length": self.position_margin,
+            "speed": self.speed_margin,
+            "headway": self.headway_margin,
+            "acceleration": self.acceleration_margin,
+            "time": self.duration_margin,
+        }
+
+    def thinned(self) -> ContinuousSettings | None:
+        """These settings with ``fallback_margins`` of each margin, or None when there is no such second search."""
+        if not 0 <= self.fallback_margins < 1:
+            return None
+        f = self.fallback_margins
+        return replace(
+            self,
+            position_margin=self.position_margin * f,
+            speed_margin=self.speed_margin * f,
+            headway_margin=self.headway_margin * f,
+            acceleration_margin=self.acceleration_margin * f,
+            duration_margin=self.duration_margin * f,
+            fallback_margins=1.0,
+        )
+
+    def describe_margins(self) -> str:
+        return (
+            f"speed_margin {self.speed_margin:g} m/s, position_margin {self.position_margin:g} m, "
+            f"headway_margin {self.headway_margin:g} s, acceleration_margin {self.acceleration_margin:g} m/s^2, "
+            f"duration_margin {self.duration_margin:g} s"
+        )
+
+    def summary(self, lanes: int) -> str:
+        """The vehicle limits and bounds on a road of ``lanes`` lanes, for messages that blame them."""
+        return (
+            f"speeds {self.min_speed:g}..{self.max_speed:g} m/s, accelerations {self.min_acceleration:g}..{self.max_acceleration:g} m/s^2, "
+            f"{lanes} lanes, {self.min_gap:g} m gaps, at most {self.max_horizon} steps of {self.dt:g} s"
+        )
