@@ -124,9 +124,10 @@ def test_the_same_seed_gives_the_same_plan(overtake_automaton):
 def test_instance_program_lists_the_automaton_and_its_guards(overtake_automaton):
     program = GridPlanner(overtake_automaton).instance_program()
     assert "transition(0,0,1)." in program
-    # v1 starts 10-20 m behind v2, planned 1.5 m inside the range: a difference constraint per side
-    assert "&diff{ p(v2,t) - p(v1,t) } <= 18 :- g(1,t)." in program
-    assert "&diff{ p(v1,t) - p(v2,t) } <= -12 :- g(1,t)." in program
+    # v1 starts 10-20 m behind v2, planned 1.5 m inside the range, as a fact that asp/grid/guards.lp
+    # turns into a difference constraint per side
+    assert "position_within(1,v2,v1,12,18)." in program
+    assert "&diff" not in program and ":-" not in program, "the instance is facts: the rules are in asp/"
 
 
 @pytest.mark.parametrize("seed", range(1, 6))
@@ -254,7 +255,7 @@ def test_roadlogic_plan_prints_each_plan_as_a_table_and_the_instance_on_request(
         == 0
     )
     out = capsys.readouterr().out
-    assert "#program state(t)." in out and "transition(0," in out
+    assert "#program base." in out and "transition(0," in out
     assert "plan 1 of scenario overtake" in out and "plan 2 of scenario overtake" in out
     assert "v1 pos/lane/speed" in out and "2 plans in" in out
 
@@ -338,10 +339,10 @@ def test_a_random_start_prefers_and_never_forces():
     automaton = build_automaton(
         check_text("scenario s:\n  v1: car\n  do v1.drive() with:\n    speed(9mps, at: start)\n").scenarios[0]
     )
-    rules = start_preferences(automaton, RANDOM_START, random.Random(1))
-    assert rules and all(
-        line.startswith(("#heuristic ", "#program ", "preferred_acc(")) for line in rules.splitlines()
-    ), "only heuristics and the facts they read"
+    facts = start_preferences(automaton, RANDOM_START, random.Random(1))
+    assert facts and all(line.startswith(("%", "preferred_")) for line in facts.splitlines()), (
+        "only the facts the heuristics of asp/grid/preferences.lp read"
+    )
     for seed in range(1, 6):
         plan = GridPlanner(automaton, RANDOM_START, seed=seed).first()
         assert 8.0 <= plan.states["v1"][0].speed <= 10.0

@@ -262,9 +262,9 @@ def test_a_random_start_keeps_each_free_vehicles_drawn_acceleration_within_the_d
         plan = planner.first()
         check_continuous_plan(plan, automaton)
         (aim,) = [
-            float(line.split("=")[1].strip(' ."'))
+            float(line.split(",")[1].strip(' .").'))
             for line in planner.preferences.splitlines()
-            if line.startswith("&drift{ a(")
+            if line.startswith("drift(")
         ]
         seen.add(aim)
         speeds = [state.speed for state in plan.states["ego"]]

@@ -33,7 +33,7 @@ def automaton_of(path: Path):
 
 def window_without_floor(automaton, dt: float):
     planner = ContinuousPlanner(automaton, ContinuousSettings(dt=dt), 1)
-    return planner.window(time.monotonic() + 60, planner.base_program)  # a program of its own: no floor
+    return planner.window(time.monotonic() + 60, planner.instance)  # a program of its own: no floor
 
 
 @pytest.mark.parametrize("path", FILES, ids=lambda path: path.stem)

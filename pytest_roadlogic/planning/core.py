@@ -72,7 +72,7 @@ class IncrementalPlanner:
         self.automaton = automaton
         self.settings = settings
         self.seed = seed
-        self.base_program, self.state_program = self._instance(self.settings)
+        self.instance = self._instance(self.settings)
         self.stats: dict[str, float] = {"ground_s": 0.0, "solve_s": 0.0}
         # each control's theory propagator (weak: explaining a failure makes many controls)
         self._theories: weakref.WeakKeyDictionary[clingo.Control, object] = weakref.WeakKeyDictionary()
@@ -85,8 +85,8 @@ class IncrementalPlanner:
             self.preferences = self._start_preferences(draw)
             self.stretch = draw.random()  # the fraction of the steps left up to max_horizon
 
-    def _instance(self, settings, relaxable: bool = False) -> tuple[str, str]:
-        """(base program, state(t) program) of this encoding's instance; with ``relaxable``, every
+    def _instance(self, settings, relaxable: bool = False) -> str:
+        """This encoding's instance of the scenario (facts and constants, ``#program base``); with ``relaxable``, every
         bound and duration switched off by a ``relaxed(K)`` external (``facts.relaxable_constraints``)."""
         raise NotImplementedError
 
@@ -94,7 +94,7 @@ class IncrementalPlanner:
         """A random start's draws from ``draw``, as this encoding's rules."""
         raise NotImplementedError
 
-    def _control(self, base_program: str, state_program: str) -> clingo.Control:
+    def _control(self, instance: str) -> clingo.Control:
         """A control with this encoding's background, theory and the instance, nothing grounded."""
         raise NotImplementedError
 
@@ -115,7 +115,7 @@ class IncrementalPlanner:
         diagnosis.raise_reason(self, error, deadline, window)
 
     def instance_program(self) -> str:
-        return "#program base.\n" + self.base_program + "\n#program state(t).\n" + self.state_program
+        return "#program base.\n" + self.instance
 
     def _new_control(self) -> clingo.Control:
         """A control searching as every encoding's does: seeded random signs, domain heuristics,
@@ -157,16 +157,14 @@ class IncrementalPlanner:
         plan can be shorter (planning/window.py). None when there is none up to ``limit``."""
         return self.window(deadline).earliest(self.settings.max_horizon if limit is None else limit)
 
-    def window(
-        self, deadline: float, base_program: str | None = None, assumptions: list | None = None
-    ) -> DurationWindow:
+    def window(self, deadline: float, instance: str | None = None, assumptions: list | None = None) -> DurationWindow:
         """The horizons the durations allow, for this scenario's instance or the diagnosis's
-        relaxable one (``base_program`` with the ``assumptions`` it keeps). Only the scenario's own
+        relaxable one (``instance`` with the ``assumptions`` it keeps). Only the scenario's own
         instance has every duration in force, so only its window starts at the automaton's floor."""
-        floor = shortest_run(self.automaton, self.settings.dt) if base_program is None else 0
+        floor = shortest_run(self.automaton, self.settings.dt) if instance is None else 0
         return DurationWindow(
             AUTOMATON,
-            base_program or self.base_program,
+            instance or self.instance,
             self._waiter(deadline),
             assumptions,
             floor,
@@ -271,10 +269,11 @@ class IncrementalPlanner:
         return answer
 
     def _forbid(
-        self, control: clingo.Control, literals: list[clingo.Symbol], count: int, rules: list[str] = ()
+        self, control: clingo.Control, literals: list[clingo.Symbol], count: int, rules: list[str] = (), parts=()
     ) -> None:
         """Add and ground, as program part ``exclude_<count>``, a constraint against ``literals``
-        holding together, and ``rules`` beside it."""
+        (the symbols of a model) holding together and ``rules`` beside it, and the encoding's own
+        program ``parts`` (name, parameters) with it."""
         name = f"exclude_{count}"
         control.add(name, [], ":- " + ", ".join(map(str, literals)) + ".\n" + "\n".join(rules))
-        self._ground(control, [(name, [])])
+        self._ground(control, [(name, []), *parts])

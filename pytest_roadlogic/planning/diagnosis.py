@@ -104,14 +104,12 @@ def smallest_conflict(planner, deadline: float | None = None) -> tuple | None:
     return tuple(constraints[k] for k in core)
 
 
-def _failing(
-    planner, program: tuple[str, str], settings, kept: list[int], count: int, deadline: float
-) -> list[int] | None:
+def _failing(planner, program: str, settings, kept: list[int], count: int, deadline: float) -> list[int] | None:
     """Grow the horizon as in planning with the constraints ``kept`` (the rest may be relaxed):
     None when some horizon has a plan, else the union of the unsatisfiable cores."""
     relaxed = [clingo.Function("relaxed", [clingo.Number(k)]) for k in range(count)]
     # only the horizons the kept durations allow (a relaxed one leaves its phase open)
-    window = planner.window(deadline, program[0], [(relaxed[k], False) for k in kept])
+    window = planner.window(deadline, program, [(relaxed[k], False) for k in kept])
     earliest = window.earliest(settings.max_horizon)
     if earliest is None:
         # the kept durations let no run end within the horizon limit: they fail among themselves,
@@ -122,7 +120,7 @@ def _failing(
         }
         return sorted(k for k in kept if k in timings)
     last = window.last_horizon(settings.max_horizon)
-    control = planner._control(*program)
+    control = planner._control(program)
     union: set[int] = set()
     for horizon in range(earliest, last + 1):
         if horizon == earliest:

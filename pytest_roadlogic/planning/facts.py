@@ -10,10 +10,9 @@ Lane bounds are whole numbers in every encoding, so their rules are written here
 from __future__ import annotations
 
 import math
-from typing import Any
 
 from ..logic.automaton import SymbolicAutomaton, Timing
-from ..logic.guards import LANE, POSITION, SPEED, And, Bound, Guard, Not, Or
+from ..logic.guards import LANE, And, Bound, Guard, Not, Or
 
 
 def guard_nodes(automaton: SymbolicAutomaton) -> tuple[dict[int, int], dict[Guard, int]]:
@@ -99,34 +98,67 @@ def relaxable_constraints(automaton: SymbolicAutomaton) -> list:
 
 
 def with_automaton(
-    base: list[str], automaton: SymbolicAutomaton, dt: float, relaxable: bool, rules, more_state=None
-) -> tuple[str, str]:
-    """(base program, state(t) program): an encoding's own base facts ``base`` followed by the
-    automaton's facts, and the guard program from the encoding's ``rules`` (see guard_program)
-    followed by ``more_state(relax)``'s rules when given; with ``relaxable``, every bound and
-    duration can be relaxed for a diagnosis (``relax``: constraint source -> its external's number)."""
+    base: list[str], automaton: SymbolicAutomaton, dt: float, relaxable: bool, node_facts, more_facts=None
+) -> str:
+    """An instance (facts and constants only: every rule is in ``asp/``): the encoding's own facts ``base``, the
+    automaton's facts, the guard nodes' facts (``guard_facts`` with the encoding's ``node_facts``)
+    and ``more_facts(relax)`` when given; with ``relaxable``, every bound and duration can be
+    relaxed for a diagnosis (``relax``: constraint source -> its external's number)."""
     relax = {c.source: k for k, c in enumerate(relaxable_constraints(automaton))} if relaxable else {}
-    state = guard_program(automaton, relax, rules) + (more_state(relax) if more_state is not None else [])
-    return "\n".join([*base, *automaton_facts(automaton, dt, relax)]) + "\n", "\n".join(state) + "\n"
+    facts = [
+        *base,
+        *automaton_facts(automaton, dt, relax),
+        *guard_facts(automaton, relax, node_facts),
+        *(more_facts(relax) if more_facts is not None else []),
+    ]
+    return "\n".join(facts) + "\n"
 
 
-def guard_program(automaton: SymbolicAutomaton, relax: dict, rules) -> list[str]:
-    """The state(t) program of the guards: ``rules(node, guard, numbering, switch)`` gives one node's
-    rules in an encoding; a bound the diagnosis may relax gets the switch ``, not relaxed(K)`` on its
-    constraints and holds whenever it is relaxed."""
+def guard_facts(automaton: SymbolicAutomaton, relax: dict, node_facts) -> list[str]:
+    """The guard nodes as facts for ``asp/guards.lp`` and the encoding's ``guards.lp``: junctions
+    and lane bounds here, the encoding's own bounds from ``node_facts(node, guard)``. A bound the
+    diagnosis may relax gets ``relaxable(node(N),K)``. Each node is headed by a comment with the
+    guard it stands for and the constraint it comes from (its place in the file)."""
     _, numbering = guard_nodes(automaton)
-    state = ["% guards: g(N,t) holds when guard node N holds at step t (generated)"]
+    facts = ["% guard nodes (asp/guards.lp)"]
     for guard, node in numbering.items():
-        state.append(f"% node {node}: {guard}")
         bound = _bound_of(guard)
-        if bound is not None and bound.source in relax:
-            # relaxed: the guard holds, and the constraints it imposes stand down
-            k = relax[bound.source]
-            state.extend(rules(node, guard, numbering, f", not relaxed({k})"))
-            state.append(f"g({node},t) :- relaxed({k}).")
+        where = (
+            f" (line {bound.source.line}, column {bound.source.column})" if bound is not None and bound.source else ""
+        )
+        facts.append(f"% node {node}: {guard}{where}")
+        if isinstance(guard, (And, Or)):
+            facts.append(f"{'conjunction' if isinstance(guard, And) else 'disjunction'}({node}).")
+            facts.extend(f"part({node},{numbering[part]})." for part in guard.parts)
+        elif bound.term.quantity == LANE:
+            facts.extend(lane_facts(node, bound, outside=isinstance(guard, Not)))
         else:
-            state.extend(rules(node, guard, numbering, ""))
-    return state
+            facts.extend(node_facts(node, guard))
+        if bound is not None and bound.source in relax:
+            facts.append(f"relaxable(node({node}),{relax[bound.source]}).")
+    return facts
+
+
+def lane_facts(node: int, bound: Bound, outside: bool) -> list[str]:
+    """A lane bound (whole lanes in every encoding): ``lane_within`` its range, or ``lane_outside``
+    it, below the largest lane under the range or above the smallest over it."""
+    actor, reference = atom(bound.term.actor), atom(bound.term.reference) if bound.term.reference else "none"
+    if outside:
+        below = "#inf" if bound.low == -math.inf else math.ceil(bound.low - 1e-9) - 1
+        above = "#sup" if bound.high == math.inf else math.floor(bound.high + 1e-9) + 1
+        if below == "#inf" and above == "#sup":
+            return ["% never holds"]
+        return [f"lane_outside({node},{actor},{reference},{below},{above})."]
+    low = "#inf" if bound.low == -math.inf else math.ceil(bound.low - 1e-9)
+    high = "#sup" if bound.high == math.inf else math.floor(bound.high + 1e-9)
+    if low != "#inf" and high != "#sup" and low > high:
+        return ["% cannot hold: no whole lane in the range"]
+    return [f"lane_within({node},{actor},{reference},{low},{high})."]
+
+
+def bounds_text(low, high) -> tuple[str, str]:
+    """A range's two ends as ASP terms: the values as given, ``#inf`` / ``#sup`` for no end."""
+    return ("#inf" if low == -math.inf else str(low)), ("#sup" if high == math.inf else str(high))
 
 
 def automaton_facts(automaton: SymbolicAutomaton, dt: float, relax: dict | None = None) -> list[str]:
@@ -167,99 +199,6 @@ def timing_steps(timing: Timing, dt: float) -> tuple[int, int | None]:
 def atom(name: str) -> str:
     """An actor name as an ASP constant (quoted when it is not a lower-case identifier)."""
     return name if name[:1].islower() and name.replace("_", "").isalnum() else f'"{name}"'
-
-
-def junction_rules(node: int, guard: And | Or, numbering: dict[Guard, int]) -> list[str]:
-    """A conjunction's or disjunction's rules, over its parts' nodes (the same in every encoding)."""
-    head = f"g({node},t)"
-    if isinstance(guard, And):
-        if not guard.parts:
-            return [f"{head}."]
-        return [f"{head} :- " + ", ".join(f"g({numbering[p]},t)" for p in guard.parts) + "."]
-    return [f"{head} :- g({numbering[p]},t)." for p in guard.parts]
-
-
-def _margin_and_scale(bound: Bound, settings: Any) -> tuple[float, float, str]:
-    """(margin, metres or m/s per grid unit, fluent) of a bound's quantity. A lane bound needs no
-    settings (lanes are whole numbers in every encoding): the continuous encoding passes None."""
-    quantity = bound.term.quantity
-    if quantity == LANE:
-        return 0.0, 1.0, "lane"
-    assert settings is not None, "a position or speed bound is planned with the grid's settings"
-    if quantity == POSITION:
-        return settings.position_margin, settings.grid, "pos"
-    if quantity == SPEED:
-        return settings.speed_margin, settings.grid / settings.dt, "vel"
-    return 0.0, 1.0, "lane"
-
-
-def _grid_range(low: float, high: float, scale: float) -> tuple[float, float]:
-    """The whole grid units within [low, high] (infinite sides stay infinite)."""
-    lo = -math.inf if low == -math.inf else math.ceil(low / scale - 1e-9)
-    hi = math.inf if high == math.inf else math.floor(high / scale + 1e-9)
-    return lo, hi
-
-
-def position_terms(bound: Bound) -> tuple[str, str]:
-    term = bound.term
-    return f"p({atom(term.actor)},t)", "0" if term.reference is None else f"p({atom(term.reference)},t)"
-
-
-def _fluent_terms(bound: Bound, fluent: str) -> tuple[list[str], str]:
-    """The body atoms reading a speed or lane bound's term, and the term's value in them."""
-    term = bound.term
-    if term.reference is None:
-        return [f"{fluent}({atom(term.actor)},X,t)"], "X"
-    return [f"{fluent}({atom(term.actor)},X,t)", f"{fluent}({atom(term.reference)},Y,t)"], "X-Y"
-
-
-def outside_rules(node: int, bound: Bound, settings: Any, switch: str = "") -> list[str]:
-    """``not bound``: the value below or above the range, planned with the margin outside it."""
-    margin, scale, fluent = _margin_and_scale(bound, settings)
-    head = f"g({node},t)"
-    # the largest grid value below low - margin and the smallest above high + margin
-    below = None if bound.low == -math.inf else math.ceil((bound.low - margin) / scale - 1e-9) - 1
-    above = None if bound.high == math.inf else math.floor((bound.high + margin) / scale + 1e-9) + 1
-    if below is None and above is None:
-        return [f"% {head} never holds"]
-    if fluent == "pos":
-        a, b = position_terms(bound)
-        sides = [f"below({node},t)"] * (below is not None) + [f"above({node},t)"] * (above is not None)
-        rules = [f"{{ {'; '.join(sides)} }} = 1 :- {head}{switch}.", f"{{ {head} }}."]
-        if below is not None:
-            rules.append(f"&diff{{ {a} - {b} }} <= {below} :- below({node},t).")
-        if above is not None:
-            rules.append(f"&diff{{ {b} - {a} }} <= {-above} :- above({node},t).")
-        return rules
-    values, value = _fluent_terms(bound, fluent)
-    rules = []
-    if below is not None:
-        rules.append(f"{head} :- " + ", ".join(values + [f"{value} <= {below}"]) + ".")
-    if above is not None:
-        rules.append(f"{head} :- " + ", ".join(values + [f"{value} >= {above}"]) + ".")
-    return rules
-
-
-def bound_rule(head: str, bound: Bound, settings: Any) -> list[str]:
-    """A speed or lane bound, derived from the vel/lane atoms (speeds with a margin inside)."""
-    margin, scale, fluent = _margin_and_scale(bound, settings)
-    lo, hi = planned_range(bound.low, bound.high, margin, scale)
-    if lo > hi:
-        return [f"% {head} cannot hold on this grid"]
-    conditions, value = _fluent_terms(bound, fluent)
-    conditions += [f"{value} >= {lo}"] if lo != -math.inf else []
-    conditions += [f"{value} <= {hi}"] if hi != math.inf else []
-    return [f"{head} :- " + ", ".join(conditions) + "."]
-
-
-def planned_range(low: float, high: float, margin: float, scale: float) -> tuple[float, float]:
-    """The grid values a plan may use for [low, high]: inset by the margin, unless that leaves none.
-
-    A narrow range (a sampled value's one-cell band, say) can hold a grid value that every inset
-    misses: [23, 24] inset to [23.25, 23.75] has no whole metre, so the plan uses the range itself.
-    """
-    lo, hi = _grid_range(*inset(low, high, margin), scale)
-    return (lo, hi) if lo <= hi else _grid_range(low, high, scale)
 
 
 def inset(low: float, high: float, margin: float) -> tuple[float, float]:

@@ -1,9 +1,9 @@
-"""The continuous encoding's instance writer: a scenario's constants, facts and linear rows for ``asp/continuous/``.
+"""The continuous encoding's instance writer: a scenario as constants and facts for ``asp/continuous/``.
 
 Constants and facts (the vehicles, the limits, the start band) for ``asp/continuous/dynamics.lp``,
-the automaton (``facts``), one rule set per guard node with ``&sum`` rows over positions and speeds
-(inset by the settings' margins), and a phase's mean acceleration or distance travelled as rows
-over its two ends.
+the automaton (``facts``), each guard node's term and planned range (inset by the settings'
+margins) for ``asp/continuous/guards.lp``, and a phase's mean acceleration or distance travelled
+for ``asp/continuous/rates.lp``. No rule is written here: the rules are the ``.lp`` files'.
 """
 
 from __future__ import annotations
@@ -12,8 +12,8 @@ import math
 from fractions import Fraction
 
 from ....logic.automaton import SymbolicAutomaton, Travelled
-from ....logic.guards import HEADWAY, LANE, POSITION, SPEED, TRAVELED, And, Bound, Guard, Not, Or
-from ...facts import atom, bound_rule, guard_nodes, inset, junction_rules, outside_rules, with_automaton
+from ....logic.guards import HEADWAY, LANE, POSITION, SPEED, TRAVELED, Bound, Guard, Not
+from ...facts import atom, guard_nodes, inset, with_automaton
 from .settings import ContinuousSettings
 
 
@@ -26,8 +26,8 @@ def number(value: float) -> str:
 
 def build_continuous_instance(
     automaton: SymbolicAutomaton, settings: ContinuousSettings, relaxable: bool = False
-) -> tuple[str, str]:
-    """(base program, state(t) program) of the scenario for the continuous encoding; with
+) -> str:
+    """The scenario's instance for the continuous encoding; with
     ``relaxable``, every bound and duration of the scenario can be switched off by an external
     ``relaxed(K)``, as in the grid encoding, for the diagnosis of a scenario without a plan."""
     s = settings
@@ -62,20 +62,27 @@ def build_continuous_instance(
         automaton,
         s.dt,
         relaxable,
-        lambda node, guard, numbering, switch: _guard_rules(node, guard, numbering, s, switch),
-        lambda relax: _rate_rules(automaton, s, relax),
+        lambda node, guard: node_facts(node, guard, s),
+        lambda relax: rate_facts(automaton, s, relax),
     )
 
 
-def _rate_rules(automaton: SymbolicAutomaton, settings: ContinuousSettings, relax: dict) -> list[str]:
-    """The bounds over a timed phase P's two ends as linear rows. A mean acceleration: one row per
-    length D the phase may have (a known length makes the mean linear):
-      &sum{ v(V,t); -1*v(V,T) } >= lo*D*dt :- finish(P,t), begin(P,T), T = t-D.   (<= hi*D*dt likewise)
-    with lo and hi inset by ``acceleration_margin``; the lengths run up to the phase's upper bound,
-    or to the horizon limit for a phase with none. A distance travelled: one row,
-      &sum{ p(V,t); -1*p(V,T) } >= lo :- finish(P,t), begin(P,T).
-    inset by ``position_margin``."""
-    rules = []
+def decimal(value: float) -> str:
+    """A decimal as clingo-lpx reads it, unquoted: exact for the decimals we write."""
+    fraction = Fraction(value).limit_denominator(10**6)
+    return f"{fraction.numerator}" if fraction.denominator == 1 else f"{float(fraction):.6f}".rstrip("0")
+
+
+def rate_facts(automaton: SymbolicAutomaton, settings: ContinuousSettings, relax: dict) -> list[str]:
+    """The bounds over a timed phase's two ends (``asp/continuous/rates.lp``), rate R of phase P
+    for vehicle V. A mean acceleration, ``mean_acceleration(R,P,V)``: per length D the phase may
+    have (a known length makes the mean linear), ``gain_at_least(R,D,X)`` / ``gain_at_most(R,D,X)``
+    with X the bound times D*dt, inset by ``acceleration_margin``; the lengths run up to the
+    phase's upper bound, or to the horizon limit for a phase with none. A distance travelled,
+    ``travelled(R,P,V)`` with ``travelled_at_least(R,X)`` / ``travelled_at_most(R,X)``, inset by
+    ``position_margin``. A rate the diagnosis may relax: ``relaxable(rate(R),K)``."""
+    facts = ["% rates over a phase's two ends (asp/continuous/rates.lp)"]
+    rate_id = 0
     for phase, timing in sorted(automaton.timings.items()):
         if not timing.rates:
             continue
@@ -86,24 +93,29 @@ def _rate_rules(automaton: SymbolicAutomaton, settings: ContinuousSettings, rela
             else settings.max_horizon
         )
         for rate in timing.rates:
-            rules.append(f"% {rate}")
-            switch = f", not relaxed({relax[rate.source]})" if rate.source in relax else ""
+            r, rate_id = rate_id, rate_id + 1
+            where = f" (line {rate.source.line}, column {rate.source.column})" if rate.source else ""
+            facts.append(f"% rate {r}: {rate}{where}")
+            if rate.source in relax:
+                facts.append(f"relaxable(rate({r}),{relax[rate.source]}).")
             actor = atom(rate.actor)
             if isinstance(rate, Travelled):
                 low, high = inset(rate.low, rate.high, settings.position_margin)
-                body = f":- finish({phase},t), begin({phase},T){switch}."
-                for value, operator in ((low, ">="), (high, "<=")):
-                    if math.isfinite(value):
-                        rules.append(f"&sum{{ p({actor},t); -1*p({actor},T) }} {operator} {number(value)} {body}")
+                facts.append(f"travelled({r},{phase},{actor}).")
+                if math.isfinite(low):
+                    facts.append(f"travelled_at_least({r},{number(low)}).")
+                if math.isfinite(high):
+                    facts.append(f"travelled_at_most({r},{number(high)}).")
                 continue
             low, high = inset(rate.low, rate.high, settings.acceleration_margin)
+            facts.append(f"mean_acceleration({r},{phase},{actor}).")
             for length in range(shortest, longest + 1):
                 seconds = length * settings.dt
-                body = f":- finish({phase},t), begin({phase},T), T = t-{length}{switch}."
-                for value, operator in ((low * seconds, ">="), (high * seconds, "<=")):
-                    if math.isfinite(value):
-                        rules.append(f"&sum{{ v({actor},t); -1*v({actor},T) }} {operator} {number(value)} {body}")
-    return rules
+                if math.isfinite(low):
+                    facts.append(f"gain_at_least({r},{length},{number(low * seconds)}).")
+                if math.isfinite(high):
+                    facts.append(f"gain_at_most({r},{length},{number(high * seconds)}).")
+    return facts
 
 
 def stopping(automaton: SymbolicAutomaton, settings: ContinuousSettings) -> set[str]:
@@ -121,16 +133,17 @@ def stopping(automaton: SymbolicAutomaton, settings: ContinuousSettings) -> set[
     }
 
 
-def _terms(bound: Bound) -> tuple[str, str]:
-    """The variable of a position or speed bound's quantity, and the &sum elements of its term."""
-    variable = "p" if bound.term.quantity in (POSITION, TRAVELED) else "v"
+def _term_facts(node: int, bound: Bound) -> list[str]:
+    """The elements of a position, speed or distance bound's term: ``term_p`` (p(V,t)), ``term_v``
+    (v(V,t)) and ``term_p0`` (p(V,0), the start of a distance travelled), each with its coefficient."""
     term = bound.term
-    elements = f"{variable}({atom(term.actor)},t)"
+    variable = "p" if term.quantity in (POSITION, TRAVELED) else "v"
+    facts = [f"term_{variable}({node},1,{atom(term.actor)})."]
     if term.quantity == TRAVELED:  # d(a) = p(a,t) - p(a,0)
-        elements += f"; -1*p({atom(term.actor)},0)"
+        facts.append(f"term_p0({node},-1,{atom(term.actor)}).")
     if term.reference is not None:
-        elements += f"; -1*{variable}({atom(term.reference)},t)"
-    return variable, elements
+        facts.append(f"term_{variable}({node},-1,{atom(term.reference)}).")
+    return facts
 
 
 def _margin(bound: Bound, settings: ContinuousSettings) -> float:
@@ -139,86 +152,34 @@ def _margin(bound: Bound, settings: ContinuousSettings) -> float:
     return settings.position_margin if bound.term.quantity in (POSITION, TRAVELED) else settings.speed_margin
 
 
-def _compared(bound: Bound, value: float) -> tuple[str, str]:
-    """(&sum elements, right-hand side) that compare a bound's term with ``value`` in a linear
-    row: the row's ``<=`` (``>=``) holds exactly when the term is at most (at least) ``value``.
-    A headway ``h(a, b)`` is compared as ``gap - value * v(b)`` with 0 (the follower never
-    reverses); a position or speed as the term itself with ``value``."""
-    if bound.term.quantity == HEADWAY:
-        ahead, behind = atom(bound.term.actor), atom(bound.term.reference)
-        return f"p({ahead},t); -1*p({behind},t); {number(-value)}*v({behind},t)", "0"
-    return _terms(bound)[1], number(value)
-
-
-def _guard_rules(
-    node: int, guard: Guard, numbering: dict[Guard, int], settings: ContinuousSettings, switch: str = ""
-) -> list[str]:
-    """The rules of one guard node; ``switch`` is a body condition (``, not relaxed(K)``) under
-    which a bound's linear constraints apply."""
-    head = f"g({node},t)"
-    if isinstance(guard, (And, Or)):
-        return junction_rules(node, guard, numbering)
-    if isinstance(guard, Not):
-        bound = guard.part
-        assert isinstance(bound, Bound)
-        if bound.term.quantity == LANE:
-            return outside_rules(node, bound, None)  # lanes: the grid's rules, which need no settings
-        return _outside(node, bound, settings, switch)
-    assert isinstance(guard, Bound)
-    if guard.term.quantity == LANE:
-        return bound_rule(head, guard, None)
-    low, high = inset(guard.low, guard.high, _margin(guard, settings))
-    if guard.term.quantity == SPEED and guard.term.reference is None and guard.low <= 0:
-        low = 0.0  # no margin below a standstill: no vehicle undershoots it (none reverses)
-    # a free guard is tried false first: set at random, it would add linear constraints at steps
-    # where no transition or invariant needs it
-    rules = [f"{{ {head} }}.", f"#heuristic {head}. [1,false]"]
-    for value, operator in ((high, "<="), (low, ">=")):
-        if math.isfinite(value):
-            elements, right = _compared(guard, value)
-            rules.append(f"&sum{{ {elements} }} {operator} {right} :- {head}{switch}.")
-    if guard.term.quantity == SPEED:
-        rules += _speed_lead(node, _terms(guard)[1], low, high)
-    return rules
-
-
-def _speed_lead(node: int, elements: str, low: float, high: float) -> list[str]:
-    """A speed bound that holds at a step is preferred to hold at the steps next to it too.
-
-    Why: the motion planner rounds off the plan's changes of speed, starting them late and ending
-    them early (measured on follow_then_overtake's refined samples: a relative speed the plan
-    reached at a phase's first step, the trace reached 1.2 s later, past the 0.5 s a sampled
-    duration allows). Holding the bound a step either side is a preference of the smoothing
-    program, never a reason for no plan.
-    """
-    before, after = elements.replace(",t)", ",S)"), elements
-    rules = []
-    for bound, operator in ((high, "<="), (low, ">=")):
-        if math.isfinite(bound):
-            rules.append(f"&prefer{{ {before} }} {operator} {number(bound)} :- g({node},t), S = t-1, t > 0.")
-            rules.append(f"&prefer{{ {after} }} {operator} {number(bound)} :- g({node},S), S = t-1.")
-    return rules
-
-
-def _outside(node: int, bound: Bound, settings: ContinuousSettings, switch: str = "") -> list[str]:
-    """``not bound``: below the range or above it, with the margin outside."""
+def node_facts(node: int, guard: Guard, settings: ContinuousSettings) -> list[str]:
+    """One guard node's facts (``asp/continuous/guards.lp``): a bound, ``within(N)`` with its term
+    and its range inset by the margin, or its negation, ``outside(N)`` with the range widened by
+    the margin. A time headway ``h(a, b)`` is compared as ``p(a) - p(b) - X*v(b)`` with 0 (the
+    follower never reverses), so its facts carry the coefficient -X of each side."""
+    bound = guard.part if isinstance(guard, Not) else guard
+    assert isinstance(bound, Bound) and bound.term.quantity != LANE
     margin = _margin(bound, settings)
-    head = f"g({node},t)"
-    sides = []
-    rules = []
-    if bound.low != -math.inf:
-        sides.append(f"below({node},t)")
-        elements, right = _compared(bound, bound.low - margin)
-        rules.append(f"&sum{{ {elements} }} <= {right} :- below({node},t).")
-    if bound.high != math.inf:
-        sides.append(f"above({node},t)")
-        elements, right = _compared(bound, bound.high + margin)
-        rules.append(f"&sum{{ {elements} }} >= {right} :- above({node},t).")
-    if not sides:
-        return [f"% {head} never holds"]
-    return [
-        f"{{ {head} }}.",
-        f"#heuristic {head}. [1,false]",
-        f"{{ {'; '.join(sides)} }} = 1 :- {head}{switch}.",
-        *rules,
-    ]
+    headway = bound.term.quantity == HEADWAY
+    if isinstance(guard, Not):
+        sides = (("under", bound.low - margin, bound.low), ("over", bound.high + margin, bound.high))
+        kind = "outside"
+    else:
+        low, high = inset(bound.low, bound.high, margin)
+        if bound.term.quantity == SPEED and bound.term.reference is None and bound.low <= 0:
+            low = 0.0  # no margin below a standstill: no vehicle undershoots it (none reverses)
+        sides = (("at_least", low, low), ("at_most", high, high))
+        kind = "within"
+    sides = [(name, value) for name, value, end in sides if math.isfinite(end)]
+    if kind == "outside" and not sides:
+        return ["% never holds"]
+    if headway:
+        ahead, behind = atom(bound.term.actor), atom(bound.term.reference)
+        facts = [f"{kind}({node}).", f"headway({node},{ahead},{behind})."]
+        facts += [f"headway_{name}({node},{number(-value)})." for name, value in sides]
+        return facts
+    facts = [f"{kind}({node}).", *_term_facts(node, bound)]
+    facts += [f"{name}({node},{number(value)})." for name, value in sides]
+    if kind == "within" and bound.term.quantity == SPEED:
+        facts.append(f"speed_bound({node}).")
+    return facts

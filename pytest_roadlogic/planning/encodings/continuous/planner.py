@@ -19,25 +19,48 @@ import random
 from collections.abc import Iterator
 
 import clingo
-from clingo.ast import ProgramBuilder, parse_string
+from clingo.ast import ASTType, ProgramBuilder, parse_string
 
 from ....logic.automaton import SymbolicAutomaton
-from ...core import ASP_DIR, AUTOMATON, IncrementalPlanner, read_programs
+from ...core import ASP_DIR, AUTOMATON, KEEP_LANE, IncrementalPlanner, read_programs
 from ...diagnosis import check_satisfiable
 from ...errors import HorizonTooShort, NoPlanError, PlanningTimeout
-from ...facts import atom
 from ...plan import Plan
 from .decode import decode_plan
-from .instance import build_continuous_instance, number
+from .instance import build_continuous_instance, decimal
 from .linear import LazyLinearTheory, theory_program
 from .preferences import farthest, start_preferences
 from .settings import ContinuousSettings
 
-BACKGROUND = (AUTOMATON, ASP_DIR / "continuous" / "dynamics.lp")
+ASP_CONTINUOUS = ASP_DIR / "continuous"
+BACKGROUND = (
+    AUTOMATON,
+    ASP_DIR / "guards.lp",
+    ASP_CONTINUOUS / "dynamics.lp",
+    ASP_CONTINUOUS / "guards.lp",
+    ASP_CONTINUOUS / "rates.lp",
+    ASP_CONTINUOUS / "steer.lp",
+)
+RANDOM_START = (KEEP_LANE, ASP_CONTINUOUS / "start.lp")  # loaded for a random start only, in this order
+# the soft rows clingo-lpx, which checks every row exactly, cannot weigh: a preference binds as a
+# row, a random start's nudges and drifts are left out
+SOFT = {"prefer": "sum", "nudge": None, "drift": None}
 # conflicts a random start's search at its drawn horizon may spend before the shortest horizon's
 # plans are taken instead: a count, not a time, so that every machine stops at the same point (the
 # grid's 50 000 are about 2 s there; each conflict here may cost a linear program)
 STRETCH_CONFLICTS = 2_000
+
+
+def exact_rows(statement, add) -> None:
+    """``add`` the statement as clingo-lpx reads it: a soft row of the linear program (``SOFT``)
+    becomes a hard one, or is left out (a rewrite of the parsed program, not of its text)."""
+    head = getattr(statement, "head", None)
+    if head is not None and head.ast_type == ASTType.TheoryAtom and head.term.name in SOFT:
+        name = SOFT[head.term.name]
+        if name is None:
+            return
+        statement = statement.update(head=head.update(term=head.term.update(name=name)))
+    add(statement)
 
 
 class ContinuousPlanner(IncrementalPlanner):
@@ -47,7 +70,7 @@ class ContinuousPlanner(IncrementalPlanner):
     def __init__(self, automaton: SymbolicAutomaton, settings: ContinuousSettings | None = None, seed: int = 0) -> None:
         super().__init__(automaton, settings or ContinuousSettings(), seed)  # type: ignore[arg-type]
 
-    def _instance(self, settings, relaxable: bool = False) -> tuple[str, str]:
+    def _instance(self, settings, relaxable: bool = False) -> str:
         return build_continuous_instance(self.automaton, settings, relaxable)
 
     def _start_preferences(self, draw: random.Random) -> str:
@@ -56,29 +79,32 @@ class ContinuousPlanner(IncrementalPlanner):
     def _widened(self):
         return None  # every start speed the settings allow is tried at once
 
-    def _control(self, base_program: str, state_program: str):
-
+    def _control(self, instance: str):
         control = self._new_control()
         program = read_programs(*BACKGROUND)
-        program += (
-            "\n#program base.\n" + base_program + "\n" + self.preferences + "\n#program state(t).\n" + state_program
-        )
+        program += "\n#program base.\n" + instance + "\n" + self.preferences
+        if self.settings.random_start:
+            program += "\n" + read_programs(*RANDOM_START)
         if self.settings.theory == "lpx":
             from clingolpx import ClingoLPXTheory
 
             theory = ClingoLPXTheory()
-            # clingo-lpx has no preferences: the encoding's bind, a random start's nudges and drifts go
-            program = program.replace("&prefer{", "&sum{")
-            program = "\n".join(line for line in program.splitlines() if not line.startswith(("&nudge", "&drift")))
             for key, value in self.settings.lpx_options:
                 theory.configure(key, value)
+
+            def add(statement):
+                exact_rows(statement, lambda kept: theory.rewrite_ast(kept, builder.add))
         else:
             theory = LazyLinearTheory()
             program = theory_program() + program
+
+            def add(statement):
+                theory.rewrite_ast(statement, builder.add)
+
         theory.register(control)
         self._theories[control] = theory
         with ProgramBuilder(control) as builder:
-            parse_string(program, lambda statement: theory.rewrite_ast(statement, builder.add))
+            parse_string(program, add)
         return control
 
     def plans(self, limit: int | None = None) -> Iterator[Plan]:
@@ -96,7 +122,7 @@ class ContinuousPlanner(IncrementalPlanner):
             # plan 0.98 s with the window asked first at the floor, 0.77 s without)
             checked = window.floor > self.settings.max_horizon
             earliest = self._earliest(deadline, window) if checked else window.floor
-            control = self._control(self.base_program, self.state_program)
+            control = self._control(self.instance)
             self._advance_to(control, earliest)
             horizon = earliest
             # a random start's plans come from a search of their own at a drawn, longer horizon as
@@ -129,7 +155,7 @@ class ContinuousPlanner(IncrementalPlanner):
                     source, plan_horizon = control, horizon
                     target = self._stretch_target(horizon)
                     if found == 0 and target > horizon and window.open_at(target):
-                        longer = self._control(self.base_program, self.state_program)
+                        longer = self._control(self.instance)
                         self._advance_to(longer, target)
                         longer_answer = self._model(longer, deadline, f"at horizon {target}", STRETCH_CONFLICTS)
                         if longer_answer is not None:
@@ -143,7 +169,7 @@ class ContinuousPlanner(IncrementalPlanner):
                 deadline = self._renewed()
                 window.wait = self._waiter(deadline)
                 found += 1
-                self._exclude(source, symbols, found, self._steering(places, found))
+                self._exclude(source, symbols, found, self._steering(places))
             if found:
                 return
             last_open = window.last_open(self.settings.max_horizon)
@@ -188,17 +214,19 @@ class ContinuousPlanner(IncrementalPlanner):
 
         return self._next_model(control, deadline, f" {where}", answer, conflicts)
 
-    def _exclude(self, control, symbols, count: int, steering: list[str] = ()) -> None:
-        """Never these transition times and lanes together again; the next plan follows
-        ``steering`` (``_steering``) instead of the steering before it."""
-        self._forbid(control, [s for s in symbols if s.name in ("fire", "lane")], count, steering)
-        if steering:
+    def _exclude(self, control, symbols, count: int, place: float | None = None) -> None:
+        """Never these transition times and lanes together again; the next plan's driving vehicles
+        are nudged to start at ``place`` (m/s, ``_steering``; ``asp/continuous/steer.lp``)
+        instead of where the plan before was steered."""
+        steer = [] if place is None else [("steer", [clingo.Number(count), clingo.String(decimal(place))])]
+        self._forbid(control, [s for s in symbols if s.name in ("fire", "lane")], count, parts=steer)
+        if steer:
             control.assign_external(clingo.Function("steer", [clingo.Number(count)]), True)
             if count > 1:
                 control.assign_external(clingo.Function("steer", [clingo.Number(count - 1)]), False)
 
-    def _steering(self, places: list[float], count: int) -> list[str]:
-        """Rules that steer the next plan's start speeds away from those of the plans before it,
+    def _steering(self, places: list[float]) -> float | None:
+        """The start speed (m/s) that steers the next plan's start speeds away from those of the plans before it,
         as the grid planner's base strategy steered its choices away from every earlier plan's:
         every driving vehicle is nudged to one place of its start band (``initial_speed``), the
         place farthest from those of the plans before (``farthest``: the first plan's is the
@@ -215,14 +243,8 @@ class ContinuousPlanner(IncrementalPlanner):
         scenario caps in one plan (dodge_obstacle's ego, at most 20 m/s at 4 steps) may be free in
         the next, and bands shrunk to the speeds reached ended overtake's plans at 8 m/s."""
         if self.settings.theory != "lazy":
-            return []  # clingo-lpx has no preferences
+            return None  # clingo-lpx has no preferences
         low, high = self.settings.start_band()
         place = farthest([0.0, *places], 0.0, 1.0)  # the first plan, unsteered, starts low
         places.append(place)
-        rules = [f"#external steer({count})."]
-        for vehicle in self.automaton.actors:
-            if vehicle not in self.automaton.stationary:
-                rules.append(
-                    f"&nudge{{ v({atom(vehicle)},0) }} = {number(round(low + place * (high - low), 1))} :- steer({count})."
-                )
-        return rules
+        return round(low + place * (high - low), 1)

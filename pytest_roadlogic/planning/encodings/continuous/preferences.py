@@ -7,16 +7,16 @@ import random
 
 from ....logic.automaton import SymbolicAutomaton
 from ....logic.guards import POSITION, TRAVELED, Bound
-from ...core import KEEP_LANE, read_programs
 from ...facts import atom
 from .instance import number
 from .settings import ContinuousSettings
 
 
 def start_preferences(automaton: SymbolicAutomaton, settings: ContinuousSettings, draw: random.Random) -> str:
-    """A random start's draws, in a fixed order so that one seed gives one set: per vehicle a
-    preferred lane (a heuristic) and, for a driving one, a preferred start speed (a preference of
-    the linear program, which a scenario's own speeds override).
+    """A random start's draws as facts for ``asp/continuous/start.lp``, in a fixed order so that one
+    seed gives one set: per vehicle a preferred lane (a heuristic) and, for a driving one, a
+    preferred start speed (a preference of the linear program, which a scenario's own speeds
+    override).
 
     A driving vehicle that changes lane prefers to end the plan in its drawn lane as well: one the
     scenario moves out of its lane (a dodge, an overtake) does not always go to the nearest lane,
@@ -66,56 +66,29 @@ def start_preferences(automaton: SymbolicAutomaton, settings: ContinuousSettings
     its guard (follow's end gap, the overtakes' ends), in a drawn third: overtake_third_actor
     0.248/0.229/0.251, above its base strategy at seed 3, and follow no better (0.190/0.182/0.188)."""
     low, high = settings.start_band()
-    rules, ends, drifts = [], [], []
+    facts, drifts = ["% a random start's draws (asp/continuous/start.lp)"], []
     for vehicle in automaton.actors:
         name = atom(vehicle)
-        lane = draw.randrange(automaton.lanes)
-        rules.append(f"#heuristic lane({name},{lane},0). [2,true]")
+        facts.append(f"preferred_lane({name},{draw.randrange(automaton.lanes)}).")
         if vehicle not in automaton.stationary:
-            rules.append(f"&nudge{{ v({name},0) }} = {number(round(draw.uniform(low, high), 1))}.")
-            ends.append(f"#heuristic lane({name},{lane},t) : query(t), changed({name},t). [3,true]")
+            facts.append(f"preferred_speed({name},{number(round(draw.uniform(low, high), 1))}).")
     # drawn after the lanes and start speeds, which a seed therefore gives as it did before drifts
-    slow, fast = settings.drift_speeds
     for vehicle in automaton.actors:
         if vehicle not in automaton.stationary and settings.drift:
-            name = atom(vehicle)
             aim = draw.choice((-settings.drift, 0.0, settings.drift))
-            drifts += [
-                f"&drift{{ a({name},t) }} = {number(aim)}.",
-                f"&drift{{ v({name},t) }} >= {number(slow)}.",
-                f"&drift{{ v({name},t) }} <= {number(fast)}.",
-            ]
-    # the last step's lane atoms exist once that step is grounded, and query(t) says which is last;
-    # changed(V,t): V has changed lane by step t
-    keep_lane = read_programs(KEEP_LANE)
-    # a transition that pins a driving vehicle to a place is tried at its earliest step first (a
-    # decision order, latest step last; a heuristic's level must be positive)
-    top = settings.max_horizon + 1
+            drifts.append(f"drift({atom(vehicle)},{number(aim)}).")
+    if drifts:
+        slow, fast = settings.drift_speeds
+        drifts.append(f"drift_speeds({number(slow)},{number(fast)}).")
     early = [
-        f"#heuristic fire({transition.id},t) : t < {top}. [{top}-t,true]"
+        f"pins({transition.id})."
         for transition in automaton.transitions
         if transition.source != automaton.initial
         and any(pins(bound, automaton.stationary) for bound in transition.guard.atoms())
     ]
-    return (
-        "\n".join(
-            [
-                *rules,
-                "#program dynamics(t).",
-                *drifts,
-                keep_lane,
-                "#program dynamics(t).",
-                "changed(V,t) :- changing(V,t).",
-                "changed(V,t) :- changed(V,t-1), t > 1.",
-                "#program check(t).",
-                *ends,
-                "#program state(t).",
-                *early,
-                "#program base.",
-            ]
-        )
-        + "\n"
-    )
+    if early:
+        early.append(f"pin_levels({settings.max_horizon + 1}).")
+    return "\n".join([*facts, *drifts, *early]) + "\n"
 
 
 def pins(bound: Bound, stationary: frozenset[str]) -> bool:

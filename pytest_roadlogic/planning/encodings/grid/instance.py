@@ -4,7 +4,8 @@ The background theory (``asp/grid/dynamics.lp``, ``domain.lp``, ``initial.lp``, 
 ``asp/automaton.lp``) is fixed; what is scenario-specific is written here, as facts and constants:
 the vehicles, the grid (speeds and accelerations in cells per step, start zones and speeds: the
 rules that read them are in ``asp/grid/initial.lp``), the run-up, the automaton (``facts``), and a
-random start's preferences (``asp/grid/preferences.lp``). Position and speed bounds are planned
+random start's preferences (``asp/grid/preferences.lp``), and the guard nodes
+(``asp/guards.lp``, ``asp/grid/guards.lp``). No rule is written here: the rules are the ``.lp`` files'. Position and speed bounds are planned
 with a margin inside their range so that a simulation that tracks the plan with some error still
 meets them (the monitor checks the ranges as written).
 """
@@ -16,21 +17,13 @@ import random
 
 from ....frontend.errors import OscError, error_at
 from ....logic.automaton import SymbolicAutomaton
-from ....logic.guards import HEADWAY, POSITION, TRAVELED, And, Bound, Guard, Not, Or
-from ...facts import (
-    atom,
-    bound_rule,
-    junction_rules,
-    outside_rules,
-    planned_range,
-    position_terms,
-    with_automaton,
-)
+from ....logic.guards import HEADWAY, POSITION, TRAVELED, Bound, Guard, Not
+from ...facts import atom, bounds_text, inset, with_automaton
 from .settings import GridSettings
 
 
 def build_instance(automaton: SymbolicAutomaton, settings: GridSettings, relaxable: bool = False) -> tuple[str, str]:
-    """Returns (base program, state(t) program) of the scenario instance.
+    """The scenario's instance for the grid encoding.
 
     With ``relaxable``, each constraint of ``relaxable_constraints`` (numbered in that order) is
     switched off by an external ``relaxed(K)``: a diagnosis asks which of them cannot hold together.
@@ -87,7 +80,7 @@ def build_instance(automaton: SymbolicAutomaton, settings: GridSettings, relaxab
         automaton,
         settings.dt,
         relaxable,
-        lambda node, guard, numbering, switch: _guard_rules(node, guard, numbering, settings, switch),
+        lambda node, guard: node_facts(node, guard, settings),
     )
 
 
@@ -96,29 +89,54 @@ def _runup_fact(cells_per_step: int, steps: int, settings: GridSettings) -> str:
     return f"runup({cells_per_step},{steps},{math.floor(metres / settings.grid + 1e-9)},{math.ceil(metres / settings.grid - 1e-9)})."
 
 
-def _guard_rules(
-    node: int, guard: Guard, numbering: dict[Guard, int], settings: GridSettings, switch: str = ""
-) -> list[str]:
-    """The rules of one guard node; ``switch`` is a body condition (``, not relaxed(K)``) under
-    which the difference constraints of a position bound apply."""
-    head = f"g({node},t)"
-    if isinstance(guard, (And, Or)):
-        return junction_rules(node, guard, numbering)
-    if isinstance(guard, Not):  # on a bound (negation normal form): outside the range, with a margin
-        assert isinstance(guard.part, Bound)
-        if guard.part.term.quantity in _CONTINUOUS_ONLY:
-            raise _needs_continuous(
-                guard.part.source, _CONTINUOUS_ONLY[guard.part.term.quantity], "the grid encoding cannot express it"
-            )
-        return outside_rules(node, guard.part, settings, switch)
-    assert isinstance(guard, Bound)
-    if guard.term.quantity in _CONTINUOUS_ONLY:
+def node_facts(node: int, guard: Guard, settings: GridSettings) -> list[str]:
+    """One guard node's facts (``asp/grid/guards.lp``): a position bound, ``position_within`` in
+    cells, or its negation, ``position_outside``; a speed bound, ``speed_within`` in cells per
+    step, or ``speed_outside``. Within: the range inset by the margin (``planned_range``); outside:
+    the largest grid value below ``low - margin`` and the smallest above ``high + margin``.
+    ``#inf`` / ``#sup`` for a side with no end; a range with no grid value has no fact (its guard
+    never holds)."""
+    outside = isinstance(guard, Not)
+    bound = guard.part if outside else guard
+    assert isinstance(bound, Bound)
+    if bound.term.quantity in _CONTINUOUS_ONLY:
         raise _needs_continuous(
-            guard.source, _CONTINUOUS_ONLY[guard.term.quantity], "the grid encoding cannot express it"
+            bound.source, _CONTINUOUS_ONLY[bound.term.quantity], "the grid encoding cannot express it"
         )
-    if guard.term.quantity == POSITION:
-        return _position_rules(node, guard, settings, switch)
-    return bound_rule(head, guard, settings)
+    if bound.term.quantity == POSITION:
+        margin, scale, kind = settings.position_margin, settings.grid, "position"
+    else:
+        margin, scale, kind = settings.speed_margin, settings.grid / settings.dt, "speed"
+    actor, reference = atom(bound.term.actor), atom(bound.term.reference) if bound.term.reference else "none"
+    if outside:
+        below = -math.inf if bound.low == -math.inf else math.ceil((bound.low - margin) / scale - 1e-9) - 1
+        above = math.inf if bound.high == math.inf else math.floor((bound.high + margin) / scale + 1e-9) + 1
+        if below == -math.inf and above == math.inf:
+            return ["% never holds"]
+        low, high = bounds_text(below, above)
+        return [f"{kind}_outside({node},{actor},{reference},{low},{high})."]
+    lo, hi = planned_range(bound.low, bound.high, margin, scale)
+    if lo > hi:
+        return ["% cannot hold on this grid"]
+    low, high = bounds_text(lo, hi)
+    return [f"{kind}_within({node},{actor},{reference},{low},{high})."]
+
+
+def _grid_range(low: float, high: float, scale: float) -> tuple[float, float]:
+    """The whole grid units within [low, high] (infinite sides stay infinite)."""
+    lo = -math.inf if low == -math.inf else math.ceil(low / scale - 1e-9)
+    hi = math.inf if high == math.inf else math.floor(high / scale + 1e-9)
+    return lo, hi
+
+
+def planned_range(low: float, high: float, margin: float, scale: float) -> tuple[float, float]:
+    """The grid values a plan may use for [low, high]: inset by the margin, unless that leaves none.
+
+    A narrow range (a sampled value's one-cell band, say) can hold a grid value that every inset
+    misses: [23, 24] inset to [23.25, 23.75] has no whole metre, so the plan uses the range itself.
+    """
+    lo, hi = _grid_range(*inset(low, high, margin), scale)
+    return (lo, hi) if lo <= hi else _grid_range(low, high, scale)
 
 
 # the grid's positions and speeds are separate integer fluents: a time headway (a gap over a
@@ -137,26 +155,6 @@ def _needs_continuous(source, construct: str, why: str) -> OscError:
         f"{construct} needs the continuous planner; {why}",
         hint="drop --roadlogic-encoding grid / --encoding grid (continuous is the default)",
     )
-
-
-def _position_rules(node: int, bound: Bound, settings: GridSettings, switch: str = "") -> list[str]:
-    """A position bound as difference constraints on the position variables.
-
-    Positions are not atoms, so the guard cannot be derived from them: the solver chooses
-    ``g(N,t)`` and its truth imposes the bound. Guards are only used positively (negations sit on
-    bounds, ``outside_rules``), so a false ``g`` needs no meaning.
-    """
-    lo, hi = planned_range(bound.low, bound.high, settings.position_margin, settings.grid)
-    head = f"g({node},t)"
-    if lo > hi:
-        return [f"% {head} cannot hold on this grid"]
-    a, b = position_terms(bound)
-    rules = [f"{{ {head} }}."]
-    if hi != math.inf:
-        rules.append(f"&diff{{ {a} - {b} }} <= {hi} :- {head}{switch}.")
-    if lo != -math.inf:
-        rules.append(f"&diff{{ {b} - {a} }} <= {-lo} :- {head}{switch}.")
-    return rules
 
 
 def _farthest_position(automaton: SymbolicAutomaton) -> float:
@@ -183,21 +181,20 @@ def start_zones(automaton: SymbolicAutomaton, settings: GridSettings) -> tuple[i
 
 
 def start_preferences(automaton: SymbolicAutomaton, settings: GridSettings, draw: random.Random) -> str:
-    """A random start's draws (asp/preferences.lp says what the solver does with them): per vehicle
-    a preferred start lane, zone and speed, as ground heuristics of step 0's atoms, and one
-    acceleration, as a fact the per-step heuristics read; drawn from ``draw`` in a fixed order so
-    that one seed gives one set of preferences."""
+    """A random start's draws as facts (``asp/grid/preferences.lp`` says what the solver does with
+    them): per vehicle a preferred start lane, zone and speed, and one acceleration; drawn from
+    ``draw`` in a fixed order so that one seed gives one set of preferences."""
     starts = list(settings.initial_speeds())
     _, zones = start_zones(automaton, settings)
     accelerations = settings.acceleration_cells()
-    rules = []
+    facts = ["% a random start's draws (asp/grid/preferences.lp)"]
     for index, vehicle in enumerate(automaton.actors):
         name = atom(vehicle)
-        rules.append(f"#heuristic lane({name},{draw.randrange(automaton.lanes)},0). [1,true]")
+        facts.append(f"preferred_lane({name},{draw.randrange(automaton.lanes)}).")
         if index:
-            rules.append(f"#heuristic zone({name},{draw.randint(-zones, zones)}). [1,true]")
+            facts.append(f"preferred_zone({name},{draw.randint(-zones, zones)}).")
         if vehicle in automaton.stationary:
             continue
-        rules.append(f"#heuristic vel({name},{draw.choice(starts)},0). [1,true]")
-        rules.append(f"preferred_acc({name},{draw.choice(accelerations)}).")
-    return "\n".join(rules) + "\n"
+        facts.append(f"preferred_speed({name},{draw.choice(starts)}).")
+        facts.append(f"preferred_acc({name},{draw.choice(accelerations)}).")
+    return "\n".join(facts) + "\n"

@@ -27,7 +27,13 @@ from .instance import build_instance, start_preferences
 from .settings import GridSettings
 
 ASP_GRID = ASP_DIR / "grid"
-BACKGROUND = (ASP_GRID / "dynamics.lp", ASP_GRID / "domain.lp", AUTOMATON)
+BACKGROUND = (
+    ASP_GRID / "dynamics.lp",
+    ASP_GRID / "domain.lp",
+    AUTOMATON,
+    ASP_DIR / "guards.lp",
+    ASP_GRID / "guards.lp",
+)
 INITIAL = "initial.lp"  # the rules of the initial state, after the instance's facts (see _control)
 PREFERENCES = (ASP_GRID / "preferences.lp", KEEP_LANE)  # loaded for a random start only, in this order
 # conflicts a random start may spend stretching its plan past the shortest horizon: random
@@ -38,7 +44,7 @@ STRETCH_CONFLICTS = 50_000
 
 
 def background_theory() -> str:
-    """The grid encoding's background program: its dynamics and domain rules, and the automaton's run."""
+    """The grid encoding's background program: its dynamics and domain rules, the automaton's run and the guards."""
     return read_programs(*BACKGROUND)
 
 
@@ -49,28 +55,21 @@ class GridPlanner(IncrementalPlanner):
     def __init__(self, automaton, settings: GridSettings | None = None, seed: int = 0) -> None:
         super().__init__(automaton, settings or GridSettings(), seed)
 
-    def _instance(self, settings, relaxable: bool = False) -> tuple[str, str]:
-        """(base program, state(t) program) of this encoding's instance."""
+    def _instance(self, settings, relaxable: bool = False) -> str:
         return build_instance(self.automaton, settings, relaxable)
 
     def _start_preferences(self, draw: random.Random) -> str:
         """A random start's draws, as this encoding's rules."""
         return start_preferences(self.automaton, self.settings, draw)
 
-    def _control(self, base_program: str, state_program: str) -> clingo.Control:
+    def _control(self, instance: str) -> clingo.Control:
         control = self._new_control()
         self._theories[control] = theory = ClingoDLTheory()
         theory.register(control)
         initial = read_programs(ASP_GRID / INITIAL)
         self._add(
             control,
-            background_theory()
-            + "\n#program base.\n"
-            + base_program
-            + "\n"
-            + initial
-            + "\n#program state(t).\n"
-            + state_program,
+            background_theory() + "\n#program base.\n" + instance + "\n" + initial,
         )
         if self.preferences:
             self._add(
@@ -84,13 +83,13 @@ class GridPlanner(IncrementalPlanner):
         limit, plans that start at any allowed speed (``widen_initial_speed``)."""
         check_satisfiable(self.automaton)
         deadline = self._renewed()
-        programs = [lambda: (self.base_program, self.state_program)]
+        programs = [lambda: self.instance]
         if (wide := self._widened()) is not None:
             programs.append(lambda: self._instance(wide))
         for program in programs:
             try:
                 # a program that yields any plan ends without NoPlanError, so this is the last try
-                yield from self._plans(*program(), limit, deadline)
+                yield from self._plans(program(), limit, deadline)
                 return
             except PlanningTimeout:
                 raise
@@ -107,8 +106,8 @@ class GridPlanner(IncrementalPlanner):
             return None
         return wide
 
-    def _plans(self, base_program: str, state_program: str, limit: int | None, deadline: float) -> Iterator[Plan]:
-        control = self._control(base_program, state_program)
+    def _plans(self, instance: str, limit: int | None, deadline: float) -> Iterator[Plan]:
+        control = self._control(instance)
         horizon = 0
         found = 0
         self._advance(control, horizon)
@@ -139,7 +138,7 @@ class GridPlanner(IncrementalPlanner):
                 source, plan_horizon = control, horizon
                 target = self._stretch_target(horizon)
                 if found == 0 and target > horizon:
-                    longer = self._stretched(base_program, state_program, target, deadline)
+                    longer = self._stretched(instance, target, deadline)
                     if longer is not None:
                         source, symbols = longer
                         stretched = (source, target)
@@ -152,11 +151,11 @@ class GridPlanner(IncrementalPlanner):
             self._exclude(source, symbols, found)
 
     def _stretched(
-        self, base_program: str, state_program: str, horizon: int, deadline: float
+        self, instance: str, horizon: int, deadline: float
     ) -> tuple[clingo.Control, list[clingo.Symbol]] | None:
         """A search for plans of exactly ``horizon`` steps and its first plan; None when none is
         found within STRETCH_CONFLICTS (a timed phase may forbid any)."""
-        control = self._control(base_program, state_program)
+        control = self._control(instance)
         for step in range(horizon + 1):
             self._advance(control, step)
         symbols = self._solve(control, deadline, STRETCH_CONFLICTS)
