@@ -304,8 +304,8 @@ class ScenarioItem(pytest.Item):
         from .artifacts.writer import write_artifacts
         from .case import installed_versions
         from .confinement import safe_name
+        from .frontend.logical import describe_values
         from .outcomes import NO_PLAN
-        from .sampling import describe_values, logical_parameters
 
         if result.outcome == NO_PLAN:
             result = runner.explained(result)  # the search did not ask why; ask for the reported case
@@ -331,7 +331,7 @@ class ScenarioItem(pytest.Item):
             f"scenario {self.scenario.name}: {result.kind} ({result.outcome}) {where} these values (seed {case.seed}{self._sampled_with()}, {self.tally.cases} examples run):"
         ]
         if case.values:
-            for line in describe_values(logical_parameters(self.scenario), case.values):
+            for line in describe_values(self.scenario.parameters, case.values):
                 alone = result.culprit is not None and line.startswith(f"{result.culprit} = ")
                 lines.append(
                     f"  {line}" + (": no concrete scenario has this value, whatever the others" if alone else "")

@@ -24,20 +24,16 @@ import dataclasses
 import hashlib
 import json
 import math
-from collections import Counter
-from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 from .frontend import model
 from .frontend.checked import CheckedScenario
 from .frontend.errors import SourceLocation
-from .frontend.library import Binding, bind
+from .frontend.logical import UNIT, LogicalParameter
 from .frontend.parameters import MIRRORED, ParameterSpace
-from .frontend.units import SI_UNIT
 from .frontend.values import EvaluationError, Interval, evaluate
 
-UNIT = SI_UNIT
 # Samples of physical values lie on a 0.1 grid (in SI units): readable in reports, and a shrunk
 # failure lands on a round value instead of 12.000000000000002.
 STEP = 0.1
@@ -75,128 +71,6 @@ def checked_value(parameter: LogicalParameter, value: Any) -> Any:
     return value
 
 
-@dataclass(frozen=True)
-class LogicalParameter:
-    """One open value of a scenario: its name in samples and reports, and the range it is drawn from."""
-
-    name: str
-    location: SourceLocation
-    dimension: str | None = None
-    low: float = 0.0
-    high: float = 0.0
-    integer: bool = False  # lane numbers, int/uint parameters
-    choices: tuple[Any, ...] = ()  # bool and enum parameters (then low/high are unused)
-    declared: bool = True  # a declared parameter, not an inline range
-    # the planning resolution its sampled value is narrowed with, when not its dimension's
-    # (``Construct.sampled_as``: a time headway is a time, but no duration)
-    sampled_as: str | None = None
-    # why it is a parameter (the README's rule), as reports name it: a declared parameter, a
-    # value at one instant (at: start / at: end), a duration, or an action's target
-    kind: str = "declared parameter"
-
-    def show(self, value: Any) -> str:
-        if self.choices:
-            return str(value).lower() if isinstance(value, bool) else str(value)
-        number = f"{value:g}" if self.integer else f"{value:.1f}".rstrip("0").rstrip(".")
-        return f"{number} {UNIT[self.dimension]}".rstrip()
-
-
-def logical_parameters(checked: CheckedScenario) -> list[LogicalParameter]:
-    """Every open value of a scenario, declared parameters first, then inline ranges in source order."""
-    space = checked.space
-    found: list[LogicalParameter] = []
-    for domain in space.domains.values():
-        if domain.fixed or not domain.bounded:
-            continue
-        if domain.interval is not None:
-            integer = domain.type in ("int", "uint")
-            low, high = domain.interval.low, domain.interval.high
-            if integer:
-                low, high = math.ceil(low), math.floor(high)
-            found.append(LogicalParameter(domain.name, domain.location, domain.interval.dimension, low, high, integer))
-        elif domain.choices:
-            found.append(LogicalParameter(domain.name, domain.location, choices=tuple(domain.choices)))
-    inline = list(_inline_ranges(checked))
-    counts = Counter(name for name, _, _, _ in inline)
-    for name, node, sampled_as, kind in inline:
-        if counts[name] > 1:
-            name = f"{name}@{node.location.line}"
-        low, high = sorted((node.low.value, node.high.value))
-        integer = node.dimension is None and float(low).is_integer() and float(high).is_integer()
-        found.append(
-            LogicalParameter(
-                name,
-                node.location,
-                node.dimension,
-                low,
-                high,
-                integer,
-                declared=False,
-                sampled_as=sampled_as,
-                kind=kind,
-            )
-        )
-    return found
-
-
-def _inline_ranges(checked: CheckedScenario):
-    """(name, Range, resolution or None) for every range written in the behavior, named after
-    where it stands."""
-    behavior, registry = checked.scenario.behavior, checked.registry
-    if behavior is None:
-        return
-    for node in model.walk(behavior):
-        if isinstance(node, model.Invocation):
-            phase = node.label or f"{node.actor}.{node.action}"
-            action = registry.action(node.action)
-            binding = bind(action.signature, node.arguments) if action else None
-            # an action held throughout (keep_space_gap): its values bound the phase; its duration is a parameter
-            held = action is not None and action.held_throughout(binding)
-            yield from _ranges_of(phase, node.arguments, binding, action, only=("duration",) if held else None)
-            for modifier in node.modifiers:
-                construct = registry.modifier(modifier.name)
-                binding = bind(construct.signature, modifier.arguments) if construct else None
-                if construct is not None and construct.held_throughout(binding):
-                    continue  # a bound of the whole phase, kept by the planner: not a parameter
-                yield from _ranges_of(f"{phase}.{modifier.name}", modifier.arguments, binding, construct)
-        elif isinstance(node, model.Composition):
-            yield from _ranges_of(node.label or node.operator, node.arguments, None)
-        elif isinstance(node, model.Wait) and isinstance(node.condition, model.Call):
-            for argument in node.condition.arguments:
-                if isinstance(argument.value, model.Range):
-                    yield f"{node.label or 'wait'}.{node.condition.function}", argument.value, None, "duration"
-
-
-def _ranges_of(
-    prefix: str,
-    arguments: tuple[model.Argument, ...],
-    binding: Binding | None,
-    construct=None,
-    only: tuple[str, ...] | None = None,
-):
-    named = {id(a): n for n, a in binding.arguments.items()} if binding is not None else {}
-    for argument in arguments:
-        if isinstance(argument.value, model.Range):
-            name = argument.name or named.get(id(argument), "value")
-            if only is not None and name not in only:
-                continue
-            yield (
-                f"{prefix}.{name}",
-                argument.value,
-                construct.sampled_as(name) if construct is not None else None,
-                _kind(name, binding, construct),
-            )
-
-
-def _kind(name: str, binding: Binding | None, construct) -> str:
-    """Why an inline range is a logical parameter, in the words of the README's rule."""
-    if name == "duration":
-        return "duration"
-    if construct is not None and construct.kind == "modifier":
-        return f"at: {construct.anchor(binding)}"  # a CARLA speed without at: holds at the end
-    return f"{construct.name}'s {name}" if construct is not None else "value"
-
-
 # ------------------------------------------------------------------ sampling
 
 
@@ -210,7 +84,7 @@ def strategy(checked: CheckedScenario):
     from hypothesis import strategies as st
 
     space = checked.space
-    parameters = logical_parameters(checked)
+    parameters = list(checked.parameters)
 
     @st.composite
     def samples(draw):
@@ -281,7 +155,7 @@ def guided(
     ranges (for ``build_automaton(values=...)``). ``resolution`` is the planning grid per dimension
     (1 m, 1 m/s, 1 s); ``margins`` what the planner keeps inside a range's edges.
     """
-    by_name = {p.name: p for p in logical_parameters(checked)}
+    by_name = {p.name: p for p in checked.parameters}
     unknown = sorted(set(values) - set(by_name))
     if unknown:
         raise UnknownParameter(
@@ -354,14 +228,9 @@ def sample_seed(seed: int, values: Values) -> int:
 # ------------------------------------------------------------------ public helpers
 
 
-def describe_values(parameters: list[LogicalParameter], values: Values) -> list[str]:
-    """``name = value unit (line L, kind)`` for every sampled value, for reports."""
-    by_name = {p.name: p for p in parameters}
-    return [
-        f"{name} = {by_name[name].show(value)} (line {by_name[name].location.line}, {by_name[name].kind})"
-        for name, value in values.items()
-        if name in by_name
-    ]
+def logical_parameters(checked: CheckedScenario) -> list[LogicalParameter]:
+    """A checked scenario's logical parameters (computed once by the checker: ``CheckedScenario.parameters``)."""
+    return list(checked.parameters)
 
 
 def parameters(path: str | Path, scenario: str | None = None, lanes: int | None = None):

@@ -189,9 +189,12 @@ def test_an_impossible_scenario_is_reported_with_both_conflicting_modifiers(tmp_
     )
     assert main(["plan", str(path)]) == 1
     err = capsys.readouterr().err
+    # each constraint with the logical parameter behind it: the inline range's name (two
+    # position ranges in one modifier list, told apart by their lines)
     assert (
-        f"{path}:7:7: error: 30 <= p(a) - p(b) <= 40 cannot hold together with 10 <= p(b) - p(a) <= 20 (line 8)" in err
-    )
+        f"{path}:7:7: error: 30 <= p(a) - p(b) <= 40 (parameter a.drive.position.distance@7) cannot hold together with "
+        "10 <= p(b) - p(a) <= 20 (line 8; parameter a.drive.position.distance@8)"
+    ) in err
     assert f"{path}:8:7: error:" in err and "Traceback" not in err
 
 
@@ -227,7 +230,8 @@ def test_constraints_that_conflict_across_phases_are_named_by_an_unsatisfiable_c
     err = capsys.readouterr().err
     named = {line.split(": error:")[0] for line in err.splitlines() if ": error:" in line}
     assert named == {f"{path}:8:9", f"{path}:9:18", f"{path}:11:9", f"{path}:14:9"}, err
-    assert "30 <= p(a) - p(b) <= 40 cannot hold together with" in err and "p2 lasts 1..2 s (line 9)" in err
+    assert "30 <= p(a) - p(b) <= 40 (parameter a.drive.position.distance@8) cannot hold together with" in err
+    assert "p2 lasts 1..2 s (line 9; parameter p2.duration)" in err
     assert "Traceback" not in err
 
 
@@ -242,7 +246,8 @@ def test_a_constraint_the_domain_rules_forbid_is_named_with_those_rules():
         GridPlanner(automaton, GridSettings(max_horizon=8)).first()
     report = caught.value.report()
     assert (
-        "fast.osc:4:5: error: 50 <= v(a) <= 60 cannot hold in any plan under the domain rules (speeds 2..40 m/s"
+        "fast.osc:4:5: error: 50 <= v(a) <= 60 (parameter a.drive.speed.speed) cannot hold in any plan under the "
+        "domain rules (speeds 2..40 m/s"
         in report
     )
 

@@ -28,6 +28,7 @@ from dataclasses import dataclass, field, replace
 from ..frontend import model
 from ..frontend.checked import CheckedScenario
 from ..frontend.errors import error_at
+from ..frontend.logical import names_by_place
 from ..logic.automaton import Location, PhaseBound, SymbolicAutomaton, Timing, Transition
 from ..logic.guards import TRUE, Guard, Not, conjunction
 from ..logic.phase import Variant
@@ -105,7 +106,9 @@ def build_automaton(checked: CheckedScenario, values: dict[str, object] | None =
     env = checked.space.environment(values)
     builder = _Builder(checked, env)
     fragment = builder.translate(scenario.behavior)
-    return _finish(fragment, tuple(a.name for a in scenario.actors), scenario, builder.timings, checked.lanes)
+    automaton = _finish(fragment, tuple(a.name for a in scenario.actors), scenario, builder.timings, checked.lanes)
+    automaton.parameters = names_by_place(checked.parameters)
+    return automaton
 
 
 class _Builder:

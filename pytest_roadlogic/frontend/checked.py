@@ -15,6 +15,7 @@ from typing import Any, Protocol
 
 from . import model
 from .errors import Diagnostic, OscError, SourceLocation
+from .logical import LogicalParameter
 from .parameters import ParameterSpace
 
 
@@ -44,6 +45,8 @@ class CheckedScenario:
     lanes: int
     registry: Registry
     sources: dict[str, str] = field(default_factory=dict, compare=False, repr=False)  # path -> text, for error reports
+    # its logical parameters, each once (``frontend.logical``): what is sampled, planned and reported
+    parameters: tuple[LogicalParameter, ...] = field(default=(), compare=False)
 
     @property
     def name(self) -> str:

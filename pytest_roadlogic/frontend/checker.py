@@ -25,6 +25,7 @@ from .dialects import registry as dialect_registry
 from .errors import Diagnostic, OscError, SourceLocation
 from .inheritance import inherited
 from .invocation import RECURSION, called_scenarios, expand_calls
+from .logical import logical_parameters_of
 from .parameters import ParameterSpace, parameter_space
 from .parser import parse_file, parse_text
 from .physical import declared_physics, parse_with_declared_units
@@ -234,7 +235,11 @@ class _Checker:
             if any(RECURSION in problem.message for problem in problems):
                 continue  # the call left in place would only be reported again as an unknown action
             checked, space, lanes = self._scenario(scenario, globals_)
-            scenarios.append(CheckedScenario(checked, space, lanes, self.registry, self.sources))
+            try:
+                parameters = logical_parameters_of(checked, space, self.registry)
+            except OscError:
+                parameters = ()  # a scenario with errors is reported, never sampled: the checker said why
+            scenarios.append(CheckedScenario(checked, space, lanes, self.registry, self.sources, parameters))
         self.diagnostics = list(dict.fromkeys(self.diagnostics))
         self.diagnostics.sort(
             key=lambda d: (d.location.path != main.path, d.location.path, d.location.line, d.location.column)

@@ -152,6 +152,14 @@ class SymbolicAutomaton:
     timings: dict[int, Timing] = field(default_factory=dict)
     # Lanes of the road the guards were built for (keep_lane and change_lane enumerate them).
     lanes: int = 3
+    # The logical parameters used at each place of the file (``frontend.logical.names_by_place``):
+    # a bound's or a duration's source names the parameters behind it, for the planner's instance
+    # and the messages that name constraints.
+    parameters: dict = field(default_factory=dict, compare=False)
+
+    def parameters_of(self, constraint) -> tuple[str, ...]:
+        """The logical parameters behind a constraint (a bound, a duration, a rate), by its source."""
+        return self.parameters.get(getattr(constraint, "source", None), ())
 
     def location(self, location_id: int) -> Location:
         return self.locations[location_id]

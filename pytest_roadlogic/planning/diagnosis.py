@@ -41,7 +41,9 @@ def check_satisfiable(automaton: SymbolicAutomaton) -> None:
     if automaton.final in reachable:
         return
     conflicts = list(dict.fromkeys(blocked.values()))
-    raise UnsatisfiableScenario(conflict_message(conflicts), conflicts)
+    raise UnsatisfiableScenario(
+        conflict_message(conflicts, automaton.parameters_of), conflicts, parameters=automaton.parameters
+    )
 
 
 def raise_reason(planner, error: NoPlanError, deadline: float, window=None) -> None:
@@ -56,7 +58,10 @@ def raise_reason(planner, error: NoPlanError, deadline: float, window=None) -> N
     conflict = smallest_conflict(planner, deadline)
     if conflict:
         raise UnsatisfiableScenario(
-            f"{error}\n" + conflict_message([conflict]), [conflict], planner.settings.summary(planner.automaton.lanes)
+            f"{error}\n" + conflict_message([conflict], planner.automaton.parameters_of),
+            [conflict],
+            planner.settings.summary(planner.automaton.lanes),
+            planner.automaton.parameters,
         ) from None
     raise error
 

@@ -95,12 +95,23 @@ class LimitsBind(NoPlanError):
 class UnsatisfiableScenario(NoPlanError):
     """The scenario cannot be met by any plan. ``conflicts`` holds groups of the scenario's
     constraints (bounds, durations) that cannot hold together, each with its source location; a
-    group of one cannot hold on its own under the domain rules (speed limits, lanes, no collision)."""
+    group of one cannot hold on its own under the domain rules (speed limits, lanes, no collision).
+    ``parameters``: the logical parameters used at each place (``SymbolicAutomaton.parameters``),
+    so that a constraint is named with the parameters behind it."""
 
-    def __init__(self, message: str, conflicts: list[tuple], rules: str = "") -> None:
+    def __init__(self, message: str, conflicts: list[tuple], rules: str = "", parameters: dict | None = None) -> None:
         super().__init__(message)
         self.conflicts = conflicts
         self.rules = rules
+        self.parameters = parameters or {}
+
+    def _named(self, constraint) -> str:
+        return _named(self.parameters.get(constraint.source, ()))
+
+    def _alone(self, constraint) -> str:
+        """A constraint with the parameters behind it: ``10 <= p(a) <= 20 (parameter gap)``."""
+        named = self._named(constraint)
+        return f"{constraint} ({named[2:]})" if named else str(constraint)
 
     def report(self) -> str:
         """Each conflicting modifier as ``path:line:col: error:`` with its line and a caret."""
@@ -113,10 +124,12 @@ class UnsatisfiableScenario(NoPlanError):
                     continue
                 others = [o for o in group if o is not member]
                 if others:
-                    together = ", ".join(f"{o} (line {o.source.line})" if o.source else str(o) for o in others)
-                    message = f"{member} cannot hold together with {together}"
+                    together = ", ".join(
+                        f"{o} (line {o.source.line}{self._named(o)})" if o.source else str(o) for o in others
+                    )
+                    message = f"{self._alone(member)} cannot hold together with {together}"
                 else:
-                    message = f"{member} cannot hold in any plan under the domain rules" + (
+                    message = f"{self._alone(member)} cannot hold in any plan under the domain rules" + (
                         f" ({self.rules})" if self.rules else ""
                     )
                 hint = "the scenario can never be met; widen or remove one of them" if member is group[0] else None
@@ -124,8 +137,15 @@ class UnsatisfiableScenario(NoPlanError):
         return OscError(diagnostics).report() if diagnostics else str(self)
 
 
-def conflict_message(conflicts: list[tuple]) -> str:
+def conflict_message(conflicts: list[tuple], parameters_of=lambda constraint: ()) -> str:
+    """The groups of constraints that cannot hold together, each at its place and with the logical
+    parameters behind it (``parameters_of``: ``SymbolicAutomaton.parameters_of``)."""
     lines = ["the scenario can never be met: these constraints cannot hold at the same time"]
     for group in conflicts:
-        lines.append("  " + " and ".join(f"{c} (at {c.source})" for c in group))
+        lines.append("  " + " and ".join(f"{c} (at {c.source}{_named(parameters_of(c))})" for c in group))
     return "\n".join(lines)
+
+
+def _named(names: tuple[str, ...]) -> str:
+    """``; parameter start_gap`` after a constraint's place, or nothing when no parameter is behind it."""
+    return f"; {'parameter' if len(names) == 1 else 'parameters'} {', '.join(names)}" if names else ""

@@ -123,10 +123,7 @@ def guard_facts(automaton: SymbolicAutomaton, relax: dict, node_facts) -> list[s
     facts = ["% guard nodes (asp/guards.lp)"]
     for guard, node in numbering.items():
         bound = _bound_of(guard)
-        where = (
-            f" (line {bound.source.line}, column {bound.source.column})" if bound is not None and bound.source else ""
-        )
-        facts.append(f"% node {node}: {guard}{where}")
+        facts.append(f"% node {node}: {guard}{origin(automaton, bound)}")
         if isinstance(guard, (And, Or)):
             facts.append(f"{'conjunction' if isinstance(guard, And) else 'disjunction'}({node}).")
             facts.extend(f"part({node},{numbering[part]})." for part in guard.parts)
@@ -137,6 +134,16 @@ def guard_facts(automaton: SymbolicAutomaton, relax: dict, node_facts) -> list[s
         if bound is not None and bound.source in relax:
             facts.append(f"relaxable(node({node}),{relax[bound.source]}).")
     return facts
+
+
+def origin(automaton: SymbolicAutomaton, constraint) -> str:
+    """`` (line L, column C: name, ...)``: where a constraint is written and the logical parameters
+    behind it, for the comments of the instance; empty for a constraint of no place."""
+    source = getattr(constraint, "source", None)
+    if source is None:
+        return ""
+    names = automaton.parameters_of(constraint)
+    return f" (line {source.line}, column {source.column}{': ' + ', '.join(names) if names else ''})"
 
 
 def lane_facts(node: int, bound: Bound, outside: bool) -> list[str]:
@@ -186,7 +193,7 @@ def automaton_facts(automaton: SymbolicAutomaton, dt: float, relax: dict | None 
         low, high = timing_steps(timing, dt)
         high = "#sup" if high is None else high
         condition = f" :- not relaxed({relax[timing.source]})" if timing.source in relax else ""
-        facts.append(f"timing({phase},{low},{high}){condition}.  % {timing}")
+        facts.append(f"timing({phase},{low},{high}){condition}.  % {timing}{origin(automaton, timing)}")
     return facts
 
 

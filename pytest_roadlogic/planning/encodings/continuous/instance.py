@@ -13,7 +13,7 @@ from fractions import Fraction
 
 from ....logic.automaton import SymbolicAutomaton, Travelled
 from ....logic.guards import HEADWAY, LANE, POSITION, SPEED, TRAVELED, Bound, Guard, Not
-from ...facts import atom, guard_nodes, inset, with_automaton
+from ...facts import atom, guard_nodes, inset, origin, with_automaton
 from .settings import ContinuousSettings
 
 
@@ -94,8 +94,7 @@ def rate_facts(automaton: SymbolicAutomaton, settings: ContinuousSettings, relax
         )
         for rate in timing.rates:
             r, rate_id = rate_id, rate_id + 1
-            where = f" (line {rate.source.line}, column {rate.source.column})" if rate.source else ""
-            facts.append(f"% rate {r}: {rate}{where}")
+            facts.append(f"% rate {r}: {rate}{origin(automaton, rate)}")
             if rate.source in relax:
                 facts.append(f"relaxable(rate({r}),{relax[rate.source]}).")
             actor = atom(rate.actor)
