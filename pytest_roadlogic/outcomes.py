@@ -16,6 +16,11 @@ from collections import Counter
 CONFORMANT, NON_CONFORMANT, NO_PLAN, TIMED_OUT = "conformant", "non-conformant", "no plan", "timed out"
 OUTCOMES = (CONFORMANT, NON_CONFORMANT, NO_PLAN, TIMED_OUT)
 STAGES = ("automaton", "planning", "simulation", "monitoring", "artifacts")
+# the kinds of failure a report names (``runner.CaseResult.kind``): the scenario cannot be
+# instantiated at the values, a limit of the tool binds there, or the simulation was not accepted
+CANNOT_INSTANTIATE = "the scenario cannot be instantiated"
+TOOL_LIMIT = "a limit of the tool binds"
+NOT_ACCEPTED = "the simulation was not accepted"
 
 
 def key(outcome: str) -> str:

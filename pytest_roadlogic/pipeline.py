@@ -105,7 +105,7 @@ def run_instances(
     limits = SimulationLimits(time_limit=simulation_time_limit)
     start = time.perf_counter()
     specification = build_automaton(scenario)
-    guide, settings, seed = _guided(scenario, specification, values, settings, seed)
+    guide, settings, seed = guided_planning(scenario, specification, values, settings, seed)
     automaton_seconds = time.perf_counter() - start
     planner = planner_for(guide(settings), settings, seed)
     plans = planner.plans(limit=count * max_tries)
@@ -139,7 +139,7 @@ def run_instances(
         yield outcome
 
 
-def _guided(
+def guided_planning(
     scenario: CheckedScenario, specification: SymbolicAutomaton, values, settings, seed: int
 ) -> tuple[Guide, object, int]:
     """The automaton a planner solves for a sample, as a function of that planner's settings
@@ -165,32 +165,3 @@ def _guided(
         return guides[key]
 
     return guide, dataclasses.replace(settings, random_start=True), sample_seed(seed, values)
-
-
-def has_plan(
-    scenario: CheckedScenario,
-    values: dict[str, object],
-    seed: int = 1,
-    settings: PlannerSettings | None = None,
-    fallbacks: bool = True,
-    beyond_limits: bool = True,
-) -> bool:
-    """Whether the scenario narrowed to ``values`` has a plan (planning alone: no simulation), with
-    every fallback ``run_instances`` tries or, without ``fallbacks``, within the planner's margins
-    and limits; without ``beyond_limits``, the fallbacks stay within a real car's limits
-    (``planning.fallbacks.CAR_LIMITS`` are never relaxed). A planning timeout or a horizon that binds is no proof that
-    the values have none, and counts as a plan."""
-    from .planning import HorizonTooShort, NoPlanError, PlanningTimeout, planner_for
-
-    settings = dataclasses.replace(settings or settings_for(RunSettings()), explain_unsatisfiable=False)
-    guide, settings, seed = _guided(scenario, build_automaton(scenario), values, settings, seed)
-    try:
-        plans = planner_for(guide(settings), settings, seed).plans(limit=1)
-        return (
-            next(with_fallbacks(plans, guide, settings, seed, 1, beyond_limits) if fallbacks else plans, None)
-            is not None
-        )
-    except (PlanningTimeout, HorizonTooShort):
-        return True
-    except NoPlanError:
-        return False

@@ -18,17 +18,23 @@ from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from typing import Any
 
+from .blame import Blame
 from .case import Case
 from .frontend import CheckedScenario
-from .outcomes import CONFORMANT, NO_PLAN, NON_CONFORMANT, STAGES, TIMED_OUT
+from .outcomes import (
+    CANNOT_INSTANTIATE,
+    CONFORMANT,
+    NO_PLAN,
+    NON_CONFORMANT,
+    NOT_ACCEPTED,
+    STAGES,
+    TIMED_OUT,
+    TOOL_LIMIT,
+)
 from .pipeline import SimulatedInstance, run_instances
 from .planning import HorizonTooShort, LimitsBind, NoPlanError, PlanningTimeout, UnsatisfiableScenario, settings_for
 from .settings import BASE, DISCARD, REFINED, RunSettings
 from .simulation import DriverFactory, SimulationTimeout, Simulator
-
-CANNOT_INSTANTIATE = "the scenario cannot be instantiated"
-TOOL_LIMIT = "a limit of the tool binds"
-NOT_ACCEPTED = "the simulation was not accepted"
 
 
 @dataclass
@@ -42,9 +48,9 @@ class CaseResult:
     seconds: dict[str, float] = field(default_factory=dict)  # per stage, summed over tries
     error: NoPlanError | None = None  # the planner's, when there is no plan
     # the logical parameter whose sampled value alone has no concrete scenario (the others left to
-    # their ranges), when the refined strategy found one (Runner._blamed)
+    # their ranges), when the refined strategy found one (``blame.Blame``)
     culprit: str | None = None
-    # no values at all have a plan: the scenario itself cannot be instantiated (Runner._blamed)
+    # no values at all have a plan: the scenario itself cannot be instantiated (``blame.Blame``)
     at_no_values: bool = False
 
     @property
@@ -93,7 +99,7 @@ class Runner:
         self.drivers = drivers
         self._simulator = simulator
         self.explain_no_plan = explain
-        self._plannable: bool | None = None  # whether the scenario has a plan at any values (Runner._blamed)
+        self.blame = Blame(scenario, settings)  # which value to blame for a sample without a plan
 
     @property
     def simulator(self) -> Simulator:
@@ -189,7 +195,7 @@ class Runner:
                 discarded(result)
                 hypothesis.reject()  # as assume(False): the sample does not count, and too many trip the health check
             if result.kind == CANNOT_INSTANTIATE:
-                result = self._blamed(case, result)
+                result = self.blame.blamed(case, result, lambda again: self.run_case(again, explain=False))
                 if search:
                     hypothesis.event(
                         "no plan",
@@ -243,65 +249,6 @@ class Runner:
             )
         seed = self.settings.seed if sampling_seed is None else sampling_seed
         hypothesis.seed(seed)(chosen(hypothesis.given(strategy(self.scenario))(example)))()
-
-    def _blamed(self, case: Case, result: CaseResult) -> CaseResult:
-        """A sample without a plan within the planner's margins and limits (``result``), with the
-        value to blame for it (``culprit``), or none when only the values together have no plan.
-
-        Why: parameters are drawn independently, but a scenario constrains them together (a brake
-        of 3 s from 120 to 30 kph needs more than the 6 m/s^2 the file allows), so a sample can
-        fall outside the logical scenario while every value in it lies inside. Such a sample is no
-        instance to test, where a value that no concrete scenario has is a defect of the file
-        (catch_up_band's gaps above its edge). Measured on follow_then_overtake: 6 of 10 samples
-        had plans only beyond the planner's margins or jerk limit (a 17 s pass at 15 kph faster
-        ending 32 m ahead), whose simulations were then not accepted, at 20-30 s each; every one
-        of their values alone had plans within them. So the values are tried alone first, within
-        the margins and limits, and only a sample with a value that has none there is planned again
-        with the fallbacks (``planning.fallbacks``), whose result it then reports. When that
-        result is that only a plan beyond a real car's limits exists, the culprit is a value that
-        alone has no plan within them even with the other fallbacks; without one, the sample is a
-        combination no car can drive and is set aside like any other (follow_then_overtake's long
-        passes from far behind to close ahead)."""
-        from .pipeline import has_plan
-
-        values = case.values
-        if self._plannable is None:  # once per runner: one planning of the scenario as written
-            self._plannable = has_plan(self.scenario, {}, self.settings.seed, settings_for(self.settings, False))
-        if not self._plannable:
-            result.at_no_values = True  # no value is to blame: none has a plan (infeasible_order)
-            return result
-        # a single value is the sample: it has no plan alone
-        candidates = list(values) if len(values) == 1 else self.without_plan_alone(values, fallbacks=False, first=False)
-        if values and not candidates:
-            return result
-        result = self.run_case(case, explain=False)
-        if result.kind == CANNOT_INSTANTIATE and values:
-            alone = (
-                candidates
-                if len(values) == 1
-                else self.without_plan_alone({n: values[n] for n in candidates}, beyond_limits=False)
-            )
-            result.culprit = next(iter(alone), None)
-        return result
-
-    def without_plan_alone(
-        self, values: dict[str, Any], fallbacks: bool = True, first: bool = True, beyond_limits: bool = True
-    ) -> list[str]:
-        """The sampled parameters whose value alone, the others left to their ranges, has no plan
-        (only the first unless ``first`` is false; with ``fallbacks``, or within the planner's
-        margins and limits; without ``beyond_limits``, none beyond a real car's limits); empty
-        when each has one (then only the combination has none). Planning alone, one parameter at
-        a time, in the order of the report."""
-        from .pipeline import has_plan
-
-        settings = settings_for(self.settings, False)
-        found = []
-        for name, value in values.items():
-            if not has_plan(self.scenario, {name: value}, self.settings.seed, settings, fallbacks, beyond_limits):
-                found.append(name)
-                if first:
-                    break
-        return found
 
     def explained(self, result: CaseResult) -> CaseResult:
         """A case without a plan, run again to say why: the constraints that cannot hold together

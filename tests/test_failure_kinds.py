@@ -72,8 +72,8 @@ def test_a_sample_whose_values_clash_only_together_blames_none_of_them(tmp_path)
     end = "ego.drive.position.distance"
     # a fallback plans the value itself, not the value moved inward by the first planner's margins
     # (pipeline._guided): 34 m is the last whole metre its thinner margins close to 12 m
-    assert runner.without_plan_alone({"start_gap": 34.0, end: 8.0}) == [], "34 m closes to 12 m, only not to 8 m"
-    assert runner.without_plan_alone({"start_gap": 38.0, end: 12.0}) == ["start_gap"], "38 m closes to no end gap"
+    assert runner.blame.without_plan_alone({"start_gap": 34.0, end: 8.0}) == [], "34 m closes to 12 m, only not to 8 m"
+    assert runner.blame.without_plan_alone({"start_gap": 38.0, end: 12.0}) == ["start_gap"], "38 m closes to no end gap"
 
 
 def test_samples_whose_values_clash_only_together_are_set_aside_not_failed(monkeypatch, tmp_path):
@@ -124,8 +124,9 @@ def test_a_case_only_plans_beyond_the_tools_margins_or_step_meet_is_a_tool_limit
 ):
     # close_in at 30 m has plans only with thinner margins, at 32 m only in half steps (measured);
     # a vehicle that never goes faster than 15 m/s makes every simulation fail
+    from pytest_roadlogic.outcomes import TOOL_LIMIT
     from pytest_roadlogic.pipeline import load_scenario
-    from pytest_roadlogic.runner import TOOL_LIMIT, Runner
+    from pytest_roadlogic.runner import Runner
     from pytest_roadlogic.settings import REFINED, RunSettings
     from tests.drivers import NeverChangesLane
 
@@ -140,8 +141,9 @@ def test_a_case_only_plans_beyond_the_tools_margins_or_step_meet_is_a_tool_limit
 
 
 def test_a_planning_time_limit_that_runs_out_is_a_tool_limit_naming_the_option():
+    from pytest_roadlogic.outcomes import TOOL_LIMIT
     from pytest_roadlogic.pipeline import load_scenario
-    from pytest_roadlogic.runner import TOOL_LIMIT, Runner
+    from pytest_roadlogic.runner import Runner
     from pytest_roadlogic.settings import REFINED, RunSettings
 
     runner = Runner(load_scenario(CLOSE_IN), RunSettings(planning_time_limit=1e-6))

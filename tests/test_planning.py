@@ -247,8 +247,7 @@ def test_a_constraint_the_domain_rules_forbid_is_named_with_those_rules():
     report = caught.value.report()
     assert (
         "fast.osc:4:5: error: 50 <= v(a) <= 60 (parameter a.drive.speed.speed) cannot hold in any plan under the "
-        "domain rules (speeds 2..40 m/s"
-        in report
+        "domain rules (speeds 2..40 m/s" in report
     )
 
 

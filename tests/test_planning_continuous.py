@@ -262,7 +262,7 @@ def test_a_random_start_keeps_each_free_vehicles_drawn_acceleration_within_the_d
         plan = planner.first()
         check_continuous_plan(plan, automaton)
         (aim,) = [
-            float(line.split(",")[1].rstrip(').').strip('"'))
+            float(line.split(",")[1].rstrip(").").strip('"'))
             for line in planner.preferences.splitlines()
             if line.startswith("drift(")
         ]
