@@ -16,25 +16,26 @@ import math
 from dataclasses import dataclass, replace
 from pathlib import Path
 
-from ..confinement import ALLOW_READ_HINT, MISSING, ReadRoots, project_root, regular_file_problem
+from ..confinement import ReadRoots, project_root
 from ..settings import STANDARD_DIALECT
 from . import library, model
-from .builtin_events import EDGES, with_builtin_events
+from .builtin_events import with_builtin_events
 from .checked import CheckedFile, CheckedScenario, Registry
 from .dialects import registry as dialect_registry
 from .errors import Diagnostic, OscError, SourceLocation
+from .events import EventChecks
+from .field_types import FieldTyping
+from .imports import ImportLoading
 from .inheritance import inherited
 from .invocation import RECURSION, called_scenarios, expand_calls
 from .logical import logical_parameters_of
 from .parameters import ParameterSpace, parameter_space
-from .parser import parse_file, parse_text
+from .parser import parse_text
 from .physical import declared_physics, parse_with_declared_units
-from .standard_library import UNITS, LazyTable, part_file, part_names, standard_library
+from .road_lanes import DEFAULT_LANES, RoadLanes
+from .standard_library import UNITS, standard_library
 from .units import SPEED, TIME
 from .values import EvaluationError, Interval, calls_in, describe, evaluate, names_in
-
-DEFAULT_LANES = 3
-_BUILTIN_PHYSICAL = LazyTable(lambda _: {dimension: name for name, dimension in library.PHYSICAL_TYPES.items()})
 
 
 def check_file(
@@ -108,13 +109,6 @@ class _ConstructContext:
         return value if isinstance(value, Interval) else None
 
 
-# the default driver's Frenet frame reaches 25 m from the road's right edge (frenetix's projection
-# domain): 7 lanes of 3.5 m. Measured: lane(7) and up ended in "x and/or y coordinate outside of
-# projection domain" inside the simulation (issue 20), 1,000,000 lanes at 1.7 GB
-MAX_LANES = 6
-MAX_LANES_WHY = " (the simulated road is one straight highway of at most that many lanes)"
-
-
 def _reaches(start: str, goal: str, calls: dict[str, set[str]]) -> bool:
     """Whether scenario ``start`` calls ``goal``, directly or through other scenarios."""
     seen: set[str] = set()
@@ -129,7 +123,10 @@ def _reaches(start: str, goal: str, calls: dict[str, set[str]]) -> bool:
     return False
 
 
-class _Checker:
+class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks):
+    """Checks one file and its imports; its parts: loading imports (``imports``), typing fields
+    (``field_types``), the road's lanes (``road_lanes``), events (``events``)."""
+
     def __init__(
         self,
         lanes: int | None,
@@ -247,79 +244,6 @@ class _Checker:
         checked_file = replace(main, scenarios=tuple(c.scenario for c in scenarios))
         return CheckedFile(checked_file, self.diagnostics, self.sources, tuple(scenarios))
 
-    def _load_imports(self, osc: model.OscFile, stack: tuple[str, ...]) -> None:
-        for item in osc.imports:
-            target = item.file(osc.path)
-            if target is None:
-                if part_file(item.target) is None and item.target.startswith("osc."):
-                    # other tools split the library differently (osc.helpers): read it as the whole
-                    self.warning(
-                        item.location,
-                        f"the standard library has no part {item.target!r} here; read as osc.standard",
-                        f"parts: {', '.join(part_names())}",
-                    )
-                elif part_file(item.target) is None:
-                    self.error(
-                        item.location,
-                        f"unknown library {item.target!r}",
-                        f'the standard library is osc.standard (parts: {", ".join(part_names())}); import a file by its path: import "lib.osc" or import lib.osc',
-                    )
-                continue
-            if str(target) in stack:
-                self.error(
-                    item.location,
-                    f"{item.target!r} imports itself (through {' -> '.join(Path(s).name for s in stack)})",
-                    "remove the circular import",
-                )
-                continue
-            if str(target) in self.files:  # keyed by resolved path: parse_file was given ``target``
-                continue
-            if not self.roots.allows(target):
-                # never opened, never shown: import "/proc/self/environ" had printed the environment's first line
-                self.error(
-                    item.location,
-                    f"the imported file {item.target!r} is outside the folders the tool reads ({self.roots.describe()})",
-                    ALLOW_READ_HINT,
-                )
-                continue
-            if (problem := regular_file_problem(target)) is not None:
-                if problem == MISSING:
-                    self.error(
-                        item.location,
-                        f"cannot find the imported file {item.target!r}",
-                        f"looked for {target}; paths are relative to the importing file",
-                    )
-                else:
-                    self.error(
-                        item.location,
-                        f"cannot read the imported file {item.target!r}: {problem}",
-                        "import an .osc file",
-                    )
-                continue
-            try:
-                imported = parse_file(target, self.units)
-            except OscError as error:
-                self.diagnostics.extend(error.diagnostics)
-                self.sources.update(error.sources)
-                self.error(item.location, f"the imported file {item.target!r} has errors (listed with it)")
-                continue
-            self.sources[imported.path] = imported.source_text
-            self.files[imported.path] = imported
-            self._load_imports(imported, stack + (str(target),))
-            self._declarations(imported)
-            self._modifier_declarations(imported)
-            for unsupported in imported.unsupported:
-                self._unsupported(unsupported)
-            for scenario in imported.scenarios:
-                if scenario.name in self.scenarios:
-                    other = self.scenarios[scenario.name].location
-                    self.error(
-                        scenario.location,
-                        f"scenario {scenario.name!r} is already declared in {other.path}:{other.line}",
-                        "rename one of them",
-                    )
-                self.scenarios[scenario.name] = scenario
-
     def _declarations(self, osc: model.OscFile) -> None:
         for enum in osc.enums:
             if enum.extends:
@@ -384,12 +308,6 @@ class _Checker:
                     "the tool plans only the modifiers it provides; "
                     + self._known("modifiers", [*self.registry.modifiers, *library.ROAD_MODIFIERS]),
                 )
-
-    def _aliased(self, item: model.Field) -> model.Field:
-        """The field with a declared alias of a physical type (``velocity``) read as the built-in one."""
-        if item.type not in library.PHYSICAL_TYPES and self.physical_types.get(item.type) in _BUILTIN_PHYSICAL:
-            return replace(item, type=_BUILTIN_PHYSICAL[self.physical_types[item.type]])
-        return item
 
     def _unsupported(self, item: model.Unsupported) -> None:
         self.error(item.location, f"not supported: {item.construct}", item.hint)
@@ -511,102 +429,6 @@ class _Checker:
                         "give it an action, or remove it",
                     )
         return checked, space, lanes
-
-    def _field_kind(self, item: model.Field) -> str | None:
-        location = item.type_location or item.location
-        if item.is_list:
-            self.error(location, "not supported: list parameters", "use one parameter per value")
-            return None
-        if item.type == library.ROAD_TYPE:
-            if item.constraints or item.default is not None:
-                self.error(
-                    location,
-                    "a road takes no value or keep()",
-                    "constrain it with path_min_driving_lanes(n) or path_max_lanes(n)",
-                )
-            return "road"
-        if self._actor_base(item.type) is not None:
-            if self._driven_as_vehicle(item.type):
-                self.warning(
-                    location,
-                    f"actor type {item.type!r} does not derive from a road user: it is driven as a vehicle",
-                    f"declare it as `actor {item.type} inherits vehicle` (or car, truck)",
-                )
-            return "actor"
-        if item.type in library.SCALAR_TYPES or item.type in self.enums:
-            return "parameter"
-        if item.type in self.physical_types:
-            self.error(
-                location,
-                f"not supported: parameters of type {item.type!r} (a dimension this tool does not model)",
-                f"use one of {', '.join(library.PHYSICAL_TYPES)}",
-            )
-            return None
-        if item.type in library.UNSUPPORTED_ACTOR_TYPES:
-            self.error(
-                location,
-                f"not supported: actor type {item.type!r} (the road is a highway)",
-                f"use one of {', '.join(library.ACTOR_TYPES)}",
-            )
-            return None
-        if item.type in self.types:
-            declared = self.types[item.type]
-            if declared.kind == "actor":
-                self.error(
-                    location,
-                    f"actor type {item.type!r} does not derive from a road user",
-                    f"declare it as `actor {item.type} inherits vehicle`",
-                )
-            else:
-                self.error(
-                    location, "not supported: parameters of struct type", "use scalar parameters (length, speed, ...)"
-                )
-            return None
-        known = [
-            *library.ACTOR_TYPES,
-            *library.SCALAR_TYPES,
-            *sorted(set(self.enums) - set(library.ENUMS)),
-            *sorted(self.types),
-        ]
-        self.error(location, f"unknown type {item.type!r}", self._known("types", known))
-        return None
-
-    def _actor_base(self, type_name: str, seen: frozenset[str] = frozenset()) -> str | None:
-        """The road user a declared actor type is driven as: the built-in type it derives from
-        or, for a bare type or one derived from an abstract actor of the standard library
-        (movable_object, physical_object, osc_actor), a vehicle (warned about where used)."""
-        if type_name in library.ACTOR_TYPES:
-            return type_name
-        declared = self.types.get(type_name)
-        if declared is None or declared.kind != "actor" or type_name in seen:
-            return None
-        if self._unrooted(declared):
-            return "vehicle"  # a bare actor type (CARLA suites declare `actor Model3`)
-        return self._actor_base(declared.parent, seen | {type_name})
-
-    def _unrooted(self, declared: model.TypeDeclaration) -> bool:
-        """A declared actor type with no parent, or whose parent is an abstract actor of the library."""
-        return declared.parent is None or (
-            declared.parent not in self.types and declared.parent in library.ABSTRACT_ACTOR_TYPES
-        )
-
-    def _driven_as_vehicle(self, type_name: str) -> bool:
-        """Whether a declared actor type reaches no road user and is driven as a vehicle (a warning)."""
-        seen: set[str] = set()
-        while type_name in self.types and type_name not in seen:
-            seen.add(type_name)
-            if self._unrooted(self.types[type_name]):
-                return True
-            type_name = self.types[type_name].parent
-        return False
-
-    def _actor_type_names(self) -> list[str]:
-        return [*library.ACTOR_TYPES, *(n for n, d in self.types.items() if d.kind == "actor")]
-
-    @staticmethod
-    def _known(what: str, names) -> str:
-        names = list(dict.fromkeys(names))
-        return f"known {what}: {', '.join(names)}" if names else f"there are no {what}"
 
     # -------------------------------------------------------------- behavior
 
@@ -893,211 +715,6 @@ class _Checker:
                 self.error(value.location, f"{parameter.name}: takes a whole number from 0 up")
 
     # -------------------------------------------------------------- road
-
-    def _road_lanes(self, scenario: model.Scenario, env: dict, roads: list[str]) -> int:
-        """The lane count of the road ``scenario`` runs on, also kept in ``self.lanes`` for the lane checks.
-
-        The lanes option wins when given (a conflict with the scenario's own bounds is an error).
-        Otherwise the road is as wide as the scenario needs: at least DEFAULT_LANES, at least its
-        ``path_min_driving_lanes``, at least its highest lane number or lane change plus one, and at most
-        its ``path_max_lanes``, so that a file states its road and runs the same from every entry point.
-        """
-        bounds = self._road_bounds(scenario, env, roads)
-        least, most = bounds.get("path_min_driving_lanes"), bounds.get("path_max_lanes")
-        if least and most and least[0] > most[0]:
-            self.error(
-                most[1],
-                f"at most {most[0]} lanes contradicts at least {least[0]} (line {least[1].line})",
-                "make path_max_lanes at least path_min_driving_lanes",
-            )
-        if self.requested_lanes is not None:
-            lanes = self.requested_lanes
-            self.lanes_origin = " (set by the lanes option)"
-            for name, (value, location) in bounds.items():
-                if (name == "path_min_driving_lanes" and lanes < value) or (name == "path_max_lanes" and lanes > value):
-                    bound = "at least" if name == "path_min_driving_lanes" else "at most"
-                    self.error(
-                        location,
-                        f"the scenario asks for {bound} {value} lanes, but the lanes option sets {lanes}",
-                        "leave out the lanes option (--lanes, roadlogic_lanes) to take the road from the scenario",
-                    )
-            if lanes > MAX_LANES:
-                self.error(
-                    scenario.location,
-                    f"a road of {lanes} lanes (the lanes option); the tool drives at most {MAX_LANES}",
-                    "give a smaller --lanes" + MAX_LANES_WHY,
-                )
-        else:
-            used, where = self._lanes_used(scenario, env)
-            if least and least[0] >= used:
-                where = least[1]
-            lanes = max(DEFAULT_LANES, least[0] if least else 1, used)
-            self.lanes_origin = ""
-            if most and lanes > most[0]:
-                lanes = most[0]
-                self.lanes_origin = f" (path_max_lanes({lanes}) on line {most[1].line})"
-            if lanes > MAX_LANES:
-                # the one error for it: the road keeps the lanes asked for, so the lane checks stay quiet
-                self.error(
-                    where,
-                    f"a road of {lanes} lanes; the tool drives at most {MAX_LANES}",
-                    f"use lanes 1 to {MAX_LANES}" + MAX_LANES_WHY,
-                )
-        self.lanes = lanes
-        return lanes
-
-    def _road_bounds(
-        self, scenario: model.Scenario, env: dict, roads: list[str]
-    ) -> dict[str, tuple[int, SourceLocation]]:
-        """The lane bounds the scenario's road modifiers state, by modifier name; other scenario-wide modifiers are refused."""
-        bounds: dict[str, tuple[int, SourceLocation]] = {}
-        for modifier in scenario.modifiers:
-            on_road = modifier.actor in roads or (modifier.actor is None and modifier.name in library.ROAD_MODIFIERS)
-            if not on_road:
-                if modifier.actor is None or scenario.actor(modifier.actor) is not None:
-                    self.error(
-                        modifier.location,
-                        "not supported: a modifier applied to the whole scenario",
-                        "put it in the with: block of an invocation",
-                    )
-                else:
-                    self.error(
-                        modifier.location,
-                        f"unknown road {modifier.actor!r}",
-                        f"declare it in the scenario: {modifier.actor}: {library.ROAD_TYPE}",
-                    )
-                continue
-            signature = library.ROAD_MODIFIERS.get(modifier.name)
-            if signature is None:
-                self.error(
-                    modifier.location,
-                    f"not supported: {modifier.name}() of the road",
-                    f"the road is one straight highway; {self._known('road modifiers', library.ROAD_MODIFIERS)}",
-                )
-                continue
-            before = len(self.diagnostics)
-            binding = self._arguments(
-                signature, modifier.arguments, modifier.location, scenario, env, set(), set(), what=f"{modifier.name}()"
-            )
-            if modifier.name == "set_map":
-                hint = "give the road's lanes with path_min_driving_lanes(n)"
-                if self.registry.dialect == STANDARD_DIALECT:
-                    hint += "; a file written for CARLA's scenario runner is read with --dialect carla (pytest: --roadlogic-dialect carla or roadlogic_dialect = carla): lanes numbered from the left, speed(v) a target"
-                self.warning(
-                    modifier.location, "the map is not available: the scenario runs on one straight road", hint
-                )
-                continue
-            argument = binding["lanes"]
-            if argument is None or any(d.severity == "error" for d in self.diagnostics[before:]):
-                continue
-            value = evaluate(argument.value, env)
-            if not (
-                isinstance(value, Interval) and value.is_point and float(value.low).is_integer() and value.low >= 1
-            ):
-                self.error(
-                    argument.value.location,
-                    f"{modifier.name}() takes one whole number of lanes from 1 up, e.g. {modifier.name}(3)",
-                )
-            elif modifier.name in bounds:
-                self.error(
-                    modifier.location,
-                    f"{modifier.name}() is already given on line {bounds[modifier.name][1].line}",
-                    "give it once",
-                )
-            else:
-                bounds[modifier.name] = (int(value.low), modifier.location)
-        return bounds
-
-    def _lanes_used(self, scenario: model.Scenario, env: dict) -> tuple[int, SourceLocation]:
-        """The fewest lanes on which every lane number and lane change the scenario writes exists,
-        and where the use that needs the most stands."""
-
-        def highest(argument: model.Argument | None) -> int:
-            try:
-                value = evaluate(argument.value, env) if argument is not None else None
-            except EvaluationError:
-                return 1  # reported by the main pass
-            if isinstance(value, Interval) and value.dimension is None and math.isfinite(value.high):
-                return int(math.floor(value.high))
-            return 1
-
-        needed, where = 1, scenario.location
-        for behavior in scenario.behaviors:
-            for node in model.walk(behavior):
-                if not isinstance(node, model.Invocation):
-                    continue
-                uses = [(self.registry.action(node.action), node.arguments, node.location)]
-                uses += [(self.registry.modifier(m.name), m.arguments, m.location) for m in node.modifiers]
-                for construct, arguments, location in uses:
-                    if construct is not None:
-                        lanes = construct.lanes_needed(library.bind(construct.signature, arguments), highest)
-                        if lanes > needed:
-                            needed, where = lanes, location
-        return needed, where
-
-    def _event_specification(
-        self, spec, scenario: model.Scenario, env: dict, location: SourceLocation, waits: bool = False
-    ) -> None:
-        """An event reference or a condition (``constructs.conditions`` says which ones the tool reads);
-        ``waits``: it is a ``wait``'s, which may also be ``elapsed(t)``."""
-        if isinstance(spec, model.EventReference):
-            events = {e.name: e for e in scenario.events}
-            if spec.name not in events:
-                label, _, edge = spec.name.rpartition(".")
-                if edge in EDGES:  # with_builtin_events declared those of every labelled phase
-                    labels = sorted(
-                        {n.label for b in scenario.behaviors for n in model.walk(b) if getattr(n, "label", None)}
-                    )
-                    self.error(
-                        spec.location,
-                        f"@{spec.name} is the {edge} of the phase labelled {label!r}, and no phase has that label",
-                        f"label the phase ({label}: ...); labels here: {', '.join(labels) or 'none'}",
-                    )
-                else:
-                    self.error(spec.location, f"unknown event {spec.name!r}", f"declare it: event {spec.name}")
-                return
-            declared = events[spec.name]
-            if declared.specification is None and spec.name not in self._emitted(scenario):
-                self.error(
-                    spec.location,
-                    f"nothing emits the event {spec.name!r}: this wait never ends",
-                    f"emit it where it happens: emit {spec.name}",
-                )
-            if spec.condition is not None:
-                self._event_specification(spec.condition, scenario, env, location)
-            return
-        if waits and isinstance(spec, model.Call) and spec.function == "elapsed":
-            self._elapsed(spec, env)
-            return
-        try:
-            self.registry.condition(spec, env, [a.name for a in scenario.actors])
-        except OscError as error:
-            for diagnostic in error.diagnostics:
-                self.error(diagnostic.location, diagnostic.message, diagnostic.hint)
-
-    @staticmethod
-    def _emitted(scenario: model.Scenario) -> set[str]:
-        return {
-            node.event
-            for behavior in scenario.behaviors
-            for node in model.walk(behavior)
-            if isinstance(node, model.Emit)
-        }
-
-    def _elapsed(self, call: model.Call, env: dict) -> None:
-        if len(call.arguments) != 1 or call.arguments[0].name is not None:
-            self.error(call.location, "elapsed() takes one time, e.g. elapsed(3s) or elapsed([2..4]s)")
-            return
-        try:
-            value = evaluate(call.arguments[0].value, env)
-        except EvaluationError as error:
-            self.error(error.location, error.message, error.hint)
-            return
-        if not isinstance(value, Interval) or value.dimension != TIME:
-            got = describe(value.dimension) if isinstance(value, Interval) else "a name"
-            self.error(
-                call.arguments[0].location, f"elapsed() expects a time, got {got}", "write it with a unit, e.g. 3s"
-            )
 
     def _environment(self, scenario: model.Scenario, space: ParameterSpace) -> dict[str, object]:
         """Names an expression of this scenario may read: parameters (their ranges) and actors' speed and lane."""

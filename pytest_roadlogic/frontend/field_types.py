@@ -1,0 +1,117 @@
+"""Typing a scenario's fields: actor or parameter, the built-in type an actor derives from, and the names a message offers."""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+from . import library, model
+from .standard_library import LazyTable
+
+# the built-in physical type of each dimension, for a declared alias (velocity for speed)
+_BUILTIN_PHYSICAL = LazyTable(lambda _: {dimension: name for name, dimension in library.PHYSICAL_TYPES.items()})
+
+
+class FieldTyping:
+    """A part of the checker (``checker._Checker``): its state is the checker's."""
+
+    def _field_kind(self, item: model.Field) -> str | None:
+        location = item.type_location or item.location
+        if item.is_list:
+            self.error(location, "not supported: list parameters", "use one parameter per value")
+            return None
+        if item.type == library.ROAD_TYPE:
+            if item.constraints or item.default is not None:
+                self.error(
+                    location,
+                    "a road takes no value or keep()",
+                    "constrain it with path_min_driving_lanes(n) or path_max_lanes(n)",
+                )
+            return "road"
+        if self._actor_base(item.type) is not None:
+            if self._driven_as_vehicle(item.type):
+                self.warning(
+                    location,
+                    f"actor type {item.type!r} does not derive from a road user: it is driven as a vehicle",
+                    f"declare it as `actor {item.type} inherits vehicle` (or car, truck)",
+                )
+            return "actor"
+        if item.type in library.SCALAR_TYPES or item.type in self.enums:
+            return "parameter"
+        if item.type in self.physical_types:
+            self.error(
+                location,
+                f"not supported: parameters of type {item.type!r} (a dimension this tool does not model)",
+                f"use one of {', '.join(library.PHYSICAL_TYPES)}",
+            )
+            return None
+        if item.type in library.UNSUPPORTED_ACTOR_TYPES:
+            self.error(
+                location,
+                f"not supported: actor type {item.type!r} (the road is a highway)",
+                f"use one of {', '.join(library.ACTOR_TYPES)}",
+            )
+            return None
+        if item.type in self.types:
+            declared = self.types[item.type]
+            if declared.kind == "actor":
+                self.error(
+                    location,
+                    f"actor type {item.type!r} does not derive from a road user",
+                    f"declare it as `actor {item.type} inherits vehicle`",
+                )
+            else:
+                self.error(
+                    location, "not supported: parameters of struct type", "use scalar parameters (length, speed, ...)"
+                )
+            return None
+        known = [
+            *library.ACTOR_TYPES,
+            *library.SCALAR_TYPES,
+            *sorted(set(self.enums) - set(library.ENUMS)),
+            *sorted(self.types),
+        ]
+        self.error(location, f"unknown type {item.type!r}", self._known("types", known))
+        return None
+
+    def _actor_base(self, type_name: str, seen: frozenset[str] = frozenset()) -> str | None:
+        """The road user a declared actor type is driven as: the built-in type it derives from
+        or, for a bare type or one derived from an abstract actor of the standard library
+        (movable_object, physical_object, osc_actor), a vehicle (warned about where used)."""
+        if type_name in library.ACTOR_TYPES:
+            return type_name
+        declared = self.types.get(type_name)
+        if declared is None or declared.kind != "actor" or type_name in seen:
+            return None
+        if self._unrooted(declared):
+            return "vehicle"  # a bare actor type (CARLA suites declare `actor Model3`)
+        return self._actor_base(declared.parent, seen | {type_name})
+
+    def _unrooted(self, declared: model.TypeDeclaration) -> bool:
+        """A declared actor type with no parent, or whose parent is an abstract actor of the library."""
+        return declared.parent is None or (
+            declared.parent not in self.types and declared.parent in library.ABSTRACT_ACTOR_TYPES
+        )
+
+    def _driven_as_vehicle(self, type_name: str) -> bool:
+        """Whether a declared actor type reaches no road user and is driven as a vehicle (a warning)."""
+        seen: set[str] = set()
+        while type_name in self.types and type_name not in seen:
+            seen.add(type_name)
+            if self._unrooted(self.types[type_name]):
+                return True
+            type_name = self.types[type_name].parent
+        return False
+
+    def _actor_type_names(self) -> list[str]:
+        return [*library.ACTOR_TYPES, *(n for n, d in self.types.items() if d.kind == "actor")]
+
+    @staticmethod
+    def _known(what: str, names) -> str:
+        names = list(dict.fromkeys(names))
+        return f"known {what}: {', '.join(names)}" if names else f"there are no {what}"
+
+    def _aliased(self, item: model.Field) -> model.Field:
+        """The field with a declared alias of a physical type (``velocity``) read as the built-in one."""
+        if item.type not in library.PHYSICAL_TYPES and self.physical_types.get(item.type) in _BUILTIN_PHYSICAL:
+            return replace(item, type=_BUILTIN_PHYSICAL[self.physical_types[item.type]])
+        return item

@@ -1,0 +1,165 @@
+"""How many lanes a scenario's road has: from its road fields, its path modifiers, and the lanes its constructs use."""
+
+from __future__ import annotations
+
+import math
+
+from ..settings import STANDARD_DIALECT
+from . import library, model
+from .errors import SourceLocation
+from .values import EvaluationError, Interval, evaluate
+
+DEFAULT_LANES = 3  # a road whose scenario says nothing of its lanes
+
+# the default driver's Frenet frame reaches 25 m from the road's right edge (frenetix's projection
+# domain): 7 lanes of 3.5 m. Measured: lane(7) and up ended in "x and/or y coordinate outside of
+# projection domain" inside the simulation (issue 20), 1,000,000 lanes at 1.7 GB
+MAX_LANES = 6
+
+
+MAX_LANES_WHY = " (the simulated road is one straight highway of at most that many lanes)"
+
+
+class RoadLanes:
+    """A part of the checker (``checker._Checker``): its state is the checker's."""
+
+    def _road_lanes(self, scenario: model.Scenario, env: dict, roads: list[str]) -> int:
+        """The lane count of the road ``scenario`` runs on, also kept in ``self.lanes`` for the lane checks.
+
+        The lanes option wins when given (a conflict with the scenario's own bounds is an error).
+        Otherwise the road is as wide as the scenario needs: at least DEFAULT_LANES, at least its
+        ``path_min_driving_lanes``, at least its highest lane number or lane change plus one, and at most
+        its ``path_max_lanes``, so that a file states its road and runs the same from every entry point.
+        """
+        bounds = self._road_bounds(scenario, env, roads)
+        least, most = bounds.get("path_min_driving_lanes"), bounds.get("path_max_lanes")
+        if least and most and least[0] > most[0]:
+            self.error(
+                most[1],
+                f"at most {most[0]} lanes contradicts at least {least[0]} (line {least[1].line})",
+                "make path_max_lanes at least path_min_driving_lanes",
+            )
+        if self.requested_lanes is not None:
+            lanes = self.requested_lanes
+            self.lanes_origin = " (set by the lanes option)"
+            for name, (value, location) in bounds.items():
+                if (name == "path_min_driving_lanes" and lanes < value) or (name == "path_max_lanes" and lanes > value):
+                    bound = "at least" if name == "path_min_driving_lanes" else "at most"
+                    self.error(
+                        location,
+                        f"the scenario asks for {bound} {value} lanes, but the lanes option sets {lanes}",
+                        "leave out the lanes option (--lanes, roadlogic_lanes) to take the road from the scenario",
+                    )
+            if lanes > MAX_LANES:
+                self.error(
+                    scenario.location,
+                    f"a road of {lanes} lanes (the lanes option); the tool drives at most {MAX_LANES}",
+                    "give a smaller --lanes" + MAX_LANES_WHY,
+                )
+        else:
+            used, where = self._lanes_used(scenario, env)
+            if least and least[0] >= used:
+                where = least[1]
+            lanes = max(DEFAULT_LANES, least[0] if least else 1, used)
+            self.lanes_origin = ""
+            if most and lanes > most[0]:
+                lanes = most[0]
+                self.lanes_origin = f" (path_max_lanes({lanes}) on line {most[1].line})"
+            if lanes > MAX_LANES:
+                # the one error for it: the road keeps the lanes asked for, so the lane checks stay quiet
+                self.error(
+                    where,
+                    f"a road of {lanes} lanes; the tool drives at most {MAX_LANES}",
+                    f"use lanes 1 to {MAX_LANES}" + MAX_LANES_WHY,
+                )
+        self.lanes = lanes
+        return lanes
+
+    def _road_bounds(
+        self, scenario: model.Scenario, env: dict, roads: list[str]
+    ) -> dict[str, tuple[int, SourceLocation]]:
+        """The lane bounds the scenario's road modifiers state, by modifier name; other scenario-wide modifiers are refused."""
+        bounds: dict[str, tuple[int, SourceLocation]] = {}
+        for modifier in scenario.modifiers:
+            on_road = modifier.actor in roads or (modifier.actor is None and modifier.name in library.ROAD_MODIFIERS)
+            if not on_road:
+                if modifier.actor is None or scenario.actor(modifier.actor) is not None:
+                    self.error(
+                        modifier.location,
+                        "not supported: a modifier applied to the whole scenario",
+                        "put it in the with: block of an invocation",
+                    )
+                else:
+                    self.error(
+                        modifier.location,
+                        f"unknown road {modifier.actor!r}",
+                        f"declare it in the scenario: {modifier.actor}: {library.ROAD_TYPE}",
+                    )
+                continue
+            signature = library.ROAD_MODIFIERS.get(modifier.name)
+            if signature is None:
+                self.error(
+                    modifier.location,
+                    f"not supported: {modifier.name}() of the road",
+                    f"the road is one straight highway; {self._known('road modifiers', library.ROAD_MODIFIERS)}",
+                )
+                continue
+            before = len(self.diagnostics)
+            binding = self._arguments(
+                signature, modifier.arguments, modifier.location, scenario, env, set(), set(), what=f"{modifier.name}()"
+            )
+            if modifier.name == "set_map":
+                hint = "give the road's lanes with path_min_driving_lanes(n)"
+                if self.registry.dialect == STANDARD_DIALECT:
+                    hint += "; a file written for CARLA's scenario runner is read with --dialect carla (pytest: --roadlogic-dialect carla or roadlogic_dialect = carla): lanes numbered from the left, speed(v) a target"
+                self.warning(
+                    modifier.location, "the map is not available: the scenario runs on one straight road", hint
+                )
+                continue
+            argument = binding["lanes"]
+            if argument is None or any(d.severity == "error" for d in self.diagnostics[before:]):
+                continue
+            value = evaluate(argument.value, env)
+            if not (
+                isinstance(value, Interval) and value.is_point and float(value.low).is_integer() and value.low >= 1
+            ):
+                self.error(
+                    argument.value.location,
+                    f"{modifier.name}() takes one whole number of lanes from 1 up, e.g. {modifier.name}(3)",
+                )
+            elif modifier.name in bounds:
+                self.error(
+                    modifier.location,
+                    f"{modifier.name}() is already given on line {bounds[modifier.name][1].line}",
+                    "give it once",
+                )
+            else:
+                bounds[modifier.name] = (int(value.low), modifier.location)
+        return bounds
+
+    def _lanes_used(self, scenario: model.Scenario, env: dict) -> tuple[int, SourceLocation]:
+        """The fewest lanes on which every lane number and lane change the scenario writes exists,
+        and where the use that needs the most stands."""
+
+        def highest(argument: model.Argument | None) -> int:
+            try:
+                value = evaluate(argument.value, env) if argument is not None else None
+            except EvaluationError:
+                return 1  # reported by the main pass
+            if isinstance(value, Interval) and value.dimension is None and math.isfinite(value.high):
+                return int(math.floor(value.high))
+            return 1
+
+        needed, where = 1, scenario.location
+        for behavior in scenario.behaviors:
+            for node in model.walk(behavior):
+                if not isinstance(node, model.Invocation):
+                    continue
+                uses = [(self.registry.action(node.action), node.arguments, node.location)]
+                uses += [(self.registry.modifier(m.name), m.arguments, m.location) for m in node.modifiers]
+                for construct, arguments, location in uses:
+                    if construct is not None:
+                        lanes = construct.lanes_needed(library.bind(construct.signature, arguments), highest)
+                        if lanes > needed:
+                            needed, where = lanes, location
+        return needed, where
