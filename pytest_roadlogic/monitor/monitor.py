@@ -135,149 +135,190 @@ FLOORS = (0.0, -math.inf)
 
 def _monitor(automaton: SymbolicAutomaton, trace: Trace, floor: float) -> Verdict:
     """The monitor over the runs whose robustness stays at least ``floor`` (-inf: every run)."""
-    times = trace.times
-    n_loc = len(automaton.locations)
-    drivers = [sorted(loc.drivers) for loc in automaton.locations]
-    init, final = automaton.initial, automaton.final
-    timings = automaton.timings
-    NONE = -math.inf
-    # a location's outgoing transitions grouped by what they do to the timed phases (starts, ends):
-    # the step of the phases' clocks is the same for the whole group, and a guard's margin is the
-    # same for every key, so min(value, margin) keeps the order of the values and the best key per
-    # group is the best key per transition. Why: five_vehicle_minute's 481 transitions all start
-    # or end a timed phase, 12 of them leave each location with one effect, and stepping every
-    # key for each of them was 33 s of monitoring for one 47 s trace (measured)
-    effects: list[list[tuple[tuple[tuple, tuple], list]]] = []
-    for q in range(n_loc):
-        grouped: dict[tuple[tuple, tuple], list] = {}
-        for transition in automaton.outgoing(q):
-            effect = (
-                tuple(sorted(p for p in transition.starts if p in timings)),
-                tuple(sorted(p for p in transition.ends if p in timings)),
-            )
-            grouped.setdefault(effect, []).append(transition)
-        effects.append(list(grouped.items()))
-    invariant_locations = [q for q in range(n_loc) if not automaton.location(q).invariant.is_true]
-    # every guard's robustness at every sample, computed column-wise up front
-    guard_margin = {t.id: t.guard.robustness_series(trace.actors).tolist() for t in automaton.transitions}
-    invariant_margin = {
-        q: automaton.location(q).invariant.robustness_series(trace.actors).tolist() for q in invariant_locations
-    }
-    progress = {a: (np.diff(trace.actors[a]["x"]) > 0).tolist() for a in trace.names}
-    # the columns the phases' two-end bounds read (speed for a mean acceleration, x for a distance)
-    columns = {column: {a: trace.actors[a][column].tolist() for a in trace.names} for column in _end_columns(automaton)}
-    # the bound over a phase's two ends that came closest to its range where all else held, for
-    # the report: (margin, sample, location, rate)
-    rate_miss: tuple[float, int, int, object] | None = None
-    # per location, a guard out of it that held on a run with every guard met so far, where a
-    # phase's duration did not allow the transition (too short, or it had overrun): (seconds
-    # outside the range, sample, transition, phase, seconds lasted), the least outside kept, for
-    # the report of the location the best run got stuck in
-    timing_miss: dict[int, tuple[float, int, object, int, float]] = {}
-    overrun: dict[int, tuple[int, int, float]] = {}  # location -> (sample, phase, seconds it had lasted)
-    # A run's state in a location: the samples at which its open timed phases started (empty when
-    # the scenario has no durations). states[q]: that key -> (smallest robustness so far, run).
-    Key = tuple  # sorted ((phase, start sample), ...)
-    states: list[dict[Key, tuple[float, tuple]]] = [{} for _ in range(n_loc)]
-    first_met = [None] * n_loc  # first sample at which a run with all guards met is in the location
-    met_run: list = [None] * n_loc  # that run's transitions, (sample, transition id)
-    best_final, best_final_run = NONE, ()
-    for k in range(len(times)):
-        # staying: the run was in q at k-1, q's drivers progressed over (k-1, k], no timed phase overran
-        surviving: list[dict[Key, tuple[float, tuple]]] = [{} for _ in range(n_loc)]
-        surviving[init] = {(): (math.inf, ())}
+    search = _RunSearch(automaton, trace, floor)
+    for k in range(len(trace.times)):
+        search.step(k)
+    return search.verdict()
+
+
+# A run's state in a location: the samples at which its open timed phases started (empty when the
+# scenario has no durations), sorted ((phase, start sample), ...)
+Key = tuple
+
+
+class _RunSearch:
+    """The best runs of an automaton through a trace, sample by sample (``step``), and the verdict
+    they give (``verdict``). Per location and key, only the run with the largest smallest
+    robustness so far is kept: a run is compared with another in the same state only by that."""
+
+    def __init__(self, automaton: SymbolicAutomaton, trace: Trace, floor: float) -> None:
+        self.automaton, self.trace, self.floor = automaton, trace, floor
+        self.times = trace.times
+        self.n_loc = n_loc = len(automaton.locations)
+        self.drivers = [sorted(loc.drivers) for loc in automaton.locations]
+        self.timings = timings = automaton.timings
+        # a location's outgoing transitions grouped by what they do to the timed phases (starts, ends):
+        # the step of the phases' clocks is the same for the whole group, and a guard's margin is the
+        # same for every key, so min(value, margin) keeps the order of the values and the best key per
+        # group is the best key per transition. Why: five_vehicle_minute's 481 transitions all start
+        # or end a timed phase, 12 of them leave each location with one effect, and stepping every
+        # key for each of them was 33 s of monitoring for one 47 s trace (measured)
+        self.effects: list[list[tuple[tuple[tuple, tuple], list]]] = []
         for q in range(n_loc):
-            if q == init or not states[q] or k == 0:
+            grouped: dict[tuple[tuple, tuple], list] = {}
+            for transition in automaton.outgoing(q):
+                effect = (
+                    tuple(sorted(p for p in transition.starts if p in timings)),
+                    tuple(sorted(p for p in transition.ends if p in timings)),
+                )
+                grouped.setdefault(effect, []).append(transition)
+            self.effects.append(list(grouped.items()))
+        self.invariant_locations = [q for q in range(n_loc) if not automaton.location(q).invariant.is_true]
+        # every guard's robustness at every sample, computed column-wise up front
+        self.guard_margin = {t.id: t.guard.robustness_series(trace.actors).tolist() for t in automaton.transitions}
+        self.invariant_margin = {
+            q: automaton.location(q).invariant.robustness_series(trace.actors).tolist()
+            for q in self.invariant_locations
+        }
+        self.progress = {a: (np.diff(trace.actors[a]["x"]) > 0).tolist() for a in trace.names}
+        # the columns the phases' two-end bounds read (speed for a mean acceleration, x for a distance)
+        self.columns = {
+            column: {a: trace.actors[a][column].tolist() for a in trace.names} for column in _end_columns(automaton)
+        }
+        # the bound over a phase's two ends that came closest to its range where all else held, for
+        # the report: (margin, sample, location, rate)
+        self.rate_miss: tuple[float, int, int, object] | None = None
+        # per location, a guard out of it that held on a run with every guard met so far, where a
+        # phase's duration did not allow the transition (too short, or it had overrun): (seconds
+        # outside the range, sample, transition, phase, seconds lasted), the least outside kept, for
+        # the report of the location the best run got stuck in
+        self.timing_miss: dict[int, tuple[float, int, object, int, float]] = {}
+        self.overrun: dict[int, tuple[int, int, float]] = {}  # location -> (sample, phase, seconds it had lasted)
+        # states[q]: a key -> (smallest robustness so far, run)
+        self.states: list[dict[Key, tuple[float, tuple]]] = [{} for _ in range(n_loc)]
+        self.first_met: list[int | None] = [None] * n_loc  # first sample at which a run with all guards met is in q
+        self.met_run: list = [None] * n_loc  # that run's transitions, (sample, transition id)
+        self.best_final, self.best_final_run = -math.inf, ()
+
+    def step(self, k: int) -> None:
+        """The runs after sample ``k``: staying where their drivers progressed, meeting the
+        invariants, taking the transitions whose guards hold."""
+        surviving = self._staying(k)
+        new_states = [dict(s) for s in surviving]
+        self._invariants(k, new_states)
+        for q in range(self.n_loc):
+            if surviving[q]:
+                self._transitions(k, q, surviving[q], new_states)
+        self.states = new_states
+        for q in range(self.n_loc):
+            if self.states[q] and self.first_met[q] is None and max(v for v, _ in self.states[q].values()) >= 0:
+                self.first_met[q] = k
+                self.met_run[q] = max(self.states[q].values(), key=lambda state: state[0])[1]
+        for value, run in self.states[self.automaton.final].values():
+            if value > self.best_final:
+                self.best_final, self.best_final_run = value, run
+
+    def _staying(self, k: int) -> list[dict[Key, tuple[float, tuple]]]:
+        """The runs that stay: in q at k-1, q's drivers progressed over (k-1, k], no timed phase overran."""
+        init, times = self.automaton.initial, self.times
+        surviving: list[dict[Key, tuple[float, tuple]]] = [{} for _ in range(self.n_loc)]
+        surviving[init] = {(): (math.inf, ())}
+        for q in range(self.n_loc):
+            if q == init or not self.states[q] or k == 0:
                 continue
-            if not all(progress[a][k - 1] for a in drivers[q]):
+            if not all(self.progress[a][k - 1] for a in self.drivers[q]):
                 continue
-            for key, entry in states[q].items():
-                over = next((p for p, start in key if not timings[p].admits_start(times[k] - times[start])), None)
+            for key, entry in self.states[q].items():
+                over = next((p for p, start in key if not self.timings[p].admits_start(times[k] - times[start])), None)
                 if over is None:
                     surviving[q][key] = entry
                 elif entry[0] >= 0:
                     # the last run with every guard met that a phase's overrun ended, for the report
-                    overrun[q] = (k, over, float(times[k - 1] - times[dict(key)[over]]))
-        new_states = [dict(s) for s in surviving]
-        for q in invariant_locations:
-            margin = invariant_margin[q][k]
-            if margin >= floor:
-                for key, (value, run) in new_states[q].items():
-                    new_states[q][key] = (min(value, margin), run)
-            else:
-                new_states[q] = {}
-        for q in range(n_loc):
-            if not surviving[q]:
-                continue
-            for (starts, ends), transitions in effects[q]:
-                # the timed phases after the step, once for every transition with this effect:
-                # each key's best value before the guard, per key after the step
-                advanced: dict[Key, tuple[float, tuple]] = {}
-                for key, (value, run) in surviving[q].items():
-                    stepped = _advance(key, starts, ends, k, times, timings, columns)
-                    if isinstance(stepped, _Broken):
-                        if value >= 0:
-                            for transition in transitions:
-                                if guard_margin[transition.id][k] >= 0 and (
-                                    q not in timing_miss or stepped.outside < timing_miss[q][0]
-                                ):
-                                    timing_miss[q] = (stepped.outside, k, transition, stepped.phase, stepped.seconds)
-                        continue
-                    if stepped is None:
-                        continue
-                    next_key, timing_margin, missed = stepped
-                    if missed is not None and value >= 0 and (rate_miss is None or missed[0] > rate_miss[0]):
-                        rate_miss = (missed[0], k, q, missed[1])
-                    candidate = min(value, timing_margin)
-                    if candidate < floor:
-                        continue
-                    if next_key not in advanced or candidate > advanced[next_key][0]:
-                        advanced[next_key] = (candidate, run)
-                for transition in transitions:
-                    margin = guard_margin[transition.id][k]
-                    if margin < floor:
-                        continue
-                    target = new_states[transition.target]
-                    for next_key, (value, run) in advanced.items():
-                        candidate = min(value, margin)
-                        if next_key not in target or candidate > target[next_key][0]:
-                            target[next_key] = (candidate, run + ((k, transition.id),))
-        states = new_states
-        for q in range(n_loc):
-            if states[q] and first_met[q] is None and max(v for v, _ in states[q].values()) >= 0:
-                first_met[q] = k
-                met_run[q] = max(states[q].values(), key=lambda state: state[0])[1]
-        for value, run in states[final].values():
-            if value > best_final:
-                best_final, best_final_run = value, run
+                    self.overrun[q] = (k, over, float(times[k - 1] - times[dict(key)[over]]))
+        return surviving
 
-    depth = automaton.depth()
-    met = [q for q in range(n_loc) if first_met[q] is not None] or [init]
-    furthest = max(met, key=lambda q: (depth.get(q, 0), -(first_met[q] or 0)))
-    accepted = best_final >= 0 and not trace.incidents
-    events = {t.id: t.label for t in automaton.transitions}
-    # a rejected run's report marks only the transitions whose guards held (the best run to the end
-    # had marked guards that the explanation says never held: issue 38)
-    shown = best_final_run if accepted else (met_run[furthest] or [])
-    best_run = [(float(times[k]), events[tid]) for k, tid in shown]
-    miss = None
-    if best_final < 0:
-        miss = _closest_miss(automaton, furthest, first_met[furthest] or 0, trace.snapshots(), times)
-        if rate_miss is not None and (miss is None or miss.robustness >= 0):
-            miss = _rate_miss(automaton, rate_miss, columns, times)
-        if furthest in timing_miss and (miss is None or miss.robustness >= 0):
-            miss = _timing_miss(automaton, timing_miss[furthest], trace.snapshots(), times)
-        elif furthest in overrun and miss is not None and miss.robustness >= 0 and not miss.timing:
-            k, phase, seconds = overrun[furthest]
-            timing = automaton.timings[phase]
-            miss = dataclasses.replace(
-                miss,
-                timing=f"{timing} but had lasted {seconds:.1f} s by t = {times[k - 1]:.1f} s, before the guard held",
-                locations=tuple(dict.fromkeys([*miss.locations, *([timing.source] if timing.source else [])])),
-            )
-    return Verdict(
-        accepted, float(best_final), automaton.location(furthest).name, best_run, miss, list(trace.incidents)
-    )
+    def _invariants(self, k: int, states: list[dict[Key, tuple[float, tuple]]]) -> None:
+        """Each location's invariant at sample ``k``: its robustness bounds its runs', or ends them."""
+        for q in self.invariant_locations:
+            margin = self.invariant_margin[q][k]
+            if margin >= self.floor:
+                for key, (value, run) in states[q].items():
+                    states[q][key] = (min(value, margin), run)
+            else:
+                states[q] = {}
+
+    def _transitions(self, k: int, q: int, runs: dict, states: list[dict[Key, tuple[float, tuple]]]) -> None:
+        """The runs in ``q`` that take one of its transitions at sample ``k``, into ``states``."""
+        for (starts, ends), transitions in self.effects[q]:
+            # the timed phases after the step, once for every transition with this effect:
+            # each key's best value before the guard, per key after the step
+            advanced: dict[Key, tuple[float, tuple]] = {}
+            for key, (value, run) in runs.items():
+                stepped = _advance(key, starts, ends, k, self.times, self.timings, self.columns)
+                if isinstance(stepped, _Broken):
+                    if value >= 0:
+                        for transition in transitions:
+                            if self.guard_margin[transition.id][k] >= 0 and (
+                                q not in self.timing_miss or stepped.outside < self.timing_miss[q][0]
+                            ):
+                                self.timing_miss[q] = (stepped.outside, k, transition, stepped.phase, stepped.seconds)
+                    continue
+                if stepped is None:
+                    continue
+                next_key, timing_margin, missed = stepped
+                if missed is not None and value >= 0 and (self.rate_miss is None or missed[0] > self.rate_miss[0]):
+                    self.rate_miss = (missed[0], k, q, missed[1])
+                candidate = min(value, timing_margin)
+                if candidate < self.floor:
+                    continue
+                if next_key not in advanced or candidate > advanced[next_key][0]:
+                    advanced[next_key] = (candidate, run)
+            for transition in transitions:
+                margin = self.guard_margin[transition.id][k]
+                if margin < self.floor:
+                    continue
+                target = states[transition.target]
+                for next_key, (value, run) in advanced.items():
+                    candidate = min(value, margin)
+                    if next_key not in target or candidate > target[next_key][0]:
+                        target[next_key] = (candidate, run + ((k, transition.id),))
+
+    def verdict(self) -> Verdict:
+        """Accepted when a run ends in the final location with every guard met and the trace had no
+        incident; else the location the best run got furthest to and the closest miss there."""
+        automaton, trace, times = self.automaton, self.trace, self.times
+        depth = automaton.depth()
+        met = [q for q in range(self.n_loc) if self.first_met[q] is not None] or [automaton.initial]
+        furthest = max(met, key=lambda q: (depth.get(q, 0), -(self.first_met[q] or 0)))
+        accepted = self.best_final >= 0 and not trace.incidents
+        events = {t.id: t.label for t in automaton.transitions}
+        # a rejected run's report marks only the transitions whose guards held (the best run to the end
+        # had marked guards that the explanation says never held: issue 38)
+        shown = self.best_final_run if accepted else (self.met_run[furthest] or [])
+        best_run = [(float(times[k]), events[tid]) for k, tid in shown]
+        miss = None
+        if self.best_final < 0:
+            miss = _closest_miss(automaton, furthest, self.first_met[furthest] or 0, trace.snapshots(), times)
+            if self.rate_miss is not None and (miss is None or miss.robustness >= 0):
+                miss = _rate_miss(automaton, self.rate_miss, self.columns, times)
+            if furthest in self.timing_miss and (miss is None or miss.robustness >= 0):
+                miss = _timing_miss(automaton, self.timing_miss[furthest], trace.snapshots(), times)
+            elif furthest in self.overrun and miss is not None and miss.robustness >= 0 and not miss.timing:
+                k, phase, seconds = self.overrun[furthest]
+                timing = automaton.timings[phase]
+                miss = dataclasses.replace(
+                    miss,
+                    timing=f"{timing} but had lasted {seconds:.1f} s by t = {times[k - 1]:.1f} s, before the guard held",
+                    locations=tuple(dict.fromkeys([*miss.locations, *([timing.source] if timing.source else [])])),
+                )
+        return Verdict(
+            accepted,
+            float(self.best_final),
+            automaton.location(furthest).name,
+            best_run,
+            miss,
+            list(trace.incidents),
+        )
 
 
 @dataclass(frozen=True)
