@@ -161,7 +161,11 @@ def guided_planning(
         key = (tuple(sorted(resolution.items(), key=str)), tuple(sorted(margins.items(), key=str)))
         if key not in guides:
             narrowed, declared = guided(scenario, values, resolution, margins)
-            guides[key] = build_automaton(narrowed, values=declared)
+            automaton = build_automaton(narrowed, values=declared)
+            automaton.sampled = frozenset(
+                p for parameter in scenario.parameters if parameter.name in values for p in parameter.places
+            )
+            guides[key] = automaton
         return guides[key]
 
     return guide, dataclasses.replace(settings, random_start=True), sample_seed(seed, values)

@@ -192,6 +192,10 @@ def guided(
 
 
 def _band(parameter: LogicalParameter, value: float, cell: float, margin: float) -> tuple[float, float]:
+    """The band a sampled value is planned in: ``cell`` wide around the value, the value first
+    moved ``margin`` inside the parameter's range where the range is wide enough (so that tracking
+    error in simulation does not cross its edge). The one inset of a sampled value: the planner
+    plans the band as given (``SymbolicAutomaton.sampled``)."""
     low, high = parameter.low, parameter.high
     if high - low > 2 * margin:
         value = min(max(value, low + margin), high - margin)

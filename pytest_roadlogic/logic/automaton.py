@@ -156,6 +156,14 @@ class SymbolicAutomaton:
     # a bound's or a duration's source names the parameters behind it, for the planner's instance
     # and the messages that name constraints.
     parameters: dict = field(default_factory=dict, compare=False)
+    # The places of the parameters a sample narrowed to bands (``sampling.guided``): the sampler
+    # chose each band inside the range's margins, so the planner plans it as given, without a
+    # margin of its own (one inset per value, not two).
+    sampled: frozenset = field(default=frozenset(), compare=False)
+
+    def planned_margin(self, constraint, margin: float) -> float:
+        """The margin the planner keeps inside ``constraint``'s range: none for a sampled band."""
+        return 0.0 if getattr(constraint, "source", None) in self.sampled else margin
 
     def parameters_of(self, constraint) -> tuple[str, ...]:
         """The logical parameters behind a constraint (a bound, a duration, a rate), by its source."""

@@ -62,7 +62,7 @@ def build_continuous_instance(
         automaton,
         s.dt,
         relaxable,
-        lambda node, guard: node_facts(node, guard, s),
+        lambda node, guard: node_facts(node, guard, s, automaton),
         lambda relax: rate_facts(automaton, s, relax),
     )
 
@@ -99,14 +99,14 @@ def rate_facts(automaton: SymbolicAutomaton, settings: ContinuousSettings, relax
                 facts.append(f"relaxable(rate({r}),{relax[rate.source]}).")
             actor = atom(rate.actor)
             if isinstance(rate, Travelled):
-                low, high = inset(rate.low, rate.high, settings.position_margin)
+                low, high = inset(rate.low, rate.high, automaton.planned_margin(rate, settings.position_margin))
                 facts.append(f"travelled({r},{phase},{actor}).")
                 if math.isfinite(low):
                     facts.append(f"travelled_at_least({r},{number(low)}).")
                 if math.isfinite(high):
                     facts.append(f"travelled_at_most({r},{number(high)}).")
                 continue
-            low, high = inset(rate.low, rate.high, settings.acceleration_margin)
+            low, high = inset(rate.low, rate.high, automaton.planned_margin(rate, settings.acceleration_margin))
             facts.append(f"mean_acceleration({r},{phase},{actor}).")
             for length in range(shortest, longest + 1):
                 seconds = length * settings.dt
@@ -151,10 +151,10 @@ def _margin(bound: Bound, settings: ContinuousSettings) -> float:
     return settings.position_margin if bound.term.quantity in (POSITION, TRAVELED) else settings.speed_margin
 
 
-def node_facts(node: int, guard: Guard, settings: ContinuousSettings) -> list[str]:
+def node_facts(node: int, guard: Guard, settings: ContinuousSettings, automaton: SymbolicAutomaton) -> list[str]:
     """One guard node's facts (``asp/continuous/guards.lp``): a bound, ``within(N)`` with its term
     and its range inset by the margin, or its negation, ``outside(N)`` with the range widened by
-    the margin. A time headway ``h(a, b)`` is compared as ``p(a) - p(b) - X*v(b)`` with 0 (the
+    the margin (none for a sampled band: ``SymbolicAutomaton.planned_margin``). A time headway ``h(a, b)`` is compared as ``p(a) - p(b) - X*v(b)`` with 0 (the
     follower never reverses), so its facts carry the coefficient -X of each side."""
     bound = guard.part if isinstance(guard, Not) else guard
     assert isinstance(bound, Bound) and bound.term.quantity != LANE
@@ -164,7 +164,7 @@ def node_facts(node: int, guard: Guard, settings: ContinuousSettings) -> list[st
         sides = (("under", bound.low - margin, bound.low), ("over", bound.high + margin, bound.high))
         kind = "outside"
     else:
-        low, high = inset(bound.low, bound.high, margin)
+        low, high = inset(bound.low, bound.high, automaton.planned_margin(bound, margin))
         if bound.term.quantity == SPEED and bound.term.reference is None and bound.low <= 0:
             low = 0.0  # no margin below a standstill: no vehicle undershoots it (none reverses)
         sides = (("at_least", low, low), ("at_most", high, high))

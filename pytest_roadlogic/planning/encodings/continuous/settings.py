@@ -86,15 +86,16 @@ class ContinuousSettings:
     drift_speeds: tuple[float, float] = (2.0, 40.0)
 
     def resolution(self) -> dict[str | None, float]:
-        """How wide a band a sampled value is narrowed to, per physical dimension: positions and
-        speeds are real-valued here, so the band is the planning margin's (the plan lies within a
-        quarter of it from the sample); durations still count whole steps, time headways do not."""
+        """How wide a band a sampled value is narrowed to, per physical dimension, the band the
+        plan may use (the planner keeps no margin inside it: ``SymbolicAutomaton.sampled``):
+        positions, speeds and headways are real-valued here, so the plan lies within half a
+        margin of the sample; durations still count whole steps."""
         return {
-            "length": 2 * self.position_margin,
-            "speed": 2 * self.speed_margin,
+            "length": self.position_margin,
+            "speed": self.speed_margin,
             "time": self.dt,
-            "acceleration": 0.5,
-            "headway": 2 * self.headway_margin,
+            "acceleration": 0.25,
+            "headway": self.headway_margin,
         }
 
     def start_band(self) -> tuple[float, float]:

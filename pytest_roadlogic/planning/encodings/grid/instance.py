@@ -80,7 +80,7 @@ def build_instance(automaton: SymbolicAutomaton, settings: GridSettings, relaxab
         automaton,
         settings.dt,
         relaxable,
-        lambda node, guard: node_facts(node, guard, settings),
+        lambda node, guard: node_facts(node, guard, settings, automaton),
     )
 
 
@@ -89,7 +89,7 @@ def _runup_fact(cells_per_step: int, steps: int, settings: GridSettings) -> str:
     return f"runup({cells_per_step},{steps},{math.floor(metres / settings.grid + 1e-9)},{math.ceil(metres / settings.grid - 1e-9)})."
 
 
-def node_facts(node: int, guard: Guard, settings: GridSettings) -> list[str]:
+def node_facts(node: int, guard: Guard, settings: GridSettings, automaton: SymbolicAutomaton) -> list[str]:
     """One guard node's facts (``asp/grid/guards.lp``): a position bound, ``position_within`` in
     cells, or its negation, ``position_outside``; a speed bound, ``speed_within`` in cells per
     step, or ``speed_outside``. Within: the range inset by the margin (``planned_range``); outside:
@@ -115,7 +115,7 @@ def node_facts(node: int, guard: Guard, settings: GridSettings) -> list[str]:
             return ["% never holds"]
         low, high = bounds_text(below, above)
         return [f"{kind}_outside({node},{actor},{reference},{low},{high})."]
-    lo, hi = planned_range(bound.low, bound.high, margin, scale)
+    lo, hi = planned_range(bound.low, bound.high, automaton.planned_margin(bound, margin), scale)
     if lo > hi:
         return ["% cannot hold on this grid"]
     low, high = bounds_text(lo, hi)
