@@ -7,8 +7,8 @@ that planning ended, and how many first plans the simulation accepted.
 
     python benchmarks/realistic.py [--seeds 5] [--plan-timeout 30] [--simulate] [--encoding grid|continuous|both] [--paper] [FILES...]
 
-Planning is what issue 17 replaced: --encoding both prints the grid encoding (asp/dynamics.lp) and
-the continuous one (asp/continuous.lp, the default) side by side; --paper adds the paper's seven scenarios.
+Planning is what issue 17 replaced: --encoding both prints the grid encoding (asp/grid/) and
+the continuous one (asp/continuous/, the default) side by side; --paper adds the paper's seven scenarios.
 --simulate adds a simulation and monitoring of each first plan (a grid plan after its run-up from
 standstill, a continuous plan from its first state).
 """

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import json
 import math
 import os
 from pathlib import Path
@@ -174,7 +175,7 @@ def _unsuccessful(results: BenchmarkResults) -> list[str]:
     lines = ["## Instances that did not conform", ""]
     for r in failed:
         where = f" (artifacts: `{r.artifacts}`)" if r.artifacts else ""
-        values = f" values {r.values}" if r.values else ""
+        values = f" at {'; '.join(r.described)} (values {json.dumps(r.values)})" if r.values else ""
         reason = " / ".join(line.strip() for line in r.message.splitlines()[:3]) or r.outcome
         lines.append(f"- {r.scenario} {r.strategy} #{r.index + 1}: {r.outcome}{values}{where}: {reason}")
     if any(r.outcome == NO_PLAN for r in failed):

@@ -26,6 +26,7 @@ from ..artifacts.files import write_text
 from ..artifacts.writer import write_artifacts
 from ..confinement import safe_name
 from ..frontend import OscError
+from ..frontend.logical import describe_values
 from ..outcomes import NO_PLAN, STAGES
 from ..pipeline import load_scenario
 from ..runner import CaseResult, Runner
@@ -122,6 +123,8 @@ class InstanceRecord:
     tries: int = 0
     seconds: dict[str, float] = field(default_factory=dict)  # per stage, summed over tries
     values: dict[str, Any] | None = None  # the sample (refined)
+    # the sample as every report shows it (frontend.logical.describe_values): value, unit, line, kind
+    described: list[str] = field(default_factory=list)
     robustness: float | None = None
     horizon: int | None = None  # planning steps of the simulated plan
     message: str = ""  # why it is not conformant
@@ -251,20 +254,34 @@ def _run_refined(
 
     def sample(result: CaseResult) -> None:
         nonlocal index
-        record(_record(result, name, REFINED, index, settings, out))
+        record(_record(result, name, REFINED, index, settings, out, scenario.parameters))
         index += 1
 
     runner.refined(sample, settings.refined, search=False)
 
 
 def _record(
-    result: CaseResult, name: str, strategy: str, index: int, settings: BenchmarkSettings, out: Path
+    result: CaseResult,
+    name: str,
+    strategy: str,
+    index: int,
+    settings: BenchmarkSettings,
+    out: Path,
+    parameters=(),
 ) -> InstanceRecord:
     seconds = {stage: result.seconds.get(stage, 0.0) for stage in STAGES}
     values = result.case.values if strategy == REFINED else None
+    described = describe_values(parameters, values or {})
     if result.run is None:
         return InstanceRecord(
-            name, strategy, index, result.outcome, values=values, message=result.message, seconds=seconds
+            name,
+            strategy,
+            index,
+            result.outcome,
+            values=values,
+            described=described,
+            message=result.message,
+            seconds=seconds,
         )
     outcome = result.run
     directory = None
@@ -283,6 +300,7 @@ def _record(
         outcome.tries,
         seconds,
         values,
+        described,
         verdict.robustness,
         outcome.plan.horizon,
         result.message,
