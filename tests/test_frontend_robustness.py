@@ -125,4 +125,7 @@ def test_mutated_files_check_or_fail_with_a_located_error(text):
             assert diagnostic.location.path == "m.osc"
             assert diagnostic.location.line >= 1 and diagnostic.location.column >= 1
         assert re.match(r"m\.osc:\d+:\d+: (error|warning): ", str(error))
-    assert time.perf_counter() - started < 1.0
+    # a guard against a hang (a mutation that sends the checker into a loop), not a speed target:
+    # speed is benchmarks/frontend.py's; a loaded CI machine took 1.006 s once for a file that takes
+    # milliseconds alone
+    assert time.perf_counter() - started < 10.0
