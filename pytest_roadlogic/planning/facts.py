@@ -149,18 +149,36 @@ def origin(automaton: SymbolicAutomaton, constraint) -> str:
 def lane_facts(node: int, bound: Bound, outside: bool) -> list[str]:
     """A lane bound (whole lanes in every encoding): ``lane_within`` its range, or ``lane_outside``
     it, below the largest lane under the range or above the smallest over it."""
-    actor, reference = atom(bound.term.actor), atom(bound.term.reference) if bound.term.reference else "none"
+    actor, reference = actors_of(bound)
     if outside:
-        below = "#inf" if bound.low == -math.inf else math.ceil(bound.low - 1e-9) - 1
-        above = "#sup" if bound.high == math.inf else math.floor(bound.high + 1e-9) + 1
-        if below == "#inf" and above == "#sup":
+        below, above = whole_outside(bound.low, bound.high)
+        if below == -math.inf and above == math.inf:
             return ["% never holds"]
-        return [f"lane_outside({node},{actor},{reference},{below},{above})."]
-    low = "#inf" if bound.low == -math.inf else math.ceil(bound.low - 1e-9)
-    high = "#sup" if bound.high == math.inf else math.floor(bound.high + 1e-9)
-    if low != "#inf" and high != "#sup" and low > high:
+        return [f"lane_outside({node},{actor},{reference},{','.join(bounds_text(below, above))})."]
+    low, high = whole_range(bound.low, bound.high)
+    if low > high:
         return ["% cannot hold: no whole lane in the range"]
-    return [f"lane_within({node},{actor},{reference},{low},{high})."]
+    return [f"lane_within({node},{actor},{reference},{','.join(bounds_text(low, high))})."]
+
+
+def actors_of(bound: Bound) -> tuple[str, str]:
+    """A bound's actor and reference as ASP terms (``none`` for an absolute bound)."""
+    return atom(bound.term.actor), atom(bound.term.reference) if bound.term.reference else "none"
+
+
+def whole_range(low: float, high: float, scale: float = 1.0) -> tuple[float, float]:
+    """The whole units of ``scale`` within [low, high] (infinite sides stay infinite)."""
+    lo = -math.inf if low == -math.inf else math.ceil(low / scale - 1e-9)
+    hi = math.inf if high == math.inf else math.floor(high / scale + 1e-9)
+    return lo, hi
+
+
+def whole_outside(low: float, high: float, margin: float = 0.0, scale: float = 1.0) -> tuple[float, float]:
+    """The largest whole unit below ``low - margin`` and the smallest above ``high + margin``
+    (-inf / inf for a side with no end): the values a negated bound may take."""
+    below = -math.inf if low == -math.inf else math.ceil((low - margin) / scale - 1e-9) - 1
+    above = math.inf if high == math.inf else math.floor((high + margin) / scale + 1e-9) + 1
+    return below, above
 
 
 def bounds_text(low, high) -> tuple[str, str]:

@@ -18,7 +18,7 @@ import random
 from ....frontend.errors import OscError, error_at
 from ....logic.automaton import SymbolicAutomaton
 from ....logic.guards import HEADWAY, POSITION, TRAVELED, Bound, Guard, Not
-from ...facts import atom, bounds_text, inset, with_automaton
+from ...facts import actors_of, atom, bounds_text, inset, whole_outside, whole_range, with_automaton
 from .settings import GridSettings
 
 
@@ -107,10 +107,9 @@ def node_facts(node: int, guard: Guard, settings: GridSettings, automaton: Symbo
         margin, scale, kind = settings.position_margin, settings.grid, "position"
     else:
         margin, scale, kind = settings.speed_margin, settings.grid / settings.dt, "speed"
-    actor, reference = atom(bound.term.actor), atom(bound.term.reference) if bound.term.reference else "none"
+    actor, reference = actors_of(bound)
     if outside:
-        below = -math.inf if bound.low == -math.inf else math.ceil((bound.low - margin) / scale - 1e-9) - 1
-        above = math.inf if bound.high == math.inf else math.floor((bound.high + margin) / scale + 1e-9) + 1
+        below, above = whole_outside(bound.low, bound.high, margin, scale)
         if below == -math.inf and above == math.inf:
             return ["% never holds"]
         low, high = bounds_text(below, above)
@@ -122,21 +121,14 @@ def node_facts(node: int, guard: Guard, settings: GridSettings, automaton: Symbo
     return [f"{kind}_within({node},{actor},{reference},{low},{high})."]
 
 
-def _grid_range(low: float, high: float, scale: float) -> tuple[float, float]:
-    """The whole grid units within [low, high] (infinite sides stay infinite)."""
-    lo = -math.inf if low == -math.inf else math.ceil(low / scale - 1e-9)
-    hi = math.inf if high == math.inf else math.floor(high / scale + 1e-9)
-    return lo, hi
-
-
 def planned_range(low: float, high: float, margin: float, scale: float) -> tuple[float, float]:
     """The grid values a plan may use for [low, high]: inset by the margin, unless that leaves none.
 
     A narrow range (a sampled value's one-cell band, say) can hold a grid value that every inset
     misses: [23, 24] inset to [23.25, 23.75] has no whole metre, so the plan uses the range itself.
     """
-    lo, hi = _grid_range(*inset(low, high, margin), scale)
-    return (lo, hi) if lo <= hi else _grid_range(low, high, scale)
+    lo, hi = whole_range(*inset(low, high, margin), scale)
+    return (lo, hi) if lo <= hi else whole_range(low, high, scale)
 
 
 # the grid's positions and speeds are separate integer fluents: a time headway (a gap over a
