@@ -42,7 +42,7 @@ def check_satisfiable(automaton: SymbolicAutomaton) -> None:
         return
     conflicts = list(dict.fromkeys(blocked.values()))
     raise UnsatisfiableScenario(
-        conflict_message(conflicts, automaton.parameters_of), conflicts, parameters=automaton.parameters
+        conflict_message(conflicts, automaton.parameters), conflicts, parameters=automaton.parameters
     )
 
 
@@ -58,7 +58,7 @@ def raise_reason(planner, error: NoPlanError, deadline: float, window=None) -> N
     conflict = smallest_conflict(planner, deadline)
     if conflict:
         raise UnsatisfiableScenario(
-            f"{error}\n" + conflict_message([conflict], planner.automaton.parameters_of),
+            f"{error}\n" + conflict_message([conflict], planner.automaton.parameters),
             [conflict],
             planner.settings.summary(planner.automaton.lanes),
             planner.automaton.parameters,

@@ -137,12 +137,13 @@ class UnsatisfiableScenario(NoPlanError):
         return OscError(diagnostics).report() if diagnostics else str(self)
 
 
-def conflict_message(conflicts: list[tuple], parameters_of=lambda constraint: ()) -> str:
+def conflict_message(conflicts: list[tuple], parameters: dict | None = None) -> str:
     """The groups of constraints that cannot hold together, each at its place and with the logical
-    parameters behind it (``parameters_of``: ``SymbolicAutomaton.parameters_of``)."""
+    parameters behind it (``parameters``: ``SymbolicAutomaton.parameters``, by place)."""
+    parameters = parameters or {}
     lines = ["the scenario can never be met: these constraints cannot hold at the same time"]
     for group in conflicts:
-        lines.append("  " + " and ".join(f"{c} (at {c.source}{_named(parameters_of(c))})" for c in group))
+        lines.append("  " + " and ".join(f"{c} (at {c.source}{_named(parameters.get(c.source, ()))})" for c in group))
     return "\n".join(lines)
 
 
