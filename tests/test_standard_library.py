@@ -3,6 +3,7 @@ what the tool reads, and every construct the tool executes is declared there wit
 parameters, so the library a user reads is the one the checker applies."""
 
 import math
+from pathlib import Path
 
 import pytest
 
@@ -44,7 +45,7 @@ def test_every_observable_a_condition_reads_is_a_declared_method_with_its_type()
         assert methods[name].returns == (observable.dimension or "int"), (
             "a plain number is declared as an int (a count of lanes)"
         )
-        assert [p for p, _ in methods[name].parameters] == (["reference"] if observable.needs_reference else [])
+        assert [p for p, _ in methods[name].parameters] == (list(observable.parameters) if observable.needs_reference else [])
 
 
 def test_the_unit_table_is_the_one_the_physical_part_declares():
@@ -52,14 +53,16 @@ def test_the_unit_table_is_the_one_the_physical_part_declares():
     assert dict(UNITS) == lib.units
     assert UNITS["kph"] == ("speed", pytest.approx(1 / 3.6)) and UNITS["km"] == ("length", 1000.0)
     assert UNITS["mph"][1] == 0.44704 and UNITS["min"] == ("time", 60.0)
-    assert "deg" not in UNITS and lib.types["angle"] is None  # declared, not modelled
-    assert dict(library.PHYSICAL_TYPES) == {
+    # every dimension is read; the four the pipeline plans are the physical types of the same name
+    assert UNITS["deg"] == ("angle", pytest.approx(math.pi / 180)) and lib.types["angle"] == "angle"
+    assert UNITS["celsius"] == ("temperature", 1.0, 273.15)
+    assert {name: library.PHYSICAL_TYPES[name] for name in ("length", "time", "speed", "acceleration")} == {
         "length": "length",
         "time": "time",
         "speed": "speed",
         "acceleration": "acceleration",
     }
-    assert all(math.isfinite(factor) and factor > 0 for _, factor in UNITS.values())
+    assert all(math.isfinite(unit[1]) and unit[1] > 0 for unit in UNITS.values())
 
 
 def test_the_tools_actor_types_are_the_libraries_road_users():
@@ -122,25 +125,21 @@ def test_an_actor_derived_from_an_abstract_library_actor_is_driven_as_a_vehicle_
     assert checked.scenarios[0].scenario.actors[0].base == "vehicle"
 
 
-def test_a_unit_of_a_dimension_the_tool_does_not_model_is_refused_by_name():
-    from pytest_roadlogic.frontend import OscError
-
-    with pytest.raises(OscError, match=r"4:13: error: not supported: unit 'deg' \(of angle"):
-        check_text("scenario s:\n    a: car\n    do a.drive(duration: 3s) with:\n        yaw(10deg)\n", "s.osc")
+def test_a_value_of_a_dimension_the_tool_does_not_plan_is_read_and_refused_where_it_would_be_planned():
+    checked = check_text("scenario s:\n    a: car\n    do a.drive(duration: 3s) with:\n        yaw(10deg)\n", "s.osc")
+    assert [(d.location.line, d.location.column, d.message) for d in checked.errors] == [
+        (4, 9, "not supported: the standard's modifier 'yaw'")
+    ]
 
 
 def test_a_file_that_declares_a_library_unit_as_another_dimension_is_told_so_at_the_declaration(tmp_path):
-    from pytest_roadlogic.frontend import OscError, check_file
+    from pytest_roadlogic.frontend import check_file
 
     (tmp_path / "lib.osc").write_text("type length is SI(m: 1)\nunit deg of length is SI(m: 1, factor: 0.5)\n")
     (tmp_path / "s.osc").write_text(
         "import lib.osc\nscenario s:\n    a, b: car\n    do b.drive(duration: 3s) with:\n        position(40deg, behind: a, at: start)\n"
     )
-    with pytest.raises(OscError) as caught:
-        check_file(tmp_path / "s.osc")
-    report = str(caught.value)
-    assert (
-        "lib.osc:2:6: error: unit 'deg' is declared as a length unit, but deg is a unit of angle in the standard library"
-        in report
-    )
-    assert "s.osc:5:18: error: not supported: unit 'deg'" in report
+    errors = check_file(tmp_path / "s.osc").errors
+    report = [f"{Path(d.location.path).name}:{d.location.line}:{d.location.column}: {d.message}" for d in errors]
+    assert "lib.osc:2:6: unit 'deg' is declared as a unit of length, but deg is a unit of angle" in report
+    assert "s.osc:5:18: position() expects a length for distance, got an angle" in report

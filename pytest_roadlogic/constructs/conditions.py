@@ -13,6 +13,11 @@ guard algebra (so the planner and the monitor read it alike):
 - ``a.relative_lane(reference: b)``: how many lanes ``a`` is to the left of ``b`` (0: the same
   lane, -1: one lane to its right), ``l(b) - l(a)`` with lanes counted from the left. Left and
   right mean the same in both dialects, so the condition does not depend on how lanes are numbered.
+- ``a.space_gap(reference: b, direction: longitudinal | lateral)`` (the standard's
+  traffic-participant method): the free distance between the two cars' boxes, along the road or
+  across it, positive when ``a`` is ahead of ``b`` (longitudinal) or left of it (lateral), 0 while
+  the boxes overlap in that direction. A monotone function of ``p(a) - p(b)`` (or of the lanes
+  between them, a lane being LANE_WIDTH wide), so a bound on it is a bound on that term.
 - ``a.traveled_distance()``: the metres ``a`` has covered since the run's first instant (the
   plan's step 0, the simulation's first sample), ``d(a) = p(a) - p(a at start)`` (OpenSCENARIO XML's TraveledDistanceCondition; the standard's
   DSL library has no method for it, so the name follows the XML's condition).
@@ -39,6 +44,7 @@ from ..frontend.library import refused_call
 from ..frontend.tolerances import SPEED_TOLERANCE, widened
 from ..frontend.units import LENGTH, SPEED, TIME
 from ..frontend.values import EvaluationError, argument_interval, describe
+from ..logic.dimensions import CAR_LENGTH, CAR_WIDTH, LANE_WIDTH
 from ..logic.guards import (
     HEADWAY,
     LANE,
@@ -56,14 +62,42 @@ from ..logic.guards import (
 )
 
 
+def _between_bumpers(extent: float, scale: float = 1.0) -> Callable[[float, float], tuple[float, float]]:
+    """The range of a centre-to-centre difference d whose gap between the boxes is in [lo, hi]: the
+    gap is d - extent ahead of the reference, d + extent behind it, 0 while the boxes overlap (the
+    standard's space_gap), a monotone function of d, so its inverse is exact; ``scale`` is metres
+    per unit of d (a lane's width when d counts lanes)."""
+
+    def bounds(low: float, high: float) -> tuple[float, float]:
+        low = (low + extent if low > 0 else low - extent) / scale
+        high = (high + extent if high >= 0 else high - extent) / scale
+        return low, high
+
+    return bounds
+
+
+def _same(low: float, high: float) -> tuple[float, float]:
+    return low, high
+
+
 @dataclass(frozen=True)
 class Observable:
-    """A method a condition may call on an actor, as a term of the guard algebra."""
+    """A method a condition may call on an actor, as a term of the guard algebra.
+
+    ``parameters`` are its arguments after the actor (``reference``, and ``direction`` for the
+    standard's gap methods, whose ``lateral`` form has its own term); ``bounds`` maps a range of the
+    observable to the range of its term."""
 
     name: str
     dimension: str | None  # None: a plain number (a count of lanes)
     term: Callable[[str, str | None], Term]  # (actor, reference) -> term
     needs_reference: bool
+    bounds: Callable[[float, float], tuple[float, float]] = _same
+    lateral: Observable | None = None  # the form with direction: lateral
+
+    @property
+    def parameters(self) -> tuple[str, ...]:
+        return ("reference", "direction") if self.lateral is not None else ("reference",)
 
 
 OBSERVABLES = {
@@ -75,14 +109,35 @@ OBSERVABLES = {
         Observable("relative_speed", SPEED, lambda a, b: Term(SPEED_Q, a, b), True),
         Observable("traveled_distance", LENGTH, lambda a, _: Term(TRAVELED, a), False),
         Observable("relative_lane", None, lambda a, b: Term(LANE, b, a), True),
+        # the standard's traffic_participant.space_gap: between the boxes, positive when the actor
+        # is ahead of (longitudinal) or left of (lateral) the reference
+        Observable(
+            "space_gap",
+            LENGTH,
+            lambda a, b: Term(POSITION, a, b),
+            True,
+            _between_bumpers(CAR_LENGTH),
+            lateral=Observable(
+                "space_gap", LENGTH, lambda a, b: Term(LANE, b, a), True, _between_bumpers(CAR_WIDTH, LANE_WIDTH)
+            ),
+        ),
     )
+}
+# the standard's methods a condition cannot read yet, with what to write instead
+NOT_YET = {
+    "time_gap": "a.time_headway(reference: b) (front to front over the follower's speed)",
+    "time_to_collision": "a.space_gap(b, longitudinal) and a.relative_speed(reference: b)",
 }
 _MIRROR = {"<": ">", "<=": ">=", ">": "<", ">=": "<=", "==": "=="}
 _EXAMPLE = "e.g. v1.speed >= 20mps or ego.space_headway(reference: lead) < 10m"
 
 
 def usage() -> str:
-    return ", ".join(f"a.{o.name}" + ("(reference: b)" if o.needs_reference else "") for o in OBSERVABLES.values())
+    return ", ".join(
+        f"a.{o.name}"
+        + ("(reference: b, direction: longitudinal)" if o.lateral else "(reference: b)" if o.needs_reference else "")
+        for o in OBSERVABLES.values()
+    )
 
 
 def condition_guard(condition: model.Expression, env: dict, actors: Collection[str]) -> Guard:
@@ -119,6 +174,7 @@ def condition_guard(condition: model.Expression, env: dict, actors: Collection[s
         high = value.high if operator in ("<", "<=", "==") else math.inf
         if operator == "==" and observable.dimension == SPEED:
             low, high = widened(low, high, SPEED_TOLERANCE)
+        low, high = observable.bounds(low, high)
         return Bound(term, low, high, condition.location)
     refused = refused_call(condition)
     if refused is not None:
@@ -157,12 +213,28 @@ def _observable(expression: model.Expression, actors: Collection[str]) -> tuple[
         raise error_at(expression.location, f"unknown actor {actor!r}", f"actors: {', '.join(sorted(actors))}")
     observable = OBSERVABLES.get(method)
     if observable is None:
-        raise error_at(expression.location, f"not supported in a condition: {method}()", f"observables: {usage()}")
+        hint = f"write {NOT_YET[method]}" if method in NOT_YET else f"observables: {usage()}"
+        raise error_at(expression.location, f"not supported in a condition: {method}()", hint)
     reference = None
+    positional = list(observable.parameters)
     for argument in expression.arguments:
-        if argument.name not in (None, "reference") or not isinstance(argument.value, model.Name):
+        name = argument.name
+        if name is None and positional:
+            name = positional[0]
+        if name in positional:
+            positional.remove(name)
+        if name == "direction" and observable.lateral is not None:
+            direction = argument.value.name if isinstance(argument.value, model.Name) else None
+            if direction not in ("longitudinal", "lateral"):
+                raise error_at(argument.location, f"{method}() takes direction: longitudinal or lateral")
+            if direction == "lateral":
+                observable = observable.lateral
+            continue
+        if name != "reference" or not isinstance(argument.value, model.Name):
             raise error_at(
-                argument.location, f"{method}() takes reference: <actor>", f"e.g. {actor}.{method}(reference: lead)"
+                argument.location,
+                f"{method}() takes {', '.join(f'{p}:' for p in observable.parameters)}",
+                f"e.g. {actor}.{method}(reference: lead)",
             )
         reference = argument.value.name
         if reference not in actors:

@@ -27,7 +27,7 @@ from .events import EventChecks
 from .field_types import FieldTyping
 from .imports import ImportLoading
 from .inheritance import inherited
-from .invocation import RECURSION, called_scenarios, expand_calls
+from .invocation import RECURSION, called_scenarios, expand_calls, substitute_names
 from .logical import logical_parameters_of
 from .parameters import ParameterSpace, parameter_space
 from .parser import parse_text
@@ -56,6 +56,18 @@ def check_file(
     checker = _Checker(lanes, registry, dialect, roots or ReadRoots.around(path))
     main, checker.units = parse_with_declared_units(path, checker.roots)
     return checker.run(main)
+
+
+def _attribute_owners(constraint, actors: set[str]) -> set[str]:
+    """The actors whose fields a constraint is about (``keep(npc.length == 4.5m)``), or an empty set
+    when it mentions anything else (a parameter)."""
+    if not isinstance(constraint, model.Keep):
+        return set()
+    names = [n for n in names_in(constraint.expression) if n.enum is None]
+    heads = {n.name.partition(".")[0] for n in names}
+    if names and all("." in n.name for n in names) and heads <= actors:
+        return heads
+    return set()
 
 
 def check_text(
@@ -156,6 +168,15 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks):
     def warning(self, location: SourceLocation, message: str, hint: str | None = None) -> None:
         self.diagnostics.append(Diagnostic(location, message, hint, "warning"))
 
+    def _actor_attributes(self, location: SourceLocation, actors: str) -> None:
+        """A constraint on an actor's own fields (its length, colour, model): read and not enforced,
+        since every vehicle is simulated with the tool's dimensions; said where it is written."""
+        self.warning(
+            location,
+            f"a constraint on the fields of {actors} is read but not enforced: vehicles are simulated with the tool's own dimensions",
+            "constrain what the scenario does through modifiers (speed, position, lane)",
+        )
+
     # -------------------------------------------------------------- files
 
     def run(self, main: model.OscFile) -> CheckedFile:
@@ -231,6 +252,7 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks):
             self.diagnostics.extend(problems)
             if any(RECURSION in problem.message for problem in problems):
                 continue  # the call left in place would only be reported again as an unknown action
+            scenario = self._string_constants(scenario, globals_)
             checked, space, lanes = self._scenario(scenario, globals_)
             try:
                 parameters = logical_parameters_of(checked, space, self.registry)
@@ -243,6 +265,33 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks):
         )
         checked_file = replace(main, scenarios=tuple(c.scenario for c in scenarios))
         return CheckedFile(checked_file, self.diagnostics, self.sources, tuple(scenarios))
+
+    def _string_constants(self, scenario: model.Scenario, globals_: tuple[model.Field, ...]) -> model.Scenario:
+        """The scenario with each string parameter that is a constant (a value, no constraint)
+        written out where its behaviors use it: CARLA's suites name the map and an ``at:`` in
+        globals (``global my_map: string = "Town04"``, ``at: start_point`` with ``"start"``). A value
+        that is a member of an enum becomes that member; another, the string."""
+        members = {m for values in self.enums.values() for m in values}
+        constants = {}
+        for item in (*globals_, *scenario.fields):
+            if item.type == "string" and isinstance(item.default, model.Literal) and not item.constraints:
+                text = item.default.value
+                if isinstance(text, str):
+                    constants[item.name] = (
+                        model.Name(text, item.default.location)
+                        if text in members
+                        else model.Literal(text, item.default.location)
+                    )
+        mentioned = {n.name for c in scenario.constraints if isinstance(c, model.Keep) for n in names_in(c.expression)}
+        constants = {name: value for name, value in constants.items() if name not in mentioned}
+        if not constants:
+            return scenario
+        return replace(
+            scenario,
+            behavior=substitute_names(scenario.behavior, constants),
+            behaviors=substitute_names(scenario.behaviors, constants),
+            modifiers=substitute_names(scenario.modifiers, constants),
+        )
 
     def _declarations(self, osc: model.OscFile) -> None:
         for enum in osc.enums:
@@ -310,7 +359,10 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks):
                 )
 
     def _unsupported(self, item: model.Unsupported) -> None:
-        self.error(item.location, f"not supported: {item.construct}", item.hint)
+        if item.severity == "warning":
+            self.warning(item.location, f"{item.construct} is read and ignored", item.hint)
+        else:
+            self.error(item.location, f"not supported: {item.construct}", item.hint)
 
     # -------------------------------------------------------------- scenarios
 
@@ -349,19 +401,30 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks):
                 actors.append(model.Actor(item.name, item.type, item.location, base))
                 if item.constraints or item.default is not None:
                     where = item.constraints[0].location if item.constraints else item.default.location
-                    self.error(
-                        where,
-                        "not supported: constraints on an actor's fields",
-                        "constrain the actor through modifiers (speed, position, lane)",
-                    )
+                    self._actor_attributes(where, item.name)
             elif kind == "parameter":
                 parameters.append(item)
             elif kind == "road":
                 roads.append(item.name)
         self.roads = set(roads)
-        if library.DUT_ACTOR not in declared and _mentions(scenario, library.DUT_ACTOR):
-            actors.append(model.Actor(library.DUT_ACTOR, "vehicle", scenario.location, "vehicle"))
-        space, diagnostics = parameter_space(tuple(parameters), tuple(c for c in scenario.constraints), self.enums)
+        for implicit in library.IMPLICIT_VEHICLES:
+            if implicit not in declared and _mentions(scenario, implicit):
+                actors.append(model.Actor(implicit, "vehicle", scenario.location, "vehicle"))
+                if not implicit.startswith("dut"):
+                    self.warning(
+                        _first_mention(scenario, implicit) or scenario.location,
+                        f"{implicit!r} is not declared: read as a vehicle, as CARLA's scenario runner does",
+                        f"declare it: {implicit}: vehicle",
+                    )
+        actor_names = {a.name for a in actors}
+        constraints = []
+        for constraint in scenario.constraints:
+            owners = _attribute_owners(constraint, actor_names)
+            if owners:
+                self._actor_attributes(constraint.location, ", ".join(sorted(owners)))
+            else:
+                constraints.append(constraint)
+        space, diagnostics = parameter_space(tuple(parameters), tuple(constraints), self.enums)
         self.diagnostics.extend(diagnostics)
         checked = replace(scenario, actors=tuple(actors), parameters=tuple(parameters))
         env = self._environment(checked, space)
@@ -634,6 +697,9 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks):
                 used_actors.add(value.name)
             return
         if kind == "string":
+            named = scenario.parameter(value.name) if isinstance(value, model.Name) else None
+            if named is not None and named.type == "string":
+                return  # a string parameter (CARLA's suites: a global map name)
             if not (isinstance(value, model.Literal) and isinstance(value.value, str)):
                 self.error(value.location, f'{parameter.name}: takes a string, e.g. "Town04"')
             return
@@ -726,15 +792,21 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks):
 
 
 def _mentions(scenario: model.Scenario, actor: str) -> bool:
+    return _first_mention(scenario, actor) is not None
+
+
+def _first_mention(scenario: model.Scenario, actor: str) -> SourceLocation | None:
+    """Where the scenario's behaviors first name ``actor``: as an invocation's actor or an argument."""
     for behavior in scenario.behaviors:
         for node in model.walk(behavior):
             if isinstance(node, model.Invocation):
                 if node.actor == actor:
-                    return True
+                    return node.location
                 arguments = [*node.arguments, *(a for m in node.modifiers for a in m.arguments)]
-                if any(isinstance(a.value, model.Name) and a.value.name == actor for a in arguments):
-                    return True
-    return False
+                for argument in arguments:
+                    if isinstance(argument.value, model.Name) and argument.value.name == actor:
+                        return argument.value.location
+    return None
 
 
 def _extended(scenario: model.Scenario, extensions) -> model.Scenario:

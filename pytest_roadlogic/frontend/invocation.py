@@ -192,6 +192,11 @@ def _bind(
     return substitution
 
 
+def substitute_names(node, substitution: Mapping[str, model.Expression]):
+    """``node`` (a model node or a tuple of them) with the bare names in ``substitution`` replaced."""
+    return _substitute(node, substitution, None)
+
+
 def _substitute(node, substitution: Mapping[str, model.Expression], owner: str | None):
     """``node`` with the callee's names replaced; an action without an actor goes to ``owner``."""
     if isinstance(node, model.Name):

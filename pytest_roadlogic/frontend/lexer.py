@@ -3,8 +3,10 @@
 The grammar's lexer emits one NEWLINE token per line break, carrying the whitespace that starts the
 next line. This wrapper (1) drops line breaks inside ``(...)`` and ``[...]``, (2) folds blank and
 comment-only lines, (3) compares each logical line's indentation with a stack and emits INDENT or
-DEDENT tokens, like CPython's tokenizer, and (4) closes every open block at the end of the file,
-so that a missing final newline is harmless.
+DEDENT tokens, like CPython's tokenizer, (4) closes every open block at the end of the file,
+so that a missing final newline is harmless, and (5) reads a number and a name after it on the same
+line (``20 kph``, as other OS2 grammars allow) as one physical literal: a number followed by a name
+has no other reading.
 """
 
 from __future__ import annotations
@@ -68,11 +70,31 @@ class IndentingLexer(OpenScenario2Lexer):
                 return  # implicit line joining inside brackets
             self._line_end(token)
             return
+        if kind in (self.IntLiteral, self.FloatLiteral):
+            token = self._with_unit(token)
         if kind in (self.LPAREN, self.LBRACK):
             self._depth += 1
         elif kind in (self.RPAREN, self.RBRACK):
             self._depth = max(0, self._depth - 1)
         self._emit(token)
+
+    def _with_unit(self, number: Token) -> Token:
+        """``20 kph``: the number and the name after it as the physical literal ``20kph``."""
+        following = self._raw()
+        if following.type != self.Identifier or following.line != number.line or following.text.startswith("|"):
+            self._lookahead = following
+            return number
+        token = CommonToken(
+            source=number.source,
+            type=self.PhysicalLiteral,
+            channel=Token.DEFAULT_CHANNEL,
+            start=number.start,
+            stop=following.stop,
+        )
+        token.text = number.text + following.text
+        token.line = number.line
+        token.column = number.column
+        return token
 
     def _line_end(self, newline: Token) -> None:
         following = super().nextToken()

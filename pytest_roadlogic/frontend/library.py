@@ -24,6 +24,9 @@ SCENARIO_OWNERS = ("traffic", "env", "osc_actor", "dut")
 # The standard library's device under test: usable without a declaration, as the standard's
 # own examples do (`dut.car.drive()`).
 DUT_ACTOR = "dut.car"
+# Vehicles that CARLA's scenario runner (and suites written for it) use without declaring them:
+# read as vehicles, the last two with a warning asking for a declaration.
+IMPLICIT_VEHICLES = (DUT_ACTOR, "dut", "ego", "npc")
 # The standard library's actors above the road users (stdlib/osc/actors.osc): a type a file derives
 # from one of them is driven as a vehicle, with a warning, as a bare actor type is.
 ABSTRACT_ACTOR_TYPES: Mapping[str, None] = LazyTable(

@@ -187,6 +187,7 @@ class Unsupported:
     construct: str
     location: SourceLocation
     hint: str | None = None
+    severity: str = "error"  # "warning": read and ignored, nothing it would change is executed
 
 
 # ------------------------------------------------------------------ behavior
@@ -366,6 +367,7 @@ class UnitDeclaration:
     exponents: tuple[tuple[str, float], ...]
     factor: float
     location: SourceLocation
+    offset: float = 0.0  # SI value of the unit's zero (a temperature's): value * factor + offset
 
 
 @dataclass(frozen=True)

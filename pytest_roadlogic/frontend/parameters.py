@@ -14,7 +14,7 @@ when a parameter is left open (the base strategy: the planner picks within the r
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import replace, dataclass
 
 from . import library, model
 from .errors import Diagnostic, SourceLocation
@@ -132,6 +132,7 @@ class _Resolver:
         self.defaults: dict[str, tuple[object, SourceLocation]] = {}
         self.choices: dict[str, tuple[object, ...]] = {}  # bool, enum and string parameters
         self.relations: list[model.Keep] = []
+        self.computed: list[tuple[str, str, model.Expression, model.Expression, model.Keep]] = []
         self.diagnostics: list[Diagnostic] = []
         for parameter in parameters:
             if parameter.type in library.PHYSICAL_TYPES or parameter.type in library.NUMBER_TYPES:
@@ -166,6 +167,7 @@ class _Resolver:
                 continue
             for atom in _conjuncts(constraint.expression):
                 self.apply_atom(atom, constraint)
+        self.apply_computed()
         space = ParameterSpace({p.name: self.domain(p) for p in self.parameters}, tuple(self.relations))
         for relation in space.relations:
             if space.refutes(relation):
@@ -178,6 +180,32 @@ class _Resolver:
                     f"widen the ranges of {', '.join(names)} or the constraint" if names else "widen the constraint",
                 )
         return space
+
+    def apply_computed(self) -> None:
+        """Bounds computed from other parameters: each bounds its parameter by the hull of the
+        values the others' ranges give it, and the constraint is a relation every sample meets."""
+        for name, operator, other, atom, constraint in self.computed:
+            mentioned = {n.name for n in names_in(other)} & set(self.by_name)
+            env = {**self.env, **{m: self.current(m) for m in mentioned if m in self.hard}}
+            saved, self.env = self.env, env
+            try:
+                self.bound(name, operator, other, atom, constraint)
+            finally:
+                self.env = saved
+            it = {"it": model.Name(name, constraint.location)}
+            self.relations.append(
+                model.Keep(_named(atom, it), constraint.strength, constraint.location, constraint.subject)
+            )
+
+    def current(self, name: str) -> Interval:
+        """A numeric parameter's range as read so far: its hard bounds, narrowed by its default."""
+        interval = self.hard[name]
+        default = self.defaults.get(name) if name not in self.overridden else None
+        if default is not None and isinstance(default[0], Interval):
+            narrowed = interval.intersect(default[0])
+            if not narrowed.empty:
+                return narrowed
+        return interval
 
     def domain(self, parameter: model.Field) -> ParameterDomain:
         name = parameter.name
@@ -261,6 +289,11 @@ class _Resolver:
                 name, other, operator = right, atom.left, MIRRORED[operator]
             if name is not None and not (set(n.name for n in names_in(other)) & set(by_name)):
                 self.bound(name, operator, other, atom, constraint)
+                return
+            if name is not None and name in self.hard and operator in ("in", "==", "<", "<=", ">", ">="):
+                # a bound computed from other parameters (``it in [min_gap..max_gap]``): bounded by
+                # their ranges once all constraints are read, and kept as a relation for samples
+                self.computed.append((name, operator, other, atom, constraint))
                 return
         # A relation between parameters (or a form with or/not/=>): checked on samples.
         if constraint.strength == "default":
@@ -371,6 +404,17 @@ class _Resolver:
             return expression.name
         self.add_error(expression.location, f"{parameter.name!r} is a {parameter.type}: write one of its values")
         return None
+
+
+def _named(expression, names: dict[str, model.Name]):
+    """``expression`` with the bare names in ``names`` replaced (``it`` by its parameter)."""
+    if isinstance(expression, model.Name):
+        return names.get(expression.name, expression) if expression.enum is None else expression
+    if isinstance(expression, model.Binary):
+        return replace(expression, left=_named(expression.left, names), right=_named(expression.right, names))
+    if isinstance(expression, model.Unary):
+        return replace(expression, operand=_named(expression.operand, names))
+    return expression
 
 
 def _conjuncts(expression: model.Expression):

@@ -2,16 +2,17 @@
 
 ``type velocity is SI(m: 1, s: -1)`` names the dimension with those SI exponents;
 ``unit kph of velocity is SI(m: 1, s: -1, factor: 0.277777778)`` a unit of it, ``factor`` SI units
-per unit. The pipeline knows four dimensions (length, time, speed, acceleration: metres and
-seconds); a type of another (``angle``: rad, ``mass``: kg) is accepted, and its units are left out
-of the table, so that using one says "unknown unit" at its place rather than mixing it with the
-others.
+per unit. Every dimension is read (``units.dimension_of`` names it: ``angle``, ``temperature``);
+the pipeline plans four (length, time, speed, acceleration), and a value of another is refused
+only where it would be planned. A unit may have an ``offset`` (a temperature's zero): its SI value
+is ``value * factor + offset``.
 
 Physical literals are resolved when a file is parsed, before its imports are known: a file whose
 literals use a unit it or an import declares is parsed again with those units
-(``parse_with_declared_units``). A declaration must agree with the built-in unit or type of the
-same name (same dimension; a factor within 1e-6 relative, so that 0.277777778 is kph); one that
-contradicts it is a located error.
+(``parse_with_declared_units``). A declaration of a built-in unit's name must have its dimension (a located error
+otherwise); a factor or offset that departs from the standard's beyond rounding (1e-6 relative)
+is read as the file declares it, with a located warning (CARLA's ``basic.osc`` writes mph as
+0.447038889).
 """
 
 from __future__ import annotations
@@ -88,7 +89,7 @@ def declared_physics(files: Iterable[model.OscFile]) -> DeclaredPhysics:
                 )
                 continue
             if dimension is None:
-                continue  # a unit of a dimension the pipeline does not model
+                continue  # a unit of plain numbers
             if unit.factor <= 0:
                 physics.problems.append(
                     Diagnostic(
@@ -109,19 +110,38 @@ def declared_physics(files: Iterable[model.OscFile]) -> DeclaredPhysics:
                 )
                 continue
             known = UNITS.get(unit.name) or physics.units.get(unit.name)
-            if known is not None and (
-                known[0] != dimension or not math.isclose(known[1], unit.factor, rel_tol=FACTOR_TOLERANCE)
-            ):
+            if known is not None and known[0] != dimension:
                 physics.problems.append(
                     Diagnostic(
                         unit.location,
-                        f"unit {unit.name!r} is declared as {unit.factor:g} SI {dimension} units, but {unit.name} is {known[1]:.9g} SI {known[0]} units",
-                        "remove the declaration (the tool knows the unit) or give the unit another name",
+                        f"unit {unit.name!r} is declared as a unit of {dimension}, but {unit.name} is a unit of {known[0]}",
+                        "give the unit another name",
                     )
                 )
                 continue
-            physics.units[unit.name] = (dimension, unit.factor)
+            offset = (known[2] if len(known) > 2 else 0.0) if known is not None else 0.0
+            if known is not None and not (
+                math.isclose(known[1], unit.factor, rel_tol=FACTOR_TOLERANCE) and math.isclose(offset, unit.offset)
+            ):
+                # the file's own declaration is what its author measured with: read, with a warning
+                physics.problems.append(
+                    Diagnostic(
+                        unit.location,
+                        f"unit {unit.name!r} is declared as {unit.factor:.9g} SI {dimension} units"
+                        + (f" from {unit.offset:.9g}" if unit.offset else "")
+                        + f"; the standard's {unit.name} is {known[1]:.9g}"
+                        + (f" from {offset:.9g}" if offset else "")
+                        + f" ({_departure(known[1], unit.factor)}); this file's values are read with its own",
+                        "remove the declaration to use the standard's unit",
+                        "warning",
+                    )
+                )
+            physics.units[unit.name] = (dimension, unit.factor, unit.offset) if unit.offset else (dimension, unit.factor)
     return physics
+
+
+def _departure(standard: float, declared: float) -> str:
+    return f"{abs(declared - standard) / standard:.1e} relative"
 
 
 def _show(dimension: str | None) -> str:
@@ -142,11 +162,20 @@ def parse_with_declared_units(
     Returns the file and the unit table its imports are to be parsed with. Imports outside
     ``roots`` are not read (the checker reports them)."""
     try:
-        return parse_file(path), UNITS
+        parsed = parse_file(path)
     except OscError as error:
         if not any(d.message.startswith(_UNRESOLVED_UNIT) for d in error.diagnostics):
             raise
         original = error
+    else:
+        if not parsed.imports and not parsed.units:
+            return parsed, UNITS
+        # a unit that the file or an import declares otherwise than the standard is read as declared
+        physics = declared_physics(_closure(Path(path), roots or ReadRoots.around(path)))
+        if all(UNITS.get(name) == unit for name, unit in physics.units.items()):
+            return parsed, UNITS
+        table = physics.table()
+        return parse_file(path, table), table
     files = _closure(Path(path), roots or ReadRoots.around(path))
     physics = declared_physics(files)
     try:
@@ -155,11 +184,12 @@ def parse_with_declared_units(
         table = physics.table()
         return parse_file(path, table), table
     except OscError as error:
-        if not physics.problems:
+        if not any(p.severity == "error" for p in physics.problems):
             raise
         # a unit still unresolved may be one whose declaration is wrong: report that as well
         sources = {**{f.path: f.source_text for f in files}, **error.sources}
-        raise OscError([*physics.problems, *error.diagnostics], error.source_text, sources) from None
+        problems = [p for p in physics.problems if p.severity == "error"]
+        raise OscError([*problems, *error.diagnostics], error.source_text, sources) from None
 
 
 # how the parser reports a unit that its table does not resolve (Builder.unit)

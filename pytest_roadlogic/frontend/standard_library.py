@@ -91,7 +91,7 @@ def standard_library() -> StandardLibrary:
             types[declared.name] = dimension_of(declared.exponents)
         for unit in osc.units:
             if (dimension := dimension_of(unit.exponents)) is not None:
-                units[unit.name] = (dimension, unit.factor)
+                units[unit.name] = (dimension, unit.factor, unit.offset) if unit.offset else (dimension, unit.factor)
             else:
                 unmodelled[unit.name] = unit.type
         for enum in osc.enums:

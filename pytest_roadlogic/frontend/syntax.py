@@ -143,6 +143,7 @@ class _Builder:
         self.text = text
         self.units = units
         self.unmodelled = unmodelled
+        self.ignored: list[model.Unsupported] = []  # read and ignored where found, reported with the file
         self.diagnostics: list[Diagnostic] = []
 
     def error(self, location: SourceLocation, message: str, hint: str | None = None) -> None:
@@ -181,15 +182,15 @@ class _Builder:
                 if isinstance(decl, P.ScenarioDeclarationContext):
                     scenarios.append(self.scenario(decl))
                 elif isinstance(decl, P.PhysicalTypeDeclarationContext):
-                    exponents, _ = self.si(decl, allow_factor=False)
+                    exponents, _, _ = self.si(decl, allow_factor=False)
                     physical_types.append(
                         model.PhysicalTypeDeclaration(self.name(decl.name), exponents, self.loc(decl.name))
                     )
                 elif isinstance(decl, P.UnitDeclarationContext):
-                    exponents, factor = self.si(decl, allow_factor=True)
+                    exponents, factor, offset = self.si(decl, allow_factor=True)
                     units.append(
                         model.UnitDeclaration(
-                            self.name(decl.name), self.name(decl.type_), exponents, factor, self.loc(decl.name)
+                            self.name(decl.name), self.name(decl.type_), exponents, factor, self.loc(decl.name), offset
                         )
                     )
                 elif isinstance(decl, (P.ActorDeclarationContext, P.StructDeclarationContext)):
@@ -259,6 +260,7 @@ class _Builder:
                         )
                     )
         unsupported.extend(self.qualified_names(ctx))
+        unsupported.extend(self.ignored)
         return model.OscFile(
             path=self.path,
             scenarios=tuple(scenarios),
@@ -275,12 +277,14 @@ class _Builder:
             modifier_declarations=tuple(modifiers),
         )
 
-    def si(self, ctx, allow_factor: bool) -> tuple[tuple[tuple[str, float], ...], float]:
-        """The ``SI(m: 1, s: -1, factor: f)`` of a type or unit declaration: exponents and factor."""
+    def si(self, ctx, allow_factor: bool) -> tuple[tuple[tuple[str, float], ...], float, float]:
+        """The ``SI(m: 1, s: -1, factor: f, offset: o)`` of a type or unit declaration: exponents,
+        factor and offset."""
         if self.name(ctx.si) != "SI":
             self.error(self.loc(ctx.si), f"expected SI(...), got {self.name(ctx.si)}(...)", "write SI(m: 1, s: -1)")
         exponents: list[tuple[str, float]] = []
         factor = 1.0
+        offset = 0.0
         for argument in self.arguments(ctx.argumentList()):
             value = argument.value  # a signed number is one Quantity (see expression())
             if argument.name is None or not isinstance(value, model.Quantity) or value.dimension is not None:
@@ -289,13 +293,10 @@ class _Builder:
             if argument.name == "factor" and allow_factor:
                 factor = value.value
             elif argument.name == "offset" and allow_factor:
-                if value.value != 0:
-                    self.error(
-                        argument.location, "not supported: a unit with an offset", "declare the unit without offset:"
-                    )
+                offset = value.value
             else:
                 exponents.append((argument.name, value.value))
-        return tuple(exponents), factor
+        return tuple(exponents), factor, offset
 
     def qualified_names(self, ctx) -> list[model.Unsupported]:
         """Every 2.1 namespace qualifier (``ns::name``), refused at its place: the tool reads one
@@ -380,11 +381,7 @@ class _Builder:
                     )
                 )
             elif isinstance(item, P.CoverageDeclarationContext):
-                unsupported.append(
-                    model.Unsupported(
-                        f"{item.getChild(0).getText()}()", self.loc(item), "coverage is not collected; remove the line"
-                    )
-                )
+                unsupported.append(self.coverage(item))
             elif isinstance(item, P.OnDirectiveContext):
                 unsupported.append(
                     model.Unsupported("on", self.loc(item), "express the reaction as a serial phase instead")
@@ -422,6 +419,16 @@ class _Builder:
         )
         return model.TypeDeclaration(kind, name, parent, body.fields, body.constraints, body.location), refused
 
+    def coverage(self, ctx: P.CoverageDeclarationContext) -> model.Unsupported:
+        """``cover(...)``/``record(...)``: coverage the tool does not collect; it changes nothing the
+        tool plans or checks, so it is read with a warning."""
+        return model.Unsupported(
+            f"{ctx.getChild(0).getText()}()",
+            self.loc(ctx),
+            "coverage is not collected: the sampled values are in each case's report (case.json)",
+            severity="warning",
+        )
+
     def fields(self, ctx: P.FieldDeclarationContext) -> list[model.Field]:
         declarator = ctx.typeDeclarator()
         type_name = self.name(declarator.identifier())
@@ -434,6 +441,9 @@ class _Builder:
                 item = constraint.getChild(0)
                 if isinstance(item, P.KeepConstraintContext):
                     constraints.append(self.keep(item, subject=name))
+                elif isinstance(item, P.CoverageDeclarationContext):
+                    if ident is ctx.identifier()[0]:
+                        self.ignored.append(self.coverage(item))
                 else:
                     constraints.append(self.remove_default(item))
             result.append(
@@ -549,12 +559,10 @@ class _Builder:
         if ctx is None:
             return ()
         result = []
-        seen_named = False
+        # a positional argument after a named one (which public files write) is read as the first
+        # parameter no argument names (library.bind)
         for arg in ctx.argument():
             name = self.name(arg.name) if arg.name is not None else None
-            if name is None and seen_named:
-                self.error(self.loc(arg), "a positional argument follows a named one", "put positional arguments first")
-            seen_named = seen_named or name is not None
             result.append(model.Argument(name, self.expression(arg.expression()), self.loc(arg)))
         return tuple(result)
 
@@ -570,6 +578,12 @@ class _Builder:
                 return model.Name(f"{base.name}.{self.name(ctx.identifier())}", base.location)
             self.error(location, "a field can only be read from a name, e.g. it.speed or v1.length")
             return base
+        if isinstance(ctx, P.TypeTestContext) and ctx.op.type == P.AS:
+            # ``x.as(T)``: x seen as a T; on a name it is that name (``ego.as(vehicle).speed`` reads
+            # ego's speed); the tool's actors have one type each, so there is nothing to convert
+            base = self.expression(ctx.expression())
+            if isinstance(base, model.Name) and base.enum is None:
+                return base
         if isinstance(ctx, (P.TypeTestContext, P.ElementAccessContext, P.ConditionalContext)):
             # read, never evaluated: a call named after the construct (library.UNSUPPORTED_EXPRESSIONS)
             if isinstance(ctx, P.TypeTestContext):
@@ -639,6 +653,10 @@ class _Builder:
         return model.Literal(ctx.getText(), location)
 
     def range(self, low, high, unit_token, location: SourceLocation) -> model.Expression:
+        if unit_token is None and not (isinstance(low, model.Quantity) and isinstance(high, model.Quantity)):
+            # bounds computed from parameters (``[min_gap..max_gap]``): the range operator, evaluated
+            # with the parameters' values (values.evaluate)
+            return model.Binary("..", low, high, location)
         for bound in (low, high):
             if not isinstance(bound, model.Quantity):
                 self.error(
@@ -655,9 +673,10 @@ class _Builder:
                     "write [10..20]m or [10m..20m], not both",
                 )
                 return model.Literal("<bad range>", location)
-            dimension, factor = self.unit(unit_token.text, unit_loc)
-            low = model.Quantity(low.value * factor, dimension, low.location)
-            high = model.Quantity(high.value * factor, dimension, high.location)
+            dimension, factor, *offset = self.unit(unit_token.text, unit_loc)
+            zero = offset[0] if offset else 0.0
+            low = model.Quantity(low.value * factor + zero, dimension, low.location)
+            high = model.Quantity(high.value * factor + zero, dimension, high.location)
             for bound in (low, high):
                 self.bounded(bound.value, dimension, bound.location)
         elif low.dimension != high.dimension:
@@ -679,9 +698,10 @@ class _Builder:
 
     def physical(self, text: str, location: SourceLocation) -> model.Quantity:
         number, unit = split_physical_literal(text)
-        dimension, factor = self.unit(unit, location)
-        self.bounded(number * factor, dimension, location)
-        return model.Quantity(number * factor, dimension, location)
+        dimension, factor, *offset = self.unit(unit, location)
+        value = number * factor + (offset[0] if offset else 0.0)
+        self.bounded(value, dimension, location)
+        return model.Quantity(value, dimension, location)
 
     def bounded(self, value: float, dimension: str | None, location: SourceLocation) -> None:
         """Refuse a physical value past MAX_MAGNITUDE: 1e308 m reached the planner and came back as a

@@ -111,6 +111,15 @@ def _binary(expression: model.Binary, env: Mapping[str, object]) -> Value:
         return equal if op == "==" else not equal
     left = _interval(left_value, expression.left)
     right = _interval(right_value, expression.right)
+    if op == "..":  # a range whose bounds are computed
+        _same_dimension(left, right, expression)
+        if left.low > right.high:
+            raise EvaluationError(
+                expression.location,
+                f"an empty range: its first bound ({left}) is above its second ({right})",
+                "write the smaller bound first",
+            )
+        return Interval(left.low, right.high, left.dimension)
     if op in ("+", "-"):
         _same_dimension(left, right, expression)
         if op == "+":
@@ -214,6 +223,14 @@ def _same_dimension(left: Interval, right: Interval, expression: model.Binary) -
 
 
 def _combine(left: str | None, right: str | None, sign: int, expression: model.Binary) -> str | None:
+    if left not in _EXPONENTS or right not in _EXPONENTS:  # a dimension the pipeline does not plan
+        if right is None:
+            return left
+        if left is None and sign > 0:
+            return right
+        raise EvaluationError(
+            expression.location, f"{describe(left)} {expression.operator} {describe(right)} has no supported unit"
+        )
     a, b = _EXPONENTS[left], _EXPONENTS[right]
     exponents = (a[0] + sign * b[0], a[1] + sign * b[1])
     if exponents not in _DIMENSIONS:

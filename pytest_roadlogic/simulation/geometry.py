@@ -9,8 +9,9 @@ from __future__ import annotations
 
 import numpy as np
 
-CAR_LENGTH = 4.5  # m
-CAR_WIDTH = 1.8  # m
+from ..logic.dimensions import CAR_LENGTH, CAR_WIDTH
+
+__all__ = ["CAR_LENGTH", "CAR_WIDTH", "WHEELBASE", "boxes_overlap", "corners"]
 WHEELBASE = 2.7  # m, for the kinematic checks of motion planners
 
 

@@ -10,7 +10,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-LANE_WIDTH = 3.5
+from ..logic.dimensions import LANE_WIDTH
 
 
 @dataclass(frozen=True)

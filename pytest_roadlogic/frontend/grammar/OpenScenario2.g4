@@ -148,9 +148,11 @@ fieldDeclaration
       (WITH COLON (NEWLINE INDENT fieldConstraint+ DEDENT | fieldConstraint) | NEWLINE)
     ;
 
+// `cover(...)`/`record(...)` inside a field's `with:` as public suites write them
 fieldConstraint
     : keepConstraint
     | removeDefault
+    | coverageDeclaration
     ;
 
 typeDeclarator
