@@ -30,7 +30,7 @@ from ..frontend.checked import CheckedScenario
 from ..frontend.errors import error_at
 from ..frontend.logical import names_by_place
 from ..logic.automaton import Location, PhaseBound, SymbolicAutomaton, Timing, Transition
-from ..logic.guards import TRUE, Guard, Not, conjunction
+from ..logic.guards import LANE, TRUE, Guard, Not, conjunction
 from ..logic.phase import Variant
 from .translation import check_behavior_arguments, duration_interval, phase_guards
 
@@ -81,6 +81,10 @@ class _Fragment:
     invariants: dict[Key, Guard] = field(default_factory=dict)
     # locations whose phase ends at the first emission of these events (wait @e, until @e)
     listening: dict[Key, frozenset[str]] = field(default_factory=dict)
+    # (actor, "lane" | "speed"): what the actors' own constructs ask of them here (Location.asks),
+    # and what they ask for already at the first instant here (the location before must bring it)
+    asks: dict[Key, frozenset[tuple[str, str]]] = field(default_factory=dict)
+    asks_at_start: dict[Key, frozenset[tuple[str, str]]] = field(default_factory=dict)
 
     def outgoing(self, key: Key) -> list[_Edge]:
         return [e for e in self.edges if e.source == key]
@@ -130,6 +134,7 @@ class _Builder:
                 fragment = self.end_on(
                     fragment, behavior.until, behavior.label or _phase_name(behavior), behavior.location, rising=True
                 )
+                _asked_by_until(fragment, behavior.actor, self.ending(behavior.until)[0])
             duration = behavior.argument("duration")
         elif isinstance(behavior, model.Wait):
             return self.wait(behavior)
@@ -194,7 +199,9 @@ class _Builder:
     def wait(self, wait: model.Wait) -> _Fragment:
         """A phase in which nothing is asked of anyone: it lasts the given time, or until the condition or event."""
         name = wait.label or "wait"
-        fragment = _phase(next(self.counter), name, wait.label is not None, Variant(), frozenset())
+        fragment = _phase(
+            next(self.counter), name, wait.label is not None, Variant(), frozenset(), frozenset(), frozenset()
+        )
         return self.end_on(fragment, wait.condition, name, wait.location)
 
     def end_on(
@@ -271,8 +278,21 @@ def _atomic(
     labelled = invocation.label is not None
     name = invocation.label if labelled else _phase_name(invocation)
     drivers = frozenset([invocation.actor]) if phase.drives else frozenset()
-    fragments = [_phase(next(counter), name, labelled, variant, drivers) for variant in phase.variants]
+    asks = frozenset((invocation.actor, what) for what in phase.asks)
+    early = frozenset((invocation.actor, what) for what in phase.asks_at_start)
+    fragments = [_phase(next(counter), name, labelled, variant, drivers, asks, early) for variant in phase.variants]
     return (fragments[0] if len(fragments) == 1 else _one_of(fragments, next(counter))), tuple(phase.rates)
+
+
+def _asked_by_until(fragment: _Fragment, actor: str, guard: Guard) -> None:
+    """An ``until`` condition the phase's actor takes part in asks it for what the condition reads
+    (its lane, or its speed for a speed, a gap or a distance): the actor is to bring it about."""
+    asked = set()
+    for bound in guard.atoms():
+        if actor in bound.term.actors:
+            asked.add("lane" if bound.term.quantity == LANE else "speed")
+    for key in fragment.names:
+        fragment.asks[key] = fragment.asks.get(key, frozenset()) | {(actor, what) for what in asked}
 
 
 def _emit(edges: list[_Edge], events: list[str]) -> None:
@@ -295,7 +315,15 @@ def _end_on(fragment: _Fragment, guard: Guard, event: str | None, first: bool) -
                 fragment.listening[edge.source] = fragment.listening.get(edge.source, frozenset()) | {event}
 
 
-def _phase(uid: int, name: str, labelled: bool, variant: Variant, drivers: frozenset[str]) -> _Fragment:
+def _phase(
+    uid: int,
+    name: str,
+    labelled: bool,
+    variant: Variant,
+    drivers: frozenset[str],
+    asks: frozenset[tuple[str, str]],
+    asks_at_start: frozenset[tuple[str, str]],
+) -> _Fragment:
     """``init --start--> phase --end--> fin`` for one phase (of an action, or a wait)."""
     i, s, f = ("i", uid), ("s", uid), ("f", uid)
     # An invariant holds throughout the phase, its first and last instants included.
@@ -308,6 +336,8 @@ def _phase(uid: int, name: str, labelled: bool, variant: Variant, drivers: froze
         names={s: (name, labelled)},
         drivers={s: drivers},
         invariants={s: variant.invariant} if not variant.invariant.is_true else {},
+        asks={s: asks},
+        asks_at_start={s: asks_at_start},
     )
 
 
@@ -328,6 +358,8 @@ def _serial(first: _Fragment, second: _Fragment, location=None) -> _Fragment:
         drivers={**first.drivers, **second.drivers},
         invariants={**first.invariants, **second.invariants},
         listening={**first.listening, **second.listening},
+        asks={**first.asks, **second.asks},
+        asks_at_start={**first.asks_at_start, **second.asks_at_start},
     )
 
 
@@ -392,6 +424,8 @@ def _parallel(children: list[_Fragment], location=None) -> _Fragment:
     drivers: dict[Key, frozenset[str]] = {}
     invariants: dict[Key, Guard] = {}
     listening: dict[Key, frozenset[str]] = {}
+    asks: dict[Key, frozenset[tuple[str, str]]] = {}
+    asks_at_start: dict[Key, frozenset[tuple[str, str]]] = {}
     for key in seen:
         parts = [c.names[k] for c, k in zip(children, key) if k in c.names]
         labelled = [n for n, is_labelled in parts if is_labelled]
@@ -399,13 +433,15 @@ def _parallel(children: list[_Fragment], location=None) -> _Fragment:
         if chosen:
             names[key] = (" | ".join(chosen), bool(labelled))
         drivers[key] = frozenset().union(*(c.drivers.get(k, frozenset()) for c, k in zip(children, key)))
+        asks[key] = frozenset().union(*(c.asks.get(k, frozenset()) for c, k in zip(children, key)))
+        asks_at_start[key] = frozenset().union(*(c.asks_at_start.get(k, frozenset()) for c, k in zip(children, key)))
         parts = [c.invariants[k] for c, k in zip(children, key) if k in c.invariants]
         if parts:
             invariants[key] = conjunction(parts)
         waiting = frozenset().union(*(c.listening.get(k, frozenset()) for c, k in zip(children, key)))
         if waiting:
             listening[key] = waiting
-    return _Fragment(initial, final, edges, names, drivers, invariants, listening)
+    return _Fragment(initial, final, edges, names, drivers, invariants, listening, asks, asks_at_start)
 
 
 def _one_of(children: list[_Fragment], uid: int) -> _Fragment:
@@ -415,6 +451,8 @@ def _one_of(children: list[_Fragment], uid: int) -> _Fragment:
     drivers: dict[Key, frozenset[str]] = {}
     invariants: dict[Key, Guard] = {}
     listening: dict[Key, frozenset[str]] = {}
+    asks: dict[Key, frozenset[tuple[str, str]]] = {}
+    asks_at_start: dict[Key, frozenset[tuple[str, str]]] = {}
     for child in children:
         rename = {child.initial: initial, child.final: final}
         for e in child.edges:
@@ -423,7 +461,9 @@ def _one_of(children: list[_Fragment], uid: int) -> _Fragment:
         drivers.update(child.drivers)
         invariants.update(child.invariants)
         listening.update(child.listening)
-    return _Fragment(initial, final, edges, names, drivers, invariants, listening)
+        asks.update(child.asks)
+        asks_at_start.update(child.asks_at_start)
+    return _Fragment(initial, final, edges, names, drivers, invariants, listening, asks, asks_at_start)
 
 
 def _finish(
@@ -448,6 +488,14 @@ def _finish(
         raise error_at(
             scenario.location, f"scenario {scenario.name!r} can never finish: its phases cannot all end", hint=hint
         )
+    # what is asked here, and what a location this one leads to asks for at its first instant
+    # (a change the next phase needs at its start comes in the phase before it)
+    asked = {
+        key: fragment.asks.get(key, frozenset()).union(
+            *(fragment.asks_at_start.get(after, frozenset()) for after in successors.get(key, ()))
+        )
+        for key in useful
+    }
     order = _bfs_order(fragment, useful, successors)
     ids = {key: index for index, key in enumerate(order)}
     used: dict[str, int] = {}
@@ -463,7 +511,13 @@ def _finish(
         if used[name] > 1:
             name = f"{name}#{used[name]}"
         locations.append(
-            Location(ids[key], name, fragment.drivers.get(key, frozenset()), fragment.invariants.get(key, TRUE))
+            Location(
+                ids[key],
+                name,
+                fragment.drivers.get(key, frozenset()),
+                fragment.invariants.get(key, TRUE),
+                asked[key],
+            )
         )
     transitions = []
     for edge in fragment.edges:

@@ -27,6 +27,9 @@ from ..logic.phase import Phase
 from ..settings import STANDARD_DIALECT
 
 AT_VALUES = ("start", "end", "all")
+# what a construct asks its actor to change (Construct.asks)
+ASKS_LANE: frozenset[str] = frozenset({"lane"})
+ASKS_SPEED: frozenset[str] = frozenset({"speed"})
 
 
 class CheckContext(Protocol):
@@ -105,6 +108,9 @@ class Construct:
     kind: ClassVar[str]
     signature: ClassVar[Signature]
     translated: ClassVar[bool] = True
+    # what a use asks its actor to change while its phase runs: "lane", "speed", both or neither.
+    # Nothing else moves an actor off its lane or its speed (least action, docs/language.md).
+    asks: ClassVar[frozenset[str]] = frozenset()
 
     @property
     def name(self) -> str:
@@ -135,7 +141,16 @@ class Construct:
 
     def apply(self, node: model.Invocation | model.Modifier, actor: str, lanes: int, env: dict, phase: Phase) -> None:
         """Translate one use (its arguments bound to the signature) into ``phase``: what the automaton calls."""
-        self.translate(Use(node, bind(self.signature, node.arguments), actor, lanes, env), phase)
+        binding = bind(self.signature, node.arguments)
+        phase.asks |= self.asks
+        if self.asked_at_start(binding):
+            phase.asks_at_start |= self.asks
+        self.translate(Use(node, binding, actor, lanes, env), phase)
+
+    def asked_at_start(self, binding: Binding) -> bool:
+        """Whether this use asks for its lane or speed already at its phase's first instant (so that
+        the change it asks for falls in the phase before): an action's change comes within its phase."""
+        return False
 
     def __repr__(self) -> str:
         return f"<{self.kind} {self.name}>"
@@ -156,6 +171,9 @@ class Modifier(Construct):
     def anchor(self, binding: Binding) -> str:
         """Where this use holds: its ``at:``, else the modifier's default (start, end or all)."""
         return anchor_of(binding, self.default_anchor)
+
+    def asked_at_start(self, binding: Binding) -> bool:
+        return self.anchor(binding) in ("start", "all")
 
 
 class AnchoredModifier(Modifier):

@@ -21,7 +21,7 @@ from ..frontend import model
 from ..frontend.library import DURATION, Binding, Parameter, Signature
 from ..logic.guards import HEADWAY
 from ..logic.phase import Phase
-from .base import Action, CheckContext, Use
+from .base import ASKS_SPEED, Action, CheckContext, Use
 from .position import GAPS, Gap, gap_bound
 
 
@@ -32,6 +32,7 @@ class GapAction(Action):
     gap: ClassVar[Gap]  # position()'s distance or time headway
     what: ClassVar[str]  # "a space gap" or "a time gap", in messages
     anchor: ClassVar[str]  # "all" (keep) or "end" (change)
+    asks = ASKS_SPEED  # a gap is kept or changed by the actor's own speed
 
     def check(self, binding: Binding, context: CheckContext) -> None:
         direction = binding["direction"]

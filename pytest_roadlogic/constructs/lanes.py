@@ -15,7 +15,7 @@ from ..frontend.errors import SourceLocation, error_at
 from ..frontend.library import AT, DURATION, RATE, Binding, Parameter, Signature
 from ..logic.guards import LANE, Bound, Guard, Term
 from ..logic.phase import Phase, Variant
-from .base import Action, AnchoredModifier, CheckContext, Modifier, Use
+from .base import ASKS_LANE, Action, AnchoredModifier, CheckContext, Modifier, Use
 
 LANE_CONVENTION = (
     "lanes are numbered from 1 on the right (lane(1) is the rightmost); lane(k, from: left) counts from the left"
@@ -35,6 +35,7 @@ class Lane(AnchoredModifier):
     counted_from: ClassVar[str] = "right"  # where lane(1) is when from: is not given
     convention: ClassVar[str] = LANE_CONVENTION
 
+    asks = ASKS_LANE
     signature = Signature(
         "lane",
         (
@@ -173,6 +174,7 @@ class _LaneChange:
 
 
 class ChangeLaneAction(_LaneChange, Action):
+    asks = ASKS_LANE
     signature = Signature(
         "change_lane",
         (
@@ -187,6 +189,7 @@ class ChangeLaneAction(_LaneChange, Action):
 
 
 class ChangeLaneModifier(_LaneChange, Modifier):
+    asks = ASKS_LANE
     signature = Signature(
         "change_lane",
         (Parameter("num_of_lanes", "uint", positional=True), Parameter("side", "enum:side", positional=True)),

@@ -10,7 +10,7 @@ from ..frontend.units import LENGTH
 from ..logic.automaton import Travelled
 from ..logic.guards import SPEED, Bound, Term
 from ..logic.phase import Phase
-from .base import Action, CheckContext, Modifier, Use
+from .base import ASKS_SPEED, Action, CheckContext, Modifier, Use
 
 
 class Drive(Action):
@@ -28,6 +28,7 @@ class Drive(Action):
 class RemainStationary(Action):
     """``remain_stationary()``: the speed stays within the standstill band; no progress asked (``moves``)."""
 
+    asks = ASKS_SPEED
     signature = Signature("remain_stationary", (DURATION,), description="stand still (obstacles)")
     moves = False
 
@@ -46,6 +47,7 @@ class Distance(Modifier):
     value is read +- the position tolerance. Like a duration, a range of it is left open by the
     scenario (a logical parameter), not a bound held at every instant."""
 
+    asks = ASKS_SPEED
     signature = Signature(
         "distance",
         (Parameter("distance", "length", positional=True),),

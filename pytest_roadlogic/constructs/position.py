@@ -10,7 +10,7 @@ from ..frontend.library import AT, Parameter, Signature
 from ..frontend.tolerances import HEADWAY_TOLERANCE, POSITION_TOLERANCE, widened
 from ..frontend.units import LENGTH, TIME
 from ..logic.guards import HEADWAY, POSITION, Bound, Guard, Term
-from .base import AnchoredModifier, Use
+from .base import ASKS_SPEED, AnchoredModifier, Use
 
 
 class Position(AnchoredModifier):
@@ -19,6 +19,7 @@ class Position(AnchoredModifier):
     x)``: a time headway, the gap over the speed of the actor behind (this one; x with
     ``ahead_of``): it reaches where x is now in t seconds; a single t is read as t +- 0.2 s."""
 
+    asks = ASKS_SPEED
     signature = Signature(
         "position",
         (

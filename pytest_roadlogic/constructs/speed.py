@@ -16,7 +16,7 @@ from ..logic.automaton import MeanAcceleration
 from ..logic.guards import SPEED as SPEED_Q
 from ..logic.guards import Bound, Guard, Term
 from ..logic.phase import Phase, Variant
-from .base import Action, AnchoredModifier, CheckContext, Modifier, Use
+from .base import ASKS_SPEED, Action, AnchoredModifier, CheckContext, Modifier, Use
 
 KEEP_SPEED_CENTRES = tuple(float(v) for v in range(0, 41))
 KEEP_SPEED_BAND = 1.0
@@ -51,6 +51,7 @@ class Speed(AnchoredModifier):
     """``speed(v)``, ``speed([a..b])``; relative: ``faster_than: x`` / ``slower_than: x`` (by the
     value), ``same_as: x`` (within the value, default 0 +- the tolerance)."""
 
+    asks = ASKS_SPEED
     signature = Signature(
         "speed",
         (Parameter("speed", "speed", positional=True), *(Parameter(r, "actor") for r in RELATIONS), AT),
@@ -102,6 +103,7 @@ class ChangeSpeed(Action):
     jerk-optimal); ``constant`` and ``asap`` shape the profile inside the phase, which the plan
     does not fix, so they are refused rather than silently read as smooth."""
 
+    asks = ASKS_SPEED
     signature = Signature(
         "change_speed",
         (
@@ -147,6 +149,7 @@ class AssignSpeed(Action):
     The standard's assignment is instantaneous; a simulated car cannot jump to a speed, so the plan
     reaches it by the phase's start, and the monitor checks it there."""
 
+    asks = ASKS_SPEED
     signature = Signature(
         "assign_speed",
         (Parameter("target", "speed", positional=True), DURATION),
@@ -167,6 +170,7 @@ class Acceleration(Modifier):
     (v(end) - v(start)) / duration, lies in the range (``MeanAcceleration`` says why the mean).
     A range held over the phase is a bound, not a sampled parameter."""
 
+    asks = ASKS_SPEED
     signature = Signature(
         "acceleration",
         (Parameter("acceleration", "acceleration", positional=True), AT),

@@ -14,7 +14,7 @@ when a parameter is left open (the base strategy: the planner picks within the r
 from __future__ import annotations
 
 import math
-from dataclasses import replace, dataclass
+from dataclasses import dataclass, replace
 
 from . import library, model
 from .errors import Diagnostic, SourceLocation

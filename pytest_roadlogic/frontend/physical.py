@@ -136,7 +136,9 @@ def declared_physics(files: Iterable[model.OscFile]) -> DeclaredPhysics:
                         "warning",
                     )
                 )
-            physics.units[unit.name] = (dimension, unit.factor, unit.offset) if unit.offset else (dimension, unit.factor)
+            physics.units[unit.name] = (
+                (dimension, unit.factor, unit.offset) if unit.offset else (dimension, unit.factor)
+            )
     return physics
 
 

@@ -24,6 +24,13 @@ class Location:
     drivers: frozenset[str] = frozenset()
     # What must hold at every instant the run spends here (modifiers with ``at: all``).
     invariant: Guard = TRUE
+    # (actor, "lane" | "speed"): an actor's own construct running here asks it to change lane or
+    # speed (a lane or change_lane modifier; a speed, position, change_speed ...). An actor
+    # changes neither unless asked where it is (least action: docs/language.md, "Unasked").
+    asks: frozenset[tuple[str, str]] = frozenset()
+
+    def asked(self, actor: str, what: str) -> bool:
+        return (actor, what) in self.asks
 
 
 @dataclass(frozen=True)

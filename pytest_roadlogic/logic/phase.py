@@ -33,6 +33,11 @@ class Phase:
     drives: bool = True  # whether the actor must make forward progress in this phase
     # what the phase asks of its start and end together (they hold in every variant)
     rates: list[PhaseBound] = field(default_factory=list)
+    # what its constructs ask the actor to change: "lane", "speed" (Construct.asks); and what they
+    # ask for already at its first instant (speed(v) throughout, position(..., at: start)), which
+    # the phase before it must bring about
+    asks: set[str] = field(default_factory=set)
+    asks_at_start: set[str] = field(default_factory=set)
 
     def add(self, start: Guard = TRUE, end: Guard = TRUE, invariant: Guard = TRUE) -> None:
         self.variants = [

@@ -40,6 +40,9 @@ if not ASP_DIR.is_dir():  # running from a source checkout: asp/ sits at the top
 AUTOMATON = ASP_DIR / "automaton.lp"
 # a random start's vehicle keeps its lane unless the scenario needs a change (both encodings)
 KEEP_LANE = ASP_DIR / "keep_lane.lp"
+# a vehicle changes lane and speed only where its own constructs ask (both encodings), while the
+# external least_action holds (IncrementalPlanner.least_action)
+LEAST_ACTION = ASP_DIR / "least_action.lp"
 # steps grounded in one call before the time limit is looked at again (a call cannot be stopped;
 # one per step had cost 2.5 s over 45 steps against 0.36 s in one call)
 GROUND_CHUNK = 50
@@ -67,6 +70,11 @@ class IncrementalPlanner:
     A subclass gives ``_instance`` (its instance writer), ``_start_preferences`` (a random start's
     draws as rules), ``_control`` (a control with its background and theory), ``_widened`` (wider
     settings for a second try, or None) and ``plans``."""
+
+    # whether the search under way keeps every vehicle to what its own constructs ask
+    # (asp/least_action.lp): an encoding's plans() searches so first, and without only when that
+    # finds no plan (the plan's stats then say least_action 0); a diagnosis never assumes it
+    least_action = True
 
     def __init__(self, automaton: SymbolicAutomaton, settings, seed: int = 0) -> None:
         self.automaton = automaton
@@ -180,6 +188,7 @@ class IncrementalPlanner:
         t = clingo.Number(horizon)
         if horizon == 0:
             self._ground(control, [("base", []), ("state", [t]), ("check", [t])])
+            control.assign_external(clingo.Function("least_action"), self.least_action)
         else:
             self._ground(control, [("dynamics", [t]), ("state", [t]), ("check", [t])])
             control.assign_external(clingo.Function("query", [clingo.Number(horizon - 1)]), False)
@@ -208,6 +217,8 @@ class IncrementalPlanner:
                         f"limit is {MAX_PLANNING_BYTES / 2**30:g} GiB): lower the horizon with --horizon, or split the scenario"
                     )
         self._ground(control, parts)
+        if grounded < 0:
+            control.assign_external(clingo.Function("least_action"), self.least_action)
         for step in range(max(0, grounded), horizon):
             control.assign_external(clingo.Function("query", [clingo.Number(step)]), False)
         control.assign_external(clingo.Function("query", [clingo.Number(horizon)]), True)

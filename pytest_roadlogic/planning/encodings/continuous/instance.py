@@ -12,7 +12,7 @@ import math
 from fractions import Fraction
 
 from ....logic.automaton import SymbolicAutomaton, Travelled
-from ....logic.guards import HEADWAY, LANE, POSITION, SPEED, TRAVELED, Bound, Guard, Not
+from ....logic.guards import HEADWAY, LANE, POSITION, SPEED, TRAVELED, And, Bound, Guard, Not
 from ...facts import atom, guard_nodes, inset, origin, with_automaton
 from .settings import ContinuousSettings
 
@@ -52,6 +52,7 @@ def build_continuous_instance(
         *(f"vehicle({atom(v)})." for v in vehicles),
         *(f"stationary({atom(v)})." for v in vehicles if v in automaton.stationary),
         *(f"may_stop({atom(v)})." for v in sorted(stopping(automaton, s))),
+        *(f"start_speed({atom(v)},{number(x)})." for v, x in sorted(first_speeds(automaton, s).items())),
         f"lane_id(0..{automaton.lanes - 1}).",
         "lateral(-1;0;1).",
         f"lane_change_gap({s.lane_change_gap}).",
@@ -65,6 +66,47 @@ def build_continuous_instance(
         lambda node, guard: node_facts(node, guard, s, automaton),
         lambda relax: rate_facts(automaton, s, relax),
     )
+
+
+def first_speeds(automaton: SymbolicAutomaton, settings: ContinuousSettings) -> dict[str, float]:
+    """The speed (m/s) each driving vehicle's first phase asks for, where one does: the first
+    bound on its own speed met along the automaton from its start (a phase's start, invariant or
+    end: in CARLA's dialect ``speed(v)`` is a target its phase reaches), the middle of its range
+    within the settings' speeds. A vehicle starts at it rather than at the road's typical speed
+    (``asp/continuous/dynamics.lp``): "drive at 10 kph" starts at 10 kph."""
+    found: dict[str, float] = {}
+    seen, frontier = {automaton.initial}, [automaton.initial]
+    while frontier:
+        following = []
+        for location in frontier:
+            guards = [automaton.location(location).invariant]
+            for transition in automaton.outgoing(location):
+                guards.append(transition.guard)
+                if transition.target not in seen:
+                    seen.add(transition.target)
+                    following.append(transition.target)
+            for bound in (b for guard in guards for b in _required_bounds(guard)):
+                term = bound.term
+                if term.quantity != SPEED or term.reference is not None or term.actor in found:
+                    continue
+                if term.actor in automaton.stationary:
+                    continue
+                low = max(bound.low, settings.min_speed)
+                high = min(bound.high, settings.max_speed)
+                if low <= high and (math.isfinite(bound.low) or math.isfinite(bound.high)):
+                    found[term.actor] = round((low + high) / 2, 2)
+        frontier = following
+    return found
+
+
+def _required_bounds(guard: Guard) -> list[Bound]:
+    """The bounds a guard requires whichever way it holds: those of its conjunctions, not those
+    under a disjunction or a negation."""
+    if isinstance(guard, Bound):
+        return [guard]
+    if isinstance(guard, And):
+        return [b for part in guard.parts for b in _required_bounds(part)]
+    return []
 
 
 def decimal(value: float) -> str:

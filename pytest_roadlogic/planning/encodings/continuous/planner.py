@@ -22,7 +22,7 @@ import clingo
 from clingo.ast import ASTType, ProgramBuilder, parse_string
 
 from ....logic.automaton import SymbolicAutomaton
-from ...core import ASP_DIR, AUTOMATON, KEEP_LANE, IncrementalPlanner, read_programs
+from ...core import ASP_DIR, AUTOMATON, KEEP_LANE, LEAST_ACTION, IncrementalPlanner, read_programs
 from ...diagnosis import check_satisfiable
 from ...errors import HorizonTooShort, NoPlanError, PlanningTimeout
 from ...plan import Plan
@@ -40,6 +40,7 @@ BACKGROUND = (
     ASP_CONTINUOUS / "guards.lp",
     ASP_CONTINUOUS / "rates.lp",
     ASP_CONTINUOUS / "steer.lp",
+    LEAST_ACTION,
 )
 RANDOM_START = (KEEP_LANE, ASP_CONTINUOUS / "start.lp")  # loaded for a random start only, in this order
 # the soft rows clingo-lpx, which checks every row exactly, cannot weigh: a preference binds as a
@@ -109,9 +110,21 @@ class ContinuousPlanner(IncrementalPlanner):
 
     def plans(self, limit: int | None = None) -> Iterator[Plan]:
         """Plans, shortest horizon first; each next one differs from all before it in when a
-        transition fires or in a lane (the linear program then gives its smoothest motion)."""
+        transition fires or in a lane (the linear program then gives its smoothest motion).
+        Every vehicle does only what its own constructs ask (``least_action``) unless no plan
+        does: then plans without, which say so in their stats."""
         check_satisfiable(self.automaton)
+        self.least_action = True
+        try:
+            yield from self._search(limit)
+        except NoPlanError:
+            self.least_action = False
+            yield from self._search(limit)
+
+    def _search(self, limit: int | None) -> Iterator[Plan]:
+        """The plans of one search (``plans``), with ``least_action`` as it is set."""
         deadline = self._renewed()
+        self.stats["least_action"] = float(self.least_action)
         found = 0
         places: list[float] = []  # where in the start band each plan after the first was steered
         try:
@@ -183,7 +196,7 @@ class ContinuousPlanner(IncrementalPlanner):
         except (PlanningTimeout, HorizonTooShort):
             raise
         except NoPlanError as error:
-            if not self.settings.explain_unsatisfiable:
+            if self.least_action or not self.settings.explain_unsatisfiable:
                 raise
             self._explain(error, deadline, window)
 

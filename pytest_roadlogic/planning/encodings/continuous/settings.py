@@ -24,9 +24,9 @@ class ContinuousSettings:
     max_jerk: float = 2.0  # m/s^3: how much the acceleration may change from one step to the next
     min_speed: float = 0.5  # m/s for a driving vehicle the scenario does not ask to stop
     max_speed: float = 70.0  # m/s
-    # m/s at the first step: a scenario that names no speed starts at highway speeds, not at the
-    # crawl a vertex of the linear program would pick
-    initial_speed: tuple[float, float] = (8.0, 40.0)
+    # m/s at the first step where the scenario names no speed: a speed typical of the road (a
+    # highway's 80-130 kph), not the crawl a vertex of the linear program would pick
+    initial_speed: tuple[float, float] = (80 / 3.6, 130 / 3.6)
     lane_change_speed: float = 5.0  # m/s at least while changing lane
     min_gap: float = 8.0  # m between the centres of two vehicles sharing a lane
     # s: and more, by this many seconds of the speed at which the one behind closes in (a follower

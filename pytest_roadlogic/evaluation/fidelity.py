@@ -1,0 +1,81 @@
+"""Least action, measured: the lane and speed changes of a plan that no construct of the vehicle
+asks for (docs/language.md, "What a vehicle is asked to do").
+
+Written from the definition, not from the encoding (``asp/least_action.lp``), so that a test can
+hold the planner to it: a change during step t (from step t-1 to step t) is *asked* when the
+location the plan's run is in at step t-1 lists it for the vehicle (``Location.asks``: a construct
+of the vehicle's phase there asks for a lane or a speed, or one of its next phase asks for it at
+that phase's first instant). A speed change counts when the mean acceleration over the step is
+above ``SPEED_CHANGE`` in size, but braking is asked by the standard's avoid_collisions (on by
+default) while another vehicle or an obstacle is ahead in the vehicle's lane. Where a vehicle
+starts (its lane and speed) is no change.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from ..logic.automaton import SymbolicAutomaton
+from ..planning.plan import Plan
+
+SPEED_CHANGE = 0.5  # m/s^2: a mean acceleration over a step below this is holding the speed
+
+
+@dataclass(frozen=True)
+class UnaskedChange:
+    """A lane or speed change of ``vehicle`` during step ``step`` that nothing of its own asks for."""
+
+    vehicle: str
+    step: int
+    kind: str  # "lane" or "speed"
+    before: float
+    after: float
+
+    def __str__(self) -> str:
+        if self.kind == "lane":
+            return f"{self.vehicle} changes from lane {self.before:g} to {self.after:g} at step {self.step}, unasked"
+        return (
+            f"{self.vehicle} changes speed from {self.before:.1f} to {self.after:.1f} m/s at step {self.step}, unasked"
+        )
+
+
+def locations_by_step(plan: Plan, automaton: SymbolicAutomaton) -> list[int]:
+    """The location the plan's run is in at each step (after the transitions of that step)."""
+    targets = {t.id: t.target for t in automaton.transitions}
+    fired = dict(plan.transitions)
+    location, result = automaton.initial, []
+    for step in range(plan.horizon + 1):
+        if step in fired:
+            location = targets[fired[step]]
+        result.append(location)
+    return result
+
+
+def unasked_changes(plan: Plan, automaton: SymbolicAutomaton) -> list[UnaskedChange]:
+    """Every lane change and speed change in ``plan`` that no construct of its vehicle asks for."""
+    where = locations_by_step(plan, automaton)
+    found: list[UnaskedChange] = []
+    for vehicle, states in plan.states.items():
+        if vehicle in plan.stationary:
+            continue
+        for step in range(1, plan.horizon + 1):
+            location = automaton.location(where[step - 1])
+            before, after = states[step - 1], states[step]
+            if after.lane != before.lane and not location.asked(vehicle, "lane"):
+                found.append(UnaskedChange(vehicle, step, "lane", before.lane, after.lane))
+            acceleration = (after.speed - before.speed) / plan.dt
+            if abs(acceleration) <= SPEED_CHANGE or location.asked(vehicle, "speed"):
+                continue
+            if acceleration < 0 and (_follows(plan, vehicle, step - 1) or _follows(plan, vehicle, step)):
+                continue  # braking for the vehicle ahead: avoid_collisions asks it
+            found.append(UnaskedChange(vehicle, step, "speed", before.speed, after.speed))
+    return found
+
+
+def _follows(plan: Plan, vehicle: str, step: int) -> bool:
+    """Whether another vehicle (or an obstacle) is ahead of ``vehicle`` in its lane at ``step``."""
+    me = plan.at(vehicle, step)
+    return any(
+        other != vehicle and plan.at(other, step).lane == me.lane and plan.at(other, step).position > me.position
+        for other in plan.vehicles
+    )
