@@ -319,6 +319,7 @@ def _roots(args: argparse.Namespace, named: Path):
 
 
 def _plan(args: argparse.Namespace) -> int:
+    from .evaluation.fidelity import unasked_changes
     from .planning import planner_for, settings_for
 
     def solve():
@@ -340,9 +341,13 @@ def _plan(args: argparse.Namespace) -> int:
         print(
             f"plan {plan.index + 1} of scenario {scenario.name} (seed {plan.seed}): horizon {plan.horizon} steps of {plan.dt:g} s"
         )
-        print(plan.table())
+        print(plan.table(lambda index: scenario.registry.lane_number(index, plan.lanes)))
         for step, transition in plan.transitions:
             print(f"  step {step}: {events[transition]}")
+        unasked = unasked_changes(plan, automaton)
+        if unasked:
+            print("  no plan has every vehicle do only what it is asked; in this one:")
+            print("\n".join(f"    {change}" for change in unasked))
     print(f"{len(plans)} plan{'s' if len(plans) != 1 else ''} in {seconds:.3f} s")
     return 0
 

@@ -45,7 +45,9 @@ def test_every_observable_a_condition_reads_is_a_declared_method_with_its_type()
         assert methods[name].returns == (observable.dimension or "int"), (
             "a plain number is declared as an int (a count of lanes)"
         )
-        assert [p for p, _ in methods[name].parameters] == (list(observable.parameters) if observable.needs_reference else [])
+        assert [p for p, _ in methods[name].parameters] == (
+            list(observable.parameters) if observable.needs_reference else []
+        )
 
 
 def test_the_unit_table_is_the_one_the_physical_part_declares():

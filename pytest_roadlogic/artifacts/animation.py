@@ -33,9 +33,15 @@ MARGIN = 40  # px above the road for the title line and below it for the scale
 
 
 def animate_simulation(
-    simulation: Simulation, verdict: Verdict | None, path: str | Path, title: str = "", frame_dt: float = 0.2
+    simulation: Simulation,
+    verdict: Verdict | None,
+    path: str | Path,
+    title: str = "",
+    frame_dt: float = 0.2,
+    lane_number=None,
 ) -> Path:
-    """Write the GIF atomically (a temporary file renamed into place) and return its path."""
+    """Write the GIF atomically (a temporary file renamed into place) and return its path; lanes
+    are labelled by ``lane_number(index)`` (default the standard's numbering, 1 the rightmost)."""
     from PIL import Image, ImageDraw, ImageFont
 
     path = Path(path)
@@ -78,7 +84,8 @@ def animate_simulation(
                     draw.line((float(x0), y, float(x0) + 3.0 * scale, y), fill=LINE, width=1)
         for lane in range(road.lanes):
             _, y = to_pixels(0.0, road.center_y(lane), left)
-            draw.text((4, float(y)), f"lane {road.lanes - lane}", fill=LINE, font=small, anchor="lm")
+            number = lane_number(lane) if lane_number is not None else road.lanes - lane
+            draw.text((4, float(y)), f"lane {number}", fill=LINE, font=small, anchor="lm")
         for index, name in enumerate(names):
             columns = trace.actors[name]
             x, y, heading = float(columns["x"][k]), float(columns["y"][k]), float(columns["heading"][k])

@@ -14,7 +14,11 @@ from .files import replaced
 COLOURS = ("tab:purple", "tab:red", "tab:blue", "tab:green", "tab:orange", "tab:brown")
 
 
-def plot_simulation(simulation: Simulation, verdict: Verdict, path: str | Path, title: str = "") -> Path:
+def plot_simulation(
+    simulation: Simulation, verdict: Verdict, path: str | Path, title: str = "", lane_number=None
+) -> Path:
+    """The picture, lanes labelled by ``lane_number(index)`` (the scenario's dialect's numbering;
+    default the standard's, 1 the rightmost)."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -29,7 +33,8 @@ def plot_simulation(simulation: Simulation, verdict: Verdict, path: str | Path, 
         style = "-" if boundary in (0, road.lanes) else "--"
         top.plot([x_min, x_max], [boundary * road.lane_width] * 2, style, color="grey", linewidth=0.8)
     for lane in range(road.lanes):
-        top.text(x_min + 1, road.center_y(lane), f"lane {road.lanes - lane}", va="center", fontsize=7, color="grey")
+        number = lane_number(lane) if lane_number is not None else road.lanes - lane
+        top.text(x_min + 1, road.center_y(lane), f"lane {number}", va="center", fontsize=7, color="grey")
     run_indices = [(int(round(t / simulation.dt)), events) for t, events in verdict.run]
     for index, (name, columns) in enumerate(trace.actors.items()):
         colour = COLOURS[index % len(COLOURS)]

@@ -41,6 +41,11 @@ def write_artifacts(outcome: SimulatedInstance, directory: str | Path, animation
         **outcome.verdict.to_dict(),
     }
     scenario_xosc, road_xodr = openscenario_paths(directory)
+    lanes = outcome.simulation.road.lanes
+
+    def lane_number(index: int) -> int:  # as the scenario's dialect numbers lanes
+        return outcome.scenario.registry.lane_number(index, lanes)
+
     openscenario = beside(lambda: write_openscenario(outcome.simulation, directory, name))
     try:
         paths = {
@@ -49,12 +54,14 @@ def write_artifacts(outcome: SimulatedInstance, directory: str | Path, animation
             "commonroad": write_commonroad_xml(outcome.simulation, directory / "scenario.xml"),
             "openscenario": scenario_xosc,  # written by the forked process, waited for below
             "opendrive": road_xodr,
-            "plot": plot_simulation(outcome.simulation, outcome.verdict, directory / "trajectories.png", title=name),
+            "plot": plot_simulation(
+                outcome.simulation, outcome.verdict, directory / "trajectories.png", title=name, lane_number=lane_number
+            ),
             "verdict": write_text(directory / "verdict.json", json.dumps(verdict, indent=2)),
         }
         if animation:
             paths["animation"] = animate_simulation(
-                outcome.simulation, outcome.verdict, directory / "simulation.gif", title=name
+                outcome.simulation, outcome.verdict, directory / "simulation.gif", title=name, lane_number=lane_number
             )
     except BaseException:
         openscenario(cancel=True)

@@ -225,3 +225,11 @@ class Registry:
     def translated(self, kind: str) -> list[str]:
         table = self.actions if kind == "action" else self.modifiers
         return [name for name, construct in table.items() if construct.translated]
+
+    def lane_number(self, index: int, lanes: int) -> int:
+        """The number this dialect's files give the lane of ``index`` (0: the leftmost, as the
+        pipeline counts), for plots and reports: the standard's 1 is the rightmost, CARLA's the
+        leftmost (the lane modifier's own convention)."""
+        lane = self.modifier("lane")
+        counted_from = getattr(lane, "counted_from", "right")
+        return index + 1 if counted_from == "left" else lanes - index

@@ -90,15 +90,18 @@ class Plan:
     def to_json(self) -> str:
         return json.dumps(self.to_dict(), indent=2)
 
-    def table(self) -> str:
-        """The plan as a text table: one row per step, position/lane/speed per vehicle."""
+    def table(self, lane_number=None) -> str:
+        """The plan as a text table: one row per step, position/lane/speed per vehicle; lanes as
+        ``lane_number(index)`` gives them (the scenario's dialect's numbering; default the
+        pipeline's index, 0 the leftmost)."""
         header = ["step", "t[s]"] + [f"{v} pos/lane/speed" for v in self.vehicles]
         rows = [header]
         for step in range(self.horizon + 1):
             row = [str(step), f"{step * self.dt:g}"]
             for v in self.vehicles:
                 s = self.at(v, step)
-                row.append(f"{s.position:7.1f} / {s.lane} / {s.speed:4.1f}")
+                lane = lane_number(s.lane) if lane_number is not None else s.lane
+                row.append(f"{s.position:7.1f} / {lane} / {s.speed:4.1f}")
             rows.append(row)
         widths = [max(len(r[i]) for r in rows) for i in range(len(header))]
         return "\n".join("  ".join(cell.rjust(w) for cell, w in zip(r, widths)) for r in rows)
