@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import argparse
 import contextlib
+import functools
 import json
 import os
 import shlex
@@ -341,7 +342,7 @@ def _plan(args: argparse.Namespace) -> int:
         print(
             f"plan {plan.index + 1} of scenario {scenario.name} (seed {plan.seed}): horizon {plan.horizon} steps of {plan.dt:g} s"
         )
-        print(plan.table(lambda index: scenario.registry.lane_number(index, plan.lanes)))
+        print(plan.table(functools.partial(scenario.registry.lane_number, lanes=plan.lanes)))
         for step, transition in plan.transitions:
             print(f"  step {step}: {events[transition]}")
         unasked = unasked_changes(plan, automaton)
