@@ -223,6 +223,12 @@ RUNNABLE = [
     ("42_gap_actions.osc", None),
     ("75_keep_space_gap.osc", None),
     ("76_change_time_gap.osc", None),
+    ("109_runner_mph_library.osc", None),
+    ("110_unplanned_dimensions.osc", None),
+    ("111_global_map_and_anchor.osc", None),
+    ("112_overtake_ego_returns.osc", None),
+    ("113_carla_targets_in_sequence.osc", "carla"),
+    ("114_gap_methods_and_casts.osc", None),
 ]
 
 

@@ -1,0 +1,248 @@
+"""Files others publish, read as written: one test per cause that kept public files from checking
+(the language decisions in docs/language.md: a file's own declarations win, every dimension is
+read, the standard's methods, the spellings other grammars accept)."""
+
+from __future__ import annotations
+
+import math
+import random
+from pathlib import Path
+
+import pytest
+
+from pytest_roadlogic.frontend import check_file, check_text
+from pytest_roadlogic.frontend.values import Interval
+
+LIBRARY = """type speed is SI(m: 1, s: -1)
+unit mph of speed is SI(m: 1, s: -1, factor: 0.447038889)
+unit kph of speed is SI(m: 1, s: -1, factor: 0.277777778)
+type temperature is SI(K: 1)
+unit celsius of temperature is SI(K: 1, factor: 1, offset: 273.15)
+actor Path
+modifier Path.set_map
+modifier Path.path_min_driving_lanes
+"""
+
+
+def _lines(checked, severity: str = "error") -> list[str]:
+    return [
+        f"{Path(d.location.path).name}:{d.location.line}:{d.location.column}: {d.message}"
+        for d in checked.diagnostics
+        if d.severity == severity
+    ]
+
+
+def _checked(tmp_path, body: str, dialect: str | None = None):
+    (tmp_path / "basic.osc").write_text(LIBRARY)
+    (tmp_path / "s.osc").write_text("import basic.osc\n" + body)
+    return check_file(tmp_path / "s.osc", dialect=dialect)
+
+
+def _value(checked, parameter: str) -> Interval:
+    return checked.scenarios[0].space.domains[parameter].interval
+
+
+def test_a_files_own_mph_is_read_with_its_own_factor_and_a_warning_naming_both(tmp_path):
+    checked = _checked(
+        tmp_path, "scenario s:\n    ego: car\n    v: speed = 50mph\n    do ego.drive() with:\n        speed(v)\n"
+    )
+    assert not checked.errors, checked.report()
+    assert _value(checked, "v").low == pytest.approx(50 * 0.447038889, rel=1e-12)
+    (warning,) = [w for w in _lines(checked, "warning") if "mph" in w]
+    assert warning.startswith("basic.osc:2:6: unit 'mph' is declared as 0.447038889 SI speed units")
+    assert "the standard's mph is 0.44704" in warning
+
+
+def test_a_declared_unit_within_rounding_of_the_standards_is_read_without_a_warning(tmp_path):
+    checked = _checked(tmp_path, "scenario s:\n    ego: car\n    do ego.drive() with:\n        speed(90kph)\n")
+    assert not [w for w in _lines(checked, "warning") if "kph" in w]
+
+
+@pytest.mark.parametrize(
+    "declaration, value",
+    [
+        ("heading: angle = 30deg", 30 * math.pi / 180),
+        ("heading: angle = 2degree", 2 * math.pi / 180),
+        ("heading: angle = 0.5rad", 0.5),
+        ("turn: angular_rate = 0.1radps", 0.1),
+        ("outside: temperature = 20celsius", 293.15),
+    ],
+)
+def test_angles_rates_and_temperatures_with_an_offset_are_read_in_declarations(tmp_path, declaration, value):
+    checked = _checked(tmp_path, f"scenario s:\n    ego: car\n    {declaration}\n    do ego.drive(duration: 3s)\n")
+    assert not checked.errors, checked.report()
+    name = declaration.split(":")[0]
+    assert _value(checked, name).low == pytest.approx(value)
+
+
+def test_a_value_of_a_dimension_the_tool_does_not_plan_is_refused_where_it_would_be_planned():
+    checked = check_text("scenario s:\n    ego: car\n    do ego.drive() with:\n        speed(90deg)\n", "s.osc")
+    assert _lines(checked) == ["s.osc:4:15: speed() expects a speed for speed, got an angle"]
+
+
+@pytest.mark.parametrize("spelling", ["20 kph", "20kph", "1.5e1 mps"])
+def test_a_space_between_number_and_unit_is_read_as_one_literal(spelling):
+    checked = check_text(f"scenario s:\n    ego: car\n    do ego.drive() with:\n        speed({spelling})\n", "s.osc")
+    assert not checked.errors, checked.report()
+
+
+@pytest.mark.parametrize("unit, seconds", [("minutes", 120), ("minute", 120), ("min", 120), ("h", 7200)])
+def test_minutes_and_hours_are_units_of_time(unit, seconds):
+    checked = check_text(f"scenario s:\n    ego: car\n    t: time = 2{unit}\n    do ego.drive(duration: t)\n", "s.osc")
+    assert not checked.errors, checked.report()
+    assert _value(checked, "t").low == seconds
+
+
+@pytest.mark.parametrize("actor", ["dut", "ego", "npc"])
+def test_dut_ego_and_npc_are_vehicles_without_a_declaration_as_carlas_runner_reads_them(tmp_path, actor):
+    body = f"scenario s:\n    path: Path\n    do {actor}.drive(path, duration: 3s) with:\n        speed(50kph)\n"
+    checked = _checked(tmp_path, body, dialect="carla")
+    assert not checked.errors, checked.report()
+    assert [a.name for a in checked.scenarios[0].scenario.actors] == [actor]
+    warned = [w for w in _lines(checked, "warning") if "not declared" in w]
+    assert warned == (
+        []
+        if actor == "dut"
+        else [f"s.osc:4:8: '{actor}' is not declared: read as a vehicle, as CARLA's scenario runner does"]
+    )
+
+
+def test_set_map_and_an_anchor_read_a_global_string_as_its_value(tmp_path):
+    body = (
+        'global my_map: string = "Town04"\nglobal anchor: string = "start"\n'
+        "scenario s:\n    path: Path\n    path.set_map(my_map)\n    ego, npc: car\n"
+        "    do parallel(duration: 3s):\n        ego.drive()\n        npc.drive() with:\n"
+        "            position(20m, ahead_of: ego, at: anchor)\n"
+    )
+    checked = _checked(tmp_path, body)
+    assert not checked.errors, checked.report()
+    from pytest_roadlogic.automaton import build_automaton
+
+    automaton = build_automaton(checked.scenarios[0])
+    start = [t for t in automaton.transitions if t.source == automaton.initial]
+    assert all("p(npc) - p(ego)" in str(t.guard) for t in start), "the position holds at the start"
+
+
+def test_cover_and_record_inside_a_fields_with_are_read_and_ignored_with_a_warning():
+    text = (
+        "scenario s:\n    ego: car\n    v: speed with:\n        keep(it in [20mps..30mps])\n"
+        "        cover(v, expression: it)\n        record(v)\n    do ego.drive() with:\n        speed(v)\n"
+    )
+    checked = check_text(text, "s.osc")
+    assert not checked.errors, checked.report()
+    assert _lines(checked, "warning") == [
+        "s.osc:5:9: cover() is read and ignored",
+        "s.osc:6:9: record() is read and ignored",
+    ]
+
+
+def test_a_cast_of_an_actor_reads_the_actor():
+    text = (
+        "scenario s:\n    ego, lead: car\n    do serial:\n        ego.drive(duration: 2s)\n"
+        "        wait ego.as(vehicle).speed >= 10mps\n"
+    )
+    checked = check_text(text, "s.osc")
+    assert not checked.errors, checked.report()
+
+
+def test_a_positional_argument_after_a_named_one_binds_the_first_parameter_not_named():
+    from pytest_roadlogic.automaton import build_automaton
+
+    text = (
+        "scenario s:\n    a, b: car\n    do parallel(duration: 3s):\n        a.drive()\n"
+        "        b.drive() with:\n            position(behind: a, 10m, at: start)\n"
+    )
+    checked = check_text(text, "s.osc")
+    assert not checked.errors, checked.report()
+    guards = " ".join(str(t.guard) for t in build_automaton(checked.scenarios[0]).transitions)
+    assert "9 <= p(a) - p(b) <= 11" in guards  # 10 m, read with its tolerance
+
+
+def test_a_range_bounded_by_parameters_bounds_its_parameter_and_every_sample_meets_it():
+    text = (
+        "scenario s:\n    a, b: car\n    near: length with:\n        keep(it in [10m..20m])\n    far: length = 30m\n"
+        "    gap: length with:\n        keep(it in [near..far])\n"
+        "    do parallel(duration: 3s):\n        a.drive()\n        b.drive() with:\n"
+        "            position(gap, behind: a, at: start)\n"
+    )
+    checked = check_text(text, "s.osc")
+    assert not checked.errors, checked.report()
+    space = checked.scenarios[0].space
+    assert space.domains["gap"].interval == Interval(10.0, 30.0, "length")
+    point = Interval
+    assert space.accepts(
+        {"near": point(15, 15, "length"), "far": point(30, 30, "length"), "gap": point(16, 16, "length")}
+    )
+    assert not space.accepts(
+        {"near": point(15, 15, "length"), "far": point(30, 30, "length"), "gap": point(12, 12, "length")}
+    )
+
+
+def test_a_range_whose_bounds_are_reversed_is_an_error_at_the_range():
+    text = (
+        "scenario s:\n    a: car\n    lo: length = 30m\n    hi: length = 10m\n    gap: length with:\n"
+        "        keep(it in [lo..hi])\n    do a.drive() with:\n        position(gap, ahead_of: a, at: start)\n"
+    )
+    assert any("empty range" in line for line in _lines(check_text(text, "s.osc")))
+
+
+def test_a_constraint_on_an_actors_own_field_is_read_with_a_warning_not_refused():
+    text = "scenario s:\n    ego: car\n    keep(ego.length == 4.5m)\n    do ego.drive(duration: 3s)\n"
+    checked = check_text(text, "s.osc")
+    assert not checked.errors, checked.report()
+    assert _lines(checked, "warning") == [
+        "s.osc:3:5: a constraint on the fields of ego is read but not enforced: vehicles are simulated with the tool's own dimensions"
+    ]
+
+
+def _gap_guard(direction: str, operator: str, value: str):
+    from pytest_roadlogic.automaton import build_automaton
+
+    text = (
+        "scenario s:\n    a, b: car\n    do serial:\n        parallel(duration: 2s):\n            a.drive()\n"
+        f"            b.drive()\n        wait a.space_gap(b, {direction}) {operator} {value}\n"
+    )
+    checked = check_text(text, "s.osc", lanes=4)
+    assert not checked.errors, checked.report()
+    automaton = build_automaton(checked.scenarios[0])
+    (guard,) = [t.guard for t in automaton.transitions if "wait end" in t.label]
+    return guard
+
+
+def _space_gap(a, b, direction: str) -> float:
+    """The standard's definition, written out: the distance one box travels to touch the other."""
+    from pytest_roadlogic.logic.dimensions import CAR_LENGTH, CAR_WIDTH, LANE_WIDTH
+
+    if direction == "longitudinal":
+        d, extent = a.position - b.position, CAR_LENGTH
+    else:
+        d, extent = (b.lane - a.lane) * LANE_WIDTH, CAR_WIDTH  # lanes from the left: a left of b is positive
+    return math.copysign(max(0.0, abs(d) - extent), d)
+
+
+@pytest.mark.parametrize("direction", ["longitudinal", "lateral"])
+@pytest.mark.parametrize("operator, value", [("<=", "15m"), (">=", "3m"), (">=", "-2m"), ("<=", "0m"), ("<=", "-6m")])
+def test_space_gap_in_a_condition_holds_exactly_where_the_standards_definition_does(direction, operator, value):
+    from pytest_roadlogic.simulation.trace import ActorSnapshot
+
+    guard = _gap_guard(direction, operator, value)
+    limit = float(value.rstrip("m"))
+    draw = random.Random(7)
+    for _ in range(2000):
+        a = ActorSnapshot(draw.uniform(-40, 40), draw.randrange(4), 20.0)
+        b = ActorSnapshot(draw.uniform(-40, 40), draw.randrange(4), 20.0)
+        gap = _space_gap(a, b, direction)
+        if abs(gap - limit) < 1e-6:
+            continue  # on the edge: either reading is right
+        expected = gap <= limit if operator == "<=" else gap >= limit
+        assert guard.holds({"a": a, "b": b}) == expected, f"gap {gap:.2f} {operator} {limit}: a={a} b={b}"
+
+
+@pytest.mark.parametrize("method", ["time_gap(b, longitudinal)", "time_to_collision(b)"])
+def test_the_standards_methods_not_read_yet_are_refused_where_used_naming_what_to_write(method):
+    text = (
+        "scenario s:\n    a, b: car\n    do serial:\n        parallel(duration: 2s):\n            a.drive()\n"
+        f"            b.drive()\n        wait a.{method} <= 2s\n"
+    )
+    (line,) = _lines(check_text(text, "s.osc"))
+    assert line.startswith(f"s.osc:7:14: not supported in a condition: {method.split('(')[0]}()")
