@@ -31,6 +31,7 @@ from ..outcomes import NO_PLAN, STAGES
 from ..pipeline import load_scenario
 from ..runner import CaseResult, Runner
 from ..settings import BASE, REFINED, RunSettings
+from .fidelity import unasked_changes
 from .occupancy import Occupancy
 
 STRATEGIES = (BASE, REFINED)  # the order the bench runs them in
@@ -130,6 +131,9 @@ class InstanceRecord:
     message: str = ""  # why it is not conformant
     occupancy: Occupancy | None = None  # of the last simulation (None without one)
     artifacts: str | None = None  # directory, relative to the output directory
+    # lane and speed changes of the simulated plan that no construct of their vehicle asks for
+    # (evaluation.fidelity; None without a plan)
+    unasked: int | None = None
 
     def to_json(self) -> dict[str, Any]:
         data = dataclasses.asdict(self)
@@ -306,6 +310,7 @@ def _record(
         result.message,
         Occupancy.of_trace(outcome.simulation.trace),
         directory,
+        len(unasked_changes(outcome.plan, outcome.automaton)),
     )
 
 

@@ -33,6 +33,7 @@ class StrategySummary:
     mean_tries: float  # over instances with a simulation
     similarity: list[list[float]]  # pairwise Jaccard of the instances with a simulation
     mean_similarity: float
+    unasked: int = 0  # instances whose plan has a change no construct of its vehicle asks for
 
     @property
     def conformant(self) -> float:
@@ -52,6 +53,7 @@ def summarize(records: list[InstanceRecord], scenario: str, strategy: str) -> St
         statistics.fmean(r.tries for r in simulated) if simulated else math.nan,
         matrix,
         mean_pairwise(matrix),
+        sum(bool(r.unasked) for r in records),
     )
 
 
