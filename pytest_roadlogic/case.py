@@ -26,6 +26,7 @@ from .settings import (
     STANDARD_DIALECT,
     OptionError,
     RunSettings,
+    speed_band,
 )
 
 
@@ -42,6 +43,7 @@ class Case:
     values: dict[str, Any] = field(default_factory=dict)  # the sample (refined strategy)
     instance: int = 0  # which of the planner's instances, from 0 (base strategy)
     lanes: int | None = None
+    road_speed: str | None = None  # "LOW..HIGHmps" (settings.speed_band); None in older case files: the default
     dialect: str = STANDARD_DIALECT
     encoding: str | None = None  # None in case files older than the continuous encoding: the grid's
     max_horizon: int | None = None
@@ -63,6 +65,7 @@ class Case:
             scenario=scenario,
             seed=settings.seed,
             lanes=settings.lanes,
+            road_speed=f"{settings.road_speed[0]!r}..{settings.road_speed[1]!r}mps",
             dialect=settings.dialect,
             encoding=settings.encoding,
             max_horizon=settings.max_horizon,
@@ -84,6 +87,7 @@ class Case:
             "seed": self.seed,
             "strategy": self.strategy,
             "lanes": self.lanes,
+            "road_speed": speed_band(self.road_speed) if self.road_speed is not None else None,
             "dialect": self.dialect,
             "max_horizon": self.max_horizon,
             "encoding": self.planning_encoding,
@@ -165,6 +169,7 @@ class Case:
             parts += ["--values", json.dumps(self.values, sort_keys=True)]
         for option, value in (
             ("--lanes", self.lanes),
+            ("--road-speed", self.road_speed),
             ("--dialect", None if self.dialect == STANDARD_DIALECT else self.dialect),
             ("--encoding", None if self.planning_encoding == CONTINUOUS else self.planning_encoding),
             ("--horizon", self.max_horizon),
@@ -184,6 +189,7 @@ _SETTING_OPTIONS = {
     "seed": "seed",
     "strategy": "strategy",
     "lanes": "lanes",
+    "road_speed": "road-speed",
     "dialect": "dialect",
     "encoding": "encoding",
     "max_horizon": "horizon",
@@ -207,7 +213,7 @@ def _check_kinds(data: dict[str, Any]) -> None:
             continue
         if isinstance(value, bool) or not isinstance(value, (str, int, float)):
             raise TypeError(
-                f"{name} must be a {'string' if name in ('strategy', 'dialect', 'encoding', 'simulator') else 'number'}"
+                f"{name} must be a {'string' if name in ('strategy', 'road_speed', 'dialect', 'encoding', 'simulator') else 'number'}"
             )
         OPTIONS_BY_NAME[option].parse(str(value))
     if (

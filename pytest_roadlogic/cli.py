@@ -54,7 +54,7 @@ EXIT_ACCEPTED, EXIT_REJECTED, EXIT_INPUT = 0, 1, 2
 LANES_HELP = "lanes of the road (default: from the scenario: its path_min_driving_lanes/path_max_lanes and the lanes it names, at least 3)"
 # the run settings each command takes, as flags read from settings.OPTIONS
 DRIVER_HELP = "drive VEHICLE with the class MODULE:CLASS (built without arguments; see pytest_roadlogic.simulation.Driver) instead of the simulator's own; repeat for several"
-RUN_FLAGS = ("seed", "tries", "encoding", "horizon", "plan-timeout", "sim-timeout", "simulator")
+RUN_FLAGS = ("seed", "tries", "road-speed", "encoding", "horizon", "plan-timeout", "sim-timeout", "simulator")
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -121,7 +121,7 @@ def main(argv: list[str] | None = None) -> int:
     automaton.add_argument("--out", type=Path, default=None, help="the DOT file to write (default: <scenario>.dot)")
     plan = _scenario_command(commands, "plan", "solve a scenario's planning problem and print the plans as tables")
     plan.add_argument("--plans", type=int, default=1, help="how many plans to enumerate (default 1)")
-    _run_flags(plan, ("seed", "encoding", "horizon", "plan-timeout"))
+    _run_flags(plan, ("seed", "road-speed", "encoding", "horizon", "plan-timeout"))
     plan.add_argument("--show-asp", action="store_true", help="also print the generated instance program")
     bench = commands.add_parser(
         "bench", help="the paper's evaluation (RQ1 time and conformance, RQ2 diversity): results, plots and report.md"

@@ -10,6 +10,7 @@ the plugin loads this module in every pytest session.
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import Any
@@ -136,6 +137,25 @@ strategy = one_of(STRATEGIES, "a strategy")
 no_plan_policy = one_of(NO_PLAN_POLICIES, "what to do with a sample without a plan")
 
 
+SPEED_UNITS = {"kph": 1 / 3.6, "kmph": 1 / 3.6, "mps": 1.0, "mph": 0.44704}
+ROAD_SPEED_TEXT = "80..130kph"  # a highway's typical speeds
+
+
+def speed_band(text: str) -> tuple[float, float]:
+    """``LOW..HIGH`` with a unit after either or both (kph, mps, mph; kph when none), as m/s."""
+    match = re.fullmatch(r"\s*(\d+(?:\.\d+)?)\s*([a-z]*)\s*\.\.\s*(\d+(?:\.\d+)?)\s*([a-z]*)\s*", str(text))
+    units = [match.group(2) or match.group(4) or "kph", match.group(4) or "kph"] if match else []
+    if not match or any(unit not in SPEED_UNITS for unit in units):
+        raise OptionError(f"{text!r} is not a speed band; give LOW..HIGH with a unit, e.g. 80..130kph or 20..35mps")
+    low, high = float(match.group(1)) * SPEED_UNITS[units[0]], float(match.group(3)) * SPEED_UNITS[units[1]]
+    if not 0 < low <= high <= 70:
+        raise OptionError(f"{text!r} is not a speed band a car drives at; give 0 < LOW <= HIGH <= 250kph")
+    return low, high
+
+
+ROAD_SPEED = speed_band(ROAD_SPEED_TEXT)  # m/s
+
+
 def name(text: str) -> str:
     if not str(text).strip():
         raise OptionError("give a name")
@@ -195,6 +215,13 @@ OPTIONS = (
     ),
     Option("lanes", "lanes", lanes_or_none, None, "lanes of the road for every scenario", "each scenario's own"),
     Option(
+        "road-speed",
+        "road_speed",
+        speed_band,
+        ROAD_SPEED_TEXT,
+        "the speeds a vehicle starts at where the scenario names none (its first phase's speed otherwise)",
+    ),
+    Option(
         "dialect",
         "dialect",
         dialect,
@@ -245,6 +272,7 @@ class RunSettings:
     tries: int = 5
     no_plan: str = FAIL
     lanes: int | None = None
+    road_speed: tuple[float, float] = ROAD_SPEED  # m/s (the road-speed option)
     dialect: str = STANDARD_DIALECT
     encoding: str = CONTINUOUS
     max_horizon: int | None = None  # the encoding's own

@@ -218,7 +218,7 @@ def test_each_next_plan_is_steered_to_start_elsewhere_in_the_start_band_and_only
     automaton = build_automaton(load_scenario(ROOT / "scenarios" / "overtake.osc"))
     plans = list(ContinuousPlanner(automaton, SETTINGS, 1).plans(limit=4))
     starts = [plan.states["v1"][0].speed for plan in plans]
-    low, high = SETTINGS.initial_speed
+    low, high = SETTINGS.road_speed
     # steered to the band's high end, its middle, its lower quarter (as far as the overtake lets
     # v1 go: v2 holds its speed, and v1 must pass it): a nudge of an earlier plan left on would
     # pull each towards the high end instead

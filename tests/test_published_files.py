@@ -246,3 +246,31 @@ def test_the_standards_methods_not_read_yet_are_refused_where_used_naming_what_t
     )
     (line,) = _lines(check_text(text, "s.osc"))
     assert line.startswith(f"s.osc:7:14: not supported in a condition: {method.split('(')[0]}()")
+
+
+@pytest.mark.parametrize(
+    "text, band",
+    [
+        ("80..130kph", (80 / 3.6, 130 / 3.6)),
+        ("20..35mps", (20.0, 35.0)),
+        ("50mph..70mph", (50 * 0.44704, 70 * 0.44704)),
+    ],
+)
+def test_the_road_speed_option_reads_a_band_with_its_unit(text, band):
+    from pytest_roadlogic.settings import speed_band
+
+    assert speed_band(text) == pytest.approx(band)
+
+
+def test_a_vehicle_the_scenario_names_no_speed_for_starts_in_the_road_speed_band_and_a_case_replays_it(tmp_path):
+    from pytest_roadlogic.automaton import build_automaton
+    from pytest_roadlogic.case import Case
+    from pytest_roadlogic.planning import planner_for, settings_for
+    from pytest_roadlogic.settings import RunSettings, speed_band
+
+    checked = check_text("scenario s:\n    ego: car\n    do ego.drive(duration: 4s)\n", "s.osc")
+    run = RunSettings(road_speed=speed_band("100..120kph"))
+    plan = planner_for(build_automaton(checked.scenarios[0]), settings_for(run), 1).first()
+    assert 100 / 3.6 - 1e-6 <= plan.states["ego"][0].speed <= 120 / 3.6 + 1e-6
+    case = Case.of("s.osc", "s", run)
+    assert Case.load(case.save(tmp_path / "case.json")).settings().road_speed == run.road_speed

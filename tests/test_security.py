@@ -227,6 +227,8 @@ def test_every_printed_replay_command_of_a_case_is_shell_quoted():
         ("values", {"start_gap": [1, 2]}, "values must map"),
         ("drivers", {"tail": 3}, "drivers must map"),
         ("strategy", "evil", "is not a strategy"),
+        ("road_speed", "fast", "is not a speed band"),
+        ("road_speed", "0..900kph", "is not a speed band a car drives at"),
         ("path", 3, "path must be a string"),
         ("instance", -1, "instance must be"),
     ],

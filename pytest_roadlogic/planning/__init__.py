@@ -33,10 +33,12 @@ def settings_for(run: RunSettings, explain_unsatisfiable: bool = True) -> Planne
     settings = encoding(run.encoding).settings(
         time_limit=run.planning_time_limit, explain_unsatisfiable=explain_unsatisfiable
     )
-    if run.max_horizon:
-        import dataclasses
+    import dataclasses
 
+    if run.max_horizon:
         settings = dataclasses.replace(settings, max_horizon=run.max_horizon)
+    if hasattr(settings, "road_speed"):
+        settings = dataclasses.replace(settings, road_speed=run.road_speed)
     return settings
 
 

@@ -241,7 +241,7 @@ class ContinuousPlanner(IncrementalPlanner):
     def _steering(self, places: list[float]) -> float | None:
         """The start speed (m/s) that steers the next plan's start speeds away from those of the plans before it,
         as the grid planner's base strategy steered its choices away from every earlier plan's:
-        every driving vehicle is nudged to one place of its start band (``initial_speed``), the
+        every driving vehicle is nudged to one place of its start band (``road_speed``), the
         place farthest from those of the plans before (``farthest``: the first plan's is the
         band's low end, then the high end, the middle, the quarters...). A nudge of the linear
         program, so a scenario's own speeds decide where they bind; switched on by

@@ -8,7 +8,7 @@ from __future__ import annotations
 from dataclasses import dataclass, replace
 from typing import ClassVar
 
-from ....settings import CONTINUOUS_HORIZON
+from ....settings import CONTINUOUS_HORIZON, ROAD_SPEED
 
 
 @dataclass(frozen=True)
@@ -24,9 +24,9 @@ class ContinuousSettings:
     max_jerk: float = 2.0  # m/s^3: how much the acceleration may change from one step to the next
     min_speed: float = 0.5  # m/s for a driving vehicle the scenario does not ask to stop
     max_speed: float = 70.0  # m/s
-    # m/s at the first step where the scenario names no speed: a speed typical of the road (a
-    # highway's 80-130 kph), not the crawl a vertex of the linear program would pick
-    initial_speed: tuple[float, float] = (80 / 3.6, 130 / 3.6)
+    # m/s at the first step where the scenario names no speed: a speed typical of the road (the
+    # road-speed option; a highway's 80-130 kph), not the crawl a vertex of the linear program would pick
+    road_speed: tuple[float, float] = ROAD_SPEED
     lane_change_speed: float = 5.0  # m/s at least while changing lane
     min_gap: float = 8.0  # m between the centres of two vehicles sharing a lane
     # s: and more, by this many seconds of the speed at which the one behind closes in (a follower
@@ -100,8 +100,8 @@ class ContinuousSettings:
 
     def start_band(self) -> tuple[float, float]:
         """The start speeds (m/s) a driving vehicle is preferred to have where the scenario leaves
-        them open: ``initial_speed`` within the speed limits."""
-        return max(self.initial_speed[0], self.min_speed), min(self.initial_speed[1], self.max_speed)
+        them open: ``road_speed`` within the speed limits."""
+        return max(self.road_speed[0], self.min_speed), min(self.road_speed[1], self.max_speed)
 
     def margins(self) -> dict[str | None, float]:
         """How far inside a range's edges the plan keeps, per physical dimension."""
