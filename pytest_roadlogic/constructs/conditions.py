@@ -18,6 +18,10 @@ guard algebra (so the planner and the monitor read it alike):
   across it, positive when ``a`` is ahead of ``b`` (longitudinal) or left of it (lateral), 0 while
   the boxes overlap in that direction. A monotone function of ``p(a) - p(b)`` (or of the lanes
   between them, a lane being LANE_WIDTH wide), so a bound on it is a bound on that term.
+- ``a.time_gap(reference: b, direction: longitudinal)`` (the standard's): that space gap over
+  the speed of the car behind, positive when ``a`` is ahead; a bound on it is a bound on a time
+  headway with a car's length taken off the gap, ``h(a, b) - L/v(b)`` or ``h(b, a) - L/v(a)``
+  (``_time_gap`` says which).
 - ``a.traveled_distance()``: the metres ``a`` has covered since the run's first instant (the
   plan's step 0, the simulation's first sample), ``d(a) = p(a) - p(a at start)`` (OpenSCENARIO XML's TraveledDistanceCondition; the standard's
   DSL library has no method for it, so the name follows the XML's condition).
@@ -80,6 +84,22 @@ def _same(low: float, high: float) -> tuple[float, float]:
     return low, high
 
 
+def _time_gap(a: str, b: str, low: float, high: float, source) -> Guard:
+    """The standard's ``a.time_gap(b, longitudinal)``: the space gap over the speed of the car
+    behind, positive when a is ahead. Ahead, it is ``h_L(a, b) = (p(a) - p(b) - L) / v(b)`` (L a
+    car's length: bumper to bumper); behind, ``-h_L(b, a)``; 0 while the boxes overlap. A bound on
+    it is a bound on one of the two (speeds are never negative): at most hi >= 0 holds wherever a
+    is not ahead, so it is ``h_L(a, b) <= hi``; at most hi < 0 puts a behind, ``h_L(b, a) >= -hi``;
+    and at least lo alike."""
+    ahead, behind = Term(HEADWAY, a, b, CAR_LENGTH), Term(HEADWAY, b, a, CAR_LENGTH)
+    parts = []
+    if math.isfinite(high):
+        parts.append(Bound(ahead, -math.inf, high, source) if high >= 0 else Bound(behind, -high, math.inf, source))
+    if math.isfinite(low):
+        parts.append(Bound(ahead, low, math.inf, source) if low > 0 else Bound(behind, -math.inf, -low, source))
+    return conjunction(parts)
+
+
 @dataclass(frozen=True)
 class Observable:
     """A method a condition may call on an actor, as a term of the guard algebra.
@@ -94,10 +114,12 @@ class Observable:
     needs_reference: bool
     bounds: Callable[[float, float], tuple[float, float]] = _same
     lateral: Observable | None = None  # the form with direction: lateral
+    # for an observable that is no one term: (actor, reference, low, high, place) -> its guard
+    guard: Callable | None = None
 
     @property
     def parameters(self) -> tuple[str, ...]:
-        return ("reference", "direction") if self.lateral is not None else ("reference",)
+        return ("reference", "direction") if self.lateral is not None or self.guard is not None else ("reference",)
 
 
 OBSERVABLES = {
@@ -121,12 +143,21 @@ OBSERVABLES = {
                 "space_gap", LENGTH, lambda a, b: Term(LANE, b, a), True, _between_bumpers(CAR_WIDTH, LANE_WIDTH)
             ),
         ),
+        # the standard's traffic_participant.time_gap (longitudinal; the lateral one divides by a
+        # lateral speed the plan does not have): the space gap over the speed of the car behind
+        Observable(
+            "time_gap",
+            TIME,
+            lambda a, b: Term(HEADWAY, a, b, CAR_LENGTH),
+            True,
+            lateral=None,
+            guard=_time_gap,
+        ),
     )
 }
 # the standard's methods a condition cannot read yet, with what to write instead
 NOT_YET = {
-    "time_gap": "a.time_headway(reference: b) (front to front over the follower's speed)",
-    "time_to_collision": "a.space_gap(b, longitudinal) and a.relative_speed(reference: b)",
+    "time_to_collision": "a.time_gap(b, longitudinal) or a.space_gap(b, longitudinal) with a.relative_speed(reference: b)",
 }
 _MIRROR = {"<": ">", "<=": ">=", ">": "<", ">=": "<=", "==": "=="}
 _EXAMPLE = "e.g. v1.speed >= 20mps or ego.space_headway(reference: lead) < 10m"
@@ -135,7 +166,13 @@ _EXAMPLE = "e.g. v1.speed >= 20mps or ego.space_headway(reference: lead) < 10m"
 def usage() -> str:
     return ", ".join(
         f"a.{o.name}"
-        + ("(reference: b, direction: longitudinal)" if o.lateral else "(reference: b)" if o.needs_reference else "")
+        + (
+            "(reference: b, direction: longitudinal)"
+            if "direction" in o.parameters
+            else "(reference: b)"
+            if o.needs_reference
+            else ""
+        )
         for o in OBSERVABLES.values()
     )
 
@@ -174,6 +211,8 @@ def condition_guard(condition: model.Expression, env: dict, actors: Collection[s
         high = value.high if operator in ("<", "<=", "==") else math.inf
         if operator == "==" and observable.dimension == SPEED:
             low, high = widened(low, high, SPEED_TOLERANCE)
+        if observable.guard is not None:
+            return observable.guard(*term.actors, low, high, condition.location)
         low, high = observable.bounds(low, high)
         return Bound(term, low, high, condition.location)
     refused = refused_call(condition)
@@ -223,10 +262,16 @@ def _observable(expression: model.Expression, actors: Collection[str]) -> tuple[
             name = positional[0]
         if name in positional:
             positional.remove(name)
-        if name == "direction" and observable.lateral is not None:
+        if name == "direction" and "direction" in observable.parameters:
             direction = argument.value.name if isinstance(argument.value, model.Name) else None
             if direction not in ("longitudinal", "lateral"):
                 raise error_at(argument.location, f"{method}() takes direction: longitudinal or lateral")
+            if direction == "lateral" and observable.lateral is None:
+                raise error_at(
+                    argument.location,
+                    f"not supported: {method}(direction: lateral)",
+                    "a lateral time gap divides by a lateral speed the plan does not have; use space_gap(b, lateral)",
+                )
             if direction == "lateral":
                 observable = observable.lateral
             continue

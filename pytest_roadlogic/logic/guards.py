@@ -62,17 +62,19 @@ Snapshot = Mapping[str, ActorState]
 @dataclass(frozen=True)
 class Term:
     """``x(actor)`` or the difference ``x(actor) - x(reference)`` for one quantity x; for a
-    headway, ``h(actor, reference)``: (p(actor) - p(reference)) / v(reference); for a distance
-    travelled, ``d(actor)`` (no reference)."""
+    headway, ``h(actor, reference)``: (p(actor) - p(reference) - offset) / v(reference), the
+    ``offset`` (metres, 0 but for the standard's time_gap: a car's length, bumper to bumper)
+    taken off the gap; for a distance travelled, ``d(actor)`` (no reference)."""
 
     quantity: str
     actor: str
     reference: str | None = None
+    offset: float = 0.0
 
     def value(self, snapshot: Snapshot) -> float:
         if self.quantity == HEADWAY:
             ahead, behind = snapshot[self.actor], snapshot[self.reference]
-            return float(headway(ahead.position, behind.position, behind.speed))
+            return float(headway(ahead.position - self.offset, behind.position, behind.speed))
         value = getattr(snapshot[self.actor], self.quantity)
         if self.reference is not None:
             value -= getattr(snapshot[self.reference], self.quantity)
@@ -84,6 +86,8 @@ class Term:
 
     def __str__(self) -> str:
         s = SYMBOL[self.quantity]
+        if self.quantity == HEADWAY and self.offset:
+            return f"h({self.actor}, {self.reference}) - {_num(self.offset)}/v({self.reference})"
         if self.quantity == HEADWAY:
             return f"h({self.actor}, {self.reference})"
         text = f"{s}({self.actor})"
@@ -135,7 +139,10 @@ class Bound(Guard):
     def robustness_series(self, columns) -> np.ndarray:
         if self.term.quantity == HEADWAY:
             ahead, behind = columns[self.term.actor], columns[self.term.reference]
-            value = headway(*(np.asarray(column, dtype=float) for column in (ahead["x"], behind["x"], behind["speed"])))
+            ahead_x, behind_x, behind_speed = (
+                np.asarray(column, dtype=float) for column in (ahead["x"], behind["x"], behind["speed"])
+            )
+            value = headway(ahead_x - self.term.offset, behind_x, behind_speed)
         else:
             column = COLUMN[self.term.quantity]
             value = np.asarray(columns[self.term.actor][column], dtype=float)
@@ -273,6 +280,8 @@ def _normalised(bound: Bound) -> tuple[tuple[str, str, str | None], float, float
         term.reference is not None and term.reference < term.actor and term.quantity != HEADWAY
     ):  # h(a, b) is no -h(b, a)
         return (term.quantity, term.reference, term.actor), -bound.high, -bound.low
+    if term.offset:
+        return (term.quantity, term.actor, term.reference, term.offset), bound.low, bound.high
     return (term.quantity, term.actor, term.reference), bound.low, bound.high
 
 

@@ -196,8 +196,9 @@ def _margin(bound: Bound, settings: ContinuousSettings) -> float:
 def node_facts(node: int, guard: Guard, settings: ContinuousSettings, automaton: SymbolicAutomaton) -> list[str]:
     """One guard node's facts (``asp/continuous/guards.lp``): a bound, ``within(N)`` with its term
     and its range inset by the margin, or its negation, ``outside(N)`` with the range widened by
-    the margin (none for a sampled band: ``SymbolicAutomaton.planned_margin``). A time headway ``h(a, b)`` is compared as ``p(a) - p(b) - X*v(b)`` with 0 (the
-    follower never reverses), so its facts carry the coefficient -X of each side."""
+    the margin (none for a sampled band: ``SymbolicAutomaton.planned_margin``). A time headway ``h(a, b)`` is compared as ``p(a) - p(b) - X*v(b)`` with its offset (0, or
+    a car's length for a time gap; the follower never reverses), so its facts carry the
+    coefficient -X of each side and the offset."""
     bound = guard.part if isinstance(guard, Not) else guard
     assert isinstance(bound, Bound) and bound.term.quantity != LANE
     margin = _margin(bound, settings)
@@ -216,7 +217,11 @@ def node_facts(node: int, guard: Guard, settings: ContinuousSettings, automaton:
         return ["% never holds"]
     if headway:
         ahead, behind = atom(bound.term.actor), atom(bound.term.reference)
-        facts = [f"{kind}({node}).", f"headway({node},{ahead},{behind})."]
+        facts = [
+            f"{kind}({node}).",
+            f"headway({node},{ahead},{behind}).",
+            f"headway_gap({node},{number(bound.term.offset)}).",
+        ]
         facts += [f"headway_{name}({node},{number(-value)})." for name, value in sides]
         return facts
     facts = [f"{kind}({node}).", *_term_facts(node, bound)]
