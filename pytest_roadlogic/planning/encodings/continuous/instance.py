@@ -44,6 +44,7 @@ def build_continuous_instance(
         f"#const vmax = {number(s.max_speed)}.",
         f"#const v0min = {number(start_low)}.",
         f"#const v0max = {number(start_high)}.",
+        f"#const v0floor = {number(min(s.start_floor, start_low))}.",
         f"#const gap = {number(s.min_gap)}.",
         f"#const closing_time = {number(s.closing_time)}.",
         f"#const lane_change_speed = {number(s.lane_change_speed)}.",

@@ -27,6 +27,9 @@ class ContinuousSettings:
     # m/s at the first step where the scenario names no speed: a speed typical of the road (the
     # road-speed option; a highway's 80-130 kph), not the crawl a vertex of the linear program would pick
     road_speed: tuple[float, float] = ROAD_SPEED
+    # m/s a start speed the scenario leaves open is at least, as a strong preference: the motion
+    # planner tracks a crawl badly (the road's band itself is a weak one)
+    start_floor: float = 8.0
     lane_change_speed: float = 5.0  # m/s at least while changing lane
     min_gap: float = 8.0  # m between the centres of two vehicles sharing a lane
     # s: and more, by this many seconds of the speed at which the one behind closes in (a follower
