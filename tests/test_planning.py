@@ -301,24 +301,35 @@ def test_a_random_start_is_fixed_by_its_seed_and_varies_with_it(overtake_automat
     assert min(p.horizon for p in plans) >= shortest
 
 
-def test_a_random_start_leaves_a_vehicle_the_scenario_asks_nothing_of_at_its_drawn_speed_in_its_lane():
-    """A vehicle the scenario says nothing about (overtake_third_actor's v3) does nothing unasked
-    (least action): it holds the speed it starts at and keeps its lane, while its start differs
-    from seed to seed (the random start's draws)."""
+def test_a_random_start_drives_a_free_vehicle_as_preferred():
+    """A vehicle the scenario says nothing about (overtake_third_actor's v3) nearly always takes its
+    random acceleration where the speed limits allow it, and keeps its lane. Preferences the solver
+    ignores (chance would follow a third of them) leave it weaving at random, and such plans all
+    cover the same cells. Preferences may yield to the scenario and the other vehicles, hence the margins."""
+    import re
+
     from pytest_roadlogic.automaton import build_automaton
-    from pytest_roadlogic.evaluation.fidelity import unasked_changes
     from pytest_roadlogic.frontend import load_file
 
     automaton = build_automaton(load_file(BENCHMARK_BY_NAME["overtake_third_actor"]).scenarios[0])
-    settings = dataclasses.replace(RANDOM_START, max_horizon=12)
-    starts = set()
-    for seed in range(1, 9):
-        plan = GridPlanner(automaton, settings, seed=seed).first()
-        states = plan.states["v3"]
-        assert len({s.speed for s in states}) == 1 and len({s.lane for s in states}) == 1, f"seed {seed}: {states}"
-        assert unasked_changes(plan, automaton) == []
-        starts.add((states[0].speed, states[0].lane))
-    assert len(starts) >= 3, f"v3's starts over 8 seeds: {starts}"
+    settings = dataclasses.replace(RANDOM_START, max_horizon=12)  # long enough to show a habit, and quick
+    followed = steps = kept_lane = 0
+    for seed in range(1, 13):
+        planner = GridPlanner(automaton, settings, seed=seed)
+        preferred = (
+            int(re.search(r"preferred_acc\(v3,(-?\d+)\)", planner.preferences).group(1)) * settings.grid / settings.dt
+        )
+        states = planner.first().states["v3"]
+        possible = [
+            (a.speed, b.speed)
+            for a, b in zip(states, states[1:])
+            if settings.min_speed <= a.speed + preferred <= settings.max_speed
+        ]
+        followed += sum(after - before == preferred for before, after in possible)
+        steps += len(possible)
+        kept_lane += len({s.lane for s in states}) == 1
+    assert followed >= 0.85 * steps, f"v3 took its preferred acceleration at {followed} of {steps} steps where it could"
+    assert kept_lane >= 10, f"v3 kept its lane in {kept_lane} of 12 plans"
 
 
 def test_a_random_start_prefers_and_never_forces():
