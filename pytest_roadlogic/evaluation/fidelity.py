@@ -7,8 +7,8 @@ location the plan's run is in at step t-1 lists it for the vehicle (``Location.a
 of the vehicle's phase there asks for a lane or a speed, or one of its next phase asks for it at
 that phase's first instant). A speed change counts when the mean acceleration over the step is
 above ``SPEED_CHANGE`` in size, but braking is asked by the standard's avoid_collisions (on by
-default) while another vehicle or an obstacle is ahead in the vehicle's lane. Where a vehicle
-starts (its lane and speed) is no change.
+default) while another vehicle or an obstacle is ahead in a lane the vehicle occupies (one changing
+lane occupies both lanes in that step). Where a vehicle starts (its lane and speed) is no change.
 """
 
 from __future__ import annotations
@@ -73,9 +73,19 @@ def unasked_changes(plan: Plan, automaton: SymbolicAutomaton) -> list[UnaskedCha
 
 
 def _follows(plan: Plan, vehicle: str, step: int) -> bool:
-    """Whether another vehicle (or an obstacle) is ahead of ``vehicle`` in its lane at ``step``."""
-    me = plan.at(vehicle, step)
+    """Whether another vehicle (or an obstacle) is ahead of ``vehicle`` in a lane they both occupy
+    at ``step``; a vehicle changing lane during the step occupies both lanes at its end (the lane
+    change is a move across the line, as the planner and the simulation have it)."""
+    mine = _occupied(plan, vehicle, step)
+    position = plan.at(vehicle, step).position
     return any(
-        other != vehicle and plan.at(other, step).lane == me.lane and plan.at(other, step).position > me.position
+        other != vehicle and _occupied(plan, other, step) & mine and plan.at(other, step).position > position
         for other in plan.vehicles
     )
+
+
+def _occupied(plan: Plan, vehicle: str, step: int) -> set[int]:
+    lanes = {plan.at(vehicle, step).lane}
+    if step > 0:
+        lanes.add(plan.at(vehicle, step - 1).lane)
+    return lanes
