@@ -14,10 +14,11 @@ when a parameter is left open (the base strategy: the planner picks within the r
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 
 from . import library, model
 from .errors import Diagnostic, SourceLocation
+from .invocation import substitute_names
 from .values import EvaluationError, Interval, describe, evaluate, names_in, possibly
 
 _BOUND_OPERATORS = ("==", "in", "<", "<=", ">", ">=")
@@ -194,7 +195,7 @@ class _Resolver:
                 self.env = saved
             it = {"it": model.Name(name, constraint.location)}
             self.relations.append(
-                model.Keep(_named(atom, it), constraint.strength, constraint.location, constraint.subject)
+                model.Keep(substitute_names(atom, it), constraint.strength, constraint.location, constraint.subject)
             )
 
     def current(self, name: str) -> Interval:
@@ -404,17 +405,6 @@ class _Resolver:
             return expression.name
         self.add_error(expression.location, f"{parameter.name!r} is a {parameter.type}: write one of its values")
         return None
-
-
-def _named(expression, names: dict[str, model.Name]):
-    """``expression`` with the bare names in ``names`` replaced (``it`` by its parameter)."""
-    if isinstance(expression, model.Name):
-        return names.get(expression.name, expression) if expression.enum is None else expression
-    if isinstance(expression, model.Binary):
-        return replace(expression, left=_named(expression.left, names), right=_named(expression.right, names))
-    if isinstance(expression, model.Unary):
-        return replace(expression, operand=_named(expression.operand, names))
-    return expression
 
 
 def _conjuncts(expression: model.Expression):

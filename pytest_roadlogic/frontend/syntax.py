@@ -578,22 +578,19 @@ class _Builder:
                 return model.Name(f"{base.name}.{self.name(ctx.identifier())}", base.location)
             self.error(location, "a field can only be read from a name, e.g. it.speed or v1.length")
             return base
-        if isinstance(ctx, P.TypeTestContext) and ctx.op.type == P.AS:
-            # ``x.as(T)``: x seen as a T; on a name it is that name (``ego.as(vehicle).speed`` reads
-            # ego's speed); the tool's actors have one type each, so there is nothing to convert
-            base = self.expression(ctx.expression())
-            if isinstance(base, model.Name) and base.enum is None:
-                return base
         if isinstance(ctx, (P.TypeTestContext, P.ElementAccessContext, P.ConditionalContext)):
+            operands = [self.expression(e) for e in ctx.getTypedRuleContexts(P.ExpressionContext)]
+            if isinstance(ctx, P.TypeTestContext) and ctx.op.type == P.AS:
+                # ``x.as(T)``: x seen as a T; on a name it is that name (``ego.as(vehicle).speed``
+                # reads ego's speed); the tool's actors have one type each: nothing to convert
+                if isinstance(operands[0], model.Name) and operands[0].enum is None:
+                    return operands[0]
             # read, never evaluated: a call named after the construct (library.UNSUPPORTED_EXPRESSIONS)
             if isinstance(ctx, P.TypeTestContext):
                 function = "is" if ctx.op.type == P.IS else "as"
             else:
                 function = "[]" if isinstance(ctx, P.ElementAccessContext) else "?:"
-            operands = ctx.getTypedRuleContexts(P.ExpressionContext)
-            return model.Call(
-                function, tuple(model.Argument(None, self.expression(e), location) for e in operands), location
-            )
+            return model.Call(function, tuple(model.Argument(None, e, location) for e in operands), location)
         if isinstance(ctx, P.CallContext):
             function = self.expression(ctx.expression())
             arguments = self.arguments(ctx.argumentList())
@@ -673,10 +670,9 @@ class _Builder:
                     "write [10..20]m or [10m..20m], not both",
                 )
                 return model.Literal("<bad range>", location)
-            dimension, factor, *offset = self.unit(unit_token.text, unit_loc)
-            zero = offset[0] if offset else 0.0
-            low = model.Quantity(low.value * factor + zero, dimension, low.location)
-            high = model.Quantity(high.value * factor + zero, dimension, high.location)
+            dimension, to_si = self.unit_conversion(unit_token.text, unit_loc)
+            low = model.Quantity(to_si(low.value), dimension, low.location)
+            high = model.Quantity(to_si(high.value), dimension, high.location)
             for bound in (low, high):
                 self.bounded(bound.value, dimension, bound.location)
         elif low.dimension != high.dimension:
@@ -698,8 +694,8 @@ class _Builder:
 
     def physical(self, text: str, location: SourceLocation) -> model.Quantity:
         number, unit = split_physical_literal(text)
-        dimension, factor, *offset = self.unit(unit, location)
-        value = number * factor + (offset[0] if offset else 0.0)
+        dimension, to_si = self.unit_conversion(unit, location)
+        value = to_si(number)
         self.bounded(value, dimension, location)
         return model.Quantity(value, dimension, location)
 
@@ -713,6 +709,13 @@ class _Builder:
                 f"{value:g} {unit} is past what the tool computes with: at most {MAX_MAGNITUDE:g} {unit}",
                 "write a value a road scenario can have (1e6 m is 1,000 km, 1e6 s 11 days)",
             )
+
+    def unit_conversion(self, unit: str, location: SourceLocation):
+        """The unit's dimension and the function from a number in it to SI: times its factor, plus
+        its offset when it has one (a temperature's zero)."""
+        dimension, factor, *offset = self.unit(unit, location)
+        zero = offset[0] if offset else 0.0
+        return dimension, lambda number: number * factor + zero
 
     def unit(self, unit: str, location: SourceLocation) -> tuple[str | None, float]:
         try:
