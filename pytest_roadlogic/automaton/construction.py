@@ -132,9 +132,13 @@ class _Builder:
             fragment, rates = _atomic(behavior, self.checked, self.counter, self.env)
             if behavior.until is not None:
                 fragment = self.end_on(
-                    fragment, behavior.until, behavior.label or _phase_name(behavior), behavior.location, rising=True
+                    fragment,
+                    behavior.until,
+                    behavior.label or _phase_name(behavior),
+                    behavior.location,
+                    rising=True,
+                    actor=behavior.actor,
                 )
-                _asked_by_until(fragment, behavior.actor, self.ending(behavior.until)[0])
             duration = behavior.argument("duration")
         elif isinstance(behavior, model.Wait):
             return self.wait(behavior)
@@ -205,13 +209,22 @@ class _Builder:
         return self.end_on(fragment, wait.condition, name, wait.location)
 
     def end_on(
-        self, fragment: _Fragment, spec: model.EventSpecification, name: str, location, rising: bool = False
+        self,
+        fragment: _Fragment,
+        spec: model.EventSpecification,
+        name: str,
+        location,
+        rising: bool = False,
+        actor: str | None = None,
     ) -> _Fragment:
         """The fragment ending as ``spec`` says (``until``, ``wait``): where a condition holds, at an
         emitted event, or ``elapsed(t)`` after it began (a timed phase). ``rising``: an ``until``
         condition is an event that happens when the condition becomes true, so it does not hold
-        yet when the phase starts (a ``wait`` on a condition that already holds ends at once)."""
+        yet when the phase starts (a ``wait`` on a condition that already holds ends at once).
+        ``actor``: the ``until``'s invocation's, whom the condition asks (``_asked_by_until``)."""
         guard, event, first, timed = self.ending(spec)
+        if actor is not None:
+            _asked_by_until(fragment, actor, guard)
         if timed is not None:
             fragment = self.timed(fragment, name, timed[0], timed[1], location)
         if rising and event is None and timed is None and not guard.is_true:
