@@ -26,7 +26,7 @@ sys.path.insert(0, str(ROOT))
 from pytest_roadlogic.automaton import build_automaton  # noqa: E402
 from pytest_roadlogic.frontend import OscError, load_file  # noqa: E402
 from pytest_roadlogic.monitor import monitor  # noqa: E402
-from pytest_roadlogic.pipeline import _guided  # noqa: E402
+from pytest_roadlogic.pipeline import guided_planning  # noqa: E402
 from pytest_roadlogic.planning import NoPlanError, planner_for, settings_for  # noqa: E402
 from pytest_roadlogic.sampling import strategy  # noqa: E402
 from pytest_roadlogic.settings import RunSettings  # noqa: E402
@@ -65,7 +65,7 @@ def plans(scenario, values: list[dict], seed: int):
     specification = build_automaton(scenario)
     found = []
     for sample in values:
-        guide, guided_settings, sample_seed = _guided(scenario, specification, sample, settings, seed)
+        guide, guided_settings, sample_seed = guided_planning(scenario, specification, sample, settings, seed)
         try:
             found.append(next(planner_for(guide(guided_settings), guided_settings, sample_seed).plans(limit=1), None))
         except NoPlanError:
@@ -73,17 +73,19 @@ def plans(scenario, values: list[dict], seed: int):
     return specification, found
 
 
-def drive(specification, plan, variant: dict) -> tuple[bool, bool]:
-    """(accepted, collided) of one simulation of ``plan`` with the driver set to ``variant``."""
+def drive(specification, plan, variant: dict) -> tuple[bool, bool, float]:
+    """(accepted, collided, seconds simulating) of one simulation of ``plan`` with the driver set to ``variant``."""
     saved = {name: getattr(FrenetixDriver, name) for name in variant}
     try:
         for name, value in variant.items():
             setattr(FrenetixDriver, name, tuple(value) if isinstance(value, list) else value)
+        started = time.perf_counter()
         trace = simulator().simulate(plan, SimulationLimits(time_limit=120.0)).trace
+        seconds = time.perf_counter() - started
     finally:
         for name, value in saved.items():
             setattr(FrenetixDriver, name, value)
-    return monitor(specification, trace).accepted, any(i.kind == "collision" for i in trace.incidents)
+    return monitor(specification, trace).accepted, any(i.kind == "collision" for i in trace.incidents), seconds
 
 
 def default_files() -> list[Path]:
@@ -106,9 +108,13 @@ def main(argv: list[str] | None = None) -> int:
     )
     args = parser.parse_args(argv)
     variants = args.variant or [{}]
-    totals = [[0, 0] for _ in variants]
+    totals = [[0, 0, 0.0] for _ in variants]
     planned = 0
-    print("file".ljust(24), "plans".rjust(5), *(f"v{i}: accepted/collisions".rjust(26) for i in range(len(variants))))
+    print(
+        "file".ljust(24),
+        "plans".rjust(5),
+        *(f"v{i}: accepted/collisions/sim s".rjust(30) for i in range(len(variants))),
+    )
     for path in args.files or default_files():
         try:
             scenario = load_file(path).scenario_to_run()
@@ -122,14 +128,16 @@ def main(argv: list[str] | None = None) -> int:
         cells = []
         for index, variant in enumerate(variants):
             results = [drive(specification, plan, variant) for plan in found]
-            accepted, collided = sum(a for a, _ in results), sum(c for _, c in results)
+            accepted, collided = sum(r[0] for r in results), sum(r[1] for r in results)
+            seconds = sum(r[2] for r in results)
             totals[index][0] += accepted
             totals[index][1] += collided
-            cells.append(f"{accepted}/{collided}".rjust(26))
+            totals[index][2] += seconds
+            cells.append(f"{accepted}/{collided}/{seconds:.1f}".rjust(30))
         print(
             f"{path.stem:<24}", str(len(found)).rjust(5), *cells, f"  {time.perf_counter() - started:.0f} s", flush=True
         )
-    print(f"{'all':<24}", str(planned).rjust(5), *(f"{a}/{c}".rjust(26) for a, c in totals))
+    print(f"{'all':<24}", str(planned).rjust(5), *(f"{a}/{c}/{t:.1f}".rjust(30) for a, c, t in totals))
     for index, variant in enumerate(variants):
         print(f"v{index}: {json.dumps(variant)}")
     return 0

@@ -106,6 +106,12 @@ def _settings(config: pytest.Config) -> RunSettings:
         settings = RunSettings.from_texts(texts, origin=lambda o: f"--roadlogic-{o.name} (ini {o.ini})")
     except OptionError as error:
         raise pytest.UsageError(f"roadlogic: {error}") from None
+    if settings.shards > 1 and settings.strategy == BASE:
+        raise pytest.UsageError(
+            "roadlogic: --roadlogic-shards (ini roadlogic_shards): shards split the samples of the refined strategy; "
+            "the base strategy's plans come one after another from one planner. Give --roadlogic-shards 1 or "
+            "--roadlogic-strategy refined"
+        )
     from .simulation.backends import available  # names only: no backend is imported
 
     if settings.simulator not in available():
@@ -177,9 +183,15 @@ class OscFile(pytest.File):
             ) from None
         for warning in checked.warnings:
             self.warn(OscWarning(OscError([warning], sources=checked.sources).report()))
+        from .sampling import Shard
+
+        shards = [Shard(index, settings.shards) for index in range(settings.shards)]
         for scenario in checked.scenarios:
-            if scenario.runnable:
-                item = ScenarioItem.from_parent(self, name=scenario.name, scenario=scenario, settings=settings)
+            if not scenario.runnable:
+                continue
+            for shard in shards:
+                name = scenario.name if shard.count == 1 else f"{scenario.name}[{shard.index + 1}of{shard.count}]"
+                item = ScenarioItem.from_parent(self, name=name, scenario=scenario, settings=settings, shard=shard)
                 item.add_marker("roadlogic")
                 if sum(not actor.stationary for actor in scenario.scenario.actors) > SLOW_ACTORS:
                     item.add_marker("slow")  # planning grows with the vehicles: select or deselect with -m
@@ -196,10 +208,13 @@ class ScenarioFailed(Exception):
 
 
 class ScenarioItem(pytest.Item):
-    def __init__(self, *, scenario, settings: RunSettings, **kwargs) -> None:
+    def __init__(self, *, scenario, settings: RunSettings, shard=None, **kwargs) -> None:
+        from .sampling import Shard
+
         super().__init__(**kwargs)
         self.scenario = scenario  # a CheckedScenario
         self.settings = settings  # the session's, with this file's dialect
+        self.shard = shard or Shard()  # which of the scenario's samples this item draws (--roadlogic-shards)
         self.tally = Tally()
         self.drivers = None  # the hook's drivers, recording which class drove which vehicle (set in runtest)
         self.failure_artifacts: tuple[dict, list[str]] | None = (
@@ -214,6 +229,8 @@ class ScenarioItem(pytest.Item):
 
         settings = self.settings
         self.user_properties += [("strategy", settings.strategy), ("seed", settings.seed)]
+        if self.shard.count > 1:
+            self.user_properties.append(("shard", f"{self.shard.index + 1}/{self.shard.count}"))
         self.drivers = self._drivers()
         runner = Runner(self.scenario, settings, self.drivers, self._simulator(), explain=settings.strategy == BASE)
         try:
@@ -241,6 +258,7 @@ class ScenarioItem(pytest.Item):
                         discarded=self._discard,
                         set_aside=lambda result: self.tally.aside(result.seconds),
                         sampling_seed=sampling_seed,
+                        shard=self.shard,
                     )
         except ScenarioFailed as failure:
             self._report_failure(runner, failure.result)
@@ -280,7 +298,10 @@ class ScenarioItem(pytest.Item):
         from .sampling import UnknownParameter
 
         if not _replays(self, case):
-            pytest.skip(f"--roadlogic-replay runs {case.path}::{case.scenario} only")
+            pytest.skip(
+                f"--roadlogic-replay runs {case.path}::{case.scenario} only"
+                + (", in the shard that holds its values" if self.shard.count > 1 else "")
+            )
         try:
             result = runner.run_case(case)
         except UnknownParameter as error:  # a case file's values are data: a located message, not a traceback
@@ -327,8 +348,9 @@ class ScenarioItem(pytest.Item):
         where = "at" if case.strategy == REFINED else f"at instance {case.instance} of"
         if result.at_no_values:
             where = "at any values; for example at"
+        shard = f", {self.shard}" if self.shard.count > 1 else ""
         lines = [
-            f"scenario {self.scenario.name}: {result.kind} ({result.outcome}) {where} these values (seed {case.seed}{self._sampled_with()}, {self.tally.cases} examples run):"
+            f"scenario {self.scenario.name}: {result.kind} ({result.outcome}) {where} these values (seed {case.seed}{self._sampled_with()}{shard}, {self.tally.cases} examples run):"
         ]
         if case.values:
             for line in describe_values(self.scenario.parameters, case.values):
@@ -345,7 +367,7 @@ class ScenarioItem(pytest.Item):
         lines += ["artifacts:", *(f"  {kind}: {path}" for kind, path in paths.items())]
         # shell-quoted: a file named a'$(touch P)'b.osc must not run a command when the line is pasted
         replay = [
-            f"{shlex.join(['pytest', self.nodeid, '--roadlogic-replay', str(paths['case'])])}   (with this session's drivers)",
+            f"{shlex.join(['pytest', self.nodeid, '--roadlogic-replay', str(paths['case']), *self._shard_option()])}   (with this session's drivers)",
             case.command(paths["case"]),
             case.command(),
         ]
@@ -358,6 +380,10 @@ class ScenarioItem(pytest.Item):
         self.user_properties.append(("culprit", result.culprit or ""))
         self.user_properties.append(("explanation", why.splitlines()[0] if why else ""))
         raise ScenarioFailed(result, "\n".join(lines))
+
+    def _shard_option(self) -> list[str]:
+        """What the replay command needs for this item's node id to exist."""
+        return ["--roadlogic-shards", str(self.shard.count)] if self.shard.count > 1 else []
 
     def _sampled_with(self) -> str:
         seed = self.config.getoption("hypothesis_seed", None)
@@ -388,8 +414,10 @@ class ScenarioItem(pytest.Item):
 def _replays(item: ScenarioItem, case) -> bool:
     """Whether ``case`` is a case of ``item``: its file (relative to the rootdir) and its scenario."""
     return (
-        Path(item.config.rootpath) / case.path
-    ).resolve() == item.path.resolve() and case.scenario == item.scenario.name
+        (Path(item.config.rootpath) / case.path).resolve() == item.path.resolve()
+        and case.scenario == item.scenario.name
+        and (item.shard.count == 1 or item.shard.holds(case.values or {}))
+    )
 
 
 def pytest_collection_modifyitems(session: pytest.Session, config: pytest.Config, items: list) -> None:

@@ -33,6 +33,7 @@ from .outcomes import (
 )
 from .pipeline import SimulatedInstance, run_instances
 from .planning import HorizonTooShort, LimitsBind, NoPlanError, PlanningTimeout, UnsatisfiableScenario, settings_for
+from .sampling import Shard
 from .settings import BASE, DISCARD, REFINED, RunSettings
 from .simulation import DriverFactory, SimulationTimeout, Simulator
 
@@ -156,8 +157,13 @@ class Runner:
         discarded: Callable[[CaseResult], None] = lambda result: None,
         set_aside: Callable[[CaseResult], None] = lambda result: None,
         sampling_seed: int | str | None = None,
+        shard: Shard | None = None,
     ) -> None:
         """``count`` (default: ``settings.examples``) samples drawn by Hypothesis, each run and handed to ``each``.
+
+        ``shard``: draw only the samples of one shard of the scenario (``sampling.Shard``), and its
+        share of ``count``; every shard draws with the same seed, so that together the shards run
+        what one item would draw, split.
 
         ``search``: a property search, as the plugin runs it: the loaded Hypothesis profile, the
         monitor's robustness fed to ``hypothesis.target``, and a failure that ``each`` raises shrunk
@@ -178,7 +184,8 @@ class Runner:
 
         from .sampling import strategy
 
-        count = self.settings.examples if count is None else count
+        shard = shard or Shard()
+        count = shard.examples(self.settings.examples if count is None else count)
         done = 0
         discard = self.settings.no_plan == DISCARD
 
@@ -248,7 +255,7 @@ class Runner:
                 suppress_health_check=list(HealthCheck),
             )
         seed = self.settings.seed if sampling_seed is None else sampling_seed
-        hypothesis.seed(seed)(chosen(hypothesis.given(strategy(self.scenario))(example)))()
+        hypothesis.seed(seed)(chosen(hypothesis.given(strategy(self.scenario, shard))(example)))()
 
     def explained(self, result: CaseResult) -> CaseResult:
         """A case without a plan, run again to say why: the constraints that cannot hold together

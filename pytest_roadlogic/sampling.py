@@ -24,6 +24,7 @@ import dataclasses
 import hashlib
 import json
 import math
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
@@ -74,11 +75,13 @@ def checked_value(parameter: LogicalParameter, value: Any) -> Any:
 # ------------------------------------------------------------------ sampling
 
 
-def strategy(checked: CheckedScenario):
+def strategy(checked: CheckedScenario, shard: Shard | None = None):
     """A Hypothesis strategy of samples: dicts from parameter name to value (SI units).
 
     Relations between declared parameters (``keep(b_gap > a_gap + 5m)``) are met by construction
     where they bound one parameter by others drawn before it; any other relation filters samples.
+    ``shard``: only the samples that belong to it (``Shard.holds``), so that the shards of one
+    scenario draw disjoint samples, and Hypothesis's shrinking stays within its shard.
     """
     from hypothesis import assume
     from hypothesis import strategies as st
@@ -104,7 +107,7 @@ def strategy(checked: CheckedScenario):
         assume(space.accepts({k: v for k, v in values.items() if k in space.domains}))
         return values
 
-    return samples()
+    return samples() if shard is None or shard.count == 1 else samples().filter(shard.holds)
 
 
 def _bounded_by_relations(parameter: LogicalParameter, space: ParameterSpace, drawn: Values) -> tuple[float, float]:
@@ -217,6 +220,27 @@ def _narrow(node: Any, narrowed: dict[SourceLocation, tuple[float, float]]) -> A
         changes = {f.name: _narrow(getattr(node, f.name), narrowed) for f in dataclasses.fields(node)}
         return dataclasses.replace(node, **{k: v for k, v in changes.items() if v is not getattr(node, k)})
     return node
+
+
+@dataclass(frozen=True)
+class Shard:
+    """Shard ``index`` (from 0) of ``count``: the samples whose stable hash is ``index`` modulo
+    ``count``. The shards of a scenario partition its samples, whatever process draws them; each
+    runs its share of the examples (``examples``)."""
+
+    index: int = 0
+    count: int = 1
+
+    def holds(self, values: Values) -> bool:
+        digest = hashlib.sha256(json.dumps(values, sort_keys=True).encode()).digest()
+        return int.from_bytes(digest[:8], "big") % self.count == self.index
+
+    def examples(self, total: int) -> int:
+        """This shard's share of ``total`` examples: the shares add up to ``total``."""
+        return total // self.count + (1 if self.index < total % self.count else 0)
+
+    def __str__(self) -> str:
+        return f"shard {self.index + 1} of {self.count}"
 
 
 def sample_seed(seed: int, values: Values) -> int:

@@ -200,6 +200,13 @@ OPTIONS = (
     ),
     Option("seed", "seed", seed, 1, "fixes sampling, planning and simulation"),
     Option(
+        "shards",
+        "shards",
+        whole_number(1, "a number of shards"),
+        1,
+        "items per scenario, each drawing a disjoint share of its samples (refined): spread one scenario over pytest-xdist workers",
+    ),
+    Option(
         "no-plan",
         "no_plan",
         no_plan_policy,
@@ -269,6 +276,7 @@ class RunSettings:
     strategy: str = REFINED
     examples: int = 10
     seed: int = 1
+    shards: int = 1  # items per scenario (refined strategy), each with its share of the examples
     tries: int = 5
     no_plan: str = FAIL
     lanes: int | None = None

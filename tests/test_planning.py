@@ -372,3 +372,41 @@ def test_a_horizon_limit_that_binds_is_named_not_the_scenarios_durations():
     assert GridPlanner(automaton, dataclasses.replace(SETTINGS, max_horizon=32), 1).first().horizon >= 30, (
         "with the limit raised it plans"
     )
+
+
+KEEP_AND_CHANGE = """\
+scenario s:
+  a: car
+  b: car
+  do serial:
+    p1: parallel(duration: 3s):
+      b.drive() with:
+        lane(1)
+      a.drive() with:
+        lane(2)
+        speed(20mps)
+    p2: parallel(duration: 3s):
+      b.drive() with:
+        keep_lane()
+      a.drive() with:
+        keep_speed()
+        speed(30mps, at: end)
+"""
+
+
+def test_a_constraint_that_stands_for_one_of_several_variants_is_named_as_the_file_writes_it(tmp_path, capsys):
+    """keep_speed() is planned as one band of starting speeds per variant, keep_lane() as one lane
+    each: a message names the modifier and what it holds, never the variant the core happened to
+    contain (it had named ``0 <= v(a) <= 0.5`` for keep_speed(), a speed the file never asks)."""
+    from pytest_roadlogic.cli import main
+
+    path = tmp_path / "keep.osc"
+    path.write_text(KEEP_AND_CHANGE)
+    assert main(["plan", str(path)]) == 1
+    err = capsys.readouterr().err
+    assert "keep_speed(): v(a) held at its value at the phase's start" in err, err
+    import re
+
+    bands = set(re.findall(r"([\d.]+) <= v\(a\) <= ([\d.]+)", err))
+    assert bands <= {("19.5", "20.5"), ("29.5", "30.5")}, f"only the file's speeds (with their tolerance): {bands}"
+    assert "Traceback" not in err

@@ -23,9 +23,10 @@ LANE_CONVENTION = (
 RELATIVE = ("same_as", "left_of", "right_of", "side_of")
 
 
-def keep_lane_variants(actor: str, lanes: int, source: SourceLocation) -> list[Variant]:
-    """The actor stays in whichever lane it starts the phase in."""
-    return [Variant(invariant=Bound(Term(LANE, actor), lane, lane, source)) for lane in range(lanes)]
+def keep_lane_variants(actor: str, lanes: int, source: SourceLocation, written: str = "keep_lane()") -> list[Variant]:
+    """The actor stays in whichever lane it starts the phase in (one variant per lane)."""
+    text = f"{written}: l({actor}) held at its lane at the phase's start"
+    return [Variant(invariant=Bound(Term(LANE, actor), lane, lane, source, text)) for lane in range(lanes)]
 
 
 class Lane(AnchoredModifier):
@@ -112,7 +113,7 @@ class FollowLane(Action):
     )
 
     def translate(self, use: Use, phase: Phase) -> None:
-        phase.branch(keep_lane_variants(use.actor, use.lanes, use.location))
+        phase.branch(keep_lane_variants(use.actor, use.lanes, use.location, "follow_lane()"))
 
 
 class _LaneChange:
@@ -153,22 +154,26 @@ class _LaneChange:
         side = use.name("side")
         reference = use.name("reference")
         variants = []
+        shown = f"{counts[0]}" if len(counts) == 1 else f"{counts[0]} to {counts[-1]}"
         for count in counts:
             for direction in ("left", "right") if side is None else (side,):
                 step = -count if direction == "left" else count  # internal lanes grow to the right
                 if reference is not None and reference != use.actor:
                     variants.append(Variant(end=Bound(Term(LANE, use.actor, reference), step, step, use.location)))
                     continue
+                written = (
+                    f"change_lane(): l({use.actor}) ends {shown} lane{'s' if shown != '1' else ''} "
+                    f"{side or 'left or right'} of its lane at the phase's start"
+                )
                 for lane in range(use.lanes):
                     if 0 <= lane + step < use.lanes:
                         variants.append(
                             Variant(
-                                start=Bound(Term(LANE, use.actor), lane, lane, use.location),
-                                end=Bound(Term(LANE, use.actor), lane + step, lane + step, use.location),
+                                start=Bound(Term(LANE, use.actor), lane, lane, use.location, written),
+                                end=Bound(Term(LANE, use.actor), lane + step, lane + step, use.location, written),
                             )
                         )
         if not variants:
-            shown = f"{counts[0]}" if len(counts) == 1 else f"{counts[0]} to {counts[-1]}"
             raise error_at(use.location, f"a change of {shown} lanes is impossible on a road of {use.lanes} lanes")
         phase.branch(variants)
 

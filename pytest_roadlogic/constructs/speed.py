@@ -23,11 +23,12 @@ KEEP_SPEED_BAND = 1.0
 RELATIONS = ("faster_than", "slower_than", "same_as")
 
 
-def keep_speed_variants(actor: str, source: SourceLocation) -> list[Variant]:
+def keep_speed_variants(actor: str, source: SourceLocation, written: str = "keep_speed()") -> list[Variant]:
+    text = f"{written}: v({actor}) held at its value at the phase's start"
     return [
         Variant(
-            start=Bound(Term(SPEED_Q, actor), max(0.0, c - KEEP_SPEED_BAND / 2), c + KEEP_SPEED_BAND / 2, source),
-            invariant=Bound(Term(SPEED_Q, actor), max(0.0, c - KEEP_SPEED_BAND), c + KEEP_SPEED_BAND, source),
+            start=Bound(Term(SPEED_Q, actor), max(0.0, c - KEEP_SPEED_BAND / 2), c + KEEP_SPEED_BAND / 2, source, text),
+            invariant=Bound(Term(SPEED_Q, actor), max(0.0, c - KEEP_SPEED_BAND), c + KEEP_SPEED_BAND, source, text),
         )
         for c in KEEP_SPEED_CENTRES
     ]

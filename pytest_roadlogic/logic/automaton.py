@@ -128,6 +128,11 @@ class Timing:
             return f"{self.name} lasts at least {self.low:g} s"
         return f"{self.name} lasts {self.low:g}..{self.high:g} s"
 
+    @property
+    def as_written(self) -> str:
+        """How a message names this timing (as ``Bound.as_written``)."""
+        return str(self)
+
 
 @dataclass(frozen=True)
 class Transition:

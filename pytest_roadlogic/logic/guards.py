@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Protocol
 
 import numpy as np
@@ -131,10 +131,18 @@ class Bound(Guard):
     low: float = -math.inf
     high: float = math.inf
     source: SourceLocation | None = None
+    # the file's constraint as written, when this bound is one of the variants that stand for it
+    # (keep_speed(): one band of starting speeds): a message names the constraint, not the variant
+    written: str | None = field(default=None, compare=False, repr=False)
 
     def holds(self, snapshot: Snapshot) -> bool:
         value = self.term.value(snapshot)
         return self.low <= value <= self.high
+
+    @property
+    def as_written(self) -> str:
+        """How a message names this bound: the file's constraint for a variant, else the bound."""
+        return self.written or str(self)
 
     def robustness_series(self, columns) -> np.ndarray:
         if self.term.quantity == HEADWAY:

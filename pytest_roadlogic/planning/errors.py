@@ -111,7 +111,7 @@ class UnsatisfiableScenario(NoPlanError):
     def _alone(self, constraint) -> str:
         """A constraint with the parameters behind it: ``10 <= p(a) <= 20 (parameter gap)``."""
         named = self._named(constraint)
-        return f"{constraint} ({named[2:]})" if named else str(constraint)
+        return f"{constraint.as_written} ({named[2:]})" if named else constraint.as_written
 
     def report(self) -> str:
         """Each conflicting modifier as ``path:line:col: error:`` with its line and a caret."""
@@ -125,7 +125,8 @@ class UnsatisfiableScenario(NoPlanError):
                 others = [o for o in group if o is not member]
                 if others:
                     together = ", ".join(
-                        f"{o} (line {o.source.line}{self._named(o)})" if o.source else str(o) for o in others
+                        f"{o.as_written} (line {o.source.line}{self._named(o)})" if o.source else o.as_written
+                        for o in others
                     )
                     message = f"{self._alone(member)} cannot hold together with {together}"
                 else:
@@ -143,7 +144,9 @@ def conflict_message(conflicts: list[tuple], parameters: dict | None = None) -> 
     parameters = parameters or {}
     lines = ["the scenario can never be met: these constraints cannot hold at the same time"]
     for group in conflicts:
-        lines.append("  " + " and ".join(f"{c} (at {c.source}{_named(parameters.get(c.source, ()))})" for c in group))
+        lines.append(
+            "  " + " and ".join(f"{c.as_written} (at {c.source}{_named(parameters.get(c.source, ()))})" for c in group)
+        )
     return "\n".join(lines)
 
 

@@ -78,6 +78,9 @@ class FrenetixDriver:
     # the realistic files but five_vehicle_minute, 197 -> 199 of 200; no collision either way; 16
     # follow_then_overtake samples whose pull-out had lagged, 13 -> 16
     acceleration_from_speed = True
+    # s between two samplings: in between, the car drives on along the trajectory it chose, as long
+    # as that trajectory stays clear of the others' (a new prediction that crosses it replans at once)
+    replan_period = 0.1
 
     def start(self, vehicle: str, reference: Reference, road: Road, dt: float) -> None:
         import frenetix
@@ -105,11 +108,37 @@ class FrenetixDriver:
         self.fallbacks = 0
         self.tracked_steps = int(round(self.tracked / dt)) + 1  # samples compared: now and the tracked window
         self.guarded_steps = int(round(self.guarded / dt)) + 1
+        self.replan_steps = max(1, int(round(self.replan_period / dt)))
+        self._committed: Trajectory | None = None  # the chosen trajectory, index 0 being now
+        self._age = 0  # steps driven along it
+
+    def _driven_on(self, state: VehicleState, others: dict[str, Trajectory]) -> Trajectory | None:
+        """The chosen trajectory one step on, when it is still to be followed: chosen less than a
+        replanning period ago, long enough, ``state`` where it led, and clear of the others."""
+        committed = self._committed
+        if committed is None or self._age + 1 >= self.replan_steps or len(committed.x) < self.guarded_steps + 2:
+            return None
+        expected = committed.state(1)
+        if abs(expected.x - state.x) > 1e-9 or abs(expected.y - state.y) > 1e-9:
+            return None
+        onward = committed.shifted()
+        if self._collides(onward, others):
+            return None
+        self._committed, self._age = onward, self._age + 1
+        return onward
+
+    def _commit(self, trajectory: Trajectory) -> Trajectory:
+        self._committed, self._age = trajectory, 0
+        return trajectory
 
     def plan(self, time: float, state: VehicleState, others: dict[str, Trajectory]) -> Trajectory:
         import frenetix
         import frenetix.trajectory_functions as tf
 
+        onward = self._driven_on(state, others)
+        if onward is not None:
+            return onward
+        self._committed = None
         low = bool(state.speed < self.low_velocity)
         cos_h, sin_h = np.cos(state.heading), np.sin(state.heading)
         rear = np.array([state.x - cos_h * WHEELBASE / 2, state.y - sin_h * WHEELBASE / 2])
@@ -151,37 +180,44 @@ class FrenetixDriver:
         for candidate in ranked:  # copied one by one: the first safe one is usually the best ranked
             trajectory = self._copy(candidate)
             if not self._collides(trajectory, others) and self._road_violation(trajectory) <= road_now + 0.02:
-                return trajectory
+                return self._commit(trajectory)
             trajectories.append(trajectory)
         # Nothing fully safe: prefer not colliding, then the least road violation, then tracking.
         self.fallbacks += 1
         return min(trajectories, key=lambda t: (self._collides(t, others), round(self._road_violation(t), 2)))
 
     def _samples(self, time: float, state: VehicleState, initial) -> np.ndarray:
-        rows = []
-        d_now = float(initial.x0_lat[0])
+        """The sampling rows frenetix generates trajectories from: per end time, every end speed
+        around the reference's, ending laterally where the reference is (and, mid lane change,
+        also where the car is). The reference is evaluated once for all end times."""
+        lon, lat = list(initial.x0_lon), list(initial.x0_lat)
+        d_now = float(lat[0])
         h = self.derivative_step
-        for duration in self.durations:
-            end = time + duration
-            v_ref = float(self.reference.v(end))
-            # the lateral end state is the reference's, rate and curvature too: a candidate ending
-            # mid lane change at rest (d' = 0) stalled the change, each replanning again (the car
-            # crossed the lane line up to 1 s late, issue 20)
-            d_around = self.reference.d([end - h, end, end + h])
-            d_ref = float(d_around[1])
-            d_rate = float(d_around[2] - d_around[0]) / (2 * h)
-            d_curve = float(d_around[2] - 2 * d_around[1] + d_around[0]) / h**2
-            ends = {max(0.0, v_ref + o) for o in self.speed_offsets} | {max(0.0, state.speed - 3.0 * duration)}
-            for v_end in sorted(ends):
-                rows.append([0.0, duration, *initial.x0_lon, v_end, 0.0, *initial.x0_lat, d_ref, d_rate, d_curve])
+        durations = np.asarray(self.durations, dtype=float)
+        ends = time + durations
+        v_refs = self.reference.v(ends)
+        # the lateral end state is the reference's, rate and curvature too: a candidate ending
+        # mid lane change at rest (d' = 0) stalled the change, each replanning again (the car
+        # crossed the lane line up to 1 s late, issue 20)
+        around = self.reference.d(np.stack([ends - h, ends, ends + h], axis=1).ravel()).reshape(-1, 3)
+        d_refs = around[:, 1]
+        d_rates = (around[:, 2] - around[:, 0]) / (2 * h)
+        d_curves = (around[:, 2] - 2 * around[:, 1] + around[:, 0]) / h**2
+        rows = []
+        for duration, v_ref, d_ref, d_rate, d_curve in zip(
+            self.durations, v_refs.tolist(), d_refs.tolist(), d_rates.tolist(), d_curves.tolist()
+        ):
+            ends_v = {max(0.0, v_ref + o) for o in self.speed_offsets} | {max(0.0, state.speed - 3.0 * duration)}
+            for v_end in sorted(ends_v):
+                rows.append([0.0, duration, *lon, v_end, 0.0, *lat, d_ref, d_rate, d_curve])
                 if d_now != d_ref:
-                    rows.append([0.0, duration, *initial.x0_lon, v_end, 0.0, *initial.x0_lat, d_now, 0.0, 0.0])
+                    rows.append([0.0, duration, *lon, v_end, 0.0, *lat, d_now, 0.0, 0.0])
         if self.stop_deceleration:
             # a stop at a constant deceleration: "be at 0 in 1 s", replanned every step, only ever
             # halves the speed (the car crept at 1 m/s where the scenario asked for a standstill)
             duration = max(self.dt, state.speed / self.stop_deceleration)
-            d_around = self.reference.d([time + duration])
-            rows.append([0.0, duration, *initial.x0_lon, 0.0, 0.0, *initial.x0_lat, float(d_around[0]), 0.0, 0.0])
+            d_stop = float(self.reference.d([time + duration])[0])
+            rows.append([0.0, duration, *lon, 0.0, 0.0, *lat, d_stop, 0.0, 0.0])
         return np.array(rows, dtype=float)
 
     @staticmethod
