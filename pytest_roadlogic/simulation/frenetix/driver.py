@@ -78,9 +78,11 @@ class FrenetixDriver:
     # the realistic files but five_vehicle_minute, 197 -> 199 of 200; no collision either way; 16
     # follow_then_overtake samples whose pull-out had lagged, 13 -> 16
     acceleration_from_speed = True
-    # s between two samplings: in between, the car drives on along the trajectory it chose, as long
-    # as that trajectory stays clear of the others' (a new prediction that crosses it replans at once)
-    replan_period = 0.1
+    # s between two samplings: in between, the car drives on along the trajectory it chose, unless
+    # another vehicle is near (``near``: metres along and across the road, between centres), or a
+    # new prediction crosses the trajectory; then it samples every step, as it always had
+    replan_period = 0.3
+    near = (25.0, 5.0)
 
     def start(self, vehicle: str, reference: Reference, road: Road, dt: float) -> None:
         import frenetix
@@ -120,6 +122,9 @@ class FrenetixDriver:
             return None
         expected = committed.state(1)
         if abs(expected.x - state.x) > 1e-9 or abs(expected.y - state.y) > 1e-9:
+            return None
+        along, across = self.near
+        if any(abs(o.x[0] - state.x) < along and abs(o.y[0] - state.y) < across for o in others.values()):
             return None
         onward = committed.shifted()
         if self._collides(onward, others):

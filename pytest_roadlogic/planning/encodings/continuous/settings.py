@@ -32,6 +32,9 @@ class ContinuousSettings:
     start_floor: float = 8.0
     lane_change_speed: float = 5.0  # m/s at least while changing lane
     min_gap: float = 8.0  # m between the centres of two vehicles sharing a lane
+    # m: the least gap between centres the planner keeps when the scenario itself asks two vehicles
+    # to be closer than min_gap (0.5 m between bumpers; instance.spacing)
+    closest_gap: float = 5.0
     # s: and more, by this many seconds of the speed at which the one behind closes in (a follower
     # 15 m behind at +15 m/s is a collision in the simulation, not a gap)
     closing_time: float = 1.0
