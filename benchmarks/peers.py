@@ -36,7 +36,6 @@ sys.path.insert(0, str(PEERS))
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from driver import samples  # noqa: E402  (benchmarks/driver.py: samples drawn as the refined strategy draws them)
-
 from scenic_support import write_road  # noqa: E402
 
 from pytest_roadlogic.pipeline import load_scenario, run_scenario  # noqa: E402
