@@ -21,6 +21,7 @@ from __future__ import annotations
 import argparse
 import contextlib
 import functools
+import itertools
 import json
 import os
 import shlex
@@ -324,13 +325,21 @@ def _plan(args: argparse.Namespace) -> int:
     from .planning import planner_for, settings_for
 
     def solve():
+        from .planning.fallbacks import with_fallbacks
+
         scenario, automaton = _load_automaton(args)
         settings = _run_settings(args)
-        planner = planner_for(automaton, settings_for(settings), settings.seed)
+        planner_settings = settings_for(settings)
+        planner = planner_for(automaton, planner_settings, settings.seed)
         if args.show_asp:
             print(planner.instance_program())
         started = time.perf_counter()
-        plans = list(planner.plans(limit=args.plans))
+        # as a run plans: before "no plan", thinner margins, a finer step and relaxed limits (a plan
+        # that needs one says so below); the constraints named when none has one clash for those too
+        plans = with_fallbacks(
+            planner.plans(limit=args.plans), lambda _: automaton, planner_settings, settings.seed, args.plans
+        )
+        plans = list(itertools.islice(plans, args.plans))
         return scenario, automaton, plans, time.perf_counter() - started
 
     solved = _reporting_input_errors(args, solve)
@@ -345,12 +354,26 @@ def _plan(args: argparse.Namespace) -> int:
         print(plan.table(functools.partial(scenario.registry.lane_number, lanes=plan.lanes)))
         for step, transition in plan.transitions:
             print(f"  step {step}: {events[transition]}")
+        needed = fallback_needed(plan)
+        if needed:
+            print(f"  {needed}")
         unasked = unasked_changes(plan, automaton)
         if unasked:
             print("  no plan has every vehicle do only what it is asked; in this one:")
             print("\n".join(f"    {change}" for change in unasked))
     print(f"{len(plans)} plan{'s' if len(plans) != 1 else ''} in {seconds:.3f} s")
     return 0
+
+
+def fallback_needed(plan) -> str:
+    """What a plan from one of ``planning.fallbacks``' planners needed, in a line; "" for another."""
+    if plan.stats.get("thinned_margins"):
+        return "no plan keeps the planner's full margins inside the scenario's ranges: this one keeps thinner ones (a setting of the tool)"
+    if plan.stats.get("finer_step"):
+        return "no plan exists in the planner's steps: this one is planned in half steps (a setting of the tool)"
+    if plan.stats.get("relaxed_limits"):
+        return "no plan exists within the planner's vehicle limits: this one relaxes some (see roadlogic run for which bind)"
+    return ""
 
 
 def _automaton(args: argparse.Namespace) -> int:

@@ -82,7 +82,7 @@ class FrenetixDriver:
     # another vehicle is near (``near``: metres along and across the road, between centres), or a
     # new prediction crosses the trajectory; then it samples every step, as it always had
     replan_period = 0.3
-    near = (25.0, 5.0)
+    near = (6.0, 2.5)
 
     def start(self, vehicle: str, reference: Reference, road: Road, dt: float) -> None:
         import frenetix
