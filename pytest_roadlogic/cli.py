@@ -340,12 +340,12 @@ def _plan(args: argparse.Namespace) -> int:
             planner.plans(limit=args.plans), lambda _: automaton, planner_settings, settings.seed, args.plans
         )
         plans = list(itertools.islice(plans, args.plans))
-        return scenario, automaton, plans, time.perf_counter() - started
+        return scenario, automaton, plans, time.perf_counter() - started, planner_settings, settings.seed
 
     solved = _reporting_input_errors(args, solve)
     if isinstance(solved, int):
         return solved
-    scenario, automaton, plans, seconds = solved
+    scenario, automaton, plans, seconds, planner_settings, seed = solved
     events = {t.id: t.label for t in automaton.transitions}
     for plan in plans:
         print(
@@ -354,7 +354,7 @@ def _plan(args: argparse.Namespace) -> int:
         print(plan.table(functools.partial(scenario.registry.lane_number, lanes=plan.lanes)))
         for step, transition in plan.transitions:
             print(f"  step {step}: {events[transition]}")
-        needed = fallback_needed(plan)
+        needed = fallback_needed(plan, automaton, planner_settings, seed)
         if needed:
             print(f"  {needed}")
         unasked = unasked_changes(plan, automaton)
@@ -365,14 +365,22 @@ def _plan(args: argparse.Namespace) -> int:
     return 0
 
 
-def fallback_needed(plan) -> str:
+def fallback_needed(plan, automaton, settings, seed: int) -> str:
     """What a plan from one of ``planning.fallbacks``' planners needed, in a line; "" for another."""
     if plan.stats.get("thinned_margins"):
         return "no plan keeps the planner's full margins inside the scenario's ranges: this one keeps thinner ones (a setting of the tool)"
     if plan.stats.get("finer_step"):
         return "no plan exists in the planner's steps: this one is planned in half steps (a setting of the tool)"
     if plan.stats.get("relaxed_limits"):
-        return "no plan exists within the planner's vehicle limits: this one relaxes some (see roadlogic run for which bind)"
+        from .planning.fallbacks import CAR_LIMITS, binding_limits, relaxed_names
+
+        names = binding_limits(lambda _: automaton, settings, seed)
+        whose = (
+            "beyond a real car's: no car can drive this scenario"
+            if names & CAR_LIMITS
+            else "the tool's spacing between cars, not a car's limit"
+        )
+        return f"no plan exists within the planner's vehicle limits: this one needs {' and '.join(relaxed_names(settings, names))} ({whose})"
     return ""
 
 

@@ -410,3 +410,20 @@ def test_a_constraint_that_stands_for_one_of_several_variants_is_named_as_the_fi
     bands = set(re.findall(r"([\d.]+) <= v\(a\) <= ([\d.]+)", err))
     assert bands <= {("19.5", "20.5"), ("29.5", "30.5")}, f"only the file's speeds (with their tolerance): {bands}"
     assert "Traceback" not in err
+
+
+def test_roadlogic_plan_tries_the_runs_fallbacks_before_no_plan_and_names_what_a_fallback_plan_needs(tmp_path, capsys):
+    """From 10 to 30 m/s in 2 s is beyond a car: ``plan`` had said the speeds cannot hold together
+    under its own margins and limits only, where ``run`` went on to its fallbacks; it now plans as
+    ``run`` does and says which limits the plan needs, and whose they are."""
+    from pytest_roadlogic.cli import main
+
+    path = tmp_path / "jump.osc"
+    path.write_text(
+        "scenario jump:\n  a: car\n  do serial:\n    p1: a.drive(duration: 2s) with:\n"
+        "      speed(10mps, at: start)\n      speed(30mps, at: end)\n"
+    )
+    assert main(["plan", str(path)]) == 0
+    out = capsys.readouterr().out
+    assert "no plan exists within the planner's vehicle limits: this one needs" in out, out
+    assert "max_acceleration 4 m/s^2 relaxed to 12" in out and "beyond a real car's" in out
