@@ -86,7 +86,7 @@ def test_samples_whose_values_clash_only_together_are_set_aside_not_failed(monke
 
     end = "ego.drive.position.distance"
     together, fine = {"start_gap": 34.0, end: 8.0}, {"start_gap": 20.0, end: 8.0}
-    monkeypatch.setattr(sampling, "strategy", lambda checked: st.sampled_from([together, fine]))
+    monkeypatch.setattr(sampling, "strategy", lambda checked, shard=None: st.sampled_from([together, fine]))
     ran, aside = [], []
     Runner(load_scenario(two_parameters(tmp_path)), RunSettings()).refined(ran.append, count=2, set_aside=aside.append)
     assert [r.case.values for r in aside] == [together], "34 m to 8 m has no plan, though each value has plans"
@@ -197,7 +197,7 @@ def _refined_on(path, samples, monkeypatch):
     from pytest_roadlogic.settings import RunSettings
     from tests.drivers import NeverChangesLane
 
-    monkeypatch.setattr(sampling, "strategy", lambda checked: st.sampled_from(samples))
+    monkeypatch.setattr(sampling, "strategy", lambda checked, shard=None: st.sampled_from(samples))
     ran, aside = [], []
     runner = Runner(load_scenario(path), RunSettings(tries=1), drivers=lambda vehicle: NeverChangesLane())
     runner.refined(ran.append, count=len(samples), set_aside=aside.append)
