@@ -232,10 +232,12 @@ class FrenetixDriver:
         """Mean squared distance from the reference (s of the rear axle, d, v) over the tracked
         window, for all candidates at once (they share the planning horizon, hence the length)."""
         s_ref, d_ref, v_ref = target
-        n = min(len(s_ref) + 1, min(len(c.curvilinear.s) for c in candidates))
+        curves = [c.curvilinear for c in candidates]  # each access copies frenetix's arrays: once
+        along = [curve.s for curve in curves]
+        n = min(len(s_ref) + 1, min(len(a) for a in along))
         m = n - 1
-        s = np.array([c.curvilinear.s[1:n] for c in candidates])
-        d = np.array([c.curvilinear.d[1:n] for c in candidates])
+        s = np.array([a[1:n] for a in along])
+        d = np.array([curve.d[1:n] for curve in curves])
         v = np.array([c.cartesian.v[1:n] for c in candidates])
         w_s, w_d, w_v = weights
         return (
@@ -274,13 +276,18 @@ class FrenetixDriver:
         return float(max(0.0, (half - y).max(), (y + half - self.road.width).max()))
 
     def _collides(self, trajectory: Trajectory, others: dict[str, Trajectory]) -> bool:
+        """Whether ``trajectory`` comes within the clearances of another's predicted trajectory at
+        one of its next steps (an other's last predicted state held past its end)."""
         steps = self._steps(trajectory)
+        if steps < 2:
+            return False
+        x, y = trajectory.x[1:steps], trajectory.y[1:steps]
+        ks = np.arange(1, steps)
         for other in others.values():
-            for k in range(1, steps):
-                j = min(k, len(other.x) - 1)
-                if (
-                    abs(trajectory.x[k] - other.x[j]) < CAR_LENGTH + self.longitudinal_clearance
-                    and abs(trajectory.y[k] - other.y[j]) < CAR_WIDTH + self.lateral_clearance
-                ):
-                    return True
+            j = np.minimum(ks, len(other.x) - 1)
+            close = (np.abs(x - other.x[j]) < CAR_LENGTH + self.longitudinal_clearance) & (
+                np.abs(y - other.y[j]) < CAR_WIDTH + self.lateral_clearance
+            )
+            if close.any():
+                return True
         return False
