@@ -6,6 +6,12 @@ strategy the planning time to the first plan over --seeds (median and max, plann
 that planning ended, and how many first plans the simulation accepted.
 
     python benchmarks/realistic.py [--seeds 5] [--plan-timeout 30] [--simulate] [--encoding grid|continuous|both] [--paper] [FILES...]
+    python benchmarks/realistic.py --refined 20 [--paper] [FILES...]
+
+``--refined N`` times instead the first plan of N samples of each file's logical parameters (drawn
+as the refined strategy draws them, seed 11), through the fallbacks a run takes before it says
+"no plan" (thinner margins, a finer step, relaxed limits), and prints the median and the maximum
+and the samples without a plan: the issue-41 target is no feasible sample over 2 s.
 
 Planning is what issue 17 replaced: --encoding both prints the grid encoding (asp/grid/) and
 the continuous one (asp/continuous/, the default) side by side; --paper adds the paper's seven scenarios.
@@ -23,6 +29,7 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
+sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from pytest_roadlogic.automaton import build_automaton  # noqa: E402
 from pytest_roadlogic.evaluation.runner import conftest_dialect  # noqa: E402
@@ -55,6 +62,7 @@ def main() -> int:
     parser.add_argument("--simulate", action="store_true")
     parser.add_argument("--encoding", choices=("grid", "continuous", "both"), default="continuous")
     parser.add_argument("--paper", action="store_true", help="also the paper's seven scenarios (scenarios/*.osc)")
+    parser.add_argument("--refined", type=int, default=0, help="time the first plans of this many samples per file")
     args = parser.parse_args()
     files = [*(sorted((ROOT / "scenarios").glob("*.osc")) if args.paper else []), *args.files]
     encodings = ("grid", "continuous") if args.encoding == "both" else (args.encoding,)
@@ -78,6 +86,9 @@ def main() -> int:
         except OscError as error:
             print(f"{name:<22} automaton: {first_error(error.report())}")
             continue
+        if args.refined:
+            refined_row(name, scenario, automaton, args.refined)
+            continue
         medians = {}
         for encoding in encodings:
             try:
@@ -90,6 +101,41 @@ def main() -> int:
                 f"{'':<22} {'ratio':<11} {medians['continuous'] / medians['grid']:8.2f}x (continuous / grid, medians)"
             )
     return 0
+
+
+def refined_row(name: str, scenario, automaton, count: int, seed: int = 11) -> None:
+    """Prints the seconds to the first plan of ``count`` samples (median, max) and how many have none."""
+    from driver import samples
+
+    from pytest_roadlogic.pipeline import guided_planning
+    from pytest_roadlogic.planning import planner_for, settings_for
+    from pytest_roadlogic.planning.fallbacks import with_fallbacks
+    from pytest_roadlogic.settings import RunSettings
+
+    settings = settings_for(RunSettings(), explain_unsatisfiable=False)
+    seconds, without, slowest = [], 0, None
+    for values in samples(scenario, count, seed):
+        started = time.perf_counter()
+        guide, guided, sample_seed = guided_planning(scenario, automaton, values, settings, seed)
+        try:
+            plans = with_fallbacks(
+                planner_for(guide(guided), guided, sample_seed).plans(limit=1), guide, guided, sample_seed, 1
+            )
+            found = next(plans, None) is not None
+        except NoPlanError:
+            found = False
+        elapsed = time.perf_counter() - started
+        if not found:
+            without += 1
+            continue
+        seconds.append(elapsed)
+        if slowest is None or elapsed > slowest[0]:
+            slowest = (elapsed, values)
+    timing = f"{statistics.median(seconds):8.3f} {max(seconds):8.3f}" if seconds else "       -        -"
+    print(
+        f"{name:<22} {'refined':<11} {timing:<28} {without} of {count} without a plan; slowest at {slowest[1] if slowest else '-'}",
+        flush=True,
+    )
 
 
 def row(name: str, encoding: str, automaton, args) -> float:
