@@ -179,15 +179,23 @@ def test_timed_phases_last_as_long_as_their_durations_allow():
         assert timing.low <= (end[0] - begin[0]) * plan.dt <= timing.high, timing
 
 
-def test_an_impossible_scenario_is_reported_with_both_conflicting_modifiers(tmp_path, capsys):
+def plan_text(tmp_path, name: str, text: str) -> tuple[int, Path]:
+    """``roadlogic plan`` on ``text`` written as ``name`` in ``tmp_path``: (exit code, the file)."""
     from pytest_roadlogic.cli import main
 
-    path = tmp_path / "impossible.osc"
-    path.write_text(
+    path = tmp_path / name
+    path.write_text(text)
+    return main(["plan", str(path)]), path
+
+
+def test_an_impossible_scenario_is_reported_with_both_conflicting_modifiers(tmp_path, capsys):
+    code, path = plan_text(
+        tmp_path,
+        "impossible.osc",
         "scenario s:\n  a: car\n  b: car\n  do parallel:\n    b.drive()\n    a.drive() with:\n"
-        "      position([30..40]m, ahead_of: b, at: end)\n      position([10..20]m, behind: b, at: end)\n"
+        "      position([30..40]m, ahead_of: b, at: end)\n      position([10..20]m, behind: b, at: end)\n",
     )
-    assert main(["plan", str(path)]) == 1
+    assert code == 1
     err = capsys.readouterr().err
     # each constraint with the logical parameter behind it: the inline range's name (two
     # position ranges in one modifier list, told apart by their lines)
@@ -398,11 +406,8 @@ def test_a_constraint_that_stands_for_one_of_several_variants_is_named_as_the_fi
     """keep_speed() is planned as one band of starting speeds per variant, keep_lane() as one lane
     each: a message names the modifier and what it holds, never the variant the core happened to
     contain (it had named ``0 <= v(a) <= 0.5`` for keep_speed(), a speed the file never asks)."""
-    from pytest_roadlogic.cli import main
-
-    path = tmp_path / "keep.osc"
-    path.write_text(KEEP_AND_CHANGE)
-    assert main(["plan", str(path)]) == 1
+    code, _ = plan_text(tmp_path, "keep.osc", KEEP_AND_CHANGE)
+    assert code == 1
     err = capsys.readouterr().err
     assert "keep_speed(): v(a) held at its value at the phase's start" in err, err
     import re
@@ -416,14 +421,13 @@ def test_roadlogic_plan_tries_the_runs_fallbacks_before_no_plan_and_names_what_a
     """From 10 to 30 m/s in 2 s is beyond a car: ``plan`` had said the speeds cannot hold together
     under its own margins and limits only, where ``run`` went on to its fallbacks; it now plans as
     ``run`` does and says which limits the plan needs, and whose they are."""
-    from pytest_roadlogic.cli import main
-
-    path = tmp_path / "jump.osc"
-    path.write_text(
+    code, _ = plan_text(
+        tmp_path,
+        "jump.osc",
         "scenario jump:\n  a: car\n  do serial:\n    p1: a.drive(duration: 2s) with:\n"
-        "      speed(10mps, at: start)\n      speed(30mps, at: end)\n"
+        "      speed(10mps, at: start)\n      speed(30mps, at: end)\n",
     )
-    assert main(["plan", str(path)]) == 0
+    assert code == 0
     out = capsys.readouterr().out
     assert "no plan exists within the planner's vehicle limits: this one needs" in out, out
     assert "max_acceleration 4 m/s^2 relaxed to 12" in out and "beyond a real car's" in out
