@@ -49,7 +49,9 @@ def test_a_scenario_split_over_two_xdist_workers_names_the_failing_shard_and_its
     # squeeze's gaps of 22.5..38 m have no plan: with 10 examples in two shards, both find some
     (pytester.path / "squeeze.osc").write_text(SQUEEZE.read_text())
     options = ["--roadlogic-encoding", "grid", "--roadlogic-horizon", "6", "--roadlogic-examples", "10", *QUIET]
-    result = pytester.runpytest_subprocess("--roadlogic-shards", "2", "-n", "2", "--tx", "2*popen", "-v", *options)
+    result = pytester.runpytest_subprocess(
+        "--roadlogic-shards", "2", "--dist", "load", "--tx", "2*popen", "-v", *options
+    )
     report = result.stdout.str()
     assert re.search(r"\[gw0\].*squeeze\.osc::squeeze\[\dof2\]", report), report
     assert re.search(r"\[gw1\].*squeeze\.osc::squeeze\[\dof2\]", report), "both workers ran a shard"
