@@ -323,10 +323,9 @@ def _roots(args: argparse.Namespace, named: Path):
 def _plan(args: argparse.Namespace) -> int:
     from .evaluation.fidelity import unasked_changes
     from .planning import planner_for, settings_for
+    from .planning.fallbacks import fallback_needed, with_fallbacks
 
     def solve():
-        from .planning.fallbacks import with_fallbacks
-
         scenario, automaton = _load_automaton(args)
         settings = _run_settings(args)
         planner_settings = settings_for(settings)
@@ -354,7 +353,7 @@ def _plan(args: argparse.Namespace) -> int:
         print(plan.table(functools.partial(scenario.registry.lane_number, lanes=plan.lanes)))
         for step, transition in plan.transitions:
             print(f"  step {step}: {events[transition]}")
-        needed = fallback_needed(plan, automaton, planner_settings, seed)
+        needed = fallback_needed(plan, lambda _: automaton, planner_settings, seed)
         if needed:
             print(f"  {needed}")
         unasked = unasked_changes(plan, automaton)
@@ -363,25 +362,6 @@ def _plan(args: argparse.Namespace) -> int:
             print("\n".join(f"    {change}" for change in unasked))
     print(f"{len(plans)} plan{'s' if len(plans) != 1 else ''} in {seconds:.3f} s")
     return 0
-
-
-def fallback_needed(plan, automaton, settings, seed: int) -> str:
-    """What a plan from one of ``planning.fallbacks``' planners needed, in a line; "" for another."""
-    if plan.stats.get("thinned_margins"):
-        return "no plan keeps the planner's full margins inside the scenario's ranges: this one keeps thinner ones (a setting of the tool)"
-    if plan.stats.get("finer_step"):
-        return "no plan exists in the planner's steps: this one is planned in half steps (a setting of the tool)"
-    if plan.stats.get("relaxed_limits"):
-        from .planning.fallbacks import CAR_LIMITS, binding_limits, relaxed_names
-
-        names = binding_limits(lambda _: automaton, settings, seed)
-        whose = (
-            "beyond a real car's: no car can drive this scenario"
-            if names & CAR_LIMITS
-            else "the tool's spacing between cars, not a car's limit"
-        )
-        return f"no plan exists within the planner's vehicle limits: this one needs {' and '.join(relaxed_names(settings, names))} ({whose})"
-    return ""
 
 
 def _automaton(args: argparse.Namespace) -> int:

@@ -232,8 +232,7 @@ class Shard:
     count: int = 1
 
     def holds(self, values: Values) -> bool:
-        digest = hashlib.sha256(json.dumps(values, sort_keys=True).encode()).digest()
-        return int.from_bytes(digest[:8], "big") % self.count == self.index
+        return _stable_hash(values, 8) % self.count == self.index
 
     def examples(self, total: int) -> int:
         """This shard's share of ``total`` examples: the shares add up to ``total``."""
@@ -249,8 +248,14 @@ def sample_seed(seed: int, values: Values) -> int:
     Not Python's ``hash`` (salted per process): a case replayed in another process must get the
     same plan.
     """
-    digest = hashlib.sha256(json.dumps([seed, values], sort_keys=True).encode()).digest()
-    return int.from_bytes(digest[:4], "big") >> 1
+    return _stable_hash([seed, values], 4) >> 1
+
+
+def _stable_hash(data: Any, size: int) -> int:
+    """The first ``size`` bytes of the SHA-256 of ``data`` as JSON, as an integer: the same in
+    every process, unlike Python's salted ``hash``."""
+    digest = hashlib.sha256(json.dumps(data, sort_keys=True).encode()).digest()
+    return int.from_bytes(digest[:size], "big")
 
 
 # ------------------------------------------------------------------ public helpers

@@ -82,6 +82,24 @@ def tool_limit(plan: Plan, explanation: str, guide: Guide, settings, seed: int):
     return None
 
 
+def fallback_needed(plan: Plan, guide: Guide, settings, seed: int) -> str:
+    """What a plan from one of ``with_fallbacks``' planners needed, in a line (as ``tool_limit``
+    says it of a rejected one); "" for a plan within every setting."""
+    if plan.stats.get("thinned_margins"):
+        return "no plan keeps the planner's full margins inside the scenario's ranges: this one keeps thinner ones (a setting of the tool)"
+    if plan.stats.get("finer_step"):
+        return "no plan exists in the planner's steps: this one is planned in half steps (a setting of the tool)"
+    if plan.stats.get("relaxed_limits"):
+        names = binding_limits(guide, settings, seed)
+        whose = (
+            "beyond a real car's: no car can drive this scenario"
+            if names & CAR_LIMITS
+            else "the tool's spacing between cars, not a car's limit"
+        )
+        return f"no plan exists within the planner's vehicle limits: this one needs {' and '.join(relaxed_names(settings, names))} ({whose})"
+    return ""
+
+
 def binding_limits(guide: Guide, settings, seed: int) -> frozenset[str]:
     """The vehicle limits without which the sample has a plan (with the thinner margins): one at a
     time first, so that the report names the one that binds; then a car's limits alone, the
