@@ -19,9 +19,15 @@ def pytest_addoption(parser):
     parser.addoption(
         "--run-bench", action="store_true", help="also run the full evaluation (tests marked bench; about 6 minutes)"
     )
+    parser.addoption(
+        "--run-slow",
+        action="store_true",
+        help="also run the project's slow tests (marked slow; about 15 more minutes); -m selects by marker as usual",
+    )
 
 
 def pytest_collection_modifyitems(config, items):
+    _deselect_slow_tests(config, items)
     if config.getoption("--run-bench"):
         return
     import pytest
@@ -30,3 +36,18 @@ def pytest_collection_modifyitems(config, items):
     for item in items:
         if "bench" in item.keywords:
             item.add_marker(skip)
+
+
+def _deselect_slow_tests(config, items) -> None:
+    """The project's own tests marked slow run only with ``--run-slow`` or a ``-m`` expression:
+    the default test run stays under 15 minutes on two cores. Scenario items (which the plugin
+    marks slow by their vehicles) are the user's to select, and are never deselected here."""
+    if config.getoption("--run-slow") or config.getoption("markexpr"):
+        return
+    tests = config.rootpath / "tests"
+    kept, slow = [], []
+    for item in items:
+        (slow if "slow" in item.keywords and item.path.is_relative_to(tests) else kept).append(item)
+    if slow:
+        config.hook.pytest_deselected(items=slow)
+        items[:] = kept

@@ -108,8 +108,8 @@ def refined_row(name: str, scenario, automaton, count: int, seed: int = 11) -> N
     from driver import samples
 
     from pytest_roadlogic.pipeline import guided_planning
-    from pytest_roadlogic.planning import planner_for, settings_for
-    from pytest_roadlogic.planning.fallbacks import with_fallbacks
+    from pytest_roadlogic.planning import settings_for
+    from pytest_roadlogic.planning.fallbacks import planned
     from pytest_roadlogic.settings import RunSettings
 
     settings = settings_for(RunSettings(), explain_unsatisfiable=False)
@@ -118,10 +118,7 @@ def refined_row(name: str, scenario, automaton, count: int, seed: int = 11) -> N
         started = time.perf_counter()
         guide, guided, sample_seed = guided_planning(scenario, automaton, values, settings, seed)
         try:
-            plans = with_fallbacks(
-                planner_for(guide(guided), guided, sample_seed).plans(limit=1), guide, guided, sample_seed, 1
-            )
-            found = next(plans, None) is not None
+            found = next(planned(guide, guided, sample_seed, 1), None) is not None
         except NoPlanError:
             found = False
         elapsed = time.perf_counter() - started

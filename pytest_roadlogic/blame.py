@@ -20,7 +20,7 @@ from .frontend import CheckedScenario
 from .outcomes import CANNOT_INSTANTIATE
 from .pipeline import guided_planning
 from .planning import PlannerSettings, settings_for
-from .planning.fallbacks import with_fallbacks
+from .planning.fallbacks import planned
 from .settings import RunSettings
 
 
@@ -37,16 +37,12 @@ def has_plan(
     and limits; without ``beyond_limits``, the fallbacks stay within a real car's limits
     (``planning.fallbacks.CAR_LIMITS`` are never relaxed). A planning timeout or a horizon that binds is no proof that
     the values have none, and counts as a plan."""
-    from .planning import HorizonTooShort, NoPlanError, PlanningTimeout, planner_for
+    from .planning import HorizonTooShort, NoPlanError, PlanningTimeout
 
     settings = dataclasses.replace(settings or settings_for(RunSettings()), explain_unsatisfiable=False)
     guide, settings, seed = guided_planning(scenario, build_automaton(scenario), values, settings, seed)
     try:
-        plans = planner_for(guide(settings), settings, seed).plans(limit=1)
-        return (
-            next(with_fallbacks(plans, guide, settings, seed, 1, beyond_limits) if fallbacks else plans, None)
-            is not None
-        )
+        return next(planned(guide, settings, seed, 1, fallbacks, beyond_limits), None) is not None
     except (PlanningTimeout, HorizonTooShort):
         return True
     except NoPlanError:

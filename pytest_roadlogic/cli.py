@@ -323,7 +323,7 @@ def _roots(args: argparse.Namespace, named: Path):
 def _plan(args: argparse.Namespace) -> int:
     from .evaluation.fidelity import unasked_changes
     from .planning import planner_for, settings_for
-    from .planning.fallbacks import fallback_needed, with_fallbacks
+    from .planning.fallbacks import fallback_needed, planned
 
     def solve():
         scenario, automaton = _load_automaton(args)
@@ -335,9 +335,7 @@ def _plan(args: argparse.Namespace) -> int:
         started = time.perf_counter()
         # as a run plans: before "no plan", thinner margins, a finer step and relaxed limits (a plan
         # that needs one says so below); the constraints named when none has one clash for those too
-        plans = with_fallbacks(
-            planner.plans(limit=args.plans), lambda _: automaton, planner_settings, settings.seed, args.plans
-        )
+        plans = planned(lambda _: automaton, planner_settings, settings.seed, args.plans)
         plans = list(itertools.islice(plans, args.plans))
         return scenario, automaton, plans, time.perf_counter() - started, planner_settings, settings.seed
 

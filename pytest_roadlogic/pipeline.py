@@ -19,7 +19,7 @@ from .automaton import SymbolicAutomaton, build_automaton
 from .frontend import CheckedScenario, load_file
 from .monitor import Verdict, monitor
 from .planning import Plan, PlannerSettings, settings_for
-from .planning.fallbacks import Guide, tool_limit, with_fallbacks
+from .planning.fallbacks import Guide, planned, tool_limit
 from .sampling import guided, sample_seed
 from .settings import DEFAULT_SIM_TIMEOUT, RunSettings
 from .simulation import DriverFactory, Simulation, SimulationLimits, Simulator
@@ -97,7 +97,6 @@ def run_instances(
     ``SimulationTimeout`` propagate. ``fallbacks``: when the planner has no plan, try thinner
     margins, a finer step and relaxed limits (``planning.fallbacks``) before saying so.
     """
-    from .planning import planner_for
     from .simulation.backends import simulator as default_simulator
 
     settings = settings or settings_for(RunSettings())  # the default encoding's
@@ -107,10 +106,7 @@ def run_instances(
     specification = build_automaton(scenario)
     guide, settings, seed = guided_planning(scenario, specification, values, settings, seed)
     automaton_seconds = time.perf_counter() - start
-    planner = planner_for(guide(settings), settings, seed)
-    plans = planner.plans(limit=count * max_tries)
-    if fallbacks:
-        plans = with_fallbacks(plans, guide, settings, seed, count * max_tries)
+    plans = planned(guide, settings, seed, count * max_tries, fallbacks)
     for instance in range(count):
         seconds = {"automaton": automaton_seconds, "planning": 0.0, "simulation": 0.0, "monitoring": 0.0}
         automaton_seconds = 0.0

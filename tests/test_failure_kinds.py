@@ -33,6 +33,7 @@ def two_parameters(directory):
     return path
 
 
+@pytest.mark.slow  # shrinks a band to its edge through planning: about 2 minutes
 def test_a_band_no_plan_meets_fails_at_its_edge_as_a_scenario_that_cannot_be_instantiated(pytester):
     two_parameters(pytester.path)
     result = pytester.runpytest_subprocess("--roadlogic-examples", "20", "--junitxml", "junit.xml", *QUIET)

@@ -306,6 +306,7 @@ def test_a_random_start_meets_a_guard_that_pins_a_vehicle_to_a_place_as_early_as
     assert "fire(" not in ContinuousPlanner(follow, settings, 1).preferences
 
 
+@pytest.mark.slow  # clingo-lpx, kept to compare, searches for minutes on two busy cores
 def test_the_clingo_lpx_theory_plans_a_random_start_too():
     # kept selectable to compare: it has no preferences, so a random start's nudges must not reach it
     import dataclasses

@@ -250,6 +250,7 @@ def test_an_error_inside_one_example_fails_that_item_only(pytester):
     assert "the driver under test crashed" in result.stdout.str()
 
 
+@pytest.mark.slow  # the suite twice, serial and on two workers: about 2 minutes
 def test_pytest_xdist_gives_the_same_outcomes_as_a_serial_run(pytester):
     copy(pytester, SCENARIOS / "follow.osc", SCENARIOS / "change_lane.osc")
     # every gap of this range is infeasible: a failing item whose examples are quick

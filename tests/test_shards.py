@@ -4,6 +4,7 @@ disjoint shares of its samples, each shrinking and replaying its own failures.""
 import json
 import re
 
+import pytest
 from hypothesis import HealthCheck, given, seed, settings
 
 from pytest_roadlogic.pipeline import load_scenario
@@ -45,6 +46,7 @@ def test_each_shard_draws_only_its_own_samples_so_shards_never_run_the_same_samp
     assert not {json.dumps(v, sort_keys=True) for v in ones} & {json.dumps(v, sort_keys=True) for v in twos}
 
 
+@pytest.mark.slow  # two workers shrinking a failure: about 2 minutes
 def test_a_scenario_split_over_two_xdist_workers_names_the_failing_shard_and_its_case_replays(pytester):
     # squeeze's gaps of 22.5..38 m have no plan: with 10 examples in two shards, both find some
     (pytester.path / "squeeze.osc").write_text(SQUEEZE.read_text())

@@ -316,7 +316,7 @@ def test_item_16_both_commands_of_the_readme_work_without_an_activated_environme
     install = commands_after("Install and run the scenario suite")
     tests = commands_after("Run the project's own tests")
     assert install == 'python3 -m venv .venv && .venv/bin/pip install -e ".[test]" && .venv/bin/pytest scenarios/'
-    assert tests == ".venv/bin/python -m pytest tests/ -q"
+    assert tests == ".venv/bin/python -m pytest tests/ -q -n auto"
     assert "activate" not in install + tests
     ci = (ROOT / ".ci" / "run").read_text().strip().splitlines()
     assert ci[-1] == tests, "CI runs exactly the README's test command"

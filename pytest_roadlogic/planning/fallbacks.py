@@ -1,5 +1,5 @@
 """What the planner tries when it finds no plan for a sample: thinner margins, a finer step, and
-vehicle limits beyond its own (``with_fallbacks``), and which of its settings binds when such a
+vehicle limits beyond its own (``planned``), and which of its settings binds when such a
 plan's simulation is not accepted (``tool_limit``).
 
 Why here: the margins, the step and the limits are the planner's guesses at what the vehicles can
@@ -10,10 +10,18 @@ this module is the one policy for both.
 from __future__ import annotations
 
 import dataclasses
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Generator, Iterator
 
 from ..logic.automaton import SymbolicAutomaton
-from .errors import HorizonTooShort, LimitsBind, MarginsBind, NoPlanError, PlanningTimeout, StepBinds
+from .errors import (
+    HorizonTooShort,
+    LimitsBind,
+    MarginsBind,
+    NoPlanError,
+    PlanningTimeout,
+    StepBinds,
+    UnsatisfiableScenario,
+)
 from .plan import Plan
 
 Guide = Callable[[object], SymbolicAutomaton]  # planner settings -> the automaton they solve
@@ -64,7 +72,7 @@ def relaxed_names(settings, names=None) -> list[str]:
 
 def tool_limit(plan: Plan, explanation: str, guide: Guide, settings, seed: int):
     """The error that says which setting of the tool binds, when the rejected ``plan`` (whose
-    simulation the monitor explains with ``explanation``) came from one of ``with_fallbacks``'s
+    simulation the monitor explains with ``explanation``) came from one of ``planned``'s fallback
     planners; None for a plan within every setting."""
     if plan.stats.get("thinned_margins"):
         return MarginsBind(settings.describe_margins(), settings.thinned().describe_margins(), explanation)
@@ -83,7 +91,7 @@ def tool_limit(plan: Plan, explanation: str, guide: Guide, settings, seed: int):
 
 
 def fallback_needed(plan: Plan, guide: Guide, settings, seed: int) -> str:
-    """What a plan from one of ``with_fallbacks``' planners needed, in a line (as ``tool_limit``
+    """What a plan from one of ``planned``'s fallback planners needed, in a line (as ``tool_limit``
     says it of a rejected one); "" for a plan within every setting."""
     if plan.stats.get("thinned_margins"):
         return "no plan keeps the planner's full margins inside the scenario's ranges: this one keeps thinner ones (a setting of the tool)"
@@ -119,49 +127,74 @@ def binding_limits(guide: Guide, settings, seed: int) -> frozenset[str]:
     return ALL_LIMITS
 
 
-def with_fallbacks(
-    plans: Iterator[Plan], guide: Guide, settings, seed: int, limit: int, beyond_limits: bool = True
+def planned(
+    guide: Guide, settings, seed: int, limit: int, fallbacks: bool = True, beyond_limits: bool = True
 ) -> Iterator[Plan]:
-    """``plans``, or, when the planner has none at all, those of a planner that keeps
-    ``settings.fallback_margins`` of its margins (``stats["thinned_margins"]``), or else those of
-    one that also plans in half the step (``stats["finer_step"]``), or else of one that drives
-    beyond the vehicle limits (``RELAXED_LIMITS``, ``stats["relaxed_limits"]``; without
-    ``beyond_limits`` only the spacing between cars is relaxed, never ``CAR_LIMITS``). Each
-    planner solves the sample narrowed with its own margins (``guide``).
+    """The plans of the sample ``guide`` gives (at most ``limit``), the one way every caller plans:
+    the planner's own; or, when it has none at all, those of a planner that keeps
+    ``settings.fallback_margins`` of its margins (``stats["thinned_margins"]``), or else of one that
+    also plans in half the step (``stats["finer_step"]``), or else of one that drives beyond the
+    vehicle limits (``RELAXED_LIMITS``, ``stats["relaxed_limits"]``; without ``beyond_limits`` only
+    the spacing between cars is relaxed, never ``CAR_LIMITS``). Each planner solves the sample
+    narrowed with its own margins (``guide``). Without ``fallbacks``, the planner's own plans only.
 
     Why: the margins and the limits are the planner's guesses at what the vehicles can track, not
     the scenario's constraints; a plan nearer the scenario's edges is simulated and monitored like
     any other, and an accepted simulation is an instance of the scenario. A scenario with no plan
-    even then raises the first planner's error: its constraints clash."""
+    even then raises the first planner's error, explained (``settings.explain_unsatisfiable``) only
+    then: its constraints clash. Explaining before the fallbacks had cost a sample that one of
+    them plans a whole diagnosis (measured: 43 of 90 s on follow_overtake_points)."""
+    if not fallbacks:
+        yield from _planner_for(guide(settings), settings, seed).plans(limit=limit)
+        return
+    quiet = dataclasses.replace(settings, explain_unsatisfiable=False)
+    first = _planner_for(guide(quiet), quiet, seed)
+    plans = first.plans(limit=limit)
     try:
-        first = next(plans, None)
+        plan = next(plans, None)
+    except (PlanningTimeout, HorizonTooShort, UnsatisfiableScenario):
+        raise  # a setting that binds, or guards that contradict themselves whatever the margins
     except NoPlanError as error:
-        thinned = settings.thinned()
-        if thinned is None or isinstance(error, (PlanningTimeout, HorizonTooShort)):
-            raise
-        quiet = dataclasses.replace(thinned, explain_unsatisfiable=False)
-        # half the planning step: durations between whole seconds (a 0.5 s wait, a 3.6 s brake)
-        finer = dataclasses.replace(
-            quiet, dt=quiet.dt / 2, max_horizon=quiet.max_horizon * 2, lane_change_gap=quiet.lane_change_gap * 2
-        )
-        # the spacing first, then a car's limits too: a plan within a car's limits is one a car can
-        # drive (cut_out_obstacle's stop 5 m behind its wreck, planned with every limit relaxed,
-        # braked with a jerk of 4 m/s^3 and its simulated ego hit the wreck)
-        relaxed = [(with_limits_relaxed(quiet, SPACING), "relaxed_limits")] + (
-            [(with_limits_relaxed(quiet), "relaxed_limits")] if beyond_limits else []
-        )
-        for fallback_settings, mark in ((quiet, "thinned_margins"), (finer, "finer_step"), *relaxed):
-            try:
-                fallback = _planner_for(guide(fallback_settings), fallback_settings, seed).plans(limit=limit)
-                plan = next(fallback, None)
-            except NoPlanError:
-                continue
-            while plan is not None:
-                plan.stats[mark] = 1.0
-                yield plan
-                plan = next(fallback, None)
+        if (yield from _fallback_plans(guide, settings, seed, limit, beyond_limits)):
             return
+        if settings.explain_unsatisfiable:
+            explained = _planner_for(guide(settings), settings, seed)
+            explained.least_action = False  # the reason holds for any plan, natural or not
+            explained._explain(error, explained._renewed())
         raise error from None
-    if first is not None:
-        yield first
-        yield from plans
+    while plan is not None:
+        yield plan
+        plan = next(plans, None)
+
+
+def _fallback_plans(guide: Guide, settings, seed: int, limit: int, beyond_limits: bool) -> Generator[Plan, None, bool]:
+    """Yields the plans of the first fallback planner that has any (``planned``) and returns
+    whether one had."""
+    thinned = settings.thinned()
+    if thinned is None:
+        return False
+    quiet = dataclasses.replace(thinned, explain_unsatisfiable=False)
+    # half the planning step: durations between whole seconds (a 0.5 s wait, a 3.6 s brake)
+    finer = dataclasses.replace(
+        quiet, dt=quiet.dt / 2, max_horizon=quiet.max_horizon * 2, lane_change_gap=quiet.lane_change_gap * 2
+    )
+    # the spacing first, then a car's limits too: a plan within a car's limits is one a car can
+    # drive (cut_out_obstacle's stop 5 m behind its wreck, planned with every limit relaxed,
+    # braked with a jerk of 4 m/s^3 and its simulated ego hit the wreck)
+    relaxed = [(with_limits_relaxed(quiet, SPACING), "relaxed_limits")] + (
+        [(with_limits_relaxed(quiet), "relaxed_limits")] if beyond_limits else []
+    )
+    for fallback_settings, mark in ((quiet, "thinned_margins"), (finer, "finer_step"), *relaxed):
+        try:
+            fallback = _planner_for(guide(fallback_settings), fallback_settings, seed).plans(limit=limit)
+            plan = next(fallback, None)
+        except NoPlanError:
+            continue
+        if plan is None:
+            continue
+        while plan is not None:
+            plan.stats[mark] = 1.0
+            yield plan
+            plan = next(fallback, None)
+        return True
+    return False
