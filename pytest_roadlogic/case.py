@@ -20,6 +20,7 @@ from .settings import (
     BASE,
     CONTINUOUS,
     DEFAULT_SIMULATOR,
+    DUT_NONE,
     GRID,
     OPTIONS_BY_NAME,
     REFINED,
@@ -54,6 +55,13 @@ class Case:
     # vehicle -> "module:QualName" of the driver a pytest_roadlogic_driver hook gave it (the others
     # are the simulator's own): a replay builds the same ones or refuses (simulation/named_drivers.py)
     drivers: dict[str, str] = field(default_factory=dict)
+    # the vehicle under test and its oracles (settings.RunSettings.under_test); None in older case files: none
+    dut: str | None = None
+    dut_driver: str | None = None
+    replan_period: float | None = None
+    min_ttc: float | None = None
+    min_gap: float | None = None
+    max_decel: float | None = None
     versions: dict[str, str] = field(default_factory=dict)  # of the packages a run depends on, when written
 
     @classmethod
@@ -73,6 +81,12 @@ class Case:
             simulation_time_limit=settings.simulation_time_limit,
             max_tries=settings.tries,
             simulator=settings.simulator,
+            dut=settings.dut,
+            dut_driver=settings.dut_driver,
+            replan_period=settings.replan_period,
+            min_ttc=settings.min_ttc,
+            min_gap=settings.min_gap,
+            max_decel=settings.max_decel,
             **identity,
         )
 
@@ -95,6 +109,13 @@ class Case:
             "simulation_time_limit": self.simulation_time_limit,
             "tries": self.max_tries,
             "simulator": self.simulator,
+            # a case file from before vehicles under test drove every vehicle by its plan
+            "dut": self.dut if self.dut is not None else DUT_NONE,
+            "dut_driver": self.dut_driver,
+            "replan_period": self.replan_period,
+            "min_ttc": self.min_ttc,
+            "min_gap": self.min_gap,
+            "max_decel": self.max_decel,
         }
         return RunSettings(**{k: v for k, v in given.items() if v is not None})
 
@@ -174,6 +195,12 @@ class Case:
             ("--encoding", None if self.planning_encoding == CONTINUOUS else self.planning_encoding),
             ("--horizon", self.max_horizon),
             ("--tries", self.max_tries),
+            ("--dut", self.dut),
+            ("--dut-driver", self.dut_driver),
+            ("--replan-period", self.replan_period),
+            ("--min-ttc", self.min_ttc),
+            ("--min-gap", self.min_gap),
+            ("--max-decel", self.max_decel),
         ):
             if value is not None:
                 parts += [option, str(value)]
@@ -197,6 +224,12 @@ _SETTING_OPTIONS = {
     "simulation_time_limit": "sim-timeout",
     "max_tries": "tries",
     "simulator": "simulator",
+    "dut": "dut",
+    "dut_driver": "dut-driver",
+    "replan_period": "replan-period",
+    "min_ttc": "min-ttc",
+    "min_gap": "min-gap",
+    "max_decel": "max-decel",
 }
 
 
@@ -213,7 +246,7 @@ def _check_kinds(data: dict[str, Any]) -> None:
             continue
         if isinstance(value, bool) or not isinstance(value, (str, int, float)):
             raise TypeError(
-                f"{name} must be a {'string' if name in ('strategy', 'road_speed', 'dialect', 'encoding', 'simulator') else 'number'}"
+                f"{name} must be a {'string' if name in ('strategy', 'road_speed', 'dialect', 'encoding', 'simulator', 'dut', 'dut_driver') else 'number'}"
             )
         OPTIONS_BY_NAME[option].parse(str(value))
     if (

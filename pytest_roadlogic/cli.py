@@ -55,7 +55,22 @@ EXIT_ACCEPTED, EXIT_REJECTED, EXIT_INPUT = 0, 1, 2
 LANES_HELP = "lanes of the road (default: from the scenario: its path_min_driving_lanes/path_max_lanes and the lanes it names, at least 3)"
 # the run settings each command takes, as flags read from settings.OPTIONS
 DRIVER_HELP = "drive VEHICLE with the class MODULE:CLASS (built without arguments; see pytest_roadlogic.simulation.Driver) instead of the simulator's own; repeat for several"
-RUN_FLAGS = ("seed", "tries", "road-speed", "encoding", "horizon", "plan-timeout", "sim-timeout", "simulator")
+RUN_FLAGS = (
+    "seed",
+    "tries",
+    "road-speed",
+    "encoding",
+    "horizon",
+    "plan-timeout",
+    "sim-timeout",
+    "simulator",
+    "dut",
+    "dut-driver",
+    "replan-period",
+    "min-ttc",
+    "min-gap",
+    "max-decel",
+)
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -7,6 +7,14 @@ these, so that "conformant" means one thing everywhere:
 - non-conformant: the monitor rejected the simulation of every plan tried;
 - no plan: the planner found no plan for the case (for a sample: at those values);
 - timed out: planning or simulation ran past its time limit.
+
+With a vehicle under test (``dut``), which drives itself, a simulated case is instead:
+
+- passed: the scenario happened (the monitor accepted it) and no oracle failed;
+- failed: an oracle failed: the vehicle under test caused a collision, left the road, came closer
+  in time or space than a threshold, or braked harder than one (``oracles``);
+- not exercised: the scenario did not happen around it (the monitor rejected every try, or
+  another vehicle ran into it): nothing was tested, and nothing failed.
 """
 
 from __future__ import annotations
@@ -14,13 +22,26 @@ from __future__ import annotations
 from collections import Counter
 
 CONFORMANT, NON_CONFORMANT, NO_PLAN, TIMED_OUT = "conformant", "non-conformant", "no plan", "timed out"
-OUTCOMES = (CONFORMANT, NON_CONFORMANT, NO_PLAN, TIMED_OUT)
+PASSED, DUT_FAILED, NOT_EXERCISED = "passed", "failed", "not exercised"
+OUTCOMES = (CONFORMANT, NON_CONFORMANT, NO_PLAN, TIMED_OUT, PASSED, DUT_FAILED, NOT_EXERCISED)
+# what a case that ends so says about the item: none of these fail it alone (an item whose cases were
+# mostly not exercised fails as a whole: ``mostly_not_exercised``)
+FINE = (CONFORMANT, PASSED, NOT_EXERCISED)
 STAGES = ("automaton", "planning", "simulation", "monitoring", "artifacts")
 # the kinds of failure a report names (``runner.CaseResult.kind``): the scenario cannot be
 # instantiated at the values, a limit of the tool binds there, or the simulation was not accepted
 CANNOT_INSTANTIATE = "the scenario cannot be instantiated"
 TOOL_LIMIT = "a limit of the tool binds"
 NOT_ACCEPTED = "the simulation was not accepted"
+THE_DUT_FAILED = "the vehicle under test failed"
+DID_NOT_HAPPEN = "the scenario did not happen"
+
+
+def mostly_not_exercised(outcomes: Counter) -> bool:
+    """Whether most of the simulated cases of an item were not exercised: a test that never
+    happened tested nothing, and is a failure of the test."""
+    simulated = sum(outcomes[o] for o in (PASSED, DUT_FAILED, NOT_EXERCISED))
+    return simulated > 0 and outcomes[NOT_EXERCISED] * 2 > simulated
 
 
 def key(outcome: str) -> str:

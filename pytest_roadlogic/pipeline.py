@@ -16,8 +16,10 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from .automaton import SymbolicAutomaton, build_automaton
+from .dut import UnderTest
 from .frontend import CheckedScenario, load_file
 from .monitor import Verdict, monitor
+from .oracles import DutReport, judge
 from .planning import Plan, PlannerSettings, settings_for
 from .planning.fallbacks import Guide, planned, tool_limit
 from .sampling import guided, sample_seed
@@ -39,6 +41,8 @@ class SimulatedInstance:
     tries: int
     seconds: dict[str, float] = field(default_factory=dict)  # stage -> seconds, summed over tries
     instance: int = 0  # its index among the instances of one planner (base strategy)
+    # the oracles' verdict on the vehicle under test, when one drove itself (dut.UnderTest)
+    dut: DutReport | None = None
 
 
 def load_scenario(
@@ -89,6 +93,7 @@ def run_instances(
     simulation_time_limit: float | None = DEFAULT_SIM_TIMEOUT,
     simulator: Simulator | None = None,
     fallbacks: bool = True,
+    under_test: UnderTest | None = None,
 ) -> Iterator[SimulatedInstance]:
     """Up to ``count`` instances from one planner, each plan different from all before it (the base strategy).
 
@@ -96,6 +101,9 @@ def run_instances(
     early when the planner has no further plan. Planning errors (no plan, a timeout) and
     ``SimulationTimeout`` propagate. ``fallbacks``: when the planner has no plan, try thinner
     margins, a finer step and relaxed limits (``planning.fallbacks``) before saying so.
+    ``under_test``: the scenario's vehicle under test (``dut.UnderTest.vehicle``; none: every
+    vehicle follows its plan) drives itself, and the oracles judge it (``SimulatedInstance.dut``);
+    a try whose vehicle under test failed is the last.
     """
     from .simulation.backends import simulator as default_simulator
 
@@ -105,6 +113,9 @@ def run_instances(
     start = time.perf_counter()
     specification = build_automaton(scenario)
     guide, settings, seed = guided_planning(scenario, specification, values, settings, seed)
+    dut = under_test.vehicle(specification.actors) if under_test is not None else None
+    if dut is not None:
+        drivers = under_test.drivers(dut, drivers)
     automaton_seconds = time.perf_counter() - start
     plans = planned(guide, settings, seed, count * max_tries, fallbacks)
     for instance in range(count):
@@ -118,13 +129,17 @@ def run_instances(
             if plan is None:
                 break
             start = time.perf_counter()
-            simulation = simulator.simulate(plan, limits, drivers)
+            react = _reactive(plan, guide, settings, seed, dut, under_test)
+            simulation = simulator.simulate(plan, limits, drivers, **({"react": react} if react else {}))
             seconds["simulation"] += time.perf_counter() - start
             start = time.perf_counter()
             verdict = monitor(specification, simulation.trace)
+            report = judge(simulation.trace, dut, under_test.thresholds) if dut is not None else None
             seconds["monitoring"] += time.perf_counter() - start
-            outcome = SimulatedInstance(scenario, specification, plan, simulation, verdict, tries, seconds, instance)
-            if verdict.accepted:
+            outcome = SimulatedInstance(
+                scenario, specification, plan, simulation, verdict, tries, seconds, instance, report
+            )
+            if verdict.accepted or (report is not None and report.failed):
                 break
         if outcome is None:
             return  # the planner has no plan left; the first call raises NoPlanError instead
@@ -133,6 +148,19 @@ def run_instances(
             if limit is not None:
                 raise limit
         yield outcome
+
+
+def _reactive(plan: Plan, guide: Guide, settings, seed: int, dut: str | None, under_test: UnderTest | None):
+    """The reactive execution of ``plan`` around the vehicle under test ``dut`` (None: the plan is
+    driven as it is: no vehicle under test, a replanning period of 0, or an encoding that cannot
+    replan from a state, the grid's)."""
+    if dut is None or not under_test.replan_period or getattr(settings, "encoding", "") != "continuous":
+        return None
+    from .planning.fallbacks import settings_of
+    from .reactive import ReactiveExecution, Replanner
+
+    planned_with = settings_of(plan, settings)
+    return ReactiveExecution(Replanner(guide(planned_with), planned_with, seed, dut), plan, under_test.replan_period)
 
 
 def guided_planning(

@@ -26,7 +26,8 @@ from pathlib import Path
 
 import pytest
 
-from .outcomes import OUTCOMES, STAGES, Tally, key
+from .dut import NoSuchVehicle
+from .outcomes import DUT_FAILED, NOT_EXERCISED, OUTCOMES, PASSED, STAGES, Tally, key, mostly_not_exercised
 from .settings import BASE, OPTIONS, REFINED, OptionError, RunSettings
 from .settings import dialect as parse_dialect
 
@@ -220,6 +221,8 @@ class ScenarioItem(pytest.Item):
         self.failure_artifacts: tuple[dict, list[str]] | None = (
             None  # (artifact paths, replay commands) of the reported case
         )
+        self.dut_reports: list = []  # the oracles' verdicts of the cases run (a vehicle under test drove)
+        self.not_exercised = ""  # why the last case that was not exercised did not happen
 
     # ---------------------------------------------------------------- running
 
@@ -260,8 +263,11 @@ class ScenarioItem(pytest.Item):
                         sampling_seed=sampling_seed,
                         shard=self.shard,
                     )
+            self._fail_if_mostly_not_exercised()
         except ScenarioFailed as failure:
             self._report_failure(runner, failure.result)
+        except NoSuchVehicle as error:
+            pytest.fail(f"roadlogic: --roadlogic-dut: {error}", pytrace=False)
         finally:
             self.user_properties += [
                 ("examples", self.tally.cases),
@@ -270,6 +276,7 @@ class ScenarioItem(pytest.Item):
             ]
             self.user_properties += [(key(outcome), self.tally.outcomes[outcome]) for outcome in OUTCOMES]
             self.user_properties += [(f"seconds_{stage}", round(self.tally.seconds[stage], 3)) for stage in STAGES]
+            self.user_properties += _oracle_properties(self.dut_reports)
 
     def _drivers(self):
         from .simulation.named_drivers import RecordingDrivers
@@ -284,8 +291,24 @@ class ScenarioItem(pytest.Item):
     def _count(self, result) -> None:
         """Count a case; a failed one ends the item (and, refined, starts the shrinking)."""
         self.tally.add(result.outcome, result.seconds)
+        if result.run is not None and result.run.dut is not None:
+            self.dut_reports.append(result.run.dut)
+        if result.outcome == NOT_EXERCISED:
+            self.not_exercised = result.message
         if result.failed:
             raise ScenarioFailed(result)
+
+    def _fail_if_mostly_not_exercised(self) -> None:
+        """An item whose cases mostly did not happen around the vehicle under test tested nothing: it fails."""
+        outcomes = self.tally.outcomes
+        if mostly_not_exercised(outcomes):
+            simulated = sum(outcomes[o] for o in (PASSED, DUT_FAILED, NOT_EXERCISED))
+            pytest.fail(
+                f"scenario {self.scenario.name}: {outcomes[NOT_EXERCISED]} of {simulated} cases were not exercised "
+                f"(the scenario did not happen around the vehicle under test, so they tested nothing); the last: "
+                f"{self.not_exercised.splitlines()[0] if self.not_exercised else '-'}",
+                pytrace=False,
+            )
 
     def _discard(self, result) -> None:
         """A sample without a plan, set aside (``--roadlogic-no-plan discard``): counted, not failed."""
@@ -360,7 +383,9 @@ class ScenarioItem(pytest.Item):
                 )
         else:
             lines.append("  (no logical parameters: the planner chose every value)")
-        if result.run is not None:
+        if result.outcome == DUT_FAILED:
+            lines.append(f"the vehicle under test failed after {result.run.tries} plans tried: {why}")
+        elif result.run is not None:
             lines.append(f"after {result.run.tries} plans tried, the last simulation was {why}")
         else:
             lines.append(why)
@@ -452,6 +477,25 @@ def _hypothesis_statistics(item: pytest.Item):
         item.hypothesis_statistics = describe_statistics(statistics)
 
     return collector.with_value(note)
+
+
+def _oracle_properties(reports: list) -> list[tuple[str, object]]:
+    """JUnit properties of the vehicle under test over an item's cases: its closest time to
+    collision and gap, its hardest braking (none without a vehicle under test)."""
+    if not reports:
+        return []
+    values = [report.values() for report in reports]
+
+    def extreme(name: str, pick):
+        found = [v[name] for v in values if v[name] is not None]
+        return pick(found) if found else "inf"
+
+    return [
+        ("vehicle_under_test", reports[0].vehicle),
+        ("dut_min_time_to_collision_s", extreme("min_time_to_collision_s", min)),
+        ("dut_min_gap_m", extreme("min_gap_m", min)),
+        ("dut_max_deceleration_mps2", extreme("max_deceleration_mps2", max)),
+    ]
 
 
 def _drivers_text(names: dict[str, str]) -> str:

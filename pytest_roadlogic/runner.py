@@ -20,14 +20,21 @@ from typing import Any
 
 from .blame import Blame
 from .case import Case
+from .dut import UnderTest
 from .frontend import CheckedScenario
 from .outcomes import (
     CANNOT_INSTANTIATE,
     CONFORMANT,
+    DID_NOT_HAPPEN,
+    DUT_FAILED,
+    FINE,
     NO_PLAN,
     NON_CONFORMANT,
     NOT_ACCEPTED,
+    NOT_EXERCISED,
+    PASSED,
     STAGES,
+    THE_DUT_FAILED,
     TIMED_OUT,
     TOOL_LIMIT,
 )
@@ -56,7 +63,8 @@ class CaseResult:
 
     @property
     def failed(self) -> bool:
-        return self.outcome != CONFORMANT
+        """Whether this case alone fails its item (a case not exercised does not: see ``outcomes``)."""
+        return self.outcome not in FINE
 
     @property
     def kind(self) -> str:
@@ -65,10 +73,14 @@ class CaseResult:
         beyond a real car's limits meets them: the message names the limits), a limit of the tool
         binds there (margins, planning step, spacing between cars, horizon, time limit: the message
         names the setting), or the simulation of the vehicles was not accepted."""
-        if self.outcome == CONFORMANT:
+        if self.outcome in (CONFORMANT, PASSED):
             return "accepted"
         if self.outcome == NON_CONFORMANT:
             return NOT_ACCEPTED
+        if self.outcome == DUT_FAILED:
+            return THE_DUT_FAILED
+        if self.outcome == NOT_EXERCISED:
+            return DID_NOT_HAPPEN
         if isinstance(self.error, UnsatisfiableScenario) or (
             self.outcome == NO_PLAN and self.error is not None and type(self.error) is NoPlanError
         ):
@@ -219,7 +231,10 @@ class Runner:
                     done -= 1
                     set_aside(result)
                     hypothesis.reject()
-            if search and result.run is not None and math.isfinite(result.run.verdict.robustness):
+            if search and result.run is not None and result.run.dut is not None:
+                # falsification: steer toward the vehicle under test's failure, the oracle nearest to failing
+                hypothesis.target(-result.run.dut.margin(), label="closeness of the vehicle under test to failing")
+            elif search and result.run is not None and math.isfinite(result.run.verdict.robustness):
                 hypothesis.target(-result.run.verdict.robustness, label="closeness to failure (-robustness)")
             each(result)
 
@@ -284,6 +299,7 @@ class Runner:
             simulation_time_limit=self.settings.simulation_time_limit,
             simulator=self.simulator,
             fallbacks=fallbacks,
+            under_test=UnderTest.of(self.settings),
         )
 
 
@@ -311,13 +327,25 @@ def _events(result: CaseResult) -> None:
 
 def _result(case: Case, outcome: SimulatedInstance) -> CaseResult:
     accepted = outcome.verdict.accepted
-    return CaseResult(
-        case,
-        CONFORMANT if accepted else NON_CONFORMANT,
-        outcome,
-        "" if accepted else outcome.verdict.explain(),
-        {stage: outcome.seconds.get(stage, 0.0) for stage in STAGES},
-    )
+    seconds = {stage: outcome.seconds.get(stage, 0.0) for stage in STAGES}
+    report = outcome.dut
+    if report is None:
+        return CaseResult(
+            case,
+            CONFORMANT if accepted else NON_CONFORMANT,
+            outcome,
+            "" if accepted else outcome.verdict.explain(),
+            seconds,
+        )
+    # a vehicle under test drove itself: did it fail (the oracles), else did the scenario happen (the monitor)
+    if report.failed:
+        return CaseResult(case, DUT_FAILED, outcome, f"{report.vehicle}: " + "; ".join(report.failures), seconds)
+    if report.hit_by_others:
+        why = "; ".join(str(c) for c in report.hit_by_others)
+        return CaseResult(case, NOT_EXERCISED, outcome, f"another vehicle ran into {report.vehicle}: {why}", seconds)
+    if not accepted:
+        return CaseResult(case, NOT_EXERCISED, outcome, outcome.verdict.explain(), seconds)
+    return CaseResult(case, PASSED, outcome, "", seconds)
 
 
 def _failure(case: Case, error: Exception, started: float) -> CaseResult:

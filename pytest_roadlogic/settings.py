@@ -156,6 +156,40 @@ def speed_band(text: str) -> tuple[float, float]:
 ROAD_SPEED = speed_band(ROAD_SPEED_TEXT)  # m/s
 
 
+# the vehicle under test (dut.roles): the scenario's own dut, none (every vehicle follows its plan), or a name
+DUT_AUTO, DUT_NONE = "auto", "none"
+# the reference drivers of a vehicle under test a hook gives no driver (dut.roles.REFERENCE_DRIVERS)
+DUT_DRIVERS = ("acc", "late-acc", "weak-braking-acc")
+dut_driver = one_of(DUT_DRIVERS, "a reference driver of the vehicle under test")
+
+
+def positive(what: str, example: str) -> Callable[[str], float]:
+    """A parser of a number above 0 (``what`` and ``example`` for the message)."""
+
+    def parse(text: str) -> float:
+        try:
+            value = float(str(text).strip())
+        except ValueError:
+            value = math.nan
+        if not (value > 0 and math.isfinite(value)):
+            raise OptionError(f"{text!r} is not {what}; give a number above 0, e.g. {example}")
+        return value
+
+    return parse
+
+
+def replan_period(text: str) -> float:
+    try:
+        value = float(str(text).strip())
+    except ValueError:
+        value = math.nan
+    if not (value >= 0 and math.isfinite(value)):
+        raise OptionError(
+            f"{text!r} is not a replanning period; give seconds from 0 (0: the other vehicles follow their first plan), e.g. 1"
+        )
+    return value
+
+
 def name(text: str) -> str:
     if not str(text).strip():
         raise OptionError("give a name")
@@ -265,6 +299,50 @@ OPTIONS = (
         DEFAULT_SIMULATOR,
         "the simulation backend (frenetix, or one a package registers)",
     ),
+    Option(
+        "dut",
+        "dut",
+        name,
+        DUT_AUTO,
+        "the vehicle under test, which drives itself and is judged by the oracles: auto (the scenario's dut.car or dut), "
+        "none (every vehicle follows its plan: conformance only), or a vehicle's name",
+    ),
+    Option(
+        "dut-driver",
+        "dut_driver",
+        dut_driver,
+        "acc",
+        f"the reference driver of a vehicle under test no pytest_roadlogic_driver hook drives: {', '.join(DUT_DRIVERS)}",
+    ),
+    Option(
+        "replan-period",
+        "replan_period",
+        replan_period,
+        1.0,
+        "seconds between replans of the other vehicles from what the vehicle under test really does (whole planning "
+        "steps of 1 s); 0: they follow their first plan",
+    ),
+    Option(
+        "min-ttc",
+        "min_ttc",
+        positive("a time to collision", "1.5"),
+        1.5,
+        "seconds: a smaller time to collision of the vehicle under test with one ahead in its path fails it",
+    ),
+    Option(
+        "min-gap",
+        "min_gap",
+        positive("a gap", "2"),
+        2.0,
+        "metres bumper to bumper: a smaller gap of the vehicle under test to one ahead in its path fails it",
+    ),
+    Option(
+        "max-decel",
+        "max_decel",
+        positive("a deceleration", "8"),
+        8.0,
+        "m/s^2: harder braking of the vehicle under test fails it (8: beyond a car's hard braking)",
+    ),
 )
 OPTIONS_BY_NAME = {option.name: option for option in OPTIONS}
 
@@ -287,6 +365,12 @@ class RunSettings:
     planning_time_limit: float = DEFAULT_PLAN_TIMEOUT
     simulation_time_limit: float = DEFAULT_SIM_TIMEOUT
     simulator: str = DEFAULT_SIMULATOR
+    dut: str = DUT_AUTO  # the vehicle under test: auto, none or a vehicle's name (dut.UnderTest)
+    dut_driver: str = "acc"
+    replan_period: float = 1.0  # s (reactive execution); 0: the other vehicles follow their first plan
+    min_ttc: float = 1.5  # s: the oracles' thresholds (oracles.Thresholds)
+    min_gap: float = 2.0  # m
+    max_decel: float = 8.0  # m/s^2
 
     @classmethod
     def from_texts(

@@ -39,6 +39,8 @@ def write_artifacts(outcome: SimulatedInstance, directory: str | Path, animation
         "goals": {v: [g.reached_at for g in records] for v, records in outcome.simulation.goals.items()},
         "seconds": outcome.seconds,
         **outcome.verdict.to_dict(),
+        # did the vehicle under test fail: every oracle's value, failed or not (oracles.DutReport)
+        **({"vehicle_under_test": outcome.dut.values()} if outcome.dut is not None else {}),
     }
     scenario_xosc, road_xodr = openscenario_paths(directory)
     lanes = outcome.simulation.road.lanes

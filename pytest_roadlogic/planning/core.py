@@ -75,6 +75,9 @@ class IncrementalPlanner:
     # (asp/least_action.lp): an encoding's plans() searches so first, and without only when that
     # finds no plan (the plan's stats then say least_action 0); a diagnosis never assumes it
     least_action = True
+    # the fewest steps a plan may have, besides what the durations allow (a replan: past the
+    # observed step, reactive/replanner.py)
+    shortest = 0
 
     def __init__(self, automaton: SymbolicAutomaton, settings, seed: int = 0) -> None:
         self.automaton = automaton

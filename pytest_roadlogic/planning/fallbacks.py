@@ -127,6 +127,22 @@ def binding_limits(guide: Guide, settings, seed: int) -> frozenset[str]:
     return ALL_LIMITS
 
 
+def settings_of(plan: Plan, settings):
+    """The settings of the planner that planned ``plan``: ``settings`` (``planned``'s first
+    planner), or the fallback's its marks name (for relaxed limits, every limit relaxed)."""
+    thinned = settings.thinned()
+    if thinned is None or not any(plan.stats.get(m) for m in ("thinned_margins", "finer_step", "relaxed_limits")):
+        return settings
+    quiet = dataclasses.replace(thinned, explain_unsatisfiable=False)
+    if plan.stats.get("finer_step"):
+        return dataclasses.replace(
+            quiet, dt=quiet.dt / 2, max_horizon=quiet.max_horizon * 2, lane_change_gap=quiet.lane_change_gap * 2
+        )
+    if plan.stats.get("relaxed_limits"):
+        return with_limits_relaxed(quiet)
+    return quiet
+
+
 def planned(
     guide: Guide, settings, seed: int, limit: int, fallbacks: bool = True, beyond_limits: bool = True
 ) -> Iterator[Plan]:

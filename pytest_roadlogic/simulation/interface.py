@@ -52,6 +52,8 @@ class Simulation:
     fallbacks: dict[str, int] = field(default_factory=dict)
     stationary: tuple[str, ...] = ()  # standing obstacles, not driven
     goals: dict[str, list[GoalRecord]] = field(default_factory=dict)  # per driven vehicle, in order
+    # the replans of a reactive execution (reactive.Replan), in order; none for a scripted run
+    replans: list = field(default_factory=list)
 
     def missed_goals(self) -> list[tuple[str, GoalRecord]]:
         return [(v, g) for v, records in self.goals.items() for g in records if g.reached_at is None]
@@ -67,11 +69,15 @@ class Simulator(Protocol):
 
     name: str
 
-    def simulate(self, plan: Plan, limits: SimulationLimits, drivers: DriverFactory | None = None) -> Simulation:
+    def simulate(
+        self, plan: Plan, limits: SimulationLimits, drivers: DriverFactory | None = None, react=None
+    ) -> Simulation:
         """Drive every vehicle of ``plan`` from standstill through its waypoints and record the trace.
 
         ``drivers`` may drive some vehicles with the user's own planners (the vehicle under test);
-        a backend that cannot take them raises ``TypeError`` when one is given. Raises
-        ``SimulationTimeout`` past ``limits.time_limit``.
+        a backend that cannot take them raises ``TypeError`` when one is given. ``react`` (reactive
+        execution: ``lockstep.React``) gives vehicles new references while the run goes on; a
+        backend that cannot take it raises ``TypeError``. Raises ``SimulationTimeout`` past
+        ``limits.time_limit``.
         """
         ...

@@ -35,6 +35,10 @@ class _GoalSequence:
     def current(self) -> Waypoint | None:
         return self.waypoints[len(self.records)] if len(self.records) < len(self.waypoints) else None
 
+    def retarget(self, waypoints: list[Waypoint], now: float) -> None:
+        """Goals from ``now`` on are ``waypoints``' (a replan); those reached or missed stay as they were."""
+        self.waypoints = [record.waypoint for record in self.records] + [w for w in waypoints if w.latest >= now]
+
     def update(self, time: float, x: float, lane: int) -> None:
         while (goal := self.current) is not None:
             if goal.reached(time, x, lane):
@@ -45,20 +49,31 @@ class _GoalSequence:
                 return
 
 
-def _road_around(refs: dict[str, Reference], lanes: int) -> Road:
+def _road_around(refs: dict[str, Reference], lanes: int, beyond: float = 60.0) -> Road:
     start = min(r.start_position for r in refs.values())
     end = max(r.s(r.end_time + TAIL) for r in refs.values())
-    return Road(lanes, x_start=math.floor(start - 30.0), x_end=math.ceil(float(end) + 60.0))
+    return Road(lanes, x_start=math.floor(start - 30.0), x_end=math.ceil(float(end) + beyond))
+
+
+# a reaction to the vehicles' states at a time: new references for some vehicles, from then on
+React = Callable[[float, dict[str, VehicleState], Road, dict[str, Reference]], "dict[str, Reference] | None"]
 
 
 def drive_in_lockstep(
-    plan: Plan, limits: SimulationLimits, drivers: DriverFactory | None, default: Callable[[], Driver]
+    plan: Plan,
+    limits: SimulationLimits,
+    drivers: DriverFactory | None,
+    default: Callable[[], Driver],
+    react: React | None = None,
 ) -> Simulation:
     """Drive every vehicle of ``plan`` from standstill through its waypoints.
 
     ``drivers`` maps a vehicle name to a custom driver (or ``None`` for ``default()``); stationary
     objects are never driven. ``limits.time_limit`` (seconds of wall clock) bounds a run whose
     driver (a plugged-in one, say) is far slower than expected; it raises ``SimulationTimeout``.
+    ``react`` (reactive execution, ``pytest_roadlogic.reactive``) is asked at every step, before the
+    drivers plan, for new references of some vehicles: their drivers follow those from then on
+    (``retarget``, else ``start`` again), and the run lasts as long as the longest reference.
     """
     dt, time_limit = limits.dt, limits.time_limit
     deadline = clock.monotonic() + time_limit if time_limit is not None else math.inf
@@ -66,7 +81,8 @@ def drive_in_lockstep(
     # a reference reads only the lanes' centre lines, not the road's extent: build them once and
     # size the road around them
     refs = references(plan, Road(lanes))
-    road = _road_around(refs, lanes)
+    # a replan may lengthen the run: room for about ten more seconds at highway speed
+    road = _road_around(refs, lanes, 60.0 if react is None else 400.0)
     active: dict[str, Driver] = {}
     for vehicle, reference in refs.items():
         if vehicle in plan.stationary:
@@ -75,8 +91,7 @@ def drive_in_lockstep(
             driver = (drivers(vehicle) if drivers else None) or default()
         driver.start(vehicle, reference, road, dt)
         active[vehicle] = driver
-    end_time = max(r.end_time for r in refs.values()) + TAIL
-    steps = int(round(end_time / dt))
+    steps = int(round((max(r.end_time for r in refs.values()) + TAIL) / dt))
     states = {
         v: VehicleState(r.start_position, road.center_y(r.waypoints[0].lane), 0.0, r.start_speed, 0.0)
         for v, r in refs.items()
@@ -105,12 +120,29 @@ def drive_in_lockstep(
                     incidents.append(Incident(time, "collision", (a, b)))
 
     record(0)
-    for k in range(1, steps + 1):
+    k = 0
+    while k < steps:
+        k += 1
         if clock.monotonic() > deadline:
             raise SimulationTimeout(
                 f"the simulation took over its limit of {time_limit:g} s at {k * dt:.1f} s of {steps * dt:.1f} s simulated"
             )
         time = (k - 1) * dt
+        retargeted = react(time, states, road, refs) if react is not None else None
+        for v, reference in (retargeted or {}).items():
+            refs[v] = reference
+            driver = active[v]
+            if hasattr(driver, "retarget"):
+                driver.retarget(reference)
+            else:
+                driver.start(v, reference, road, dt)
+            goals[v].retarget(reference.waypoints, time)
+        if retargeted:
+            steps = max(steps, int(round((max(r.end_time for r in refs.values()) + TAIL) / dt)))
+            for col in columns.values():
+                for name, values in col.items():
+                    if len(values) < steps + 1:
+                        col[name] = np.concatenate([values, np.zeros(steps + 1 - len(values))])
         chosen = {}
         for v, driver in active.items():
             others = {o: p for o, p in predictions.items() if o != v}
@@ -126,7 +158,14 @@ def drive_in_lockstep(
     for sequence in goals.values():
         sequence.update(math.inf, math.nan, -1)  # windows still open at the end are misses
     return Simulation(
-        trace, road, refs, dt, fallbacks, tuple(plan.stationary), {v: g.records for v, g in goals.items()}
+        trace,
+        road,
+        refs,
+        dt,
+        fallbacks,
+        tuple(plan.stationary),
+        {v: g.records for v, g in goals.items()},
+        list(getattr(react, "replans", [])),
     )
 
 

@@ -13,8 +13,10 @@ from .driver import FrenetixDriver
 class FrenetixSimulator:
     name = "frenetix"
 
-    def simulate(self, plan: Plan, limits: SimulationLimits, drivers: DriverFactory | None = None) -> Simulation:
-        return drive_in_lockstep(plan, limits, drivers, FrenetixDriver)
+    def simulate(
+        self, plan: Plan, limits: SimulationLimits, drivers: DriverFactory | None = None, react=None
+    ) -> Simulation:
+        return drive_in_lockstep(plan, limits, drivers, FrenetixDriver, react)
 
 
 __all__ = ["FrenetixDriver", "FrenetixSimulator"]

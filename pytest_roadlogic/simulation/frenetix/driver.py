@@ -114,6 +114,11 @@ class FrenetixDriver:
         self._committed: Trajectory | None = None  # the chosen trajectory, index 0 being now
         self._age = 0  # steps driven along it
 
+    def retarget(self, reference: Reference) -> None:
+        """Follow ``reference`` from now on (a replan): the trajectory chosen for the old one is dropped."""
+        self.reference = reference
+        self._committed = None
+
     def _driven_on(self, state: VehicleState, others: dict[str, Trajectory]) -> Trajectory | None:
         """The chosen trajectory one step on, when it is still to be followed: chosen less than a
         replanning period ago, long enough, ``state`` where it led, and clear of the others."""

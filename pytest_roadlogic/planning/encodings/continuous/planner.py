@@ -41,6 +41,7 @@ BACKGROUND = (
     ASP_CONTINUOUS / "rates.lp",
     ASP_CONTINUOUS / "steer.lp",
     LEAST_ACTION,
+    ASP_CONTINUOUS / "replan.lp",  # inert without a replan's facts (reactive/replanner.py)
 )
 RANDOM_START = (KEEP_LANE, ASP_CONTINUOUS / "start.lp")  # loaded for a random start only, in this order
 # the soft rows clingo-lpx, which checks every row exactly, cannot weigh: a preference binds as a
@@ -135,6 +136,7 @@ class ContinuousPlanner(IncrementalPlanner):
             # plan 0.98 s with the window asked first at the floor, 0.77 s without)
             checked = window.floor > self.settings.max_horizon
             earliest = self._earliest(deadline, window) if checked else window.floor
+            earliest = max(earliest, self.shortest)
             control = self._control(self.instance)
             self._advance_to(control, earliest)
             horizon = earliest

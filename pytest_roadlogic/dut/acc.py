@@ -1,0 +1,147 @@
+"""Reference vehicles under test: adaptive cruise control with lane keeping, and two defective ones.
+
+``AdaptiveCruiseControl`` is a ``simulation.Driver`` that is given a goal, not a script: it keeps
+the lane it starts in and cruises at its set speed (the speed its plan starts it at, one the
+scenario's constraints on it allow), following the vehicle ahead in its path by the ACC
+model of Kesting, Treiber and Helbing (2010): the intelligent driver model (IDM, Treiber,
+Hennecke and Helbing 2000)
+
+    a_IDM = a_max * (1 - (v / v0)^4 - (s* / s)^2),   s* = s0 + v T + v dv / (2 sqrt(a_max b))
+
+(s the gap to the vehicle ahead, bumper to bumper; dv the speed at which it closes in), blended
+with the constant-acceleration heuristic a_CAH where the IDM would brake harder than the
+situation needs: a car that cuts in close ahead but drives away faster is not braked for as if it
+stood (the IDM alone braked at 8 m/s^2 for a car cutting in 5 m ahead at 3 m/s faster). Behind
+one that brakes it brakes at least as hard as stopping ``standstill_gap`` behind where that one
+stops takes. It brakes
+harder than b when it must, down to ``max_braking``. Its waypoints are read for its start lane
+and speed only.
+
+Two defective variants make failures to find: ``LateAcc`` sees the vehicle ahead 1.5 s late,
+``WeakBrakingAcc`` never brakes harder than 3 m/s^2.
+
+Why our own and not a package: CommonRoad's IDM planner does not install beside commonroad-io 2026.1
+(pip cannot resolve it), and the model is ten lines; what a package would add (its own road
+representation) is what this project already has.
+"""
+
+from __future__ import annotations
+
+import math
+from collections import deque
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..logic.dimensions import CAR_LENGTH, CAR_WIDTH
+from ..simulation.driver import Trajectory, VehicleState
+from ..simulation.reference import Reference
+from ..simulation.road import Road
+
+HORIZON = 3.0  # s of trajectory returned each cycle (what the others see as its prediction)
+
+
+@dataclass(frozen=True)
+class IdmParameters:
+    """The intelligent driver model's parameters (highway values from the literature)."""
+
+    time_headway: float = 1.5  # s (T)
+    standstill_gap: float = 3.0  # m (s0): where it stops behind a standing car
+    max_acceleration: float = 1.5  # m/s^2 (a_max)
+    comfortable_braking: float = 2.0  # m/s^2 (b)
+    exponent: float = 4.0  # (delta)
+    coolness: float = 0.99  # (c) how far the ACC model trusts the constant-acceleration heuristic
+
+
+class AdaptiveCruiseControl:
+    """Adaptive cruise control with lane keeping, a reference vehicle under test (see the module)."""
+
+    idm = IdmParameters()
+    reaction_delay = 0.0  # s between seeing the vehicle ahead and acting on it
+    max_braking = 8.0  # m/s^2: the hardest it brakes
+
+    def start(self, vehicle: str, reference: Reference, road: Road, dt: float) -> None:
+        self.vehicle, self.dt = vehicle, dt
+        self.lane_y = road.center_y(reference.waypoints[0].lane)
+        self.set_speed = max(float(reference.waypoints[0].speed), 1.0)
+        # what it saw each cycle: (time, gap, closing speed, acceleration ahead), read reaction_delay late
+        self.seen: deque[tuple[float, float, float, float]] = deque()
+
+    def plan(self, time: float, state: VehicleState, others: dict[str, Trajectory]) -> Trajectory:
+        self.seen.append((time, *self._ahead(state, others)))
+        while len(self.seen) > 1 and self.seen[1][0] <= time - self.reaction_delay + 1e-9:
+            self.seen.popleft()
+        _, gap, closing, ahead_acceleration = self.seen[0]
+        acceleration = self.acceleration(state.speed, gap, closing, ahead_acceleration)
+        acceleration = max(-self.max_braking, min(self.idm.max_acceleration, acceleration))
+        return self._trajectory(state, acceleration)
+
+    def acceleration(self, speed: float, gap: float, closing: float, ahead_acceleration: float = 0.0) -> float:
+        """The ACC model's acceleration at ``speed``, ``gap`` (inf: no one ahead) behind a vehicle
+        it closes in on at ``closing`` m/s and that accelerates at ``ahead_acceleration``."""
+        p = self.idm
+        free = 1.0 - (speed / self.set_speed) ** p.exponent
+        if not math.isfinite(gap):
+            return p.max_acceleration * free
+        gap = max(gap, 0.1)
+        desired = p.standstill_gap + max(
+            0.0, speed * p.time_headway + speed * closing / (2 * math.sqrt(p.max_acceleration * p.comfortable_braking))
+        )
+        idm = p.max_acceleration * (free - (desired / gap) ** 2)
+        # the constant-acceleration heuristic: what keeps it clear if the one ahead keeps accelerating
+        lead_speed, lead_acceleration = speed - closing, min(ahead_acceleration, p.max_acceleration)
+        if lead_acceleration < 0 and lead_speed * closing <= -2 * gap * lead_acceleration:
+            # the one ahead stops before it would be reached
+            cah = speed**2 * lead_acceleration / (lead_speed**2 - 2 * gap * lead_acceleration)
+        else:
+            cah = lead_acceleration - max(closing, 0.0) ** 2 / (2 * gap)
+        if closing > 0 and ahead_acceleration < -0.1:
+            # the one ahead brakes: at least what stops it standstill_gap behind where that one stops
+            # (the blend below is no emergency brake: from 30 m/s 40 m behind a lead braking at
+            # 7 m/s^2 it ended at no gap at all)
+            room = gap - p.standstill_gap + lead_speed**2 / (2 * -ahead_acceleration)
+            emergency = -(speed**2) / (2 * max(room, 0.1))
+        else:
+            emergency = math.inf
+        if idm >= cah:
+            return min(idm, emergency)
+        b = p.comfortable_braking
+        return min((1 - p.coolness) * idm + p.coolness * (cah + b * math.tanh((idm - cah) / b)), emergency)
+
+    def _ahead(self, state: VehicleState, others: dict[str, Trajectory]) -> tuple[float, float, float]:
+        """(gap, closing speed, its acceleration) to the nearest vehicle ahead in its path;
+        (inf, 0, 0) when there is none."""
+        best = (math.inf, 0.0, 0.0)
+        for trajectory in others.values():
+            other = trajectory.state(0)
+            if other.x > state.x and abs(other.y - state.y) < CAR_WIDTH:
+                gap = max(other.x - state.x - CAR_LENGTH, 0.0)
+                if gap < best[0]:
+                    best = (gap, state.speed - other.speed, other.acceleration)
+        return best
+
+    def _trajectory(self, state: VehicleState, acceleration: float) -> Trajectory:
+        """Constant ``acceleration`` (never below standstill) along its lane's centre, which it
+        steers back to within about a second."""
+        n = max(2, int(round(HORIZON / self.dt)) + 1)
+        t = np.arange(n) * self.dt
+        speed = np.maximum(state.speed + acceleration * t, 0.0)
+        # distance: integrate the clipped speed (trapezoids), so a stop stays a stop
+        x = state.x + np.concatenate([[0.0], np.cumsum((speed[1:] + speed[:-1]) / 2 * self.dt)])
+        y = self.lane_y + (state.y - self.lane_y) * np.exp(-t / 0.5)
+        heading = np.arctan2(np.gradient(y, self.dt), np.maximum(speed, 0.1))
+        heading[0] = state.heading
+        applied = np.where(speed > 0, acceleration, 0.0)
+        return Trajectory(x, y, heading, speed, applied)
+
+
+class LateAcc(AdaptiveCruiseControl):
+    """A defective adaptive cruise control: it acts on what it saw 1.5 s before."""
+
+    reaction_delay = 1.5
+
+
+class WeakBrakingAcc(AdaptiveCruiseControl):
+    """A defective adaptive cruise control: it never brakes harder than 3 m/s^2."""
+
+    max_braking = 3.0

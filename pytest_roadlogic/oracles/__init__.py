@@ -1,0 +1,18 @@
+"""Stage 5b: did the vehicle under test fail? Oracles over a trace, apart from the monitor's
+"did the scenario happen" (``judge``: a ``Trace`` and the vehicle in, a ``DutReport`` out).
+``Thresholds`` is plain data; the rest loads numpy on first use."""
+
+from importlib import import_module
+
+from .thresholds import Thresholds
+
+_HOMES = {"Closest": "measures", "Collision": "report", "DutReport": "report", "judge": "report"}
+
+
+def __getattr__(name: str):
+    if name in _HOMES:
+        return getattr(import_module(f".{_HOMES[name]}", __name__), name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+__all__ = ["Closest", "Collision", "DutReport", "Thresholds", "judge"]

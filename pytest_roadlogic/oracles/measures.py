@@ -1,0 +1,108 @@
+"""What the oracles measure on a trace, with one meaning each (docs/vehicle-under-test.md).
+
+All read a ``Trace`` (the vehicles' centres, headings, speeds and accelerations every ``dt``) and
+the shared car box (``simulation.geometry``): a vehicle is *ahead in the path* of another when it
+is clear ahead along the road (no overlap along it: that would be a collision) and their boxes
+overlap across it (a car halfway through a lane change into the lane is in the path already). A
+vehicle is judged by its gap to one ahead only from ``reaction`` seconds after that one entered
+its path (a car that cuts in close gives it that long to react). Between such a follower and its
+leader:
+
+- the **gap** is bumper to bumper: the centres' distance along the road less a car's length;
+- the **time to collision** is the gap over the speed at which the follower closes in, when it
+  does (infinite otherwise);
+- the **deceleration** of a vehicle is minus its acceleration, when it brakes.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..logic.dimensions import CAR_LENGTH, CAR_WIDTH
+from ..simulation.trace import Trace
+
+
+@dataclass(frozen=True)
+class Closest:
+    """The least of a measure over a trace, when it was reached, and whom it was measured to."""
+
+    value: float  # math.inf when the measure never applied (no vehicle ahead in the path)
+    time: float | None = None
+    other: str | None = None
+
+
+def in_path(trace: Trace, follower: str, leader: str) -> np.ndarray:
+    """Per sample: ``leader`` is clear ahead of ``follower`` along the road and their boxes overlap across it."""
+    f, lead = trace.actors[follower], trace.actors[leader]
+    return (lead["x"] - f["x"] >= CAR_LENGTH) & (np.abs(lead["y"] - f["y"]) < CAR_WIDTH)
+
+
+def settled(trace: Trace, inside: np.ndarray, reaction: float) -> np.ndarray:
+    """Per sample: ``inside`` has held for at least ``reaction`` seconds (counted from its start)."""
+    since = np.full(len(inside), -np.inf)
+    entered = None
+    for k, now in enumerate(inside):
+        if not now:
+            entered = None
+            continue
+        if entered is None:
+            entered = trace.times[k]
+        since[k] = trace.times[k] - entered
+    return since >= reaction - 1e-9
+
+
+def gaps_ahead(trace: Trace, follower: str, reaction: float = 0.0, until: int | None = None) -> dict[str, np.ndarray]:
+    """Per other vehicle: the bumper-to-bumper gap while it is ahead in ``follower``'s path and has
+    been for ``reaction`` seconds, inf otherwise; samples from ``until`` on are not judged."""
+    f = trace.actors[follower]
+    gaps = {}
+    for other, columns in trace.actors.items():
+        if other == follower:
+            continue
+        gap = np.maximum(columns["x"] - f["x"] - CAR_LENGTH, 0.0)
+        judged = settled(trace, in_path(trace, follower, other), reaction)
+        if until is not None:
+            judged[until:] = False
+        gaps[other] = np.where(judged, gap, np.inf)
+    return gaps
+
+
+def least_gap(trace: Trace, follower: str, reaction: float = 0.0, until: int | None = None) -> Closest:
+    """The smallest gap from ``follower`` to a vehicle ahead in its path (see ``gaps_ahead``)."""
+    return _least(trace, gaps_ahead(trace, follower, reaction, until))
+
+
+def least_time_to_collision(trace: Trace, follower: str, reaction: float = 0.0, until: int | None = None) -> Closest:
+    """The smallest time to collision of ``follower`` with a vehicle ahead in its path (see ``gaps_ahead``)."""
+    f = trace.actors[follower]
+    ttcs = {}
+    for other, gap in gaps_ahead(trace, follower, reaction, until).items():
+        closing = f["speed"] - trace.actors[other]["speed"]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            ttc = np.where((closing > 1e-6) & np.isfinite(gap), gap / closing, np.inf)
+        ttcs[other] = ttc
+    return _least(trace, ttcs)
+
+
+def greatest_deceleration(trace: Trace, vehicle: str, until: int | None = None) -> Closest:
+    """The hardest braking of ``vehicle`` (m/s^2, positive), 0 when it never brakes; samples from
+    ``until`` on are not judged."""
+    deceleration = -trace.actors[vehicle]["acceleration"][:until]
+    if not len(deceleration):
+        return Closest(0.0)
+    k = int(np.argmax(deceleration))
+    return Closest(max(0.0, float(deceleration[k])), float(trace.times[k]))
+
+
+def _least(trace: Trace, series: dict[str, np.ndarray]) -> Closest:
+    best = Closest(math.inf)
+    for other, values in series.items():
+        if not len(values):
+            continue
+        k = int(np.argmin(values))
+        if values[k] < best.value:
+            best = Closest(float(values[k]), float(trace.times[k]), other)
+    return best

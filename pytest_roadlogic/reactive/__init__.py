@@ -1,0 +1,10 @@
+"""Reactive execution: the vehicle under test drives itself, and the scenario's other vehicles are
+replanned from what it really does while the simulation runs (``ReactiveExecution``), each replan
+the rest of the scenario solved again from the observed state (``Replanner``,
+``asp/continuous/replan.lp``). Between planning and simulation: it asks the planner, and the
+lockstep loop asks it."""
+
+from .execution import ReactiveExecution, replanning_seconds
+from .replanner import Observed, Replan, Replanner
+
+__all__ = ["Observed", "ReactiveExecution", "Replan", "Replanner", "replanning_seconds"]
