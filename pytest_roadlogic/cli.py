@@ -31,7 +31,7 @@ from pathlib import Path
 
 from .case import CaseFileError
 from .frontend import OscError
-from .outcomes import CONFORMANT
+from .outcomes import CONFORMANT, PASSED
 from .planning import NoPlanError, UnsatisfiableScenario
 from .progress import ProgressBar
 from .sampling import UnknownParameter
@@ -649,8 +649,19 @@ def _show(result, out: Path) -> int:
     for stage, seconds in result.seconds.items():
         print(f"  {stage:<12} {seconds:7.3f} s")
     print(outcome.verdict.explain())
+    if outcome.dut is not None:
+        values = outcome.dut.values()
+        print(
+            f"vehicle under test {outcome.dut.vehicle}: least time to collision {values['min_time_to_collision_s'] or 'inf'} s, "
+            f"least gap {values['min_gap_m'] or 'inf'} m, hardest braking {values['max_deceleration_mps2']} m/s^2, "
+            f"{len(outcome.simulation.replans)} replans"
+        )
+        if result.message:
+            print(f"{result.outcome}: {result.message}")
     for kind, path in paths.items():
         print(f"  {kind:<12} {path}")
+    if outcome.dut is not None:
+        return EXIT_ACCEPTED if result.outcome == PASSED else EXIT_REJECTED
     return EXIT_ACCEPTED if outcome.verdict.accepted else EXIT_REJECTED
 
 

@@ -41,6 +41,17 @@ def write_artifacts(outcome: SimulatedInstance, directory: str | Path, animation
         **outcome.verdict.to_dict(),
         # did the vehicle under test fail: every oracle's value, failed or not (oracles.DutReport)
         **({"vehicle_under_test": outcome.dut.values()} if outcome.dut is not None else {}),
+        # the reactive execution's replans: when, how long each took, whether it found a plan and why not
+        **(
+            {
+                "replans": [
+                    {"time": r.time, "seconds": round(r.seconds, 4), "found": r.plan is not None, "why": r.why}
+                    for r in outcome.simulation.replans
+                ]
+            }
+            if outcome.simulation.replans
+            else {}
+        ),
     }
     scenario_xosc, road_xodr = openscenario_paths(directory)
     lanes = outcome.simulation.road.lanes

@@ -57,6 +57,7 @@ class Replanner:
         )
         self.seed = seed
         self.dut = dut
+        self.predicting = True  # whether the last replan found a plan with the vehicle under test predicted
 
     def replan(self, plan: Plan, step: int, observed: dict[str, Observed]) -> Replan:
         """The plan from ``step`` on, the run before it as ``plan``'s, the vehicles as ``observed`` there."""
@@ -64,19 +65,22 @@ class Replanner:
 
         started = time.perf_counter()
         why = ""
-        for predicted in (True, False):
-            # the plan's own length first (a phase keeps the end it was planned with), then any
-            for shortest in dict.fromkeys((max(step + 1, plan.horizon), step + 1)):
-                planner = planner_for(self.automaton, self.settings, self.seed)
-                planner.instance += "\n" + self.facts(plan, step, observed, predicted)
-                planner.shortest = shortest
-                try:
-                    found = next(planner.plans(limit=1), None)
-                except NoPlanError as error:
-                    why = str(error)
-                    continue
-                if found is not None:
-                    return Replan(step * plan.dt, time.perf_counter() - started, found, predicted)
+        # the plan's own length or longer first (a phase keeps the end it was planned with), the
+        # vehicle under test predicted, unless the last replan had to plan it; then any length
+        length = max(step + 1, plan.horizon)
+        modes = [(True, length), (False, length)] if self.predicting else [(False, length), (True, length)]
+        for predicted, shortest in dict.fromkeys([*modes, (False, step + 1)]):
+            planner = planner_for(self.automaton, self.settings, self.seed)
+            planner.instance += "\n" + self.facts(plan, step, observed, predicted)
+            planner.shortest = shortest
+            try:
+                found = next(planner.plans(limit=1), None)
+            except NoPlanError as error:
+                why = str(error)
+                continue
+            if found is not None:
+                self.predicting = predicted
+                return Replan(step * plan.dt, time.perf_counter() - started, found, predicted)
         return Replan(
             step * plan.dt,
             time.perf_counter() - started,

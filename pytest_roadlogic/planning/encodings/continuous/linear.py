@@ -173,9 +173,10 @@ def _element(term: clingo.TheoryTerm, program: LinearProgram) -> tuple[int, floa
 
 
 # the printed form of the elements the encoding writes: ``x``, ``((-1)*x)``, ``((-"0.5")*x)``,
-# ``("2"*x)``, ``-x``, where x is a function term without nested parentheses; and of a bound
+# ``("2"*x)``, ``-x``, where x is a function term without nested parentheses (its arguments may be
+# quoted strings: a vehicle named ``"dut.car"``, whose rows had all taken the slow path); and of a bound
 _PRINTED_ELEMENT = re.compile(
-    r'^\(*(?:\(?(-)?"?(-?[0-9.]+(?:/[0-9]+)?)"?\)?\*)?(-)?([a-z_][A-Za-z0-9_]*\([^()"]*\))\)*$'
+    r'^\(*(?:\(?(-)?"?(-?[0-9.]+(?:/[0-9]+)?)"?\)?\*)?(-)?([a-z_][A-Za-z0-9_]*\((?:[^()"]|"[^"]*")*\))\)*$'
 )
 _PRINTED_BOUND = re.compile(r'^\(?(-)?"?(-?[0-9.]+(?:/[0-9]+)?)"?\)?$')
 _PRINTED_ATOM = re.compile(r"^&\w+\{(.*)\}(<=|>=|=)(.*)$")
