@@ -317,8 +317,14 @@ class ScenarioItem(pytest.Item):
 
     def _replay(self, runner, case) -> None:
         """The one case of a case file, when it is this item's (other items are skipped), with this
-        session's drivers: a run with other drivers than the case's is refused, not reported."""
+        session's drivers: a run with other drivers than the case's is refused, not reported. The
+        case's settings decide how it runs (who is under test and with which reference driver, its
+        thresholds, tries, ...), as ``roadlogic replay`` runs it: the session's had replayed a late
+        vehicle under test's failure with the default driver, and passed."""
+        from .runner import Runner
         from .sampling import UnknownParameter
+
+        runner = Runner(self.scenario, case.settings(), self.drivers, self._simulator(), explain=runner.explain_no_plan)
 
         if not _replays(self, case):
             pytest.skip(
