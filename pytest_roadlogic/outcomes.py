@@ -23,7 +23,9 @@ from collections import Counter
 
 CONFORMANT, NON_CONFORMANT, NO_PLAN, TIMED_OUT = "conformant", "non-conformant", "no plan", "timed out"
 PASSED, DUT_FAILED, NOT_EXERCISED = "passed", "failed", "not exercised"
-OUTCOMES = (CONFORMANT, NON_CONFORMANT, NO_PLAN, TIMED_OUT, PASSED, DUT_FAILED, NOT_EXERCISED)
+CONFORMANCE_OUTCOMES = (CONFORMANT, NON_CONFORMANT, NO_PLAN, TIMED_OUT)
+DUT_OUTCOMES = (PASSED, DUT_FAILED, NOT_EXERCISED)
+OUTCOMES = (*CONFORMANCE_OUTCOMES, *DUT_OUTCOMES)
 # what a case that ends so says about the item: none of these fail it alone (an item whose cases were
 # mostly not exercised fails as a whole: ``mostly_not_exercised``)
 FINE = (CONFORMANT, PASSED, NOT_EXERCISED)
@@ -35,6 +37,13 @@ TOOL_LIMIT = "a limit of the tool binds"
 NOT_ACCEPTED = "the simulation was not accepted"
 THE_DUT_FAILED = "the vehicle under test failed"
 DID_NOT_HAPPEN = "the scenario did not happen"
+
+
+def shown(counts) -> tuple[str, ...]:
+    """The outcomes a table of ``counts`` (Counters or dicts by outcome) shows: every conformance
+    outcome, and those of a vehicle under test where any case had one."""
+    counts = list(counts)
+    return (*CONFORMANCE_OUTCOMES, *(o for o in DUT_OUTCOMES if any(c.get(o, 0) for c in counts)))
 
 
 def mostly_not_exercised(outcomes: Counter) -> bool:

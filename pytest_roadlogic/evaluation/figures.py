@@ -5,7 +5,17 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from ..outcomes import CONFORMANT, NO_PLAN, NON_CONFORMANT, OUTCOMES, STAGES, TIMED_OUT
+from ..outcomes import (
+    CONFORMANT,
+    DUT_FAILED,
+    NO_PLAN,
+    NON_CONFORMANT,
+    NOT_EXERCISED,
+    PASSED,
+    STAGES,
+    TIMED_OUT,
+    shown,
+)
 from .runner import STRATEGIES
 from .summary import StrategySummary
 
@@ -16,7 +26,15 @@ STAGE_COLOURS = {
     "monitoring": "tab:green",
     "artifacts": "tab:grey",
 }
-OUTCOME_COLOURS = {CONFORMANT: "tab:blue", NON_CONFORMANT: "tab:orange", TIMED_OUT: "tab:grey", NO_PLAN: "tab:red"}
+OUTCOME_COLOURS = {
+    CONFORMANT: "tab:blue",
+    NON_CONFORMANT: "tab:orange",
+    TIMED_OUT: "tab:grey",
+    NO_PLAN: "tab:red",
+    PASSED: "tab:green",
+    DUT_FAILED: "tab:pink",
+    NOT_EXERCISED: "tab:olive",
+}
 COLOUR_MAP = "viridis"
 
 
@@ -109,7 +127,8 @@ def heatmap_overview(table: dict[tuple[str, str], StrategySummary], scenarios: l
 def outcomes(table: dict[tuple[str, str], StrategySummary], scenarios: list[str], strategy: str, path: Path) -> Path:
     """How the instances of each scenario ended, stacked (the paper's success-rate bars): its three
     categories, and instances without a plan only when there were some."""
-    series = {outcome: [table[s, strategy].outcomes[outcome] for s in scenarios] for outcome in OUTCOMES}
+    counts = [table[s, strategy].outcomes for s in scenarios]
+    series = {outcome: [c[outcome] for c in counts] for outcome in shown(counts)}
     if not any(series[NO_PLAN]):
         del series[NO_PLAN]
     return _stacked_bars(

@@ -8,7 +8,7 @@ import os
 from pathlib import Path
 
 from ..confinement import safe_name
-from ..outcomes import CONFORMANT, NO_PLAN, OUTCOMES, STAGES
+from ..outcomes import CONFORMANT, NO_PLAN, STAGES, shown
 from ..settings import BASE, REFINED
 from . import figures
 from .runner import PAPER_COUNTS, STRATEGIES, BenchmarkResults
@@ -167,10 +167,11 @@ def _time_table(table, scenarios: list[str], strategy: str) -> list[str]:
 
 
 def _outcome_table(table, scenarios: list[str], strategy: str) -> list[str]:
-    lines = ["| scenario | " + " | ".join(OUTCOMES) + " |", "|---" * (1 + len(OUTCOMES)) + "|"]
+    columns = shown(table[scenario, strategy].outcomes for scenario in scenarios)
+    lines = ["| scenario | " + " | ".join(columns) + " |", "|---" * (1 + len(columns)) + "|"]
     for scenario in scenarios:
         counts = table[scenario, strategy].outcomes
-        lines.append(f"| {scenario} | " + " | ".join(str(counts[o]) for o in OUTCOMES) + " |")
+        lines.append(f"| {scenario} | " + " | ".join(str(counts[o]) for o in columns) + " |")
     return lines
 
 
