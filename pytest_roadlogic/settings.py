@@ -52,14 +52,27 @@ def whole_number(least: int, what: str) -> Callable[[str], int]:
     return parse
 
 
-def seconds(text: str) -> float:
+def real(text: str) -> float:
+    """A number read from an option's text; NaN when it is none (the parser then says what to give)."""
     try:
-        value = float(str(text).strip())
+        return float(str(text).strip())
     except ValueError:
-        value = math.nan
-    if not (value > 0 and math.isfinite(value)):
-        raise OptionError(f"{text!r} is not a time limit; give a number of seconds above 0, e.g. 60")
-    return value
+        return math.nan
+
+
+def positive(what: str, example: str, unit: str = "a number") -> Callable[[str], float]:
+    """A parser of a number above 0 (``what``, ``example`` and ``unit`` for the message)."""
+
+    def parse(text: str) -> float:
+        value = real(text)
+        if not (value > 0 and math.isfinite(value)):
+            raise OptionError(f"{text!r} is not {what}; give {unit} above 0, e.g. {example}")
+        return value
+
+    return parse
+
+
+seconds = positive("a time limit", "60", "a number of seconds")
 
 
 MAX_SEED = 2**32 - 1  # clingo's --seed takes 0..2^32-1; past it a RuntimeError traceback came from the solver
@@ -163,26 +176,8 @@ DUT_DRIVERS = ("acc", "late-acc", "weak-braking-acc")
 dut_driver = one_of(DUT_DRIVERS, "a reference driver of the vehicle under test")
 
 
-def positive(what: str, example: str) -> Callable[[str], float]:
-    """A parser of a number above 0 (``what`` and ``example`` for the message)."""
-
-    def parse(text: str) -> float:
-        try:
-            value = float(str(text).strip())
-        except ValueError:
-            value = math.nan
-        if not (value > 0 and math.isfinite(value)):
-            raise OptionError(f"{text!r} is not {what}; give a number above 0, e.g. {example}")
-        return value
-
-    return parse
-
-
 def replan_period(text: str) -> float:
-    try:
-        value = float(str(text).strip())
-    except ValueError:
-        value = math.nan
+    value = real(text)
     if not (value >= 0 and math.isfinite(value)):
         raise OptionError(
             f"{text!r} is not a replanning period; give seconds from 0 (0: the other vehicles follow their first plan), e.g. 1"
