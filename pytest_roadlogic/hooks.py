@@ -24,6 +24,18 @@ def pytest_roadlogic_simulator(config, scenario):
 
 
 @pytest.hookspec(firstresult=True)
+def pytest_roadlogic_oracles(config, scenario):
+    """Return the oracles' thresholds for ``scenario`` (a checked scenario: ``scenario.name``) as
+    a mapping of option names to values, ``{"min-ttc": 2.0, "min-gap": 3, "max-decel": 6}``, or
+    ``None`` for the session's (``--roadlogic-min-ttc`` and the others, or their ini keys). A
+    ``conftest.py`` beside a folder of scenarios judges its vehicle under test by its own:
+
+        def pytest_roadlogic_oracles(config, scenario):
+            return {"min-ttc": 2.5} if scenario.name == "cut_in" else None
+    """
+
+
+@pytest.hookspec(firstresult=True)
 def pytest_roadlogic_dialect(config, path):
     """Return the dialect ``path`` (an .osc file) is written in, ``"standard"`` or ``"carla"``, or
     ``None`` to use the one ``--roadlogic-dialect`` names (default: standard). A ``conftest.py`` next

@@ -28,7 +28,7 @@ import pytest
 
 from .dut import NoSuchVehicle
 from .outcomes import DUT_FAILED, NOT_EXERCISED, OUTCOMES, PASSED, STAGES, Tally, key, mostly_not_exercised
-from .settings import BASE, OPTIONS, REFINED, OptionError, RunSettings
+from .settings import BASE, OPTIONS, OPTIONS_BY_NAME, REFINED, OptionError, RunSettings
 from .settings import dialect as parse_dialect
 
 DEFAULT_ARTIFACTS = "roadlogic-artifacts"
@@ -154,7 +154,31 @@ class OscWarning(pytest.PytestWarning):
     """A checker warning about an .osc file (an unused parameter, an idle actor)."""
 
 
+ORACLE_OPTIONS = ("min-ttc", "min-gap", "max-decel")  # what pytest_roadlogic_oracles may set per scenario
+
+
 class OscFile(pytest.File):
+    def _oracles(self, scenario, settings: RunSettings) -> RunSettings:
+        """``settings`` with the thresholds a ``pytest_roadlogic_oracles`` hook gives ``scenario``."""
+        given = self.ihook.pytest_roadlogic_oracles(config=self.config, scenario=scenario)
+        if not given:
+            return settings
+        values = {}
+        for name, value in dict(given).items():
+            if name not in ORACLE_OPTIONS:
+                raise self.CollectError(
+                    f"{self.path}: pytest_roadlogic_oracles gave {name!r} for scenario {scenario.name}; "
+                    f"give {', '.join(ORACLE_OPTIONS)}"
+                )
+            option = OPTIONS_BY_NAME[name]
+            try:
+                values[option.field] = option.parse(str(value))
+            except OptionError as error:
+                raise self.CollectError(
+                    f"{self.path}: pytest_roadlogic_oracles, {name} of scenario {scenario.name}: {error}"
+                ) from None
+        return replace(settings, **values)
+
     def collect(self):
         from .frontend import OscError, check_file
 
@@ -190,9 +214,10 @@ class OscFile(pytest.File):
         for scenario in checked.scenarios:
             if not scenario.runnable:
                 continue
+            judged = self._oracles(scenario, settings)
             for shard in shards:
                 name = scenario.name if shard.count == 1 else f"{scenario.name}[{shard.index + 1}of{shard.count}]"
-                item = ScenarioItem.from_parent(self, name=name, scenario=scenario, settings=settings, shard=shard)
+                item = ScenarioItem.from_parent(self, name=name, scenario=scenario, settings=judged, shard=shard)
                 item.add_marker("roadlogic")
                 if sum(not actor.stationary for actor in scenario.scenario.actors) > SLOW_ACTORS:
                     item.add_marker("slow")  # planning grows with the vehicles: select or deselect with -m

@@ -117,3 +117,20 @@ def test_an_item_fails_when_most_of_its_simulated_cases_were_not_exercised():
     assert not mostly_not_exercised(Counter({NOT_EXERCISED: 2, PASSED: 2}))
     assert not mostly_not_exercised(Counter({NOT_EXERCISED: 1, DUT_FAILED: 1, PASSED: 1}))
     assert not mostly_not_exercised(Counter())
+
+
+def test_a_conftest_judges_one_scenario_by_its_own_thresholds_and_a_bad_one_is_named(pytester):
+    copy(pytester, "cut_out.osc")
+    # a gap of 50 m is more than the reference keeps to the stopped car: its own threshold fails it
+    pytester.makeconftest(
+        "def pytest_roadlogic_oracles(config, scenario):\n"
+        "    return {'min-gap': 50} if scenario.name == 'cut_out' else None\n"
+    )
+    strict = pytester.runpytest_subprocess(*ONE)
+    strict.assert_outcomes(failed=1)
+    assert "(threshold 50 m)" in strict.stdout.str()
+    pytester.makeconftest("def pytest_roadlogic_oracles(config, scenario):\n    return {'min_ttc': 'soon'}\n")
+    bad = pytester.runpytest_subprocess(*ONE)
+    assert "pytest_roadlogic_oracles gave 'min_ttc' for scenario cut_out; give min-ttc, min-gap, max-decel" in (
+        bad.stdout.str()
+    )
