@@ -30,6 +30,7 @@ import time
 from pathlib import Path
 
 from .case import CaseFileError
+from .dut import NoSuchVehicle
 from .frontend import OscError
 from .outcomes import CONFORMANT, PASSED
 from .planning import NoPlanError, UnsatisfiableScenario
@@ -485,6 +486,9 @@ def _reporting_input_errors(args: argparse.Namespace, action):
         return EXIT_INPUT
     except (UnknownParameter, CaseFileError, UnknownSimulator) as error:
         print(f"{args.file}: error: {error}", file=sys.stderr)
+        return EXIT_INPUT
+    except NoSuchVehicle as error:
+        print(f"{args.file}: error: --dut: {error}", file=sys.stderr)
         return EXIT_INPUT
     except DriverLoadError as error:
         replay_hint = (

@@ -60,7 +60,7 @@ class UnderTest:
         if self.role not in vehicles:
             raise NoSuchVehicle(
                 f"the vehicle under test {self.role!r} is not a vehicle of the scenario (its vehicles: "
-                f"{', '.join(vehicles)}); give one of them with --roadlogic-dut, or auto or none"
+                f"{', '.join(vehicles)}); give one of them, or auto or none"
             )
         return self.role
 
