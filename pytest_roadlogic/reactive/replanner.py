@@ -97,6 +97,7 @@ class Replanner:
             lines.append(
                 f"observed({atom(vehicle)},{number(state.position)},{number(max(state.speed, 0.0))},{state.lane})."
             )
+        lines.append(f"self_driven({atom(self.dut)}).")
         if predicted:
             lines.append(f"predicted({atom(self.dut)}).")
         return "\n".join(lines)
