@@ -2,11 +2,13 @@
 the scenario happens around a good one.
 
     python benchmarks/falsification.py [--scenario scenarios/dut/cut_in.osc] [--seeds 10] [--budget 30]
+        [--defective late-acc | --delay SECONDS]
 
 Prints two tables:
 
 1. samples and seconds to the first failure of the defective driver (``--defective``, default
-   ``weak-braking-acc``), Hypothesis steered by the oracles' margin (``hypothesis.target``, as the
+   ``weak-braking-acc``; or, with ``--delay``, the reference one acting that many seconds late: a
+   milder defect, whose failures are rarer than the shipped variants' and so worth searching for), Hypothesis steered by the oracles' margin (``hypothesis.target``, as the
    plugin runs it) against plain random sampling of the same strategy, mean over ``--seeds`` seeds
    (a seed that finds none within ``--budget`` samples counts the budget);
 2. with the good driver (``acc``), the share of ``--samples`` samples in which the scenario happened
@@ -40,8 +42,19 @@ class Found(Exception):
     pass
 
 
-def first_failure(scenario, driver: str, seed: int, budget: int, targeted: bool) -> tuple[int, float]:
-    """(samples, seconds) until the first failure of ``driver``; (budget, seconds) when none."""
+def late_by(delay: float):
+    """A driver factory: the reference ACC acting ``delay`` seconds late drives the vehicle under test."""
+    from pytest_roadlogic.dut.acc import AdaptiveCruiseControl
+
+    class Late(AdaptiveCruiseControl):
+        reaction_delay = delay
+
+    return lambda vehicle: Late() if vehicle in ("dut.car", "dut") else None
+
+
+def first_failure(scenario, driver, seed: int, budget: int, targeted: bool) -> tuple[int, float]:
+    """(samples, seconds) until the first failure of ``driver`` (a reference driver's name, or a
+    driver factory); (budget, seconds) when none."""
     count, started = 0, time.perf_counter()
     phases = [Phase.generate, Phase.target] if targeted else [Phase.generate]
 
@@ -52,7 +65,10 @@ def first_failure(scenario, driver: str, seed: int, budget: int, targeted: bool)
         nonlocal count
         count += 1
         try:
-            run = next(run_instances(scenario, 1, seed=1, values=values, under_test=UnderTest(driver=driver)))
+            if isinstance(driver, str):
+                run = next(run_instances(scenario, 1, seed=1, values=values, under_test=UnderTest(driver=driver)))
+            else:
+                run = next(run_instances(scenario, 1, seed=1, values=values, under_test=UnderTest(), drivers=driver))
         except NoPlanError:
             return
         if targeted:
@@ -96,15 +112,18 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--scenario", default=str(ROOT / "scenarios" / "dut" / "cut_in.osc"))
     parser.add_argument("--defective", default="weak-braking-acc")
+    parser.add_argument("--delay", type=float, default=None, help="instead: the reference ACC this many seconds late")
     parser.add_argument("--seeds", type=int, default=10)
     parser.add_argument("--budget", type=int, default=30, help="samples per seed before giving up")
     parser.add_argument("--samples", type=int, default=20, help="samples for the share that happened")
     args = parser.parse_args()
     scenario = load_scenario(args.scenario)
-    print(f"{Path(args.scenario).name}: first failure of {args.defective}, {args.seeds} seeds, budget {args.budget}")
+    driver = args.defective if args.delay is None else late_by(args.delay)
+    name = args.defective if args.delay is None else f"acc {args.delay:g} s late"
+    print(f"{Path(args.scenario).name}: first failure of {name}, {args.seeds} seeds, budget {args.budget}")
     print(f"{'search':<10} {'samples (mean)':>15} {'seconds (mean)':>15} {'seeds failed':>13}")
     for targeted in (True, False):
-        results = [first_failure(scenario, args.defective, s, args.budget, targeted) for s in range(args.seeds)]
+        results = [first_failure(scenario, driver, s, args.budget, targeted) for s in range(args.seeds)]
         found = sum(n < args.budget for n, _ in results)
         print(
             f"{'targeted' if targeted else 'random':<10} {statistics.mean(n for n, _ in results):15.1f} "
