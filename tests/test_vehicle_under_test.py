@@ -39,8 +39,12 @@ def test_the_reference_vehicle_passes_the_cut_out_and_the_one_that_reacts_late_f
     assert properties["passed"] == "1" and properties["vehicle_under_test"] == "dut.car"
     assert float(properties["dut_min_gap_m"]) >= 2.0
 
-    late = pytester.runpytest_subprocess(*ONE, "--roadlogic-dut-driver", "late-acc")
+    late = pytester.runpytest_subprocess(
+        *ONE, "--roadlogic-dut-driver", "late-acc", "--html", "report.html", "--self-contained-html"
+    )
     late.assert_outcomes(failed=1)
+    page = (pytester.path / "report.html").read_text()
+    assert "roadlogic-oracles" in page and "least time to collision" in page, "the HTML report shows every oracle"
     report = late.stdout.str()
     assert "scenario cut_out: the vehicle under test failed (failed)" in report
     assert "the vehicle under test failed after 1 plans tried: dut.car: " in report

@@ -23,6 +23,9 @@ def report_extras(paths: dict[str, Path], replay: list[str]) -> list[dict]:
         result.append(
             extras.image(_base64(paths["animation"]), name="simulation", mime_type="image/gif", extension="gif")
         )
+    table = _oracle_table(paths.get("verdict"))
+    if table:
+        result.append(extras.html(table))
     commands = "\n".join(html.escape(line) for line in replay)
     # wrapped: one replay line is wider than a screen and would push the pictures out of view
     result.append(
@@ -31,6 +34,38 @@ def report_extras(paths: dict[str, Path], replay: list[str]) -> list[dict]:
         )
     )
     return result
+
+
+def _oracle_table(verdict: Path | None) -> str:
+    """The oracles' values of the vehicle under test (``verdict.json``), as an HTML table; "" without one."""
+    import json
+
+    if verdict is None or not Path(verdict).is_file():
+        return ""
+    values = json.loads(Path(verdict).read_text()).get("vehicle_under_test")
+    if not values:
+        return ""
+    rows = [
+        (
+            "least time to collision",
+            values["min_time_to_collision_s"],
+            "s",
+            values["thresholds"]["min_time_to_collision"],
+        ),
+        ("least gap", values["min_gap_m"], "m", values["thresholds"]["min_gap"]),
+        ("hardest braking", values["max_deceleration_mps2"], "m/s^2", values["thresholds"]["max_deceleration"]),
+    ]
+    cells = "".join(
+        f"<tr><td>{name}</td><td>{'none ahead' if value is None else f'{value:g} {unit}'}</td><td>{threshold:g} {unit}</td></tr>"
+        for name, value, unit, threshold in rows
+    )
+    failures = "".join(f"<li>{html.escape(line)}</li>" for line in values["failures"])
+    return (
+        f'<div class="roadlogic-oracles"><p>vehicle under test {html.escape(values["vehicle"])}:</p>'
+        f"<table><tr><th>oracle</th><th>value</th><th>threshold</th></tr>{cells}</table>"
+        + (f"<ul>{failures}</ul>" if failures else "")
+        + "</div>"
+    )
 
 
 def _base64(path: Path) -> str:
