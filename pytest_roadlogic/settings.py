@@ -177,10 +177,13 @@ dut_driver = one_of(DUT_DRIVERS, "a reference driver of the vehicle under test")
 
 
 def replan_period(text: str) -> float:
+    """Seconds between replans: 0 (never) or a whole number of the continuous planner's 1 s steps,
+    at which alone a replan can pin the observed states (a 0.3 s period had replanned every 1 s)."""
     value = real(text)
-    if not (value >= 0 and math.isfinite(value)):
+    if not (value >= 0 and math.isfinite(value) and value == round(value)):
         raise OptionError(
-            f"{text!r} is not a replanning period; give seconds from 0 (0: the other vehicles follow their first plan), e.g. 1"
+            f"{text!r} is not a replanning period; give a whole number of seconds, the planning step being 1 s "
+            "(0: the other vehicles follow their first plan), e.g. 1"
         )
     return value
 

@@ -90,7 +90,14 @@ def test_none_scripts_every_vehicle_and_a_vehicle_the_scenario_lacks_is_a_usage_
 
 @pytest.mark.parametrize(
     "option, value",
-    [("dut-driver", "perfect"), ("min-ttc", "-1"), ("min-gap", "x"), ("max-decel", "0"), ("replan-period", "-2")],
+    [
+        ("dut-driver", "perfect"),
+        ("min-ttc", "-1"),
+        ("min-gap", "x"),
+        ("max-decel", "0"),
+        ("replan-period", "-2"),
+        ("replan-period", "0.3"),
+    ],
 )
 def test_a_bad_value_of_an_oracle_or_driver_option_is_a_usage_error_naming_the_option(pytester, option, value):
     copy(pytester, "cut_out.osc")
