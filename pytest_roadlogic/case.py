@@ -71,22 +71,11 @@ class Case:
         return cls(
             path=str(path),
             scenario=scenario,
-            seed=settings.seed,
-            lanes=settings.lanes,
             road_speed=f"{settings.road_speed[0]!r}..{settings.road_speed[1]!r}mps",
-            dialect=settings.dialect,
             encoding=settings.encoding,
-            max_horizon=settings.max_horizon,
-            planning_time_limit=settings.planning_time_limit,
-            simulation_time_limit=settings.simulation_time_limit,
             max_tries=settings.tries,
-            simulator=settings.simulator,
             dut=settings.dut,
-            dut_driver=settings.dut_driver,
-            replan_period=settings.replan_period,
-            min_ttc=settings.min_ttc,
-            min_gap=settings.min_gap,
-            max_decel=settings.max_decel,
+            **{name: getattr(settings, name) for name in _COPIED},
             **identity,
         )
 
@@ -98,24 +87,13 @@ class Case:
     def settings(self) -> RunSettings:
         """The run settings this case was made under (defaults where an older case file is silent)."""
         given = {
-            "seed": self.seed,
             "strategy": self.strategy,
-            "lanes": self.lanes,
             "road_speed": speed_band(self.road_speed) if self.road_speed is not None else None,
-            "dialect": self.dialect,
-            "max_horizon": self.max_horizon,
             "encoding": self.planning_encoding,
-            "planning_time_limit": self.planning_time_limit,
-            "simulation_time_limit": self.simulation_time_limit,
             "tries": self.max_tries,
-            "simulator": self.simulator,
             # a case file from before vehicles under test drove every vehicle by its plan
             "dut": self.dut if self.dut is not None else DUT_NONE,
-            "dut_driver": self.dut_driver,
-            "replan_period": self.replan_period,
-            "min_ttc": self.min_ttc,
-            "min_gap": self.min_gap,
-            "max_decel": self.max_decel,
+            **{name: getattr(self, name) for name in _COPIED},
         }
         return RunSettings(**{k: v for k, v in given.items() if v is not None})
 
@@ -211,6 +189,22 @@ class Case:
         return shlex.join(parts)
 
 
+# the run settings a case keeps under their own names (the others: road_speed as text, encoding,
+# tries as max_tries, dut; strategy with the case's identity)
+_COPIED = (
+    "seed",
+    "lanes",
+    "dialect",
+    "max_horizon",
+    "planning_time_limit",
+    "simulation_time_limit",
+    "simulator",
+    "dut_driver",
+    "replan_period",
+    "min_ttc",
+    "min_gap",
+    "max_decel",
+)
 # the case's fields that are run settings, by the option (settings.OPTIONS) that reads and checks them
 _SETTING_OPTIONS = {
     "seed": "seed",
