@@ -70,16 +70,17 @@ def gaps_ahead(trace: Trace, follower: str, reaction: float = 0.0, until: int | 
     return gaps
 
 
-def least_gap(trace: Trace, follower: str, reaction: float = 0.0, until: int | None = None) -> Closest:
-    """The smallest gap from ``follower`` to a vehicle ahead in its path (see ``gaps_ahead``)."""
-    return _least(trace, gaps_ahead(trace, follower, reaction, until))
+def least_gap(trace: Trace, gaps: dict[str, np.ndarray]) -> Closest:
+    """The smallest of a follower's ``gaps`` (``gaps_ahead``) to a vehicle ahead in its path."""
+    return _least(trace, gaps)
 
 
-def least_time_to_collision(trace: Trace, follower: str, reaction: float = 0.0, until: int | None = None) -> Closest:
-    """The smallest time to collision of ``follower`` with a vehicle ahead in its path (see ``gaps_ahead``)."""
+def least_time_to_collision(trace: Trace, follower: str, gaps: dict[str, np.ndarray]) -> Closest:
+    """The smallest time to collision of ``follower`` with a vehicle ahead in its path, from its
+    ``gaps`` (``gaps_ahead``)."""
     f = trace.actors[follower]
     ttcs = {}
-    for other, gap in gaps_ahead(trace, follower, reaction, until).items():
+    for other, gap in gaps.items():
         closing = f["speed"] - trace.actors[other]["speed"]
         with np.errstate(divide="ignore", invalid="ignore"):
             ttc = np.where((closing > 1e-6) & np.isfinite(gap), gap / closing, np.inf)

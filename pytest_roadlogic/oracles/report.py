@@ -16,7 +16,7 @@ import numpy as np
 
 from ..logic.dimensions import CAR_LENGTH, CAR_WIDTH
 from ..simulation.trace import Trace
-from .measures import Closest, greatest_deceleration, least_gap, least_time_to_collision
+from .measures import Closest, gaps_ahead, greatest_deceleration, least_gap, least_time_to_collision
 from .thresholds import Thresholds
 
 
@@ -129,14 +129,14 @@ def judge(trace: Trace, vehicle: str, thresholds: Thresholds | None = None) -> D
     # after another vehicle ran into it, what it does is no longer judged: the scenario went wrong
     hit = min((c.time for c in collisions if not c.caused), default=None)
     until = int(np.searchsorted(trace.times, hit - 1e-9)) if hit is not None else None
-    reaction = thresholds.reaction_time
+    gaps = gaps_ahead(trace, vehicle, thresholds.reaction_time, until)
     return DutReport(
         vehicle,
         thresholds,
         collisions,
         off_road,
-        least_time_to_collision(trace, vehicle, reaction, until),
-        least_gap(trace, vehicle, reaction, until),
+        least_time_to_collision(trace, vehicle, gaps),
+        least_gap(trace, gaps),
         greatest_deceleration(trace, vehicle, until),
     )
 
