@@ -14,7 +14,8 @@ from pytest_roadlogic.dut import UnderTest
 from pytest_roadlogic.pipeline import guided_planning, load_scenario, run_instances
 from pytest_roadlogic.planning import settings_for
 from pytest_roadlogic.planning.fallbacks import planned
-from pytest_roadlogic.reactive import Observed, Replanner
+from pytest_roadlogic.planning.plan import PlanState
+from pytest_roadlogic.reactive import Replanner
 from pytest_roadlogic.settings import RunSettings
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -45,7 +46,7 @@ def observed_at(plan, step, **moved):
     for vehicle, trajectory in plan.states.items():
         state = trajectory[step]
         dx, dv = moved.get(vehicle.replace(".", "_"), (0.0, 0.0))
-        states[vehicle] = Observed(state.position + dx, state.speed + dv, state.lane)
+        states[vehicle] = PlanState(state.position + dx, state.lane, state.speed + dv)
     return states
 
 

@@ -5,6 +5,6 @@ the rest of the scenario solved again from the observed state (``Replanner``,
 lockstep loop asks it."""
 
 from .execution import ReactiveExecution, replanning_seconds
-from .replanner import Observed, Replan, Replanner
+from .replanner import Replan, Replanner
 
-__all__ = ["Observed", "ReactiveExecution", "Replan", "Replanner", "replanning_seconds"]
+__all__ = ["ReactiveExecution", "Replan", "Replanner", "replanning_seconds"]

@@ -12,11 +12,11 @@ from __future__ import annotations
 
 import math
 
-from ..planning.plan import Plan
+from ..planning.plan import Plan, PlanState
 from ..simulation.driver import VehicleState
-from ..simulation.reference import Reference, Waypoint
+from ..simulation.reference import Reference, references
 from ..simulation.road import Road
-from .replanner import Observed, Replan, Replanner
+from .replanner import Replan, Replanner
 
 
 class ReactiveExecution:
@@ -29,7 +29,7 @@ class ReactiveExecution:
         self.replans: list[Replan] = []
 
     def __call__(
-        self, time: float, states: dict[str, VehicleState], road: Road, references: dict[str, Reference]
+        self, time: float, states: dict[str, VehicleState], road: Road, driven: dict[str, Reference]
     ) -> dict[str, Reference] | None:
         plan = self.plan
         step = time / plan.dt
@@ -39,29 +39,25 @@ class ReactiveExecution:
         # not at the start (the plan starts where the vehicles are), not once the plan has ended
         if step == 0 or step % self.every or step >= plan.horizon:
             return None
-        observed = {v: Observed(s.x, s.speed, road.lane_at(s.y)) for v, s in states.items()}
+        observed = {v: PlanState(s.x, road.lane_at(s.y), s.speed) for v, s in states.items()}
         replan = self.replanner.replan(plan, step, observed)
         self.replans.append(replan)
         if replan.plan is None:
             return None
         self.plan = replan.plan
+        now = step * plan.dt
+        planned = references(replan.plan, road)
         return {
-            vehicle: _spliced(references[vehicle], replan.plan, vehicle, step)
+            vehicle: _spliced(driven[vehicle], planned[vehicle], now)
             for vehicle in plan.vehicles
             if vehicle != self.replanner.dut and vehicle not in plan.stationary
         }
 
 
-def _spliced(old: Reference, plan: Plan, vehicle: str, step: int) -> Reference:
-    """``old``'s waypoints before ``step`` and ``plan``'s from it on."""
-    now = step * plan.dt
-    kept = [w for w in old.waypoints if w.time < now - 1e-9]
-    new = [
-        Waypoint(k * plan.dt, s.position, s.lane, s.speed, window=plan.dt / 2)
-        for k, s in enumerate(plan.states[vehicle])
-        if k >= step
-    ]
-    return Reference(vehicle, old.runup, old.runup_acceleration, kept + new, old.road)
+def _spliced(old: Reference, new: Reference, now: float) -> Reference:
+    """``old``'s waypoints before ``now`` and ``new``'s from it on."""
+    waypoints = [w for w in old.waypoints if w.time < now - 1e-9] + [w for w in new.waypoints if w.time >= now - 1e-9]
+    return Reference(old.vehicle, old.runup, old.runup_acceleration, waypoints, old.road)
 
 
 def replanning_seconds(replans: list[Replan]) -> tuple[float, float]:

@@ -16,19 +16,10 @@ from dataclasses import dataclass
 
 from ..planning.encodings.continuous.instance import number
 from ..planning.facts import atom
-from ..planning.plan import Plan
+from ..planning.plan import Plan, PlanState
 
 # seconds one replan may take: a replan that takes longer is no reaction
 REPLAN_TIME_LIMIT = 5.0
-
-
-@dataclass(frozen=True)
-class Observed:
-    """A vehicle's state at the observed step: its centre's position along the road (m), speed (m/s), lane."""
-
-    position: float
-    speed: float
-    lane: int
 
 
 @dataclass(frozen=True)
@@ -59,8 +50,9 @@ class Replanner:
         self.dut = dut
         self.predicting = True  # whether the last replan found a plan with the vehicle under test predicted
 
-    def replan(self, plan: Plan, step: int, observed: dict[str, Observed]) -> Replan:
-        """The plan from ``step`` on, the run before it as ``plan``'s, the vehicles as ``observed`` there."""
+    def replan(self, plan: Plan, step: int, observed: dict[str, PlanState]) -> Replan:
+        """The plan from ``step`` on, the run before it as ``plan``'s, the vehicles as ``observed``
+        there (each vehicle's position along the road, lane and speed, as a plan states them)."""
         from ..planning import NoPlanError, planner_for
 
         started = time.perf_counter()
@@ -89,7 +81,7 @@ class Replanner:
             f"from the state at t={step * plan.dt:g} s the scenario cannot go on, even with {self.dut} driving as any car could: {why}",
         )
 
-    def facts(self, plan: Plan, step: int, observed: dict[str, Observed], predicted: bool) -> str:
+    def facts(self, plan: Plan, step: int, observed: dict[str, PlanState], predicted: bool) -> str:
         """The replan's facts (``asp/continuous/replan.lp``)."""
         lines = [f"now({step})."]
         lines += [f"ran({transition},{at})." for at, transition in plan.transitions if at < step]
