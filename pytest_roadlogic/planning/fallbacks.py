@@ -127,20 +127,33 @@ def binding_limits(guide: Guide, settings, seed: int) -> frozenset[str]:
     return ALL_LIMITS
 
 
+def fallback_settings(settings, beyond_limits: bool = True) -> list[tuple[object, str]]:
+    """The fallback planners' settings in the order ``planned`` tries them, each with the mark its
+    plans carry in their stats: thinner margins, then half the step too, then relaxed limits (the
+    spacing between cars first, then a car's limits too, unless ``beyond_limits`` is off). Empty
+    when the settings have no fallback margins."""
+    thinned = settings.thinned()
+    if thinned is None:
+        return []
+    quiet = dataclasses.replace(thinned, explain_unsatisfiable=False)
+    # half the planning step: durations between whole seconds (a 0.5 s wait, a 3.6 s brake)
+    finer = dataclasses.replace(
+        quiet, dt=quiet.dt / 2, max_horizon=quiet.max_horizon * 2, lane_change_gap=quiet.lane_change_gap * 2
+    )
+    # the spacing first, then a car's limits too: a plan within a car's limits is one a car can
+    # drive (cut_out_obstacle's stop 5 m behind its wreck, planned with every limit relaxed,
+    # braked with a jerk of 4 m/s^3 and its simulated ego hit the wreck)
+    relaxed = [(with_limits_relaxed(quiet, SPACING), "relaxed_limits")] + (
+        [(with_limits_relaxed(quiet), "relaxed_limits")] if beyond_limits else []
+    )
+    return [(quiet, "thinned_margins"), (finer, "finer_step"), *relaxed]
+
+
 def settings_of(plan: Plan, settings):
     """The settings of the planner that planned ``plan``: ``settings`` (``planned``'s first
-    planner), or the fallback's its marks name (for relaxed limits, every limit relaxed)."""
-    thinned = settings.thinned()
-    if thinned is None or not any(plan.stats.get(m) for m in ("thinned_margins", "finer_step", "relaxed_limits")):
-        return settings
-    quiet = dataclasses.replace(thinned, explain_unsatisfiable=False)
-    if plan.stats.get("finer_step"):
-        return dataclasses.replace(
-            quiet, dt=quiet.dt / 2, max_horizon=quiet.max_horizon * 2, lane_change_gap=quiet.lane_change_gap * 2
-        )
-    if plan.stats.get("relaxed_limits"):
-        return with_limits_relaxed(quiet)
-    return quiet
+    planner), or the fallback's its mark names (for relaxed limits, every limit relaxed)."""
+    marked = [(fallback, mark) for fallback, mark in fallback_settings(settings) if plan.stats.get(mark)]
+    return marked[-1][0] if marked else settings
 
 
 def planned(
@@ -186,24 +199,10 @@ def planned(
 def _fallback_plans(guide: Guide, settings, seed: int, limit: int, beyond_limits: bool) -> Generator[Plan, None, bool]:
     """Yields the plans of the first fallback planner that has any (``planned``) and returns
     whether one had."""
-    thinned = settings.thinned()
-    if thinned is None:
-        return False
-    quiet = dataclasses.replace(thinned, explain_unsatisfiable=False)
-    # half the planning step: durations between whole seconds (a 0.5 s wait, a 3.6 s brake)
-    finer = dataclasses.replace(
-        quiet, dt=quiet.dt / 2, max_horizon=quiet.max_horizon * 2, lane_change_gap=quiet.lane_change_gap * 2
-    )
-    # the spacing first, then a car's limits too: a plan within a car's limits is one a car can
-    # drive (cut_out_obstacle's stop 5 m behind its wreck, planned with every limit relaxed,
-    # braked with a jerk of 4 m/s^3 and its simulated ego hit the wreck)
-    relaxed = [(with_limits_relaxed(quiet, SPACING), "relaxed_limits")] + (
-        [(with_limits_relaxed(quiet), "relaxed_limits")] if beyond_limits else []
-    )
-    for fallback_settings, mark in ((quiet, "thinned_margins"), (finer, "finer_step"), *relaxed):
+    for fallback, mark in fallback_settings(settings, beyond_limits):
         try:
-            fallback = _planner_for(guide(fallback_settings), fallback_settings, seed).plans(limit=limit)
-            plan = next(fallback, None)
+            plans = _planner_for(guide(fallback), fallback, seed).plans(limit=limit)
+            plan = next(plans, None)
         except NoPlanError:
             continue
         if plan is None:
@@ -211,6 +210,6 @@ def _fallback_plans(guide: Guide, settings, seed: int, limit: int, beyond_limits
         while plan is not None:
             plan.stats[mark] = 1.0
             yield plan
-            plan = next(fallback, None)
+            plan = next(plans, None)
         return True
     return False
