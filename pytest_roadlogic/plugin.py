@@ -27,7 +27,16 @@ from pathlib import Path
 import pytest
 
 from .dut import NoSuchVehicle
-from .outcomes import DUT_FAILED, NOT_EXERCISED, OUTCOMES, PASSED, STAGES, Tally, key, mostly_not_exercised
+from .outcomes import (
+    DUT_FAILED,
+    NOT_EXERCISED,
+    OUTCOMES,
+    STAGES,
+    Tally,
+    key,
+    mostly_not_exercised,
+    with_a_vehicle_under_test,
+)
 from .settings import BASE, OPTIONS, OPTIONS_BY_NAME, REFINED, OptionError, RunSettings
 from .settings import dialect as parse_dialect
 
@@ -260,14 +269,24 @@ class ScenarioItem(pytest.Item):
         if self.shard.count > 1:
             self.user_properties.append(("shard", f"{self.shard.index + 1}/{self.shard.count}"))
         self.drivers = self._drivers()
-        runner = Runner(self.scenario, settings, self.drivers, self._simulator(), explain=settings.strategy == BASE)
+        replay, case = _text(self.config, "replay"), None
+        if replay:
+            try:
+                case = Case.load(replay)
+            except CaseFileError as error:
+                raise pytest.UsageError(f"roadlogic: --roadlogic-replay {replay}: {error}") from None
+        # a replayed case runs with its own settings (who is under test, with which reference driver,
+        # its thresholds, tries, ...), as roadlogic replay runs it: the session's had replayed a late
+        # vehicle under test's failure with the default driver, and passed
+        runner = Runner(
+            self.scenario,
+            case.settings() if case is not None else settings,
+            self.drivers,
+            self._simulator(),
+            explain=settings.strategy == BASE,
+        )
         try:
-            replay = _text(self.config, "replay")
-            if replay:
-                try:
-                    case = Case.load(replay)
-                except CaseFileError as error:
-                    raise pytest.UsageError(f"roadlogic: --roadlogic-replay {replay}: {error}") from None
+            if case is not None:
                 self._replay(runner, case)
             elif settings.strategy == BASE:
                 for result in runner.base():
@@ -327,10 +346,10 @@ class ScenarioItem(pytest.Item):
         """An item whose cases mostly did not happen around the vehicle under test tested nothing: it fails."""
         outcomes = self.tally.outcomes
         if mostly_not_exercised(outcomes):
-            simulated = sum(outcomes[o] for o in (PASSED, DUT_FAILED, NOT_EXERCISED))
             pytest.fail(
-                f"scenario {self.scenario.name}: {outcomes[NOT_EXERCISED]} of {simulated} cases were not exercised "
-                f"(the scenario did not happen around the vehicle under test, so they tested nothing); the last: "
+                f"scenario {self.scenario.name}: {outcomes[NOT_EXERCISED]} of {with_a_vehicle_under_test(outcomes)} "
+                "cases were not exercised (the scenario did not happen around the vehicle under test, so they "
+                "tested nothing); the last: "
                 f"{self.not_exercised.splitlines()[0] if self.not_exercised else '-'}",
                 pytrace=False,
             )
@@ -342,14 +361,9 @@ class ScenarioItem(pytest.Item):
 
     def _replay(self, runner, case) -> None:
         """The one case of a case file, when it is this item's (other items are skipped), with this
-        session's drivers: a run with other drivers than the case's is refused, not reported. The
-        case's settings decide how it runs (who is under test and with which reference driver, its
-        thresholds, tries, ...), as ``roadlogic replay`` runs it: the session's had replayed a late
-        vehicle under test's failure with the default driver, and passed."""
-        from .runner import Runner
+        session's drivers (``runner`` runs with the case's settings): a run with other drivers than
+        the case's is refused, not reported."""
         from .sampling import UnknownParameter
-
-        runner = Runner(self.scenario, case.settings(), self.drivers, self._simulator(), explain=runner.explain_no_plan)
 
         if not _replays(self, case):
             pytest.skip(

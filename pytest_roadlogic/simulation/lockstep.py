@@ -91,7 +91,11 @@ def drive_in_lockstep(
             driver = (drivers(vehicle) if drivers else None) or default()
         driver.start(vehicle, reference, road, dt)
         active[vehicle] = driver
-    steps = int(round((max(r.end_time for r in refs.values()) + TAIL) / dt))
+
+    def last_step() -> int:  # the run lasts as long as the longest reference, and TAIL after
+        return int(round((max(r.end_time for r in refs.values()) + TAIL) / dt))
+
+    steps = last_step()
     states = {
         v: VehicleState(r.start_position, road.center_y(r.waypoints[0].lane), 0.0, r.start_speed, 0.0)
         for v, r in refs.items()
@@ -138,7 +142,7 @@ def drive_in_lockstep(
                 driver.start(v, reference, road, dt)
             goals[v].retarget(reference.waypoints, time)
         if retargeted:
-            steps = max(steps, int(round((max(r.end_time for r in refs.values()) + TAIL) / dt)))
+            steps = max(steps, last_step())
             for col in columns.values():
                 for name, values in col.items():
                     if len(values) < steps + 1:
