@@ -654,12 +654,7 @@ def _show(result, out: Path) -> int:
         print(f"  {stage:<12} {seconds:7.3f} s")
     print(outcome.verdict.explain())
     if outcome.dut is not None:
-        values = outcome.dut.values()
-        print(
-            f"vehicle under test {outcome.dut.vehicle}: least time to collision {values['min_time_to_collision_s'] or 'inf'} s, "
-            f"least gap {values['min_gap_m'] or 'inf'} m, hardest braking {values['max_deceleration_mps2']} m/s^2, "
-            f"{len(outcome.simulation.replans)} replans"
-        )
+        print(oracle_line(outcome.dut, len(outcome.simulation.replans)))
         if result.message:
             print(f"{result.outcome}: {result.message}")
     for kind, path in paths.items():
@@ -667,6 +662,16 @@ def _show(result, out: Path) -> int:
     if outcome.dut is not None:
         return EXIT_ACCEPTED if result.outcome == PASSED else EXIT_REJECTED
     return EXIT_ACCEPTED if outcome.verdict.accepted else EXIT_REJECTED
+
+
+def oracle_line(report, replans: int) -> str:
+    """The oracles' values of a vehicle under test in a line (``inf``: no one ahead in its path;
+    a value of 0 had been printed as ``inf``)."""
+    values = {k: "inf" if v is None else v for k, v in report.values().items()}
+    return (
+        f"vehicle under test {report.vehicle}: least time to collision {values['min_time_to_collision_s']} s, "
+        f"least gap {values['min_gap_m']} m, hardest braking {values['max_deceleration_mps2']} m/s^2, {replans} replans"
+    )
 
 
 def _bench(args: argparse.Namespace) -> int:

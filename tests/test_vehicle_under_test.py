@@ -145,3 +145,11 @@ def test_a_conftest_judges_one_scenario_by_its_own_thresholds_and_a_bad_one_is_n
     assert "pytest_roadlogic_oracles gave 'min_ttc' for scenario cut_out; give min-ttc, min-gap, max-decel" in (
         bad.stdout.str()
     )
+
+
+def test_roadlogic_run_prints_a_gap_of_zero_as_zero_and_no_one_ahead_as_inf():
+    from pytest_roadlogic.cli import oracle_line
+    from pytest_roadlogic.oracles import Closest, DutReport, Thresholds
+
+    line = oracle_line(DutReport("dut.car", Thresholds(), gap=Closest(0.0, 1.0, "npc")), replans=3)
+    assert "least time to collision inf s" in line and "least gap 0.0 m" in line and "3 replans" in line
