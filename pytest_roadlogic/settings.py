@@ -177,13 +177,13 @@ dut_driver = one_of(DUT_DRIVERS, "a reference driver of the vehicle under test")
 
 
 def replan_period(text: str) -> float:
-    """Seconds between replans: 0 (never) or a whole number of the continuous planner's 1 s steps,
-    at which alone a replan can pin the observed states (a 0.3 s period had replanned every 1 s)."""
+    """Seconds between replans: 0 (never), else at least the simulation's step of 0.1 s, at which
+    alone the simulation can stop for one."""
     value = real(text)
-    if not (value >= 0 and math.isfinite(value) and value == round(value)):
+    if not (math.isfinite(value) and (value == 0 or value >= 0.1 - 1e-9)):
         raise OptionError(
-            f"{text!r} is not a replanning period; give a whole number of seconds, the planning step being 1 s "
-            "(0: the other vehicles follow their first plan), e.g. 1"
+            f"{text!r} is not a replanning period; give seconds, at least the simulation step of 0.1 s "
+            "(0: the other vehicles follow their first plan), e.g. 0.25"
         )
     return value
 
@@ -316,9 +316,9 @@ OPTIONS = (
         "replan-period",
         "replan_period",
         replan_period,
-        1.0,
-        "seconds between replans of the other vehicles from what the vehicle under test really does (whole planning "
-        "steps of 1 s); 0: they follow their first plan",
+        0.25,
+        "seconds between replans of the other vehicles from what the vehicle under test really does (at least the "
+        "simulation step, 0.1); 0: they follow their first plan",
     ),
     Option(
         "min-ttc",
@@ -365,7 +365,7 @@ class RunSettings:
     simulator: str = DEFAULT_SIMULATOR
     dut: str = DUT_AUTO  # the vehicle under test: auto, none or a vehicle's name (dut.UnderTest)
     dut_driver: str = "acc"
-    replan_period: float = 1.0  # s (reactive execution); 0: the other vehicles follow their first plan
+    replan_period: float = 0.25  # s (reactive execution); 0: the other vehicles follow their first plan
     min_ttc: float = 1.5  # s: the oracles' thresholds (oracles.Thresholds)
     min_gap: float = 2.0  # m
     max_decel: float = 8.0  # m/s^2

@@ -52,7 +52,7 @@ def test_the_reference_vehicle_passes_the_cut_out_and_the_one_that_reacts_late_f
     verdict = json.loads(next(pytester.path.glob("roadlogic-artifacts/*/verdict.json")).read_text())
     assert verdict["vehicle_under_test"]["failures"] and verdict["replans"], "the oracles and the replans are recorded"
     case = Case.load(next(pytester.path.glob("roadlogic-artifacts/*/case.json")))
-    assert case.dut == "auto" and case.dut_driver == "late-acc" and case.replan_period == 1.0
+    assert case.dut == "auto" and case.dut_driver == "late-acc" and case.replan_period == 0.25
 
     # the case replays to the same failure under pytest, with the recorded reference driver
     again = pytester.runpytest_subprocess(
@@ -96,7 +96,7 @@ def test_none_scripts_every_vehicle_and_a_vehicle_the_scenario_lacks_is_a_usage_
         ("min-gap", "x"),
         ("max-decel", "0"),
         ("replan-period", "-2"),
-        ("replan-period", "0.3"),
+        ("replan-period", "0.05"),
     ],
 )
 def test_a_bad_value_of_an_oracle_or_driver_option_is_a_usage_error_naming_the_option(pytester, option, value):

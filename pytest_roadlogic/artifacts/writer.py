@@ -41,11 +41,20 @@ def write_artifacts(outcome: SimulatedInstance, directory: str | Path, animation
         **outcome.verdict.to_dict(),
         # did the vehicle under test fail: every oracle's value, failed or not (oracles.DutReport)
         **({"vehicle_under_test": outcome.dut.values()} if outcome.dut is not None else {}),
-        # the reactive execution's replans: when, how long each took, whether it found a plan and why not
+        # the reactive execution's replans: when, how long each took, whether it found a plan and why
+        # not, whether the run so far went through what was seen (else it was the old plan's), whether
+        # the vehicle under test was predicted (else planned as any car)
         **(
             {
                 "replans": [
-                    {"time": r.time, "seconds": round(r.seconds, 4), "found": r.plan is not None, "why": r.why}
+                    {
+                        "time": round(r.time, 6),
+                        "seconds": round(r.seconds, 4),
+                        "found": r.plan is not None,
+                        "run_seen": r.seen,
+                        "predicted": r.predicted,
+                        "why": r.why,
+                    }
                     for r in outcome.simulation.replans
                 ]
             }

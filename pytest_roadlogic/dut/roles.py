@@ -39,7 +39,7 @@ class UnderTest:
     thresholds: Thresholds = field(default_factory=Thresholds)
     # seconds between replans of the scenario's other vehicles while it drives (reactive execution);
     # 0: they follow their first plan whatever it does (open loop)
-    replan_period: float = 1.0
+    replan_period: float = 0.25
 
     @classmethod
     def of(cls, settings) -> UnderTest:

@@ -2,8 +2,9 @@
 the vehicles really do, every ``period`` seconds (``ReactiveExecution``, the lockstep's ``react``).
 
 The vehicle under test drives itself; every other vehicle follows its plan until the next replan,
-which pins every vehicle's observed state at the current step and plans the rest of the scenario
-from there (``Replanner``). A vehicle's new reference keeps its old waypoints before now and takes
+which pins every vehicle's observed state at the next planning step and plans the rest of the
+scenario from there, the run of the automaton so far being the one through the states seen at the
+steps before (``Replanner``). A vehicle's new reference keeps its old waypoints before now and takes
 the replan's from now on. A replan that finds no plan leaves the plan as it is and is recorded
 with why: from here the scenario cannot go on (the vehicle under test made it impossible).
 """
@@ -20,38 +21,66 @@ from .replanner import Replan, Replanner
 
 
 class ReactiveExecution:
-    """The ``react`` of one simulation: replans ``plan`` every ``period`` seconds (whole planning steps)."""
+    """The ``react`` of one simulation: replans ``plan`` every ``period`` seconds.
+
+    A replan between two planning steps plans from the next one: every vehicle's state there is
+    predicted from the observation at its speed and acceleration (less than a step ahead), and
+    the new plan takes over from that step (the drivers look ahead along their references: a
+    replan changes what they aim for at once). The states at the planning steps are kept, for the
+    run of the automaton so far (``Replanner``)."""
 
     def __init__(self, replanner: Replanner, plan: Plan, period: float) -> None:
         self.replanner = replanner
         self.plan = plan
-        self.every = max(1, int(round(period / plan.dt)))  # planning steps between replans
+        self.period = period
+        self.next_time = period
+        self.seen: dict[int, dict[str, PlanState]] = {}  # planning step -> vehicle -> state there
         self.replans: list[Replan] = []
 
     def __call__(
         self, time: float, states: dict[str, VehicleState], road: Road, driven: dict[str, Reference]
     ) -> dict[str, Reference] | None:
         plan = self.plan
-        step = time / plan.dt
-        if abs(step - round(step)) > 1e-6:
+        dt = plan.dt
+        at_step = time / dt
+        if abs(at_step - round(at_step)) < 1e-6:
+            self.seen[int(round(at_step))] = _observed(states, road, 0.0)
+        if time < self.next_time - 1e-6:
             return None
-        step = int(round(step))
+        while self.next_time < time + 1e-6:
+            self.next_time += self.period
+        step = math.ceil(at_step - 1e-6)
         # not at the start (the plan starts where the vehicles are), not once the plan has ended
-        if step == 0 or step % self.every or step >= plan.horizon:
+        if step == 0 or step >= plan.horizon:
             return None
-        observed = {v: PlanState(s.x, road.lane_at(s.y), s.speed) for v, s in states.items()}
-        replan = self.replanner.replan(plan, step, observed)
+        observed = self.seen[step] if step * dt - time < 1e-6 else _observed(states, road, step * dt - time)
+        replan = self.replanner.replan(plan, step, observed, self.seen, time)
         self.replans.append(replan)
         if replan.plan is None:
             return None
         self.plan = replan.plan
-        now = step * plan.dt
         planned = references(replan.plan, road)
         return {
-            vehicle: _spliced(driven[vehicle], planned[vehicle], now)
+            vehicle: _spliced(driven[vehicle], planned[vehicle], step * dt)
             for vehicle in plan.vehicles
             if vehicle != self.replanner.dut and vehicle not in plan.stationary
         }
+
+
+def _observed(states: dict[str, VehicleState], road: Road, ahead: float) -> dict[str, PlanState]:
+    """Every vehicle's state as a plan states it, ``ahead`` seconds on: along the road at its speed
+    and acceleration (never reversing), across it at its lateral speed (a vehicle halfway through
+    a lane change is in the lane it is heading for once its centre has crossed the line)."""
+    observed = {}
+    for vehicle, s in states.items():
+        speed = s.speed + s.acceleration * ahead
+        if speed >= 0:
+            distance = (s.speed + speed) / 2 * ahead
+        else:  # it stops on the way
+            speed, distance = 0.0, s.speed * s.speed / (-2 * s.acceleration)
+        across = s.y + s.speed * math.sin(s.heading) * ahead
+        observed[vehicle] = PlanState(s.x + distance * math.cos(s.heading), road.lane_at(across), speed)
+    return observed
 
 
 def _spliced(old: Reference, new: Reference, now: float) -> Reference:

@@ -1,11 +1,13 @@
 """The rest of a scenario planned again from an observed state (``Replanner``).
 
-A replan keeps the run of the automaton so far (the transitions the plan being driven fired before
-the observed step), pins every vehicle's observed position, speed and lane at that step, and plans
-the steps after it; the steps before are the past, which no vehicle limit binds
-(``asp/continuous/replan.lp``). The vehicle under test is not planned but predicted: it holds its
-observed speed and lane; when no plan exists so, it is planned as any car could drive, and when
-none exists either, the scenario cannot go on from here: the replan says so.
+A replan pins every vehicle's state at the observed step and plans the steps after it; the steps
+before are the past, which no vehicle limit or kinematics binds (``asp/continuous/replan.lp``).
+The run of the automaton so far is the monitor's: any run through the states the simulation had
+at the past steps (the planner finds it, through the same guards); when there is none at the
+steps (a guard that held only between two of them), the run the plan being driven took. The
+vehicle under test is not planned but predicted: it holds its observed speed and lane; when no
+plan exists so, it is planned as any car could drive, and when none exists either, the scenario
+cannot go on from here: the replan says so.
 """
 
 from __future__ import annotations
@@ -24,14 +26,39 @@ REPLAN_TIME_LIMIT = 5.0
 
 @dataclass(frozen=True)
 class Replan:
-    """One replanning: when (the observed step's time), how long it took, the plan found (None:
-    none), and how: the vehicle under test predicted at its speed, or planned as any car; why none."""
+    """One replanning: when (the time of the observation), how long it took, the plan found (None:
+    none), and how: the vehicle under test predicted at its speed or planned as any car, the run
+    so far the monitor's through what was seen or the old plan's; why none."""
 
     time: float
     seconds: float
     plan: Plan | None
     predicted: bool = True
     why: str = ""
+    seen: bool = True
+
+
+@dataclass(frozen=True)
+class _Mode:
+    """One way to replan: the run so far through what was seen (else the plan's), the vehicle under
+    test predicted (else planned), and the plan at least its old length (else any length)."""
+
+    seen: bool
+    predicted: bool
+    full_length: bool
+
+
+# tried in this order: the run through what was seen before the old plan's (which only stands in
+# for it), a phase keeps the end it was planned with when it can, the vehicle under test is
+# predicted when it can be (planned first when the last replan had to plan it)
+MODES = (
+    _Mode(True, True, True),
+    _Mode(True, False, True),
+    _Mode(False, True, True),
+    _Mode(False, False, True),
+    _Mode(True, False, False),
+    _Mode(False, False, False),
+)
 
 
 class Replanner:
@@ -49,47 +76,80 @@ class Replanner:
         self.seed = seed
         self.dut = dut
         self.predicting = True  # whether the last replan found a plan with the vehicle under test predicted
+        # the modes that found no plan from a step, and why: a later replan from the same step (the
+        # states there predicted from a later instant, less than a step ahead) does not try them again
+        self.failed: dict[int, set[_Mode]] = {}
+        self.why: dict[int, str] = {}
 
-    def replan(self, plan: Plan, step: int, observed: dict[str, PlanState]) -> Replan:
-        """The plan from ``step`` on, the run before it as ``plan``'s, the vehicles as ``observed``
-        there (each vehicle's position along the road, lane and speed, as a plan states them)."""
+    def replan(
+        self,
+        plan: Plan,
+        step: int,
+        observed: dict[str, PlanState],
+        seen: dict[int, dict[str, PlanState]] | None = None,
+        at: float | None = None,
+    ) -> Replan:
+        """The plan from ``step`` on, the vehicles as ``observed`` there (each vehicle's position along
+        the road, lane and speed, as a plan states them) at the time ``at`` (default: the step's).
+        ``seen``: the vehicles' states at the steps before (step -> vehicle -> state), every one of
+        them, for the monitor's run; without them, or when no run goes through them, the run so far
+        is ``plan``'s."""
         from ..planning import NoPlanError, planner_for
 
         started = time.perf_counter()
-        why = ""
-        # the plan's own length or longer first (a phase keeps the end it was planned with), the
-        # vehicle under test predicted, unless the last replan had to plan it; then any length
-        length = max(step + 1, plan.horizon)
-        modes = [(True, length), (False, length)] if self.predicting else [(False, length), (True, length)]
-        for predicted, shortest in dict.fromkeys([*modes, (False, step + 1)]):
+        at = step * plan.dt if at is None else at
+        why = self.why.get(step, "")
+        complete = seen is not None and all(k in seen for k in range(step))
+        failed = self.failed.setdefault(step, set())
+        for mode in sorted(MODES, key=lambda m: (not m.full_length, not m.seen, m.predicted != self.predicting)):
+            if (mode.seen and not complete) or mode in failed:
+                continue
             planner = planner_for(self.automaton, self.settings, self.seed)
-            planner.instance += "\n" + self.facts(plan, step, observed, predicted)
-            planner.shortest = shortest
+            planner.instance += "\n" + self.facts(plan, step, observed, seen if mode.seen else None, mode.predicted)
+            planner.shortest = max(step + 1, plan.horizon) if mode.full_length else step + 1
             try:
                 found = next(planner.plans(limit=1), None)
             except NoPlanError as error:
-                why = str(error)
+                why = self.why[step] = str(error)
+                failed.add(mode)
                 continue
             if found is not None:
-                self.predicting = predicted
-                return Replan(step * plan.dt, time.perf_counter() - started, found, predicted)
+                self.predicting = mode.predicted
+                return Replan(at, time.perf_counter() - started, found, mode.predicted, seen=mode.seen)
+            failed.add(mode)
         return Replan(
-            step * plan.dt,
+            at,
             time.perf_counter() - started,
             None,
             False,
-            f"from the state at t={step * plan.dt:g} s the scenario cannot go on, even with {self.dut} driving as any car could: {why}",
+            f"from the state at t={at:g} s the scenario cannot go on, even with {self.dut} driving as any car could: {why}",
+            seen=False,
         )
 
-    def facts(self, plan: Plan, step: int, observed: dict[str, PlanState], predicted: bool) -> str:
-        """The replan's facts (``asp/continuous/replan.lp``)."""
+    def facts(
+        self,
+        plan: Plan,
+        step: int,
+        observed: dict[str, PlanState],
+        seen: dict[int, dict[str, PlanState]] | None,
+        predicted: bool,
+    ) -> str:
+        """The replan's facts (``asp/continuous/replan.lp``): the past as ``seen`` (None: as ``plan`` ran)."""
         lines = [f"now({step})."]
-        lines += [f"ran({transition},{at})." for at, transition in plan.transitions if at < step]
+        if seen is None:
+            lines.append("kept_run.")
+            lines += [f"ran({transition},{at})." for at, transition in plan.transitions if at < step]
+        else:
+            for k in range(step):
+                for vehicle, state in seen[k].items():
+                    lines.append(f"seen({atom(vehicle)},{k},{_state(state)}).")
         for vehicle, state in observed.items():
-            lines.append(
-                f"observed({atom(vehicle)},{number(state.position)},{number(max(state.speed, 0.0))},{state.lane})."
-            )
+            lines.append(f"observed({atom(vehicle)},{_state(state)}).")
         lines.append(f"self_driven({atom(self.dut)}).")
         if predicted:
             lines.append(f"predicted({atom(self.dut)}).")
         return "\n".join(lines)
+
+
+def _state(state: PlanState) -> str:
+    return f"{number(state.position)},{number(max(state.speed, 0.0))},{state.lane}"
