@@ -44,6 +44,7 @@ class Case:
     values: dict[str, Any] = field(default_factory=dict)  # the sample (refined strategy)
     instance: int = 0  # which of the planner's instances, from 0 (base strategy)
     lanes: int | None = None
+    road_map: str | None = None  # the map option's OpenDRIVE file (a scenario's own set_map is in its file)
     road_speed: str | None = None  # "LOW..HIGHmps" (settings.speed_band); None in older case files: the default
     dialect: str = STANDARD_DIALECT
     encoding: str | None = None  # None in case files older than the continuous encoding: the grid's
@@ -168,6 +169,7 @@ class Case:
             parts += ["--values", json.dumps(self.values, sort_keys=True)]
         for option, value in (
             ("--lanes", self.lanes),
+            ("--map", self.road_map),
             ("--road-speed", self.road_speed),
             ("--dialect", None if self.dialect == STANDARD_DIALECT else self.dialect),
             ("--encoding", None if self.planning_encoding == CONTINUOUS else self.planning_encoding),
@@ -194,6 +196,7 @@ class Case:
 _COPIED = (
     "seed",
     "lanes",
+    "road_map",
     "dialect",
     "max_horizon",
     "planning_time_limit",
@@ -210,6 +213,7 @@ _SETTING_OPTIONS = {
     "seed": "seed",
     "strategy": "strategy",
     "lanes": "lanes",
+    "road_map": "map",
     "road_speed": "road-speed",
     "dialect": "dialect",
     "encoding": "encoding",

@@ -120,7 +120,7 @@ def main(argv: list[str] | None = None) -> int:
         metavar="VEHICLE=MODULE:CLASS",
         help="with an .osc file: " + DRIVER_HELP,
     )
-    _run_flags(replay, ("dialect",), "with an .osc file: ")
+    _run_flags(replay, ("dialect", "map"), "with an .osc file: ")
     _run_flags(replay, RUN_FLAGS, "with an .osc file: ")
     replay.add_argument("--out", type=Path, default=Path("out"), help="artifact directory (default out/)")
     _allow_read(replay)
@@ -130,7 +130,7 @@ def main(argv: list[str] | None = None) -> int:
         "--syntax-only", action="store_true", help="stop after parsing (for files written for other tools)"
     )
     check.add_argument("--lanes", type=_flag(lane_count), default=None, help=LANES_HELP)
-    _run_flags(check, ("dialect",))
+    _run_flags(check, ("dialect", "map"))
     _allow_read(check)
     automaton = _scenario_command(
         commands, "automaton", "write a scenario's symbolic automaton as Graphviz DOT (and PNG when dot is installed)"
@@ -312,7 +312,7 @@ def _scenario_command(commands, name: str, help: str) -> argparse.ArgumentParser
     command.add_argument("file", type=Path, help="an .osc file")
     command.add_argument("--scenario", help="the scenario when the file declares several (default: the first)")
     command.add_argument("--lanes", type=_flag(lane_count), default=None, help=LANES_HELP)
-    _run_flags(command, ("dialect",))
+    _run_flags(command, ("dialect", "map"))
     _allow_read(command)
     return command
 
@@ -411,7 +411,12 @@ def osc_files(paths: list[Path], recursive: bool = True) -> list[Path]:
 
 
 def checked_report(
-    path: Path, syntax_only: bool = False, lanes: int | None = None, dialect: str | None = None, roots=None
+    path: Path,
+    syntax_only: bool = False,
+    lanes: int | None = None,
+    dialect: str | None = None,
+    roots=None,
+    road_map: str | None = None,
 ) -> tuple[bool, str]:
     """Whether the file is free of errors, and the formatted report; never raises for bad input.
 
@@ -426,7 +431,7 @@ def checked_report(
         if syntax_only:
             parse_file(path)
             return True, ""
-        checked = check(path, lanes, dialect=dialect, roots=roots)
+        checked = check(path, lanes, dialect=dialect, roots=roots, road_map=road_map)
         reports = [checked.report()] if checked.diagnostics else []
         ok = not checked.errors
         for scenario in checked.scenarios if ok else ():
@@ -455,7 +460,9 @@ def _check(args: argparse.Namespace) -> int:
     files = osc_files(args.paths)
     failed = 0
     for path in files:
-        ok, report = checked_report(path, args.syntax_only, args.lanes, args.setting_dialect, _roots(args, path))
+        ok, report = checked_report(
+            path, args.syntax_only, args.lanes, args.setting_dialect, _roots(args, path), args.setting_map
+        )
         if report:
             print(report)
         if not ok:
@@ -467,7 +474,9 @@ def _check(args: argparse.Namespace) -> int:
 def _load(args: argparse.Namespace):
     from .pipeline import load_scenario
 
-    return load_scenario(args.file, args.scenario, args.lanes, args.setting_dialect, _roots(args, args.file))
+    return load_scenario(
+        args.file, args.scenario, args.lanes, args.setting_dialect, _roots(args, args.file), args.setting_map
+    )
 
 
 def _load_automaton(args: argparse.Namespace):
@@ -600,7 +609,7 @@ def _replay(args: argparse.Namespace) -> int:
 
             roots = _roots(args, args.case)
             name = (
-                load_file(args.case, args.lanes, dialect=args.setting_dialect, roots=roots)
+                load_file(args.case, args.lanes, dialect=args.setting_dialect, roots=roots, road_map=args.setting_map)
                 .scenario_to_run(args.scenario)
                 .name
             )

@@ -46,15 +46,21 @@ class SimulatedInstance:
 
 
 def load_scenario(
-    path: str | Path, name: str | None = None, lanes: int | None = None, dialect: str | None = None, roots=None
+    path: str | Path,
+    name: str | None = None,
+    lanes: int | None = None,
+    dialect: str | None = None,
+    roots=None,
+    road_map: str | Path | None = None,
 ) -> CheckedScenario:
     """A checked scenario of ``path`` (the first one with a behavior unless ``name`` is given).
 
     ``lanes`` overrides the road's lane count, which otherwise comes from the scenario; ``dialect``
     (``settings.DIALECTS``) says how the file is read; ``roots`` (``confinement.ReadRoots``) where
-    its imports may be read from (default: the project's root and the file's folder).
+    its imports may be read from (default: the project's root and the file's folder); ``road_map``
+    an OpenDRIVE file to run on instead of the one the scenario's ``set_map`` names.
     """
-    return load_file(path, lanes, dialect=dialect, roots=roots).scenario_to_run(name)
+    return load_file(path, lanes, dialect=dialect, roots=roots, road_map=road_map).scenario_to_run(name)
 
 
 def run_scenario(
@@ -128,6 +134,8 @@ def run_instances(
             seconds["planning"] += time.perf_counter() - start
             if plan is None:
                 break
+            if scenario.route is not None:
+                plan = dataclasses.replace(plan, route=scenario.route)
             start = time.perf_counter()
             react = _reactive(plan, guide, settings, seed, dut, under_test)
             simulation = simulator.simulate(plan, limits, drivers, **({"react": react} if react else {}))
@@ -175,7 +183,14 @@ def guided_planning(
     with thinner margins must solve for the value itself, not for the first planner's moved one:
     emit_wait_brake's change_speed of 7.8 s (its range 4..8 s, but it must equal the 0.5-1.5 s wait
     plus the 3-5 s lane change) was moved to 6.5-7.5 s, where a plan at 6.5 s exists, and reported
-    as a value the scenario meets (measured before this)."""
+    as a value the scenario meets (measured before this).
+
+    On a map, no vehicle is planned faster than the route's sharpest curve lets a car hold
+    (``roads.curve_speed``)."""
+    if scenario.route is not None and hasattr(settings, "max_speed"):
+        from .roads.route import curve_speed
+
+        settings = dataclasses.replace(settings, max_speed=min(settings.max_speed, curve_speed(scenario.route)))
     if not values:
         return (lambda planner_settings: specification), settings, seed
     guides: dict[tuple, SymbolicAutomaton] = {}

@@ -198,8 +198,13 @@ class OscFile(pytest.File):
             dialect = self.ihook.pytest_roadlogic_dialect(config=self.config, path=self.path)
             if dialect is not None and dialect != settings.dialect:
                 settings = replace(settings, dialect=parse_dialect(dialect))
+            road_map = settings.road_map and Path(self.config.rootpath, settings.road_map)
             checked = check_file(
-                self.path, settings.lanes, dialect=settings.dialect, roots=read_roots(self.config, self.path)
+                self.path,
+                settings.lanes,
+                dialect=settings.dialect,
+                roots=read_roots(self.config, self.path),
+                road_map=road_map,
             )
             checked.raise_for_errors()
         except OscError as error:

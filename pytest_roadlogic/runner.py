@@ -310,7 +310,9 @@ def replay(
     ``roots`` (``confinement.ReadRoots``): where the scenario's imports may be read from."""
     from .frontend import load_file
 
-    scenario = load_file(case.path, case.lanes, dialect=case.dialect, roots=roots).scenario(case.scenario)
+    scenario = load_file(case.path, case.lanes, dialect=case.dialect, roots=roots, road_map=case.road_map).scenario(
+        case.scenario
+    )
     return Runner(scenario, case.settings(), drivers, simulator).run_case(case)
 
 

@@ -100,6 +100,16 @@ def or_none(parse: Callable[[str], Any]) -> Callable[[str | None], Any]:
 
 
 lane_count = whole_number(1, "a lane count")
+
+
+def map_file(text: str) -> str:
+    """An OpenDRIVE file's path (read when a scenario is checked, inside the folders the tool reads)."""
+    if not str(text).strip().lower().endswith(".xodr"):
+        raise OptionError(f"{text!r} is not an OpenDRIVE file; give a path ending in .xodr, e.g. maps/highway.xodr")
+    return str(text).strip()
+
+
+map_file_or_none = or_none(map_file)  # a map, or each scenario's own road
 lanes_or_none = or_none(lane_count)  # a lane count, or each scenario's own road
 # an hour of scenario time in steps of 1 s: far past a driving scenario (the realistic suite's
 # longest is a minute), and a bound on what planning grounds (--horizon 2000000 with a 1e6 s
@@ -254,6 +264,15 @@ OPTIONS = (
     ),
     Option("lanes", "lanes", lanes_or_none, None, "lanes of the road for every scenario", "each scenario's own"),
     Option(
+        "map",
+        "road_map",
+        map_file_or_none,
+        None,
+        "an OpenDRIVE file every scenario runs on, on the route of it that fits the scenario (inside the folders the "
+        "tool reads)",
+        "each scenario's set_map, else one straight road",
+    ),
+    Option(
         "road-speed",
         "road_speed",
         speed_band,
@@ -356,6 +375,7 @@ class RunSettings:
     tries: int = 5
     no_plan: str = FAIL
     lanes: int | None = None
+    road_map: str | None = None  # an OpenDRIVE file every scenario runs on (the map option)
     road_speed: tuple[float, float] = ROAD_SPEED  # m/s (the road-speed option)
     dialect: str = STANDARD_DIALECT
     encoding: str = CONTINUOUS

@@ -43,12 +43,13 @@ def commonroad_scenario(simulation: Simulation):
     shape = RectObstacleShape(width=CAR_WIDTH, length=CAR_LENGTH)
     problems = PlanningProblemSet()
     road, dt = simulation.road, simulation.dt
+    x, y, heading = ("world_x", "world_y", "world_heading") if trace.on_map else ("x", "y", "heading")
     for index, (vehicle, columns) in enumerate(trace.actors.items()):
         states = [
             CustomState(
                 time_step=k,
-                position=np.array([columns["x"][k], columns["y"][k]]),
-                orientation=float(columns["heading"][k]),
+                position=np.array([columns[x][k], columns[y][k]]),
+                orientation=float(columns[heading][k]),
                 velocity=float(columns["speed"][k]),
                 acceleration=float(columns["acceleration"][k]),
             )
@@ -70,19 +71,19 @@ def commonroad_scenario(simulation: Simulation):
         scenario.add_objects(DynamicObstacle(FIRST_OBSTACLE_ID + index, ObstacleType.CAR, shape, initial, prediction))
         start = initial
         for k, goal in enumerate(simulation.references[vehicle].waypoints):
+            # on a map, in its coordinates, turned as the route is there (on the straight road: unchanged)
+            gx, gy, along = (float(v) for v in road.world(goal.position, road.center_y(goal.lane)))
             goal_state = CustomState(
                 time_step=Interval(max(0, math.ceil(goal.earliest / dt - 1e-9)), math.floor(goal.latest / dt + 1e-9)),
-                position=RectOccupancy(
-                    shapely.Point(goal.position, road.center_y(goal.lane)), road.lane_width, 2 * goal.reach, 0.0
-                ),
-                orientation=AngleInterval(-0.3, 0.3),
+                position=RectOccupancy(shapely.Point(gx, gy), road.lane_width, 2 * goal.reach, along),
+                orientation=AngleInterval(along - 0.3, along + 0.3),
             )
             problem_id = FIRST_PROBLEM_ID + 100 * index + k
             problems.add_planning_problem(PlanningProblem(problem_id, start, GoalRegion([goal_state])))
             start = InitialState(
                 time_step=int(round(goal.time / dt)),
-                position=np.array([goal.position, road.center_y(goal.lane)]),
-                orientation=0.0,
+                position=np.array([gx, gy]),
+                orientation=along,
                 velocity=goal.speed,
                 acceleration=0.0,
                 yaw_rate=0.0,

@@ -20,6 +20,7 @@ import datetime
 import math
 from pathlib import Path
 
+from ..roads.opendrive_out import opendrive_xml
 from ..simulation.geometry import CAR_LENGTH, CAR_WIDTH, WHEELBASE
 from ..simulation.interface import Simulation
 from .files import replaced
@@ -47,6 +48,7 @@ def road_opendrive(simulation: Simulation):
         center_road_mark=marks,
     )
     opendrive_road.planview.set_start_point(road.x_start, road.width, 0.0)
+    opendrive_road.add_elevation(0.0, 0.0, 0.0, 0.0, 0.0)  # OpenDRIVE requires one in an elevationProfile
     opendrive = xodr.OpenDrive("pytest-roadlogic straight road")
     opendrive.add_road(opendrive_road)
     opendrive.adjust_roads_and_lanes()
@@ -71,7 +73,15 @@ def openscenario(simulation: Simulation, name: str = "roadlogic", road_file: str
         "at start", 0, xosc.ConditionEdge.none, xosc.SimulationTimeCondition(0, xosc.Rule.greaterOrEqual)
     )
     act = xosc.Act("drive", act_start)
+    on_map = trace.on_map
     for vehicle, columns in trace.actors.items():
+        if on_map:  # the poses in the map's coordinates
+            columns = {
+                "x": columns["world_x"],
+                "y": columns["world_y"],
+                "heading": columns["world_heading"],
+                **{k: v for k, v in columns.items() if k in ("speed",)},
+            }
         box = xosc.BoundingBox(CAR_WIDTH, CAR_LENGTH, CAR_HEIGHT, WHEELBASE / 2, 0.0, CAR_HEIGHT / 2)
         front = xosc.Axle(0.6, 0.65, 1.6, WHEELBASE, 0.325)
         rear = xosc.Axle(0.0, 0.65, 1.6, 0.0, 0.325)
@@ -145,7 +155,10 @@ def write_openscenario(simulation: Simulation, directory: str | Path, name: str 
     directory = Path(directory)
     scenario_path, road_path = openscenario_paths(directory)
     with replaced(road_path) as temporary:
-        road_opendrive(simulation).write_xml(str(temporary))
+        route = simulation.road.route
+        # on a map, the map itself, as it was read
+        opendrive = route.opendrive if route is not None else opendrive_xml(road_opendrive(simulation))
+        Path(temporary).write_bytes(opendrive)
     with replaced(scenario_path) as temporary:
         openscenario(simulation, name).write_xml(str(temporary))
     return scenario_path, road_path

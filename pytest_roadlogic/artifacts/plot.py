@@ -14,6 +14,45 @@ from .files import replaced
 COLOURS = ("tab:purple", "tab:red", "tab:blue", "tab:green", "tab:orange", "tab:brown")
 
 
+def _top_on_map(top, simulation: Simulation, x_min: float, x_max: float, run_indices, lane_number) -> None:
+    """The view from above on a map, in its coordinates: the route's lane lines between ``x_min``
+    and ``x_max`` (road coordinates), every vehicle's path and its box at the guards' instants."""
+    import numpy as np
+    from matplotlib.patches import Rectangle
+
+    trace, road = simulation.trace, simulation.road
+    xs = np.linspace(x_min, x_max, 400)
+    for boundary in range(road.lanes + 1):
+        wx, wy, _ = road.world(xs, np.full_like(xs, boundary * road.lane_width))
+        style = "-" if boundary in (0, road.lanes) else "--"
+        top.plot(wx, wy, style, color="grey", linewidth=0.8)
+    for lane in range(road.lanes):
+        number = lane_number(lane) if lane_number is not None else road.lanes - lane
+        wx, wy, _ = road.world(x_min + 1, road.center_y(lane))
+        top.text(float(wx), float(wy), f"lane {number}", va="center", fontsize=7, color="grey")
+    for index, (name, columns) in enumerate(trace.actors.items()):
+        colour = COLOURS[index % len(COLOURS)]
+        top.plot(columns["world_x"], columns["world_y"], color=colour, linewidth=1.2, label=name)
+        top.text(columns["world_x"][-1], columns["world_y"][-1] + 2, name, color=colour, fontsize=9, weight="bold")
+        for k, _ in run_indices:
+            x, y, heading = columns["world_x"][k], columns["world_y"][k], columns["world_heading"][k]
+            top.add_patch(
+                Rectangle(
+                    (x - CAR_LENGTH / 2, y - CAR_WIDTH / 2),
+                    CAR_LENGTH,
+                    CAR_WIDTH,
+                    angle=float(heading) * 57.2958,
+                    rotation_point="center",
+                    facecolor=colour,
+                    alpha=0.35,
+                    edgecolor=colour,
+                )
+            )
+    top.set_aspect("equal")
+    top.set_xlabel("map x [m]")
+    top.set_ylabel(f"map y [m] ({road.route.name})")
+
+
 def plot_simulation(
     simulation: Simulation, verdict: Verdict, path: str | Path, title: str = "", lane_number=None
 ) -> Path:
@@ -26,21 +65,28 @@ def plot_simulation(
     from matplotlib.patches import Rectangle
 
     trace, road = simulation.trace, simulation.road
-    figure, (top, bottom) = plt.subplots(2, 1, figsize=(12, 7), gridspec_kw={"height_ratios": [1, 1.4]})
+    on_map = road.route is not None and trace.on_map
+    figure, (top, bottom) = plt.subplots(
+        2, 1, figsize=(12, 10 if on_map else 7), gridspec_kw={"height_ratios": [2.2 if on_map else 1, 1.4]}
+    )
     x_min = min(float(c["x"].min()) for c in trace.actors.values()) - 10
     x_max = max(float(c["x"].max()) for c in trace.actors.values()) + 10
-    for boundary in range(road.lanes + 1):
+    run_indices = [(int(round(t / simulation.dt)), events) for t, events in verdict.run]
+    if on_map:
+        _top_on_map(top, simulation, x_min, x_max, run_indices, lane_number)
+    for boundary in range(road.lanes + 1 if not on_map else 0):
         style = "-" if boundary in (0, road.lanes) else "--"
         top.plot([x_min, x_max], [boundary * road.lane_width] * 2, style, color="grey", linewidth=0.8)
-    for lane in range(road.lanes):
+    for lane in range(road.lanes if not on_map else 0):
         number = lane_number(lane) if lane_number is not None else road.lanes - lane
         top.text(x_min + 1, road.center_y(lane), f"lane {number}", va="center", fontsize=7, color="grey")
-    run_indices = [(int(round(t / simulation.dt)), events) for t, events in verdict.run]
     for index, (name, columns) in enumerate(trace.actors.items()):
         colour = COLOURS[index % len(COLOURS)]
+        bottom.plot(trace.times, columns["x"], color=colour, label=name)
+        if on_map:
+            continue
         top.plot(columns["x"], columns["y"], color=colour, linewidth=1.2, label=name)
         top.text(columns["x"][-1], columns["y"][-1] + 0.6, name, color=colour, fontsize=9, weight="bold")
-        bottom.plot(trace.times, columns["x"], color=colour, label=name)
         for k, _ in run_indices:
             x, y, heading = columns["x"][k], columns["y"][k], columns["heading"][k]
             top.add_patch(
@@ -59,14 +105,16 @@ def plot_simulation(
         time = trace.times[k]
         bottom.axvline(time, color="black", linewidth=0.6, linestyle=":")
         bottom.text(time, bottom.get_ylim()[1], f" {number}: {events}", rotation=90, va="top", fontsize=7)
-        x_lead = max(float(c["x"][k]) for c in trace.actors.values())
-        top.text(x_lead + 3, road.width + 0.4, str(number), fontsize=8, ha="center")
+        if not on_map:
+            x_lead = max(float(c["x"][k]) for c in trace.actors.values())
+            top.text(x_lead + 3, road.width + 0.4, str(number), fontsize=8, ha="center")
     for incident in verdict.incidents:
         bottom.axvline(incident.time, color="red", linewidth=1.0)
-    top.set_xlim(x_min, x_max)
-    top.set_ylim(-0.5, road.width + 1.5)
-    top.set_aspect("auto")
-    top.set_ylabel("y [m]")
+    if not on_map:
+        top.set_xlim(x_min, x_max)
+        top.set_ylim(-0.5, road.width + 1.5)
+        top.set_aspect("auto")
+        top.set_ylabel("y [m]")
     top.legend(loc="lower right", fontsize=8)
     bottom.set_xlabel("time [s]")
     bottom.set_ylabel("x [m]")

@@ -47,6 +47,9 @@ class CheckedScenario:
     sources: dict[str, str] = field(default_factory=dict, compare=False, repr=False)  # path -> text, for error reports
     # its logical parameters, each once (``frontend.logical``): what is sampled, planned and reported
     parameters: tuple[LogicalParameter, ...] = field(default=(), compare=False)
+    # the road it runs on when it runs on a map (``roads.Route``: set_map or the map option); None:
+    # the straight road of ``lanes`` lanes
+    route: object = field(default=None, compare=False)
 
     @property
     def name(self) -> str:

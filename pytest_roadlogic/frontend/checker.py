@@ -44,6 +44,7 @@ def check_file(
     registry: Registry | None = None,
     dialect: str | None = None,
     roots: ReadRoots | None = None,
+    road_map: str | Path | None = None,
 ) -> CheckedFile:
     """Parse and check ``path`` and the files it imports. Syntax errors raise ``OscError``.
 
@@ -51,9 +52,11 @@ def check_file(
     ``registry`` holds the actions and modifiers the file may use (default: those of ``dialect``,
     the standard's unless it names another of ``constructs.DIALECTS``). ``roots``: the folders an
     import may read from (default: the project's root and ``path``'s folder); an import outside
-    them is an error at the import, and the file is never opened.
+    them is an error at the import, and the file is never opened. ``road_map``: an OpenDRIVE file
+    every scenario runs on (the map option), instead of the one its ``set_map`` names.
     """
     checker = _Checker(lanes, registry, dialect, roots or ReadRoots.around(path))
+    checker.requested_map = Path(road_map) if road_map else None
     main, checker.units = parse_with_declared_units(path, checker.roots)
     return checker.run(main)
 
@@ -88,9 +91,10 @@ def load_file(
     registry: Registry | None = None,
     dialect: str | None = None,
     roots: ReadRoots | None = None,
+    road_map: str | Path | None = None,
 ) -> CheckedFile:
     """``check_file`` that raises ``OscError`` when the file has errors (warnings pass)."""
-    checked = check_file(path, lanes, registry, dialect, roots)
+    checked = check_file(path, lanes, registry, dialect, roots, road_map)
     checked.raise_for_errors()
     return checked
 
@@ -149,6 +153,9 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks):
         self.roots = roots or ReadRoots.of(project_root())
         self.registry = registry if registry is not None else dialect_registry(dialect or STANDARD_DIALECT)
         self.requested_lanes = lanes
+        self.requested_map: Path | None = None  # the map option's file, which wins over a scenario's set_map
+        self.route = None  # the route of the scenario being checked on its map (roads.Route), None: the straight road
+        self.map_asked = None  # (the map file a scenario's set_map names, where) while it is checked
         # The road of the scenario being checked, and why it has that many lanes (for error messages).
         self.lanes = lanes or DEFAULT_LANES
         self.lanes_origin = ""
@@ -258,7 +265,9 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks):
                 parameters = logical_parameters_of(checked, space, self.registry)
             except OscError:
                 parameters = ()  # a scenario with errors is reported, never sampled: the checker said why
-            scenarios.append(CheckedScenario(checked, space, lanes, self.registry, self.sources, parameters))
+            scenarios.append(
+                CheckedScenario(checked, space, lanes, self.registry, self.sources, parameters, self.route)
+            )
         self.diagnostics = list(dict.fromkeys(self.diagnostics))
         self.diagnostics.sort(
             key=lambda d: (d.location.path != main.path, d.location.path, d.location.line, d.location.column)

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 from ..settings import STANDARD_DIALECT
 from . import library, model
@@ -31,8 +32,14 @@ class RoadLanes:
         ``path_min_driving_lanes``, at least its highest lane number or lane change plus one, and at most
         its ``path_max_lanes``, so that a file states its road and runs the same from every entry point.
         """
+        self.route, self.map_asked = None, None
         bounds = self._road_bounds(scenario, env, roads)
         least, most = bounds.get("path_min_driving_lanes"), bounds.get("path_max_lanes")
+        if self.requested_map is not None:  # the map option wins over the file's set_map
+            self.map_asked = (self.requested_map, None)
+        if self.map_asked is not None:
+            used, where = self._lanes_used(scenario, env)
+            return self._lanes_of_map(scenario, max(least[0] if least else 1, used), most, where)
         if least and most and least[0] > most[0]:
             self.error(
                 most[1],
@@ -75,6 +82,51 @@ class RoadLanes:
         self.lanes = lanes
         return lanes
 
+    def _lanes_of_map(
+        self,
+        scenario: model.Scenario,
+        needed: int,
+        most: tuple[int, SourceLocation] | None,
+        where: SourceLocation,
+    ) -> int:
+        """The lanes of the route the scenario runs on in the map it asked for (``self.map_asked``):
+        the map's road that has the ``needed`` lanes; an error at ``set_map`` (or at the scenario,
+        for the map option) saying why no road fits, or why the map cannot be read."""
+        from ..roads.opendrive_in import MapError, read_map
+        from ..roads.route import pick_route
+
+        path, location = self.map_asked
+        at = location or scenario.location
+        origin = "" if location is not None else " (the map option)"
+        if not self.roots.allows(path):
+            self.error(
+                at,
+                f"the map {str(path)!r} is outside the folders the tool reads ({self.roots.describe()})",
+                "put the map inside the project, or name its folder with --allow-read",
+            )
+            return self.lanes
+        try:
+            self.route = pick_route(read_map(path), needed)
+        except MapError as error:
+            where_in_map = f"{error.path}:{error.line}:{error.column}: " if error.line else f"{error.path}: "
+            self.error(at, f"the map{origin}: {where_in_map}{error.message}", error.hint or None)
+            return self.lanes
+        lanes = self.route.lanes
+        if most and lanes > most[0]:
+            self.error(
+                most[1],
+                f"the route on {self.route.name} has {lanes} driving lanes, more than path_max_lanes({most[0]})",
+                "leave out path_max_lanes, or give a map whose road has that many lanes",
+            )
+        if self.requested_lanes is not None and self.requested_lanes != lanes:
+            self.error(
+                at,
+                f"the lanes option sets {self.requested_lanes} lanes, but the route on {self.route.name} has {lanes}",
+                "leave out the lanes option with a map: the map gives the lanes",
+            )
+        self.lanes, self.lanes_origin = lanes, f" (the route on {self.route.name})"
+        return lanes
+
     def _road_bounds(
         self, scenario: model.Scenario, env: dict, roads: list[str]
     ) -> dict[str, tuple[int, SourceLocation]]:
@@ -109,7 +161,14 @@ class RoadLanes:
                 signature, modifier.arguments, modifier.location, scenario, env, set(), set(), what=f"{modifier.name}()"
             )
             if modifier.name == "set_map":
-                hint = "give the road's lanes with path_min_driving_lanes(n)"
+                argument = binding["map"]
+                name = (
+                    argument.value.value if argument is not None and isinstance(argument.value, model.Literal) else ""
+                )
+                if isinstance(name, str) and name.lower().endswith(".xodr"):
+                    self.map_asked = (Path(modifier.location.path).parent / name, modifier.location)
+                    continue
+                hint = 'give an OpenDRIVE file (set_map("road.xodr"), relative to this file), or the road\'s lanes with path_min_driving_lanes(n)'
                 if self.registry.dialect == STANDARD_DIALECT:
                     hint += "; a file written for CARLA's scenario runner is read with --dialect carla (pytest: --roadlogic-dialect carla or roadlogic_dialect = carla): lanes numbered from the left, speed(v) a target"
                 self.warning(

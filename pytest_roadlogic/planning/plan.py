@@ -38,6 +38,9 @@ class Plan:
     stats: dict[str, float] = field(default_factory=dict)
     # vehicles that never move (stationary objects): simulated as standing obstacles
     stationary: tuple[str, ...] = ()
+    # the route of a map it is driven on (roads.Route, set by the pipeline from the scenario); None:
+    # the straight road
+    route: object = field(default=None, compare=False, repr=False)
 
     @property
     def horizon(self) -> int:

@@ -8,6 +8,7 @@ A backend built on per-vehicle drivers (the frenetix one) runs this loop with it
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import time as clock
 from collections.abc import Callable
@@ -83,6 +84,8 @@ def drive_in_lockstep(
     refs = references(plan, Road(lanes))
     # a replan may lengthen the run: room for about ten more seconds at highway speed
     road = _road_around(refs, lanes, 60.0 if react is None else 400.0)
+    if plan.route is not None:  # on a map: the route's start where the road starts
+        road = dataclasses.replace(road, route=plan.route, route_shift=-road.x_start)
     active: dict[str, Driver] = {}
     for vehicle, reference in refs.items():
         if vehicle in plan.stationary:
@@ -157,6 +160,9 @@ def drive_in_lockstep(
         record(k)
     for v in columns:
         columns[v]["lane"] = columns[v]["lane"].astype(int)
+        if road.route is not None:
+            col = columns[v]
+            col["world_x"], col["world_y"], col["world_heading"] = road.world(col["x"], col["y"], col["heading"])
     trace = Trace(np.round(np.arange(steps + 1) * dt, 6), columns, _merge(incidents))
     fallbacks = {v: getattr(d, "fallbacks", 0) for v, d in active.items()}
     for sequence in goals.values():

@@ -1,6 +1,10 @@
-"""The road: one straight highway, all lanes in one direction along +x.
+"""The road: all lanes in one direction along +x, in road coordinates.
 
 Lane 0 is the leftmost (largest y), lane ``lanes - 1`` the rightmost; the right road edge is y = 0.
+On the straight road these are the world's coordinates too. On a map (``route``: a
+``roads.Route``) x is the length along the route's reference line less ``route_shift`` (the
+route's length at which the plan's position 0 lies) and y the metres left of its lanes' right edge;
+``world`` maps them to the map's coordinates.
 """
 
 from __future__ import annotations
@@ -19,6 +23,8 @@ class Road:
     x_start: float = -200.0
     x_end: float = 400.0
     lane_width: float = LANE_WIDTH
+    route: object = None  # roads.Route, None: the straight road
+    route_shift: float = 0.0  # m along the route of x = 0
 
     @property
     def width(self) -> float:
@@ -36,17 +42,33 @@ class Road:
         ys = corners[:, 1]
         return bool(ys.min() >= -0.05 and ys.max() <= self.width + 0.05)
 
+    def world(self, x, y, heading=0.0) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """World x, y and heading of road coordinates (on the straight road, the same)."""
+        if self.route is None:
+            x, y = np.asarray(x, dtype=float), np.asarray(y, dtype=float)
+            return x, y, np.asarray(heading, dtype=float) + 0.0 * x
+        wx, wy, wh = self.route.pose(np.asarray(x, dtype=float) + self.route_shift, y)
+        return wx, wy, wh + heading
+
     def lanelet_network(self):
-        """The road as a CommonRoad lanelet network: one lanelet per lane, adjacent same-direction."""
+        """The road as a CommonRoad lanelet network: one lanelet per lane, adjacent same-direction
+        (on a map, in its coordinates: each lane's lines every 2 m along the route)."""
         from commonroad.scenario.lanelet import Lanelet, LaneletNetwork, LaneletType, LineMarking
 
         network = LaneletNetwork()
-        xs = np.linspace(self.x_start, self.x_end, 2)
+        if self.route is None:
+            xs = np.linspace(self.x_start, self.x_end, 2)
+        else:
+            xs = np.linspace(self.x_start, self.x_end, max(2, int((self.x_end - self.x_start) / 2.0) + 1))
+
+        def line(y: float) -> np.ndarray:
+            wx, wy, _ = self.world(xs, np.full_like(xs, y))
+            return np.stack([wx, wy], axis=1)
+
         for lane in range(self.lanes):
             top = (self.lanes - lane) * self.lane_width
             bottom = top - self.lane_width
-            left = np.stack([xs, np.full_like(xs, top)], axis=1)
-            right = np.stack([xs, np.full_like(xs, bottom)], axis=1)
+            left, right = line(top), line(bottom)
             center = (left + right) / 2
             network.add_lanelet(
                 Lanelet(

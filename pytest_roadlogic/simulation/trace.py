@@ -9,6 +9,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 COLUMNS = ("x", "y", "heading", "speed", "acceleration", "lane")
+# on a map, every sample's pose in the map's coordinates too (x, y, heading above being the road's)
+WORLD_COLUMNS = ("world_x", "world_y", "world_heading")
 
 
 @dataclass(frozen=True)
@@ -59,14 +61,20 @@ class Trace:
     def snapshots(self) -> list[dict[str, ActorSnapshot]]:
         return [self.snapshot(k) for k in range(len(self))]
 
+    @property
+    def on_map(self) -> bool:
+        """Whether it carries world poses (a run on a map)."""
+        return any(WORLD_COLUMNS[0] in c for c in self.actors.values())
+
     def to_csv(self) -> str:
         out = io.StringIO()
         writer = csv.writer(out, lineterminator="\n")
-        writer.writerow(["time", "actor", *COLUMNS])
+        columns = COLUMNS + (WORLD_COLUMNS if self.on_map else ())
+        writer.writerow(["time", "actor", *columns])
         for k, t in enumerate(self.times):
             for name, c in self.actors.items():
                 row = [f"{t:.2f}", name]
-                row += [f"{c[col][k]:.4f}" if col != "lane" else str(int(c[col][k])) for col in COLUMNS]
+                row += [f"{c[col][k]:.4f}" if col != "lane" else str(int(c[col][k])) for col in columns]
                 writer.writerow(row)
         return out.getvalue()
 
@@ -76,10 +84,11 @@ class Trace:
         times = sorted({float(r["time"]) for r in rows})
         index = {t: i for i, t in enumerate(times)}
         names = list(dict.fromkeys(r["actor"] for r in rows))
-        actors = {n: {c: np.zeros(len(times)) for c in COLUMNS} for n in names}
+        columns = COLUMNS + (WORLD_COLUMNS if rows and WORLD_COLUMNS[0] in rows[0] else ())
+        actors = {n: {c: np.zeros(len(times)) for c in columns} for n in names}
         for r in rows:
             k = index[float(r["time"])]
-            for c in COLUMNS:
+            for c in columns:
                 actors[r["actor"]][c][k] = float(r[c])
         for n in names:
             actors[n]["lane"] = actors[n]["lane"].astype(int)

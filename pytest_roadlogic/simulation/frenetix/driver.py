@@ -15,22 +15,40 @@ from ..geometry import CAR_LENGTH, CAR_WIDTH, WHEELBASE
 from ..reference import Reference
 from ..road import Road
 
-_COORDINATE_SYSTEMS: dict[tuple[float, float], object] = {}
+_COORDINATE_SYSTEMS: dict[tuple, object] = {}
 
 
 def _coordinate_system(road: Road):
-    """The straight reference line y = 0 (the right road edge), shared by all drivers of a road.
+    """The frame the drivers of a road sample in: (frenetix's coordinate system, the frame's s at
+    x = 0 negated, its d at y = 0 negated).
 
-    Building one costs tens of milliseconds, so it is built once per road extent.
+    On the straight road, the line y = 0 (the right road edge), d being y. On a map, the route's
+    reference line (its lanes' left edge), sampled every metre and run on straight 100 m before its
+    start and 200 m past its end, d being y less the lanes' width. Building one costs tens of
+    milliseconds, so it is built once per road extent.
     """
     import frenetix
 
-    key = (road.x_start, road.x_end)
+    key = (road.x_start, road.x_end, id(road.route), road.route_shift)
     if key not in _COORDINATE_SYSTEMS:
-        xs = np.arange(road.x_start - 100.0, road.x_end + 200.0, 1.0)
-        path = np.stack([xs, np.zeros_like(xs)], axis=1)
         _COORDINATE_SYSTEMS.clear()
-        _COORDINATE_SYSTEMS[key] = (frenetix.CoordinateSystemWrapper(path), float(xs[0]))
+        if road.route is None:
+            xs = np.arange(road.x_start - 100.0, road.x_end + 200.0, 1.0)
+            path = np.stack([xs, np.zeros_like(xs)], axis=1)
+            _COORDINATE_SYSTEMS[key] = (frenetix.CoordinateSystemWrapper(path), float(xs[0]), 0.0)
+        else:
+            route = road.route
+            before, after = 100.0, 200.0
+            s = np.arange(-before, route.length + after + 0.5, 1.0)
+            inside = np.clip(s, 0.0, route.length)
+            x, y, heading = route.reference_line.pose(inside)
+            x, y = x + np.cos(heading) * (s - inside), y + np.sin(heading) * (s - inside)
+            path = np.stack([x, y], axis=1)
+            _COORDINATE_SYSTEMS[key] = (
+                frenetix.CoordinateSystemWrapper(path),
+                -(road.route_shift + before),
+                route.width,
+            )
     return _COORDINATE_SYSTEMS[key]
 
 
@@ -93,7 +111,7 @@ class FrenetixDriver:
         self.reference = reference
         self.road = road
         self.dt = dt
-        self.coordinates, self.s_origin = _coordinate_system(road)
+        self.coordinates, self.s_origin, self.d_origin = _coordinate_system(road)
         handler = frenetix.TrajectoryHandler(dt=dt)
         handler.add_feasability_function(
             ff.CheckYawRateConstraint(deltaMax=0.4, wheelbase=WHEELBASE, wholeTrajectory=False)
@@ -150,10 +168,14 @@ class FrenetixDriver:
             return onward
         self._committed = None
         low = bool(state.speed < self.low_velocity)
-        cos_h, sin_h = np.cos(state.heading), np.sin(state.heading)
-        rear = np.array([state.x - cos_h * WHEELBASE / 2, state.y - sin_h * WHEELBASE / 2])
+        if self.road.route is None:
+            x, y, heading = state.x, state.y, state.heading
+        else:
+            x, y, heading = (float(v) for v in self.road.world(state.x, state.y, state.heading))
+        cos_h, sin_h = np.cos(heading), np.sin(heading)
+        rear = np.array([x - cos_h * WHEELBASE / 2, y - sin_h * WHEELBASE / 2])
         cartesian = frenetix.CartesianPlannerState(
-            rear, float(state.heading), float(state.speed), float(state.acceleration), 0.0
+            rear, float(heading), float(state.speed), float(state.acceleration), 0.0
         )
         initial = frenetix.compute_initial_state(
             coordinate_system=self.coordinates, x_0=cartesian, wheelbase=WHEELBASE, low_velocity_mode=low
@@ -162,7 +184,7 @@ class FrenetixDriver:
         handler.add_function(
             tf.FillCoordinates(
                 lowVelocityMode=low,
-                initialOrientation=float(state.heading),
+                initialOrientation=float(heading),
                 coordinateSystem=self.coordinates,
                 horizon=self.horizon,
             )
@@ -178,7 +200,7 @@ class FrenetixDriver:
         times = time + np.arange(1, self.tracked_steps) * self.dt
         target = (
             self.reference.s(times) - self.s_origin - WHEELBASE / 2,
-            self.reference.d(times),
+            self.reference.d(times) - self.d_origin,
             self.reference.v(times),
         )
         costs = self._tracking_costs(
@@ -209,7 +231,7 @@ class FrenetixDriver:
         # the lateral end state is the reference's, rate and curvature too: a candidate ending
         # mid lane change at rest (d' = 0) stalled the change, each replanning again (the car
         # crossed the lane line up to 1 s late, issue 20)
-        around = self.reference.d(np.stack([ends - h, ends, ends + h], axis=1).ravel()).reshape(-1, 3)
+        around = self.reference.d(np.stack([ends - h, ends, ends + h], axis=1).ravel()).reshape(-1, 3) - self.d_origin
         d_refs = around[:, 1]
         d_rates = (around[:, 2] - around[:, 0]) / (2 * h)
         d_curves = (around[:, 2] - 2 * around[:, 1] + around[:, 0]) / h**2
@@ -226,7 +248,7 @@ class FrenetixDriver:
             # a stop at a constant deceleration: "be at 0 in 1 s", replanned every step, only ever
             # halves the speed (the car crept at 1 m/s where the scenario asked for a standstill)
             duration = max(self.dt, state.speed / self.stop_deceleration)
-            d_stop = float(self.reference.d([time + duration])[0])
+            d_stop = float(self.reference.d([time + duration])[0]) - self.d_origin
             rows.append([0.0, duration, *lon, 0.0, 0.0, *lat, d_stop, 0.0, 0.0])
         return np.array(rows, dtype=float)
 
@@ -253,6 +275,8 @@ class FrenetixDriver:
 
     def _copy(self, candidate) -> Trajectory:
         # frenetix's arrays are views into memory freed with the sample: copy before keeping
+        if self.road.route is not None:
+            return self._copy_along_route(candidate)
         heading = np.array(candidate.cartesian.theta, copy=True)
         rear_x = np.array(candidate.cartesian.x, copy=True)
         rear_y = np.array(candidate.cartesian.y, copy=True)
@@ -264,6 +288,27 @@ class FrenetixDriver:
         return Trajectory(
             x=rear_x + np.cos(heading) * WHEELBASE / 2,
             y=rear_y + np.sin(heading) * WHEELBASE / 2,
+            heading=heading,
+            speed=speed,
+            acceleration=acceleration,
+        )
+
+    def _copy_along_route(self, candidate) -> Trajectory:
+        """A candidate in road coordinates: its rear axle's s and d in the frame, its heading less
+        the route's there, the centre half a wheelbase ahead along it."""
+        s = np.array(candidate.curvilinear.s, copy=True) + self.s_origin
+        d = np.array(candidate.curvilinear.d, copy=True) + self.d_origin
+        _, _, along = self.road.world(s, d)
+        heading = np.array(candidate.cartesian.theta, copy=True) - along
+        heading = (heading + np.pi) % (2 * np.pi) - np.pi
+        speed = np.array(candidate.cartesian.v, copy=True)
+        if self.acceleration_from_speed and len(speed) > 1:
+            acceleration = np.gradient(speed, self.dt)
+        else:
+            acceleration = np.array(candidate.cartesian.a, copy=True)
+        return Trajectory(
+            x=s + np.cos(heading) * WHEELBASE / 2,
+            y=d + np.sin(heading) * WHEELBASE / 2,
             heading=heading,
             speed=speed,
             acceleration=acceleration,

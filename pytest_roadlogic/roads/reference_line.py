@@ -1,0 +1,146 @@
+"""A road's reference line (``ReferenceLine``): the plan view's geometries, from s to the world.
+
+Each geometry starts at a length ``s`` along the line, a point and a heading, and runs ``length``
+metres: a straight line, an arc of constant curvature, a spiral (clothoid: curvature changing
+linearly from ``curvature_start`` to ``curvature_end``), a cubic in local coordinates (poly3: v as
+a cubic of u) or a parametric cubic (paramPoly3: u and v each a cubic of p, p running over the
+length or over 0..1). The line and the arc are evaluated in closed form, the others by integrating
+their heading along s in steps of at most ``STEP`` metres (a clothoid's integral has no closed
+form; the error of the integration is far below a lane's centimetre at these steps).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+STEP = 0.25  # m, of the numerical integration of the curved geometries
+
+
+@dataclass(frozen=True)
+class Geometry:
+    """One plan-view record: ``kind`` one of line, arc, spiral, poly3, param_poly3, and its
+    coefficients (``curvature``; ``curvature_start``, ``curvature_end``; ``a``..``d`` of poly3;
+    ``u``, ``v`` (four each) and ``normalized`` of param_poly3)."""
+
+    s: float
+    x: float
+    y: float
+    heading: float
+    length: float
+    kind: str
+    curvature: float = 0.0
+    curvature_start: float = 0.0
+    curvature_end: float = 0.0
+    poly: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 0.0)
+    u: tuple[float, float, float, float] = (0.0, 1.0, 0.0, 0.0)
+    v: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 0.0)
+    normalized: bool = True
+
+    def sample(self, ds: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """x, y, heading and curvature at the distances ``ds`` (0..length) from its start."""
+        if self.kind == "line":
+            zeros = np.zeros_like(ds)
+            return (
+                self.x + ds * math.cos(self.heading),
+                self.y + ds * math.sin(self.heading),
+                zeros + self.heading,
+                zeros,
+            )
+        if self.kind == "arc" and self.curvature != 0.0:
+            k = self.curvature
+            heading = self.heading + k * ds
+            return (
+                self.x + (np.sin(heading) - math.sin(self.heading)) / k,
+                self.y - (np.cos(heading) - math.cos(self.heading)) / k,
+                heading,
+                np.zeros_like(ds) + k,
+            )
+        if self.kind == "arc":
+            return dataclasses.replace(self, kind="line").sample(ds)
+        return self._integrated(ds)
+
+    def _integrated(self, ds: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """The curved geometries: heading and curvature as functions of s, position integrated."""
+        n = max(2, int(math.ceil(self.length / STEP)) + 1)
+        grid = np.linspace(0.0, self.length, n)
+        if self.kind == "spiral":
+            rate = (self.curvature_end - self.curvature_start) / self.length if self.length else 0.0
+            heading = self.heading + self.curvature_start * grid + rate * grid**2 / 2
+            curvature = self.curvature_start + rate * grid
+        else:
+            heading, curvature = self._polynomial(grid)
+        # trapezoidal integration of the unit heading vector
+        cos_h, sin_h = np.cos(heading), np.sin(heading)
+        steps = np.diff(grid)
+        x = self.x + np.concatenate([[0.0], np.cumsum(steps * (cos_h[1:] + cos_h[:-1]) / 2)])
+        y = self.y + np.concatenate([[0.0], np.cumsum(steps * (sin_h[1:] + sin_h[:-1]) / 2)])
+        return (
+            np.interp(ds, grid, x),
+            np.interp(ds, grid, y),
+            np.interp(ds, grid, np.unwrap(heading)),
+            np.interp(ds, grid, curvature),
+        )
+
+    def _polynomial(self, grid: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Heading and curvature along a poly3 or paramPoly3, at arc lengths ``grid``: the curve is
+        sampled densely in its parameter, its arc length measured, and read at ``grid``."""
+        p = np.linspace(0.0, 1.0 if (self.kind == "param_poly3" and self.normalized) else self.length, 4 * len(grid))
+        if self.kind == "poly3":
+            a, b, c, d = self.poly
+            u, du, ddu = p, np.ones_like(p), np.zeros_like(p)
+            v, dv, ddv = a + b * p + c * p**2 + d * p**3, b + 2 * c * p + 3 * d * p**2, 2 * c + 6 * d * p
+        else:
+            (au, bu, cu, du_), (av, bv, cv, dv_) = self.u, self.v
+            u, du, ddu = au + bu * p + cu * p**2 + du_ * p**3, bu + 2 * cu * p + 3 * du_ * p**2, 2 * cu + 6 * du_ * p
+            v, dv, ddv = av + bv * p + cv * p**2 + dv_ * p**3, bv + 2 * cv * p + 3 * dv_ * p**2, 2 * cv + 6 * dv_ * p
+        arc = np.concatenate([[0.0], np.cumsum(np.hypot(np.diff(u), np.diff(v)))])
+        scale = self.length / arc[-1] if arc[-1] > 0 else 1.0
+        local_heading = np.unwrap(np.arctan2(dv, du))
+        speed = np.hypot(du, dv)
+        curvature = (du * ddv - dv * ddu) / np.maximum(speed**3, 1e-12)
+        return (
+            self.heading + np.interp(grid, arc * scale, local_heading),
+            np.interp(grid, arc * scale, curvature),
+        )
+
+
+@dataclass(frozen=True)
+class ReferenceLine:
+    """A road's reference line: its geometries in order of s, sampled every ``step`` metres."""
+
+    geometries: tuple[Geometry, ...]
+    step: float = 0.5
+    samples: dict = field(default_factory=dict, compare=False, repr=False)
+
+    @property
+    def length(self) -> float:
+        last = self.geometries[-1]
+        return last.s + last.length
+
+    def sampled(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """s, x, y, heading (unwrapped) and curvature every ``step`` metres, both ends included."""
+        if not self.samples:
+            parts = []
+            for geometry in self.geometries:
+                n = max(2, int(math.ceil(geometry.length / self.step)) + 1)
+                ds = np.linspace(0.0, geometry.length, n)
+                x, y, heading, curvature = geometry.sample(ds)
+                parts.append((geometry.s + ds, x, y, heading, curvature))
+            s, x, y, heading, curvature = (np.concatenate([p[i] for p in parts]) for i in range(5))
+            keep = np.concatenate([[True], np.diff(s) > 1e-9])  # each geometry's start is its predecessor's end
+            self.samples["all"] = (s[keep], x[keep], y[keep], np.unwrap(heading[keep]), curvature[keep])
+        return self.samples["all"]
+
+    def pose(self, s, t=0.0) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """World x, y and heading of the points ``t`` metres left of the line at lengths ``s``."""
+        line_s, x, y, heading, _ = self.sampled()
+        h = np.interp(s, line_s, heading)
+        return np.interp(s, line_s, x) - np.sin(h) * t, np.interp(s, line_s, y) + np.cos(h) * t, h
+
+    def curvature(self, s) -> np.ndarray:
+        line_s, _, _, _, curvature = self.sampled()
+        return np.interp(s, line_s, curvature)

@@ -1,0 +1,132 @@
+"""The road a scenario runs on (``Route``), and the choice of one in a map (``pick_route``).
+
+A route runs along one road of a map in the direction of its reference line (right-hand traffic:
+the road's right lanes), its lanes numbered as the planner numbers them: 0 at the reference line
+(the leftmost), then rightward. Its coordinates are the ones every stage reads: ``x`` metres along
+the reference line from the route's start and ``y`` metres left of the right edge of its lanes (on
+the straight road, exactly the coordinates the tool has always used). ``pose`` maps them to the
+world.
+
+A route that would cross a junction is not picked yet: a road inside a junction (a connecting
+road) is never a route, and a route is one road, not a chain of them.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from .opendrive_in import LaneSection, MapError, MapRoad, RoadMap
+from .reference_line import ReferenceLine
+
+DRIVING = "driving"
+# m/s^2 of lateral acceleration a planned car holds in a curve (0.3 g: brisk, far from a skid; a
+# highway's design comfort is about half that, which would keep a 500 m curve under 100 kph)
+MAX_LATERAL_ACCELERATION = 3.0
+
+
+@dataclass(frozen=True)
+class Route:
+    """One road of ``source`` (a map file), driven along its reference line.
+
+    ``lanes``: the driving lanes that run its whole length (lanes 0..lanes-1), ``lane_width`` their
+    width at its start; ``sections``: its lane sections as the map has them; ``speed_limit`` in
+    m/s when the map gives one."""
+
+    source: Path
+    road: MapRoad
+    lanes: int
+    lane_width: float
+    opendrive: bytes = field(default=b"", repr=False, compare=False)  # the map's file as read
+
+    @property
+    def name(self) -> str:
+        return f"{self.road.label} of {self.source.name}"
+
+    @property
+    def length(self) -> float:
+        return self.road.length
+
+    @property
+    def reference_line(self) -> ReferenceLine:
+        return self.road.reference_line
+
+    @property
+    def sections(self) -> tuple[LaneSection, ...]:
+        return self.road.sections
+
+    @property
+    def speed_limit(self) -> float | None:
+        return self.road.speed_limit
+
+    @property
+    def width(self) -> float:
+        """The width of its lanes at its start: ``y`` = 0 is their right edge there."""
+        return self.lanes * self.lane_width
+
+    def pose(self, x, y) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """World x, y and heading of the route's points (``x`` along, ``y`` left of its lanes' right edge)."""
+        return self.reference_line.pose(np.asarray(x, dtype=float), np.asarray(y, dtype=float) - self.width)
+
+    def greatest_curvature(self, start: float = 0.0, end: float | None = None) -> float:
+        """The greatest curvature (1/m, either side) between ``start`` and ``end`` metres along it."""
+        s, _, _, _, curvature = self.reference_line.sampled()
+        inside = (s >= start) & (s <= (self.length if end is None else end))
+        return float(np.abs(curvature[inside]).max()) if inside.any() else 0.0
+
+
+def curve_speed(route: Route) -> float:
+    """The greatest speed (m/s) at which a car holds the route's sharpest curve at
+    ``MAX_LATERAL_ACCELERATION`` (v^2 k = a); infinite on a straight route."""
+    curvature = route.greatest_curvature()
+    return (MAX_LATERAL_ACCELERATION / curvature) ** 0.5 if curvature > 0 else float("inf")
+
+
+def _through_lanes(road: MapRoad) -> tuple[int, int]:
+    """(driving lanes from the reference line that run the road's whole length, the most driving
+    lanes anywhere on it)."""
+    counts = []
+    for section in road.sections:
+        n = 0
+        for lane in section.right:
+            if lane.type != DRIVING:
+                break
+            n += 1
+        counts.append(n)
+    return min(counts), max(counts)
+
+
+def describe(road: MapRoad) -> str:
+    """A road as a refusal lists it: its lanes and length, or why it is no route."""
+    if road.junction not in ("", "-1"):
+        return f"{road.label}: inside junction {road.junction} (a route may not cross a junction yet)"
+    through, most = _through_lanes(road)
+    extra = f" ({most} in parts: lanes that begin and end are not planned yet)" if most > through else ""
+    return f"{road.label}: {through} driving lanes over {road.length:g} m{extra}"
+
+
+def pick_route(road_map: RoadMap, lanes: int, length: float = 0.0) -> Route:
+    """The route of ``road_map`` a scenario of ``lanes`` lanes and ``length`` metres fits on: the
+    longest road outside junctions with at least that many driving lanes over its whole length and
+    at least that long. ``MapError`` saying why no road fits, road by road."""
+    fitting = []
+    for road in road_map.roads.values():
+        if road.junction not in ("", "-1"):
+            continue
+        through, _ = _through_lanes(road)
+        if through >= lanes and road.length >= length:
+            fitting.append((road.length, road))
+    if not fitting:
+        lines = "; ".join(describe(road) for road in road_map.roads.values())
+        need = f"{lanes} driving lanes" + (f" over {length:g} m" if length else "")
+        raise MapError(
+            road_map.path,
+            f"no road of the map has {need}: {lines}",
+            "ask for fewer lanes (path_min_driving_lanes) or give a map with a road that has them",
+        )
+    _, road = max(fitting, key=lambda item: (item[0], -int(item[1].id) if item[1].id.isdigit() else 0))
+    first = road.sections[0].right[0]
+    width = float(first.width(0.0))
+    return Route(road_map.path, road, _through_lanes(road)[0], width, road_map.data)

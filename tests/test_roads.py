@@ -1,0 +1,232 @@
+"""Roads beyond one straight road: OpenDRIVE read as data (geometry checked against closed forms),
+a route picked or refused with reasons, set_map and the map option, and a run on a curve."""
+
+from __future__ import annotations
+
+import math
+import textwrap
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from pytest_roadlogic.roads.opendrive_in import MapError, read_map
+from pytest_roadlogic.roads.reference_line import Geometry, ReferenceLine
+from pytest_roadlogic.roads.route import curve_speed, pick_route
+
+pytest_plugins = ["pytester"]
+
+ROOT = Path(__file__).resolve().parents[1]
+MAPS = ROOT / "scenarios" / "roads" / "maps"
+
+
+def test_the_committed_maps_are_what_their_recipe_writes(tmp_path):
+    import importlib.util
+
+    spec = importlib.util.spec_from_file_location("make_maps", MAPS / "make_maps.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    for written in module.write(tmp_path):
+        assert written.read_bytes() == (MAPS / written.name).read_bytes(), written.name
+
+
+def test_an_arc_keeps_its_radius_and_turns_by_its_length_over_the_radius():
+    radius = 500.0
+    line = ReferenceLine((Geometry(0.0, 10.0, -5.0, 0.3, 400.0, "arc", curvature=1 / radius),))
+    s = np.linspace(0.0, 400.0, 81)
+    x, y, heading = line.pose(s)
+    centre = (10.0 - math.sin(0.3) * radius, -5.0 + math.cos(0.3) * radius)
+    assert np.hypot(x - centre[0], y - centre[1]) == pytest.approx(np.full_like(s, radius), abs=1e-3)
+    assert heading == pytest.approx(0.3 + s / radius)
+    # a point 3.5 m left of the line is 3.5 m nearer the centre of a left curve
+    xl, yl, _ = line.pose(s, 3.5)
+    assert np.hypot(xl - centre[0], yl - centre[1]) == pytest.approx(np.full_like(s, radius - 3.5), abs=1e-3)
+
+
+def test_a_clothoid_from_a_straight_follows_the_fresnel_integrals():
+    from scipy.special import fresnel
+
+    length, end = 100.0, 1 / 500.0
+    line = ReferenceLine((Geometry(0.0, 0.0, 0.0, 0.0, length, "spiral", curvature_start=0.0, curvature_end=end),))
+    s = np.linspace(0.0, length, 21)
+    x, y, heading = line.pose(s)
+    # heading = a s^2 / 2 with a = end / length; x + i y = integral of exp(i a u^2 / 2)
+    a = end / length
+    scale = math.sqrt(math.pi / a)
+    fresnel_s, fresnel_c = fresnel(s / scale)
+    assert x == pytest.approx(scale * fresnel_c, abs=1e-3)
+    assert y == pytest.approx(scale * fresnel_s, abs=1e-3)
+    assert heading == pytest.approx(a * s**2 / 2, abs=1e-9)
+    assert line.curvature(s) == pytest.approx(a * s)
+
+
+def test_the_test_maps_read_as_their_recipe_describes():
+    curved = read_map(MAPS / "curved_highway.xodr").roads["1"]
+    s, _, _, heading, curvature = curved.reference_line.sampled()
+    assert curved.length == pytest.approx(1250.0)
+    assert heading[-1] == pytest.approx(0.1 + 700 / 500 + 0.1, abs=1e-6)  # two clothoids and the arc
+    assert np.abs(curvature).max() == pytest.approx(1 / 500)
+    assert curve_speed(pick_route(read_map(MAPS / "curved_highway.xodr"), 3)) == pytest.approx(math.sqrt(3.0 * 500))
+    ramp = read_map(MAPS / "on_ramp.xodr").roads["1"]
+    assert [len(section.right) for section in ramp.sections] == [3, 4, 4, 4, 3]
+    opening = ramp.sections[1]
+    assert float(opening.right[3].width(0.0)) == pytest.approx(0.0, abs=1e-9)
+    assert float(opening.right[3].width(opening.end - opening.s)) == pytest.approx(3.5, abs=1e-6)
+    drop = read_map(MAPS / "lane_drop.xodr").roads["1"]
+    assert [len(section.right) for section in drop.sections] == [3, 3, 2]
+
+
+def write(path: Path, text: str) -> Path:
+    path.write_text(textwrap.dedent(text).lstrip())
+    return path
+
+
+def test_a_map_with_a_document_type_is_refused_at_it_and_no_entity_is_read(tmp_path):
+    secret = tmp_path / "secret.txt"
+    secret.write_text("TOKEN-123")
+    hostile = write(
+        tmp_path / "hostile.xodr",
+        f"""
+        <?xml version="1.0"?>
+        <!DOCTYPE OpenDRIVE [<!ENTITY leak SYSTEM "file://{secret}">]>
+        <OpenDRIVE><header name="&leak;"/></OpenDRIVE>
+        """,
+    )
+    with pytest.raises(MapError) as caught:
+        read_map(hostile)
+    assert caught.value.line == 2 and "document type" in caught.value.message
+    assert "TOKEN" not in str(caught.value)
+
+
+@pytest.mark.parametrize(
+    "body, line, words",
+    [
+        ("<OpenDRIVE><road length='10'>", 1, "not well-formed"),
+        ("<html/>", 1, "not an OpenDRIVE file"),
+        ("<OpenDRIVE>\n<road id='1' length='x'/></OpenDRIVE>", 2, "is not a number"),
+        (
+            "<OpenDRIVE><road id='1' length='10'><planView>\n<geometry s='0' x='0' y='0' hdg='0' length='10'>"
+            "<clothoid/></geometry></planView></road></OpenDRIVE>",
+            2,
+            "unknown plan view geometry",
+        ),
+        (
+            "<OpenDRIVE><road id='1' length='10'><planView><geometry s='0' x='0' y='0' hdg='0' length='10'>"
+            "<line/></geometry></planView><lanes>\n<laneOffset s='0' a='1' b='0' c='0' d='0'/>"
+            "<laneSection s='0'/></lanes></road></OpenDRIVE>",
+            2,
+            "lane offset",
+        ),
+    ],
+)
+def test_a_map_that_cannot_be_read_is_refused_naming_its_line(tmp_path, body, line, words):
+    with pytest.raises(MapError) as caught:
+        read_map(write(tmp_path / "bad.xodr", body))
+    assert caught.value.line == line and words in caught.value.message, str(caught.value)
+
+
+def test_no_route_on_a_map_without_enough_lanes_says_road_by_road_why():
+    with pytest.raises(MapError) as caught:
+        pick_route(read_map(MAPS / "lane_drop.xodr"), 3)
+    message = caught.value.message
+    assert "no road of the map has 3 driving lanes" in message
+    assert "road 1: 2 driving lanes over 900 m (3 in parts: lanes that begin and end are not planned yet)" in message
+
+
+def test_a_road_inside_a_junction_is_never_a_route_and_is_named_so(tmp_path):
+    text = (MAPS / "s_curve.xodr").read_text().replace('junction="-1"', 'junction="7"')
+    with pytest.raises(MapError) as caught:
+        pick_route(read_map(write(tmp_path / "junction.xodr", text)), 3)
+    assert "road 1: inside junction 7 (a route may not cross a junction yet)" in caught.value.message
+
+
+SCENARIO = """
+import osc.standard
+
+scenario curve:
+    npc: car
+    path: Path
+    path.set_map("{map}")
+    do serial:
+        follow: parallel(duration: [4s..5s]):
+            ego.drive() with:
+                lane({ego_lane}, at: start)
+                speed([22mps..25mps], at: start)
+            npc.drive() with:
+                lane(1, at: start)
+                position(distance: [20m..30m], behind: ego, at: start)
+        pass: parallel(duration: [5s..8s]):
+            ego.drive()
+            npc.change_lane(num_of_lanes: 1, side: left)
+"""
+
+
+def scenario_file(folder: Path, map_name: str, ego_lane: int = 1) -> Path:
+    return write(folder / "curve.osc", SCENARIO.format(map=map_name, ego_lane=ego_lane))
+
+
+def test_set_map_runs_a_scenario_on_the_route_of_its_map_and_the_trace_carries_world_poses(tmp_path):
+    from pytest_roadlogic.pipeline import load_scenario, run_scenario
+
+    (tmp_path / "maps").mkdir()
+    (tmp_path / "maps" / "curved.xodr").write_bytes((MAPS / "curved_highway.xodr").read_bytes())
+    scenario = load_scenario(scenario_file(tmp_path, "maps/curved.xodr"))
+    assert scenario.route is not None and scenario.lanes == 3
+    outcome = run_scenario(scenario, seed=1)
+    assert outcome.verdict.accepted, outcome.verdict.explain()
+    trace, road = outcome.simulation.trace, outcome.simulation.road
+    assert trace.on_map
+    for name, columns in trace.actors.items():
+        # the world pose is the road pose mapped onto the map: same point, recomputed independently
+        wx, wy, wh = scenario.route.reference_line.pose(columns["x"] + road.route_shift, columns["y"] - road.width)
+        assert columns["world_x"] == pytest.approx(wx) and columns["world_y"] == pytest.approx(wy)
+        # the cars follow the curve: they turn with it (the route turns 0.5 rad over the run's 300 m)
+        assert columns["world_heading"][-1] - columns["world_heading"][0] > 0.2, name
+    ego = trace.actors["ego"]
+    assert np.abs(ego["y"] - road.center_y(2)).max() < 0.6, "the ego keeps its lane through the curve"
+
+
+def test_a_map_with_too_few_lanes_is_refused_at_set_map_with_the_maps_reason(tmp_path):
+    from pytest_roadlogic.frontend import check_file
+
+    (tmp_path / "drop.xodr").write_bytes((MAPS / "lane_drop.xodr").read_bytes())
+    checked = check_file(scenario_file(tmp_path, "drop.xodr", ego_lane=3))
+    errors = [d for d in checked.diagnostics if d.severity == "error"]
+    assert errors and errors[0].location.line == 6, checked.report()
+    assert "no road of the map has 3 driving lanes" in errors[0].message
+
+
+def test_a_map_outside_the_folders_the_tool_reads_is_refused_unread(tmp_path):
+    from pytest_roadlogic.confinement import ReadRoots
+    from pytest_roadlogic.frontend import check_file
+
+    inside = tmp_path / "project"
+    inside.mkdir()
+    checked = check_file(scenario_file(inside, str(MAPS / "curved_highway.xodr")), roots=ReadRoots.of(inside))
+    errors = [d for d in checked.diagnostics if d.severity == "error"]
+    assert errors and "outside the folders the tool reads" in errors[0].message
+
+
+def test_a_town_name_still_runs_on_the_straight_road_with_a_warning(tmp_path):
+    from pytest_roadlogic.frontend import check_file
+
+    checked = check_file(scenario_file(tmp_path, "Town04"))
+    assert not checked.errors and checked.scenarios[0].route is None
+    assert any("straight road" in d.message for d in checked.diagnostics)
+
+
+def test_the_map_option_runs_every_scenario_on_its_map_and_a_bad_value_is_a_usage_error(pytester):
+    plain = SCENARIO.replace('    path.set_map("{map}")\n', "")
+    pytester.makefile(".osc", plain=plain.format(ego_lane=1), wide=plain.format(ego_lane=4).replace("curve:", "wide:"))
+    (pytester.path / "curved.xodr").write_bytes((MAPS / "curved_highway.xodr").read_bytes())
+    result = pytester.runpytest_subprocess(
+        "--roadlogic-map", "curved.xodr", "--roadlogic-examples", "2", "-p", "no:cacheprovider"
+    )
+    # the plain file runs on the map's three lanes; the one that needs a fourth is refused by it
+    result.assert_outcomes(passed=1, errors=1)
+    assert "the map (the map option)" in result.stdout.str() and "no road of the map has 4 driving lanes" in (
+        result.stdout.str()
+    )
+    bad = pytester.runpytest_subprocess("--roadlogic-map", "curved.txt", "-p", "no:cacheprovider")
+    assert bad.ret != 0 and "--roadlogic-map" in bad.stderr.str() + bad.stdout.str()
+    assert "Traceback" not in bad.stderr.str() + bad.stdout.str()
