@@ -187,10 +187,16 @@ def guided_planning(
 
     On a map, no vehicle is planned faster than the route's sharpest curve lets a car hold
     (``roads.curve_speed``)."""
-    if scenario.route is not None and hasattr(settings, "max_speed"):
-        from .roads.route import curve_speed
+    if scenario.route is not None and hasattr(settings, "route_span"):
+        from .roads.route import ROUTE_MARGIN, curve_speed
 
-        settings = dataclasses.replace(settings, max_speed=min(settings.max_speed, curve_speed(scenario.route)))
+        route = scenario.route
+        settings = dataclasses.replace(
+            settings,
+            max_speed=min(settings.max_speed, curve_speed(route)),
+            route_span=(ROUTE_MARGIN, route.length - ROUTE_MARGIN),
+            lane_spans=tuple((lane, first, last) for lane, (first, last) in sorted(route.spans().items())),
+        )
     if not values:
         return (lambda planner_settings: specification), settings, seed
     guides: dict[tuple, SymbolicAutomaton] = {}

@@ -127,10 +127,10 @@ def test_a_map_that_cannot_be_read_is_refused_naming_its_line(tmp_path, body, li
 
 def test_no_route_on_a_map_without_enough_lanes_says_road_by_road_why():
     with pytest.raises(MapError) as caught:
-        pick_route(read_map(MAPS / "lane_drop.xodr"), 3)
+        pick_route(read_map(MAPS / "lane_drop.xodr"), 4)
     message = caught.value.message
-    assert "no road of the map has 3 driving lanes" in message
-    assert "road 1: 2 driving lanes over 900 m (3 in parts: lanes that begin and end are not planned yet)" in message
+    assert "no road of the map has 4 driving lanes" in message
+    assert "road 1: 2 driving lanes over 900 m, 3 in parts" in message
 
 
 def test_a_road_inside_a_junction_is_never_a_route_and_is_named_so(tmp_path):
@@ -190,10 +190,10 @@ def test_a_map_with_too_few_lanes_is_refused_at_set_map_with_the_maps_reason(tmp
     from pytest_roadlogic.frontend import check_file
 
     (tmp_path / "drop.xodr").write_bytes((MAPS / "lane_drop.xodr").read_bytes())
-    checked = check_file(scenario_file(tmp_path, "drop.xodr", ego_lane=3))
+    checked = check_file(scenario_file(tmp_path, "drop.xodr", ego_lane=4))
     errors = [d for d in checked.diagnostics if d.severity == "error"]
     assert errors and errors[0].location.line == 6, checked.report()
-    assert "no road of the map has 3 driving lanes" in errors[0].message
+    assert "no road of the map has 4 driving lanes" in errors[0].message
 
 
 def test_a_map_outside_the_folders_the_tool_reads_is_refused_unread(tmp_path):
@@ -230,3 +230,65 @@ def test_the_map_option_runs_every_scenario_on_its_map_and_a_bad_value_is_a_usag
     bad = pytester.runpytest_subprocess("--roadlogic-map", "curved.txt", "-p", "no:cacheprovider")
     assert bad.ret != 0 and "--roadlogic-map" in bad.stderr.str() + bad.stdout.str()
     assert "Traceback" not in bad.stderr.str() + bad.stdout.str()
+
+
+def test_the_merge_from_the_ramp_runs_conformant_and_leaves_the_acceleration_lane_before_it_ends():
+    from pytest_roadlogic.pipeline import load_scenario, run_scenario
+
+    scenario = load_scenario(ROOT / "scenarios" / "roads" / "merge_from_ramp.osc")
+    assert scenario.lanes == 4  # the highway's three and the acceleration lane
+    outcome = run_scenario(scenario, seed=1)
+    assert outcome.verdict.accepted, outcome.verdict.explain()
+    first, last = scenario.route.spans()[3]
+    road = outcome.simulation.road
+    for name, states in outcome.plan.states.items():
+        for state in states:
+            along = state.position + outcome.plan.origin
+            assert 30.0 <= along <= scenario.route.length - 30.0
+            if state.lane == 3:
+                assert first <= along <= last, (name, along)
+    npc = outcome.simulation.trace.actors["npc"]
+    on_ramp = npc["lane"] == 3
+    assert on_ramp[0] and not on_ramp[-1], "the npc starts on the acceleration lane and leaves it"
+    assert (npc["x"][on_ramp] + road.route_shift).max() <= scenario.route.spans()[3][1] + 10.0
+    assert not outcome.simulation.trace.incidents
+
+
+def test_a_car_asked_to_stay_in_a_lane_past_its_end_has_no_plan(tmp_path):
+    from pytest_roadlogic.pipeline import load_scenario, run_scenario
+    from pytest_roadlogic.planning import NoPlanError
+
+    (tmp_path / "drop.xodr").write_bytes((MAPS / "lane_drop.xodr").read_bytes())
+    stay = write(
+        tmp_path / "stay.osc",
+        """
+        import osc.standard
+
+        scenario stay:
+            path: Path
+            path.set_map("drop.xodr")
+            do serial:
+                cruise: parallel(duration: [25s..30s]):
+                    ego.drive() with:
+                        lane(1)
+                        speed([80kph..90kph])
+        """,
+    )
+    # 25 s at 80 kph or more is 555 m: more than the 440 m the ending lane takes a car
+    with pytest.raises(NoPlanError):
+        run_scenario(load_scenario(stay), seed=1)
+
+
+def test_the_lane_drop_runs_conformant_and_no_car_is_in_the_ending_lane_past_its_end():
+    from pytest_roadlogic.pipeline import load_scenario, run_scenario
+
+    scenario = load_scenario(ROOT / "scenarios" / "roads" / "lane_drop.osc")
+    outcome = run_scenario(scenario, seed=1)
+    assert outcome.verdict.accepted, outcome.verdict.explain()
+    road = outcome.simulation.road
+    last = scenario.route.spans()[2][1]
+    for name, columns in outcome.simulation.trace.actors.items():
+        along = columns["x"] + road.route_shift
+        assert not ((columns["lane"] == 2) & (along > last + 10.0)).any(), name
+    # both drive on past the end of the lane: the drop is on the scenario's way
+    assert (outcome.simulation.trace.actors["ego"]["x"][-1] + road.route_shift) > last

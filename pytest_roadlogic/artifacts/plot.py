@@ -22,20 +22,31 @@ def _top_on_map(top, simulation: Simulation, x_min: float, x_max: float, run_ind
 
     trace, road = simulation.trace, simulation.road
     xs = np.linspace(x_min, x_max, 400)
-    for boundary in range(road.lanes + 1):
-        wx, wy, _ = road.world(xs, np.full_like(xs, boundary * road.lane_width))
-        style = "-" if boundary in (0, road.lanes) else "--"
-        top.plot(wx, wy, style, color="grey", linewidth=0.8)
+    edge = road.right_edge(xs)
+    wx, wy, _ = road.world(xs, edge)
+    top.plot(wx, wy, "-", color="grey", linewidth=0.8)  # the right edge, moving where lanes begin or end
+    for boundary in range(1, road.lanes + 1):
+        y = np.full_like(xs, boundary * road.lane_width)
+        wx, wy, _ = road.world(xs, y)
+        wx[y < edge + 0.5] = np.nan  # only where the lane below the line is there
+        top.plot(wx, wy, "-" if boundary == road.lanes else "--", color="grey", linewidth=0.8)
     for lane in range(road.lanes):
         number = lane_number(lane) if lane_number is not None else road.lanes - lane
         wx, wy, _ = road.world(x_min + 1, road.center_y(lane))
         top.text(float(wx), float(wy), f"lane {number}", va="center", fontsize=7, color="grey")
+    # true to scale when the route turns enough to show it; stretched across a nearly straight one,
+    # where the vehicles at the guards' instants are dots (a box would be drawn distorted)
+    spans = [np.ptp(c["world_x"]) for c in trace.actors.values()], [np.ptp(c["world_y"]) for c in trace.actors.values()]
+    to_scale = max(spans[1]) > 0.15 * max(max(spans[0]), 1.0)
     for index, (name, columns) in enumerate(trace.actors.items()):
         colour = COLOURS[index % len(COLOURS)]
         top.plot(columns["world_x"], columns["world_y"], color=colour, linewidth=1.2, label=name)
-        top.text(columns["world_x"][-1], columns["world_y"][-1] + 2, name, color=colour, fontsize=9, weight="bold")
+        top.text(columns["world_x"][-1], columns["world_y"][-1] + 0.5, name, color=colour, fontsize=9, weight="bold")
         for k, _ in run_indices:
             x, y, heading = columns["world_x"][k], columns["world_y"][k], columns["world_heading"][k]
+            if not to_scale:
+                top.plot([x], [y], "o", color=colour, alpha=0.6, markersize=6)
+                continue
             top.add_patch(
                 Rectangle(
                     (x - CAR_LENGTH / 2, y - CAR_WIDTH / 2),
@@ -48,7 +59,7 @@ def _top_on_map(top, simulation: Simulation, x_min: float, x_max: float, run_ind
                     edgecolor=colour,
                 )
             )
-    top.set_aspect("equal")
+    top.set_aspect("equal" if to_scale else "auto")
     top.set_xlabel("map x [m]")
     top.set_ylabel(f"map y [m] ({road.route.name})")
 

@@ -41,6 +41,9 @@ class Plan:
     # the route of a map it is driven on (roads.Route, set by the pipeline from the scenario); None:
     # the straight road
     route: object = field(default=None, compare=False, repr=False)
+    # on a map's route: the metres along it of position 0 (asp/continuous/route.lp); None: the
+    # straight road, or a plan that does not say
+    origin: float | None = None
 
     @property
     def horizon(self) -> int:
@@ -73,6 +76,7 @@ class Plan:
             "states": {v: [asdict(s) for s in states] for v, states in self.states.items()},
             "stats": self.stats,
             "stationary": list(self.stationary),
+            **({"origin": self.origin} if self.origin is not None else {}),
         }
 
     @classmethod

@@ -22,6 +22,12 @@ from .opendrive_in import LaneSection, MapError, MapRoad, RoadMap
 from .reference_line import ReferenceLine
 
 DRIVING = "driving"
+USABLE_WIDTH = 2.8  # m: a lane at least this wide takes a car (1.8 m) with half a metre each side
+STEP = 1.0  # m along the route at which lane widths are read
+HALF_CAR = 3.0  # m: half a car's 4.5 m and some
+# m kept between every planned vehicle and the route's ends: the simulation starts its road 30 m
+# behind the rearmost vehicle, and a car's half length and its driver's look-ahead need road
+ROUTE_MARGIN = 30.0
 # m/s^2 of lateral acceleration a planned car holds in a curve (0.3 g: brisk, far from a skid; a
 # highway's design comfort is about half that, which would keep a 500 m curve under 100 kph)
 MAX_LATERAL_ACCELERATION = 3.0
@@ -31,9 +37,10 @@ MAX_LATERAL_ACCELERATION = 3.0
 class Route:
     """One road of ``source`` (a map file), driven along its reference line.
 
-    ``lanes``: the driving lanes that run its whole length (lanes 0..lanes-1), ``lane_width`` their
-    width at its start; ``sections``: its lane sections as the map has them; ``speed_limit`` in
-    m/s when the map gives one."""
+    ``lanes``: its driving lanes (lanes 0..lanes-1: the most it has anywhere; those beyond the ones
+    that run its whole length begin or end on it), ``lane_width`` their width at its widest;
+    ``sections``: its lane sections as the map has them; ``speed_limit`` in m/s when the map gives
+    one."""
 
     source: Path
     road: MapRoad
@@ -70,6 +77,44 @@ class Route:
         """World x, y and heading of the route's points (``x`` along, ``y`` left of its lanes' right edge)."""
         return self.reference_line.pose(np.asarray(x, dtype=float), np.asarray(y, dtype=float) - self.width)
 
+    def spans(self) -> dict[int, tuple[float, float]]:
+        """Where a car's centre may be in each lane that begins or ends on the route: where the lane
+        is at least ``USABLE_WIDTH`` wide, less half a car (``HALF_CAR``) at each end: lane ->
+        (first, last) metres along the route. A lane that runs the whole route at that width has none."""
+        s = np.arange(0.0, self.length + STEP / 2, STEP)
+        result = {}
+        for lane in range(self.lanes):
+            usable = self.lane_width_at(lane, s) >= USABLE_WIDTH
+            if usable.all():
+                continue
+            if not usable.any():
+                result[lane] = (0.0, -1.0)  # nowhere
+                continue
+            inside = s[usable]
+            result[lane] = (float(inside[0]) + HALF_CAR, float(inside[-1]) - HALF_CAR)
+        return result
+
+    def lane_width_at(self, lane: int, s) -> np.ndarray:
+        """The width of ``lane`` (0 at the reference line) at lengths ``s`` along the route (0 where
+        it does not exist, or is not a driving lane)."""
+        s = np.atleast_1d(np.asarray(s, dtype=float))
+        width = np.zeros_like(s)
+        for section in self.sections:
+            inside = (s >= section.s - 1e-9) & (s <= section.end + 1e-9)
+            if not inside.any() or lane >= len(section.right):
+                continue
+            if any(section.right[k].type != DRIVING for k in range(lane + 1)):
+                continue
+            width = np.where(inside, section.right[lane].width(s - section.s), width)
+        return width
+
+    def right_edge(self, s) -> np.ndarray:
+        """``y`` of the right edge of the driving lanes at lengths ``s`` along the route (0 where every
+        lane is there at full width; above 0 where lanes have ended or not yet begun)."""
+        s = np.atleast_1d(np.asarray(s, dtype=float))
+        total = sum(self.lane_width_at(lane, s) for lane in range(self.lanes))
+        return self.width - total
+
     def greatest_curvature(self, start: float = 0.0, end: float | None = None) -> float:
         """The greatest curvature (1/m, either side) between ``start`` and ``end`` metres along it."""
         s, _, _, _, curvature = self.reference_line.sampled()
@@ -103,20 +148,21 @@ def describe(road: MapRoad) -> str:
     if road.junction not in ("", "-1"):
         return f"{road.label}: inside junction {road.junction} (a route may not cross a junction yet)"
     through, most = _through_lanes(road)
-    extra = f" ({most} in parts: lanes that begin and end are not planned yet)" if most > through else ""
+    extra = f", {most} in parts" if most > through else ""
     return f"{road.label}: {through} driving lanes over {road.length:g} m{extra}"
 
 
 def pick_route(road_map: RoadMap, lanes: int, length: float = 0.0) -> Route:
     """The route of ``road_map`` a scenario of ``lanes`` lanes and ``length`` metres fits on: the
-    longest road outside junctions with at least that many driving lanes over its whole length and
-    at least that long. ``MapError`` saying why no road fits, road by road."""
+    longest road outside junctions with at least that many driving lanes (those beyond the lanes
+    that run its whole length begin or end on it: the planner keeps a car in such a lane only
+    where it is) and at least that long. ``MapError`` saying why no road fits, road by road."""
     fitting = []
     for road in road_map.roads.values():
         if road.junction not in ("", "-1"):
             continue
-        through, _ = _through_lanes(road)
-        if through >= lanes and road.length >= length:
+        _, most = _through_lanes(road)
+        if most >= lanes and road.length >= length:
             fitting.append((road.length, road))
     if not fitting:
         lines = "; ".join(describe(road) for road in road_map.roads.values())
@@ -127,6 +173,6 @@ def pick_route(road_map: RoadMap, lanes: int, length: float = 0.0) -> Route:
             "ask for fewer lanes (path_min_driving_lanes) or give a map with a road that has them",
         )
     _, road = max(fitting, key=lambda item: (item[0], -int(item[1].id) if item[1].id.isdigit() else 0))
-    first = road.sections[0].right[0]
-    width = float(first.width(0.0))
-    return Route(road_map.path, road, _through_lanes(road)[0], width, road_map.data)
+    widest = max(road.sections, key=lambda section: len(section.right))
+    width = float(widest.right[0].width(0.0))
+    return Route(road_map.path, road, _through_lanes(road)[1], width, road_map.data)

@@ -84,8 +84,9 @@ def drive_in_lockstep(
     refs = references(plan, Road(lanes))
     # a replan may lengthen the run: room for about ten more seconds at highway speed
     road = _road_around(refs, lanes, 60.0 if react is None else 400.0)
-    if plan.route is not None:  # on a map: the route's start where the road starts
-        road = dataclasses.replace(road, route=plan.route, route_shift=-road.x_start)
+    if plan.route is not None:  # on a map: where the plan placed itself on the route
+        shift = plan.origin if plan.origin is not None else -road.x_start
+        road = dataclasses.replace(road, route=plan.route, route_shift=shift)
     active: dict[str, Driver] = {}
     for vehicle, reference in refs.items():
         if vehicle in plan.stationary:

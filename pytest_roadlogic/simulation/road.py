@@ -40,7 +40,16 @@ class Road:
 
     def on_road(self, corners: np.ndarray) -> bool:
         ys = corners[:, 1]
+        if self.route is not None:  # on a map, where lanes begin or end the right edge moves
+            edge = self.right_edge(corners[:, 0])
+            return bool((ys >= edge - 0.05).all() and ys.max() <= self.width + 0.05)
         return bool(ys.min() >= -0.05 and ys.max() <= self.width + 0.05)
+
+    def right_edge(self, x) -> np.ndarray:
+        """``y`` of the right edge of the driving lanes at ``x`` (0 but where a map's lanes begin or end)."""
+        if self.route is None:
+            return np.zeros_like(np.asarray(x, dtype=float))
+        return self.route.right_edge(np.asarray(x, dtype=float) + self.route_shift)
 
     def world(self, x, y, heading=0.0) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """World x, y and heading of road coordinates (on the straight road, the same)."""

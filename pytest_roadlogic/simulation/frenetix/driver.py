@@ -204,7 +204,10 @@ class FrenetixDriver:
             self.reference.v(times),
         )
         costs = self._tracking_costs(
-            target, candidates, (self.position_weight, self.lateral_weight, self.speed_weight)
+            target,
+            candidates,
+            (self.position_weight, self.lateral_weight, self.speed_weight),
+            self.road.route is not None,
         ) + np.array([c.cost for c in candidates])
         ranked = [candidates[i] for i in np.argsort(costs, kind="stable")[:40]]
         road_now = self._road_violation(Trajectory.standing(state))
@@ -254,10 +257,16 @@ class FrenetixDriver:
 
     @staticmethod
     def _tracking_costs(
-        target: tuple[np.ndarray, np.ndarray, np.ndarray], candidates: list, weights: tuple[float, float, float]
+        target: tuple[np.ndarray, np.ndarray, np.ndarray],
+        candidates: list,
+        weights: tuple[float, float, float],
+        along: bool = False,
     ) -> np.ndarray:
         """Mean squared distance from the reference (s of the rear axle, d, v) over the tracked
-        window, for all candidates at once (they share the planning horizon, hence the length)."""
+        window, for all candidates at once (they share the planning horizon, hence the length).
+        ``along``: the speed compared is the rate along the frame's line (on a map's route, whose
+        plans are in lengths along it: a car in a curve's outer lane drives faster than that rate,
+        in its inner lane slower), else the car's own speed."""
         s_ref, d_ref, v_ref = target
         curves = [c.curvilinear for c in candidates]  # each access copies frenetix's arrays: once
         along = [curve.s for curve in curves]
@@ -265,7 +274,7 @@ class FrenetixDriver:
         m = n - 1
         s = np.array([a[1:n] for a in along])
         d = np.array([curve.d[1:n] for curve in curves])
-        v = np.array([c.cartesian.v[1:n] for c in candidates])
+        v = np.array([curve.s_dot[1:n] for curve in curves] if along else [c.cartesian.v[1:n] for c in candidates])
         w_s, w_d, w_v = weights
         return (
             w_s * ((s - s_ref[:m]) ** 2).mean(axis=1)
@@ -323,6 +332,9 @@ class FrenetixDriver:
         heading = trajectory.heading[:steps]
         half = CAR_WIDTH / 2 * np.abs(np.cos(heading)) + CAR_LENGTH / 2 * np.abs(np.sin(heading)) + 0.1
         y = trajectory.y[:steps]
+        if self.road.route is not None:  # the right edge moves where a map's lanes begin or end
+            edge = self.road.right_edge(trajectory.x[:steps])
+            return float(max(0.0, (half - (y - edge)).max(), (y + half - self.road.width).max()))
         return float(max(0.0, (half - y).max(), (y + half - self.road.width).max()))
 
     def _collides(self, trajectory: Trajectory, others: dict[str, Trajectory]) -> bool:

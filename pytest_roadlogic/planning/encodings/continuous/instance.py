@@ -57,6 +57,8 @@ def build_continuous_instance(
         f"lane_id(0..{automaton.lanes - 1}).",
         "lateral(-1;0;1).",
         f"lane_change_gap({s.lane_change_gap}).",
+        *([f"route_span({number(s.route_span[0])},{number(s.route_span[1])})."] if s.route_span else []),
+        *(f"lane_span({lane},{number(first)},{number(last)})." for lane, first, last in s.lane_spans),
         "",
     ]
     return with_automaton(

@@ -42,6 +42,7 @@ BACKGROUND = (
     ASP_CONTINUOUS / "steer.lp",
     LEAST_ACTION,
     ASP_CONTINUOUS / "replan.lp",  # inert without a replan's facts (reactive/replanner.py)
+    ASP_CONTINUOUS / "route.lp",  # inert without a map's route (roads/route.py)
 )
 RANDOM_START = (KEEP_LANE, ASP_CONTINUOUS / "start.lp")  # loaded for a random start only, in this order
 # the soft rows clingo-lpx, which checks every row exactly, cannot weigh: a preference binds as a

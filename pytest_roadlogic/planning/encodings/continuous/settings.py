@@ -58,6 +58,11 @@ class ContinuousSettings:
     # 20 s moved its band's edge 20 m below the true one). Such a plan is simulated and monitored
     # like any other; when none is accepted, the margins are what binds (MarginsBind)
     fallback_margins: float = 0.2
+    # on a map (asp/continuous/route.lp): where along its route every vehicle stays, first and last
+    # metre, and where each lane that begins or ends takes a car ((lane, first, last), metres along
+    # the route); None: the straight road, as long as the scenario needs
+    route_span: tuple[float, float] | None = None
+    lane_spans: tuple[tuple[int, float, float], ...] = ()
     max_horizon: int = CONTINUOUS_HORIZON  # steps
     time_limit: float = 60.0  # seconds for one solve, all horizons together
     # how the linear constraints are kept: "lazy" checks each complete choice with HiGHS and learns
