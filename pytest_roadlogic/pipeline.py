@@ -186,13 +186,19 @@ def guided_planning(
     as a value the scenario meets (measured before this).
 
     On a map, no vehicle is planned faster than the route's sharpest curve lets a car hold
-    (``roads.curve_speed``)."""
+    (``roads.curve_speed``), each stays on the route and in a lane only where it is
+    (``asp/continuous/route.lp``), and one whose speed the scenario leaves open starts at most at
+    the map's speed limit."""
     if scenario.route is not None and hasattr(settings, "route_span"):
         from .roads.route import ROUTE_MARGIN, curve_speed
 
         route = scenario.route
+        low, high = settings.road_speed
+        if route.speed_limit is not None:  # where the scenario names no speed, the road's are at most its limit
+            low, high = min(low, route.speed_limit), min(high, route.speed_limit)
         settings = dataclasses.replace(
             settings,
+            road_speed=(low, high),
             max_speed=min(settings.max_speed, curve_speed(route)),
             route_span=(ROUTE_MARGIN, route.length - ROUTE_MARGIN),
             lane_spans=tuple((lane, first, last) for lane, (first, last) in sorted(route.spans().items())),

@@ -66,7 +66,7 @@ def test_the_test_maps_read_as_their_recipe_describes():
     assert curved.length == pytest.approx(1250.0)
     assert heading[-1] == pytest.approx(0.1 + 700 / 500 + 0.1, abs=1e-6)  # two clothoids and the arc
     assert np.abs(curvature).max() == pytest.approx(1 / 500)
-    assert curve_speed(pick_route(read_map(MAPS / "curved_highway.xodr"), 3)) == pytest.approx(math.sqrt(3.0 * 500))
+    assert curve_speed(pick_route(read_map(MAPS / "curved_highway.xodr"), 3)) == pytest.approx(math.sqrt(2.0 * 500))
     ramp = read_map(MAPS / "on_ramp.xodr").roads["1"]
     assert [len(section.right) for section in ramp.sections] == [3, 4, 4, 4, 3]
     opening = ramp.sections[1]
@@ -292,3 +292,22 @@ def test_the_lane_drop_runs_conformant_and_no_car_is_in_the_ending_lane_past_its
         assert not ((columns["lane"] == 2) & (along > last + 10.0)).any(), name
     # both drive on past the end of the lane: the drop is on the scenario's way
     assert (outcome.simulation.trace.actors["ego"]["x"][-1] + road.route_shift) > last
+
+
+def test_on_a_map_the_planner_knows_the_curve_speed_the_speed_limit_and_where_each_lane_is(tmp_path):
+    from pytest_roadlogic.automaton import build_automaton
+    from pytest_roadlogic.pipeline import guided_planning, load_scenario
+    from pytest_roadlogic.planning import settings_for
+    from pytest_roadlogic.roads.route import MAX_LATERAL_ACCELERATION
+    from pytest_roadlogic.settings import RunSettings
+
+    (tmp_path / "s.xodr").write_bytes((MAPS / "s_curve.xodr").read_bytes())
+    scenario = load_scenario(scenario_file(tmp_path, "s.xodr"))
+    _, settings, _ = guided_planning(scenario, build_automaton(scenario), None, settings_for(RunSettings()), 1)
+    assert settings.max_speed == pytest.approx(math.sqrt(MAX_LATERAL_ACCELERATION * 400.0))
+    assert settings.road_speed[1] == pytest.approx(100 / 3.6)  # the map's limit, 100 km/h
+    assert settings.route_span == (30.0, 970.0) and settings.lane_spans == ()
+    ramp = load_scenario(ROOT / "scenarios" / "roads" / "merge_from_ramp.osc")
+    _, settings, _ = guided_planning(ramp, build_automaton(ramp), None, settings_for(RunSettings()), 1)
+    ((lane, first, last),) = settings.lane_spans
+    assert lane == 3 and 180.0 < first < 200.0 and 395.0 < last < 410.0

@@ -28,9 +28,11 @@ HALF_CAR = 3.0  # m: half a car's 4.5 m and some
 # m kept between every planned vehicle and the route's ends: the simulation starts its road 30 m
 # behind the rearmost vehicle, and a car's half length and its driver's look-ahead need road
 ROUTE_MARGIN = 30.0
-# m/s^2 of lateral acceleration a planned car holds in a curve (0.3 g: brisk, far from a skid; a
-# highway's design comfort is about half that, which would keep a 500 m curve under 100 kph)
-MAX_LATERAL_ACCELERATION = 3.0
+# m/s^2 of lateral acceleration a planned car holds in a curve (0.2 g: 114 kph in a 500 m curve).
+# Measured (benchmarks/roads.py, the paper's seven on curved_highway.xodr, 10 samples each, one
+# try): at 3 m/s^2 (139 kph) 65 of 70 accepted, the overtakes' passing cars lagging their plans in
+# the curve's outer lane; at 2 m/s^2 see docs/roads.md
+MAX_LATERAL_ACCELERATION = 2.0
 
 
 @dataclass(frozen=True)

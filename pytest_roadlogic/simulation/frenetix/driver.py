@@ -169,11 +169,18 @@ class FrenetixDriver:
         self._committed = None
         low = bool(state.speed < self.low_velocity)
         if self.road.route is None:
-            x, y, heading = state.x, state.y, state.heading
-        else:
-            x, y, heading = (float(v) for v in self.road.world(state.x, state.y, state.heading))
-        cos_h, sin_h = np.cos(heading), np.sin(heading)
-        rear = np.array([x - cos_h * WHEELBASE / 2, y - sin_h * WHEELBASE / 2])
+            heading = state.heading
+            rear = np.array([state.x - np.cos(heading) * WHEELBASE / 2, state.y - np.sin(heading) * WHEELBASE / 2])
+        else:  # the rear axle mapped onto the map, turned as the route is there (as _copy_along_route reads it)
+            x, y, heading = (
+                float(v)
+                for v in self.road.world(
+                    state.x - np.cos(state.heading) * WHEELBASE / 2,
+                    state.y - np.sin(state.heading) * WHEELBASE / 2,
+                    state.heading,
+                )
+            )
+            rear = np.array([x, y])
         cartesian = frenetix.CartesianPlannerState(
             rear, float(heading), float(state.speed), float(state.acceleration), 0.0
         )

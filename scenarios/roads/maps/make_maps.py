@@ -6,8 +6,8 @@ Each is one road, driven in the direction of its reference line (OpenDRIVE's rig
 
 - ``curved_highway.xodr``: three lanes; 50 m straight, a 100 m clothoid into a 500 m radius left
   curve held for 700 m, a 100 m clothoid out, 300 m straight (1.25 km).
-- ``s_curve.xodr``: three lanes; 150 m straight, a 250 m arc of 400 m radius to the left, a 250 m
-  arc of 400 m radius to the right, 350 m straight (1 km).
+- ``s_curve.xodr``: three lanes, a motorway limited to 100 km/h; 150 m straight, a 250 m arc of
+  400 m radius to the left, a 250 m arc of 400 m radius to the right, 350 m straight (1 km).
 - ``on_ramp.xodr``: three lanes and an acceleration lane on their right from 150 m to 450 m (the
   ramp's lane: it opens over 50 m and ends, narrowing to nothing, over the last 60 m), 800 m.
 - ``lane_drop.xodr``: three lanes, the rightmost ending between 450 m and 530 m, 900 m.
@@ -68,7 +68,10 @@ def maps() -> dict[str, xodr.OpenDrive]:
     drop = [xodr.LaneDef(450.0, 530.0, 3, 2, -3)]
     return {
         "curved_highway.xodr": _network("pytest-roadlogic curved highway", _road(curved, 3)),
-        "s_curve.xodr": _network("pytest-roadlogic s-curve", _road(s_curve, 3)),
+        "s_curve.xodr": _network(
+            "pytest-roadlogic s-curve",
+            _road(s_curve, 3).add_type(xodr.RoadType.motorway, 0, speed=100, speed_unit="km/h"),
+        ),
         "on_ramp.xodr": _network("pytest-roadlogic on-ramp merge", _road([xodr.Line(800.0)], ramp)),
         "lane_drop.xodr": _network("pytest-roadlogic lane drop", _road([xodr.Line(900.0)], drop)),
     }
