@@ -311,3 +311,41 @@ def test_on_a_map_the_planner_knows_the_curve_speed_the_speed_limit_and_where_ea
     _, settings, _ = guided_planning(ramp, build_automaton(ramp), None, settings_for(RunSettings()), 1)
     ((lane, first, last),) = settings.lane_spans
     assert lane == 3 and 180.0 < first < 200.0 and 395.0 < last < 410.0
+
+
+@pytest.mark.parametrize(
+    "asks, fits",
+    [
+        ("path.path_curve(min_radius: 300m, max_radius: 450m, side: right)", True),
+        ("path.path_curve(min_radius: 300m, max_radius: 350m)", False),
+        ("path.path_length(min_length: 900m)", True),
+        ("path.path_length(min_length: 1200m)", False),
+    ],
+)
+def test_path_curve_and_path_length_narrow_the_route_and_a_map_without_one_says_what_its_roads_have(
+    tmp_path, asks, fits
+):
+    from pytest_roadlogic.frontend import check_file
+
+    (tmp_path / "s.xodr").write_bytes((MAPS / "s_curve.xodr").read_bytes())
+    text = SCENARIO.format(map="s.xodr", ego_lane=1).replace(
+        '    path.set_map("s.xodr")\n', f'    path.set_map("s.xodr")\n    {asks}\n'
+    )
+    checked = check_file(write(tmp_path / "asks.osc", text))
+    errors = [d for d in checked.diagnostics if d.severity == "error"]
+    if fits:
+        assert not errors and checked.scenarios[0].route is not None, checked.report()
+    else:
+        assert errors and errors[0].location.line == 6, checked.report()
+        assert "curves of radius down to left 400 m and right 400 m" in errors[0].message
+
+
+def test_path_curve_without_a_map_is_an_error_at_it(tmp_path):
+    from pytest_roadlogic.frontend import check_file
+
+    text = SCENARIO.format(map="Town04", ego_lane=1).replace(
+        '    path.set_map("Town04")\n', "    path.path_curve(min_radius: 300m, max_radius: 450m)\n"
+    )
+    checked = check_file(write(tmp_path / "curve.osc", text))
+    errors = [d for d in checked.diagnostics if d.severity == "error"]
+    assert errors and errors[0].location.line == 6 and "straight road" in errors[0].message

@@ -156,6 +156,7 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks):
         self.requested_map: Path | None = None  # the map option's file, which wins over a scenario's set_map
         self.route = None  # the route of the scenario being checked on its map (roads.Route), None: the straight road
         self.map_asked = None  # (the map file a scenario's set_map names, where) while it is checked
+        self.route_asks: dict = {}  # path_length / path_curve of the scenario being checked (road_lanes)
         # The road of the scenario being checked, and why it has that many lanes (for error messages).
         self.lanes = lanes or DEFAULT_LANES
         self.lanes_origin = ""

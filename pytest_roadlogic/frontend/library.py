@@ -161,8 +161,8 @@ COMPOSITIONS: dict[str, Signature] = _signatures(
     Signature("one_of", (DURATION,)),
 )
 
-# Modifiers of the road (ROAD_TYPE), applied to the whole scenario. The road is always one straight
-# highway, so only its lane count can be asked for.
+# Modifiers of the road (ROAD_TYPE), applied to the whole scenario: its lanes, its map, and, on a
+# map, what the route must have (docs/roads.md).
 ROAD_MODIFIERS: dict[str, Signature] = _signatures(
     Signature(
         "path_min_driving_lanes",
@@ -176,7 +176,19 @@ ROAD_MODIFIERS: dict[str, Signature] = _signatures(
         required=(("lanes",),),
         description="the road has at most this many lanes",
     ),
-    # CARLA's town maps: accepted with a warning, the straight road stands in for the map
+    Signature(
+        "path_length",
+        (Parameter("min_length", "length"), Parameter("max_length", "length")),
+        required=(("min_length", "max_length"),),
+        description="on a map: the route is at least min_length long",
+    ),
+    Signature(
+        "path_curve",
+        (Parameter("min_radius", "length"), Parameter("max_radius", "length"), Parameter("side", "enum:side")),
+        required=(("min_radius", "max_radius"),),
+        description="on a map: the route has a curve of a radius in min_radius..max_radius (to the side)",
+    ),
+    # an OpenDRIVE file: the scenario's map; a name (CARLA's towns): a warning, the straight road stands in
     Signature(
         "set_map",
         (Parameter("map", "string", positional=True),),

@@ -32,7 +32,7 @@ class RoadLanes:
         ``path_min_driving_lanes``, at least its highest lane number or lane change plus one, and at most
         its ``path_max_lanes``, so that a file states its road and runs the same from every entry point.
         """
-        self.route, self.map_asked = None, None
+        self.route, self.map_asked, self.route_asks = None, None, {}
         bounds = self._road_bounds(scenario, env, roads)
         least, most = bounds.get("path_min_driving_lanes"), bounds.get("path_max_lanes")
         if self.requested_map is not None:  # the map option wins over the file's set_map
@@ -40,6 +40,12 @@ class RoadLanes:
         if self.map_asked is not None:
             used, where = self._lanes_used(scenario, env)
             return self._lanes_of_map(scenario, max(least[0] if least else 1, used), most, where)
+        if "path_curve" in self.route_asks:
+            self.error(
+                self.route_asks["path_curve"][3],
+                "path_curve() asks for a curve, but the scenario runs on the straight road",
+                'give it a map with one: set_map("file.xodr"), or --roadlogic-map FILE',
+            )
         if least and most and least[0] > most[0]:
             self.error(
                 most[1],
@@ -105,8 +111,11 @@ class RoadLanes:
                 "put the map inside the project, or name its folder with --allow-read",
             )
             return self.lanes
+        asks = self.route_asks
+        length = (asks["path_length"][0] or 0.0) if "path_length" in asks else 0.0
+        curve = asks["path_curve"][:3] if "path_curve" in asks else None
         try:
-            self.route = pick_route(read_map(path), needed)
+            self.route = pick_route(read_map(path), needed, length, curve)
         except MapError as error:
             where_in_map = f"{error.path}:{error.line}:{error.column}: " if error.line else f"{error.path}: "
             self.error(at, f"the map{origin}: {where_in_map}{error.message}", error.hint or None)
@@ -153,7 +162,7 @@ class RoadLanes:
                 self.error(
                     modifier.location,
                     f"not supported: {modifier.name}() of the road",
-                    f"the road is one straight highway; {self._known('road modifiers', library.ROAD_MODIFIERS)}",
+                    f"the road is one straight highway or a map's route; {self._known('road modifiers', library.ROAD_MODIFIERS)}",
                 )
                 continue
             before = len(self.diagnostics)
@@ -175,6 +184,9 @@ class RoadLanes:
                     modifier.location, "the map is not available: the scenario runs on one straight road", hint
                 )
                 continue
+            if modifier.name in ("path_length", "path_curve"):
+                self._route_ask(modifier, binding, env, before)
+                continue
             argument = binding["lanes"]
             if argument is None or any(d.severity == "error" for d in self.diagnostics[before:]):
                 continue
@@ -195,6 +207,32 @@ class RoadLanes:
             else:
                 bounds[modifier.name] = (int(value.low), modifier.location)
         return bounds
+
+    def _route_ask(self, modifier: model.Modifier, binding, env: dict, before: int) -> None:
+        """``path_length`` / ``path_curve``: what the route on a map must have, kept in
+        ``self.route_asks`` (name -> (metres low, metres high, side or None, where))."""
+        if any(d.severity == "error" for d in self.diagnostics[before:]):
+            return
+        low_name, high_name = (
+            ("min_length", "max_length") if modifier.name == "path_length" else ("min_radius", "max_radius")
+        )
+        bounds = []
+        for name in (low_name, high_name):
+            argument = binding[name]
+            value = evaluate(argument.value, env) if argument is not None else None
+            if value is None:
+                bounds.append(None)
+            elif isinstance(value, Interval) and value.is_point and value.low > 0:
+                bounds.append(float(value.low))
+            else:
+                self.error(argument.value.location, f"{name} takes one length above 0, e.g. {name}: 300m")
+                return
+        side = binding["side"] if modifier.name == "path_curve" else None
+        side_name = side.value.name if side is not None and isinstance(side.value, model.Name) else None
+        if modifier.name in self.route_asks:
+            self.error(modifier.location, f"{modifier.name}() is already given", "give it once")
+            return
+        self.route_asks[modifier.name] = (bounds[0], bounds[1], side_name, modifier.location)
 
     def _lanes_used(self, scenario: model.Scenario, env: dict) -> tuple[int, SourceLocation]:
         """The fewest lanes on which every lane number and lane change the scenario writes exists,

@@ -146,33 +146,67 @@ def _through_lanes(road: MapRoad) -> tuple[int, int]:
 
 
 def describe(road: MapRoad) -> str:
-    """A road as a refusal lists it: its lanes and length, or why it is no route."""
+    """A road as a refusal lists it: its lanes, length and curves, or why it is no route."""
     if road.junction not in ("", "-1"):
         return f"{road.label}: inside junction {road.junction} (a route may not cross a junction yet)"
     through, most = _through_lanes(road)
     extra = f", {most} in parts" if most > through else ""
-    return f"{road.label}: {through} driving lanes over {road.length:g} m{extra}"
+    _, _, _, _, curvature = road.reference_line.sampled()
+    curves = []
+    for side, sign in (("left", 1.0), ("right", -1.0)):
+        sharpest = float((sign * curvature).max())
+        if sharpest > 1e-6:
+            curves.append(f"{side} {1 / sharpest:.0f} m")
+    bends = f", curves of radius down to {' and '.join(curves)}" if curves else ", straight"
+    return f"{road.label}: {through} driving lanes over {road.length:g} m{extra}{bends}"
 
 
-def pick_route(road_map: RoadMap, lanes: int, length: float = 0.0) -> Route:
+def _has_curve(road: MapRoad, curve: tuple[float | None, float | None, str | None]) -> bool:
+    """Whether the road bends somewhere with a radius between ``curve``'s (metres; None: no bound),
+    to its side (left, right; None: either)."""
+    low, high, side = curve
+    _, _, _, _, curvature = road.reference_line.sampled()
+    for name, sign in (("left", 1.0), ("right", -1.0)):
+        if side not in (None, name):
+            continue
+        bending = sign * curvature
+        radius = np.where(bending > 1e-9, 1.0 / np.maximum(bending, 1e-12), np.inf)
+        inside = np.isfinite(radius) & (radius >= (low or 0.0) - 1e-6) & (radius <= (high or np.inf) + 1e-6)
+        if inside.any():
+            return True
+    return False
+
+
+def pick_route(
+    road_map: RoadMap,
+    lanes: int,
+    length: float = 0.0,
+    curve: tuple[float | None, float | None, str | None] | None = None,
+) -> Route:
     """The route of ``road_map`` a scenario of ``lanes`` lanes and ``length`` metres fits on: the
     longest road outside junctions with at least that many driving lanes (those beyond the lanes
     that run its whole length begin or end on it: the planner keeps a car in such a lane only
-    where it is) and at least that long. ``MapError`` saying why no road fits, road by road."""
+    where it is), at least that long, and with a ``curve`` (min radius, max radius, side; the
+    standard's ``path_curve``) when one is asked for. ``MapError`` saying why no road fits, road by
+    road."""
     fitting = []
     for road in road_map.roads.values():
         if road.junction not in ("", "-1"):
             continue
         _, most = _through_lanes(road)
-        if most >= lanes and road.length >= length:
+        if most >= lanes and road.length >= length and (curve is None or _has_curve(road, curve)):
             fitting.append((road.length, road))
     if not fitting:
         lines = "; ".join(describe(road) for road in road_map.roads.values())
         need = f"{lanes} driving lanes" + (f" over {length:g} m" if length else "")
+        if curve is not None:
+            low, high, side = curve
+            radius = f"{low or 0:g}..{high:g} m" if high else f"at least {low:g} m"
+            need += f" and a curve{' to the ' + side if side else ''} of radius {radius}"
         raise MapError(
             road_map.path,
             f"no road of the map has {need}: {lines}",
-            "ask for fewer lanes (path_min_driving_lanes) or give a map with a road that has them",
+            "ask for less (the lanes it names, path_min_driving_lanes, path_length, path_curve) or give a map with a road that has it",
         )
     _, road = max(fitting, key=lambda item: (item[0], -int(item[1].id) if item[1].id.isdigit() else 0))
     widest = max(road.sections, key=lambda section: len(section.right))
