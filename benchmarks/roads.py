@@ -22,6 +22,7 @@ sys.path.insert(0, str(ROOT))
 from hypothesis import HealthCheck, Phase, given, settings  # noqa: E402
 from hypothesis import seed as seeded  # noqa: E402
 
+from pytest_roadlogic.frontend import OscError  # noqa: E402
 from pytest_roadlogic.pipeline import load_scenario, run_instances  # noqa: E402
 from pytest_roadlogic.planning import NoPlanError  # noqa: E402
 from pytest_roadlogic.sampling import strategy  # noqa: E402
@@ -48,7 +49,11 @@ def samples(scenario, count: int) -> list[dict]:
 
 def first_tries(path: Path, values: list[dict], road_map: str | None) -> tuple[int, int, float]:
     """(accepted, no plan, seconds) of one try per sample."""
-    scenario = load_scenario(path, road_map=road_map)
+    try:
+        scenario = load_scenario(path, road_map=road_map)
+    except OscError as error:  # the map has no route for it: every sample counts as no plan
+        print(f"  {path.name}: {error.diagnostics[0].message}")
+        return 0, len(values), 0.0
     accepted = no_plan = 0
     started = time.perf_counter()
     for v in values:

@@ -104,13 +104,15 @@ class RoadLanes:
         path, location = self.map_asked
         at = location or scenario.location
         origin = "" if location is not None else " (the map option)"
+        # a map that cannot be used leaves the scenario the lanes it asks for: one error, at set_map
+        self.lanes = needed
         if not self.roots.allows(path):
             self.error(
                 at,
                 f"the map {str(path)!r} is outside the folders the tool reads ({self.roots.describe()})",
                 "put the map inside the project, or name its folder with --allow-read",
             )
-            return self.lanes
+            return needed
         asks = self.route_asks
         length = (asks["path_length"][0] or 0.0) if "path_length" in asks else 0.0
         curve = asks["path_curve"][:3] if "path_curve" in asks else None
@@ -119,7 +121,7 @@ class RoadLanes:
         except MapError as error:
             where_in_map = f"{error.path}:{error.line}:{error.column}: " if error.line else f"{error.path}: "
             self.error(at, f"the map{origin}: {where_in_map}{error.message}", error.hint or None)
-            return self.lanes
+            return needed
         lanes = self.route.lanes
         if most and lanes > most[0]:
             self.error(

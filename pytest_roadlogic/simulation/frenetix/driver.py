@@ -267,11 +267,11 @@ class FrenetixDriver:
         target: tuple[np.ndarray, np.ndarray, np.ndarray],
         candidates: list,
         weights: tuple[float, float, float],
-        along: bool = False,
+        rate_along: bool = False,
     ) -> np.ndarray:
         """Mean squared distance from the reference (s of the rear axle, d, v) over the tracked
         window, for all candidates at once (they share the planning horizon, hence the length).
-        ``along``: the speed compared is the rate along the frame's line (on a map's route, whose
+        ``rate_along``: the speed compared is the rate along the frame's line (on a map's route, whose
         plans are in lengths along it: a car in a curve's outer lane drives faster than that rate,
         in its inner lane slower), else the car's own speed."""
         s_ref, d_ref, v_ref = target
@@ -281,7 +281,10 @@ class FrenetixDriver:
         m = n - 1
         s = np.array([a[1:n] for a in along])
         d = np.array([curve.d[1:n] for curve in curves])
-        v = np.array([curve.s_dot[1:n] for curve in curves] if along else [c.cartesian.v[1:n] for c in candidates])
+        if rate_along:
+            v = np.array([curve.s_dot[1:n] for curve in curves])
+        else:
+            v = np.array([c.cartesian.v[1:n] for c in candidates])
         w_s, w_d, w_v = weights
         return (
             w_s * ((s - s_ref[:m]) ** 2).mean(axis=1)
