@@ -14,11 +14,28 @@ from .files import replaced
 COLOURS = ("tab:purple", "tab:red", "tab:blue", "tab:green", "tab:orange", "tab:brown")
 
 
+def _box(axes, x: float, y: float, heading: float, colour: str) -> None:
+    """A vehicle's box at its centre (x, y), turned by ``heading`` (rad)."""
+    from matplotlib.patches import Rectangle
+
+    axes.add_patch(
+        Rectangle(
+            (x - CAR_LENGTH / 2, y - CAR_WIDTH / 2),
+            CAR_LENGTH,
+            CAR_WIDTH,
+            angle=float(heading) * 57.2958,
+            rotation_point="center",
+            facecolor=colour,
+            alpha=0.35,
+            edgecolor=colour,
+        )
+    )
+
+
 def _top_on_map(top, simulation: Simulation, x_min: float, x_max: float, run_indices, lane_number) -> None:
     """The view from above on a map, in its coordinates: the route's lane lines between ``x_min``
     and ``x_max`` (road coordinates), every vehicle's path and its box at the guards' instants."""
     import numpy as np
-    from matplotlib.patches import Rectangle
 
     trace, road = simulation.trace, simulation.road
     xs = np.linspace(x_min, x_max, 400)
@@ -47,18 +64,7 @@ def _top_on_map(top, simulation: Simulation, x_min: float, x_max: float, run_ind
             if not to_scale:
                 top.plot([x], [y], "o", color=colour, alpha=0.6, markersize=6)
                 continue
-            top.add_patch(
-                Rectangle(
-                    (x - CAR_LENGTH / 2, y - CAR_WIDTH / 2),
-                    CAR_LENGTH,
-                    CAR_WIDTH,
-                    angle=float(heading) * 57.2958,
-                    rotation_point="center",
-                    facecolor=colour,
-                    alpha=0.35,
-                    edgecolor=colour,
-                )
-            )
+            _box(top, x, y, heading, colour)
     top.set_aspect("equal" if to_scale else "auto")
     top.set_xlabel("map x [m]")
     top.set_ylabel(f"map y [m] ({road.route.name})")
@@ -73,7 +79,6 @@ def plot_simulation(
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    from matplotlib.patches import Rectangle
 
     trace, road = simulation.trace, simulation.road
     on_map = road.route is not None and trace.on_map
@@ -99,19 +104,7 @@ def plot_simulation(
         top.plot(columns["x"], columns["y"], color=colour, linewidth=1.2, label=name)
         top.text(columns["x"][-1], columns["y"][-1] + 0.6, name, color=colour, fontsize=9, weight="bold")
         for k, _ in run_indices:
-            x, y, heading = columns["x"][k], columns["y"][k], columns["heading"][k]
-            top.add_patch(
-                Rectangle(
-                    (x - CAR_LENGTH / 2, y - CAR_WIDTH / 2),
-                    CAR_LENGTH,
-                    CAR_WIDTH,
-                    angle=float(heading) * 57.2958,
-                    rotation_point="center",
-                    facecolor=colour,
-                    alpha=0.35,
-                    edgecolor=colour,
-                )
-            )
+            _box(top, columns["x"][k], columns["y"][k], columns["heading"][k], colour)
     for number, (k, events) in enumerate(run_indices, start=1):
         time = trace.times[k]
         bottom.axvline(time, color="black", linewidth=0.6, linestyle=":")

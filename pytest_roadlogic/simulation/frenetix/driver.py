@@ -294,11 +294,12 @@ class FrenetixDriver:
 
     def _copy(self, candidate) -> Trajectory:
         # frenetix's arrays are views into memory freed with the sample: copy before keeping
-        if self.road.route is not None:
-            return self._copy_along_route(candidate)
-        heading = np.array(candidate.cartesian.theta, copy=True)
-        rear_x = np.array(candidate.cartesian.x, copy=True)
-        rear_y = np.array(candidate.cartesian.y, copy=True)
+        if self.road.route is None:
+            heading = np.array(candidate.cartesian.theta, copy=True)
+            rear_x = np.array(candidate.cartesian.x, copy=True)
+            rear_y = np.array(candidate.cartesian.y, copy=True)
+        else:
+            rear_x, rear_y, heading = self._along_route(candidate)
         speed = np.array(candidate.cartesian.v, copy=True)
         if self.acceleration_from_speed and len(speed) > 1:
             acceleration = np.gradient(speed, self.dt)
@@ -312,26 +313,14 @@ class FrenetixDriver:
             acceleration=acceleration,
         )
 
-    def _copy_along_route(self, candidate) -> Trajectory:
-        """A candidate in road coordinates: its rear axle's s and d in the frame, its heading less
-        the route's there, the centre half a wheelbase ahead along it."""
+    def _along_route(self, candidate) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """A candidate's rear axle in road coordinates (its s and d in the frame) and its heading
+        less the route's there: on a map, the centre is then half a wheelbase ahead along it."""
         s = np.array(candidate.curvilinear.s, copy=True) + self.s_origin
         d = np.array(candidate.curvilinear.d, copy=True) + self.d_origin
         _, _, along = self.road.world(s, d)
         heading = np.array(candidate.cartesian.theta, copy=True) - along
-        heading = (heading + np.pi) % (2 * np.pi) - np.pi
-        speed = np.array(candidate.cartesian.v, copy=True)
-        if self.acceleration_from_speed and len(speed) > 1:
-            acceleration = np.gradient(speed, self.dt)
-        else:
-            acceleration = np.array(candidate.cartesian.a, copy=True)
-        return Trajectory(
-            x=s + np.cos(heading) * WHEELBASE / 2,
-            y=d + np.sin(heading) * WHEELBASE / 2,
-            heading=heading,
-            speed=speed,
-            acceleration=acceleration,
-        )
+        return s, d, (heading + np.pi) % (2 * np.pi) - np.pi
 
     def _steps(self, trajectory: Trajectory) -> int:
         return min(len(trajectory.x), self.guarded_steps)
