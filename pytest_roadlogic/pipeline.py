@@ -190,16 +190,27 @@ def guided_planning(
     (``asp/continuous/route.lp``), and one whose speed the scenario leaves open starts at most at
     the map's speed limit."""
     if scenario.route is not None and hasattr(settings, "route_span"):
-        from .roads.route import ROUTE_MARGIN, curve_speed
+        from .roads.route import MAX_LATERAL_ACCELERATION, ROUTE_MARGIN, curve_speed
 
         route = scenario.route
         low, high = settings.road_speed
         if route.speed_limit is not None:  # where the scenario names no speed, the road's are at most its limit
             low, high = min(low, route.speed_limit), min(high, route.speed_limit)
+        bend = curve_speed(route)
+        reasons = ()
+        if bend < settings.max_speed:
+            reasons = (
+                (
+                    "max_speed",
+                    f"the sharpest curve of {route.name}, radius {1 / route.greatest_curvature():.0f} m, at "
+                    f"{MAX_LATERAL_ACCELERATION:g} m/s^2 of lateral acceleration",
+                ),
+            )
         settings = dataclasses.replace(
             settings,
             road_speed=(low, high),
-            max_speed=min(settings.max_speed, curve_speed(route)),
+            max_speed=min(settings.max_speed, bend),
+            limit_reasons=reasons,
             route_span=(ROUTE_MARGIN, route.length - ROUTE_MARGIN),
             lane_spans=tuple((lane, first, last) for lane, (first, last) in sorted(route.spans().items())),
         )

@@ -305,6 +305,8 @@ def test_on_a_map_the_planner_knows_the_curve_speed_the_speed_limit_and_where_ea
     scenario = load_scenario(scenario_file(tmp_path, "s.xodr"))
     _, settings, _ = guided_planning(scenario, build_automaton(scenario), None, settings_for(RunSettings()), 1)
     assert settings.max_speed == pytest.approx(math.sqrt(MAX_LATERAL_ACCELERATION * 400.0))
+    # a message naming the top speed says where it comes from
+    assert dict(settings.limit_reasons)["max_speed"].startswith("the sharpest curve of road 1 of s.xodr, radius 400 m")
     assert settings.road_speed[1] == pytest.approx(100 / 3.6)  # the map's limit, 100 km/h
     assert settings.route_span == (30.0, 970.0) and settings.lane_spans == ()
     ramp = load_scenario(ROOT / "scenarios" / "roads" / "merge_from_ramp.osc")

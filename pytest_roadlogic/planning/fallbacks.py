@@ -63,8 +63,11 @@ def with_limits_relaxed(settings, names=None):
 
 
 def relaxed_names(settings, names=None) -> list[str]:
+    """Each relaxed limit with its value and what it was relaxed to, and why it was that value
+    when the settings say (``limit_reasons``: a map's curve bounding the top speed)."""
+    reasons = dict(getattr(settings, "limit_reasons", ()))
     return [
-        f"{name} {getattr(settings, name):g} {unit} relaxed to {value:g}"
+        f"{name} {getattr(settings, name):g} {unit}{f' ({reasons[name]})' if name in reasons else ''} relaxed to {value:g}"
         for name, value, unit in RELAXED_LIMITS
         if names is None or name in names
     ]

@@ -63,6 +63,8 @@ class ContinuousSettings:
     # the route); None: the straight road, as long as the scenario needs
     route_span: tuple[float, float] | None = None
     lane_spans: tuple[tuple[int, float, float], ...] = ()
+    # why a limit has the value it has when not a car's own: (field, why), for the messages
+    limit_reasons: tuple[tuple[str, str], ...] = ()
     max_horizon: int = CONTINUOUS_HORIZON  # steps
     time_limit: float = 60.0  # seconds for one solve, all horizons together
     # how the linear constraints are kept: "lazy" checks each complete choice with HiGHS and learns
