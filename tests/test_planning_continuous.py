@@ -449,3 +449,23 @@ def test_a_gap_in_one_lane_that_the_scenario_asks_closer_than_the_tools_spacing_
     gap = plan.states["lead"][-1].position - plan.states["tail"][-1].position
     assert 5.0 <= gap <= 7.0, gap
     assert plan.states["lead"][-1].lane == plan.states["tail"][-1].lane
+
+
+def test_a_conflict_with_a_phases_mean_acceleration_is_explained_naming_it_not_a_traceback():
+    # lead_brake at a sample whose lead must lose 9.2 m/s in a 4.1 s phase braking at most 6 m/s^2
+    # within the planner's jerk: the explanation named every constraint but this one's kind, and
+    # raised AttributeError instead (found by benchmarks/roads.py)
+    from pytest_roadlogic.pipeline import run_instances
+    from pytest_roadlogic.planning import NoPlanError
+
+    scenario = load_scenario(ROOT / "scenarios" / "realistic" / "lead_brake.osc")
+    values = {
+        "headway": 1.9,
+        "initial": 19.9,
+        "follow.duration": 8.2,
+        "brake.duration": 4.1,
+        "lead.change_speed.target": 10.7,
+    }
+    with pytest.raises(NoPlanError) as caught:
+        next(run_instances(scenario, 1, seed=1, values=values, max_tries=1))
+    assert "mean acceleration of lead over lead.change_speed in -6..-3 m/s^2" in str(caught.value)

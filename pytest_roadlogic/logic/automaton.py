@@ -65,6 +65,12 @@ class PhaseBound:
         over = f" over {self.phase}" if self.phase else ""
         return f"{self.what} of {self.actor}{over} in {self.low:g}..{self.high:g} {self.unit}"
 
+    @property
+    def as_written(self) -> str:
+        """How a message names this bound (as ``Bound.as_written``): a conflict's explanation
+        names every constraint so, a phase's mean acceleration or distance among them."""
+        return str(self)
+
 
 @dataclass(frozen=True)
 class MeanAcceleration(PhaseBound):
