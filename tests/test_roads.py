@@ -351,3 +351,22 @@ def test_path_curve_without_a_map_is_an_error_at_it(tmp_path):
     checked = check_file(write(tmp_path / "curve.osc", text))
     errors = [d for d in checked.diagnostics if d.severity == "error"]
     assert errors and errors[0].location.line == 6 and "straight road" in errors[0].message
+
+
+def test_the_animation_of_a_run_on_a_curve_draws_the_road_bending(tmp_path):
+    from PIL import Image
+
+    from pytest_roadlogic.artifacts.animation import LINE, PALETTE, animate_simulation
+    from pytest_roadlogic.pipeline import load_scenario, run_scenario
+
+    (tmp_path / "curved.xodr").write_bytes((MAPS / "curved_highway.xodr").read_bytes())
+    outcome = run_scenario(load_scenario(scenario_file(tmp_path, "curved.xodr")), seed=1)
+    gif = animate_simulation(outcome.simulation, outcome.verdict, tmp_path / "run.gif")
+    image = Image.open(gif)
+    image.seek(image.n_frames // 2)
+    grey = (np.array(image.convert("RGB")) == PALETTE[LINE]).all(axis=2)
+    # the road's left edge, the first line's row by column: in a left curve turned level at the
+    # centre, it rises toward both ends of the view
+    top = [int(np.argmax(grey[:, column])) for column in (5, grey.shape[1] // 2, grey.shape[1] - 5)]
+    assert all(grey[row, column] for row, column in zip(top, (5, grey.shape[1] // 2, grey.shape[1] - 5)))
+    assert top[0] < top[1] - 3 and top[2] < top[1] - 3, top
