@@ -370,3 +370,13 @@ def test_the_animation_of_a_run_on_a_curve_draws_the_road_bending(tmp_path):
     top = [int(np.argmax(grey[:, column])) for column in (5, grey.shape[1] // 2, grey.shape[1] - 5)]
     assert all(grey[row, column] for row, column in zip(top, (5, grey.shape[1] // 2, grey.shape[1] - 5)))
     assert top[0] < top[1] - 3 and top[2] < top[1] - 3, top
+
+
+def test_past_the_ends_of_a_route_the_road_runs_on_straight_with_its_end_lanes():
+    route = pick_route(read_map(MAPS / "curved_highway.xodr"), 3)
+    x, y, heading = route.reference_line.pose(np.array([route.length, route.length + 50.0]))
+    assert heading[1] == pytest.approx(heading[0])
+    assert math.hypot(x[1] - x[0], y[1] - y[0]) == pytest.approx(50.0)
+    assert route.right_edge([-20.0, route.length + 80.0]) == pytest.approx([0.0, 0.0])
+    drop = pick_route(read_map(MAPS / "lane_drop.xodr"), 3)
+    assert drop.right_edge([drop.length + 80.0]) == pytest.approx([3.5])  # two lanes on past the drop

@@ -136,10 +136,16 @@ class ReferenceLine:
         return self.samples["all"]
 
     def pose(self, s, t=0.0) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """World x, y and heading of the points ``t`` metres left of the line at lengths ``s``."""
+        """World x, y and heading of the points ``t`` metres left of the line at lengths ``s``;
+        before its start and past its end the line runs on straight (as the simulation's road)."""
         line_s, x, y, heading, _ = self.sampled()
-        h = np.interp(s, line_s, heading)
-        return np.interp(s, line_s, x) - np.sin(h) * t, np.interp(s, line_s, y) + np.cos(h) * t, h
+        s = np.asarray(s, dtype=float)
+        inside = np.clip(s, line_s[0], line_s[-1])
+        h = np.interp(inside, line_s, heading)
+        beyond = s - inside
+        px = np.interp(inside, line_s, x) + np.cos(h) * beyond
+        py = np.interp(inside, line_s, y) + np.sin(h) * beyond
+        return px - np.sin(h) * t, py + np.cos(h) * t, h
 
     def curvature(self, s) -> np.ndarray:
         line_s, _, _, _, curvature = self.sampled()

@@ -98,8 +98,10 @@ class Route:
 
     def lane_width_at(self, lane: int, s) -> np.ndarray:
         """The width of ``lane`` (0 at the reference line) at lengths ``s`` along the route (0 where
-        it does not exist, or is not a driving lane)."""
-        s = np.atleast_1d(np.asarray(s, dtype=float))
+        it does not exist, or is not a driving lane). Before its start and past its end the route's
+        first and last lanes run on, as the simulation's road does (a vehicle's last seconds may
+        take it past the end of the map)."""
+        s = np.clip(np.atleast_1d(np.asarray(s, dtype=float)), 0.0, self.length)
         width = np.zeros_like(s)
         for section in self.sections:
             inside = (s >= section.s - 1e-9) & (s <= section.end + 1e-9)

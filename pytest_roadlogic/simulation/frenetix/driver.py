@@ -24,7 +24,8 @@ def _coordinate_system(road: Road):
 
     On the straight road, the line y = 0 (the right road edge), d being y. On a map, the route's
     reference line (its lanes' left edge), sampled every metre and run on straight 100 m before its
-    start and 200 m past its end, d being y less the lanes' width. Building one costs tens of
+    start and 500 m past its end (a run goes on a few seconds past its plan), d being y less the
+    lanes' width. Building one costs tens of
     milliseconds, so it is built once per road extent.
     """
     import frenetix
@@ -38,11 +39,8 @@ def _coordinate_system(road: Road):
             _COORDINATE_SYSTEMS[key] = (frenetix.CoordinateSystemWrapper(path), float(xs[0]), 0.0)
         else:
             route = road.route
-            before, after = 100.0, 200.0
-            s = np.arange(-before, route.length + after + 0.5, 1.0)
-            inside = np.clip(s, 0.0, route.length)
-            x, y, heading = route.reference_line.pose(inside)
-            x, y = x + np.cos(heading) * (s - inside), y + np.sin(heading) * (s - inside)
+            before, after = 100.0, 500.0
+            x, y, _ = route.reference_line.pose(np.arange(-before, route.length + after + 0.5, 1.0))
             path = np.stack([x, y], axis=1)
             _COORDINATE_SYSTEMS[key] = (
                 frenetix.CoordinateSystemWrapper(path),
