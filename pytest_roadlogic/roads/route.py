@@ -79,6 +79,10 @@ class Route:
         """World x, y and heading of the route's points (``x`` along, ``y`` left of its lanes' right edge)."""
         return self.reference_line.pose(np.asarray(x, dtype=float), np.asarray(y, dtype=float) - self.width)
 
+    def curvature(self, s) -> np.ndarray:
+        """The reference line's curvature (1/m, positive to the left) at lengths ``s`` along the route."""
+        return self.reference_line.curvature(np.clip(np.asarray(s, dtype=float), 0.0, self.length))
+
     def spans(self) -> dict[int, tuple[float, float]]:
         """Where a car's centre may be in each lane that begins or ends on the route: where the lane
         is at least ``USABLE_WIDTH`` wide, less half a car (``HALF_CAR``) at each end: lane ->

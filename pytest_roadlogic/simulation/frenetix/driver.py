@@ -166,22 +166,20 @@ class FrenetixDriver:
             return onward
         self._committed = None
         low = bool(state.speed < self.low_velocity)
+        speed, acceleration = state.speed, state.acceleration
         if self.road.route is None:
             heading = state.heading
             rear = np.array([state.x - np.cos(heading) * WHEELBASE / 2, state.y - np.sin(heading) * WHEELBASE / 2])
-        else:  # the rear axle mapped onto the map, turned as the route is there (as _copy_along_route reads it)
-            x, y, heading = (
-                float(v)
-                for v in self.road.world(
-                    state.x - np.cos(state.heading) * WHEELBASE / 2,
-                    state.y - np.sin(state.heading) * WHEELBASE / 2,
-                    state.heading,
-                )
-            )
+        else:
+            # the rear axle mapped onto the map, turned as the route is there (as _along_route reads
+            # it), and the car's own speed from its rate along the route (road coordinates' speed)
+            rear_x = state.x - np.cos(state.heading) * WHEELBASE / 2
+            rear_y = state.y - np.sin(state.heading) * WHEELBASE / 2
+            x, y, heading = (float(v) for v in self.road.world(rear_x, rear_y, state.heading))
             rear = np.array([x, y])
-        cartesian = frenetix.CartesianPlannerState(
-            rear, float(heading), float(state.speed), float(state.acceleration), 0.0
-        )
+            factor = self._own_speed_factor(rear_x, rear_y, state.heading)
+            speed, acceleration = speed * factor, acceleration * factor
+        cartesian = frenetix.CartesianPlannerState(rear, float(heading), float(speed), float(acceleration), 0.0)
         initial = frenetix.compute_initial_state(
             coordinate_system=self.coordinates, x_0=cartesian, wheelbase=WHEELBASE, low_velocity_mode=low
         )
@@ -296,9 +294,10 @@ class FrenetixDriver:
             heading = np.array(candidate.cartesian.theta, copy=True)
             rear_x = np.array(candidate.cartesian.x, copy=True)
             rear_y = np.array(candidate.cartesian.y, copy=True)
-        else:
+            speed = np.array(candidate.cartesian.v, copy=True)
+        else:  # on a map, road coordinates: the speed is the rate along the route
             rear_x, rear_y, heading = self._along_route(candidate)
-        speed = np.array(candidate.cartesian.v, copy=True)
+            speed = np.array(candidate.curvilinear.s_dot, copy=True)
         if self.acceleration_from_speed and len(speed) > 1:
             acceleration = np.gradient(speed, self.dt)
         else:
@@ -310,6 +309,13 @@ class FrenetixDriver:
             speed=speed,
             acceleration=acceleration,
         )
+
+    def _own_speed_factor(self, x: float, y: float, heading: float) -> float:
+        """A car's own speed over its rate along the route, at road coordinates (x, y) turned by
+        ``heading``: faster in a curve's outer lanes, slower in its inner ones."""
+        route = self.road.route
+        curvature = float(route.curvature(x + self.road.route_shift))
+        return (1.0 - curvature * (y - route.width)) / max(float(np.cos(heading)), 0.5)
 
     def _along_route(self, candidate) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """A candidate's rear axle in road coordinates (its s and d in the frame) and its heading
