@@ -30,8 +30,8 @@ HALF_CAR = 3.0  # m: half a car's 4.5 m and some
 ROUTE_MARGIN = 30.0
 # m/s^2 of lateral acceleration a planned car holds in a curve (0.2 g: 114 kph in a 500 m curve).
 # Measured (benchmarks/roads.py, the paper's seven on curved_highway.xodr, 10 samples each, one
-# try): at 3 m/s^2 (139 kph) 65 of 70 accepted, the overtakes' passing cars lagging their plans in
-# the curve's outer lane; at 2 m/s^2 see docs/roads.md
+# try): 70 of 70 accepted at 2 m/s^2, 64 of 70 at 3 m/s^2 (139 kph: the passing cars of the
+# overtakes lag their plans at those speeds in the curve); docs/evaluation.md
 MAX_LATERAL_ACCELERATION = 2.0
 
 
