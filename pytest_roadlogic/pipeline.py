@@ -213,6 +213,7 @@ def guided_planning(
             limit_reasons=reasons,
             route_span=(ROUTE_MARGIN, route.length - ROUTE_MARGIN),
             lane_spans=tuple((lane, first, last) for lane, (first, last) in sorted(route.spans().items())),
+            origin_span=route.start_within,
         )
     if not values:
         return (lambda planner_settings: specification), settings, seed

@@ -380,3 +380,19 @@ def test_past_the_ends_of_a_route_the_road_runs_on_straight_with_its_end_lanes()
     assert route.right_edge([-20.0, route.length + 80.0]) == pytest.approx([0.0, 0.0])
     drop = pick_route(read_map(MAPS / "lane_drop.xodr"), 3)
     assert drop.right_edge([drop.length + 80.0]) == pytest.approx([3.5])  # two lanes on past the drop
+
+
+def test_a_scenario_that_asks_for_a_curve_starts_in_it(tmp_path):
+    from pytest_roadlogic.pipeline import load_scenario, run_scenario
+
+    (tmp_path / "s.xodr").write_bytes((MAPS / "s_curve.xodr").read_bytes())
+    asks = "path.path_curve(min_radius: 300m, max_radius: 450m, side: right)"
+    text = SCENARIO.format(map="s.xodr", ego_lane=1).replace(
+        '    path.set_map("s.xodr")\n', f'    path.set_map("s.xodr")\n    {asks}\n'
+    )
+    scenario = load_scenario(write(tmp_path / "right.osc", text))
+    first, last = scenario.route.start_within
+    assert first == pytest.approx(400.0, abs=1.0) and last == pytest.approx(650.0, abs=1.0)  # the right-hand arc
+    outcome = run_scenario(scenario, seed=1)
+    assert outcome.verdict.accepted, outcome.verdict.explain()
+    assert first - 1e-6 <= outcome.plan.origin <= last + 1e-6

@@ -49,6 +49,9 @@ class Route:
     lanes: int
     lane_width: float
     opendrive: bytes = field(default=b"", repr=False, compare=False)  # the map's file as read
+    # where the scenario starts (its first vehicle's first position, metres along the route), when
+    # it asks for a curve (path_curve): that curve's stretch; None: anywhere that fits
+    start_within: tuple[float, float] | None = None
 
     @property
     def name(self) -> str:
@@ -167,20 +170,26 @@ def describe(road: MapRoad) -> str:
     return f"{road.label}: {through} driving lanes over {road.length:g} m{extra}{bends}"
 
 
-def _has_curve(road: MapRoad, curve: tuple[float | None, float | None, str | None]) -> bool:
-    """Whether the road bends somewhere with a radius between ``curve``'s (metres; None: no bound),
-    to its side (left, right; None: either)."""
+def curve_stretch(road: MapRoad, curve: tuple[float | None, float | None, str | None]) -> tuple[float, float] | None:
+    """The longest stretch of the road (first, last metre along it) that bends with a radius
+    between ``curve``'s (metres; None: no bound) to its side (left, right; None: either); None
+    when it has none."""
     low, high, side = curve
-    _, _, _, _, curvature = road.reference_line.sampled()
+    s, _, _, _, curvature = road.reference_line.sampled()
+    best = None
     for name, sign in (("left", 1.0), ("right", -1.0)):
         if side not in (None, name):
             continue
         bending = sign * curvature
         radius = np.where(bending > 1e-9, 1.0 / np.maximum(bending, 1e-12), np.inf)
         inside = np.isfinite(radius) & (radius >= (low or 0.0) - 1e-6) & (radius <= (high or np.inf) + 1e-6)
-        if inside.any():
-            return True
-    return False
+        # runs of consecutive samples inside: (start index, end index)
+        edges = np.flatnonzero(np.diff(np.concatenate([[0], inside.astype(int), [0]])))
+        for start, end in zip(edges[::2], edges[1::2]):
+            stretch = (float(s[start]), float(s[end - 1]))
+            if best is None or stretch[1] - stretch[0] > best[1] - best[0]:
+                best = stretch
+    return best
 
 
 def pick_route(
@@ -200,7 +209,7 @@ def pick_route(
         if road.junction not in ("", "-1"):
             continue
         _, most = _through_lanes(road)
-        if most >= lanes and road.length >= length and (curve is None or _has_curve(road, curve)):
+        if most >= lanes and road.length >= length and (curve is None or curve_stretch(road, curve) is not None):
             fitting.append((road.length, road))
     if not fitting:
         lines = "; ".join(describe(road) for road in road_map.roads.values())
@@ -217,4 +226,5 @@ def pick_route(
     _, road = max(fitting, key=lambda item: (item[0], -int(item[1].id) if item[1].id.isdigit() else 0))
     widest = max(road.sections, key=lambda section: len(section.right))
     width = float(widest.right[0].width(0.0))
-    return Route(road_map.path, road, _through_lanes(road)[1], width, road_map.data)
+    stretch = curve_stretch(road, curve) if curve is not None else None
+    return Route(road_map.path, road, _through_lanes(road)[1], width, road_map.data, stretch)

@@ -59,6 +59,7 @@ def build_continuous_instance(
         f"lane_change_gap({s.lane_change_gap}).",
         *([f"route_span({number(s.route_span[0])},{number(s.route_span[1])})."] if s.route_span else []),
         *(f"lane_span({lane},{number(first)},{number(last)})." for lane, first, last in s.lane_spans),
+        *([f"origin_span({number(s.origin_span[0])},{number(s.origin_span[1])})."] if s.origin_span else []),
         "",
     ]
     return with_automaton(

@@ -63,6 +63,9 @@ class ContinuousSettings:
     # the route); None: the straight road, as long as the scenario needs
     route_span: tuple[float, float] | None = None
     lane_spans: tuple[tuple[int, float, float], ...] = ()
+    # where the plan's position 0 (its first vehicle's start) lies along the route, when the
+    # scenario asks for a curve (path_curve); None: anywhere the route_span allows
+    origin_span: tuple[float, float] | None = None
     # why a limit has the value it has when not a car's own: (field, why), for the messages
     limit_reasons: tuple[tuple[str, str], ...] = ()
     max_horizon: int = CONTINUOUS_HORIZON  # steps
