@@ -117,6 +117,12 @@ def test_a_map_with_a_document_type_is_refused_at_it_and_no_entity_is_read(tmp_p
             2,
             "lane offset",
         ),
+        (
+            "<OpenDRIVE>\n<road id='1' length='1e12'><planView><geometry s='0' x='0' y='0' hdg='0' length='1e12'>"
+            "<line/></geometry></planView></road></OpenDRIVE>",
+            2,
+            "a road 1e+12 m long",
+        ),
     ],
 )
 def test_a_map_that_cannot_be_read_is_refused_naming_its_line(tmp_path, body, line, words):
@@ -396,3 +402,16 @@ def test_a_scenario_that_asks_for_a_curve_starts_in_it(tmp_path):
     outcome = run_scenario(scenario, seed=1)
     assert outcome.verdict.accepted, outcome.verdict.explain()
     assert first - 1e-6 <= outcome.plan.origin <= last + 1e-6
+
+
+def test_a_broken_map_is_a_located_collection_error_and_the_other_files_still_run(pytester):
+    (pytester.path / "bad.xodr").write_text("<OpenDRIVE>\n<road id='1' length='oops'/></OpenDRIVE>\n")
+    plain = SCENARIO.replace('    path.set_map("{map}")\n', "").format(ego_lane=1)
+    pytester.makefile(
+        ".osc", good=plain, broken=SCENARIO.format(map="bad.xodr", ego_lane=1).replace("curve:", "broken:")
+    )
+    result = pytester.runpytest_subprocess("--roadlogic-examples", "2", "-p", "no:cacheprovider")
+    result.assert_outcomes(passed=1, errors=1)
+    out = result.stdout.str()
+    assert "broken.osc:6:" in out and "bad.xodr:2:" in out and "is not a number" in out
+    assert "Traceback" not in out + result.stderr.str()

@@ -22,6 +22,9 @@ from xml.parsers import expat
 from .reference_line import Geometry, ReferenceLine
 
 MAX_BYTES = 50_000_000  # a larger file is refused unread
+# m: a longer road or geometry is refused (a road is sampled every half metre: a crafted length of
+# 1e12 m would be two trillion samples, a hang rather than a message)
+MAX_LENGTH = 100_000.0
 
 
 class MapError(Exception):
@@ -214,6 +217,10 @@ def _number(path: Path, element: _Element, name: str, default: float | None = No
 
 def _road(path: Path, element: _Element) -> MapRoad:
     length = _number(path, element, "length")
+    if not 0 < length <= MAX_LENGTH:
+        raise MapError(
+            path, f"a road {length:g} m long", f"a road is 0 to {MAX_LENGTH:g} m long", element.line, element.column
+        )
     plan_view = element.find("planView")
     if plan_view is None or not plan_view.findall("geometry"):
         raise MapError(path, "a road without a planView geometry", "give its reference line", element.line)
@@ -283,8 +290,14 @@ def _geometry(path: Path, element: _Element) -> Geometry:
         heading=_number(path, element, "hdg"),
         length=_number(path, element, "length"),
     )
-    if common["length"] <= 0:
-        raise MapError(path, "a geometry of no length", "give length > 0", element.line, element.column)
+    if not 0 < common["length"] <= MAX_LENGTH:
+        raise MapError(
+            path,
+            f"a geometry {common['length']:g} m long",
+            f"give a length above 0 and at most {MAX_LENGTH:g} m",
+            element.line,
+            element.column,
+        )
     shape = element.children[0] if element.children else None
     kind = shape.tag if shape is not None else ""
     if kind == "line":
