@@ -415,3 +415,23 @@ def test_a_broken_map_is_a_located_collection_error_and_the_other_files_still_ru
     out = result.stdout.str()
     assert "broken.osc:6:" in out and "bad.xodr:2:" in out and "is not a number" in out
     assert "Traceback" not in out + result.stderr.str()
+
+
+def test_the_artifacts_of_a_run_on_a_map_are_on_it(tmp_path):
+    import json
+
+    from pytest_roadlogic.artifacts.writer import write_artifacts
+    from pytest_roadlogic.pipeline import load_scenario, run_scenario
+
+    outcome = run_scenario(load_scenario(ROOT / "scenarios" / "roads" / "merge_from_ramp.osc"), seed=1)
+    write_artifacts(outcome, tmp_path / "out", animation=False)
+    out = tmp_path / "out"
+    assert (out / "road.xodr").read_bytes() == (MAPS / "on_ramp.xodr").read_bytes()
+    verdict = json.loads((out / "verdict.json").read_text())
+    assert verdict["map"]["road"] == "1" and verdict["map"]["origin_m"] == pytest.approx(outcome.plan.origin)
+    assert (out / "trace.csv").read_text().splitlines()[0].endswith("world_x,world_y,world_heading")
+    # CommonRoad: the lanelets run along the route, in the map's coordinates
+    xml = (out / "scenario.xml").read_text()
+    assert xml.count("<lanelet ") == outcome.simulation.road.lanes
+    plan = json.loads((out / "plan.json").read_text())
+    assert plan["origin"] == pytest.approx(outcome.plan.origin)

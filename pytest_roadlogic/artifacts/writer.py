@@ -39,6 +39,18 @@ def write_artifacts(outcome: SimulatedInstance, directory: str | Path, animation
         "goals": {v: [g.reached_at for g in records] for v, records in outcome.simulation.goals.items()},
         "seconds": outcome.seconds,
         **outcome.verdict.to_dict(),
+        # on a map: which, the road the route runs along, and the metres along it of the plan's position 0
+        **(
+            {
+                "map": {
+                    "file": str(outcome.simulation.road.route.source),
+                    "road": outcome.simulation.road.route.road.id,
+                    "origin_m": round(outcome.simulation.road.route_shift, 3),
+                }
+            }
+            if outcome.simulation.road.route is not None
+            else {}
+        ),
         # did the vehicle under test fail: every oracle's value, failed or not (oracles.DutReport)
         **({"vehicle_under_test": outcome.dut.values()} if outcome.dut is not None else {}),
         # the reactive execution's replans: when, how long each took, whether it found a plan and why
