@@ -168,6 +168,10 @@ def _reactive(plan: Plan, guide: Guide, settings, seed: int, dut: str | None, un
     from .reactive import ReactiveExecution, Replanner
 
     planned_with = settings_of(plan, settings)
+    if plan.origin is not None and hasattr(planned_with, "origin_span"):
+        # on a map the scenario stays where the simulation has it: a replan's positions are the
+        # plan's, from the same place on the route
+        planned_with = dataclasses.replace(planned_with, origin_span=(plan.origin, plan.origin))
     return ReactiveExecution(Replanner(guide(planned_with), planned_with, seed, dut), plan, under_test.replan_period)
 
 

@@ -435,3 +435,19 @@ def test_the_artifacts_of_a_run_on_a_map_are_on_it(tmp_path):
     assert xml.count("<lanelet ") == outcome.simulation.road.lanes
     plan = json.loads((out / "plan.json").read_text())
     assert plan["origin"] == pytest.approx(outcome.plan.origin)
+
+
+def test_on_a_curve_a_car_the_plan_holds_still_stays_still_and_a_vehicle_under_test_is_replanned_in_place():
+    from pytest_roadlogic.dut import UnderTest
+    from pytest_roadlogic.pipeline import load_scenario, run_instances
+
+    scenario = load_scenario(ROOT / "scenarios" / "dut" / "cut_out.osc", road_map=MAPS / "curved_highway.xodr")
+    outcome = next(run_instances(scenario, 1, seed=1, under_test=UnderTest(), max_tries=1))
+    assert outcome.verdict.accepted and not outcome.dut.failed, outcome.verdict.explain()
+    wreck = outcome.simulation.trace.actors["wreck"]
+    # (its planned start speed, 0.05 m/s, is its first sample's; held, it stands from then on)
+    assert float(np.abs(wreck["speed"][1:]).max()) == 0.0 and float(np.ptp(wreck["x"])) == 0.0
+    replans = outcome.simulation.replans
+    assert replans and all(r.plan is not None for r in replans)
+    # every replan keeps the scenario where the simulation has it on the route
+    assert {r.plan.origin for r in replans} == {outcome.plan.origin}

@@ -89,7 +89,7 @@ def drive_in_lockstep(
         road = dataclasses.replace(road, route=plan.route, route_shift=shift)
     active: dict[str, Driver] = {}
     for vehicle, reference in refs.items():
-        if vehicle in plan.stationary:
+        if vehicle in plan.stationary or (road.route is not None and _held_still(reference)):
             driver = StationaryDriver()
         else:
             driver = (drivers(vehicle) if drivers else None) or default()
@@ -178,6 +178,17 @@ def drive_in_lockstep(
         {v: g.records for v, g in goals.items()},
         list(getattr(react, "replans", [])),
     )
+
+
+def _held_still(reference: Reference) -> bool:
+    """Whether a plan holds a vehicle at a standstill throughout (``remain_stationary``). On a map
+    such a car is held, not driven: frenetix lets a car standing in a curve creep (0.1 m/s, 0.3 m
+    in 10 s in the 500 m curve; none on the straight road, where it keeps driving them)."""
+    return all(abs(w.speed) < STILL for w in reference.waypoints)
+
+
+# m/s below which a planned vehicle counts as standing still (remain_stationary's bound is 0.1)
+STILL = 0.2
 
 
 def _merge(incidents: list[Incident]) -> list[Incident]:
