@@ -20,7 +20,7 @@ from .dut import UnderTest
 from .frontend import CheckedScenario, load_file
 from .monitor import Verdict, monitor
 from .oracles import DutReport, judge
-from .planning import Plan, PlannerSettings, settings_for
+from .planning import NoPlanError, Plan, PlannerSettings, settings_for
 from .planning.fallbacks import Guide, planned, tool_limit
 from .sampling import guided, sample_seed
 from .settings import DEFAULT_SIM_TIMEOUT, RunSettings
@@ -189,36 +189,16 @@ def guided_planning(
     plus the 3-5 s lane change) was moved to 6.5-7.5 s, where a plan at 6.5 s exists, and reported
     as a value the scenario meets (measured before this).
 
-    On a map, no vehicle is planned faster than the route's sharpest curve lets a car hold
-    (``roads.curve_speed``), each stays on the route and in a lane only where it is
-    (``asp/continuous/route.lp``), and one whose speed the scenario leaves open starts at most at
-    the map's speed limit."""
-    if scenario.route is not None and hasattr(settings, "route_span"):
-        from .roads.route import MAX_LATERAL_ACCELERATION, ROUTE_MARGIN, curve_speed
-
-        route = scenario.route
-        low, high = settings.road_speed
-        if route.speed_limit is not None:  # where the scenario names no speed, the road's are at most its limit
-            low, high = min(low, route.speed_limit), min(high, route.speed_limit)
-        bend = curve_speed(route)
-        reasons = ()
-        if bend < settings.max_speed:
-            reasons = (
-                (
-                    "max_speed",
-                    f"the sharpest curve of {route.name}, radius {1 / route.greatest_curvature():.0f} m, at "
-                    f"{MAX_LATERAL_ACCELERATION:g} m/s^2 of lateral acceleration",
-                ),
+    On a map, the settings are the encoding's for the scenario's route (``on_route``); an
+    encoding without that (the grid's) cannot plan on a map, and says so rather than plan a
+    straight road the simulation would then drive on the map."""
+    if scenario.route is not None:
+        if not hasattr(settings, "on_route"):
+            raise NoPlanError(
+                f"the {getattr(settings, 'encoding', 'chosen')} encoding plans on one straight road: "
+                f"{scenario.route.name} needs the continuous encoding (leave out the encoding option)"
             )
-        settings = dataclasses.replace(
-            settings,
-            road_speed=(low, high),
-            max_speed=min(settings.max_speed, bend),
-            limit_reasons=reasons,
-            route_span=(ROUTE_MARGIN, route.length - ROUTE_MARGIN),
-            lane_spans=tuple((lane, first, last) for lane, (first, last) in sorted(route.spans().items())),
-            origin_span=route.start_within,
-        )
+        settings = settings.on_route(scenario.route)
     if not values:
         return (lambda planner_settings: specification), settings, seed
     guides: dict[tuple, SymbolicAutomaton] = {}

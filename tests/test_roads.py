@@ -451,3 +451,14 @@ def test_on_a_curve_a_car_the_plan_holds_still_stays_still_and_a_vehicle_under_t
     assert replans and all(r.plan is not None for r in replans)
     # every replan keeps the scenario where the simulation has it on the route
     assert {r.plan.origin for r in replans} == {outcome.plan.origin}
+
+
+def test_the_grid_encoding_on_a_map_has_no_plan_and_says_why_rather_than_plan_a_straight_road():
+    from pytest_roadlogic.pipeline import load_scenario, run_scenario
+    from pytest_roadlogic.planning import NoPlanError, settings_for
+    from pytest_roadlogic.settings import RunSettings
+
+    scenario = load_scenario(ROOT / "scenarios" / "roads" / "merge_from_ramp.osc")
+    with pytest.raises(NoPlanError) as caught:
+        run_scenario(scenario, seed=1, settings=settings_for(RunSettings(encoding="grid")))
+    assert "needs the continuous encoding" in str(caught.value)

@@ -101,6 +101,36 @@ class ContinuousSettings:
     # the high one
     drift_speeds: tuple[float, float] = (2.0, 40.0)
 
+    def on_route(self, route) -> ContinuousSettings:
+        """These settings for a scenario on a map's ``route`` (``roads.Route``): no vehicle faster
+        than the route's sharpest curve lets a car hold (``roads.route.curve_speed``), each on the
+        route and in a lane only where it is (``asp/continuous/route.lp``), the scenario starting in
+        the curve it asks for, and a start speed the scenario leaves open at most the map's limit."""
+        from ....roads.route import MAX_LATERAL_ACCELERATION, ROUTE_MARGIN, curve_speed
+
+        low, high = self.road_speed
+        if route.speed_limit is not None:
+            low, high = min(low, route.speed_limit), min(high, route.speed_limit)
+        bend = curve_speed(route)
+        reasons = ()
+        if bend < self.max_speed:
+            reasons = (
+                (
+                    "max_speed",
+                    f"the sharpest curve of {route.name}, radius {1 / route.greatest_curvature():.0f} m, at "
+                    f"{MAX_LATERAL_ACCELERATION:g} m/s^2 of lateral acceleration",
+                ),
+            )
+        return replace(
+            self,
+            road_speed=(low, high),
+            max_speed=min(self.max_speed, bend),
+            limit_reasons=reasons,
+            route_span=(ROUTE_MARGIN, route.length - ROUTE_MARGIN),
+            lane_spans=tuple((lane, first, last) for lane, (first, last) in sorted(route.spans().items())),
+            origin_span=route.start_within,
+        )
+
     def resolution(self) -> dict[str | None, float]:
         """How wide a band a sampled value is narrowed to, per physical dimension, the band the
         plan may use (the planner keeps no margin inside it: ``SymbolicAutomaton.sampled``):
