@@ -39,11 +39,10 @@ class Road:
         return min(self.lanes - 1, max(0, index))
 
     def on_road(self, corners: np.ndarray) -> bool:
+        """Whether a box's ``corners`` lie between the road's edges (the right one moves where a
+        map's lanes begin or end)."""
         ys = corners[:, 1]
-        if self.route is not None:  # on a map, where lanes begin or end the right edge moves
-            edge = self.right_edge(corners[:, 0])
-            return bool((ys >= edge - 0.05).all() and ys.max() <= self.width + 0.05)
-        return bool(ys.min() >= -0.05 and ys.max() <= self.width + 0.05)
+        return bool((ys >= self.right_edge(corners[:, 0]) - 0.05).all() and ys.max() <= self.width + 0.05)
 
     def right_edge(self, x) -> np.ndarray:
         """``y`` of the right edge of the driving lanes at ``x`` (0 but where a map's lanes begin or end)."""

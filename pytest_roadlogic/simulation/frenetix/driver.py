@@ -335,10 +335,9 @@ class FrenetixDriver:
         heading = trajectory.heading[:steps]
         half = CAR_WIDTH / 2 * np.abs(np.cos(heading)) + CAR_LENGTH / 2 * np.abs(np.sin(heading)) + 0.1
         y = trajectory.y[:steps]
-        if self.road.route is not None:  # the right edge moves where a map's lanes begin or end
-            edge = self.road.right_edge(trajectory.x[:steps])
-            return float(max(0.0, (half - (y - edge)).max(), (y + half - self.road.width).max()))
-        return float(max(0.0, (half - y).max(), (y + half - self.road.width).max()))
+        # the right edge moves where a map's lanes begin or end (0 on the straight road)
+        edge = self.road.right_edge(trajectory.x[:steps])
+        return float(max(0.0, (half - (y - edge)).max(), (y + half - self.road.width).max()))
 
     def _collides(self, trajectory: Trajectory, others: dict[str, Trajectory]) -> bool:
         """Whether ``trajectory`` comes within the clearances of another's predicted trajectory at
