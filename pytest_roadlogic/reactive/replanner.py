@@ -48,9 +48,10 @@ class _Mode:
     full_length: bool
 
 
-# tried in this order: the run through what was seen before the old plan's (which only stands in
-# for it), a phase keeps the end it was planned with when it can, the vehicle under test is
-# predicted when it can be (planned first when the last replan had to plan it)
+# every way a replan tries; Replanner.replan orders them: a phase keeping the end it was planned
+# with first, then the run through what was seen before the old plan's (which only stands in for
+# it), then the vehicle under test as the last replan that found a plan had it (predicted, else
+# planned)
 MODES = (
     _Mode(True, True, True),
     _Mode(True, False, True),

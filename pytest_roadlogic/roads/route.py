@@ -75,7 +75,7 @@ class Route:
 
     @property
     def width(self) -> float:
-        """The width of its lanes at its start: ``y`` = 0 is their right edge there."""
+        """The width of its lanes where they are most: ``y`` = 0 is their right edge there."""
         return self.lanes * self.lane_width
 
     def pose(self, x, y) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
