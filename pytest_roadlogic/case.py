@@ -11,11 +11,11 @@ from __future__ import annotations
 
 import json
 import shlex
-from dataclasses import asdict, dataclass, field, fields
+from dataclasses import asdict, dataclass, field, fields, replace
 from pathlib import Path
 from typing import Any
 
-from .confinement import ReadRoots, project_root, regular_file_problem
+from .confinement import ReadRoots, UnreadableFile, project_root, read_bounded, regular_file_problem, shown
 from .settings import (
     BASE,
     CONTINUOUS,
@@ -98,6 +98,18 @@ class Case:
         }
         return RunSettings(**{k: v for k, v in given.items() if v is not None})
 
+    def within(self, limits: RunSettings) -> Case:
+        """This case with its time limits no higher than ``limits``' (the command line's or the
+        session's): a case file is data, and ``"planning_time_limit": 1e9`` must not raise what the
+        user allows (``--plan-timeout 5`` had not lowered it)."""
+        return replace(
+            self,
+            planning_time_limit=min(self.planning_time_limit or limits.planning_time_limit, limits.planning_time_limit),
+            simulation_time_limit=min(
+                self.simulation_time_limit or limits.simulation_time_limit, limits.simulation_time_limit
+            ),
+        )
+
     def scenario_file(self, case_file: str | Path | None = None, roots: ReadRoots | None = None) -> Path:
         """Where the scenario is: ``path`` relative to the working folder, else to a folder above the
         case file (the plugin records it relative to the rootdir, and writes the case file under it).
@@ -108,10 +120,10 @@ class Case:
         """
         roots = roots or ReadRoots.of(project_root())
         path = Path(self.path)
-        if path.is_absolute() or ".." in path.parts or not self.path.strip():
+        if path.is_absolute() or ".." in path.parts or not self.path.strip() or path.suffix != ".osc":
             raise CaseFileError(
-                f"the scenario path {self.path!r} is not a relative path inside the project; a case file names its scenario "
-                "relative to the rootdir (as pytest wrote it)"
+                f"the scenario path {shown(repr(self.path[:200]))} is not a relative path to an .osc file inside the "
+                "project; a case file names its scenario relative to the rootdir (as pytest wrote it)"
             )
         candidates = [path] + (
             [folder / path for folder in Path(case_file).resolve().parents] if case_file is not None else []
@@ -128,9 +140,9 @@ class Case:
         """What differs between the versions this case was written with and the installed ones."""
         now = installed_versions()
         return [
-            f"{name} {was} (now {now.get(name, 'not installed')})"
+            shown(f"{name[:60]} {was[:60]} (now {now.get(name, 'not installed')})")
             for name, was in sorted(self.versions.items())
-            if now.get(name) != was
+            if name in (*VERSIONED, "python") and now.get(name) != was  # only what a replay depends on
         ]
 
     def to_json(self) -> str:
@@ -145,14 +157,13 @@ class Case:
     @classmethod
     def load(cls, path: str | Path) -> Case:
         try:
-            data = json.loads(Path(path).read_text())
+            data = json.loads(read_bounded(path, MAX_CASE_BYTES).decode("utf-8"))
             known = {f.name for f in fields(cls)}
             if not isinstance(data, dict) or not {"path", "scenario"} <= set(data) or set(data) - known:
                 raise TypeError(f"expected the keys {', '.join(sorted(known))}")
-            _check_kinds(data)
-            return cls(**data)
-        except OSError as error:
-            raise CaseFileError(f"cannot read the case file ({error.strerror})") from None
+            return cls(**_check_kinds(data))
+        except UnreadableFile as error:
+            raise CaseFileError(f"cannot read the case file: {error}") from None
         except (json.JSONDecodeError, TypeError, UnicodeDecodeError, RecursionError) as error:
             raise CaseFileError(f"not a case file written by pytest-roadlogic ({error})") from None
         except OptionError as error:
@@ -231,35 +242,82 @@ _SETTING_OPTIONS = {
 }
 
 
-def _check_kinds(data: dict[str, Any]) -> None:
-    """Raise ``TypeError`` or ``OptionError`` for a field of a case file that is not what the tool
-    writes there: a case file is data from anywhere, checked before anything runs (a non-numeric
-    seed had been a traceback under pytest)."""
+# the case's fields the options read that hold numbers (whole numbers where the option reads one);
+# the other setting fields hold text
+_NUMBERS = {
+    "seed": int,
+    "lanes": int,
+    "max_horizon": int,
+    "max_tries": int,
+    "planning_time_limit": float,
+    "simulation_time_limit": float,
+    "replan_period": float,
+    "min_ttc": float,
+    "min_gap": float,
+    "max_decel": float,
+}
+# sizes past anything the tool writes: a case file is read whole before it is checked, and a
+# 100 MB string in ``versions`` had gone to stderr in a warning
+MAX_CASE_BYTES = 1_000_000
+MAX_TEXT = 1_000  # characters of one string field (a path, a name, a version)
+MAX_ENTRIES = 1_000  # entries of ``values``, ``drivers`` or ``versions``
+# plans enumerated to reach a base-strategy instance: ``"instance": 1000000`` had run past 120 s
+MAX_INSTANCE = 999
+
+
+def _check_kinds(data: dict[str, Any]) -> dict[str, Any]:
+    """``data`` with each setting read by its option, or ``TypeError`` / ``OptionError`` naming the
+    field: a case file is data from anywhere, checked (kinds, ranges, sizes) before anything runs (a
+    non-numeric seed had been a traceback under pytest, ``"lanes": "4"`` a ``TypeError``)."""
+    checked = dict(data)
     for name in ("path", "scenario"):
-        if not isinstance(data[name], str):
-            raise TypeError(f"{name} must be a string")
+        if not isinstance(data[name], str) or len(data[name]) > MAX_TEXT:
+            raise TypeError(f"{name} must be a string of at most {MAX_TEXT} characters")
     for name, option in _SETTING_OPTIONS.items():
         value = data.get(name)
         if value is None:
             continue
-        if isinstance(value, bool) or not isinstance(value, (str, int, float)):
+        kind = _NUMBERS.get(name)
+        if kind is None and not isinstance(value, str):
+            raise TypeError(f"{name} must be a string")
+        if kind is not None and (
+            isinstance(value, bool) or not isinstance(value, (int, float) if kind is float else int)
+        ):
             raise TypeError(
-                f"{name} must be a {'string' if name in ('strategy', 'road_speed', 'dialect', 'encoding', 'simulator', 'dut', 'dut_driver') else 'number'}"
+                f"{name} must be a {'whole number' if kind is int else 'number'}, not {type(value).__name__}"
             )
-        OPTIONS_BY_NAME[option].parse(str(value))
-    if (
-        not isinstance(data.get("instance", 0), int)
-        or isinstance(data.get("instance", 0), bool)
-        or data.get("instance", 0) < 0
-    ):
-        raise TypeError("instance must be a whole number from 0 up")
+        if isinstance(value, str) and len(value) > MAX_TEXT:
+            raise TypeError(f"{name} must be at most {MAX_TEXT} characters")
+        try:
+            parsed = OPTIONS_BY_NAME[option].parse(str(value))
+        except OptionError as error:
+            raise OptionError(f"{name}: {error}") from None
+        checked[name] = parsed if name != "road_speed" else value
+    instance = data.get("instance", 0)
+    if not isinstance(instance, int) or isinstance(instance, bool) or not 0 <= instance <= MAX_INSTANCE:
+        raise TypeError(f"instance must be a whole number from 0 to {MAX_INSTANCE}")
     values = data.get("values", {})
-    if not isinstance(values, dict) or not all(isinstance(v, (str, int, float, bool)) for v in values.values()):
-        raise TypeError("values must map parameter names to numbers, names or booleans")
+    if (
+        not isinstance(values, dict)
+        or len(values) > MAX_ENTRIES
+        or not all(
+            len(k) <= MAX_TEXT and isinstance(v, (str, int, float, bool)) and len(str(v)) <= MAX_TEXT
+            for k, v in values.items()
+        )
+    ):
+        raise TypeError(f"values must map at most {MAX_ENTRIES} parameter names to numbers, names or booleans")
     for name in ("drivers", "versions"):
         given = data.get(name, {})
-        if not isinstance(given, dict) or not all(isinstance(k, str) and isinstance(v, str) for k, v in given.items()):
-            raise TypeError(f"{name} must map names to strings")
+        if (
+            not isinstance(given, dict)
+            or len(given) > MAX_ENTRIES
+            or not all(
+                isinstance(k, str) and isinstance(v, str) and len(k) <= MAX_TEXT and len(v) <= MAX_TEXT
+                for k, v in given.items()
+            )
+        ):
+            raise TypeError(f"{name} must map at most {MAX_ENTRIES} names to strings of at most {MAX_TEXT} characters")
+    return checked
 
 
 # what a replay depends on besides the case: a different solver or motion planner may plan or drive otherwise

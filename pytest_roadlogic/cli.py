@@ -593,10 +593,10 @@ def _replay(args: argparse.Namespace) -> int:
         if args.case.suffix == ".json":
             from .confinement import ReadRoots, project_root
 
-            roots = ReadRoots.of(
-                project_root(), extra=args.allow_read
-            )  # not the case file's folder: it may be anywhere
-            case = Case.load(args.case)
+            # the project's root, not the case file's folder, which may be anywhere; with no project
+            # above the working folder, the case file's folder (never / or the home folder)
+            roots = ReadRoots.of(project_root() or args.case.resolve().parent, extra=args.allow_read)
+            case = Case.load(args.case).within(_run_settings(args))
             case = replaced(case, path=str(case.scenario_file(args.case, roots)))
             _drivers_of_case(case, dict(args.driver))
             for difference in case.version_differences():

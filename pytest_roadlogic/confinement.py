@@ -34,14 +34,29 @@ class OutsideRoots(ValueError):
     """A path a file asked the tool to read that lies outside every folder it may read."""
 
 
-def project_root(start: str | Path | None = None) -> Path:
+def too_wide(folder: Path) -> bool:
+    """Whether ``folder`` is one the tool never reads everything under: the file system's root and
+    the home folder (run from ``/``, a container's default, the working folder had become the read
+    root, and ``import "/proc/self/environ"`` printed a CI job's secrets)."""
+    folder = folder.resolve()
+    try:
+        home = Path.home().resolve()
+    except (RuntimeError, KeyError, OSError):  # no home folder known
+        home = None
+    return folder == Path(folder.anchor) or folder == home
+
+
+def project_root(start: str | Path | None = None) -> Path | None:
     """The nearest folder at or above ``start`` (default: the working folder) that holds one of
-    ``PROJECT_MARKERS``; ``start`` itself when none does."""
+    ``PROJECT_MARKERS``, never the file system's root or the home folder; None when there is none:
+    then only the folder of the file the user named is read (``ReadRoots.around``)."""
     here = Path(start if start is not None else Path.cwd()).resolve()
     for folder in (here, *here.parents):
+        if too_wide(folder):
+            return None
         if any((folder / marker).exists() for marker in PROJECT_MARKERS):
             return folder
-    return here
+    return None
 
 
 @dataclass(frozen=True)
@@ -49,33 +64,52 @@ class ReadRoots:
     """The folders under which a file that a scenario or case file names may be read."""
 
     folders: tuple[Path, ...]
+    # single files that may be read although their folder may not (a file the user named in ``/``
+    # or the home folder: that file, not its neighbours)
+    files: tuple[Path, ...] = ()
 
     @classmethod
     def of(cls, *folders: str | Path | None, extra: Iterable[str | Path] = ()) -> ReadRoots:
-        """Roots from folders (None skipped; a file stands for its folder), resolved once."""
+        """Roots from folders (None skipped; a file stands for its folder, or for itself alone
+        when its folder is ``too_wide``), resolved once. ``extra`` are the user's own
+        ``--allow-read`` folders, taken as given."""
         resolved: list[Path] = []
-        for folder in (*folders, *extra):
+        files: list[Path] = []
+        for folder in folders:
             if folder is None:
                 continue
             path = Path(folder).resolve()
             if path.is_file():
+                if too_wide(path.parent):
+                    files.append(path)
+                    continue
                 path = path.parent
+            if too_wide(path):
+                continue
             if path not in resolved:
                 resolved.append(path)
-        return cls(tuple(resolved))
+        for folder in extra:
+            path = Path(folder).resolve()
+            if path not in resolved:
+                resolved.append(path)
+        return cls(tuple(resolved), tuple(files))
 
     @classmethod
     def around(cls, named: str | Path, extra: Iterable[str | Path] = ()) -> ReadRoots:
-        """The default roots of a file the user named: the project's root and the file's folder."""
-        return cls.of(project_root(), Path(named).resolve().parent, extra=extra)
+        """The default roots of a file the user named: the project's root (none above a working
+        folder with no project marker) and the file's folder, or the file alone when that folder
+        is ``/`` or the home folder."""
+        named = Path(named).resolve()
+        return cls.of(project_root(), named if named.is_file() else named.parent, extra=extra)
 
     def allows(self, path: str | Path) -> bool:
-        """Whether ``path`` (followed through symbolic links) lies under one of the roots."""
+        """Whether ``path`` (followed through symbolic links) lies under one of the roots or is
+        one of the files allowed alone."""
         try:
             target = Path(path).resolve()
         except (OSError, ValueError, RuntimeError):  # a name too long, a NUL byte, a loop of links
             return False
-        return any(target == root or root in target.parents for root in self.folders)
+        return target in self.files or any(target == root or root in target.parents for root in self.folders)
 
     def check(self, path: str | Path, what: str) -> Path:
         """``path`` resolved, or ``OutsideRoots`` naming ``what`` and the roots (never its content)."""
@@ -84,7 +118,7 @@ class ReadRoots:
         return Path(path).resolve()
 
     def describe(self) -> str:
-        return ", ".join(str(folder) for folder in self.folders)
+        return ", ".join(str(place) for place in (*self.folders, *self.files)) or "none"
 
 
 ALLOW_READ_HINT = "copy the file into the project, or name its folder with --allow-read DIR (roadlogic) or --roadlogic-allow-read DIR (pytest)"
@@ -102,18 +136,70 @@ def regular_file_problem(path: str | Path) -> str | None:
         return MISSING
     except (OSError, ValueError) as error:  # a name too long, a NUL byte
         return getattr(error, "strerror", None) or "cannot be read"
-    if stat.S_ISREG(mode):
-        return None
-    kind = (
-        "a folder"
-        if stat.S_ISDIR(mode)
-        else "a FIFO"
-        if stat.S_ISFIFO(mode)
-        else "a socket"
-        if stat.S_ISSOCK(mode)
-        else "a device"
-    )
-    return f"not a regular file ({kind})"
+    return None if stat.S_ISREG(mode) else f"not a regular file ({_kind(mode)})"
+
+
+def _kind(mode: int) -> str:
+    if stat.S_ISDIR(mode):
+        return "a folder"
+    if stat.S_ISFIFO(mode):
+        return "a FIFO"
+    if stat.S_ISSOCK(mode):
+        return "a socket"
+    return "a device"
+
+
+class UnreadableFile(ValueError):
+    """A file that is not a regular file, cannot be opened, or holds more than the bound it is read
+    with (``too_large``); ``str()`` says which, never what it holds."""
+
+    def __init__(self, reason: str, too_large: bool = False) -> None:
+        super().__init__(reason)
+        self.too_large = too_large
+
+
+def read_bounded(path: str | Path, limit: int) -> bytes:
+    """The bytes of the regular file ``path``, at most ``limit`` of them, else ``UnreadableFile``.
+
+    Every file a scenario, a case file or a map names is read through here. The kind is judged on
+    the open descriptor (opened without blocking, so a FIFO cannot hold the open, nor a link
+    swapped after a ``stat`` change what is read) and the size by what is read, not by ``stat``:
+    a link to ``/dev/zero`` has size 0 and had been read to 5 GB."""
+    if (problem := regular_file_problem(path)) is not None:  # a device is never even opened
+        raise UnreadableFile(problem)
+    try:
+        handle = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_NOCTTY", 0))
+    except (OSError, ValueError) as error:
+        raise UnreadableFile(getattr(error, "strerror", None) or "cannot be read") from None
+    try:
+        mode = os.fstat(handle).st_mode
+        if not stat.S_ISREG(mode):
+            raise UnreadableFile(f"not a regular file ({_kind(mode)})")
+        chunks: list[bytes] = []
+        size = 0
+        while size <= limit:
+            chunk = os.read(handle, min(1 << 20, limit + 1 - size))
+            if not chunk:
+                break
+            chunks.append(chunk)
+            size += len(chunk)
+    except OSError as error:
+        raise UnreadableFile(error.strerror or "cannot be read") from None
+    finally:
+        os.close(handle)
+    if size > limit:
+        raise UnreadableFile(f"more than {limit:,} bytes", too_large=True)
+    return b"".join(chunks)
+
+
+_CONTROL = re.compile(r"[\x00-\x08\x0b-\x1f\x7f-\x9f\u2028\u2029\u202a-\u202e\u2066-\u2069]")
+
+
+def shown(text: str) -> str:
+    """``text`` safe to print: every control character (escape sequences that set a terminal's
+    title or clear its screen, bidirectional overrides) written as its ``\\x..`` escape; tabs and
+    line breaks kept. The one place text from a file or an option is made printable."""
+    return _CONTROL.sub(lambda match: match.group().encode("unicode_escape").decode("ascii"), text)
 
 
 _UNSAFE = re.compile(r"[^A-Za-z0-9_.-]+")

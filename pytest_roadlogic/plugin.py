@@ -277,7 +277,7 @@ class ScenarioItem(pytest.Item):
         replay, case = _text(self.config, "replay"), None
         if replay:
             try:
-                case = Case.load(replay)
+                case = Case.load(replay).within(settings)
             except CaseFileError as error:
                 raise pytest.UsageError(f"roadlogic: --roadlogic-replay {replay}: {error}") from None
         # a replayed case runs with its own settings (who is under test, with which reference driver,

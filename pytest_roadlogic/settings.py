@@ -39,14 +39,15 @@ class OptionError(ValueError):
     """An option's value that cannot be used; the message says what to give instead."""
 
 
-def whole_number(least: int, what: str) -> Callable[[str], int]:
+def whole_number(least: int, what: str, most: int | None = None) -> Callable[[str], int]:
     def parse(text: str) -> int:
         try:
-            number = int(str(text).strip())
+            number = int(str(text).strip()) if len(str(text)) <= 30 else least - 1  # no 5,000-digit number
         except ValueError:
             number = least - 1
-        if number < least:
-            raise OptionError(f"{text!r} is not {what}; give a whole number from {least} up")
+        if number < least or (most is not None and number > most):
+            span = f"from {least} up" if most is None else f"from {least} to {most}"
+            raise OptionError(f"{text!r} is not {what}; give a whole number {span}")
         return number
 
     return parse
@@ -72,7 +73,17 @@ def positive(what: str, example: str, unit: str = "a number") -> Callable[[str],
     return parse
 
 
-seconds = positive("a time limit", "60", "a number of seconds")
+# a day: far past any planning or simulation of one case, and far inside what a timer takes
+# (``--plan-timeout 1e308`` had overflowed the deadline and timed out at once)
+MAX_SECONDS = 86_400.0
+
+
+def seconds(text: str) -> float:
+    """A time limit in seconds, above 0 and at most ``MAX_SECONDS``."""
+    value = positive("a time limit", "60", "a number of seconds")(text)
+    if value > MAX_SECONDS:
+        raise OptionError(f"{text!r} is past the longest time limit; give seconds from above 0 to {MAX_SECONDS:g}")
+    return value
 
 
 MAX_SEED = 2**32 - 1  # clingo's --seed takes 0..2^32-1; past it a RuntimeError traceback came from the solver
@@ -258,7 +269,7 @@ OPTIONS = (
     Option(
         "tries",
         "tries",
-        whole_number(1, "a number of tries"),
+        whole_number(1, "a number of tries", 100),
         5,
         "plans to try per case when the monitor rejects the simulation",
     ),

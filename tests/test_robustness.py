@@ -241,7 +241,7 @@ def test_item_11_run_refuses_an_out_folder_with_files_it_did_not_write(tmp_path,
 @pytest.mark.parametrize(
     "option, value, said",
     [
-        ("--tries", "0", "argument --tries: '0' is not a number of tries; give a whole number from 1 up"),
+        ("--tries", "0", "argument --tries: '0' is not a number of tries; give a whole number from 1 to 100"),
         ("--instances", "0", "argument --instances: '0' is not an instance count; give a whole number from 1 up"),
     ],
 )

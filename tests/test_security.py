@@ -82,7 +82,10 @@ def test_item_2_a_case_files_scenario_path_must_be_relative_and_inside_the_proje
     monkeypatch.chdir(root)
     assert cli.main(["replay", "case.json", "--out", str(root / "out")]) == cli.EXIT_INPUT
     said = capsys.readouterr().err
-    assert "is not a relative path inside the project" in said or "is not in the folders the tool reads" in said
+    assert (
+        "is not a relative path to an .osc file inside the project" in said
+        or "is not in the folders the tool reads" in said
+    )
     assert "root:" not in said, "nothing of the refused file is shown"
 
 
@@ -113,7 +116,8 @@ def test_item_2_an_import_outside_the_project_is_refused_at_the_import_and_never
     monkeypatch.chdir(root)
     checked = check_file(root / "a.osc")
     report = checked.report()
-    assert f"a.osc:1:8: error: the imported file {target!r} is outside the folders the tool reads" in report
+    refused = "is outside the folders the tool reads" if target.endswith(".osc") else "is not an .osc file"
+    assert f"a.osc:1:8: error: the imported file {target!r} {refused}" in report
     assert "TOKEN" not in report and "root:x:" not in report
 
 
@@ -140,11 +144,13 @@ def test_item_2_a_folder_named_with_allow_read_may_be_imported_from(tmp_path, mo
 
 def test_item_2_under_pytest_an_import_outside_the_rootdir_is_a_collection_error(pytester):
     pytester.makefile(
-        ".osc", a='import "/proc/self/environ"\nscenario s:\n    v1: car\n    do v1.drive(duration: 3s)\n'
+        ".osc",
+        a='import "/proc/self/environ"\nimport "/etc/x.osc"\nscenario s:\n    v1: car\n    do v1.drive(duration: 3s)\n',
     )
     result = pytester.runpytest_subprocess(*QUIET)
     result.assert_outcomes(errors=1)
-    assert "is outside the folders the tool reads" in result.stdout.str()
+    assert "'/proc/self/environ' is not an .osc file" in result.stdout.str()
+    assert "'/etc/x.osc' is outside the folders the tool reads" in result.stdout.str()
     assert "PATH=" not in result.stdout.str() and "HOME=" not in result.stdout.str()
 
 
@@ -220,8 +226,16 @@ def test_every_printed_replay_command_of_a_case_is_shell_quoted():
 @pytest.mark.parametrize(
     "field, value, said",
     [
-        ("seed", "abc", "is not a seed"),
+        ("seed", "abc", "seed must be a whole number, not str"),
         ("seed", -5, "is not a seed"),
+        ("lanes", "4", "lanes must be a whole number, not str"),
+        ("planning_time_limit", "30", "planning_time_limit must be a number, not str"),
+        ("max_tries", "2", "max_tries must be a whole number, not str"),
+        ("max_tries", 10**6, "is not a number of tries"),
+        ("planning_time_limit", 1e300, "is past the longest time limit"),
+        ("instance", 1_000_000, "instance must be a whole number from 0 to"),
+        ("versions", {"numpy": "x" * 100_000}, "versions must map"),
+        ("path", "scenarios/follow.txt" * 100, "path must be a string of at most"),
         ("seed", 2**40, "is not a seed"),
         ("max_tries", 0, "is not a number of tries"),
         ("values", {"start_gap": [1, 2]}, "values must map"),
@@ -239,6 +253,29 @@ def test_a_crafted_case_file_is_refused_when_it_is_read_naming_the_field(tmp_pat
     (tmp_path / "case.json").write_text(json.dumps(data))
     with pytest.raises(CaseFileError, match=said):
         Case.load(tmp_path / "case.json")
+
+
+@pytest.mark.parametrize("kind", ["fifo", "device", "huge"])
+def test_a_case_file_that_is_not_a_small_regular_file_is_refused_without_reading_it_all(tmp_path, kind):
+    import os
+
+    case = tmp_path / "case.json"
+    if kind == "fifo":
+        os.mkfifo(case)
+    elif kind == "device":
+        case.symlink_to("/dev/zero")
+    else:
+        case.write_text(json.dumps({"path": "a.osc", "scenario": "s", "values": {"x": "y" * 2_000_000}}))
+    with pytest.raises(CaseFileError, match="not a regular file|more than"):
+        Case.load(case)
+
+
+def test_a_case_files_time_limits_never_exceed_the_command_lines(tmp_path):
+    from pytest_roadlogic.settings import RunSettings
+
+    case = Case(path="a.osc", scenario="s", planning_time_limit=3000.0, simulation_time_limit=2.0)
+    bounded = case.within(RunSettings(planning_time_limit=5.0))
+    assert bounded.planning_time_limit == 5.0 and bounded.simulation_time_limit == 2.0
 
 
 if sys.platform == "win32":  # pragma: no cover - the project runs on POSIX systems

@@ -371,7 +371,9 @@ def test_item_18_each_option_names_one_default_in_its_help(pytester):
 
 def test_a_scenario_read_from_python_confines_its_imports_as_the_commands_do(tmp_path, monkeypatch):
     (tmp_path / "pyproject.toml").write_text("")
-    (tmp_path / "a.osc").write_text('import "/etc/hostname"\nscenario s:\n    v1: car\n    do v1.drive(duration: 3s)\n')
+    (tmp_path / "a.osc").write_text(
+        'import "/etc/hostname.osc"\nscenario s:\n    v1: car\n    do v1.drive(duration: 3s)\n'
+    )
     monkeypatch.chdir(tmp_path)
     with pytest.raises(OscError, match="outside the folders the tool reads"):
         load_file(tmp_path / "a.osc")

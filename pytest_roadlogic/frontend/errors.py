@@ -8,7 +8,8 @@ a caret, never as a traceback, so that it reads like a compiler message and edit
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from pathlib import Path
+
+from ..confinement import UnreadableFile, read_bounded, shown
 
 
 @dataclass(frozen=True)
@@ -41,18 +42,16 @@ class Diagnostic:
                 lines.append("    " + " " * max(0, self.location.column - 1) + "^")
         if self.hint:
             lines.append(f"    hint: {self.hint}")
-        return "\n".join(lines)
+        return shown("\n".join(lines))  # a file's escape sequences are shown, never sent to the terminal
 
 
 def _read_quietly(path: str) -> str | None:
     """The text of a regular file to show a line of, None otherwise (a FIFO is never opened)."""
-    from ..confinement import regular_file_problem
+    from .limits import MAX_BYTES  # limits imports this module
 
-    if regular_file_problem(path) is not None:
-        return None
     try:
-        return Path(path).read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError):
+        return read_bounded(path, 4 * MAX_BYTES).decode("utf-8")
+    except (UnreadableFile, UnicodeDecodeError):
         return None
 
 

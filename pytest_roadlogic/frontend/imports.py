@@ -41,6 +41,14 @@ class ImportLoading:
                 continue
             if str(target) in self.files:  # keyed by resolved path: parse_file was given ``target``
                 continue
+            if target.suffix != ".osc":
+                # never opened: a line of a file that is not a scenario would be shown in its syntax error
+                self.error(
+                    item.location,
+                    f"the imported file {item.target!r} is not an .osc file",
+                    "import scenario files only (name.osc)",
+                )
+                continue
             if not self.roots.allows(target):
                 # never opened, never shown: import "/proc/self/environ" had printed the environment's first line
                 self.error(

@@ -15,7 +15,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from pathlib import Path
 
-from ..confinement import regular_file_problem
+from ..confinement import UnreadableFile, read_bounded
 from . import model, syntax
 from .errors import Diagnostic, OscError, SourceLocation
 from .limits import MAX_BYTES
@@ -32,26 +32,21 @@ def parse_text(
 
 def parse_file(path: str | Path, units: Mapping[str, tuple[str | None, float]] | None = None) -> model.OscFile:
     path = Path(path)
-    problem = regular_file_problem(path)
-    if problem is not None:
-        # asked before opening: a FIFO named x.osc made `roadlogic check` wait forever
+    try:
+        # a character is at most 4 bytes; never blocks on a FIFO, never reads a device
+        data = read_bounded(path, 4 * MAX_BYTES)
+    except UnreadableFile as problem:
         raise OscError(
-            [Diagnostic(SourceLocation(str(path), 1, 1), f"cannot read the file: {problem}", "give an .osc file")], ""
+            [
+                Diagnostic(
+                    SourceLocation(str(path), 1, 1),
+                    f"cannot read the file: {problem}",
+                    "split it into several files" if problem.too_large else "give an .osc file",
+                )
+            ],
+            "",
         ) from None
     try:
-        with open(path, "rb") as stream:
-            data = stream.read(4 * MAX_BYTES + 1)  # a character is at most 4 bytes: /dev/zero-sized files stop here
-        if len(data) > 4 * MAX_BYTES:
-            raise OscError(
-                [
-                    Diagnostic(
-                        SourceLocation(str(path), 1, 1),
-                        f"the file has more than {4 * MAX_BYTES:,} bytes; the front end reads at most {MAX_BYTES:,} characters",
-                        "split it into several files",
-                    )
-                ],
-                "",
-            )
         text = data.decode("utf-8").replace("\r\n", "\n").replace("\r", "\n")  # as text mode reads it
     except UnicodeDecodeError as exc:
         data = exc.object
@@ -68,6 +63,4 @@ def parse_file(path: str | Path, units: Mapping[str, tuple[str | None, float]] |
             ],
             "\n" * (line - 1) + shown,
         ) from None
-    except OSError as exc:
-        raise OscError([Diagnostic(SourceLocation(str(path), 1, 1), f"cannot read the file: {exc.strerror}")]) from None
     return parse_text(text, str(path), units)

@@ -206,7 +206,13 @@ def _closure(path: Path, roots: ReadRoots) -> list[model.OscFile]:
     stack = [path.resolve()]
     while stack:
         current = stack.pop()
-        if current in seen or not roots.allows(current) or regular_file_problem(current) is not None:
+        imported = current != path.resolve()
+        if (
+            current in seen
+            or (imported and current.suffix != ".osc")  # the checker refuses it, never read
+            or not roots.allows(current)
+            or regular_file_problem(current) is not None
+        ):
             continue
         seen.add(current)
         try:
