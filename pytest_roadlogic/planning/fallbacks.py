@@ -10,6 +10,7 @@ this module is the one policy for both.
 from __future__ import annotations
 
 import dataclasses
+import time
 from collections.abc import Callable, Generator, Iterator
 
 from ..logic.automaton import SymbolicAutomaton
@@ -176,35 +177,40 @@ def planned(
     even then raises the first planner's error, explained (``settings.explain_unsatisfiable``) only
     then: its constraints clash. Explaining before the fallbacks had cost a sample that one of
     them plans a whole diagnosis (measured: 43 of 90 s on follow_overtake_points)."""
+    # one deadline for the first plan, however many planners and searches it takes: each had had
+    # the whole limit (200 one-second phases: "timed out" after 34 s under a 10 s limit)
+    deadline = time.monotonic() + settings.time_limit
     if not fallbacks:
-        yield from _planner_for(guide(settings), settings, seed).plans(limit=limit)
+        yield from _planner_for(guide(settings), settings, seed).plans(limit=limit, deadline=deadline)
         return
     quiet = dataclasses.replace(settings, explain_unsatisfiable=False)
     first = _planner_for(guide(quiet), quiet, seed)
-    plans = first.plans(limit=limit)
+    plans = first.plans(limit=limit, deadline=deadline)
     try:
         plan = next(plans, None)
     except (PlanningTimeout, HorizonTooShort, UnsatisfiableScenario):
         raise  # a setting that binds, or guards that contradict themselves whatever the margins
     except NoPlanError as error:
-        if (yield from _fallback_plans(guide, settings, seed, limit, beyond_limits)):
+        if (yield from _fallback_plans(guide, settings, seed, limit, beyond_limits, deadline)):
             return
         if settings.explain_unsatisfiable:
             explained = _planner_for(guide(settings), settings, seed)
             explained.least_action = False  # the reason holds for any plan, natural or not
-            explained._explain(error, explained._renewed())
+            explained._explain(error, deadline)
         raise error from None
     while plan is not None:
         yield plan
         plan = next(plans, None)
 
 
-def _fallback_plans(guide: Guide, settings, seed: int, limit: int, beyond_limits: bool) -> Generator[Plan, None, bool]:
-    """Yields the plans of the first fallback planner that has any (``planned``) and returns
-    whether one had."""
+def _fallback_plans(
+    guide: Guide, settings, seed: int, limit: int, beyond_limits: bool, deadline: float
+) -> Generator[Plan, None, bool]:
+    """Yields the plans of the first fallback planner that has any (``planned``), the first due
+    by ``deadline``, and returns whether one had."""
     for fallback, mark in fallback_settings(settings, beyond_limits):
         try:
-            plans = _planner_for(guide(fallback), fallback, seed).plans(limit=limit)
+            plans = _planner_for(guide(fallback), fallback, seed).plans(limit=limit, deadline=deadline)
             plan = next(plans, None)
         except NoPlanError:
             continue

@@ -53,8 +53,10 @@ class Planner(Protocol):
     seed: int
     stats: dict[str, float]
 
-    def plans(self, limit: int | None = None) -> Iterator[Plan]:
-        """Plans; ``NoPlanError`` (a subclass saying why) when there is none."""
+    def plans(self, limit: int | None = None, deadline: float | None = None) -> Iterator[Plan]:
+        """Plans; ``NoPlanError`` (a subclass saying why) when there is none. The first plan is
+        due by ``deadline`` (``time.monotonic()``; default: ``settings.time_limit`` from now) or
+        ``PlanningTimeout``; each later one has the whole time limit from when it is asked."""
         ...
 
     def first(self) -> Plan: ...

@@ -110,22 +110,25 @@ class ContinuousPlanner(IncrementalPlanner):
             parse_string(program, add)
         return control
 
-    def plans(self, limit: int | None = None) -> Iterator[Plan]:
+    def plans(self, limit: int | None = None, deadline: float | None = None) -> Iterator[Plan]:
         """Plans, shortest horizon first; each next one differs from all before it in when a
         transition fires or in a lane (the linear program then gives its smoothest motion).
         Every vehicle does only what its own constructs ask (``least_action``) unless no plan
-        does: then plans without, which say so in their stats."""
+        does: then plans without, which say so in their stats. The first plan is due by
+        ``deadline`` (default: the time limit from now), both searches together."""
         check_satisfiable(self.automaton)
         self.least_action = True
         try:
-            yield from self._search(limit)
+            yield from self._search(limit, deadline)
+        except (PlanningTimeout, HorizonTooShort):
+            raise  # the time is spent, or a setting binds: a search without least action fares no better
         except NoPlanError:
             self.least_action = False
-            yield from self._search(limit)
+            yield from self._search(limit, self._deadline)  # no plan yet: the first one's deadline holds
 
-    def _search(self, limit: int | None) -> Iterator[Plan]:
+    def _search(self, limit: int | None, deadline: float | None = None) -> Iterator[Plan]:
         """The plans of one search (``plans``), with ``least_action`` as it is set."""
-        deadline = self._renewed()
+        deadline = self._renewed(deadline)
         self.stats["least_action"] = float(self.least_action)
         found = 0
         places: list[float] = []  # where in the start band each plan after the first was steered

@@ -78,11 +78,12 @@ class GridPlanner(IncrementalPlanner):
             )
         return control
 
-    def plans(self, limit: int | None = None) -> Iterator[Plan]:
+    def plans(self, limit: int | None = None, deadline: float | None = None) -> Iterator[Plan]:
         """Plans with start speeds in ``initial_speed`` first; when there is none up to the horizon
-        limit, plans that start at any allowed speed (``widen_initial_speed``)."""
+        limit, plans that start at any allowed speed (``widen_initial_speed``). The first plan is
+        due by ``deadline`` (default: the time limit from now), both programs together."""
         check_satisfiable(self.automaton)
-        deadline = self._renewed()
+        deadline = self._renewed(deadline)
         programs = [lambda: self.instance]
         if (wide := self._widened()) is not None:
             programs.append(lambda: self._instance(wide))
