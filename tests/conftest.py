@@ -22,3 +22,19 @@ def overtake():
 @pytest.fixture(scope="session")
 def overtake_automaton(overtake):
     return build_automaton(overtake)
+
+
+@pytest.fixture(autouse=True)
+def _a_home_folder_beside_pytesters(request):
+    """pytester makes its test folder the home folder; the tool never reads the whole home folder
+    (confinement.too_wide), so files pytester writes there could not import or name a map. A
+    separate home beside it keeps each test's folder what a user's project folder is."""
+    if "pytester" not in request.fixturenames:
+        yield
+        return
+    folder = request.getfixturevalue("pytester").path
+    home = folder.parent / f"{folder.name}-home"
+    home.mkdir(exist_ok=True)
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setenv("HOME", str(home))
+        yield

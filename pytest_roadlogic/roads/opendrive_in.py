@@ -19,12 +19,25 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from xml.parsers import expat
 
+from ..confinement import UnreadableFile, read_bounded
 from .reference_line import Geometry, ReferenceLine
 
-MAX_BYTES = 50_000_000  # a larger file is refused unread
-# m: a longer road or geometry is refused (a road is sampled every half metre: a crafted length of
-# 1e12 m would be two trillion samples, a hang rather than a message)
-MAX_LENGTH = 100_000.0
+# What a map may hold (docs/roads.md, "What a map may hold"). A map is data from anywhere: each
+# bound keeps the work of reading and sampling it small (seconds, not minutes; megabytes, not
+# gigabytes) and keeps what reaches the planner and the simulator inside what they can take. Public
+# maps are far inside them (CARLA's Town04: 16 MB, its longest road 1.2 km, radii from 5 m).
+MAX_BYTES = 50_000_000  # read, not as stat says: a link to /dev/zero is never read past it
+MAX_ELEMENTS = 200_000  # XML elements: 600,000 <width> records had taken 69 s to check
+MAX_ATTRIBUTE = 1_000  # characters of one attribute's value: a road id of 5,000 digits
+# m: a longer road is refused (a road is sampled every quarter metre; a legal straight road of
+# 100 km had run past 120 s in the simulator's frame)
+MAX_LENGTH = 20_000.0
+MAX_TOTAL_LENGTH = 200_000.0  # m of all roads together: 60 geometries of 100 km had grown to 1.9 GB
+MAX_GEOMETRIES = 10_000  # plan-view records of one road
+MAX_CURVATURE = 0.5  # 1/m: a radius under 2 m is no road (a spiral to 1e6 broke the simulator's frame)
+MAX_COORDINATE = 1e7  # m from the map's origin (10,000 km), of any point of a reference line
+MAX_LANES = 16  # lanes on one side of one section: 2,000 driving lanes broke the simulator's projection
+MAX_LANE_WIDTH = 20.0  # m: a lane width of 1e300 had overflowed the simulator's projection
 
 
 class MapError(Exception):
@@ -66,8 +79,22 @@ def _parse(path: Path, text: bytes) -> _Element:
             parser.CurrentColumnNumber + 1,
         )
 
+    count = [0]
+
     def start(tag, attributes):
-        element = _Element(tag, dict(attributes), parser.CurrentLineNumber, parser.CurrentColumnNumber + 1)
+        count[0] += 1
+        where = (parser.CurrentLineNumber, parser.CurrentColumnNumber + 1)
+        if count[0] > MAX_ELEMENTS:
+            raise MapError(path, f"more than {MAX_ELEMENTS:,} elements", "give a smaller map", *where)
+        for name, value in attributes.items():
+            if len(value) > MAX_ATTRIBUTE or len(name) > MAX_ATTRIBUTE:
+                raise MapError(
+                    path,
+                    f"<{tag[:40]}> has an attribute of more than {MAX_ATTRIBUTE:,} characters",
+                    "shorten it",
+                    *where,
+                )
+        element = _Element(tag, dict(attributes), *where)
         (stack[-1].children if stack else root).append(element)
         stack.append(element)
 
@@ -175,18 +202,27 @@ def read_map(path: str | Path) -> RoadMap:
     cannot be read."""
     path = Path(path)
     try:
-        size = path.stat().st_size
-        if size > MAX_BYTES:
-            raise MapError(path, f"{size} bytes: a map over {MAX_BYTES} bytes is not read", "give a smaller map")
-        text = path.read_bytes()
-    except OSError as error:
-        raise MapError(path, f"cannot be read: {error.strerror or error}", "check the path") from None
+        text = read_bounded(path, MAX_BYTES)
+    except UnreadableFile as error:
+        raise MapError(
+            path, f"cannot be read: {error}", "give a smaller map" if error.too_large else "give an OpenDRIVE file"
+        ) from None
     root = _parse(path, text)
     roads: dict[str, MapRoad] = {}
+    total = 0.0
     for element in root.findall("road"):
         road = _road(path, element)
         if road.id in roads:
             raise MapError(path, f"a second road with id {road.id!r}", "give each road its own id", element.line)
+        total += road.length
+        if total > MAX_TOTAL_LENGTH:
+            raise MapError(
+                path,
+                f"the roads up to {road.label} are {total:g} m long together, more than {MAX_TOTAL_LENGTH:g} m",
+                "give a map of the part of the network the scenario needs",
+                element.line,
+                element.column,
+            )
         roads[road.id] = road
     if not roads:
         raise MapError(path, "the map has no road", "give a .xodr file with at least one <road>", root.line)
@@ -224,7 +260,22 @@ def _road(path: Path, element: _Element) -> MapRoad:
     plan_view = element.find("planView")
     if plan_view is None or not plan_view.findall("geometry"):
         raise MapError(path, "a road without a planView geometry", "give its reference line", element.line)
-    geometries = tuple(_geometry(path, g) for g in plan_view.findall("geometry"))
+    records = plan_view.findall("geometry")
+    if len(records) > MAX_GEOMETRIES:
+        raise MapError(
+            path, f"a road of more than {MAX_GEOMETRIES:,} geometries", "give fewer", plan_view.line, plan_view.column
+        )
+    geometries = tuple(_geometry(path, g) for g in records)
+    for geometry, record in zip(geometries, records):
+        if geometry.s < -0.01 or geometry.s + geometry.length > length + max(1.0, 0.01 * length):
+            raise MapError(
+                path,
+                f"a geometry from s={geometry.s:g} m over {geometry.length:g} m runs outside its road of {length:g} m",
+                "give geometries that lie along the road's length",
+                record.line,
+                record.column,
+            )
+    _check_reference_line(path, element, geometries)
     lanes = element.find("lanes")
     if lanes is None:
         raise MapError(path, "a road without <lanes>", "give its lane sections", element.line, element.column)
@@ -260,6 +311,41 @@ def _road(path: Path, element: _Element) -> MapRoad:
         _link(link, "successor"),
         min(speeds) if speeds else None,
     )
+
+
+def _check_reference_line(path: Path, road: _Element, geometries: tuple[Geometry, ...]) -> None:
+    """``MapError`` at the geometry whose line leaves the map's extent, is not finite, or bends
+    tighter than ``MAX_CURVATURE``: what the simulator's frame and the plot cannot take (paramPoly3
+    coefficients of 1e300 had reached the animation as NaN)."""
+    import numpy as np
+
+    for geometry, record in zip(geometries, road.find("planView").findall("geometry")):
+        where = (record.line, record.column)
+        bends = {"arc": (geometry.curvature,), "spiral": (geometry.curvature_start, geometry.curvature_end)}
+        if any(abs(k) > MAX_CURVATURE for k in bends.get(geometry.kind, ())):
+            raise MapError(
+                path,
+                f"a {geometry.kind} of curvature up to {max(abs(k) for k in bends[geometry.kind]):g} 1/m",
+                f"a road's curvature is at most {MAX_CURVATURE:g} 1/m (a radius of {1 / MAX_CURVATURE:g} m)",
+                *where,
+            )
+        with np.errstate(all="ignore"):
+            x, y, heading, curvature = geometry.sample(np.linspace(0.0, geometry.length, 64))
+        values = np.concatenate([x, y, heading, curvature])
+        if not np.all(np.isfinite(values)) or np.max(np.abs(np.concatenate([x, y]))) > MAX_COORDINATE:
+            raise MapError(
+                path,
+                f"the {geometry.kind} leaves the map's extent (a point not finite or over {MAX_COORDINATE:g} m out)",
+                "check its coefficients",
+                *where,
+            )
+        if geometry.kind in ("poly3", "param_poly3") and np.max(np.abs(curvature)) > MAX_CURVATURE:
+            raise MapError(
+                path,
+                f"a {geometry.kind} that bends at a curvature of {np.max(np.abs(curvature)):g} 1/m",
+                f"a road's curvature is at most {MAX_CURVATURE:g} 1/m (a radius of {1 / MAX_CURVATURE:g} m)",
+                *where,
+            )
 
 
 def _link(link: _Element | None, kind: str) -> Link | None:
@@ -330,14 +416,58 @@ def _geometry(path: Path, element: _Element) -> Geometry:
     )
 
 
+def _check_widths(path: Path, lane: _Element, widths: tuple[LaneWidth, ...], length: float) -> None:
+    """``MapError`` at a driving lane with no width, or at a width record whose cubic leaves
+    0..``MAX_LANE_WIDTH`` over its stretch (a width of 0 or -3.5 m everywhere had been reported as
+    a scenario without a plan: the map is at fault, and is named)."""
+    import numpy as np
+
+    kind = lane.attributes.get("type", "none")
+    if not widths:
+        if kind == "driving":
+            raise MapError(path, "a driving lane without <width>", "give its widths", lane.line, lane.column)
+        return
+    records = lane.findall("width")
+    most = 0.0
+    for i, (record, element) in enumerate(zip(widths, records)):
+        end = widths[i + 1].offset if i + 1 < len(widths) else length
+        u = np.linspace(0.0, max(0.0, end - record.offset), 9)
+        with np.errstate(all="ignore"):
+            width = record.a + record.b * u + record.c * u**2 + record.d * u**3
+        if not np.all(np.isfinite(width)) or np.min(width) < -1e-6 or np.max(width) > MAX_LANE_WIDTH:
+            raise MapError(
+                path,
+                f"lane {lane.attributes.get('id', '?')[:20]}'s width runs outside 0..{MAX_LANE_WIDTH:g} m "
+                f"(from {np.min(width):g} to {np.max(width):g} m)",
+                "give a lane's width in metres, 0 where it begins or ends",
+                element.line,
+                element.column,
+            )
+        most = max(most, float(np.max(width)))
+    if kind == "driving" and most < 0.5:
+        raise MapError(
+            path,
+            f"driving lane {lane.attributes.get('id', '?')[:20]} is never wider than {most:g} m",
+            "give the lane a width a car fits in",
+            lane.line,
+            lane.column,
+        )
+
+
 def _section(path: Path, element: _Element, start: float, end: float) -> LaneSection:
     right = element.find("right")
     left = element.find("left")
+    for side in (right, left):
+        if side is not None and len(side.findall("lane")) > MAX_LANES:
+            raise MapError(
+                path, f"more than {MAX_LANES} lanes on one side", "give a map of real roads", side.line, side.column
+            )
     lanes = []
     for lane in right.findall("lane") if right is not None else []:
         widths = tuple(
             LaneWidth(*(_number(path, w, n) for n in ("sOffset", "a", "b", "c", "d"))) for w in lane.findall("width")
         )
+        _check_widths(path, lane, widths, end - start)
         if lane.findall("border"):
             raise MapError(
                 path,

@@ -192,6 +192,9 @@ def curve_stretch(road: MapRoad, curve: tuple[float | None, float | None, str | 
     return best
 
 
+MIN_ROUTE_LENGTH = 200.0  # m of route a scenario that names no path_length is given at least
+
+
 def pick_route(
     road_map: RoadMap,
     lanes: int,
@@ -204,6 +207,9 @@ def pick_route(
     where it is), at least that long, and with a ``curve`` (min radius, max radius, side; the
     standard's ``path_curve``) when one is asked for. ``MapError`` saying why no road fits, road by
     road."""
+    # a scenario that names no path_length still needs room to drive: a 10 m route had been
+    # reported as a scenario without a plan, blaming the scenario for the map
+    length = length or MIN_ROUTE_LENGTH
     fitting = []
     for road in road_map.roads.values():
         if road.junction not in ("", "-1"):
