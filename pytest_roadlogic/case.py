@@ -132,8 +132,10 @@ class Case:
             if roots.allows(candidate) and regular_file_problem(candidate) is None:
                 return candidate
         raise CaseFileError(
-            f"the scenario {self.path!r} is not in the folders the tool reads ({roots.describe()}); run the replay from the project's "
-            "folder, or name the folder that holds it with --allow-read DIR"
+            f"the scenario {shown(repr(self.path[:200]))} is not in the folders the tool reads ({roots.describe()}); run the "
+            "replay from the project's folder (one with a pyproject.toml, setup.cfg, tox.ini, pytest.ini or .git: with none "
+            "above the working folder only the case file's folder is read), or name the folder that holds it with "
+            "--allow-read DIR"
         )
 
     def version_differences(self) -> list[str]:

@@ -216,6 +216,16 @@ def safe_name(text: str, fallback: str = "scenario") -> str:
     return name[:100] or fallback
 
 
+def unique_name(text: str) -> str:
+    """``safe_name(text)`` made unique to ``text``: its first 90 characters and a short hash of the
+    whole, so two texts never share one (``ä.osc::plain`` and ``ö.osc::plain`` had shared an
+    artifacts folder, and replaying one ran the other; so had names equal in 100 characters)."""
+    import hashlib
+
+    digest = hashlib.sha256(text.encode("utf-8", "surrogatepass")).hexdigest()[:10]
+    return f"{safe_name(text)[:90]}-{digest}"
+
+
 def osc_files(paths: Iterable[str | Path], recursive: bool = True) -> tuple[list[Path], list[str]]:
     """The ``.osc`` files named, or below the folders named (a folder's own only, unless
     ``recursive``), and a warning for each special file skipped there: a FIFO named ``x.osc`` made

@@ -397,7 +397,7 @@ class ScenarioItem(pytest.Item):
     def _report_failure(self, runner, result) -> None:
         from .artifacts.writer import write_artifacts
         from .case import installed_versions
-        from .confinement import safe_name
+        from .confinement import unique_name
         from .frontend.logical import describe_values
         from .outcomes import NO_PLAN
 
@@ -411,7 +411,7 @@ class ScenarioItem(pytest.Item):
         )
         result = replace(result, case=case)
         why = result.message  # for a clash, the report with the constraints at their lines (runner._failure)
-        directory = Path(self.config.rootpath) / _text(self.config, "artifacts") / safe_name(self.nodeid)
+        directory = Path(self.config.rootpath) / _text(self.config, "artifacts") / unique_name(self.nodeid)
         paths: dict[str, Path] = {}
         if result.run is not None:
             started = time.perf_counter()

@@ -13,6 +13,7 @@ import xml.etree.ElementTree as ET
 
 import pytest
 
+from pytest_roadlogic.confinement import unique_name
 from tests.conftest import ROOT
 
 pytest_plugins = ["pytester"]
@@ -45,6 +46,7 @@ def test_a_band_of_failing_values_shrinks_to_its_boundary_and_replays(pytester):
     # the middle car fits between back and front (30 m apart, 8 m between centres) only for gaps
     # up to 22.5 m (or from 38 m): Hypothesis must find the band and shrink to its lower edge
     copy(pytester, SQUEEZE)
+    pytester.makeini("[pytest]\n")  # a project: the replay below reads the scenario from its root
     # the band's edge is the grid's (8 m gaps); the continuous encoding adds 1 s of closing speed to
     # a gap, which moves it (issue 19 redoes this check for the default encoding)
     result = pytester.runpytest_subprocess(
@@ -58,7 +60,7 @@ def test_a_band_of_failing_values_shrinks_to_its_boundary_and_replays(pytester):
         "the scenario cannot be instantiated (no plan) at these values" in report and "cannot hold together" in report
     )
     assert "gap = " in report and "(line 7, declared parameter)" in report, "each value names its kind"
-    case_file = pytester.path / "roadlogic-artifacts" / "squeeze.osc_squeeze" / "case.json"
+    case_file = pytester.path / "roadlogic-artifacts" / unique_name("squeeze.osc::squeeze") / "case.json"
     assert f"roadlogic replay {case_file}" in report
     assert json.loads(case_file.read_text())["values"]["gap"] == gap
     replay = subprocess.run(
@@ -110,7 +112,7 @@ def test_the_driver_hook_drives_the_vehicle_under_test_and_a_bad_one_fails_with_
     assert "scenario overtake: the simulation was not accepted (non-conformant) at these values" in report
     assert "A.position.distance = " in report, "the failing values are listed"
     assert "rejected (robustness" in report, "the monitor's explanation is shown"
-    artifacts = pytester.path / "roadlogic-artifacts" / "overtake.osc_overtake"
+    artifacts = pytester.path / "roadlogic-artifacts" / unique_name("overtake.osc::overtake")
     for name in ("plan.json", "trace.csv", "scenario.xml", "trajectories.png", "simulation.gif", "case.json"):
         assert (artifacts / name).is_file(), name
     assert f"pytest overtake.osc::overtake --roadlogic-replay {artifacts / 'case.json'}" in report
@@ -257,7 +259,7 @@ def test_pytest_xdist_gives_the_same_outcomes_as_a_serial_run(pytester):
     pytester.makefile(".osc", squeeze=SQUEEZE.read_text().replace("keep(it in [10..40]m)", "keep(it in [25..35]m)"))
     options = ["--roadlogic-examples", "3", "--roadlogic-horizon", "6", "-rA", *QUIET]
     serial = pytester.runpytest_subprocess(*options)
-    case_file = pytester.path / "roadlogic-artifacts" / "squeeze.osc_squeeze" / "case.json"
+    case_file = pytester.path / "roadlogic-artifacts" / unique_name("squeeze.osc::squeeze") / "case.json"
     serial_case = case_file.read_text()
     shutil.rmtree(pytester.path / ".hypothesis")  # the second run must not start from the first one's failures
     parallel = pytester.runpytest_subprocess("-n", "2", *options)

@@ -280,3 +280,13 @@ def test_a_case_files_time_limits_never_exceed_the_command_lines(tmp_path):
 
 if sys.platform == "win32":  # pragma: no cover - the project runs on POSIX systems
     pytestmark = pytest.mark.skip("POSIX paths and shells")
+
+
+def test_two_scenarios_whose_safe_names_are_equal_never_share_an_artifacts_folder():
+    from pytest_roadlogic.confinement import safe_name, unique_name
+
+    pairs = [("ä.osc::plain", "ö.osc::plain"), ("a" * 120 + "::x", "a" * 120 + "::y")]
+    for one, other in pairs:
+        assert safe_name(one) == safe_name(other)
+        assert unique_name(one) != unique_name(other)
+        assert unique_name(one) == unique_name(one) and "/" not in unique_name(one)

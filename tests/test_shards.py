@@ -7,6 +7,7 @@ import re
 import pytest
 from hypothesis import HealthCheck, given, seed, settings
 
+from pytest_roadlogic.confinement import unique_name
 from pytest_roadlogic.pipeline import load_scenario
 from pytest_roadlogic.sampling import Shard, strategy
 from tests.conftest import ROOT
@@ -61,7 +62,7 @@ def test_a_scenario_split_over_two_xdist_workers_names_the_failing_shard_and_its
     assert failed, report
     shard = failed[0]
     assert f"shard {shard} of 2" in report, "the failure report names the shard"
-    case_file = pytester.path / "roadlogic-artifacts" / f"squeeze.osc_squeeze_{shard}of2_" / "case.json"
+    case_file = pytester.path / "roadlogic-artifacts" / unique_name(f"squeeze.osc::squeeze[{shard}of2]") / "case.json"
     if not case_file.is_file():  # the folder is the node id made safe; find it by its shard
         [case_file] = [p for p in (pytester.path / "roadlogic-artifacts").glob(f"*{shard}of2*/case.json")]
     command = f"pytest 'squeeze.osc::squeeze[{shard}of2]' --roadlogic-replay {case_file} --roadlogic-shards 2"

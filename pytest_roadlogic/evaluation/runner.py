@@ -24,7 +24,7 @@ from typing import Any
 
 from ..artifacts.files import write_text
 from ..artifacts.writer import write_artifacts
-from ..confinement import safe_name
+from ..confinement import unique_name
 from ..frontend import OscError
 from ..frontend.logical import describe_values
 from ..outcomes import NO_PLAN, STAGES
@@ -291,7 +291,7 @@ def _record(
     directory = None
     if settings.artifacts:
         started = time.perf_counter()
-        relative = Path("instances") / safe_name(name) / f"{strategy}-{index + 1:03d}"
+        relative = Path("instances") / unique_name(name) / f"{strategy}-{index + 1:03d}"
         write_artifacts(outcome, out / relative, animation=False)
         seconds["artifacts"] = time.perf_counter() - started
         directory = relative.as_posix()
