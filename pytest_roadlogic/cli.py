@@ -30,6 +30,7 @@ import time
 from pathlib import Path
 
 from .case import CaseFileError
+from .confinement import shown
 from .dut import NoSuchVehicle
 from .frontend import OscError
 from .outcomes import CONFORMANT, PASSED
@@ -699,8 +700,16 @@ def _bench(args: argparse.Namespace) -> int:
             )
             return EXIT_INPUT
     else:
+        if args.base == 0 and args.refined == 0:
+            print(
+                "roadlogic bench: --base 0 and --refined 0 leave nothing to run; give at least one instance",
+                file=sys.stderr,
+            )
+            return EXIT_INPUT
         settings = _bench_settings(args)
         if settings is None:
+            return EXIT_INPUT
+        if _bench_out_refused(args):
             return EXIT_INPUT
         results = _bench_run(args, settings)
     table = summaries(results)
@@ -709,6 +718,27 @@ def _bench(args: argparse.Namespace) -> int:
     print("\n".join(lines))
     print(f"report: {report}")
     return EXIT_ACCEPTED if met else EXIT_REJECTED
+
+
+def _bench_out_refused(args: argparse.Namespace) -> bool:
+    """``--out`` of the bench names a folder it may not write (a file, one holding files the bench
+    does not write, one another bench holds, a name the system refuses): say so before running
+    (True). A user's own report.md had been overwritten, two benches had mixed their results."""
+    from .artifacts.files import NotAnArtifactFolder, check_replaceable, claimed
+    from .evaluation.runner import BENCH_NAMES, RESULTS_FILE
+
+    try:
+        args.held.enter_context(claimed(args.out))  # first: a second bench into it is told so
+        check_replaceable(args.out, BENCH_NAMES)
+        if args.out.is_dir() and any(args.out.iterdir()) and not (args.out / RESULTS_FILE).is_file():
+            # the names a bench writes, but no results of one: a user's own report.md had been overwritten
+            raise NotAnArtifactFolder(
+                f"{args.out} holds files but no {RESULTS_FILE}: not a folder a bench wrote; give a new or empty folder"
+            )
+    except NotAnArtifactFolder as error:
+        print(f"roadlogic bench: --out: {shown(str(error))}", file=sys.stderr)
+        return True
+    return False
 
 
 def _bench_settings(args: argparse.Namespace):

@@ -37,7 +37,7 @@ from .outcomes import (
     mostly_not_exercised,
     with_a_vehicle_under_test,
 )
-from .settings import BASE, OPTIONS, OPTIONS_BY_NAME, REFINED, OptionError, RunSettings
+from .settings import BASE, DUT_AUTO, DUT_NONE, OPTIONS, OPTIONS_BY_NAME, REFINED, OptionError, RunSettings
 from .settings import dialect as parse_dialect
 
 DEFAULT_ARTIFACTS = "roadlogic-artifacts"
@@ -121,6 +121,13 @@ def _settings(config: pytest.Config) -> RunSettings:
             "roadlogic: --roadlogic-shards (ini roadlogic_shards): shards split the samples of the refined strategy; "
             "the base strategy's plans come one after another from one planner. Give --roadlogic-shards 1 or "
             "--roadlogic-strategy refined"
+        )
+    if settings.shards > settings.examples:
+        # a shard with no sample of its own had failed with Hypothesis's max_examples=0 (18 of 20 items)
+        raise pytest.UsageError(
+            f"roadlogic: --roadlogic-shards (ini roadlogic_shards): {settings.shards} shards share "
+            f"{settings.examples} examples, and each shard draws at least one; give at most {settings.examples} shards, "
+            "or more examples with --roadlogic-examples"
         )
     from .simulation.backends import available  # names only: no backend is imported
 
@@ -290,6 +297,7 @@ class ScenarioItem(pytest.Item):
             self._simulator(),
             explain=settings.strategy == BASE,
         )
+        missing = None
         try:
             if case is not None:
                 self._replay(runner, case)
@@ -316,7 +324,7 @@ class ScenarioItem(pytest.Item):
         except ScenarioFailed as failure:
             self._report_failure(runner, failure.result)
         except NoSuchVehicle as error:
-            pytest.fail(f"roadlogic: --roadlogic-dut: {error}", pytrace=False)
+            missing = error  # failed below, outside the handler: not as a chained "During handling"
         finally:
             self.user_properties += [
                 ("examples", self.tally.cases),
@@ -326,6 +334,8 @@ class ScenarioItem(pytest.Item):
             self.user_properties += [(key(outcome), self.tally.outcomes[outcome]) for outcome in OUTCOMES]
             self.user_properties += [(f"seconds_{stage}", round(self.tally.seconds[stage], 3)) for stage in STAGES]
             self.user_properties += _oracle_properties(self.dut_reports)
+        if missing is not None:
+            pytest.fail(f"roadlogic: --roadlogic-dut: {missing}", pytrace=False)
 
     def _drivers(self):
         from .simulation.named_drivers import RecordingDrivers
@@ -497,7 +507,16 @@ def _replays(item: ScenarioItem, case) -> bool:
 
 def pytest_collection_modifyitems(session: pytest.Session, config: pytest.Config, items: list) -> None:
     """With ``--roadlogic-replay``, a case that no collected item runs is a usage error: it had
-    skipped every item and passed (exit 0)."""
+    skipped every item and passed (exit 0). A vehicle under test that no collected scenario has is
+    a usage error too (``--roadlogic-dut ghost``): each item would fail alike."""
+    settings = config.stash.get(SETTINGS, None)
+    scenarios = [item for item in items if isinstance(item, ScenarioItem)]
+    if settings is not None and settings.dut not in (DUT_AUTO, DUT_NONE) and scenarios:
+        if not any(settings.dut in {actor.name for actor in item.scenario.scenario.actors} for item in scenarios):
+            raise pytest.UsageError(
+                f"roadlogic: --roadlogic-dut (ini roadlogic_dut): no collected scenario has a vehicle {settings.dut!r}; "
+                "give a vehicle of the scenarios, or auto (each scenario's dut) or none"
+            )
     replay = _text(config, "replay")
     if not replay:
         return

@@ -191,6 +191,8 @@ class Runner:
         samples instead of ``settings.seed``, which still fixes solving and simulation. Each sample's
         outcome, tries and kind of failure are Hypothesis events (``--hypothesis-show-statistics``).
         """
+        if count is not None and count < 1:
+            return  # nothing to draw (a bench's --refined 0): Hypothesis takes no max_examples of 0
         import hypothesis
         from hypothesis import HealthCheck, Phase
 

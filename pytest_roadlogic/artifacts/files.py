@@ -77,9 +77,15 @@ def check_writable(directory: Path, probe: bool = True) -> None:
     ``probe``, a folder is made and removed in the nearest folder that exists, which says what
     permissions do; without, only that no file stands in the way (nothing is written)."""
     directory = Path(directory)
-    existing = directory
-    while not existing.exists() and existing != existing.parent:
-        existing = existing.parent
+    try:
+        existing = directory
+        while not existing.exists() and existing != existing.parent:
+            existing = existing.parent
+    except OSError as error:  # a name longer than the file system allows, a NUL byte
+        raise NotAnArtifactFolder(
+            f"{str(directory)[:100]!r}{'...' if len(str(directory)) > 100 else ''} cannot be a folder ({error.strerror}); "
+            "give another folder"
+        ) from None
     if existing == directory and not directory.is_dir():
         raise NotAnArtifactFolder(f"{directory} is a file, not a folder of artifacts")
     if not existing.is_dir():

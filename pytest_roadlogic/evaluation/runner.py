@@ -14,6 +14,7 @@ import dataclasses
 import json
 import os
 import platform
+import re
 import sys
 import time
 from collections.abc import Callable
@@ -36,6 +37,9 @@ from .occupancy import Occupancy
 
 STRATEGIES = (BASE, REFINED)  # the order the bench runs them in
 RESULTS_FILE = "results.json"
+# what a bench writes in its --out folder (results, report, plots, each instance's artifacts, and
+# the writer's temporary files): a folder holding anything else is not the bench's to write in
+BENCH_NAMES = re.compile(r"results\.json|report\.md|rq[12]-[A-Za-z0-9_.-]*\.png|instances|\..*\.partial.*")
 PACKAGES = (
     "pytest-roadlogic",
     "clingo",
