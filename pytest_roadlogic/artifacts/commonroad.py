@@ -106,7 +106,10 @@ def write_commonroad_xml(simulation: Simulation, path: str | Path) -> Path:
         author="pytest-roadlogic",
         affiliation="",
         source="pytest-roadlogic",
-        tags={Tag.HIGHWAY, Tag.MULTI_LANE},
+        # a list in a fixed order, not a set: the writer writes tags in the order it iterates them,
+        # and a set of enums iterates in the order PYTHONHASHSEED gives (scenario.xml had differed
+        # between processes)
+        tags=sorted((Tag.HIGHWAY, Tag.MULTI_LANE), key=lambda tag: tag.value),
         file_format=FileFormat.XML,
     )
     with replaced(path) as temporary:
