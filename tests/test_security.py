@@ -11,6 +11,8 @@ import sys
 from pathlib import Path
 
 import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
 
 from pytest_roadlogic import cli
 from pytest_roadlogic.case import Case, CaseFileError
@@ -290,3 +292,58 @@ def test_two_scenarios_whose_safe_names_are_equal_never_share_an_artifacts_folde
         assert safe_name(one) == safe_name(other)
         assert unique_name(one) != unique_name(other)
         assert unique_name(one) == unique_name(one) and "/" not in unique_name(one)
+
+
+HOSTILE_VALUES = st.one_of(
+    st.none(),
+    st.booleans(),
+    st.integers(-(2**70), 2**70),
+    st.floats(allow_nan=True, allow_infinity=True),
+    st.text(max_size=30),
+    st.sampled_from(["4", "1e308", "../../etc/passwd", "proc/self/environ", "a.osc", "\x1b[2J", "0..900kph", "acc"]),
+    st.lists(st.integers(), max_size=3),
+    st.dictionaries(
+        st.text(max_size=5), st.one_of(st.integers(), st.text(max_size=5), st.lists(st.none())), max_size=3
+    ),
+)
+
+
+@st.composite
+def hostile_case(draw) -> dict:
+    """A case the tool wrote, with some of its fields replaced by values of any kind."""
+    data = json.loads(Case(path="scenarios/follow.osc", scenario="follow", values=FOLLOW_VALUES).to_json())
+    for name in draw(st.lists(st.sampled_from(sorted(data)), max_size=5, unique=True)):
+        data[name] = draw(HOSTILE_VALUES)
+    if draw(st.booleans()):
+        data[draw(st.text(min_size=1, max_size=8))] = draw(HOSTILE_VALUES)
+    return data
+
+
+def _loaded_or_refused(folder: Path, data: dict) -> None:
+    from pytest_roadlogic.settings import RunSettings
+
+    (folder / "case.json").write_text(json.dumps(data))
+    try:
+        case = Case.load(folder / "case.json")
+    except CaseFileError as error:
+        assert "Traceback" not in str(error) and len(str(error)) < 2_000
+        return
+    settings = case.within(RunSettings()).settings()  # any other exception fails with this input
+    assert settings.planning_time_limit <= RunSettings().planning_time_limit
+    try:
+        case.scenario_file(folder / "case.json")
+    except CaseFileError:
+        pass
+
+
+@settings(max_examples=200, deadline=None, derandomize=True, database=None, suppress_health_check=list(HealthCheck))
+@given(hostile_case())
+def test_a_case_file_with_fields_of_any_kind_is_loaded_or_refused_never_a_traceback(tmp_path_factory, data):
+    _loaded_or_refused(tmp_path_factory.mktemp("case"), data)
+
+
+@pytest.mark.slow
+@settings(max_examples=5_000, deadline=None, derandomize=True, database=None, suppress_health_check=list(HealthCheck))
+@given(hostile_case())
+def test_five_thousand_hostile_case_files_are_loaded_or_refused(tmp_path_factory, data):
+    _loaded_or_refused(tmp_path_factory.mktemp("case"), data)

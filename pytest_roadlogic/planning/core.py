@@ -45,7 +45,13 @@ KEEP_LANE = ASP_DIR / "keep_lane.lp"
 LEAST_ACTION = ASP_DIR / "least_action.lp"
 # steps grounded in one call before the time limit is looked at again (a call cannot be stopped;
 # one per step had cost 2.5 s over 45 steps against 0.36 s in one call)
-GROUND_CHUNK = 50
+GROUND_CHUNK = 25
+# A solve cannot be stopped while clasp prepares the ground program (equivalence preprocessing),
+# which takes about as long as grounding it did, up to 1.6 times (measured: 200 one-second phases,
+# 6.0 s of grounding, then 9.7 s before a cancel took effect). A solve that would start with less
+# time left than this many times its control's grounding time is not started: the time limit then
+# holds within a tenth instead of being overrun by the preparation.
+PREPARATION_PER_GROUNDING = 1.6
 # what the process may hold while grounding: measured, 3,500 steps of five vehicles held 1.7 GB
 MAX_PLANNING_BYTES = 8 * 2**30
 
@@ -87,6 +93,7 @@ class IncrementalPlanner:
         self.stats: dict[str, float] = {"ground_s": 0.0, "solve_s": 0.0}
         # each control's theory propagator (weak: explaining a failure makes many controls)
         self._theories: weakref.WeakKeyDictionary[clingo.Control, object] = weakref.WeakKeyDictionary()
+        self._grounding: weakref.WeakKeyDictionary[clingo.Control, float] = weakref.WeakKeyDictionary()
         # a random start: the first plan follows choices drawn from the seed, not the solver's habits
         # (how long it lasts is as free as where it starts: the scenario rarely says, and a plan at
         # the shortest horizon is only the incremental search's habit)
@@ -262,7 +269,15 @@ class IncrementalPlanner:
         start = time.perf_counter()
         control.ground(parts)
         self._theories[control].prepare(control)
-        self.stats["ground_s"] += time.perf_counter() - start
+        spent = time.perf_counter() - start
+        self.stats["ground_s"] += spent
+        self._grounding[control] = self._grounding.get(control, 0.0) + spent
+
+    def _time_to_prepare(self, control: clingo.Control, deadline: float, message: str) -> None:
+        """``PlanningTimeout`` when a solve of ``control`` begun now would not be prepared by the
+        deadline (``PREPARATION_PER_GROUNDING``)."""
+        if deadline - time.monotonic() < PREPARATION_PER_GROUNDING * self._grounding.get(control, 0.0):
+            raise PlanningTimeout(message)
 
     def _next_model(self, control: clingo.Control, deadline: float, where: str, read, conflicts: int | None = None):
         """What ``read(model, theory)`` makes of the next model; None when there is none, or none
@@ -272,8 +287,10 @@ class IncrementalPlanner:
         theory = self._theories[control]
         if conflicts is not None:  # set only here: touching the configuration changes later searches
             control.configuration.solve.solve_limit = f"{conflicts},umax"
+        message = f"planning ran out of its time limit ({self.settings.time_limit:g} s){where}"
+        self._time_to_prepare(control, deadline, message)
         with control.solve(yield_=True, async_=True) as handle:
-            self._wait(handle, deadline, f"planning ran out of its time limit ({self.settings.time_limit:g} s){where}")
+            self._wait(handle, deadline, message)
             model = handle.model()
             if model is not None:
                 theory.on_model(model)
