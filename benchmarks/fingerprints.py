@@ -29,7 +29,7 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
 from pytest_roadlogic.pipeline import load_scenario, run_scenario  # noqa: E402
-from pytest_roadlogic.planning import settings_for  # noqa: E402
+from pytest_roadlogic.planning import NoPlanError, settings_for  # noqa: E402
 from pytest_roadlogic.sampling import STEP, logical_parameters  # noqa: E402
 from pytest_roadlogic.settings import ENCODINGS, RunSettings  # noqa: E402
 
@@ -71,7 +71,11 @@ def main() -> int:
         checked = load_scenario(path)
         for seed in args.seeds:
             for strategy, values in (("base", None), ("refined", midpoint_sample(checked))):
-                outcome = run_scenario(checked, seed=seed, settings=settings, values=values)
+                try:
+                    outcome = run_scenario(checked, seed=seed, settings=settings, values=values)
+                except NoPlanError as error:  # a midpoint sample may have none: its message is its print
+                    print(f"{path.stem:<22} seed {seed} {strategy:<7} no plan {digest(str(error))}", flush=True)
+                    continue
                 verdict = "accepted" if outcome.verdict.accepted else "rejected"
                 print(
                     f"{path.stem:<22} seed {seed} {strategy:<7} plan {digest(plan_text(outcome.plan))} trace {digest(outcome.simulation.trace.to_csv())} tries {outcome.tries} {verdict} rules {int(outcome.plan.stats.get('rules', 0))}",

@@ -45,7 +45,7 @@ KEEP_LANE = ASP_DIR / "keep_lane.lp"
 LEAST_ACTION = ASP_DIR / "least_action.lp"
 # steps grounded in one call before the time limit is looked at again (a call cannot be stopped;
 # one per step had cost 2.5 s over 45 steps against 0.36 s in one call)
-GROUND_CHUNK = 25
+GROUND_CHUNK = 50  # steps grounded in one call (the chunks decide the ground program's order, hence the plans)
 # A solve cannot be stopped while clasp prepares the ground program (equivalence preprocessing),
 # which takes about as long as grounding it did, up to 1.6 times (measured: 200 one-second phases,
 # 6.0 s of grounding, then 9.7 s before a cancel took effect). A solve that would start with less

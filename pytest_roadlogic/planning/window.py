@@ -103,7 +103,9 @@ class DurationWindow:
                         f"planning ran out of its time limit while grounding step {step} of {horizon}"
                     )
         self._ground(parts)
-        if time.monotonic() + PREPARATION_PER_GROUNDING * self.grounding > self.deadline:  # a solve begun past it would not stop before its preparation ends
+        if (
+            time.monotonic() + PREPARATION_PER_GROUNDING * self.grounding > self.deadline
+        ):  # a solve begun past it would not stop before its preparation ends
             raise PlanningTimeout(f"planning ran out of its time limit while grounding step {horizon}")
         if self.grounded < 0:
             for atom in self.control.symbolic_atoms.by_signature("relaxed", 1):
