@@ -347,3 +347,10 @@ def test_a_case_file_with_fields_of_any_kind_is_loaded_or_refused_never_a_traceb
 @given(hostile_case())
 def test_five_thousand_hostile_case_files_are_loaded_or_refused(tmp_path_factory, data):
     _loaded_or_refused(tmp_path_factory.mktemp("case"), data)
+
+
+def test_a_diagnostic_reads_at_most_what_the_front_end_reads_of_a_file():
+    from pytest_roadlogic.frontend.errors import SHOWN_FILE_BYTES
+    from pytest_roadlogic.frontend.limits import MAX_BYTES
+
+    assert SHOWN_FILE_BYTES == 4 * MAX_BYTES  # a character is at most 4 bytes of UTF-8

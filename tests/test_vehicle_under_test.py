@@ -83,9 +83,9 @@ def test_none_scripts_every_vehicle_and_a_vehicle_the_scenario_lacks_is_a_usage_
     properties = junit_properties(pytester.path / "none.xml")
     assert properties["conformant"] == "1" and "vehicle_under_test" not in properties
     missing = pytester.runpytest_subprocess(*ONE, "--roadlogic-dut", "hero")
-    missing.assert_outcomes(failed=1)
-    assert "--roadlogic-dut: the vehicle under test 'hero' is not a vehicle of the scenario" in missing.stdout.str()
-    assert "Traceback" not in missing.stdout.str()
+    assert missing.ret == pytest.ExitCode.USAGE_ERROR
+    assert "--roadlogic-dut (ini roadlogic_dut): no collected scenario has a vehicle 'hero'" in missing.stderr.str()
+    assert "Traceback" not in missing.stdout.str() + missing.stderr.str()
 
 
 @pytest.mark.parametrize(

@@ -11,6 +11,10 @@ from dataclasses import dataclass, field
 
 from ..confinement import UnreadableFile, read_bounded, shown
 
+# the most of a file read to show one of its lines: what the front end reads of a file at most
+# (frontend.limits.MAX_BYTES characters, 4 bytes each; limits imports this module, so not from there)
+SHOWN_FILE_BYTES = 8_000_000
+
 
 @dataclass(frozen=True)
 class SourceLocation:
@@ -47,10 +51,8 @@ class Diagnostic:
 
 def _read_quietly(path: str) -> str | None:
     """The text of a regular file to show a line of, None otherwise (a FIFO is never opened)."""
-    from .limits import MAX_BYTES  # limits imports this module
-
     try:
-        return read_bounded(path, 4 * MAX_BYTES).decode("utf-8")
+        return read_bounded(path, SHOWN_FILE_BYTES).decode("utf-8")
     except (UnreadableFile, UnicodeDecodeError):
         return None
 
