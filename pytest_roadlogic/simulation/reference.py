@@ -79,7 +79,9 @@ class Reference:
         self._vel = np.array([w.speed for w in self.waypoints])
         self._lanes = [w.lane for w in self.waypoints]
         speed, rate = self._vel[0], self.runup_acceleration
-        self._cruise_from = speed / rate  # seconds into the run-up when the vehicle stops accelerating
+        # seconds into the run-up when the vehicle stops accelerating (never, with no run-up's rate:
+        # the division had warned "divide by zero" and given the same infinity)
+        self._cruise_from = speed / rate if rate > 0 else np.inf
         # without a run-up the simulation starts in the plan's first state (the scenario's first
         # instant is the simulation's); with one, from standstill that far behind it
         self.runup_distance = speed * self.runup - speed**2 / (2 * rate) if self.runup > 0 else 0.0
