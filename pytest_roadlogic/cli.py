@@ -365,7 +365,8 @@ def _plan(args: argparse.Namespace) -> int:
         print(
             f"plan {plan.index + 1} of scenario {scenario.name} (seed {plan.seed}): horizon {plan.horizon} steps of {plan.dt:g} s"
         )
-        print(plan.table(functools.partial(scenario.registry.lane_number, lanes=plan.lanes)))
+        lane_number = functools.partial(scenario.registry.lane_number, lanes=plan.lanes)
+        print(plan.table(lane_number))
         for step, transition in plan.transitions:
             print(f"  step {step}: {events[transition]}")
         needed = fallback_needed(plan, lambda _: automaton, planner_settings, seed)
@@ -374,7 +375,7 @@ def _plan(args: argparse.Namespace) -> int:
         unasked = unasked_changes(plan, automaton)
         if unasked:
             print("  no plan has every vehicle do only what it is asked; in this one:")
-            print("\n".join(f"    {change}" for change in unasked))
+            print("\n".join(f"    {change.described(lane_number)}" for change in unasked))
     print(f"{len(plans)} plan{'s' if len(plans) != 1 else ''} in {seconds:.3f} s")
     return 0
 

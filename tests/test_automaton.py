@@ -9,13 +9,15 @@ from pytest_roadlogic.frontend import OscError, check_text
 from tests.conftest import OVERTAKE
 
 
-def test_overtake_automaton_is_the_papers_figure_4(overtake_automaton):
+def test_overtake_automaton_is_the_papers_figure_4_with_left_of_the_adjacent_lane(overtake_automaton):
+    """The paper's Figure 4, but for left_of: the standard's lane(left_of: x) is the lane next to
+    x's (its lane: argument defaults to 1), where the paper wrote any lane left of it."""
     a = overtake_automaton
     assert [loc.name for loc in a.locations] == ["init", "A", "B", "C", "fin"]
     edges = [(a.location(t.source).name, a.location(t.target).name, str(t.guard)) for t in a.transitions]
     assert edges == [
         ("init", "A", "l(v1) = l(v2) and 10 <= p(v2) - p(v1) <= 20"),
-        ("A", "B", "l(v1) < l(v2)"),
+        ("A", "B", "l(v1) - l(v2) = -1"),
         ("B", "C", "1 <= p(v1) - p(v2) <= 10"),
         ("C", "fin", "l(v1) = l(v2) and 5 <= p(v1) - p(v2) <= 10"),
     ]
@@ -141,7 +143,7 @@ def test_roadlogic_automaton_writes_valid_dot_with_the_papers_guards(tmp_path):
     graph = pydot.graph_from_dot_data(out.read_text())[0]
     labels = {e.get_label().strip('"') for e in graph.get_edges() if e.get_label()}
     assert "l(v1) = l(v2) and 10 <= p(v2) - p(v1) <= 20" in labels
-    assert "l(v1) < l(v2)" in labels
+    assert "l(v1) - l(v2) = -1" in labels
     assert len(graph.get_nodes()) >= 5
 
 

@@ -59,7 +59,6 @@ CASES = [
         "actor robot inherits car:\n    cover(speed)\n" + HEAD,
         "2:5: warning: cover() is read and ignored",
     ),
-    ("namespace", "namespace mine\n" + HEAD, "1:1: error: not supported: namespace"),
     ("export", "export s\n" + HEAD, "1:1: error: not supported: export"),
     ("export_namespace_wildcard", "export mine::*\n" + HEAD, "1:1: error: not supported: export"),
     (

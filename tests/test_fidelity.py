@@ -106,3 +106,19 @@ def test_a_files_vehicles_change_lane_hold_speed_and_start_as_its_reader_expects
     for vehicle, speed in starts.items():
         assert plan.states[vehicle][0].speed == pytest.approx(speed, abs=0.5), f"plan: {vehicle} starts elsewhere"
         assert float(trace.actors[vehicle]["speed"][0]) == pytest.approx(speed, abs=0.5)
+
+
+def test_an_unasked_change_is_said_in_the_files_lane_numbers_and_in_kph():
+    import functools
+
+    from pytest_roadlogic.constructs import STANDARD
+    from pytest_roadlogic.evaluation.fidelity import UnaskedChange
+
+    lane_number = functools.partial(STANDARD.lane_number, lanes=3)
+    # the planner's index 1 -> 0 is the standard's lane 2 -> 3 (counted from the right)
+    lane = UnaskedChange("lead", 4, "lane", 1, 0)
+    assert lane.described(lane_number) == "lead changes from lane 2 to 3 at step 4, unasked"
+    speed = UnaskedChange("lead", 5, "speed", 19.4, 5.6)
+    assert speed.described(lane_number) == (
+        "lead changes speed from 19.4 m/s (70 kph) to 5.6 m/s (20 kph) at step 5, unasked"
+    )

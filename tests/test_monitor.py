@@ -47,10 +47,10 @@ def test_staying_in_lane_fails_at_the_left_of_guard_with_values(overtake_automat
     verdict = monitor(overtake_automaton, trace)
     assert not verdict.accepted and verdict.robustness < 0
     assert verdict.furthest == "A"
-    assert verdict.miss.guard == "l(v1) < l(v2)"
+    assert verdict.miss.guard == "l(v1) - l(v2) = -1"
     assert verdict.miss.target == "B"
     assert verdict.miss.values == {"l(v1) - l(v2)": 0.0}
-    assert "stuck in A" in verdict.explain() and "l(v1) < l(v2)" in verdict.explain()
+    assert "stuck in A" in verdict.explain() and "l(v1) - l(v2) = -1" in verdict.explain()
 
 
 def test_not_getting_far_enough_ahead_fails_at_the_final_guard(overtake_automaton):

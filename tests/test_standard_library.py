@@ -108,7 +108,10 @@ def test_an_unknown_library_is_an_error_and_an_unknown_part_a_warning():
 @pytest.mark.parametrize(
     "use, message",
     [
-        ("a.drive(duration: 3s) with:\n        yaw(at: start)", "not supported: the standard's modifier 'yaw'"),
+        (
+            "a.drive(duration: 3s) with:\n        along_trajectory(start_offset: 1m)",
+            "not supported: the standard's modifier 'along_trajectory'",
+        ),
         ("a.follow_trajectory(duration: 3s)", "not supported: the standard's action 'follow_trajectory'"),
         ("a.fly(duration: 3s)", "unknown action 'fly'"),
     ],
@@ -127,11 +130,11 @@ def test_an_actor_derived_from_an_abstract_library_actor_is_driven_as_a_vehicle_
     assert checked.scenarios[0].scenario.actors[0].base == "vehicle"
 
 
-def test_a_value_of_a_dimension_the_tool_does_not_plan_is_read_and_refused_where_it_would_be_planned():
+def test_a_value_of_a_dimension_the_tool_does_not_plan_is_read_where_it_is_not_executed():
+    # an angle in a modifier the simulation does not model (constructs.unsimulated): read, warned
     checked = check_text("scenario s:\n    a: car\n    do a.drive(duration: 3s) with:\n        yaw(10deg)\n", "s.osc")
-    assert [(d.location.line, d.location.column, d.message) for d in checked.errors] == [
-        (4, 9, "not supported: the standard's modifier 'yaw'")
-    ]
+    assert checked.errors == []
+    assert [(d.location.line, d.location.column, d.severity) for d in checked.diagnostics] == [(4, 9, "warning")]
 
 
 def test_a_file_that_declares_a_library_unit_as_another_dimension_is_told_so_at_the_declaration(tmp_path):

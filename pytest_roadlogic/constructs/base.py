@@ -40,7 +40,12 @@ class CheckContext(Protocol):
     lanes_origin: str  # why the road has that many lanes, for messages (" (set by the lanes option)")
     env: dict
 
+    # the use being checked (a construct's warnings and errors about the whole use point here)
+    location: SourceLocation
+
     def error(self, location: SourceLocation, message: str, hint: str | None = None) -> None: ...
+
+    def warning(self, location: SourceLocation, message: str, hint: str | None = None) -> None: ...
 
     def evaluate(self, argument: model.Argument) -> Interval | None:
         """The argument's value, or None when it cannot be evaluated (the checker reports that itself)."""
@@ -142,7 +147,8 @@ class Construct:
     def apply(self, node: model.Invocation | model.Modifier, actor: str, lanes: int, env: dict, phase: Phase) -> None:
         """Translate one use (its arguments bound to the signature) into ``phase``: what the automaton calls."""
         binding = bind(self.signature, node.arguments)
-        phase.asks |= self.asks
+        if self.asked_within(binding):
+            phase.asks |= self.asks
         if self.asked_at_start(binding):
             phase.asks_at_start |= self.asks
         self.translate(Use(node, binding, actor, lanes, env), phase)
@@ -151,6 +157,11 @@ class Construct:
         """Whether this use asks for its lane or speed already at its phase's first instant (so that
         the change it asks for falls in the phase before): an action's change comes within its phase."""
         return False
+
+    def asked_within(self, binding: Binding) -> bool:
+        """Whether this use asks its actor to change lane or speed while its phase runs: an action
+        or a modifier about the whole phase (change_lane, acceleration, distance) does."""
+        return True
 
     def __repr__(self) -> str:
         return f"<{self.kind} {self.name}>"
@@ -184,6 +195,17 @@ class AnchoredModifier(Modifier):
 
     def held_throughout(self, binding: Binding) -> bool:
         return self.anchor(binding) == "all"
+
+    def asked_within(self, binding: Binding) -> bool:
+        """Asked per instant (docs/language.md, "What a vehicle is asked to do"): a lane asked
+        ``at: start`` is asked at the phase's first instant only (reached before it, then kept: it
+        had licensed a lane change anywhere in the phase, and the car being overtaken had moved
+        into the overtaker's lane); ``at: end`` asks for a change within the phase, and so does a
+        range held throughout. A speed asked ``at: start`` still licenses changes within its phase:
+        held there, the other vehicles' replans around a vehicle under test found no plan that
+        keeps to least action (tests/test_reactive.py's cut-in), which a held speed's replanning
+        must first handle."""
+        return self.anchor(binding) != "start" or self.asks != ASKS_LANE
 
     def translate(self, use: Use, phase: Phase) -> None:
         phase.anchor(self.guard(use), self.anchor(use.binding))

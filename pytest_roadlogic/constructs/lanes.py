@@ -8,7 +8,6 @@ variant per starting lane: guards see only the current state, and the road is fi
 
 from __future__ import annotations
 
-import math
 from typing import ClassVar
 
 from ..frontend.errors import SourceLocation, error_at
@@ -31,7 +30,10 @@ def keep_lane_variants(actor: str, lanes: int, source: SourceLocation, written: 
 
 class Lane(AnchoredModifier):
     """``lane(k)``, ``lane([1..2])``, ``lane(k, from: left)``, ``lane(same_as:|left_of:|right_of: x)``,
-    ``lane(side_of: x, side: left)``. ``left_of: x`` means any lane left of x's (the paper's l(v1) < l(v2))."""
+    ``lane(side_of: x, side: left)``. ``left_of: x`` is the lane next to x's on the left, and
+    ``lane(k, left_of: x)`` the k-th lane left of it: the standard's ``lane:`` argument counts the
+    lanes to the side and defaults to 1 (CARLA's runner, too, takes the adjacent lane). It had
+    meant any lane on that side (the paper's l(v1) < l(v2)), and a car was placed two lanes away."""
 
     counted_from: ClassVar[str] = "right"  # where lane(1) is when from: is not given
     convention: ClassVar[str] = LANE_CONVENTION
@@ -49,7 +51,7 @@ class Lane(AnchoredModifier):
             Parameter("from", "enum:side"),
             AT,
         ),
-        exclusive=(("lane", *RELATIVE),),
+        exclusive=(("lane", "same_as"), RELATIVE),
         required=(("lane", *RELATIVE),),
         description="lane occupancy, absolute or relative",
     )
@@ -63,7 +65,25 @@ class Lane(AnchoredModifier):
         if number is None:
             return
         value = context.evaluate(number)
-        if value is not None and value.dimension is None and (value.low < 1 or value.high > context.lanes):
+        if (
+            relative
+            and value is not None
+            and value.dimension is None
+            and (value.low < 1 or value.high >= context.lanes)
+        ):
+            shown = f"{value.low:g}" if value.is_point else str(value)
+            context.error(
+                number.value.location,
+                f"{shown} lanes to the side of another car do not fit on the road's {context.lanes} lanes{context.lanes_origin}",
+                "lane: counts the lanes to the side (1: the next lane)",
+            )
+            return
+        if (
+            not relative
+            and value is not None
+            and value.dimension is None
+            and (value.low < 1 or value.high > context.lanes)
+        ):
             shown = f"{value.low:g}" if value.is_point else str(value)
             context.error(
                 number.value.location,
@@ -72,28 +92,37 @@ class Lane(AnchoredModifier):
             )
 
     def lanes_needed(self, binding, highest) -> int:
-        relative = any(binding[name] is not None for name in ("left_of", "right_of", "side_of"))
-        return max(highest(binding["lane"]), 2 if relative else 1)
+        if any(binding[name] is not None for name in ("left_of", "right_of", "side_of")):
+            return highest(binding["lane"]) + 1  # the reference's lane and k more to the side
+        return highest(binding["lane"])
 
     def guard(self, use: Use) -> Guard:
         relation = use.relation(RELATIVE)
         if relation is not None:
             keyword, other = relation
+            if keyword == "same_as":
+                return Bound(Term(LANE, use.actor, other), 0, 0, use.location)
             if keyword == "side_of":
                 keyword = "left_of" if use.name("side") in (None, "left") else "right_of"
-            low, high = {"same_as": (0, 0), "left_of": (-math.inf, -1), "right_of": (1, math.inf)}[keyword]
-            return Bound(Term(LANE, use.actor, other), low, high, use.location)
+            low, high = (1, 1) if use.argument("lane") is None else self._whole(use)
+            # internally lane 0 is the leftmost: a lane left of x's has the smaller number
+            first, last = (-high, -low) if keyword == "left_of" else (low, high)
+            return Bound(Term(LANE, use.actor, other), first, last, use.location)
         if use.argument("lane") is None:
             raise error_at(
                 use.location, "lane() needs a lane number or same_as:/left_of:/right_of:", hint=self.convention
             )
-        value = use.interval("lane")
-        if value.dimension is not None or not float(value.low).is_integer() or not float(value.high).is_integer():
-            raise error_at(use.argument("lane").location, "a lane number must be a whole number", hint=self.convention)
-        low, high = int(value.low), int(value.high)  # within the road: the checker's check() saw to it
+        low, high = self._whole(use)  # within the road: the checker's check() saw to it
         from_left = (use.name("from") or self.counted_from) == "left"
         first, last = (low - 1, high - 1) if from_left else (use.lanes - high, use.lanes - low)
         return Bound(Term(LANE, use.actor), first, last, use.location)
+
+    def _whole(self, use: Use) -> tuple[int, int]:
+        """The ``lane:`` argument's whole numbers (a lane, or lanes to the side of a reference)."""
+        value = use.interval("lane")
+        if value.dimension is not None or not float(value.low).is_integer() or not float(value.high).is_integer():
+            raise error_at(use.argument("lane").location, "a lane number must be a whole number", hint=self.convention)
+        return int(value.low), int(value.high)
 
 
 class KeepLane(Modifier):

@@ -13,6 +13,7 @@ lane occupies both lanes in that step). Where a vehicle starts (its lane and spe
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 
 from ..logic.automaton import SymbolicAutomaton
@@ -32,10 +33,22 @@ class UnaskedChange:
     after: float
 
     def __str__(self) -> str:
+        return self.described()
+
+    def described(self, lane_number: Callable[[int], int] | None = None) -> str:
+        """The change in a user's terms: lanes as ``lane_number(index)`` gives them (the scenario's
+        dialect's numbering, as the plan's table shows them; default the planner's index, 0 the
+        leftmost), speeds in m/s and kph. The message had said "lane 1 to 0" beside a table
+        that showed the same change as 2 -> 3."""
         if self.kind == "lane":
-            return f"{self.vehicle} changes from lane {self.before:g} to {self.after:g} at step {self.step}, unasked"
+            number = lane_number or (lambda index: index)
+            return (
+                f"{self.vehicle} changes from lane {number(int(self.before))} to {number(int(self.after))} "
+                f"at step {self.step}, unasked"
+            )
         return (
-            f"{self.vehicle} changes speed from {self.before:.1f} to {self.after:.1f} m/s at step {self.step}, unasked"
+            f"{self.vehicle} changes speed from {self.before:.1f} m/s ({self.before * 3.6:.0f} kph) to "
+            f"{self.after:.1f} m/s ({self.after * 3.6:.0f} kph) at step {self.step}, unasked"
         )
 
 

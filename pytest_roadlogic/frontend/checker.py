@@ -105,6 +105,7 @@ class _ConstructContext:
 
     checker: _Checker
     env: dict
+    location: SourceLocation | None = None  # the use being checked
 
     @property
     def lanes(self) -> int:
@@ -116,6 +117,9 @@ class _ConstructContext:
 
     def error(self, location: SourceLocation, message: str, hint: str | None = None) -> None:
         self.checker.error(location, message, hint)
+
+    def warning(self, location: SourceLocation, message: str, hint: str | None = None) -> None:
+        self.checker.warning(location, message, hint)
 
     def evaluate(self, argument: model.Argument) -> Interval | None:
         try:
@@ -588,7 +592,7 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks):
                 used_names,
                 what=f"{node.action}()",
             )
-            action.check(binding, context)
+            action.check(binding, replace(context, location=node.location))
             if actor is not None and scenario.actor(actor) is not None:
                 stationary = scenario.actor(actor).stationary
                 if stationary and action.moves:
@@ -621,7 +625,8 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks):
                 used_names,
                 what=f"{modifier.name}()",
             )
-            construct.check(binding, context)
+            construct.check(binding, replace(context, location=modifier.location))
+            self._not_relative_to_itself(construct.signature, binding, actor, modifier.name)
         local = dict(env)
         local["it.duration"] = Interval(0.0, math.inf, TIME)
         for constraint in node.constraints:
@@ -646,6 +651,19 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks):
             used_names.update(n.name for n in names_in(constraint.expression))
         if node.until is not None:
             self._event_specification(node.until, scenario, env, node.location)
+
+    def _not_relative_to_itself(self, signature, binding: library.Binding, actor: str | None, what: str) -> None:
+        """An error at an argument that places the invocation's own actor relative to itself
+        (``ego.drive() with: lane(right_of: ego)``): no plan can meet it, and check had passed it."""
+        for parameter in signature.parameters:
+            argument = binding[parameter.name] if parameter.kind == "actor" else None
+            if actor is not None and argument is not None and isinstance(argument.value, model.Name):
+                if argument.value.name == actor:
+                    self.error(
+                        argument.location,
+                        f"{what}() places {actor!r} relative to itself ({parameter.name}: {actor})",
+                        "name another vehicle: a modifier constrains the actor of the invocation it is given to",
+                    )
 
     def _arguments(
         self, signature, arguments, location, scenario, env, used_actors, used_names, what: str

@@ -1,0 +1,116 @@
+"""What a vehicle is asked, per vehicle and per instant (docs/language.md, "What a vehicle is asked
+to do"), read on the first plan of files written as public files are written: a value asked
+`at: start` is met at the first instant and then kept, a relative lane is the adjacent lane, a
+vehicle placed relative to itself is refused at check, and what the simulation does not model is
+read with a warning."""
+
+from __future__ import annotations
+
+import pytest
+
+from pytest_roadlogic.automaton import build_automaton
+from pytest_roadlogic.frontend import OscError, check_text
+from pytest_roadlogic.pipeline import load_scenario
+from pytest_roadlogic.planning import ContinuousPlanner, ContinuousSettings
+
+SETTINGS = ContinuousSettings(time_limit=30.0)  # guards a hang only
+
+
+def first_plan(tmp_path, text: str):
+    path = tmp_path / "scenario.osc"
+    path.write_text(text)
+    automaton = build_automaton(load_scenario(path))
+    planner = ContinuousPlanner(automaton, SETTINGS, 1)
+    plan = planner.first()
+    assert planner.stats["least_action"] == 1.0, "planned with only asked changes"
+    return plan
+
+
+OVERTAKE_AND_RETURN = """scenario overtake_and_return:
+    ego: car
+    npc: car
+    do serial:
+        pull_out: parallel(duration: 4s):
+            npc.drive() with:
+                lane(1, at: start)
+                speed(20mps, at: start)
+            ego.drive() with:
+                lane(same_as: npc, at: start)
+                position(20m, behind: npc, at: start)
+                lane(left_of: npc, at: end)
+        pass_by: parallel(duration: [4s..8s]):
+            npc.drive()
+            ego.drive() with:
+                position(10m, ahead_of: npc, at: end)
+                lane(same_as: npc, at: end)
+"""
+
+
+def test_a_lane_asked_at_start_is_asked_at_that_instant_and_one_asked_at_end_within_the_phase(tmp_path):
+    path = tmp_path / "scenario.osc"
+    path.write_text(OVERTAKE_AND_RETURN)
+    automaton = build_automaton(load_scenario(path))
+    init, pull_out, pass_by, _ = automaton.locations  # named after their invocations, in this order
+    # the npc's lane(1, at: start) asks for its lane at the first instant only: within the phase
+    # it keeps its lane (it had licensed the npc to move into the ego's lane)
+    assert not pull_out.asked("npc", "lane") and not pass_by.asked("npc", "lane")
+    assert init.asked("npc", "lane"), "reached before the phase (where the scenario starts: no change)"
+    # the ego's lane(left_of: npc, at: end) asks for a lane change within the phase, and so does
+    # the return; the reference vehicle of a relation is never asked
+    assert pull_out.asked("ego", "lane") and pass_by.asked("ego", "lane")
+    # a speed asked at start still licenses changes within its phase (not yet per instant)
+    assert pull_out.asked("npc", "speed")
+
+
+def test_the_car_being_overtaken_keeps_its_lane_in_the_first_plan(tmp_path):
+    plan = first_plan(tmp_path, OVERTAKE_AND_RETURN)
+    assert len({state.lane for state in plan.states["npc"]}) == 1, "the npc changed lane unasked"
+    lanes = [state.lane for state in plan.states["ego"]]
+    assert lanes[0] == lanes[-1] == plan.states["npc"][0].lane and len(set(lanes)) == 2, lanes
+
+
+@pytest.mark.parametrize("side, offset", [("right_of", 1), ("left_of", -1)])
+def test_a_lane_beside_another_car_is_the_adjacent_lane(tmp_path, side, offset):
+    plan = first_plan(
+        tmp_path,
+        "scenario beside:\n    ego: car\n    npc: car\n    path: Path\n    path.path_min_driving_lanes(4)\n"
+        "    do parallel(duration: 3s):\n        ego.drive() with:\n            lane(2, at: start)\n"
+        f"        npc.drive() with:\n            lane({side}: ego, at: start)\n",
+    )
+    # internally lane 0 is the leftmost: the lane right of ego's has the next number
+    assert plan.states["npc"][0].lane - plan.states["ego"][0].lane == offset
+
+
+def test_a_lane_count_beside_another_car_counts_the_lanes_to_that_side(tmp_path):
+    plan = first_plan(
+        tmp_path,
+        "scenario two_over:\n    ego: car\n    npc: car\n    path: Path\n    path.path_min_driving_lanes(4)\n"
+        "    do parallel(duration: 3s):\n        ego.drive() with:\n            lane(1, at: start)\n"
+        "        npc.drive() with:\n            lane(2, left_of: ego, at: start)\n",
+    )
+    assert plan.states["ego"][0].lane - plan.states["npc"][0].lane == 2
+
+
+def test_a_vehicle_placed_relative_to_itself_is_refused_at_check():
+    text = "scenario s:\n    ego: car\n    do ego.drive(duration: 3s) with:\n        lane(right_of: ego)\n"
+    with pytest.raises(OscError) as refused:
+        check_text(text, "s.osc").raise_for_errors()
+    assert "s.osc:4:14: error: lane() places 'ego' relative to itself (right_of: ego)" in str(refused.value)
+
+
+@pytest.mark.parametrize("modifier", ["yaw(0rad, at: start)", "orientation(yaw: 0rad)", 'physical_movement("simple")'])
+def test_a_modifier_the_simulation_does_not_model_is_read_with_one_located_warning(modifier):
+    text = (
+        f"scenario s:\n    ego: car\n    do ego.drive(duration: 3s) with:\n        speed(20kph)\n        {modifier}\n"
+    )
+    checked = check_text(text, "s.osc")
+    checked.raise_for_errors()
+    warnings = [d for d in checked.diagnostics if d.severity == "warning"]
+    assert len(warnings) == 1 and warnings[0].location.line == 5
+    assert "is read but not simulated" in warnings[0].message
+    build_automaton(checked.scenarios[0])
+
+
+def test_a_namespace_statement_is_read_as_the_runs_one_namespace():
+    text = "namespace demo use std\nscenario s:\n    ego: car\n    do ego.drive(duration: 3s)\n"
+    check_text(text, "s.osc").raise_for_errors()
