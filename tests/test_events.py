@@ -68,11 +68,23 @@ def test_an_event_nobody_emits_is_a_checker_error_at_the_wait():
     assert "n.osc:6:10: error: nothing emits the event 'e'" in checked.report()
 
 
-def test_emit_outside_a_serial_is_a_located_error():
-    text = "scenario s:\n  a: car\n  event e\n  do parallel:\n    a.drive()\n    emit e\n"
+def test_emit_in_a_parallel_is_emitted_at_the_parallels_start():
+    text = "scenario s:\n  a: car\n  event e\n  do parallel:\n    a.drive(duration: 3s)\n    emit e\n"
+    built = automaton(text, "p.osc")
+    starts = [t for t in built.transitions if t.source == built.initial]
+    assert starts and all("e emitted" in t.events for t in starts)
+    assert not any("e emitted" in t.events for t in built.transitions if t.source != built.initial)
+
+
+def test_emit_in_a_one_of_or_alone_in_a_parallel_is_a_located_error():
+    text = "scenario s:\n  a: car\n  event e\n  do one_of:\n    a.drive()\n    emit e\n"
     with pytest.raises(OscError) as caught:
         automaton(text, "p.osc")
-    assert "p.osc:6:5: error: emit is a member of a serial" in str(caught.value)
+    assert "p.osc:6:5: error: emit is a member of a serial or a parallel" in str(caught.value)
+    alone = "scenario s:\n  a: car\n  event e\n  do serial:\n    a.drive()\n    parallel:\n      emit e\n"
+    with pytest.raises(OscError) as caught:
+        automaton(alone, "p.osc")
+    assert "a parallel of only emit has no instant to emit at" in str(caught.value)
 
 
 def test_until_a_condition_ends_the_phase_where_the_condition_holds():

@@ -148,8 +148,8 @@ class _Builder:
         elif isinstance(behavior, model.Emit):
             raise error_at(
                 behavior.location,
-                "emit is a member of a serial: it marks the instant between its neighbours",
-                hint="put it in a serial, after the phase whose end it announces",
+                "emit is a member of a serial or a parallel: it marks an instant of its neighbours",
+                hint="put it in a serial, after the phase whose end it announces, or in a parallel, emitted at its start",
             )
         else:
             raise error_at(
@@ -171,10 +171,26 @@ class _Builder:
             raise error_at(behavior.location, f"{behavior.operator} has no members")
         if behavior.operator == "serial":
             return self.serial(behavior)
-        children = [self.translate(child) for child in behavior.children]
         if behavior.operator == "parallel":
-            return _parallel(children, behavior.location) if len(children) > 1 else children[0]
-        return _one_of(children, next(self.counter))
+            return self.parallel(behavior)
+        return _one_of([self.translate(child) for child in behavior.children], next(self.counter))
+
+    def parallel(self, behavior: model.Composition) -> _Fragment:
+        """Members that start together and end together; an ``emit`` among them is emitted at
+        their start, the one instant it shares with every member (the standard allows emit in any
+        composition; it had been refused here)."""
+        events = [child.event for child in behavior.children if isinstance(child, model.Emit)]
+        children = [self.translate(child) for child in behavior.children if not isinstance(child, model.Emit)]
+        if not children:
+            raise error_at(
+                behavior.location,
+                "a parallel of only emit has no instant to emit at",
+                hint="emit beside a phase, or between two phases of a serial",
+            )
+        fragment = _parallel(children, behavior.location) if len(children) > 1 else children[0]
+        if events:
+            _emit(fragment.outgoing(fragment.initial), events)
+        return fragment
 
     def serial(self, behavior: model.Composition) -> _Fragment:
         """Members one after another; an ``emit`` marks the junction it stands at."""
