@@ -664,6 +664,7 @@ def _show(result, out: Path) -> int:
     for stage, seconds in result.seconds.items():
         print(f"  {stage:<12} {seconds:7.3f} s")
     print(outcome.verdict.explain())
+    _print_unasked(outcome)
     if outcome.dut is not None:
         print(oracle_line(outcome.dut, len(outcome.simulation.replans)))
         if result.message:
@@ -673,6 +674,18 @@ def _show(result, out: Path) -> int:
     if outcome.dut is not None:
         return EXIT_ACCEPTED if result.outcome == PASSED else EXIT_REJECTED
     return EXIT_ACCEPTED if outcome.verdict.accepted else EXIT_REJECTED
+
+
+def _print_unasked(outcome) -> None:
+    """The plan's changes that no construct of their vehicle asks for, in the file's lane numbers
+    (``roadlogic plan`` lists them too): a conformant run whose plan had one is said so."""
+    from .evaluation.fidelity import unasked_changes
+
+    changes = unasked_changes(outcome.plan, outcome.automaton)
+    if changes:
+        lane_number = functools.partial(outcome.scenario.registry.lane_number, lanes=outcome.plan.lanes)
+        print("no plan has every vehicle do only what it is asked; in this one:")
+        print("\n".join(f"  {change.described(lane_number)}" for change in changes))
 
 
 def oracle_line(report, replans: int) -> str:

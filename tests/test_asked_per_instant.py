@@ -114,3 +114,18 @@ def test_a_modifier_the_simulation_does_not_model_is_read_with_one_located_warni
 def test_a_namespace_statement_is_read_as_the_runs_one_namespace():
     text = "namespace demo use std\nscenario s:\n    ego: car\n    do ego.drive(duration: 3s)\n"
     check_text(text, "s.osc").raise_for_errors()
+
+
+def test_a_run_whose_plan_needs_an_unasked_change_says_which_vehicle_did_what_in_the_files_lanes(tmp_path, capsys):
+    from pytest_roadlogic import cli
+
+    (tmp_path / "s.osc").write_text(
+        "scenario join:\n    ego: car\n    npc: car\n    do parallel(duration: 6s):\n"
+        "        ego.drive() with:\n            lane(1, at: start)\n            keep_lane()\n"
+        "            lane(same_as: npc, at: end)\n"
+        "        npc.drive() with:\n            lane(2, at: start)\n            position(40m, ahead_of: ego, at: start)\n"
+    )
+    cli.main(["run", str(tmp_path / "s.osc"), "--seed", "1", "--out", str(tmp_path / "out")])
+    said = capsys.readouterr().out
+    assert "no plan has every vehicle do only what it is asked; in this one:" in said
+    assert "npc changes from lane 2 to 1 at step" in said, said
