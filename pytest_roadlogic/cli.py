@@ -338,7 +338,6 @@ def _roots(args: argparse.Namespace, named: Path):
 
 
 def _plan(args: argparse.Namespace) -> int:
-    from .evaluation.fidelity import unasked_changes
     from .planning import planner_for, settings_for
     from .planning.fallbacks import fallback_needed, planned
 
@@ -365,17 +364,13 @@ def _plan(args: argparse.Namespace) -> int:
         print(
             f"plan {plan.index + 1} of scenario {scenario.name} (seed {plan.seed}): horizon {plan.horizon} steps of {plan.dt:g} s"
         )
-        lane_number = functools.partial(scenario.registry.lane_number, lanes=plan.lanes)
-        print(plan.table(lane_number))
+        print(plan.table(functools.partial(scenario.registry.lane_number, lanes=plan.lanes)))
         for step, transition in plan.transitions:
             print(f"  step {step}: {events[transition]}")
         needed = fallback_needed(plan, lambda _: automaton, planner_settings, seed)
         if needed:
             print(f"  {needed}")
-        unasked = unasked_changes(plan, automaton)
-        if unasked:
-            print("  no plan has every vehicle do only what it is asked; in this one:")
-            print("\n".join(f"    {change.described(lane_number)}" for change in unasked))
+        _print_unasked(plan, automaton, scenario.registry, indent="  ")
     print(f"{len(plans)} plan{'s' if len(plans) != 1 else ''} in {seconds:.3f} s")
     return 0
 
@@ -664,7 +659,7 @@ def _show(result, out: Path) -> int:
     for stage, seconds in result.seconds.items():
         print(f"  {stage:<12} {seconds:7.3f} s")
     print(outcome.verdict.explain())
-    _print_unasked(outcome)
+    _print_unasked(outcome.plan, outcome.automaton, outcome.scenario.registry)
     if outcome.dut is not None:
         print(oracle_line(outcome.dut, len(outcome.simulation.replans)))
         if result.message:
@@ -676,16 +671,16 @@ def _show(result, out: Path) -> int:
     return EXIT_ACCEPTED if outcome.verdict.accepted else EXIT_REJECTED
 
 
-def _print_unasked(outcome) -> None:
+def _print_unasked(plan, automaton, registry, indent: str = "") -> None:
     """The plan's changes that no construct of their vehicle asks for, in the file's lane numbers
-    (``roadlogic plan`` lists them too): a conformant run whose plan had one is said so."""
+    (``registry``'s dialect), under ``roadlogic plan``'s table and ``roadlogic run``'s verdict."""
     from .evaluation.fidelity import unasked_changes
 
-    changes = unasked_changes(outcome.plan, outcome.automaton)
+    changes = unasked_changes(plan, automaton)
     if changes:
-        lane_number = functools.partial(outcome.scenario.registry.lane_number, lanes=outcome.plan.lanes)
-        print("no plan has every vehicle do only what it is asked; in this one:")
-        print("\n".join(f"  {change.described(lane_number)}" for change in changes))
+        lane_number = functools.partial(registry.lane_number, lanes=plan.lanes)
+        print(f"{indent}no plan has every vehicle do only what it is asked; in this one:")
+        print("\n".join(f"{indent}  {change.described(lane_number)}" for change in changes))
 
 
 def oracle_line(report, replans: int) -> str:

@@ -78,9 +78,12 @@ def positive(what: str, example: str, unit: str = "a number") -> Callable[[str],
 MAX_SECONDS = 86_400.0
 
 
+_positive_seconds = positive("a time limit", "60", "a number of seconds")
+
+
 def seconds(text: str) -> float:
     """A time limit in seconds, above 0 and at most ``MAX_SECONDS``."""
-    value = positive("a time limit", "60", "a number of seconds")(text)
+    value = _positive_seconds(text)
     if value > MAX_SECONDS:
         raise OptionError(f"{text!r} is past the longest time limit; give seconds from above 0 to {MAX_SECONDS:g}")
     return value

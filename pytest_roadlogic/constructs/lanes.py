@@ -65,26 +65,18 @@ class Lane(AnchoredModifier):
         if number is None:
             return
         value = context.evaluate(number)
-        if (
-            relative
-            and value is not None
-            and value.dimension is None
-            and (value.low < 1 or value.high >= context.lanes)
-        ):
-            shown = f"{value.low:g}" if value.is_point else str(value)
+        # a lane number is one of the road's lanes; beside another car, a count of lanes to its side
+        most = context.lanes - 1 if relative else context.lanes
+        if value is None or value.dimension is not None or (1 <= value.low and value.high <= most):
+            return
+        shown = f"{value.low:g}" if value.is_point else str(value)
+        if relative:
             context.error(
                 number.value.location,
                 f"{shown} lanes to the side of another car do not fit on the road's {context.lanes} lanes{context.lanes_origin}",
                 "lane: counts the lanes to the side (1: the next lane)",
             )
-            return
-        if (
-            not relative
-            and value is not None
-            and value.dimension is None
-            and (value.low < 1 or value.high > context.lanes)
-        ):
-            shown = f"{value.low:g}" if value.is_point else str(value)
+        else:
             context.error(
                 number.value.location,
                 f"lane {shown} is outside the road's {context.lanes} lanes{context.lanes_origin}",

@@ -203,13 +203,13 @@ def _closure(path: Path, roots: ReadRoots) -> list[model.OscFile]:
     the checker reports them)."""
     files: list[model.OscFile] = []
     seen: set[Path] = set()
-    stack = [path.resolve()]
+    named = path.resolve()
+    stack = [named]
     while stack:
         current = stack.pop()
-        imported = current != path.resolve()
         if (
             current in seen
-            or (imported and current.suffix != ".osc")  # the checker refuses it, never read
+            or (current != named and current.suffix != ".osc")  # an import the checker refuses, never read
             or not roots.allows(current)
             or regular_file_problem(current) is not None
         ):

@@ -275,7 +275,7 @@ def _road(path: Path, element: _Element) -> MapRoad:
                 record.line,
                 record.column,
             )
-    _check_reference_line(path, element, geometries)
+    _check_reference_line(path, records, geometries)
     lanes = element.find("lanes")
     if lanes is None:
         raise MapError(path, "a road without <lanes>", "give its lane sections", element.line, element.column)
@@ -313,13 +313,13 @@ def _road(path: Path, element: _Element) -> MapRoad:
     )
 
 
-def _check_reference_line(path: Path, road: _Element, geometries: tuple[Geometry, ...]) -> None:
+def _check_reference_line(path: Path, records: list[_Element], geometries: tuple[Geometry, ...]) -> None:
     """``MapError`` at the geometry whose line leaves the map's extent, is not finite, or bends
     tighter than ``MAX_CURVATURE``: what the simulator's frame and the plot cannot take (paramPoly3
     coefficients of 1e300 had reached the animation as NaN)."""
     import numpy as np
 
-    for geometry, record in zip(geometries, road.find("planView").findall("geometry")):
+    for geometry, record in zip(geometries, records):
         where = (record.line, record.column)
         bends = {"arc": (geometry.curvature,), "spiral": (geometry.curvature_start, geometry.curvature_end)}
         if any(abs(k) > MAX_CURVATURE for k in bends.get(geometry.kind, ())):
