@@ -674,13 +674,14 @@ def _show(result, out: Path) -> int:
 def _print_unasked(plan, automaton, registry, indent: str = "") -> None:
     """The plan's changes that no construct of their vehicle asks for, in the file's lane numbers
     (``registry``'s dialect), under ``roadlogic plan``'s table and ``roadlogic run``'s verdict."""
-    from .evaluation.fidelity import unasked_changes
+    from .evaluation.fidelity import said_unasked
 
-    changes = unasked_changes(plan, automaton)
-    if changes:
-        lane_number = functools.partial(registry.lane_number, lanes=plan.lanes)
-        print(f"{indent}no plan has every vehicle do only what it is asked; in this one:")
-        print("\n".join(f"{indent}  {change.described(lane_number)}" for change in changes))
+    said = said_unasked(plan, automaton, registry)
+    if said:
+        print(
+            f"{indent}no plan has every vehicle do only what it is asked; this one has the fewest changes nothing asks for:"
+        )
+        print("\n".join(f"{indent}  {line}" for line in said))
 
 
 def oracle_line(report, replans: int) -> str:

@@ -42,6 +42,7 @@ from .settings import dialect as parse_dialect
 
 DEFAULT_ARTIFACTS = "roadlogic-artifacts"
 SLOW_ACTORS = 3  # a scenario with more moving vehicles than this is marked slow
+MAX_UNASKED_SAID = 10  # unasked changes an item's JUnit property lists
 # plugin-only options: where failures are written, and a case to run alone
 EXTRA_OPTIONS = (
     ("artifacts", "directory for the artifacts of failing cases", DEFAULT_ARTIFACTS),
@@ -269,6 +270,8 @@ class ScenarioItem(pytest.Item):
         )
         self.dut_reports: list = []  # the oracles' verdicts of the cases run (a vehicle under test drove)
         self.not_exercised = ""  # why the last case that was not exercised did not happen
+        self.unasked_cases = 0  # cases whose plan needed changes nothing asks for
+        self.unasked_said: list[str] = []  # the last such plan's changes, as a user reads them
 
     # ---------------------------------------------------------------- running
 
@@ -334,6 +337,9 @@ class ScenarioItem(pytest.Item):
             self.user_properties += [(key(outcome), self.tally.outcomes[outcome]) for outcome in OUTCOMES]
             self.user_properties += [(f"seconds_{stage}", round(self.tally.seconds[stage], 3)) for stage in STAGES]
             self.user_properties += _oracle_properties(self.dut_reports)
+            self.user_properties.append(("unasked", self.unasked_cases))
+            if self.unasked_said:
+                self.user_properties.append(("unasked_changes", "; ".join(self.unasked_said[:MAX_UNASKED_SAID])))
         if missing is not None:
             pytest.fail(f"roadlogic: --roadlogic-dut: {missing}", pytrace=False)
 
@@ -352,6 +358,13 @@ class ScenarioItem(pytest.Item):
         self.tally.add(result.outcome, result.seconds)
         if result.run is not None and result.run.dut is not None:
             self.dut_reports.append(result.run.dut)
+        if result.run is not None:
+            from .evaluation.fidelity import said_unasked
+
+            said = said_unasked(result.run.plan, result.run.automaton, result.run.scenario.registry)
+            if said:  # no plan had only asked changes: the report says who did what
+                self.unasked_cases += 1
+                self.unasked_said = said
         if result.outcome == NOT_EXERCISED:
             self.not_exercised = result.message
         if result.failed:
@@ -619,5 +632,10 @@ class SessionSummary:
         if c.get("set_aside"):
             terminalreporter.write_line(
                 f"{c['set_aside']} samples set aside: each of their values has plans within the planner's margins and limits, but not together"
+            )
+        if c.get("unasked"):
+            terminalreporter.write_line(
+                f"{c['unasked']} examples needed changes nothing in their scenario asks for (no plan had only asked "
+                "ones): the item's JUnit property unasked_changes says which vehicle did what"
             )
         terminalreporter.write_line(f"time per stage: {seconds}")

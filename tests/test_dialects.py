@@ -1,7 +1,8 @@
 """Two dialects: the standard's and CARLA's scenario runner (constructs/carla.py).
 
-In CARLA's, lane(1) is the leftmost lane and speed(v) without at: is a target reached at the
-phase's end; everything else reads as in the standard. The dialect travels with a case, so a
+In CARLA's, lane(1) is the leftmost lane and speed(v) without at: is a target driven toward from
+the phase's start and checked at its end (tests/test_carla_as_its_runner.py); everything else reads
+as in the standard. The dialect travels with a case, so a
 replay reads the file as the run did.
 """
 

@@ -225,7 +225,9 @@ def test_each_next_plan_is_steered_to_start_elsewhere_in_the_start_band_and_only
     # the cars go: v2 holds its speed, and v1 must pass it): a nudge of an earlier plan left on
     # would pull each towards the high end instead
     assert min(plans[0].states[v][0].speed for v in ("v1", "v2")) == pytest.approx(low, abs=0.5)
-    assert starts[1] > starts[2] > starts[3] > starts[0], f"start speeds {starts}"
+    # (the lower quarter, 25.7 m/s, is where the first plan's faster car starts already: its slower
+    # car, which holds its speed, at the band's low end and 3.5 m/s slower)
+    assert starts[1] > starts[2] > starts[3] >= starts[0], f"start speeds {starts}"
     assert starts[2] == pytest.approx(low + 0.5 * (high - low), abs=2.0), f"start speeds {starts}"
     assert all(low - 0.5 <= speed <= high + 0.5 for speed in starts), f"start speeds {starts}"
     for plan in plans:

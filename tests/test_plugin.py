@@ -432,3 +432,18 @@ def test_a_folders_conftest_hooks_apply_to_that_folders_files_only(pytester):
     result = pytester.runpytest_subprocess("--collect-only", "-q", *QUIET)
     assert result.ret == 0, result.stdout.str()
     assert (pytester.path / "asked.txt").read_text().split() == ["x.osc"]
+
+
+def test_the_summary_and_junit_say_which_vehicle_had_to_do_what_nothing_asked_which_vehicle_had_to_do_what_nothing_asked(
+    pytester,
+):
+    from tests.test_asked_per_instant import FOLLOW_THEN_OVERTAKE_EXACT
+
+    pytester.makefile(".osc", exact=FOLLOW_THEN_OVERTAKE_EXACT)
+    pytester.makeini("[pytest]\nroadlogic_strategy = base\nroadlogic_examples = 1\n")
+    result = pytester.runpytest_subprocess("--junitxml", "junit.xml", *QUIET)
+    result.assert_outcomes(passed=1)
+    result.stdout.fnmatch_lines(["*1 examples needed changes nothing in their scenario asks for*"])
+    properties = {p.get("name"): p.get("value") for p in ET.parse(pytester.path / "junit.xml").iter("property")}
+    assert properties["unasked"] == "1"
+    assert properties["unasked_changes"].startswith("slow changes speed from"), properties["unasked_changes"]

@@ -12,6 +12,7 @@ import pytest
 
 from pytest_roadlogic.automaton import build_automaton
 from pytest_roadlogic.dut import UnderTest
+from pytest_roadlogic.dut.acc import AdaptiveCruiseControl
 from pytest_roadlogic.pipeline import guided_planning, load_scenario, run_instances
 from pytest_roadlogic.planning import settings_for
 from pytest_roadlogic.planning.fallbacks import planned
@@ -95,8 +96,8 @@ def test_no_vehicle_limit_binds_the_past_so_a_vehicle_under_test_that_braked_har
 ):
     replanner, plan = planning
     # 6 m/s slower than a second before: beyond the plan's jerk limit, which binds only the future
-    assert plan.states["dut.car"][1].speed - (plan.states["dut.car"][2].speed - 4.0) > 6.0
-    replan = replanner.replan(plan, 2, observed_at(plan, 2, dut_car=(-3.0, -4.0)))
+    assert plan.states["dut.car"][1].speed - (plan.states["dut.car"][2].speed - 7.0) > 6.0
+    replan = replanner.replan(plan, 2, observed_at(plan, 2, dut_car=(-3.0, -7.0)))
     assert replan.plan is not None, replan.why
 
 
@@ -147,10 +148,12 @@ def test_a_cut_in_seen_not_to_have_happened_when_planned_is_replanned_to_end_lat
     npc = plan.states["npc"]
     before = npc[0].lane
     assert npc[end].lane != before, "the plan's npc is in the lane of the vehicle under test when its cut-in ends"
-    # observed at that step: the npc seen in its first lane throughout, and still there
+    # observed at that step: the npc seen in its first lane throughout, and still there, lagging
+    # its plan as a simulated car does (8 m back, 4 m/s faster than the vehicle under test, not
+    # the 11 m/s its plan had reached: from there no car could still end the cut-in at its gap)
     seen = seen_until(plan, end, npc={k: before for k in range(end)})
     observed = observed_at(plan, end)
-    observed["npc"] = PlanState(observed["npc"].position, before, observed["npc"].speed)
+    observed["npc"] = PlanState(observed["npc"].position - 8.0, before, observed["dut.car"].speed + 4.0)
     replan = replanner.replan(plan, end, observed, seen)
     assert replan.plan is not None and replan.seen, replan.why
     ended = [at for at, t in replan.plan.transitions if t == cut_in_ends]
@@ -158,10 +161,25 @@ def test_a_cut_in_seen_not_to_have_happened_when_planned_is_replanned_to_end_lat
     assert replan.plan.states["npc"][ended[0]].lane == replan.plan.states["dut.car"][ended[0]].lane
 
 
+class CautiousAcc(AdaptiveCruiseControl):
+    """A reference driver set 15% below the speed it starts at: it slows down where its plan holds
+    its speed (the plan's vehicle under test holds what it is asked at the start)."""
+
+    def start(self, vehicle, reference, road, dt):
+        super().start(vehicle, reference, road, dt)
+        self.set_speed *= 0.85
+
+
+def cautious(name: str):
+    return CautiousAcc() if name == "dut.car" else None
+
+
 def test_with_replanning_the_cut_in_happens_around_a_vehicle_under_test_that_does_not_drive_as_planned():
     scenario = load_scenario(CUT_IN)
-    reactive = next(run_instances(scenario, 1, values=VALUES, under_test=UnderTest(), max_tries=1))
-    scripted = next(run_instances(scenario, 1, values=VALUES, under_test=UnderTest(replan_period=0), max_tries=1))
+    reactive = next(run_instances(scenario, 1, values=VALUES, drivers=cautious, under_test=UnderTest(), max_tries=1))
+    scripted = next(
+        run_instances(scenario, 1, values=VALUES, drivers=cautious, under_test=UnderTest(replan_period=0), max_tries=1)
+    )
     assert reactive.verdict.accepted and not reactive.dut.failed, reactive.verdict.explain()
     assert reactive.simulation.replans and all(r.plan is not None for r in reactive.simulation.replans)
     assert not scripted.verdict.accepted and not scripted.simulation.replans

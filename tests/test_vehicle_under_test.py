@@ -68,8 +68,19 @@ def test_an_item_whose_cases_mostly_did_not_happen_fails_saying_it_tested_nothin
     from tests.test_reactive import VALUES
 
     copy(pytester, "cut_in.osc")
+    # a vehicle under test set 15% below the speed it starts at: its plan holds the speed
+    pytester.makeconftest(
+        "from pytest_roadlogic.dut.acc import AdaptiveCruiseControl\n\n"
+        "class Cautious(AdaptiveCruiseControl):\n"
+        "    def start(self, vehicle, reference, road, dt):\n"
+        "        super().start(vehicle, reference, road, dt)\n"
+        "        self.set_speed *= 0.85\n\n"
+        "def pytest_roadlogic_driver(config, scenario, vehicle):\n"
+        "    return Cautious() if vehicle == 'dut.car' else None\n"
+    )
     settings = RunSettings(replan_period=0.0, tries=1)
-    case = Case.of("cut_in.osc", "cut_in", settings, values=VALUES).save(pytester.path / "case.json")
+    case = Case.of("cut_in.osc", "cut_in", settings, values=VALUES, drivers={"dut.car": "conftest:Cautious"})
+    case = case.save(pytester.path / "case.json")
     result = pytester.runpytest_subprocess("--roadlogic-replay", str(case), *QUIET)
     result.assert_outcomes(failed=1)
     report = result.stdout.str()

@@ -29,7 +29,7 @@ from ..frontend import model
 from ..frontend.checked import CheckedScenario
 from ..frontend.errors import error_at
 from ..frontend.logical import names_by_place
-from ..logic.automaton import Location, PhaseBound, SymbolicAutomaton, Timing, Transition
+from ..logic.automaton import Location, PhaseBound, SymbolicAutomaton, Timing, Toward, Transition
 from ..logic.guards import LANE, TRUE, Guard, Not, conjunction
 from ..logic.phase import Variant
 from .translation import check_behavior_arguments, duration_interval, phase_guards
@@ -83,8 +83,8 @@ class _Fragment:
     listening: dict[Key, frozenset[str]] = field(default_factory=dict)
     # (actor, "lane" | "speed"): what the actors' own constructs ask of them here (Location.asks),
     # and what they ask for already at the first instant here (the location before must bring it)
-    asks: dict[Key, frozenset[tuple[str, str]]] = field(default_factory=dict)
-    asks_at_start: dict[Key, frozenset[tuple[str, str]]] = field(default_factory=dict)
+    asks: dict[Key, frozenset[tuple[str, str | Toward]]] = field(default_factory=dict)
+    asks_at_start: dict[Key, frozenset[tuple[str, str | Toward]]] = field(default_factory=dict)
 
     def outgoing(self, key: Key) -> list[_Edge]:
         return [e for e in self.edges if e.source == key]
@@ -350,8 +350,8 @@ def _phase(
     labelled: bool,
     variant: Variant,
     drivers: frozenset[str],
-    asks: frozenset[tuple[str, str]],
-    asks_at_start: frozenset[tuple[str, str]],
+    asks: frozenset[tuple[str, str | Toward]],
+    asks_at_start: frozenset[tuple[str, str | Toward]],
 ) -> _Fragment:
     """``init --start--> phase --end--> fin`` for one phase (of an action, or a wait)."""
     i, s, f = ("i", uid), ("s", uid), ("f", uid)
@@ -453,8 +453,8 @@ def _parallel(children: list[_Fragment], location=None) -> _Fragment:
     drivers: dict[Key, frozenset[str]] = {}
     invariants: dict[Key, Guard] = {}
     listening: dict[Key, frozenset[str]] = {}
-    asks: dict[Key, frozenset[tuple[str, str]]] = {}
-    asks_at_start: dict[Key, frozenset[tuple[str, str]]] = {}
+    asks: dict[Key, frozenset[tuple[str, str | Toward]]] = {}
+    asks_at_start: dict[Key, frozenset[tuple[str, str | Toward]]] = {}
     for key in seen:
         parts = [c.names[k] for c, k in zip(children, key) if k in c.names]
         labelled = [n for n, is_labelled in parts if is_labelled]
@@ -480,8 +480,8 @@ def _one_of(children: list[_Fragment], uid: int) -> _Fragment:
     drivers: dict[Key, frozenset[str]] = {}
     invariants: dict[Key, Guard] = {}
     listening: dict[Key, frozenset[str]] = {}
-    asks: dict[Key, frozenset[tuple[str, str]]] = {}
-    asks_at_start: dict[Key, frozenset[tuple[str, str]]] = {}
+    asks: dict[Key, frozenset[tuple[str, str | Toward]]] = {}
+    asks_at_start: dict[Key, frozenset[tuple[str, str | Toward]]] = {}
     for child in children:
         rename = {child.initial: initial, child.final: final}
         for e in child.edges:

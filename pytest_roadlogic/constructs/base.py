@@ -197,15 +197,13 @@ class AnchoredModifier(Modifier):
         return self.anchor(binding) == "all"
 
     def asked_within(self, binding: Binding) -> bool:
-        """Asked per instant (docs/language.md, "What a vehicle is asked to do"): a lane asked
-        ``at: start`` is asked at the phase's first instant only (reached before it, then kept: it
-        had licensed a lane change anywhere in the phase, and the car being overtaken had moved
-        into the overtaker's lane); ``at: end`` asks for a change within the phase, and so does a
-        range held throughout. A speed asked ``at: start`` still licenses changes within its phase:
-        held there, the other vehicles' replans around a vehicle under test found no plan that
-        keeps to least action (tests/test_reactive.py's cut-in), which a held speed's replanning
-        must first handle."""
-        return self.anchor(binding) != "start" or self.asks != ASKS_LANE
+        """Asked per instant (docs/language.md, "What a vehicle is asked to do"): a lane or a
+        speed asked ``at: start`` is asked at the phase's first instant only (reached before it,
+        then kept: a lane asked so had licensed a lane change anywhere in the phase, and the car
+        being overtaken had moved into the overtaker's lane; a speed so, a 5 s cruise at 10 m/s
+        had ended at 56 kph); ``at: end`` asks for a change within the phase, and so does a range
+        held throughout."""
+        return self.anchor(binding) != "start"
 
     def translate(self, use: Use, phase: Phase) -> None:
         phase.anchor(self.guard(use), self.anchor(use.binding))

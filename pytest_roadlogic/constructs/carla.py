@@ -3,8 +3,14 @@
 - Lanes are numbered from the left: ``lane(1)`` is the leftmost lane (``from: right`` counts
   from the right). A third of the public CARLA files put one car in ``lane(1)`` and another
   ``right_of`` it, which has no plan under the standard's numbering.
-- ``speed(v)`` without ``at:`` is a target speed the car drives towards: it holds at the phase's
-  end, not throughout (``at: all`` written out still means throughout).
+- ``speed(v)`` without ``at:`` is the phase's target speed, as CARLA's runner sets it: from the
+  phase's first instant the car drives toward it at a comfortable rate, never away from it nor
+  past it, and holds it once reached; it is checked at the phase's end (``at: all`` written out
+  still means throughout). It had been read as "v at the end", and plans ramped over 20 s or
+  dipped from 30 to 16 kph inside ``speed(30kph)``.
+- ``change_speed(dv)`` and ``change_lane(lane_changes: k, side: s)`` are modifiers, as its runner
+  executes them: the first adds dv to the car's speed over the phase (its runner adds dv to the
+  target speed at the phase's start and holds the new one), the second moves k lanes to the side.
 
 Everything else is the standard's. The dialect is chosen by ``--dialect carla`` /
 ``roadlogic_dialect = carla`` or, per file, by a ``conftest.py`` (``pytest_roadlogic_dialect``).
@@ -12,9 +18,15 @@ Everything else is the standard's. The dialect is chosen by ``--dialect carla`` 
 
 from __future__ import annotations
 
+from ..frontend.library import Binding, Parameter, Signature
+from ..frontend.tolerances import SPEED_TOLERANCE, widened
+from ..frontend.units import SPEED
+from ..logic.automaton import SpeedGain
+from ..logic.phase import Phase, Toward
 from ..settings import CARLA_DIALECT
-from .lanes import Lane
-from .speed import Speed
+from .base import ASKS_SPEED, Modifier, Use
+from .lanes import ChangeLaneModifier, Lane
+from .speed import RELATIONS, Speed
 
 DIALECT = CARLA_DIALECT
 CARLA_LANE_CONVENTION = "in CARLA's dialect lanes are numbered from 1 on the left (lane(1) is the leftmost); lane(k, from: right) counts from the right"
@@ -27,9 +39,53 @@ class CarlaLane(Lane):
 
 
 class CarlaSpeed(Speed):
-    """``speed(v)``: the target speed, reached by the phase's end; with ``at:``, as the standard reads it."""
+    """``speed(v)``: the target speed, driven toward from the phase's start and reached by its end
+    (``Toward``); with ``at:`` or relative to another car, as the standard reads it."""
 
     default_anchor = "end"
 
+    @staticmethod
+    def targets(binding: Binding) -> bool:
+        """Whether this use is a target speed: an absolute speed without ``at:``."""
+        return binding["at"] is None and all(binding[r] is None for r in RELATIONS)
 
-CONSTRUCTS = (CarlaLane(), CarlaSpeed())
+    def asked_within(self, binding: Binding) -> bool:
+        return not self.targets(binding) and super().asked_within(binding)
+
+    def translate(self, use: Use, phase: Phase) -> None:
+        super().translate(use, phase)
+        if self.targets(use.binding):
+            asked = use.range("speed", SPEED, "a speed such as 20mps")
+            low, high = widened(*asked, SPEED_TOLERANCE)
+            phase.asks.add(Toward(max(0.0, low), high, max(0.0, (asked[0] + asked[1]) / 2)))
+
+
+class CarlaChangeSpeed(Modifier):
+    """``change_speed(dv)`` on a drive: the speed gains dv over the phase (``SpeedGain``): CARLA's
+    runner sets the car's target speed to the one before plus dv at the phase's start."""
+
+    asks = ASKS_SPEED
+    signature = Signature(
+        "change_speed",
+        (Parameter("speed", "speed", positional=True),),
+        required=(("speed",),),
+        description="change the speed by the given amount over the phase (CARLA)",
+    )
+
+    def translate(self, use: Use, phase: Phase) -> None:
+        low, high = widened(*use.range("speed", SPEED, "a change of speed such as 3kph or -10kph"), SPEED_TOLERANCE)
+        phase.rates.append(SpeedGain(use.actor, low, high, source=use.location))
+
+
+class CarlaChangeLane(ChangeLaneModifier):
+    """``change_lane(lane_changes: k, side: s)`` on a drive: k lanes (a range: one of them) to the side."""
+
+    count = "lane_changes"
+    signature = Signature(
+        "change_lane",
+        (Parameter("lane_changes", "uint", positional=True), Parameter("side", "enum:side", positional=True)),
+        description="change lane_changes lanes to the side during the phase (CARLA)",
+    )
+
+
+CONSTRUCTS = (CarlaLane(), CarlaSpeed(), CarlaChangeSpeed(), CarlaChangeLane())

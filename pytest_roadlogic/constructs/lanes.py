@@ -142,8 +142,10 @@ class _LaneChange:
     a range such as [1..2] is one variant per count, and a sample picks one) to ``side`` (either side when not given), relative to the lane the phase started in or, for the
     action with ``reference:``, ending that many lanes beside another actor."""
 
+    count: ClassVar[str] = "num_of_lanes"  # the argument that says how many lanes
+
     def check(self, binding: Binding, context: CheckContext) -> None:
-        count = binding["num_of_lanes"]
+        count = binding[self.count]
         if count is None:
             return
         value = context.evaluate(count)
@@ -156,19 +158,19 @@ class _LaneChange:
             context.error(
                 count.value.location,
                 f"a change of {value} lanes is impossible on a road of {context.lanes} lanes{context.lanes_origin}",
-                f"num_of_lanes must be between 1 and {context.lanes - 1}",
+                f"{self.count} must be between 1 and {context.lanes - 1}",
             )
 
     def lanes_needed(self, binding, highest) -> int:
-        return highest(binding["num_of_lanes"]) + 1
+        return highest(binding[self.count]) + 1
 
     def translate(self, use: Use, phase: Phase) -> None:
         counts = range(1, 2)
-        if use.argument("num_of_lanes") is not None:
-            value = use.interval("num_of_lanes")
+        if use.argument(self.count) is not None:
+            value = use.interval(self.count)
             if not float(value.low).is_integer() or not float(value.high).is_integer():
                 raise error_at(
-                    use.argument("num_of_lanes").location,
+                    use.argument(self.count).location,
                     "the number of lanes to change must be a whole number or a range of them, e.g. [1..2]",
                 )
             counts = range(max(1, int(value.low)), int(value.high) + 1)

@@ -5,7 +5,8 @@ Written from the definition, not from the encoding (``asp/least_action.lp``), so
 hold the planner to it: a change during step t (from step t-1 to step t) is *asked* when the
 location the plan's run is in at step t-1 lists it for the vehicle (``Location.asks``: a construct
 of the vehicle's phase there asks for a lane or a speed, or one of its next phase asks for it at
-that phase's first instant). A speed change counts when the mean acceleration over the step is
+that phase's first instant), or, for a speed the vehicle is asked to drive toward there
+(``Location.toward``: CARLA's ``speed(v)``), when it moves toward that speed without passing it. A speed change counts when the mean acceleration over the step is
 above ``SPEED_CHANGE`` in size, but braking is asked by the standard's avoid_collisions (on by
 default) while another vehicle or an obstacle is ahead in a lane the vehicle occupies (one changing
 lane occupies both lanes in that step). Where a vehicle starts (its lane and speed) is no change.
@@ -13,6 +14,7 @@ lane occupies both lanes in that step). Where a vehicle starts (its lane and spe
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Callable
 from dataclasses import dataclass
 
@@ -20,6 +22,8 @@ from ..logic.automaton import SymbolicAutomaton
 from ..planning.plan import Plan
 
 SPEED_CHANGE = 0.5  # m/s^2: a mean acceleration over a step below this is holding the speed
+# m/s a speed driven toward a band may end past it: the plan's values are rounded decimals
+SPEED_TOLERANCE_STEP = 0.05
 
 
 @dataclass(frozen=True)
@@ -79,10 +83,31 @@ def unasked_changes(plan: Plan, automaton: SymbolicAutomaton) -> list[UnaskedCha
             acceleration = (after.speed - before.speed) / plan.dt
             if abs(acceleration) <= SPEED_CHANGE or location.asked(vehicle, "speed"):
                 continue
+            band = location.toward(vehicle)
+            if band is not None and _toward(before.speed, after.speed, band.low, band.high):
+                continue  # toward the speed it is asked to drive toward, not past it
             if acceleration < 0 and (_follows(plan, vehicle, step - 1) or _follows(plan, vehicle, step)):
                 continue  # braking for the vehicle ahead: avoid_collisions asks it
             found.append(UnaskedChange(vehicle, step, "speed", before.speed, after.speed))
     return found
+
+
+def said_unasked(plan: Plan, automaton: SymbolicAutomaton, registry) -> list[str]:
+    """Each unasked change of ``plan`` in a user's terms: lanes numbered as the file's dialect
+    numbers them (``registry.lane_number``), speeds in m/s and kph. What ``roadlogic plan`` and
+    ``run`` print and the pytest item's ``unasked_changes`` property holds."""
+    lane_number = functools.partial(registry.lane_number, lanes=plan.lanes)
+    return [change.described(lane_number) for change in unasked_changes(plan, automaton)]
+
+
+def _toward(before: float, after: float, low: float, high: float) -> bool:
+    """Whether a change of speed from ``before`` to ``after`` moves toward the band ``low..high``
+    without passing it (within ``SPEED_TOLERANCE_STEP``)."""
+    if before <= high and after >= before:
+        return after <= high + SPEED_TOLERANCE_STEP
+    if before >= low and after <= before:
+        return after >= low - SPEED_TOLERANCE_STEP
+    return False
 
 
 def _follows(plan: Plan, vehicle: str, step: int) -> bool:

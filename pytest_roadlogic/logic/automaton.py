@@ -17,6 +17,17 @@ from .guards import TRUE, Guard
 
 
 @dataclass(frozen=True)
+class Toward:
+    """A speed band (m/s) its actor is asked to drive towards from the phase's first instant and
+    then hold: CARLA's ``speed(v)``, which its runner sets as the phase's target speed. Each change
+    of speed the phase asks is one toward the band, never away from it nor past it."""
+
+    low: float
+    high: float
+    value: float  # the speed asked: the band is it within the tracking tolerance
+
+
+@dataclass(frozen=True)
 class Location:
     id: int
     name: str
@@ -27,10 +38,21 @@ class Location:
     # (actor, "lane" | "speed"): an actor's own construct running here asks it to change lane or
     # speed (a lane or change_lane modifier; a speed, position, change_speed ...). An actor
     # changes neither unless asked where it is (least action: docs/language.md, "Unasked").
-    asks: frozenset[tuple[str, str]] = frozenset()
+    # (actor, Toward): a speed it drives toward here (CARLA's speed(v)): changes toward it only.
+    asks: frozenset[tuple[str, str | Toward]] = frozenset()
 
     def asked(self, actor: str, what: str) -> bool:
         return (actor, what) in self.asks
+
+    def toward(self, actor: str) -> Toward | None:
+        """The speed band ``actor`` drives toward here, if it is asked one."""
+        return next((what for who, what in self.asks if who == actor and isinstance(what, Toward)), None)
+
+    def targets(self) -> list[tuple[str, Toward]]:
+        """Every (actor, speed band) driven toward here, in a fixed order."""
+        return sorted(
+            ((who, what) for who, what in self.asks if isinstance(what, Toward)), key=lambda t: (t[0], t[1].low)
+        )
 
 
 @dataclass(frozen=True)
@@ -91,6 +113,22 @@ class MeanAcceleration(PhaseBound):
 
     def value(self, start: float, end: float, seconds: float) -> float:
         return (end - start) / seconds
+
+
+@dataclass(frozen=True)
+class SpeedGain(PhaseBound):
+    """CARLA's ``change_speed(dv)`` modifier on a phase: its runner adds dv to the actor's target
+    speed at the phase's start and holds the new one, so the speed gains dv over the phase,
+    v(end) - v(start) in low..high (m/s), whatever the phase's length."""
+
+    column: ClassVar[str] = "speed"
+    construct: ClassVar[str] = "the change_speed modifier"
+    what: ClassVar[str] = "speed gained"
+    symbol: ClassVar[str] = "gained v"
+    unit: ClassVar[str] = "m/s"
+
+    def value(self, start: float, end: float, seconds: float) -> float:
+        return end - start
 
 
 @dataclass(frozen=True)

@@ -81,6 +81,9 @@ class IncrementalPlanner:
     # (asp/least_action.lp): an encoding's plans() searches so first, and without only when that
     # finds no plan (the plan's stats then say least_action 0); a diagnosis never assumes it
     least_action = True
+    # whether, with least_action, a vehicle may make changes nothing asks, the fewest there are
+    # (asp/least_action.lp): a second search when the first has no plan; its solves optimise
+    least_change = False
     # the fewest steps a plan may have, besides what the durations allow (a replan: past the
     # observed step, reactive/replanner.py)
     shortest = 0
@@ -198,7 +201,7 @@ class IncrementalPlanner:
         t = clingo.Number(horizon)
         if horizon == 0:
             self._ground(control, [("base", []), ("state", [t]), ("check", [t])])
-            control.assign_external(clingo.Function("least_action"), self.least_action)
+            self._assign_action(control)
         else:
             self._ground(control, [("dynamics", [t]), ("state", [t]), ("check", [t])])
             control.assign_external(clingo.Function("query", [clingo.Number(horizon - 1)]), False)
@@ -228,10 +231,18 @@ class IncrementalPlanner:
                     )
         self._ground(control, parts)
         if grounded < 0:
-            control.assign_external(clingo.Function("least_action"), self.least_action)
+            self._assign_action(control)
         for step in range(max(0, grounded), horizon):
             control.assign_external(clingo.Function("query", [clingo.Number(step)]), False)
         control.assign_external(clingo.Function("query", [clingo.Number(horizon)]), True)
+
+    def _assign_action(self, control: clingo.Control) -> None:
+        """Set the externals of asp/least_action.lp as this search holds vehicles to what they are asked."""
+        control.assign_external(clingo.Function("least_action"), self.least_action)
+        control.assign_external(clingo.Function("least_change"), self.least_action and self.least_change)
+        if self.least_action and self.least_change:
+            # an optimising search: past the first model to the best (--models=1 stops at the first)
+            control.configuration.solve.models = "0"
 
     _deadline = math.inf  # of the planning under way (_renewed): what grounding keeps to
 
@@ -289,15 +300,29 @@ class IncrementalPlanner:
             control.configuration.solve.solve_limit = f"{conflicts},umax"
         message = f"planning ran out of its time limit ({self.settings.time_limit:g} s){where}"
         self._time_to_prepare(control, deadline, message)
+        unproven = False  # a model found whose cost a better one may still beat
         with control.solve(yield_=True, async_=True) as handle:
             self._wait(handle, deadline, message)
             model = handle.model()
-            if model is not None:
+            while model is not None:
                 theory.on_model(model)
                 answer = read(model, theory)
+                if not any(model.cost):
+                    break  # nothing to optimise, or nothing left to: no better model exists
+                # the least unasked changes (least_change): each next model is better, the last
+                # one found is proved best once the search is exhausted
+                handle.resume()
+                self._wait(handle, deadline, message)
+                model = handle.model()
+            else:
+                unproven = answer is not None and not handle.get().exhausted
         if conflicts is not None:
             control.configuration.solve.solve_limit = "umax,umax"
         self.stats["solve_s"] += time.perf_counter() - start
+        if unproven:
+            # the count of conflicts ran out while optimising: the search that found a model goes
+            # on to the best one without it (a count, so every machine stops at the same model)
+            return self._next_model(control, deadline, where, read)
         return answer
 
     def _forbid(

@@ -202,7 +202,10 @@ def automaton_facts(automaton: SymbolicAutomaton, dt: float, relax: dict | None 
         facts.append(f"transition({t.id},{t.source},{t.target}).  % {t.guard}")
         facts.append(f"guard_of({t.id},{transition_node[t.id]}).")
     for location in automaton.locations:
-        facts.extend(f"asks({location.id},{atom(actor)},{what})." for actor, what in sorted(location.asks))
+        facts.extend(
+            f"asks({location.id},{atom(actor)},{what})."
+            for actor, what in sorted((a, w) for a, w in location.asks if isinstance(w, str))
+        )
     for location, node in invariant_nodes(automaton, numbering).items():
         facts.append(f"invariant_of({location},{node}).  % {automaton.location(location).invariant}")
     for t in automaton.transitions:

@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 from fractions import Fraction
 
-from ....logic.automaton import SymbolicAutomaton, Travelled
+from ....logic.automaton import SpeedGain, SymbolicAutomaton, Travelled
 from ....logic.guards import HEADWAY, LANE, POSITION, SPEED, TRAVELED, And, Bound, Guard, Not
 from ...facts import atom, guard_nodes, inset, origin, with_automaton
 from .settings import ContinuousSettings
@@ -54,6 +54,14 @@ def build_continuous_instance(
         *(f"stationary({atom(v)})." for v in vehicles if v in automaton.stationary),
         *(f"may_stop({atom(v)})." for v in sorted(stopping(automaton, s))),
         *(f"start_speed({atom(v)},{number(x)})." for v, x in sorted(first_speeds(automaton, s).items())),
+        # CARLA's speed(v): a band driven toward from a phase's start (asp/continuous/toward.lp)
+        *(
+            f"toward({location.id},{atom(actor)},{number(band.low)},{number(band.high)},{number(band.value)})."
+            for location in automaton.locations
+            for actor, band in location.targets()
+        ),
+        f"#const comfort_up = {number(s.comfortable_acceleration * s.dt)}.",
+        f"#const comfort_down = {number(s.comfortable_deceleration * s.dt)}.",
         f"lane_id(0..{automaton.lanes - 1}).",
         "lateral(-1;0;1).",
         f"lane_change_gap({s.lane_change_gap}).",
@@ -191,6 +199,15 @@ def rate_facts(automaton: SymbolicAutomaton, settings: ContinuousSettings, relax
                     facts.append(f"travelled_at_least({r},{number(low)}).")
                 if math.isfinite(high):
                     facts.append(f"travelled_at_most({r},{number(high)}).")
+                continue
+            if isinstance(rate, SpeedGain):  # a gain for every length of the phase
+                low, high = inset(rate.low, rate.high, automaton.planned_margin(rate, settings.speed_margin))
+                facts.append(f"mean_acceleration({r},{phase},{actor}).")
+                for length in range(shortest, longest + 1):
+                    if math.isfinite(low):
+                        facts.append(f"gain_at_least({r},{length},{number(low)}).")
+                    if math.isfinite(high):
+                        facts.append(f"gain_at_most({r},{length},{number(high)}).")
                 continue
             low, high = inset(rate.low, rate.high, automaton.planned_margin(rate, settings.acceleration_margin))
             facts.append(f"mean_acceleration({r},{phase},{actor}).")

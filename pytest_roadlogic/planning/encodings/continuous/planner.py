@@ -41,6 +41,7 @@ BACKGROUND = (
     ASP_CONTINUOUS / "rates.lp",
     ASP_CONTINUOUS / "steer.lp",
     LEAST_ACTION,
+    ASP_CONTINUOUS / "toward.lp",  # inert without a target speed (CARLA's speed(v))
     ASP_CONTINUOUS / "replan.lp",  # inert without a replan's facts (reactive/replanner.py)
     ASP_CONTINUOUS / "route.lp",  # inert without a map's route (roads/route.py)
 )
@@ -117,19 +118,19 @@ class ContinuousPlanner(IncrementalPlanner):
         does: then plans without, which say so in their stats. The first plan is due by
         ``deadline`` (default: the time limit from now), both searches together."""
         check_satisfiable(self.automaton)
-        self.least_action = True
+        self.least_action, self.least_change = True, False
         try:
             yield from self._search(limit, deadline)
         except (PlanningTimeout, HorizonTooShort):
             raise  # the time is spent, or a setting binds: a search without least action fares no better
         except NoPlanError:
-            self.least_action = False
+            self.least_change = True
             yield from self._search(limit, self._deadline)  # no plan yet: the first one's deadline holds
 
     def _search(self, limit: int | None, deadline: float | None = None) -> Iterator[Plan]:
         """The plans of one search (``plans``), with ``least_action`` as it is set."""
         deadline = self._renewed(deadline)
-        self.stats["least_action"] = float(self.least_action)
+        self.stats["least_action"] = float(self.least_action and not self.least_change)
         found = 0
         places: list[float] = []  # where in the start band each plan after the first was steered
         try:
@@ -202,7 +203,7 @@ class ContinuousPlanner(IncrementalPlanner):
         except (PlanningTimeout, HorizonTooShort):
             raise
         except NoPlanError as error:
-            if self.least_action or not self.settings.explain_unsatisfiable:
+            if (self.least_action and not self.least_change) or not self.settings.explain_unsatisfiable:
                 raise
             self._explain(error, deadline, window)
 

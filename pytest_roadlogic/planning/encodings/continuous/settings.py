@@ -22,6 +22,10 @@ class ContinuousSettings:
     min_acceleration: float = -8.0  # m/s^2: hard braking of a real car
     max_acceleration: float = 4.0  # m/s^2
     max_jerk: float = 2.0  # m/s^3: how much the acceleration may change from one step to the next
+    # m/s^2: the rates at which a car drives toward a target speed (CARLA's speed(v)), as a driver
+    # would: neither a crawl over the phase nor the car's limit
+    comfortable_acceleration: float = 2.0
+    comfortable_deceleration: float = -3.0
     min_speed: float = 0.5  # m/s for a driving vehicle the scenario does not ask to stop
     max_speed: float = 70.0  # m/s
     # m/s at the first step where the scenario names no speed: a speed typical of the road (the

@@ -1,0 +1,115 @@
+"""CARLA's dialect as CARLA's scenario runner executes it (constructs/carla.py, docs/language.md):
+``speed(v)`` is the phase's target from its first instant, driven toward at a comfortable rate and
+held; ``change_speed(dv)`` and ``change_lane(lane_changes:, side:)`` are modifiers. Read on the
+first plan of files written as CARLA's examples are written."""
+
+from __future__ import annotations
+
+import pytest
+
+from pytest_roadlogic.automaton import build_automaton
+from pytest_roadlogic.evaluation.fidelity import unasked_changes
+from pytest_roadlogic.frontend import check_text
+from pytest_roadlogic.planning import ContinuousPlanner, ContinuousSettings
+
+SETTINGS = ContinuousSettings(time_limit=30.0)  # guards a hang only
+KPH = 1 / 3.6
+HELD = 1.0 * KPH  # a held speed stays within 1 kph
+
+
+def first_plan(text: str):
+    checked = check_text(text, "s.osc", dialect="carla")
+    checked.raise_for_errors()
+    automaton = build_automaton(checked.scenarios[0])
+    planner = ContinuousPlanner(automaton, SETTINGS, 1)
+    return planner.first(), automaton, planner
+
+
+CRUISE_THEN_FASTER = """scenario cruise_then_faster:
+    ego: car
+    npc: car
+    do serial:
+        cruise: parallel(duration: 20s):
+            npc.drive() with:
+                lane(2, at: start)
+                speed(30kph)
+            ego.drive() with:
+                lane(same_as: npc, at: start)
+                position(40m, behind: npc, at: start)
+                speed(30kph)
+        faster: parallel(duration: 10s):
+            npc.drive() with:
+                speed(50kph)
+            ego.drive() with:
+                speed(40kph)
+"""
+
+
+def test_a_target_speed_is_where_the_car_starts_and_is_held_through_its_phase():
+    plan, automaton, planner = first_plan(CRUISE_THEN_FASTER)
+    assert planner.stats["least_action"] == 1.0
+    for vehicle in ("ego", "npc"):
+        speeds = [state.speed for state in plan.states[vehicle][:20]]
+        # it had been read as "30 kph at the end": speeds dipped and ramped inside the phase
+        assert max(abs(v - 30 * KPH) for v in speeds) <= HELD, (vehicle, speeds)
+
+
+@pytest.mark.parametrize("vehicle, target", [("ego", 40), ("npc", 50)])
+def test_a_new_target_is_driven_toward_at_a_comfortable_rate_never_past_it_then_held(vehicle, target):
+    plan, _, _ = first_plan(CRUISE_THEN_FASTER)
+    speeds = [state.speed for state in plan.states[vehicle][20:]]
+    steps = [after - before for before, after in zip(speeds, speeds[1:])]
+    assert all(-0.05 <= change <= SETTINGS.comfortable_acceleration * SETTINGS.dt + 1e-6 for change in steps), steps
+    assert max(speeds) <= target * KPH + HELD, speeds
+    reached = next(k for k, v in enumerate(speeds) if abs(v - target * KPH) <= HELD)
+    assert reached <= 4, speeds  # 20 kph more at 2 m/s^2 is 3 s; the jerk limit adds a step
+    assert all(abs(v - target * KPH) <= HELD for v in speeds[reached:]), speeds
+
+
+def test_the_first_plan_of_a_cruise_changes_nothing_that_is_not_asked():
+    plan, automaton, _ = first_plan(CRUISE_THEN_FASTER)
+    assert unasked_changes(plan, automaton) == []
+
+
+CHANGE_MODIFIERS = """scenario change_modifiers:
+    ego: car
+    npc: car
+    do serial:
+        get_ahead: parallel(duration: 15s):
+            ego.drive() with:
+                speed(25kph)
+                lane(1, at: start)
+            npc.drive() with:
+                lane(right_of: ego, at: start)
+                position(15m, behind: ego, at: start)
+                position(20m, ahead_of: ego, at: end)
+        change: parallel(duration: 5s):
+            ego.drive()
+            npc.drive() with:
+                change_lane(lane_changes: [1..2], side: left)
+        slow: parallel(duration: 10s):
+            ego.drive() with:
+                change_speed(3kph)
+            npc.drive() with:
+                speed(28kph)
+"""
+
+
+def test_change_speed_and_change_lane_are_modifiers_that_do_what_carlas_runner_does():
+    plan, automaton, _ = first_plan(CHANGE_MODIFIERS)
+    fired = [step for step, _ in plan.transitions]
+    change_starts, slow_starts, end = fired[1], fired[2], fired[3]
+    npc = plan.states["npc"]
+    # lane(1) is the leftmost in CARLA's dialect: the npc starts right of the ego, moves back left
+    assert npc[change_starts].lane == plan.states["ego"][0].lane + 1
+    assert npc[slow_starts].lane == plan.states["ego"][0].lane
+    ego = plan.states["ego"]
+    gained = ego[end].speed - ego[slow_starts].speed
+    assert gained == pytest.approx(3 * KPH, abs=0.5), gained
+
+
+def test_change_speed_as_a_modifier_is_carlas_only():
+    text = "scenario s:\n    ego: car\n    do ego.drive(duration: 5s) with:\n        speed(20kph)\n        change_speed(3kph)\n"
+    standard = check_text(text, "s.osc")
+    assert any(d.severity == "error" and d.location.line == 5 for d in standard.diagnostics)
+    check_text(text, "s.osc", dialect="carla").raise_for_errors()
