@@ -180,3 +180,33 @@ def test_when_no_plan_keeps_to_what_is_asked_one_vehicle_makes_the_fewest_and_sm
     assert len(changes) <= 3, changes
     assert max(abs(c.after - c.before) for c in changes) <= 2.5, changes  # a comfortable rate, m/s per 1 s step
     assert max(state.speed for state in plan.states["slow"]) < 90 / 3.6, "kept smallest"
+
+
+def test_a_parallel_members_start_is_asked_once_not_again_at_every_junction_of_another_member(tmp_path):
+    # written as CARLA's overtake example is: the npc's lane(2, at: start) had been asked again
+    # before each of the ego's later phases, and the npc left its lane so that the ego had not to
+    text = (
+        "scenario overtake_in_parallel:\n    ego: car\n    npc: car\n"
+        "    do parallel(duration: 18s):\n"
+        "        npc.drive() with:\n            speed(30kph)\n            lane(2, at: start)\n"
+        "        serial:\n"
+        "            get_ahead: parallel(duration: 3s):\n"
+        "                ego.drive() with:\n                    speed(30kph)\n"
+        "                    lane(same_as: npc, at: start)\n"
+        "                    position([10m..20m], behind: npc, at: start)\n"
+        "            change_lane1: parallel(duration: 5s):\n"
+        "                ego.drive() with:\n                    lane(left_of: npc, at: end)\n"
+        "            accelerate: parallel(duration: 5s):\n"
+        "                ego.drive() with:\n                    speed(45kph)\n"
+        "            change_lane2: parallel(duration: 5s):\n"
+        "                ego.drive() with:\n                    lane(same_as: npc, at: end)\n"
+    )
+    path = tmp_path / "scenario.osc"
+    path.write_text(text)
+    automaton = build_automaton(load_scenario(path))
+    assert [loc.asked("npc", "lane") for loc in automaton.locations] == [True] + [False] * (
+        len(automaton.locations) - 1
+    )
+    plan = first_plan(tmp_path, text)
+    assert len({state.lane for state in plan.states["npc"]}) == 1, "the npc left its lane"
+    assert len({state.lane for state in plan.states["ego"]}) == 2

@@ -113,3 +113,17 @@ def test_change_speed_as_a_modifier_is_carlas_only():
     standard = check_text(text, "s.osc")
     assert any(d.severity == "error" and d.location.line == 5 for d in standard.diagnostics)
     check_text(text, "s.osc", dialect="carla").raise_for_errors()
+
+
+def test_a_scenario_level_set_position_is_read_with_one_located_warning():
+    text = (
+        "scenario s:\n    ego: car\n    ego.set_position(x: 205.7m, y: -395.8m, z: 0.0m)\n"
+        "    do ego.drive(duration: 5s) with:\n        speed(120kph)\n"
+    )
+    checked = check_text(text, "s.osc", dialect="carla")
+    checked.raise_for_errors()
+    warnings = [d for d in checked.diagnostics if d.severity == "warning"]
+    assert len(warnings) == 1 and warnings[0].location.line == 3
+    assert "read but not simulated" in warnings[0].message
+    plan, _, _ = first_plan(text)
+    assert all(abs(state.speed - 120 * KPH) <= HELD for state in plan.states["ego"])

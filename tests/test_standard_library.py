@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-from pytest_roadlogic.constructs import CARLA, STANDARD, conditions
+from pytest_roadlogic.constructs import CARLA, STANDARD, carla, conditions
 from pytest_roadlogic.frontend import check_text, library
 from pytest_roadlogic.frontend.standard_library import UNITS, part_file, part_names, standard_library
 
@@ -32,10 +32,19 @@ def test_every_construct_the_tool_executes_is_declared_with_the_same_parameters(
         ("modifier", registry.modifiers, lib.modifiers),
     ):
         for name, construct in provided.items():
+            if construct in carla.CARLA_OWN:
+                continue  # CARLA's library declares it (its basic.osc), as CARLA's runner reads it
             assert name in declared, f"the {kind} {name} is provided but stdlib/osc/movement.osc does not declare it"
             written = {p: declared_kind(t) for p, t in declared[name].parameters}
             signature = {p.name: p.kind for p in construct.signature.parameters}
             assert written == signature, f"{kind} {name}: declared {written}, the tool reads {signature}"
+
+
+def test_carlas_own_modifiers_are_in_carlas_dialect_only():
+    for construct in carla.CARLA_OWN:
+        assert construct.signature.description.endswith("(CARLA)")
+        standard = STANDARD.modifiers.get(construct.name)
+        assert standard is None or standard.signature != construct.signature
 
 
 def test_every_observable_a_condition_reads_is_a_declared_method_with_its_type():

@@ -49,6 +49,10 @@ class _Edge:
     awaits: frozenset[str] = frozenset()  # events that must be emitted at this instant, not yet matched
     # events that components staying put across this edge wait for: none of them may be emitted here
     deaf: frozenset[str] = frozenset()
+    # (actor, "lane" | "speed"): what the phases this edge starts ask for already at their first
+    # instant (the location before it must bring it about); only theirs, never what members of a
+    # parallel staying put asked when they started
+    early: frozenset[tuple[str, str | Toward]] = frozenset()
 
 
 def _simultaneous(source: Key, moves: list[_Edge], target: Key, deaf: frozenset[str] = frozenset()) -> _Edge:
@@ -66,6 +70,7 @@ def _simultaneous(source: Key, moves: list[_Edge], target: Key, deaf: frozenset[
         emits,
         frozenset().union(*(m.awaits for m in moves)) - emits,
         frozenset().union(deaf, *(m.deaf for m in moves)),
+        frozenset().union(*(m.early for m in moves)),
     )
 
 
@@ -81,10 +86,8 @@ class _Fragment:
     invariants: dict[Key, Guard] = field(default_factory=dict)
     # locations whose phase ends at the first emission of these events (wait @e, until @e)
     listening: dict[Key, frozenset[str]] = field(default_factory=dict)
-    # (actor, "lane" | "speed"): what the actors' own constructs ask of them here (Location.asks),
-    # and what they ask for already at the first instant here (the location before must bring it)
+    # (actor, "lane" | "speed"): what the actors' own constructs ask of them here (Location.asks)
     asks: dict[Key, frozenset[tuple[str, str | Toward]]] = field(default_factory=dict)
-    asks_at_start: dict[Key, frozenset[tuple[str, str | Toward]]] = field(default_factory=dict)
 
     def outgoing(self, key: Key) -> list[_Edge]:
         return [e for e in self.edges if e.source == key]
@@ -351,7 +354,7 @@ def _phase(
     variant: Variant,
     drivers: frozenset[str],
     asks: frozenset[tuple[str, str | Toward]],
-    asks_at_start: frozenset[tuple[str, str | Toward]],
+    early: frozenset[tuple[str, str | Toward]],
 ) -> _Fragment:
     """``init --start--> phase --end--> fin`` for one phase (of an action, or a wait)."""
     i, s, f = ("i", uid), ("s", uid), ("f", uid)
@@ -361,12 +364,11 @@ def _phase(
     return _Fragment(
         initial=i,
         final=f,
-        edges=[_Edge(i, start, (f"{name} start",), s), _Edge(s, end, (f"{name} end",), f)],
+        edges=[_Edge(i, start, (f"{name} start",), s, early=early), _Edge(s, end, (f"{name} end",), f)],
         names={s: (name, labelled)},
         drivers={s: drivers},
         invariants={s: variant.invariant} if not variant.invariant.is_true else {},
         asks={s: asks},
-        asks_at_start={s: asks_at_start},
     )
 
 
@@ -388,7 +390,6 @@ def _serial(first: _Fragment, second: _Fragment, location=None) -> _Fragment:
         invariants={**first.invariants, **second.invariants},
         listening={**first.listening, **second.listening},
         asks={**first.asks, **second.asks},
-        asks_at_start={**first.asks_at_start, **second.asks_at_start},
     )
 
 
@@ -454,7 +455,6 @@ def _parallel(children: list[_Fragment], location=None) -> _Fragment:
     invariants: dict[Key, Guard] = {}
     listening: dict[Key, frozenset[str]] = {}
     asks: dict[Key, frozenset[tuple[str, str | Toward]]] = {}
-    asks_at_start: dict[Key, frozenset[tuple[str, str | Toward]]] = {}
     for key in seen:
         parts = [c.names[k] for c, k in zip(children, key) if k in c.names]
         labelled = [n for n, is_labelled in parts if is_labelled]
@@ -463,14 +463,13 @@ def _parallel(children: list[_Fragment], location=None) -> _Fragment:
             names[key] = (" | ".join(chosen), bool(labelled))
         drivers[key] = frozenset().union(*(c.drivers.get(k, frozenset()) for c, k in zip(children, key)))
         asks[key] = frozenset().union(*(c.asks.get(k, frozenset()) for c, k in zip(children, key)))
-        asks_at_start[key] = frozenset().union(*(c.asks_at_start.get(k, frozenset()) for c, k in zip(children, key)))
         parts = [c.invariants[k] for c, k in zip(children, key) if k in c.invariants]
         if parts:
             invariants[key] = conjunction(parts)
         waiting = frozenset().union(*(c.listening.get(k, frozenset()) for c, k in zip(children, key)))
         if waiting:
             listening[key] = waiting
-    return _Fragment(initial, final, edges, names, drivers, invariants, listening, asks, asks_at_start)
+    return _Fragment(initial, final, edges, names, drivers, invariants, listening, asks)
 
 
 def _one_of(children: list[_Fragment], uid: int) -> _Fragment:
@@ -481,7 +480,6 @@ def _one_of(children: list[_Fragment], uid: int) -> _Fragment:
     invariants: dict[Key, Guard] = {}
     listening: dict[Key, frozenset[str]] = {}
     asks: dict[Key, frozenset[tuple[str, str | Toward]]] = {}
-    asks_at_start: dict[Key, frozenset[tuple[str, str | Toward]]] = {}
     for child in children:
         rename = {child.initial: initial, child.final: final}
         for e in child.edges:
@@ -491,8 +489,7 @@ def _one_of(children: list[_Fragment], uid: int) -> _Fragment:
         invariants.update(child.invariants)
         listening.update(child.listening)
         asks.update(child.asks)
-        asks_at_start.update(child.asks_at_start)
-    return _Fragment(initial, final, edges, names, drivers, invariants, listening, asks, asks_at_start)
+    return _Fragment(initial, final, edges, names, drivers, invariants, listening, asks)
 
 
 def _finish(
@@ -517,11 +514,13 @@ def _finish(
         raise error_at(
             scenario.location, f"scenario {scenario.name!r} can never finish: its phases cannot all end", hint=hint
         )
-    # what is asked here, and what a location this one leads to asks for at its first instant
-    # (a change the next phase needs at its start comes in the phase before it)
+    # what is asked here, and what the phases an edge from here starts ask for at their first
+    # instant (a change the next phase needs at its start comes in the phase before it). Per edge:
+    # a parallel member's own start had been asked again before every later junction of another
+    # member (CARLA's overtake_concrete: the npc's lane(2, at: start) let it leave its lane)
     asked = {
         key: fragment.asks.get(key, frozenset()).union(
-            *(fragment.asks_at_start.get(after, frozenset()) for after in successors.get(key, ()))
+            *(e.early for e in fragment.edges if e.source == key and e.target in useful)
         )
         for key in useful
     }

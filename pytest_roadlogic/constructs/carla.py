@@ -88,4 +88,6 @@ class CarlaChangeLane(ChangeLaneModifier):
     )
 
 
-CONSTRUCTS = (CarlaLane(), CarlaSpeed(), CarlaChangeSpeed(), CarlaChangeLane())
+# CARLA's own modifiers, declared by CARLA's library (its basic.osc) rather than the standard's
+CARLA_OWN = (CarlaChangeSpeed(), CarlaChangeLane())
+CONSTRUCTS = (CarlaLane(), CarlaSpeed(), *CARLA_OWN)

@@ -146,6 +146,15 @@ class RoadLanes:
         for modifier in scenario.modifiers:
             on_road = modifier.actor in roads or (modifier.actor is None and modifier.name in library.ROAD_MODIFIERS)
             if not on_road:
+                if modifier.name == "set_position" and modifier.actor is not None and scenario.actor(modifier.actor):
+                    # CARLA's examples place the ego by a town's world coordinates
+                    self.warning(
+                        modifier.location,
+                        f"{modifier.actor}.set_position(...) is read but not simulated: world coordinates need "
+                        f"the map; {modifier.actor} starts where the scenario's other constraints put it",
+                        "place it with lane(..., at: start) and position(..., at: start) on its first drive",
+                    )
+                    continue
                 if modifier.actor is None or scenario.actor(modifier.actor) is not None:
                     self.error(
                         modifier.location,
