@@ -81,33 +81,32 @@ def build_continuous_instance(
 
 
 def first_speeds(automaton: SymbolicAutomaton, settings: ContinuousSettings) -> dict[str, float]:
-    """The speed (m/s) each driving vehicle's first phase asks for, where one does: the first
-    bound on its own speed met along the automaton from its start (a phase's start, invariant or
-    end: in CARLA's dialect ``speed(v)`` is a target its phase reaches), the middle of its range
+    """The speed (m/s) each driving vehicle's first phase asks for, where one does: a bound on its
+    own speed at the scenario's start, throughout the first locations or at the end of a phase
+    running there, or the speed CARLA's ``speed(v)`` drives toward there; the middle of its range
     within the settings' speeds. A vehicle starts at it rather than at the road's typical speed
-    (``asp/continuous/dynamics.lp``): "drive at 10 kph" starts at 10 kph."""
+    (``asp/continuous/dynamics.lp``): "drive at 10 kph" starts at 10 kph. Only the first phases:
+    a speed a later phase asks for (a CARLA npc's speed(10kph) two phases on) had been its start
+    speed, and the npc had started at 10 kph to then speed up to pass."""
     found: dict[str, float] = {}
-    seen, frontier = {automaton.initial}, [automaton.initial]
-    while frontier:
-        following = []
-        for location in frontier:
-            guards = [automaton.location(location).invariant]
-            for transition in automaton.outgoing(location):
-                guards.append(transition.guard)
-                if transition.target not in seen:
-                    seen.add(transition.target)
-                    following.append(transition.target)
-            for bound in (b for guard in guards for b in _required_bounds(guard)):
-                term = bound.term
-                if term.quantity != SPEED or term.reference is not None or term.actor in found:
-                    continue
-                if term.actor in automaton.stationary:
-                    continue
-                low = max(bound.low, settings.min_speed)
-                high = min(bound.high, settings.max_speed)
-                if low <= high and (math.isfinite(bound.low) or math.isfinite(bound.high)):
-                    found[term.actor] = round((low + high) / 2, 2)
-        frontier = following
+    first = [t.target for t in automaton.outgoing(automaton.initial)]
+    guards = [automaton.location(automaton.initial).invariant]
+    guards += [t.guard for t in automaton.outgoing(automaton.initial)]
+    for location in first:
+        guards.append(automaton.location(location).invariant)
+        guards += [t.guard for t in automaton.outgoing(location)]
+        for actor, band in automaton.location(location).targets():
+            found.setdefault(actor, round(min(max(band.value, settings.min_speed), settings.max_speed), 2))
+    for bound in (b for guard in guards for b in _required_bounds(guard)):
+        term = bound.term
+        if term.quantity != SPEED or term.reference is not None or term.actor in found:
+            continue
+        if term.actor in automaton.stationary:
+            continue
+        low = max(bound.low, settings.min_speed)
+        high = min(bound.high, settings.max_speed)
+        if low <= high and (math.isfinite(bound.low) or math.isfinite(bound.high)):
+            found[term.actor] = round((low + high) / 2, 2)
     return found
 
 
