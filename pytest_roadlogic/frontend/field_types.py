@@ -60,8 +60,12 @@ class FieldTyping:
                     f"declare it as `actor {item.type} inherits vehicle`",
                 )
             else:
-                self.error(
-                    location, "not supported: parameters of struct type", "use scalar parameters (length, speed, ...)"
+                # CARLA's examples declare one beside the parameters they use; a use of its fields
+                # is an unknown name where it is written
+                self.warning(
+                    location,
+                    f"a parameter of struct type {item.type!r} is read but not used: its fields are not parameters of the scenario",
+                    "use scalar parameters (length, speed, ...) for values the scenario depends on",
                 )
             return None
         known = [
