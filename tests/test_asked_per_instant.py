@@ -17,12 +17,22 @@ from pytest_roadlogic.planning import ContinuousPlanner, ContinuousSettings
 SETTINGS = ContinuousSettings(time_limit=30.0)  # guards a hang only
 
 
-def first_plan(tmp_path, text: str):
+def automaton_of(tmp_path, text: str, dialect: str | None = None):
+    """The automaton of a scenario written as ``text`` in a file, read in ``dialect``."""
     path = tmp_path / "scenario.osc"
     path.write_text(text)
-    automaton = build_automaton(load_scenario(path))
-    planner = ContinuousPlanner(automaton, SETTINGS, 1)
-    plan = planner.first()
+    return build_automaton(load_scenario(path, dialect=dialect))
+
+
+def planned(tmp_path, text: str, dialect: str | None = None, seed: int = 1):
+    """The first plan of a scenario written as ``text``, its automaton and its planner (its stats)."""
+    automaton = automaton_of(tmp_path, text, dialect)
+    planner = ContinuousPlanner(automaton, SETTINGS, seed)
+    return planner.first(), automaton, planner
+
+
+def first_plan(tmp_path, text: str):
+    plan, _, planner = planned(tmp_path, text)
     assert planner.stats["least_action"] == 1.0, "planned with only asked changes"
     return plan
 
@@ -48,9 +58,7 @@ OVERTAKE_AND_RETURN = """scenario overtake_and_return:
 
 
 def test_a_lane_asked_at_start_is_asked_at_that_instant_and_one_asked_at_end_within_the_phase(tmp_path):
-    path = tmp_path / "scenario.osc"
-    path.write_text(OVERTAKE_AND_RETURN)
-    automaton = build_automaton(load_scenario(path))
+    automaton = automaton_of(tmp_path, OVERTAKE_AND_RETURN)
     init, pull_out, pass_by, _ = automaton.locations  # named after their invocations, in this order
     # the npc's lane(1, at: start) asks for its lane at the first instant only: within the phase
     # it keeps its lane (it had licensed the npc to move into the ego's lane)
@@ -168,11 +176,7 @@ def test_when_no_plan_keeps_to_what_is_asked_one_vehicle_makes_the_fewest_and_sm
     # exact values no natural plan meets: held at 95 kph for 12 s the ego ends about 60 m ahead,
     # not 20 m, so someone must do what nothing asks. Dropping least action altogether, the slow
     # car had sped up unasked for 8 steps, to 128 kph
-    path = tmp_path / "scenario.osc"
-    path.write_text(FOLLOW_THEN_OVERTAKE_EXACT)
-    automaton = build_automaton(load_scenario(path))
-    planner = ContinuousPlanner(automaton, SETTINGS, seed)
-    plan = planner.first()
+    plan, automaton, planner = planned(tmp_path, FOLLOW_THEN_OVERTAKE_EXACT, seed=seed)
     assert planner.stats["least_action"] == 0.0
     changes = unasked_changes(plan, automaton)  # measured independently of the encoding
     assert changes and {change.vehicle for change in changes} == {"slow"}, changes
@@ -201,12 +205,10 @@ def test_a_parallel_members_start_is_asked_once_not_again_at_every_junction_of_a
         "            change_lane2: parallel(duration: 5s):\n"
         "                ego.drive() with:\n                    lane(same_as: npc, at: end)\n"
     )
-    path = tmp_path / "scenario.osc"
-    path.write_text(text)
-    automaton = build_automaton(load_scenario(path))
+    plan, automaton, planner = planned(tmp_path, text)
     assert [loc.asked("npc", "lane") for loc in automaton.locations] == [True] + [False] * (
         len(automaton.locations) - 1
     )
-    plan = first_plan(tmp_path, text)
+    assert planner.stats["least_action"] == 1.0, "planned with only asked changes"
     assert len({state.lane for state in plan.states["npc"]}) == 1, "the npc left its lane"
     assert len({state.lane for state in plan.states["ego"]}) == 2

@@ -7,22 +7,18 @@ from __future__ import annotations
 
 import pytest
 
-from pytest_roadlogic.automaton import build_automaton
 from pytest_roadlogic.evaluation.fidelity import unasked_changes
 from pytest_roadlogic.frontend import check_text
-from pytest_roadlogic.planning import ContinuousPlanner, ContinuousSettings
+from pytest_roadlogic.planning import ContinuousSettings
+from tests.test_asked_per_instant import planned
 
-SETTINGS = ContinuousSettings(time_limit=30.0)  # guards a hang only
+SETTINGS = ContinuousSettings()  # the planner's defaults: the comfortable rates read below
 KPH = 1 / 3.6
 HELD = 1.0 * KPH  # a held speed stays within 1 kph
 
 
-def first_plan(text: str):
-    checked = check_text(text, "s.osc", dialect="carla")
-    checked.raise_for_errors()
-    automaton = build_automaton(checked.scenarios[0])
-    planner = ContinuousPlanner(automaton, SETTINGS, 1)
-    return planner.first(), automaton, planner
+def first_plan(tmp_path, text: str):
+    return planned(tmp_path, text, dialect="carla")
 
 
 CRUISE_THEN_FASTER = """scenario cruise_then_faster:
@@ -45,8 +41,8 @@ CRUISE_THEN_FASTER = """scenario cruise_then_faster:
 """
 
 
-def test_a_target_speed_is_where_the_car_starts_and_is_held_through_its_phase():
-    plan, automaton, planner = first_plan(CRUISE_THEN_FASTER)
+def test_a_target_speed_is_where_the_car_starts_and_is_held_through_its_phase(tmp_path):
+    plan, automaton, planner = first_plan(tmp_path, CRUISE_THEN_FASTER)
     assert planner.stats["least_action"] == 1.0
     for vehicle in ("ego", "npc"):
         speeds = [state.speed for state in plan.states[vehicle][:20]]
@@ -55,8 +51,8 @@ def test_a_target_speed_is_where_the_car_starts_and_is_held_through_its_phase():
 
 
 @pytest.mark.parametrize("vehicle, target", [("ego", 40), ("npc", 50)])
-def test_a_new_target_is_driven_toward_at_a_comfortable_rate_never_past_it_then_held(vehicle, target):
-    plan, _, _ = first_plan(CRUISE_THEN_FASTER)
+def test_a_new_target_is_driven_toward_at_a_comfortable_rate_never_past_it_then_held(tmp_path, vehicle, target):
+    plan, _, _ = first_plan(tmp_path, CRUISE_THEN_FASTER)
     speeds = [state.speed for state in plan.states[vehicle][20:]]
     steps = [after - before for before, after in zip(speeds, speeds[1:])]
     assert all(-0.05 <= change <= SETTINGS.comfortable_acceleration * SETTINGS.dt + 1e-6 for change in steps), steps
@@ -66,8 +62,8 @@ def test_a_new_target_is_driven_toward_at_a_comfortable_rate_never_past_it_then_
     assert all(abs(v - target * KPH) <= HELD for v in speeds[reached:]), speeds
 
 
-def test_the_first_plan_of_a_cruise_changes_nothing_that_is_not_asked():
-    plan, automaton, _ = first_plan(CRUISE_THEN_FASTER)
+def test_the_first_plan_of_a_cruise_changes_nothing_that_is_not_asked(tmp_path):
+    plan, automaton, _ = first_plan(tmp_path, CRUISE_THEN_FASTER)
     assert unasked_changes(plan, automaton) == []
 
 
@@ -95,8 +91,8 @@ CHANGE_MODIFIERS = """scenario change_modifiers:
 """
 
 
-def test_change_speed_and_change_lane_are_modifiers_that_do_what_carlas_runner_does():
-    plan, automaton, _ = first_plan(CHANGE_MODIFIERS)
+def test_change_speed_and_change_lane_are_modifiers_that_do_what_carlas_runner_does(tmp_path):
+    plan, automaton, _ = first_plan(tmp_path, CHANGE_MODIFIERS)
     fired = [step for step, _ in plan.transitions]
     change_starts, slow_starts, end = fired[1], fired[2], fired[3]
     npc = plan.states["npc"]
@@ -115,7 +111,7 @@ def test_change_speed_as_a_modifier_is_carlas_only():
     check_text(text, "s.osc", dialect="carla").raise_for_errors()
 
 
-def test_a_scenario_level_set_position_is_read_with_one_located_warning():
+def test_a_scenario_level_set_position_is_read_with_one_located_warning(tmp_path):
     text = (
         "scenario s:\n    ego: car\n    ego.set_position(x: 205.7m, y: -395.8m, z: 0.0m)\n"
         "    do ego.drive(duration: 5s) with:\n        speed(120kph)\n"
@@ -125,5 +121,5 @@ def test_a_scenario_level_set_position_is_read_with_one_located_warning():
     warnings = [d for d in checked.diagnostics if d.severity == "warning"]
     assert len(warnings) == 1 and warnings[0].location.line == 3
     assert "read but not simulated" in warnings[0].message
-    plan, _, _ = first_plan(text)
+    plan, _, _ = first_plan(tmp_path, text)
     assert all(abs(state.speed - 120 * KPH) <= HELD for state in plan.states["ego"])

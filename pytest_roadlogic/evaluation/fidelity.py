@@ -6,10 +6,11 @@ hold the planner to it: a change during step t (from step t-1 to step t) is *ask
 location the plan's run is in at step t-1 lists it for the vehicle (``Location.asks``: a construct
 of the vehicle's phase there asks for a lane or a speed, or one of its next phase asks for it at
 that phase's first instant), or, for a speed the vehicle is asked to drive toward there
-(``Location.toward``: CARLA's ``speed(v)``), when it moves toward that speed without passing it. A speed change counts when the mean acceleration over the step is
-above ``SPEED_CHANGE`` in size, but braking is asked by the standard's avoid_collisions (on by
-default) while another vehicle or an obstacle is ahead in a lane the vehicle occupies (one changing
-lane occupies both lanes in that step). Where a vehicle starts (its lane and speed) is no change.
+(``Location.toward``: CARLA's ``speed(v)``), when it moves toward that speed without passing it.
+A speed change counts when the mean acceleration over the step is above ``SPEED_CHANGE`` in
+size, but braking is asked by the standard's avoid_collisions (on by default) while another
+vehicle or an obstacle is ahead in a lane the vehicle occupies (one changing lane occupies both
+lanes in that step). Where a vehicle starts (its lane and speed) is no change.
 """
 
 from __future__ import annotations

@@ -78,11 +78,12 @@ class IncrementalPlanner:
     settings for a second try, or None) and ``plans``."""
 
     # whether the search under way keeps every vehicle to what its own constructs ask
-    # (asp/least_action.lp): an encoding's plans() searches so first, and without only when that
-    # finds no plan (the plan's stats then say least_action 0); a diagnosis never assumes it
+    # (asp/least_action.lp): an encoding's plans() searches so first (the grid's never does); a
+    # diagnosis never assumes it
     least_action = True
     # whether, with least_action, a vehicle may make changes nothing asks, the fewest there are
-    # (asp/least_action.lp): a second search when the first has no plan; its solves optimise
+    # (asp/least_action.lp): a second search when the first has no plan (the plan's stats then
+    # say least_action 0); its solves optimise
     least_change = False
     # the fewest steps a plan may have, besides what the durations allow (a replan: past the
     # observed step, reactive/replanner.py)

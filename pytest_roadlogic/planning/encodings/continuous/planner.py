@@ -115,20 +115,21 @@ class ContinuousPlanner(IncrementalPlanner):
         """Plans, shortest horizon first; each next one differs from all before it in when a
         transition fires or in a lane (the linear program then gives its smoothest motion).
         Every vehicle does only what its own constructs ask (``least_action``) unless no plan
-        does: then plans without, which say so in their stats. The first plan is due by
-        ``deadline`` (default: the time limit from now), both searches together."""
+        does: then plans with the fewest and smallest changes nothing asks (``least_change``),
+        which say so in their stats. The first plan is due by ``deadline`` (default: the time
+        limit from now), both searches together."""
         check_satisfiable(self.automaton)
         self.least_action, self.least_change = True, False
         try:
             yield from self._search(limit, deadline)
         except (PlanningTimeout, HorizonTooShort):
-            raise  # the time is spent, or a setting binds: a search without least action fares no better
+            raise  # the time is spent, or a setting binds: a search allowing unasked changes fares no better
         except NoPlanError:
             self.least_change = True
             yield from self._search(limit, self._deadline)  # no plan yet: the first one's deadline holds
 
     def _search(self, limit: int | None, deadline: float | None = None) -> Iterator[Plan]:
-        """The plans of one search (``plans``), with ``least_action`` as it is set."""
+        """The plans of one search (``plans``), with ``least_action`` and ``least_change`` as they are set."""
         deadline = self._renewed(deadline)
         self.stats["least_action"] = float(self.least_action and not self.least_change)
         found = 0
