@@ -123,3 +123,44 @@ def test_a_scenario_level_set_position_is_read_with_one_located_warning(tmp_path
     assert "read but not simulated" in warnings[0].message
     plan, _, _ = first_plan(tmp_path, text)
     assert all(abs(state.speed - 120 * KPH) <= HELD for state in plan.states["ego"])
+
+
+def test_drive_adjust_as_carlas_examples_give_it_is_read_with_one_located_warning(tmp_path):
+    text = "scenario s:\n    ego: car\n    do ego.drive(adjust: true, duration: 5s) with:\n        speed(50kph)\n"
+    assert any(d.severity == "error" and d.location.line == 3 for d in check_text(text, "s.osc").diagnostics)
+    checked = check_text(text, "s.osc", dialect="carla")
+    checked.raise_for_errors()
+    warnings = [d for d in checked.diagnostics if d.severity == "warning"]
+    assert [(w.location.line, w.location.column) for w in warnings] == [(3, 18)]
+    assert "adjust" in warnings[0].message
+    plan, _, _ = first_plan(tmp_path, text)
+    assert all(abs(state.speed - 50 * KPH) <= HELD for state in plan.states["ego"])
+
+
+SHADOWED_AT = """global start: string
+global end: string
+
+scenario s:
+    ego: car
+    npc: car
+    do parallel(duration: 20s):
+        ego.drive() with:
+            lane(1, at: start)
+            speed(30kph)
+        npc.drive() with:
+            lane(right_of: ego, at: start)
+            position(15m, behind: ego, at: start)
+            position(20m, ahead_of: ego, at: end)
+"""
+
+
+def test_at_start_is_the_at_value_even_where_a_string_parameter_is_named_start(tmp_path):
+    checked = check_text(SHADOWED_AT, "s.osc", dialect="carla")
+    checked.raise_for_errors()
+    warned = [d for d in checked.diagnostics if "read as the at value" in d.message]
+    assert [d.location.line for d in warned] == [9, 14], "once per shadowed name, where it is first read"
+    plan, _, _ = first_plan(tmp_path, SHADOWED_AT)
+    ego, npc = plan.states["ego"], plan.states["npc"]
+    assert npc[0].lane == ego[0].lane + 1  # right of the leftmost lane, at the start only
+    assert ego[0].position - npc[0].position == pytest.approx(15, abs=0.6)
+    assert npc[-1].position - ego[-1].position == pytest.approx(20, abs=0.6)

@@ -8,6 +8,8 @@
   past it, and holds it once reached; it is checked at the phase's end (``at: all`` written out
   still means throughout). It had been read as "v at the end", and plans ramped over 20 s or
   dipped from 30 to 16 kph inside ``speed(30kph)``.
+- ``drive(path, adjust: b)``: CARLA's runner builds a drive from its modifiers and reads none of
+  its arguments; ``adjust:`` (public CARLA examples give it) is read with one located warning.
 - ``change_speed(dv)`` and ``change_lane(lane_changes: k, side: s)`` are modifiers, as its runner
   executes them: the first adds dv to the car's speed over the phase (its runner adds dv to the
   target speed at the phase's start and holds the new one), the second moves k lanes to the side.
@@ -18,14 +20,15 @@ Everything else is the standard's. The dialect is chosen by ``--dialect carla`` 
 
 from __future__ import annotations
 
-from ..frontend.library import Binding, Parameter, Signature
+from ..frontend.library import DURATION, Binding, Parameter, Signature
 from ..frontend.tolerances import SPEED_TOLERANCE, widened
 from ..frontend.units import SPEED
 from ..logic.automaton import SpeedGain
 from ..logic.phase import Phase, Toward
 from ..settings import CARLA_DIALECT
-from .base import ASKS_SPEED, Modifier, Use
+from .base import ASKS_SPEED, CheckContext, Modifier, Use
 from .lanes import ChangeLaneModifier, Lane
+from .motion import Drive
 from .speed import RELATIONS, Speed
 
 DIALECT = CARLA_DIALECT
@@ -60,6 +63,25 @@ class CarlaSpeed(Speed):
             phase.asks.add(Toward(max(0.0, low), high, max(0.0, (asked[0] + asked[1]) / 2)))
 
 
+class CarlaDrive(Drive):
+    """``drive()`` as CARLA's examples write it: ``adjust:`` is accepted and, as by CARLA's runner, not used."""
+
+    signature = Signature(
+        "drive",
+        (Parameter("path", "road", positional=True), DURATION, Parameter("adjust", "bool")),
+        description="drive forward for the phase; adjust: is read and not used (CARLA)",
+    )
+
+    def check(self, binding: Binding, context: CheckContext) -> None:
+        super().check(binding, context)
+        if binding["adjust"] is not None:
+            context.warning(
+                binding["adjust"].location,
+                "drive(adjust: ...) is read but not used: CARLA's runner does not read it either",
+                "the drive's modifiers say what it does; remove adjust: to silence this warning",
+            )
+
+
 class CarlaChangeSpeed(Modifier):
     """``change_speed(dv)`` on a drive: the speed gains dv over the phase (``SpeedGain``): CARLA's
     runner sets the car's target speed to the one before plus dv at the phase's start."""
@@ -88,6 +110,6 @@ class CarlaChangeLane(ChangeLaneModifier):
     )
 
 
-# CARLA's own modifiers, declared by CARLA's library (its basic.osc) rather than the standard's
-CARLA_OWN = (CarlaChangeSpeed(), CarlaChangeLane())
+# CARLA's own constructs and arguments, as CARLA's runner reads them, not the standard's declarations
+CARLA_OWN = (CarlaDrive(), CarlaChangeSpeed(), CarlaChangeLane())
 CONSTRUCTS = (CarlaLane(), CarlaSpeed(), *CARLA_OWN)

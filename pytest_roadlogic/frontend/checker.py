@@ -173,6 +173,7 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks):
         self.units: dict[str, tuple[str | None, float]] = UNITS  # what imported files are parsed with
         self.physical_types: dict[str, str | None] = dict(library.PHYSICAL_TYPES)
         self.roads: set[str] = set()  # the road fields of the scenario being checked
+        self.shadowed: set[tuple[str, str]] = set()  # (parameter, enum) already warned of, once each
 
     def error(self, location: SourceLocation, message: str, hint: str | None = None) -> None:
         self.diagnostics.append(Diagnostic(location, message, hint))
@@ -747,7 +748,18 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks):
             enum = kind[5:]
             members = self.enums[enum]
             if isinstance(value, model.Name) and scenario.parameter(value.name) is not None:
-                if scenario.parameter(value.name).type != enum:
+                if scenario.parameter(value.name).type != enum and value.enum is None and value.name in members:
+                    # the argument's type decides: CARLA's examples declare `global start: string`
+                    # and still write at: start
+                    if (value.name, enum) not in self.shadowed:
+                        self.shadowed.add((value.name, enum))
+                        self.warning(
+                            value.location,
+                            f"{value.name!r} is read as the {enum} value {value.name} here and wherever a {enum} "
+                            f"is taken, not as the {scenario.parameter(value.name).type} parameter of that name",
+                            f"write {enum}!{value.name} to say so, or rename the parameter",
+                        )
+                elif scenario.parameter(value.name).type != enum:
                     self.error(
                         value.location,
                         f"{parameter.name}: takes a {enum}, but {value.name!r} is a {scenario.parameter(value.name).type}",
