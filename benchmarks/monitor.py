@@ -11,9 +11,10 @@ range over the sample period: five_vehicle_minute's phases of 15-25 s keep up to
 A scenario whose first judgement takes over a second is judged once, not REPEATS times.
 
 Each row prints the monitor beside the same monitor keeping every run (one pass with no floor:
-the monitor before its floors). ``--simulated`` adds, per realistic scenario, the trace of its
-first accepted simulation at seed 1 (where the floors matter most: most runs of an accepted trace
-sit below 0 somewhere, and the first pass drops them).
+the monitor before its floors and bounds). The synthetic traces are all rejected: a rejected trace
+is where the monitor must be as quick as on an accepted one (a failing case is shrunk on it).
+``--simulated`` adds, per realistic scenario, the trace of its first accepted simulation at seed 1
+and the ratio of the synthetic rejected trace's time to it (target: at most 10).
 """
 
 from __future__ import annotations
@@ -66,13 +67,16 @@ def timed(judge, automaton, trace) -> tuple[float, object]:
     return statistics.median(samples), verdict
 
 
-def row(name: str, automaton, trace) -> None:
+def row(name: str, automaton, trace, rejected_ms: float | None = None) -> float:
+    """Print one row; the monitor's milliseconds on ``trace``."""
     after, verdict = timed(monitor, automaton, trace)
     before, _ = timed(lambda a, t: monitor(a, t, floors=(-math.inf,)), automaton, trace)
+    ratio = f" {rejected_ms / after:14.1f}" if rejected_ms is not None else ""
     print(
         f"{name:24} {len(automaton.actors):6d} {len(automaton.locations):9d} {len(automaton.transitions):11d} "
-        f"{'accepted' if verdict.accepted else 'rejected':>9} {before:12.1f} {after:10.1f}"
+        f"{'accepted' if verdict.accepted else 'rejected':>9} {before:12.1f} {after:10.1f}{ratio}"
     )
+    return after
 
 
 HEADER = f"{'scenario':24} {'actors':>6} {'locations':>9} {'transitions':>11} {'verdict':>9} {'every run ms':>12} {'monitor ms':>10}"
@@ -83,24 +87,25 @@ def main() -> int:
         f"monitor on a synthetic {DURATION:.0f} s trace at {DT} s ({int(DURATION / DT) + 1} samples), median of {REPEATS}"
     )
     print(HEADER)
+    rejected: dict[str, float] = {}
     for path in sorted((ROOT / "scenarios").glob("*.osc")) + sorted((ROOT / "scenarios" / "realistic").glob("*.osc")):
         try:
             automaton = build_automaton(load_file(path).scenarios[0])
         except (OscError, IndexError):
             continue  # not read yet (issue 18), or a library without a scenario
-        row(path.stem, automaton, synthetic_trace(automaton.actors, automaton.stationary))
+        rejected[path.stem] = row(path.stem, automaton, synthetic_trace(automaton.actors, automaton.stationary))
     if "--simulated" in sys.argv[1:]:
         from pytest_roadlogic.pipeline import load_scenario, run_scenario
         from pytest_roadlogic.planning.errors import NoPlanError
 
         print("\nmonitor on each realistic scenario's simulated trace (seed 1)")
-        print(HEADER)
+        print(HEADER + f" {'rejected/this':>14}")
         for path in sorted((ROOT / "scenarios" / "realistic").glob("*.osc")):
             try:
                 outcome = run_scenario(load_scenario(path), seed=1)
             except (OscError, NoPlanError):
                 continue  # the infeasible ones
-            row(path.stem, outcome.automaton, outcome.simulation.trace)
+            row(path.stem, outcome.automaton, outcome.simulation.trace, rejected.get(path.stem))
     return 0
 
 

@@ -107,38 +107,146 @@ class Verdict:
 def monitor(automaton: SymbolicAutomaton, trace: Trace, floors: tuple[float, ...] | None = None) -> Verdict:
     """Whether ``trace`` is a run of ``automaton``, with its robustness and, when it is not, why.
 
-    Passes with a falling floor (``FLOORS``): a pass keeps only the runs whose robustness so far is
-    at least its floor. A run that ends in the final location at robustness r has stayed at least
-    r throughout, so once a pass finds one at or above its floor, no run it dropped could have done
-    better, and its verdict is exact: the rest of the report (the furthest location, the closest
-    miss) reads only runs at or above 0, which every floor keeps. Why: five_vehicle_minute's runs
-    mostly sit below 0 (a guard of a phase to come is far from holding), and keeping all of them
-    was 12.1 s of monitoring for one accepted 49 s trace, more than its simulation; the first pass
-    takes 0.09 s. A rejected trace pays the first pass on top of the last (measured:
-    ``benchmarks/monitor.py --simulated``). ``floors`` other than those: for the tests and the
-    benchmark, which compare with a single pass that keeps every run, ``(-math.inf,)``.
+    The search keeps, per location and timed-phase state, the best run so far; what makes it slow
+    is keeping runs that cannot matter, so it keeps only the runs at or above a floor and proves
+    that the ones it dropped could not have done better (a run's robustness only falls):
+
+    1. Floor 0: the runs that meet every guard. A run into the final location decides acceptance
+       and its robustness is exact. The report of a rejected trace (the furthest location, the
+       closest miss) reads only these runs.
+    2. A rejected trace's robustness, the best of the runs below 0, is bracketed: above by the
+       same search with the phases' durations and two-end bounds dropped (``_untimed_bound``: one
+       state per location, vectorised over transitions), below by a run found keeping the single
+       best state per location (a beam of one). When a search at the upper bound's floor finds a
+       run there, or the bounds meet, that is the robustness; else a search above the lower bound
+       keeps only the runs that could beat it.
+
+    A rejected trace had cost up to 150 times an accepted one (every run kept); now about as much.
+    ``floors``: for the tests and the benchmark, which compare with a single pass that keeps every
+    run, ``(-math.inf,)``.
     """
-    for floor in floors or FLOORS:
-        verdict = _monitor(automaton, trace, floor)
-        if verdict.robustness >= floor:
-            return verdict
-    return verdict
+    margins = _Margins(automaton, trace)
+    if floors is not None:
+        for floor in floors:
+            verdict = _searched(automaton, trace, floor, margins).verdict()
+            if verdict.robustness >= floor:
+                return verdict
+        return verdict
+    verdict = _searched(automaton, trace, 0.0, margins).verdict()
+    if verdict.robustness >= 0:
+        return verdict
+    return dataclasses.replace(verdict, robustness=_rejected_robustness(automaton, trace, margins))
 
 
-# robustness floors of the monitor's passes, in the guards' units: 0 decides acceptance, -inf keeps
-# every run. Floors between them (-1, -3, -10) were measured no help: on the synthetic traces of
-# benchmarks/monitor.py a pass at -1 or -10 costs nearly what keeping every run does, and a vehicle
-# that never changes lane misses by far (five_vehicle_minute -360.8, cut_in -53.4: 11.6 s and 0.18 s
-# with or without a pass at -1 or -3), so most rejections need the last pass anyway
-FLOORS = (0.0, -math.inf)
+def _rejected_robustness(automaton: SymbolicAutomaton, trace: Trace, margins: _Margins) -> float:
+    """The best robustness of any run of a trace no run meets (the largest smallest margin)."""
+    untimed = _Untimed(automaton, trace, margins)
+    upper = untimed.bound()
+    if upper == -math.inf:
+        return upper  # not even without the durations does a run reach the end
+    ahead = untimed.ahead()
+    at_upper = _searched(automaton, trace, upper, margins, beam=1, ahead=ahead).best_final
+    if at_upper >= upper:
+        return at_upper  # most often: what binds is a guard, not a duration
+    lower = _searched(automaton, trace, -math.inf, margins, beam=1, ahead=ahead).best_final
+    if lower >= upper:
+        return lower
+    floor = math.nextafter(lower, math.inf) if lower > -math.inf else -math.inf
+    return max(lower, _searched(automaton, trace, floor, margins, ahead=ahead).best_final)
 
 
-def _monitor(automaton: SymbolicAutomaton, trace: Trace, floor: float) -> Verdict:
-    """The monitor over the runs whose robustness stays at least ``floor`` (-inf: every run)."""
-    search = _RunSearch(automaton, trace, floor)
+class _Untimed:
+    """The search with the phases' durations and two-end bounds dropped: one value per location,
+    each sample one vectorised step over the transitions, with the runs' semantics of
+    ``_RunSearch.step``. A dropped constraint can only raise a run's robustness, so what it finds
+    bounds the timed search's from above."""
+
+    def __init__(self, automaton: SymbolicAutomaton, trace: Trace, margins: _Margins) -> None:
+        self.automaton, self.samples = automaton, len(trace.times)
+        n_loc = len(automaton.locations)
+        self.sources = np.array([t.source for t in automaton.transitions], dtype=int)
+        self.targets = np.array([t.target for t in automaton.transitions], dtype=int)
+        self.guards = np.array([margins.guard[t.id] for t in automaton.transitions], dtype=float).reshape(
+            len(automaton.transitions), self.samples
+        )
+        self.invariants = np.full((n_loc, self.samples), math.inf)
+        for q, series in margins.invariant.items():
+            self.invariants[q] = series
+        # moved[q, k]: every actor driving in q moved forward over (k, k+1]; the initial location
+        # holds a fresh run at every sample
+        self.moved = np.ones((n_loc, max(self.samples - 1, 0)), dtype=bool)
+        for q, location in enumerate(automaton.locations):
+            for actor in location.drivers:
+                self.moved[q] &= np.asarray(margins.progress[actor], dtype=bool)
+        self.moved[automaton.initial] = True
+
+    def bound(self) -> float:
+        """The best robustness of an untimed run into the final location (-inf: none)."""
+        init, final = self.automaton.initial, self.automaton.final
+        values = np.full(len(self.automaton.locations), -math.inf)
+        best = -math.inf
+        for k in range(self.samples):
+            staying = np.where(self.moved[:, k - 1], values, -math.inf) if k > 0 else np.full_like(values, -math.inf)
+            staying[init] = math.inf
+            values = np.minimum(staying, self.invariants[:, k])
+            np.maximum.at(values, self.targets, np.minimum(staying[self.sources], self.guards[:, k]))
+            best = max(best, float(values[final]))
+        return best
+
+    def ahead(self) -> np.ndarray:
+        """ahead[q, k]: the best robustness of what an untimed run in q after sample k still has
+        to meet on its way into the final location (+inf in it, -inf where it cannot get there).
+        A timed run in q at k whose robustness so far, or this, is below a floor cannot end above it."""
+        final = self.automaton.final
+        n_loc = len(self.automaton.locations)
+        ahead = np.full((n_loc, self.samples), -math.inf)
+        ahead[final] = math.inf
+        for k in range(self.samples - 2, -1, -1):
+            later = ahead[:, k + 1]
+            values = np.where(self.moved[:, k], np.minimum(self.invariants[:, k + 1], later), -math.inf)
+            taking = np.where(
+                self.moved[self.sources, k], np.minimum(self.guards[:, k + 1], later[self.targets]), -math.inf
+            )
+            np.maximum.at(values, self.sources, taking)
+            values[final] = math.inf
+            ahead[:, k] = values
+        return ahead
+
+
+class _Margins:
+    """What every search of one trace reads, computed once, column-wise: each guard's and
+    invariant's robustness at every sample, whether each actor moved forward over each step, and
+    the columns the phases' two-end bounds read (speed for a mean acceleration, x for a distance)."""
+
+    def __init__(self, automaton: SymbolicAutomaton, trace: Trace) -> None:
+        self.guard = {t.id: t.guard.robustness_series(trace.actors).tolist() for t in automaton.transitions}
+        self.invariant = {
+            q: automaton.location(q).invariant.robustness_series(trace.actors).tolist()
+            for q in range(len(automaton.locations))
+            if not automaton.location(q).invariant.is_true
+        }
+        self.progress = {a: (np.diff(trace.actors[a]["x"]) > 0).tolist() for a in trace.names}
+        self.columns = {
+            column: {a: trace.actors[a][column].tolist() for a in trace.names} for column in _end_columns(automaton)
+        }
+
+
+def _searched(
+    automaton: SymbolicAutomaton,
+    trace: Trace,
+    floor: float,
+    margins: _Margins,
+    beam: int | None = None,
+    ahead: np.ndarray | None = None,
+) -> _RunSearch:
+    """The runs whose robustness stays at least ``floor`` (-inf: every run), searched through the
+    whole trace; with ``beam``, only that many best runs per location are kept at each sample;
+    with ``ahead`` (``_Untimed.ahead``), a run that cannot end at or above the floor is dropped
+    (only the best robustness is then meant: the report reads runs that need not end)."""
+    search = _RunSearch(automaton, trace, floor, margins, beam, ahead)
     for k in range(len(trace.times)):
         search.step(k)
-    return search.verdict()
+    return search
 
 
 # A run's state in a location: the samples at which its open timed phases started (empty when the
@@ -151,8 +259,17 @@ class _RunSearch:
     they give (``verdict``). Per location and key, only the run with the largest smallest
     robustness so far is kept: a run is compared with another in the same state only by that."""
 
-    def __init__(self, automaton: SymbolicAutomaton, trace: Trace, floor: float) -> None:
-        self.automaton, self.trace, self.floor = automaton, trace, floor
+    def __init__(
+        self,
+        automaton: SymbolicAutomaton,
+        trace: Trace,
+        floor: float,
+        margins: _Margins,
+        beam: int | None = None,
+        ahead: np.ndarray | None = None,
+    ) -> None:
+        self.automaton, self.trace, self.floor, self.beam = automaton, trace, floor, beam
+        self.ahead = ahead.tolist() if ahead is not None else None
         self.times = trace.times
         self.n_loc = n_loc = len(automaton.locations)
         self.drivers = [sorted(loc.drivers) for loc in automaton.locations]
@@ -173,18 +290,9 @@ class _RunSearch:
                 )
                 grouped.setdefault(effect, []).append(transition)
             self.effects.append(list(grouped.items()))
-        self.invariant_locations = [q for q in range(n_loc) if not automaton.location(q).invariant.is_true]
-        # every guard's robustness at every sample, computed column-wise up front
-        self.guard_margin = {t.id: t.guard.robustness_series(trace.actors).tolist() for t in automaton.transitions}
-        self.invariant_margin = {
-            q: automaton.location(q).invariant.robustness_series(trace.actors).tolist()
-            for q in self.invariant_locations
-        }
-        self.progress = {a: (np.diff(trace.actors[a]["x"]) > 0).tolist() for a in trace.names}
-        # the columns the phases' two-end bounds read (speed for a mean acceleration, x for a distance)
-        self.columns = {
-            column: {a: trace.actors[a][column].tolist() for a in trace.names} for column in _end_columns(automaton)
-        }
+        self.invariant_locations = sorted(margins.invariant)
+        self.guard_margin, self.invariant_margin = margins.guard, margins.invariant
+        self.progress, self.columns = margins.progress, margins.columns
         # the bound over a phase's two ends that came closest to its range where all else held, for
         # the report: (margin, sample, location, rate)
         self.rate_miss: tuple[float, int, int, object] | None = None
@@ -209,6 +317,17 @@ class _RunSearch:
         for q in range(self.n_loc):
             if surviving[q]:
                 self._transitions(k, q, surviving[q], new_states)
+        if self.ahead is not None:
+            for q, runs in enumerate(new_states):
+                if runs and self.ahead[q][k] < self.floor:
+                    new_states[q] = {}
+        if self.beam is not None:
+            for q, runs in enumerate(new_states):
+                if len(runs) > self.beam:
+                    # the runs that can still end best first (what they have met, and what is ahead)
+                    ahead = self.ahead[q][k] if self.ahead is not None else math.inf
+                    kept = sorted(runs.items(), key=lambda item: (-min(item[1][0], ahead), item[0]))[: self.beam]
+                    new_states[q] = dict(kept)
         self.states = new_states
         for q in range(self.n_loc):
             if self.states[q] and self.first_met[q] is None and max(v for v, _ in self.states[q].values()) >= 0:
@@ -298,11 +417,11 @@ class _RunSearch:
         best_run = [(float(times[k]), events[tid]) for k, tid in shown]
         miss = None
         if self.best_final < 0:
-            miss = _closest_miss(automaton, furthest, self.first_met[furthest] or 0, trace.snapshots(), times)
+            miss = _closest_miss(automaton, furthest, self.first_met[furthest] or 0, self.guard_margin, trace, times)
             if self.rate_miss is not None and (miss is None or miss.robustness >= 0):
                 miss = _rate_miss(automaton, self.rate_miss, self.columns, times)
             if furthest in self.timing_miss and (miss is None or miss.robustness >= 0):
-                miss = _timing_miss(automaton, self.timing_miss[furthest], trace.snapshots(), times)
+                miss = _timing_miss(automaton, self.timing_miss[furthest], trace, times)
             elif furthest in self.overrun and miss is not None and miss.robustness >= 0 and not miss.timing:
                 k, phase, seconds = self.overrun[furthest]
                 timing = automaton.timings[phase]
@@ -389,7 +508,7 @@ def _rate_miss(automaton: SymbolicAutomaton, found: tuple, columns, times) -> Gu
     )
 
 
-def _timing_miss(automaton: SymbolicAutomaton, found: tuple, snapshots, times) -> GuardMiss:
+def _timing_miss(automaton: SymbolicAutomaton, found: tuple, trace: Trace, times) -> GuardMiss:
     """A guard that held where the run could not take it, because a phase it ends would have
     lasted too short or too long: the values it printed meet the guard, and this says why they
     were not enough (issue 20: an explanation contradicted by its own values)."""
@@ -401,8 +520,8 @@ def _timing_miss(automaton: SymbolicAutomaton, found: tuple, snapshots, times) -
         guard=str(transition.guard),
         events=transition.label,
         time=float(times[k]),
-        robustness=float(transition.guard.robustness(snapshots[k])),
-        values=_term_values(transition.guard, snapshots[k]),
+        robustness=float(transition.guard.robustness(trace.snapshot(k))),
+        values=_term_values(transition.guard, trace.snapshot(k)),
         locations=tuple(
             dict.fromkeys(
                 [
@@ -419,13 +538,16 @@ def _end_columns(automaton: SymbolicAutomaton) -> set[str]:
     return {rate.column for timing in automaton.timings.values() for rate in timing.rates}
 
 
-def _closest_miss(automaton: SymbolicAutomaton, location: int, entered: int, snapshots, times) -> GuardMiss | None:
+def _closest_miss(
+    automaton: SymbolicAutomaton, location: int, entered: int, guard_margin: dict, trace: Trace, times
+) -> GuardMiss | None:
+    """The guard out of ``location`` that came closest to holding after the run entered it."""
     best = None
     for transition in automaton.outgoing(location):
-        for k in range(entered + 1 if location != automaton.initial else 0, len(snapshots)):
-            r = transition.guard.robustness(snapshots[k])
-            if best is None or r > best[0]:
-                best = (r, k, transition)
+        margins = guard_margin[transition.id]
+        for k in range(entered + 1 if location != automaton.initial else 0, len(times)):
+            if best is None or margins[k] > best[0]:
+                best = (margins[k], k, transition)
     if best is None:
         return None
     r, k, transition = best
@@ -436,7 +558,7 @@ def _closest_miss(automaton: SymbolicAutomaton, location: int, entered: int, sna
         events=transition.label,
         time=float(times[k]),
         robustness=float(r),
-        values=_term_values(transition.guard, snapshots[k]),
+        values=_term_values(transition.guard, trace.snapshot(k)),
         locations=tuple(dict.fromkeys(b.source for b in transition.guard.atoms() if b.source is not None)),
     )
 
