@@ -29,14 +29,10 @@ import sys
 import time
 from pathlib import Path
 
-from .case import CaseFileError
-from .confinement import shown
-from .dut import NoSuchVehicle
-from .frontend import OscError
+# Light imports only: `roadlogic --help` and argument errors must not load the pipeline (issue 53:
+# it had imported the whole package, 0.35 s of CPU against 0.01 s for a bare interpreter); each
+# command imports the stages it uses.
 from .outcomes import CONFORMANT, PASSED
-from .planning import NoPlanError, UnsatisfiableScenario
-from .progress import ProgressBar
-from .sampling import UnknownParameter
 from .settings import (
     BASE,
     OPTIONS_BY_NAME,
@@ -50,8 +46,6 @@ from .settings import (
 from .settings import (
     count as parse_count,
 )
-from .simulation.backends import UnknownSimulator
-from .simulation.named_drivers import DriverLoadError
 
 EXIT_ACCEPTED, EXIT_REJECTED, EXIT_INPUT = 0, 1, 2
 LANES_HELP = "lanes of the road (default: from the scenario: its path_min_driving_lanes/path_max_lanes and the lanes it names, at least 3)"
@@ -83,6 +77,7 @@ def main(argv: list[str] | None = None) -> int:
     run = _scenario_command(commands, "run", "plan, simulate and monitor one scenario; write the artifacts")
     _run_flags(run, RUN_FLAGS)
     run.add_argument("--out", type=Path, default=Path("out"), help="artifact directory (default out/)")
+    _artifacts_flag(run)
     run.add_argument(
         "--instances",
         type=_flag(whole_instances),
@@ -124,6 +119,7 @@ def main(argv: list[str] | None = None) -> int:
     _run_flags(replay, ("dialect", "map"), "with an .osc file: ")
     _run_flags(replay, RUN_FLAGS, "with an .osc file: ")
     replay.add_argument("--out", type=Path, default=Path("out"), help="artifact directory (default out/)")
+    _artifacts_flag(replay)
     _allow_read(replay)
     check = commands.add_parser("check", help="parse and check .osc files and folders; print every problem")
     check.add_argument("paths", type=Path, nargs="+", help=".osc files or folders (searched recursively)")
@@ -208,6 +204,20 @@ def main(argv: list[str] | None = None) -> int:
         except OSError:
             pass
         return 141
+
+
+ARTIFACT_LEVELS = ("none", "essential", "all")  # as artifacts.writer.ARTIFACT_LEVELS, without importing it
+
+
+def _artifacts_flag(command: argparse.ArgumentParser) -> None:
+    command.add_argument(
+        "--artifacts",
+        choices=ARTIFACT_LEVELS,
+        default="all",
+        help="what to write to --out: none; essential (plan.json, trace.csv, verdict.json and case.json: what a "
+        "replay and a reader of the verdict need, written in a fraction of the time); all (also the CommonRoad and "
+        "OpenSCENARIO files, the plot and the GIF; default)",
+    )
 
 
 def _flag(parse):
@@ -421,8 +431,8 @@ def checked_report(
     automaton cannot translate is reported here rather than when the scenario runs.
     """
     from .automaton import build_automaton
+    from .frontend import OscError, parse_file
     from .frontend import check_file as check
-    from .frontend import parse_file
 
     try:
         if syntax_only:
@@ -485,6 +495,14 @@ def _load_automaton(args: argparse.Namespace):
 
 def _reporting_input_errors(args: argparse.Namespace, action):
     """``action()``, or the exit code after printing why the input is unusable (never a traceback)."""
+    from .case import CaseFileError
+    from .dut import NoSuchVehicle
+    from .frontend import OscError
+    from .planning import NoPlanError, UnsatisfiableScenario
+    from .sampling import UnknownParameter
+    from .simulation.backends import UnknownSimulator
+    from .simulation.named_drivers import DriverLoadError
+
     try:
         return action()
     except OscError as error:
@@ -533,7 +551,7 @@ def _run(args: argparse.Namespace) -> int:
         return runner.run_case(case)
 
     result = _reporting_input_errors(args, run_one)
-    return result if isinstance(result, int) else _show(result, args.out)
+    return result if isinstance(result, int) else _show(result, args.out, args.artifacts, dict(args.driver))
 
 
 def _run_many(args: argparse.Namespace) -> int:
@@ -552,6 +570,8 @@ def _run_many(args: argparse.Namespace) -> int:
     def instances(staging: Path):
         runner = Runner(_load(args), _run_settings(args), _driver_factory(dict(args.driver), args.file))
         conformant = 0
+        from .progress import ProgressBar
+
         bar = ProgressBar(args.instances)
         for result in runner.base(args.instances):
             done = result.case.instance + 1
@@ -560,7 +580,7 @@ def _run_many(args: argparse.Namespace) -> int:
                 yield f"instance {done}: {result.outcome}: {result.message}", False
                 return
             directory = args.out / f"instance-{done:03d}"
-            write_artifacts(result.run, staging / directory.name, animation=False)
+            write_artifacts(result.run, staging / directory.name, animation=False, level=args.artifacts)
             conformant += not result.failed
             bar.update(done, f"{CONFORMANT} {conformant}")
             tries = result.run.tries
@@ -620,7 +640,7 @@ def _replay(args: argparse.Namespace) -> int:
     if _out_refused(args):
         return EXIT_INPUT
     result = _reporting_input_errors(args, run_again)
-    return result if isinstance(result, int) else _show(result, args.out)
+    return result if isinstance(result, int) else _show(result, args.out, args.artifacts, dict(args.driver))
 
 
 def _out_refused(args: argparse.Namespace) -> bool:
@@ -637,11 +657,14 @@ def _out_refused(args: argparse.Namespace) -> bool:
     return False
 
 
-def _show(result, out: Path) -> int:
-    """Write the artifacts of a case and print its stages, verdict and files; the exit code of ``run``.
-    A case without a simulation prints why on stderr (the constraints that clash, at their places)."""
+def _show(result, out: Path, level: str = "all", drivers: dict[str, str] | None = None) -> int:
+    """Write the artifacts of a case at ``level`` (``ARTIFACT_LEVELS``; with them the case file, when
+    the scenario is inside the project, so that ``roadlogic replay out/case.json`` runs it again with
+    ``drivers``) and print its stages, verdict and files; the exit code of ``run``. A case without
+    a simulation prints why on stderr (the constraints that clash, at their places)."""
     from .artifacts.files import replaced_directory
     from .artifacts.writer import ARTIFACT_NAMES, write_artifacts
+    from .planning import UnsatisfiableScenario
 
     case = result.case
     if result.run is None:
@@ -649,10 +672,8 @@ def _show(result, out: Path) -> int:
         print(f"{prefix}{result.message}", file=sys.stderr)
         return EXIT_REJECTED
     outcome = result.run
-    started = time.perf_counter()
-    with replaced_directory(out, ARTIFACT_NAMES) as staging:  # the folder gets the new set whole, or keeps the old
-        paths = {kind: out / path.name for kind, path in write_artifacts(outcome, staging).items()}
-    result.seconds["artifacts"] = time.perf_counter() - started
+    # the verdict first, then the artifacts (the plot and the GIF are most of a small run's wall)
+    result.seconds.pop("artifacts", None)
     print(
         f"scenario {case.scenario} (seed {case.seed}): {result.outcome} after {outcome.tries} tr{'y' if outcome.tries == 1 else 'ies'}"
     )
@@ -664,11 +685,37 @@ def _show(result, out: Path) -> int:
         print(oracle_line(outcome.dut, len(outcome.simulation.replans)))
         if result.message:
             print(f"{result.outcome}: {result.message}")
-    for kind, path in paths.items():
-        print(f"  {kind:<12} {path}")
+    if level != "none":
+        sys.stdout.flush()
+        started = time.perf_counter()
+        with replaced_directory(out, ARTIFACT_NAMES) as staging:  # the folder gets the new set whole, or keeps the old
+            written = write_artifacts(outcome, staging, level=level)
+            case_file = _case_file(result.case, drivers or {}, staging / "case.json")
+            paths = {kind: out / path.name for kind, path in {**written, **case_file}.items()}
+        result.seconds["artifacts"] = time.perf_counter() - started
+        print(f"  {'artifacts':<12} {result.seconds['artifacts']:7.3f} s")
+        for kind, path in paths.items():
+            print(f"  {kind:<12} {path}")
     if outcome.dut is not None:
         return EXIT_ACCEPTED if result.outcome == PASSED else EXIT_REJECTED
     return EXIT_ACCEPTED if outcome.verdict.accepted else EXIT_REJECTED
+
+
+def _case_file(case, drivers: dict[str, str], path: Path) -> dict[str, Path]:
+    """The run's case file at ``path`` ({"case": path}), its scenario named relative to the project's
+    root (a case file names no absolute path); none when the scenario is outside the project."""
+    from dataclasses import replace
+
+    from .case import installed_versions
+    from .confinement import project_root
+
+    root = project_root() or Path.cwd()
+    try:
+        relative = Path(case.path).resolve().relative_to(root.resolve())
+    except ValueError:
+        return {}
+    recorded = replace(case, path=relative.as_posix(), drivers=drivers, versions=installed_versions())
+    return {"case": recorded.save(path)}
 
 
 def _print_unasked(plan, automaton, registry, indent: str = "") -> None:
@@ -746,6 +793,8 @@ def _bench_out_refused(args: argparse.Namespace) -> bool:
                 f"{args.out} holds files but no {RESULTS_FILE}: not a folder a bench wrote; give a new or empty folder"
             )
     except NotAnArtifactFolder as error:
+        from .confinement import shown
+
         print(f"roadlogic bench: --out: {shown(str(error))}", file=sys.stderr)
         return True
     return False
@@ -792,6 +841,8 @@ def _bench_run(args: argparse.Namespace, settings):
         f"({total} in all), seed {settings.run.seed}",
         file=sys.stderr,
     )
+    from .progress import ProgressBar
+
     bar = ProgressBar(total)
     conformant = 0
 

@@ -40,6 +40,26 @@ def test_roadlogic_run_writes_every_artifact_and_accepts(tmp_path):
     assert "HiGHS" not in result.stdout, "the LP solver's banner is not part of the report"
 
 
+def test_run_with_essential_artifacts_writes_what_a_replay_needs_and_the_case_replays(tmp_path):
+    out = tmp_path / "out"
+    result = run_cli("run", str(OVERTAKE.relative_to(ROOT)), "--artifacts", "essential", "--out", str(out))
+    assert result.returncode == 0, result.stdout + result.stderr
+    assert sorted(p.name for p in out.iterdir()) == ["case.json", "plan.json", "trace.csv", "verdict.json"]
+    # the verdict is printed before the artifacts are written
+    assert result.stdout.index("accepted (robustness") < result.stdout.index("artifacts")
+    again = run_cli("replay", str(out / "case.json"), "--artifacts", "essential", "--out", str(tmp_path / "again"))
+    assert again.returncode == 0, again.stdout + again.stderr
+    assert (tmp_path / "again" / "trace.csv").read_text() == (out / "trace.csv").read_text()
+
+
+def test_run_with_no_artifacts_writes_nothing_and_a_bad_level_is_refused(tmp_path):
+    result = run_cli("run", str(OVERTAKE), "--artifacts", "none", "--out", str(tmp_path / "out"))
+    assert result.returncode == 0, result.stdout + result.stderr
+    assert not (tmp_path / "out").exists() and "artifacts" not in result.stdout
+    refused = run_cli("run", str(OVERTAKE), "--artifacts", "some", "--out", str(tmp_path / "out"))
+    assert refused.returncode == 2 and "--artifacts" in refused.stderr and "Traceback" not in refused.stderr
+
+
 def test_the_same_seed_gives_the_same_plan_and_trace(tmp_path):
     for run in ("a", "b"):
         assert run_cli("run", str(OVERTAKE), "--seed", "2", "--out", str(tmp_path / run)).returncode == 0

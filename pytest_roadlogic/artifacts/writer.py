@@ -24,8 +24,20 @@ ARTIFACT_NAMES = re.compile(
 )
 
 
-def write_artifacts(outcome: SimulatedInstance, directory: str | Path, animation: bool = True) -> dict[str, Path]:
-    """Every artifact of a run; the GIF (seconds to render) only when ``animation`` is set."""
+# how many artifacts a run writes (``roadlogic run --artifacts``): none; what a replay and a reader of
+# the verdict need (plan, trace, verdict); or all of them (with the CommonRoad and OpenSCENARIO
+# files, the plot and the GIF). The GIF and the plot are most of the artifacts' time (issue 53).
+ARTIFACT_LEVELS = ("none", "essential", "all")
+ESSENTIAL = ("plan", "trace", "verdict")
+
+
+def write_artifacts(
+    outcome: SimulatedInstance, directory: str | Path, animation: bool = True, level: str = "all"
+) -> dict[str, Path]:
+    """The artifacts of a run at ``level`` (``ARTIFACT_LEVELS``): with ``all``, every one, the GIF
+    (seconds to render) only when ``animation`` is set; with ``essential``, ``ESSENTIAL``."""
+    if level == "none":
+        return {}
     directory = Path(directory)
     directory.mkdir(parents=True, exist_ok=True)
     name = outcome.scenario.name
@@ -74,6 +86,12 @@ def write_artifacts(outcome: SimulatedInstance, directory: str | Path, animation
             else {}
         ),
     }
+    if level == "essential":
+        return {
+            "plan": write_text(directory / "plan.json", outcome.plan.to_json()),
+            "trace": write_text(directory / "trace.csv", outcome.simulation.trace.to_csv()),
+            "verdict": write_text(directory / "verdict.json", json.dumps(verdict, indent=2)),
+        }
     scenario_xosc, road_xodr = openscenario_paths(directory)
     lanes = outcome.simulation.road.lanes
 
