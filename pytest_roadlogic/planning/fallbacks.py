@@ -183,6 +183,7 @@ def planned(
     if not fallbacks:
         yield from _planner_for(guide(settings), settings, seed).plans(limit=limit, deadline=deadline)
         return
+    _refuse_what_the_relaxation_proves(guide, settings, beyond_limits)
     quiet = dataclasses.replace(settings, explain_unsatisfiable=False)
     first = _planner_for(guide(quiet), quiet, seed)
     plans = first.plans(limit=limit, deadline=deadline)
@@ -201,6 +202,28 @@ def planned(
     while plan is not None:
         yield plan
         plan = next(plans, None)
+
+
+def _refuse_what_the_relaxation_proves(guide: Guide, settings, beyond_limits: bool) -> None:
+    """Raise ``UnsatisfiableScenario`` when the linear relaxation (``relaxation``) proves that no
+    planner, the fallbacks' included, has a plan for the sample: milliseconds, where the planner
+    over every horizon, the fallbacks and the diagnosis had taken seconds. It reads the automaton
+    of the widest fallback margins and the fastest speed any fallback plans."""
+    from .errors import conflict_message
+    from .relaxation import provably_unplannable
+
+    widest = settings.thinned() or settings
+    automaton = guide(widest)
+    fastest = dict((name, value) for name, value, _ in RELAXED_LIMITS)["max_speed"] if beyond_limits else None
+    conflict = provably_unplannable(automaton, max(fastest or 0.0, settings.max_speed))
+    if conflict:
+        raise UnsatisfiableScenario(
+            "no plan exists at these values (its linear relaxation has no solution)\n"
+            + conflict_message([conflict], automaton.parameters),
+            [conflict],
+            settings.summary(automaton.lanes),
+            automaton.parameters,
+        )
 
 
 def _fallback_plans(

@@ -1,0 +1,212 @@
+"""A sample with no plan, proved in milliseconds: the planning problem's linear relaxation.
+
+What goes in: the automaton a planner would solve for a sample (its bounds and durations) and the
+fastest speed any planner may plan. What comes out: None, or the smallest group of the scenario's
+constraints (``Bound``s and ``Timing``s, as ``diagnosis.smallest_conflict`` gives them) under
+which no plan of any planner exists, because even the relaxation has no solution.
+
+Why: a sample with no plan had cost seconds (the planner over every horizon, then four fallback
+planners, then the diagnosis), and Hypothesis's shrinking of a failing band lives on such samples
+(issue 53: ``catch_up_band`` stopped shrinking at 291 m, its edge about 192 m). Most of them are
+plain arithmetic: a gap no speed allowed can close in the time allowed.
+
+The relaxation, per path of the automaton from its initial to its final location (at most
+``MAX_PATHS``; more, and it proves nothing): one instant per transition of the path, with its time
+and each actor's position and speed. It keeps only what every plan of every planner satisfies:
+instants in order; each transition's guard at its instant, its conjunction of bounds on positions
+and speeds (lanes, headways, distances travelled and disjunctions are dropped); each phase's
+duration; and between two instants each actor's travel within its speed envelope times the time
+between them (a plan's position advances by the mean of its speeds at consecutive steps, and every
+speed there lies in the location's invariant band or at the instants in their guards' bands,
+within 0..``max_speed``); a stationary object stays. Dropping constraints only adds solutions, so
+a relaxation with none on every path proves there is no plan. The group named is minimal on the
+paths (one constraint taken out at a time, kept out when the rest still fail on every path).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable
+
+from ..logic.automaton import SymbolicAutomaton, Transition
+from ..logic.guards import POSITION, SPEED, And, Bound, Guard
+
+MAX_PATHS = 64  # an automaton with more paths to its end is left to the planner
+
+
+def provably_unplannable(automaton: SymbolicAutomaton, max_speed: float) -> tuple | None:
+    """The constraints that no plan can meet together when the relaxation proves it, else None."""
+    paths = _paths(automaton)
+    if not paths:
+        return None
+    relaxations = [_PathRelaxation(automaton, path, max_speed) for path in paths]
+    named: dict = {}  # source -> the constraint that names it (the first, as the diagnosis names it)
+    for relaxation in relaxations:
+        for source, constraint in relaxation.constraints.items():
+            named.setdefault(source, constraint)
+    kept = sorted(named, key=lambda s: (str(s.path), s.line, s.column))
+    if any(r.feasible(set(kept)) for r in relaxations):
+        return None
+    for source in list(kept):
+        trial = [s for s in kept if s != source]
+        if not any(r.feasible(set(trial)) for r in relaxations):
+            kept = trial
+    return tuple(named[s] for s in kept) if kept else None
+
+
+def _paths(automaton: SymbolicAutomaton) -> list[list[Transition]] | None:
+    """Every path of transitions from the initial to the final location; None past ``MAX_PATHS``."""
+    found: list[list[Transition]] = []
+
+    def walk(location: int, prefix: list[Transition], seen: frozenset[int]) -> bool:
+        if location == automaton.final:
+            found.append(prefix)
+            return len(found) <= MAX_PATHS
+        for transition in automaton.outgoing(location):
+            if transition.target in seen:
+                continue
+            if not walk(transition.target, [*prefix, transition], seen | {transition.target}):
+                return False
+        return True
+
+    if not walk(automaton.initial, [], frozenset({automaton.initial})):
+        return None
+    return found
+
+
+def _bounds(guard: Guard) -> Iterable[Bound]:
+    """The bounds a guard is a conjunction of (of its conjunctive part; a disjunction is dropped)."""
+    if isinstance(guard, Bound):
+        yield guard
+    elif isinstance(guard, And):
+        for part in guard.parts:
+            yield from _bounds(part)
+
+
+def _linear(bound: Bound) -> bool:
+    return bound.term.quantity in (POSITION, SPEED)
+
+
+class _PathRelaxation:
+    """The linear program of one path, built for any subset of the scenario's constraints (``groups``:
+    a bound or a duration with a source; bounds of one source go in or out together)."""
+
+    def __init__(self, automaton: SymbolicAutomaton, path: list[Transition], max_speed: float) -> None:
+        self.automaton, self.path, self.max_speed = automaton, path, max_speed
+        self.actors = list(automaton.actors)
+        # per instant, the bounds of its transition's guard; per interval, its location's invariant
+        self.at = [[b for b in _bounds(t.guard) if _linear(b)] for t in path]
+        self.during = [[b for b in _bounds(automaton.location(t.target).invariant) if _linear(b)] for t in path[:-1]]
+        # the timed phases and the instants that start and end them on this path
+        started: dict[int, int] = {}
+        self.durations: list[tuple[int, int, object]] = []
+        for i, transition in enumerate(path):
+            for phase in transition.ends:
+                if phase in automaton.timings and phase in started:
+                    self.durations.append((started.pop(phase), i, automaton.timings[phase]))
+            for phase in transition.starts:
+                if phase in automaton.timings:
+                    started[phase] = i
+        # the scenario's constraints on this path by their place: one modifier's bounds go in or out together
+        self.constraints: dict = {}
+        for bound in (b for bounds in (*self.at, *self.during) for b in bounds):
+            if bound.source is not None:
+                self.constraints.setdefault(bound.source, bound)
+        for _, _, timing in self.durations:
+            if timing.source is not None:
+                self.constraints.setdefault(timing.source, timing)
+
+    def feasible(self, sources: set) -> bool:
+        """Whether the relaxation with only the constraints at ``sources`` (and those with no
+        place, which are not the scenario's to take out) has a solution."""
+
+        def on(constraint) -> bool:
+            return constraint.source is None or constraint.source in sources
+
+        n = len(self.path)
+        columns: dict[tuple, int] = {}
+
+        def var(*name) -> int:
+            return columns.setdefault(name, len(columns))
+
+        rows: list[tuple[dict[int, float], float, float]] = []
+        lows: dict[int, float] = {}
+        highs: dict[int, float] = {}
+        for i in range(n):
+            lows[var("t", i)] = 0.0
+            if i:
+                rows.append(({var("t", i): 1.0, var("t", i - 1): -1.0}, 0.0, math.inf))
+            for actor in self.actors:
+                lows[var("v", actor, i)] = 0.0
+                highs[var("v", actor, i)] = 0.0 if actor in self.automaton.stationary else self.max_speed
+                lows[var("p", actor, i)] = -math.inf
+        envelope_at = [self._speed_bands(self.at[i], on) for i in range(n)]
+        for i in range(n):
+            for bound in self.at[i]:
+                if on(bound):
+                    rows.append(self._row(bound, i, var))
+        for i in range(n - 1):
+            invariant = [b for b in self.during[i] if on(b)]
+            for bound in invariant:
+                rows.append(self._row(bound, i, var))
+                rows.append(self._row(bound, i + 1, var))
+            bands = self._speed_bands(invariant, on)
+            for actor in self.actors:
+                travel = {var("p", actor, i + 1): 1.0, var("p", actor, i): -1.0}
+                if actor in self.automaton.stationary:
+                    rows.append((travel, 0.0, 0.0))
+                    continue
+                low = min(
+                    bands.get(actor, (0.0, self.max_speed))[0],
+                    *(e.get(actor, (0.0,))[0] for e in envelope_at[i : i + 2]),
+                )
+                high = max(
+                    bands.get(actor, (0.0, self.max_speed))[1],
+                    *(e.get(actor, (0.0, self.max_speed))[1] for e in envelope_at[i : i + 2]),
+                )
+                low, high = max(low, 0.0), min(high, self.max_speed)
+                dt = {var("t", i + 1): 1.0, var("t", i): -1.0}
+                # travel >= low * (t[i+1] - t[i]) and travel <= high * (t[i+1] - t[i])
+                rows.append(({**travel, **{k: -low * c for k, c in dt.items()}}, 0.0, math.inf))
+                rows.append(({**travel, **{k: -high * c for k, c in dt.items()}}, -math.inf, 0.0))
+        for start, end, timing in self.durations:
+            if on(timing):
+                rows.append(({var("t", end): 1.0, var("t", start): -1.0}, timing.low, timing.high))
+        return _solvable(len(columns), lows, highs, rows)
+
+    def _speed_bands(self, bounds: list[Bound], on) -> dict[str, tuple[float, float]]:
+        """Each actor's speed band from the absolute speed bounds among ``bounds`` that are on."""
+        bands: dict[str, tuple[float, float]] = {}
+        for bound in bounds:
+            if on(bound) and bound.term.quantity == SPEED and bound.term.reference is None:
+                low, high = bands.get(bound.term.actor, (0.0, self.max_speed))
+                bands[bound.term.actor] = (max(low, bound.low), min(high, bound.high))
+        return bands
+
+    @staticmethod
+    def _row(bound: Bound, i: int, var) -> tuple[dict[int, float], float, float]:
+        symbol = "p" if bound.term.quantity == POSITION else "v"
+        coefficients = {var(symbol, bound.term.actor, i): 1.0}
+        if bound.term.reference is not None:
+            coefficients[var(symbol, bound.term.reference, i)] = -1.0
+        return coefficients, bound.low, bound.high
+
+
+def _solvable(count: int, lows: dict[int, float], highs: dict[int, float], rows) -> bool:
+    """Whether the linear rows ``(coefficients, low, high)`` over ``count`` columns have a solution."""
+    import highspy
+    import numpy as np
+
+    from .encodings.continuous.linear import quiet_highs
+
+    solver = quiet_highs()
+    lower = np.array([lows.get(k, -math.inf) for k in range(count)], dtype=float)
+    upper = np.array([highs.get(k, math.inf) for k in range(count)], dtype=float)
+    inf = solver.getInfinity()
+    solver.addVars(count, np.maximum(lower, -inf), np.minimum(upper, inf))
+    for coefficients, low, high in rows:
+        indices = np.array(list(coefficients), dtype=np.int32)
+        values = np.array(list(coefficients.values()), dtype=float)
+        solver.addRow(max(low, -inf), min(high, inf), len(indices), indices, values)
+    solver.run()
+    return solver.getModelStatus() != highspy.HighsModelStatus.kInfeasible
