@@ -128,11 +128,11 @@ def monitor(automaton: SymbolicAutomaton, trace: Trace, floors: tuple[float, ...
     margins = _Margins(automaton, trace)
     if floors is not None:
         for floor in floors:
-            verdict = _searched(automaton, trace, floor, margins).verdict()
+            verdict = _RunSearch(automaton, trace, floor, margins).run().verdict()
             if verdict.robustness >= floor:
                 return verdict
         return verdict
-    verdict = _searched(automaton, trace, 0.0, margins).verdict()
+    verdict = _RunSearch(automaton, trace, 0.0, margins).run().verdict()
     if verdict.robustness >= 0:
         return verdict
     return dataclasses.replace(verdict, robustness=_rejected_robustness(automaton, trace, margins))
@@ -145,14 +145,14 @@ def _rejected_robustness(automaton: SymbolicAutomaton, trace: Trace, margins: _M
     if upper == -math.inf:
         return upper  # not even without the durations does a run reach the end
     ahead = untimed.ahead()
-    at_upper = _searched(automaton, trace, upper, margins, beam=1, ahead=ahead).best_final
+    at_upper = _RunSearch(automaton, trace, upper, margins, beam=1, ahead=ahead).run().best_final
     if at_upper >= upper:
         return at_upper  # most often: what binds is a guard, not a duration
-    lower = _searched(automaton, trace, -math.inf, margins, beam=1, ahead=ahead).best_final
+    lower = _RunSearch(automaton, trace, -math.inf, margins, beam=1, ahead=ahead).run().best_final
     if lower >= upper:
         return lower
     floor = math.nextafter(lower, math.inf) if lower > -math.inf else -math.inf
-    return max(lower, _searched(automaton, trace, floor, margins, ahead=ahead).best_final)
+    return max(lower, _RunSearch(automaton, trace, floor, margins, ahead=ahead).run().best_final)
 
 
 class _Untimed:
@@ -231,24 +231,6 @@ class _Margins:
         }
 
 
-def _searched(
-    automaton: SymbolicAutomaton,
-    trace: Trace,
-    floor: float,
-    margins: _Margins,
-    beam: int | None = None,
-    ahead: np.ndarray | None = None,
-) -> _RunSearch:
-    """The runs whose robustness stays at least ``floor`` (-inf: every run), searched through the
-    whole trace; with ``beam``, only that many best runs per location are kept at each sample;
-    with ``ahead`` (``_Untimed.ahead``), a run that cannot end at or above the floor is dropped
-    (only the best robustness is then meant: the report reads runs that need not end)."""
-    search = _RunSearch(automaton, trace, floor, margins, beam, ahead)
-    for k in range(len(trace.times)):
-        search.step(k)
-    return search
-
-
 # A run's state in a location: the samples at which its open timed phases started (empty when the
 # scenario has no durations), sorted ((phase, start sample), ...)
 Key = tuple
@@ -268,6 +250,10 @@ class _RunSearch:
         beam: int | None = None,
         ahead: np.ndarray | None = None,
     ) -> None:
+        """The search for the runs whose robustness stays at least ``floor`` (-inf: every run);
+        with ``beam``, only that many best runs per location are kept at each sample; with
+        ``ahead`` (``_Untimed.ahead``), a run that cannot end at or above the floor is dropped
+        (only the best robustness is then meant: the report reads runs that need not end)."""
         self.automaton, self.trace, self.floor, self.beam = automaton, trace, floor, beam
         self.ahead = ahead.tolist() if ahead is not None else None
         self.times = trace.times
@@ -307,6 +293,12 @@ class _RunSearch:
         self.first_met: list[int | None] = [None] * n_loc  # first sample at which a run with all guards met is in q
         self.met_run: list = [None] * n_loc  # that run's transitions, (sample, transition id)
         self.best_final, self.best_final_run = -math.inf, ()
+
+    def run(self) -> _RunSearch:
+        """Itself, searched through the whole trace."""
+        for k in range(len(self.times)):
+            self.step(k)
+        return self
 
     def step(self, k: int) -> None:
         """The runs after sample ``k``: staying where their drivers progressed, meeting the
