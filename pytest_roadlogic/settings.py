@@ -328,7 +328,7 @@ OPTIONS = (
         "simulator",
         name,
         DEFAULT_SIMULATOR,
-        "the simulation backend (frenetix, or one a package registers)",
+        "the simulation backend: frenetix (a motion planner per vehicle), kinematic (a bicycle model tracking the plan: fast screening), or one a package registers",
     ),
     Option(
         "dut",

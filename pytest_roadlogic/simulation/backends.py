@@ -1,4 +1,4 @@
-"""Simulation backends by name: the built-in ``frenetix`` one, and any a package registers.
+"""Simulation backends by name: the built-in ``frenetix`` (the default) and ``kinematic`` ones, and any a package registers.
 
 A package adds a backend with an entry point in the ``pytest_roadlogic.simulators`` group whose
 object is a ``Simulator`` class (or factory) taking no arguments; ``--roadlogic-simulator NAME``
@@ -28,7 +28,13 @@ def _frenetix() -> Simulator:
     return FrenetixSimulator()
 
 
-BUILT_IN = {"frenetix": _frenetix}
+def _kinematic() -> Simulator:
+    from .kinematic import KinematicSimulator
+
+    return KinematicSimulator()
+
+
+BUILT_IN = {"frenetix": _frenetix, "kinematic": _kinematic}
 
 
 def available() -> list[str]:

@@ -98,6 +98,10 @@ class Reference:
     def v(self, t) -> np.ndarray:
         return self._evaluate(np.asarray(t, dtype=float))[1]
 
+    def position_and_speed(self, t) -> tuple[np.ndarray, np.ndarray]:
+        """``s(t)`` and ``v(t)`` in one evaluation (a driver that reads both every cycle)."""
+        return self._evaluate(np.asarray(t, dtype=float))
+
     def _evaluate(self, t: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         s = np.empty_like(t)
         v = np.empty_like(t)

@@ -1,0 +1,73 @@
+"""A kinematic bicycle model that tracks a reference with a closed-form controller.
+
+Longitudinal: the reference's acceleration fed forward, plus feedback on the speed and position
+errors (``SPEED_GAIN``, ``POSITION_GAIN``: critically damped, about 1.4 s to settle), within a
+car's limits (``MAX_ACCELERATION``, ``MAX_DECELERATION``). Lateral: pure pursuit of the
+reference's lateral position a look-ahead distance ahead, the heading error turned into a steering
+angle through the bicycle model (``WHEELBASE``), within ``MAX_STEER``. Every cycle the controller
+is rolled out over ``HORIZON`` seconds against the reference: the first step is the vehicle's next
+state, the rest what the other drivers see as its prediction. Positions are in the road's frame
+(x along the road or route, y across it), as the lockstep loop keeps them.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..driver import Trajectory, VehicleState
+from ..geometry import WHEELBASE
+from ..reference import Reference
+from ..road import Road
+
+HORIZON = 3.0  # s of prediction
+POSITION_GAIN = 0.5  # 1/s^2
+SPEED_GAIN = 1.5  # 1/s
+MAX_ACCELERATION = 4.0  # m/s^2
+MAX_DECELERATION = 9.0  # m/s^2
+HEADING_GAIN = 2.5  # 1/s
+MAX_STEER = 0.5  # rad
+LOOK_AHEAD_TIME = 1.0  # s: the pursued point is this far ahead at the current speed, at least
+LOOK_AHEAD_MIN = 4.0  # m
+
+
+class KinematicDriver:
+    """Tracks its reference with the kinematic bicycle model and the closed-form controller."""
+
+    fallbacks = 0  # it never falls back (the lockstep loop reports the frenetix driver's)
+
+    def start(self, vehicle: str, reference: Reference, road: Road, dt: float) -> None:
+        self.reference, self.dt = reference, dt
+        self.steps = max(2, int(round(HORIZON / dt)) + 1)
+
+    def retarget(self, reference: Reference) -> None:
+        """Follow ``reference`` from now on (a replan): the controller keeps no other state."""
+        self.reference = reference
+
+    def plan(self, time: float, state: VehicleState, others: dict[str, Trajectory]) -> Trajectory:
+        dt, n = self.dt, self.steps
+        times = time + dt * np.arange(n + 1)
+        s_ref, v_ref = self.reference.position_and_speed(times)
+        look = max(LOOK_AHEAD_MIN, state.speed * LOOK_AHEAD_TIME)
+        ahead = self.reference.d(times + look / max(state.speed, 1.0))
+        x, y, heading, v = state.x, state.y, state.heading, state.speed
+        xs, ys, hs, vs, accs = [x], [y], [heading], [v], [state.acceleration]
+        for k in range(n - 1):
+            feedforward = (float(v_ref[k + 1]) - float(v_ref[k])) / dt
+            a = feedforward + SPEED_GAIN * (float(v_ref[k]) - v) + POSITION_GAIN * (float(s_ref[k]) - x)
+            a = min(MAX_ACCELERATION, max(-MAX_DECELERATION, a))
+            wanted = math.atan2(float(ahead[k]) - y, look)
+            yaw_rate = HEADING_GAIN * (wanted - heading)
+            steer = math.atan(yaw_rate * WHEELBASE / v) if v > 0.1 else 0.0
+            steer = min(MAX_STEER, max(-MAX_STEER, steer))
+            x += v * math.cos(heading) * dt
+            y += v * math.sin(heading) * dt
+            heading += v / WHEELBASE * math.tan(steer) * dt
+            v = max(0.0, v + a * dt)
+            xs.append(x)
+            ys.append(y)
+            hs.append(heading)
+            vs.append(v)
+            accs.append(a)
+        return Trajectory(np.array(xs), np.array(ys), np.array(hs), np.array(vs), np.array(accs))
