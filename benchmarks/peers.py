@@ -1,7 +1,7 @@
 """Ours beside Scenic, the peer measured side by side: seconds and simulations per valid concrete scenario.
 
     pip install -e ".[peers]"       # Scenic 3.1 (its Newtonian simulator)
-    python benchmarks/peers.py [--valid 20] [--seed 1] [--only overtake cut_in follow]
+    python benchmarks/peers.py [--valid 20] [--seed 1] [--only overtake cut_in follow] [--simulator kinematic]
 
 Each row is one logical scenario written twice, by us: an .osc file for ours and a Scenic program
 for Scenic (``benchmarks/peers/*.scenic``, driving with ``peers/scenic_support.py``), on the same
@@ -13,6 +13,9 @@ ours, one of Scenic's, and again), until each side has ``--valid`` valid concret
   a sample without a plan or without an accepted simulation is followed by the next sample;
 - Scenic: a scene generated from the program, then simulated; its requirements (the monitor of the
   scenario's phases, no collision) reject a run, and a rejected run is followed by a new scene.
+
+``--simulator kinematic`` compares at equal fidelity: our kinematic backend (a bicycle model
+tracking the plan) against Scenic's Newtonian simulator; the default, frenetix, is ours as it is.
 
 "Seconds per valid scenario" is the wall time from the end of the previous valid one (reading the
 .osc file and compiling the Scenic program are left out on both sides; one warm-up run each is not
@@ -76,10 +79,13 @@ class Side:
 class Ours:
     """Our pipeline on one .osc file, one sample after another."""
 
-    def __init__(self, path: Path, seed: int, count: int) -> None:
+    def __init__(self, path: Path, seed: int, count: int, backend: str) -> None:
+        from pytest_roadlogic.simulation.backends import simulator
+
         self.scenario = load_scenario(path)
         self.seed = seed
         self.samples = iter(samples(self.scenario, count, seed))
+        self.simulator = simulator(backend)
 
     def valid_one(self, side: Side) -> None:
         """Samples until one gives an accepted simulation; adds its seconds to ``side``."""
@@ -87,7 +93,7 @@ class Ours:
         for values in self.samples:
             side.attempts += 1
             try:
-                outcome = run_scenario(self.scenario, seed=self.seed, values=values)
+                outcome = run_scenario(self.scenario, seed=self.seed, values=values, simulator=self.simulator)
             except (NoPlanError, SimulationTimeout):
                 continue
             side.simulations += outcome.tries
@@ -125,9 +131,9 @@ class Scenic:
         raise RuntimeError(f"no valid Scenic run in {limit} scenes")
 
 
-def interleaved(name: str, valid: int, seed: int, draws: int) -> tuple[Side, Side]:
+def interleaved(name: str, valid: int, seed: int, draws: int, backend: str) -> tuple[Side, Side]:
     osc, program = PAIRS[name]
-    ours, peer = Ours(osc, seed, draws), Scenic(program, seed)
+    ours, peer = Ours(osc, seed, draws, backend), Scenic(program, seed)
     ours.valid_one(Side())  # warm-up: imports, caches
     peer.valid_one(Side())
     mine, theirs = Side(), Side()
@@ -143,6 +149,9 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--seed", type=int, default=1)
     parser.add_argument("--draws", type=int, default=400, help="samples of ours drawn at most per scenario")
     parser.add_argument("--only", nargs="*", choices=sorted(PAIRS), default=list(PAIRS))
+    parser.add_argument(
+        "--simulator", default="frenetix", help="our backend: frenetix (as it is) or kinematic (Scenic's fidelity)"
+    )
     args = parser.parse_args(argv)
     try:
         import scenic  # noqa: F401
@@ -150,17 +159,25 @@ def main(argv: list[str] | None = None) -> int:
         print("Scenic is not installed: pip install -e '.[peers]'", file=sys.stderr)
         return 2
     write_road(PEERS / "road.xodr")
-    print(f"{args.valid} valid concrete scenarios per side, seed {args.seed}, interleaved in one process")
+    print(
+        f"{args.valid} valid concrete scenarios per side, seed {args.seed}, interleaved in one process; "
+        f"ours simulated by {args.simulator}, Scenic's by its Newtonian simulator"
+    )
     header = (
         f"{'scenario':<10} {'ours: s per valid, median / max':>32} {'Scenic':>17} "
         f"{'simulations per valid, ours / Scenic':>38} {'ours: planning / simulation / monitoring, s per valid':>56}"
     )
     print(header)
     for name in args.only:
-        mine, theirs = interleaved(name, args.valid, args.seed, args.draws)
+        mine, theirs = interleaved(name, args.valid, args.seed, args.draws, args.simulator)
         stages = " / ".join(f"{mine.stages[s] / max(mine.valid, 1):.3f}" for s in STAGES)
+        ratio = (
+            f"  ours/Scenic {statistics.median(mine.seconds) / statistics.median(theirs.seconds):.2f}"
+            if mine.seconds and theirs.seconds
+            else ""
+        )
         print(
-            f"{name:<10} {mine.cell():>32} {theirs.cell():>17} {mine.per_valid() + ' / ' + theirs.per_valid():>38} {stages:>56}",
+            f"{name:<10} {mine.cell():>32} {theirs.cell():>17} {mine.per_valid() + ' / ' + theirs.per_valid():>38} {stages:>56}{ratio}",
             flush=True,
         )
     return 0
