@@ -180,6 +180,19 @@ def drive_in_lockstep(
     )
 
 
+class LockstepSimulator:
+    """A backend built on per-vehicle drivers: the lockstep loop with ``default_driver`` for every
+    vehicle no user's driver drives (``frenetix``, ``kinematic``)."""
+
+    name: str
+    default_driver: Callable[[], Driver]
+
+    def simulate(
+        self, plan: Plan, limits: SimulationLimits, drivers: DriverFactory | None = None, react=None
+    ) -> Simulation:
+        return drive_in_lockstep(plan, limits, drivers, self.default_driver, react)
+
+
 def _held_still(reference: Reference) -> bool:
     """Whether a plan holds a vehicle at a standstill throughout (``remain_stationary``). On a map
     such a car is held, not driven: frenetix lets a car standing in a curve creep (0.1 m/s, 0.3 m

@@ -4,19 +4,13 @@ unless the user's ``drivers`` give a vehicle another driver (the vehicle under t
 
 from __future__ import annotations
 
-from ...planning.plan import Plan
-from ..interface import DriverFactory, Simulation, SimulationLimits
-from ..lockstep import drive_in_lockstep
+from ..lockstep import LockstepSimulator
 from .driver import FrenetixDriver
 
 
-class FrenetixSimulator:
+class FrenetixSimulator(LockstepSimulator):
     name = "frenetix"
-
-    def simulate(
-        self, plan: Plan, limits: SimulationLimits, drivers: DriverFactory | None = None, react=None
-    ) -> Simulation:
-        return drive_in_lockstep(plan, limits, drivers, FrenetixDriver, react)
+    default_driver = FrenetixDriver
 
 
 __all__ = ["FrenetixDriver", "FrenetixSimulator"]

@@ -7,19 +7,13 @@ default. A user's driver (the vehicle under test) drives its vehicle as under fr
 
 from __future__ import annotations
 
-from ...planning.plan import Plan
-from ..interface import DriverFactory, Simulation, SimulationLimits
-from ..lockstep import drive_in_lockstep
+from ..lockstep import LockstepSimulator
 from .driver import KinematicDriver
 
 
-class KinematicSimulator:
+class KinematicSimulator(LockstepSimulator):
     name = "kinematic"
-
-    def simulate(
-        self, plan: Plan, limits: SimulationLimits, drivers: DriverFactory | None = None, react=None
-    ) -> Simulation:
-        return drive_in_lockstep(plan, limits, drivers, KinematicDriver, react)
+    default_driver = KinematicDriver
 
 
 __all__ = ["KinematicDriver", "KinematicSimulator"]
