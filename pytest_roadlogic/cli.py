@@ -34,6 +34,7 @@ from pathlib import Path
 # command imports the stages it uses.
 from .outcomes import CONFORMANT, PASSED
 from .settings import (
+    ARTIFACT_LEVELS,
     BASE,
     OPTIONS_BY_NAME,
     REFINED,
@@ -204,9 +205,6 @@ def main(argv: list[str] | None = None) -> int:
         except OSError:
             pass
         return 141
-
-
-ARTIFACT_LEVELS = ("none", "essential", "all")  # as artifacts.writer.ARTIFACT_LEVELS, without importing it
 
 
 def _artifacts_flag(command: argparse.ArgumentParser) -> None:
@@ -568,10 +566,10 @@ def _run_many(args: argparse.Namespace) -> int:
             return list(instances(staging))
 
     def instances(staging: Path):
-        runner = Runner(_load(args), _run_settings(args), _driver_factory(dict(args.driver), args.file))
-        conformant = 0
         from .progress import ProgressBar
 
+        runner = Runner(_load(args), _run_settings(args), _driver_factory(dict(args.driver), args.file))
+        conformant = 0
         bar = ProgressBar(args.instances)
         for result in runner.base(args.instances):
             done = result.case.instance + 1

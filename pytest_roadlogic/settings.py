@@ -33,6 +33,10 @@ CONTINUOUS_HORIZON = 120  # of the continuous one: two minutes of scenario time
 DEFAULT_PLAN_TIMEOUT = 60.0  # seconds per planning
 DEFAULT_SIM_TIMEOUT = 120.0  # seconds (wall clock) per simulation
 DEFAULT_SIMULATOR = "frenetix"
+# how many artifacts a run writes (``roadlogic run --artifacts``): none; what a replay and a reader
+# of the verdict need (plan, trace, verdict, case); or all of them (with the CommonRoad and
+# OpenSCENARIO files, the plot and the GIF: most of the artifacts' time)
+ARTIFACT_LEVELS = ("none", "essential", "all")
 
 
 class OptionError(ValueError):

@@ -24,18 +24,12 @@ ARTIFACT_NAMES = re.compile(
 )
 
 
-# how many artifacts a run writes (``roadlogic run --artifacts``): none; what a replay and a reader of
-# the verdict need (plan, trace, verdict); or all of them (with the CommonRoad and OpenSCENARIO
-# files, the plot and the GIF). The GIF and the plot are most of the artifacts' time (issue 53).
-ARTIFACT_LEVELS = ("none", "essential", "all")
-ESSENTIAL = ("plan", "trace", "verdict")
-
-
 def write_artifacts(
     outcome: SimulatedInstance, directory: str | Path, animation: bool = True, level: str = "all"
 ) -> dict[str, Path]:
-    """The artifacts of a run at ``level`` (``ARTIFACT_LEVELS``): with ``all``, every one, the GIF
-    (seconds to render) only when ``animation`` is set; with ``essential``, ``ESSENTIAL``."""
+    """The artifacts of a run at ``level`` (``settings.ARTIFACT_LEVELS``): with ``essential``, the
+    plan, the trace and the verdict; with ``all``, every one, the GIF (seconds to render) only when
+    ``animation`` is set."""
     if level == "none":
         return {}
     directory = Path(directory)
@@ -86,12 +80,16 @@ def write_artifacts(
             else {}
         ),
     }
-    if level == "essential":
+
+    def essential() -> dict[str, Path]:
         return {
             "plan": write_text(directory / "plan.json", outcome.plan.to_json()),
             "trace": write_text(directory / "trace.csv", outcome.simulation.trace.to_csv()),
             "verdict": write_text(directory / "verdict.json", json.dumps(verdict, indent=2)),
         }
+
+    if level == "essential":
+        return essential()
     scenario_xosc, road_xodr = openscenario_paths(directory)
     lanes = outcome.simulation.road.lanes
 
@@ -101,15 +99,13 @@ def write_artifacts(
     openscenario = beside(lambda: write_openscenario(outcome.simulation, directory, name))
     try:
         paths = {
-            "plan": write_text(directory / "plan.json", outcome.plan.to_json()),
-            "trace": write_text(directory / "trace.csv", outcome.simulation.trace.to_csv()),
+            **essential(),
             "commonroad": write_commonroad_xml(outcome.simulation, directory / "scenario.xml"),
             "openscenario": scenario_xosc,  # written by the forked process, waited for below
             "opendrive": road_xodr,
             "plot": plot_simulation(
                 outcome.simulation, outcome.verdict, directory / "trajectories.png", title=name, lane_number=lane_number
             ),
-            "verdict": write_text(directory / "verdict.json", json.dumps(verdict, indent=2)),
         }
         if animation:
             paths["animation"] = animate_simulation(

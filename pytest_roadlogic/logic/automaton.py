@@ -116,7 +116,16 @@ class MeanAcceleration(PhaseBound):
 
 
 @dataclass(frozen=True)
-class SpeedGain(PhaseBound):
+class ChangeOverPhase(PhaseBound):
+    """A bound on how much the column changes between the phase's two ends, x(end) - x(start),
+    whatever the phase's length."""
+
+    def value(self, start: float, end: float, seconds: float) -> float:
+        return end - start
+
+
+@dataclass(frozen=True)
+class SpeedGain(ChangeOverPhase):
     """CARLA's ``change_speed(dv)`` modifier on a phase: its runner adds dv to the actor's target
     speed at the phase's start and holds the new one, so the speed gains dv over the phase,
     v(end) - v(start) in low..high (m/s), whatever the phase's length."""
@@ -127,12 +136,9 @@ class SpeedGain(PhaseBound):
     symbol: ClassVar[str] = "gained v"
     unit: ClassVar[str] = "m/s"
 
-    def value(self, start: float, end: float, seconds: float) -> float:
-        return end - start
-
 
 @dataclass(frozen=True)
-class Travelled(PhaseBound):
+class Travelled(ChangeOverPhase):
     """``distance(d)`` on a phase: the actor covers d metres in it, x(end) - x(start) in low..high.
     Unlike a mean acceleration it does not depend on the phase's length: the planner writes one row."""
 
@@ -141,9 +147,6 @@ class Travelled(PhaseBound):
     what: ClassVar[str] = "distance travelled"
     symbol: ClassVar[str] = "travelled"
     unit: ClassVar[str] = "m"
-
-    def value(self, start: float, end: float, seconds: float) -> float:
-        return end - start
 
 
 @dataclass(frozen=True)
