@@ -701,13 +701,16 @@ def _show(result, out: Path, level: str = "all", drivers: dict[str, str] | None 
 
 def _case_file(case, drivers: dict[str, str], path: Path) -> dict[str, Path]:
     """The run's case file at ``path`` ({"case": path}), its scenario named relative to the project's
-    root (a case file names no absolute path); none when the scenario is outside the project."""
+    root (a case file names no absolute path); none outside a project, or when the scenario is
+    outside it: ``roadlogic replay`` reads a case's scenario inside the project only."""
     from dataclasses import replace
 
     from .case import installed_versions
     from .confinement import project_root
 
-    root = project_root() or Path.cwd()
+    root = project_root()
+    if root is None:
+        return {}
     try:
         relative = Path(case.path).resolve().relative_to(root.resolve())
     except ValueError:

@@ -152,3 +152,26 @@ def test_roadlogic_run_instances_writes_each_instance_with_a_progress_bar(tmp_pa
         assert (tmp_path / f"instance-00{index}" / "trace.csv").is_file()
     plans = [(tmp_path / f"instance-00{i}" / "plan.json").read_text() for i in (1, 2)]
     assert plans[0] != plans[1], "each instance is a different plan"
+
+
+def test_a_run_outside_any_project_writes_no_case_file_that_names_a_path_from_the_root(tmp_path):
+    scenario = tmp_path / "overtake.osc"
+    scenario.write_text(OVERTAKE.read_text())
+    result = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "pytest_roadlogic.cli",
+            "run",
+            str(scenario),
+            "--artifacts",
+            "essential",
+            "--out",
+            "out",
+        ],
+        capture_output=True,
+        text=True,
+        cwd=tmp_path,
+    )
+    assert result.returncode == 0, result.stdout + result.stderr
+    assert sorted(p.name for p in (tmp_path / "out").iterdir()) == ["plan.json", "trace.csv", "verdict.json"]
