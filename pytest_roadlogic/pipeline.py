@@ -20,7 +20,7 @@ from .dut import UnderTest
 from .frontend import CheckedScenario, load_file
 from .monitor import Verdict, monitor
 from .oracles import DutReport, judge
-from .planning import NoPlanError, Plan, PlannerSettings, settings_for
+from .planning import Plan, PlannerSettings, settings_for
 from .planning.fallbacks import Guide, planned, tool_limit
 from .sampling import guided, sample_seed
 from .settings import DEFAULT_SIM_TIMEOUT, RunSettings
@@ -162,16 +162,16 @@ def _reactive(plan: Plan, guide: Guide, settings, seed: int, dut: str | None, un
     """The reactive execution of ``plan`` around the vehicle under test ``dut`` (None: the plan is
     driven as it is: no vehicle under test, a replanning period of 0, or an encoding that cannot
     replan from a state, the grid's)."""
-    if dut is None or not under_test.replan_period or getattr(settings, "encoding", "") != "continuous":
+    if dut is None or not under_test.replan_period or not settings.replanning:
         return None
     from .planning.fallbacks import settings_of
     from .reactive import ReactiveExecution, Replanner
 
     planned_with = settings_of(plan, settings)
-    if plan.origin is not None and hasattr(planned_with, "origin_span"):
+    if plan.origin is not None:
         # on a map the scenario stays where the simulation has it: a replan's positions are the
         # plan's, from the same place on the route
-        planned_with = dataclasses.replace(planned_with, origin_span=(plan.origin, plan.origin))
+        planned_with = planned_with.at_origin(plan.origin)
     return ReactiveExecution(Replanner(guide(planned_with), planned_with, seed, dut), plan, under_test.replan_period)
 
 
@@ -190,15 +190,10 @@ def guided_planning(
     as a value the scenario meets (measured before this).
 
     On a map, the settings are the encoding's for the scenario's route (``on_route``); an
-    encoding without that (the grid's) cannot plan on a map, and says so rather than plan a
-    straight road the simulation would then drive on the map."""
+    encoding that cannot plan on a map (the grid's) says so (``CannotPlanOnMap``) rather than plan
+    a straight road the simulation would then drive on the map."""
     if scenario.route is not None:
-        if not hasattr(settings, "on_route"):
-            raise NoPlanError(
-                f"the {getattr(settings, 'encoding', 'chosen')} encoding plans on one straight road: "
-                f"{scenario.route.name} needs the continuous encoding (leave out the encoding option)"
-            )
-        settings = settings.on_route(scenario.route)
+        settings = settings.on_route(scenario.route)  # CannotPlanOnMap from an encoding that cannot
     if not values:
         return (lambda planner_settings: specification), settings, seed
     guides: dict[tuple, SymbolicAutomaton] = {}

@@ -157,3 +157,77 @@ def test_no_import_circle():
     impossible to use alone. The last one (the checker, the constructs and the automaton) was cut
     by the guard algebra's own package (``logic``) and the registries looked up by dialect."""
     assert knots(import_graph()[0]) == []
+
+
+# third-party integration points that are named with an underscore by their owners: os._exit (the
+# documented way out of a process whose threads hang) and the attribute Hypothesis's own pytest
+# integration sets for a database key per item
+FOREIGN_PRIVATE = {"_exit", "_hypothesis_internal_add_digest"}
+# modules that speak only the planner's, the simulation's and the reaction's protocols
+PROTOCOL_ONLY = ("pipeline.py", "planning/__init__.py", "planning/fallbacks.py", "simulation/lockstep.py")
+
+
+def package_sources() -> dict[Path, ast.Module]:
+    package = Path(pytest_roadlogic.__file__).resolve().parent
+    return {
+        path.relative_to(package): ast.parse(path.read_text(encoding="utf-8"))
+        for path in sorted(package.rglob("*.py"))
+        if "generated" not in path.parts
+    }
+
+
+def test_no_module_uses_a_private_attribute_of_an_object_defined_elsewhere():
+    """A private method or field is its module's: another module reaches it only through a protocol."""
+    found = []
+    for path, tree in package_sources().items():
+        own = {
+            node.name
+            for node in ast.walk(tree)
+            if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef))
+        } | {
+            target.attr
+            for node in ast.walk(tree)
+            if isinstance(node, ast.Assign)
+            for target in node.targets
+            if isinstance(target, ast.Attribute)
+        }
+        for node in ast.walk(tree):
+            if not (isinstance(node, ast.Attribute) and node.attr.startswith("_") and not node.attr.startswith("__")):
+                continue
+            owner = node.value
+            if isinstance(owner, ast.Name) and owner.id in ("self", "cls"):
+                continue
+            if isinstance(owner, ast.Call) and isinstance(owner.func, ast.Name) and owner.func.id == "super":
+                continue
+            if node.attr in own or node.attr in FOREIGN_PRIVATE:
+                continue
+            found.append(f"{path}:{node.lineno}: {ast.unparse(node)}")
+    assert found == []
+
+
+def test_no_module_outside_an_encodings_folder_imports_its_internals():
+    """An encoding is its folder: the rest of the tool reaches it through ``planning.encodings``'
+    registry and the protocol, never through its modules (``encodings/<name>/planner.py`` ...)."""
+    found = []
+    for path, tree in package_sources().items():
+        if path.parts[:2] == ("planning", "encodings"):
+            continue
+        for node in ast.walk(tree):
+            if isinstance(node, ast.ImportFrom) and node.module and ".encodings." in f".{node.module}":
+                name = node.module.split("encodings.", 1)[1]
+                if "." in name:
+                    found.append(f"{path}:{node.lineno}: from {node.module}")
+    assert found == []
+
+
+def test_the_pipeline_fallbacks_and_lockstep_probe_no_object_for_a_capability():
+    """Capabilities are declared in the protocols (``planning.protocol``, ``simulation.driver``,
+    ``simulation.interface``) and every implementation answers them: no ``hasattr``/``getattr``."""
+    found = [
+        f"{path}:{node.lineno}: {ast.unparse(node)}"
+        for path, tree in package_sources().items()
+        if path.as_posix() in PROTOCOL_ONLY
+        for node in ast.walk(tree)
+        if isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and node.func.id in ("hasattr", "getattr")
+    ]
+    assert found == []

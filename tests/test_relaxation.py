@@ -20,7 +20,7 @@ from pytest_roadlogic.settings import RunSettings
 from tests.conftest import ROOT
 
 CATCH_UP = ROOT / "scenarios" / "realistic" / "catch_up_band.osc"
-FASTEST = 100.0  # m/s: the relaxed fallback's top speed (planning.fallbacks.RELAXED_LIMITS)
+FASTEST = 100.0  # m/s: the relaxed fallback's top speed (ContinuousSettings.relaxed())
 
 
 def guided(path, values):

@@ -34,7 +34,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..logic.dimensions import CAR_LENGTH, CAR_WIDTH
-from ..simulation.driver import Trajectory, VehicleState
+from ..simulation.driver import DriverBase, Trajectory, VehicleState
 from ..simulation.reference import Reference
 from ..simulation.road import Road
 
@@ -53,7 +53,7 @@ class IdmParameters:
     coolness: float = 0.99  # (c) how far the ACC model trusts the constant-acceleration heuristic
 
 
-class AdaptiveCruiseControl:
+class AdaptiveCruiseControl(DriverBase):
     """Adaptive cruise control with lane keeping, a reference vehicle under test (see the module)."""
 
     idm = IdmParameters()

@@ -14,6 +14,8 @@ from .encodings import UnknownEncoding, available, encoding, of_settings
 from .encodings.continuous import ContinuousSettings
 from .encodings.grid import GridSettings
 from .errors import (
+    CannotPlanOnMap,
+    CannotReplan,
     HorizonTooShort,
     LimitsBind,
     MarginsBind,
@@ -23,7 +25,7 @@ from .errors import (
     UnsatisfiableScenario,
 )
 from .plan import Plan, PlanState
-from .protocol import Encoding, Planner, PlannerSettings
+from .protocol import Encoding, Limit, Past, Planner, PlannerSettings
 
 
 def settings_for(run: RunSettings, explain_unsatisfiable: bool = True) -> PlannerSettings:
@@ -37,9 +39,7 @@ def settings_for(run: RunSettings, explain_unsatisfiable: bool = True) -> Planne
 
     if run.max_horizon:
         settings = dataclasses.replace(settings, max_horizon=run.max_horizon)
-    if hasattr(settings, "road_speed"):
-        settings = dataclasses.replace(settings, road_speed=run.road_speed)
-    return settings
+    return settings.with_road_speed(run.road_speed)
 
 
 def planner_for(automaton, settings: PlannerSettings, seed: int = 0) -> Planner:
@@ -49,14 +49,8 @@ def planner_for(automaton, settings: PlannerSettings, seed: int = 0) -> Planner:
 
 def __getattr__(name: str):
     # the planners by class, for Python users and tests; each imports clingo
-    if name == "GridPlanner":
-        from .encodings.grid.planner import GridPlanner
-
-        return GridPlanner
-    if name == "ContinuousPlanner":
-        from .encodings.continuous.planner import ContinuousPlanner
-
-        return ContinuousPlanner
+    if name in ("GridPlanner", "ContinuousPlanner"):
+        return encoding(name.removesuffix("Planner").lower()).planner()
     if name == "check_satisfiable":
         from .diagnosis import check_satisfiable
 
@@ -65,9 +59,13 @@ def __getattr__(name: str):
 
 
 __all__ = [
+    "CannotPlanOnMap",
+    "CannotReplan",
     "ContinuousPlanner",
     "ContinuousSettings",
     "Encoding",
+    "Limit",
+    "Past",
     "GridPlanner",
     "GridSettings",
     "HorizonTooShort",

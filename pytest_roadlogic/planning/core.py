@@ -73,8 +73,8 @@ def resident_bytes() -> int:
 class IncrementalPlanner:
     """Plans for one automaton with one encoding; ``plans()`` yields them lazily (``planning.protocol.Planner``).
 
-    A subclass gives ``_instance`` (its instance writer), ``_start_preferences`` (a random start's
-    draws as rules), ``_control`` (a control with its background and theory), ``_widened`` (wider
+    A subclass gives ``instance_for`` (its instance writer), ``_start_preferences`` (a random start's
+    draws as rules), ``control_for`` (a control with its background and theory), ``widened`` (wider
     settings for a second try, or None) and ``plans``."""
 
     # whether the search under way keeps every vehicle to what its own constructs ask
@@ -93,7 +93,7 @@ class IncrementalPlanner:
         self.automaton = automaton
         self.settings = settings
         self.seed = seed
-        self.instance = self._instance(self.settings)
+        self.instance = self.instance_for(self.settings)
         self.stats: dict[str, float] = {"ground_s": 0.0, "solve_s": 0.0}
         # each control's theory propagator (weak: explaining a failure makes many controls)
         self._theories: weakref.WeakKeyDictionary[clingo.Control, object] = weakref.WeakKeyDictionary()
@@ -107,7 +107,7 @@ class IncrementalPlanner:
             self.preferences = self._start_preferences(draw)
             self.stretch = draw.random()  # the fraction of the steps left up to max_horizon
 
-    def _instance(self, settings, relaxable: bool = False) -> str:
+    def instance_for(self, settings, relaxable: bool = False) -> str:
         """This encoding's instance of the scenario (facts and constants, ``#program base``); with ``relaxable``, every
         bound and duration switched off by a ``relaxed(K)`` external (``facts.relaxable_constraints``)."""
         raise NotImplementedError
@@ -116,11 +116,11 @@ class IncrementalPlanner:
         """A random start's draws from ``draw``, as this encoding's rules."""
         raise NotImplementedError
 
-    def _control(self, instance: str) -> clingo.Control:
+    def control_for(self, instance: str) -> clingo.Control:
         """A control with this encoding's background, theory and the instance, nothing grounded."""
         raise NotImplementedError
 
-    def _widened(self):
+    def widened(self):
         """Settings for a second try when the first finds no plan (a wider start), or None."""
         return None
 
@@ -132,9 +132,11 @@ class IncrementalPlanner:
         """A smallest group of the scenario's constraints that no plan meets (``diagnosis``)."""
         return diagnosis.smallest_conflict(self, deadline)
 
-    def _explain(self, error: NoPlanError, deadline: float, window: DurationWindow | None = None) -> None:
-        """Raise the reason there is no plan (``diagnosis.raise_reason``)."""
-        diagnosis.raise_reason(self, error, deadline, window)
+    def explain_failure(self, error: NoPlanError, deadline: float) -> None:
+        """Raise the reason no plan exists, natural or not (``diagnosis.raise_reason``): the
+        diagnosis never holds vehicles to what they are asked."""
+        self.least_action = False
+        diagnosis.raise_reason(self, error, deadline)
 
     def instance_program(self) -> str:
         return "#program base.\n" + self.instance
@@ -195,9 +197,9 @@ class IncrementalPlanner:
 
     def _waiter(self, deadline: float):
         """A window's wait: for a solve, until ``deadline``."""
-        return lambda handle, message: self._wait(handle, deadline, f"{message} ({self.settings.time_limit:g} s)")
+        return lambda handle, message: self.wait(handle, deadline, f"{message} ({self.settings.time_limit:g} s)")
 
-    def _advance(self, control: clingo.Control, horizon: int) -> None:
+    def advance(self, control: clingo.Control, horizon: int) -> None:
         """Ground step ``horizon`` (with the base program at 0) and ask for acceptance there only."""
         t = clingo.Number(horizon)
         if horizon == 0:
@@ -208,7 +210,7 @@ class IncrementalPlanner:
             control.assign_external(clingo.Function("query", [clingo.Number(horizon - 1)]), False)
         control.assign_external(clingo.Function("query", [t]), True)
 
-    def _advance_to(self, control: clingo.Control, horizon: int, grounded: int = -1) -> None:
+    def advance_to(self, control: clingo.Control, horizon: int, grounded: int = -1) -> None:
         """Ground the steps after ``grounded`` (-1: none yet, the base program too) up to
         ``horizon`` in one call and ask for acceptance at ``horizon`` only (measured on
         five_vehicle_minute: 45 steps in one call 0.36 s, one call per step 2.5 s)."""
@@ -257,7 +259,7 @@ class IncrementalPlanner:
         return self._deadline
 
     @staticmethod
-    def _wait(handle: clingo.SolveHandle, deadline: float, message: str) -> None:
+    def wait(handle: clingo.SolveHandle, deadline: float, message: str) -> None:
         """Wait for a solve until the deadline; past it, cancel and raise ``PlanningTimeout``."""
         remaining = deadline - time.monotonic()
         if remaining <= 0 or not handle.wait(remaining):
@@ -303,7 +305,7 @@ class IncrementalPlanner:
         self._time_to_prepare(control, deadline, message)
         unproven = False  # a model found whose cost a better one may still beat
         with control.solve(yield_=True, async_=True) as handle:
-            self._wait(handle, deadline, message)
+            self.wait(handle, deadline, message)
             model = handle.model()
             while model is not None:
                 theory.on_model(model)
@@ -313,7 +315,7 @@ class IncrementalPlanner:
                 # the least unasked changes (least_change): each next model is better, the last
                 # one found is proved best once the search is exhausted
                 handle.resume()
-                self._wait(handle, deadline, message)
+                self.wait(handle, deadline, message)
                 model = handle.model()
             else:
                 unproven = answer is not None and not handle.get().exhausted

@@ -82,8 +82,8 @@ def smallest_conflict(planner, deadline: float | None = None) -> tuple | None:
     if not constraints:
         return None
     deadline = deadline if deadline is not None else time.monotonic() + planner.settings.time_limit
-    settings = planner._widened() or planner.settings
-    program = planner._instance(settings, relaxable=True)
+    settings = planner.widened() or planner.settings
+    program = planner.instance_for(settings, relaxable=True)
     try:
         if _failing(planner, program, settings, [], len(constraints), deadline) is not None:
             return None  # no plan even with every constraint relaxed
@@ -125,18 +125,18 @@ def _failing(planner, program: str, settings, kept: list[int], count: int, deadl
         }
         return sorted(k for k in kept if k in timings)
     last = window.last_horizon(settings.max_horizon)
-    control = planner._control(program)
+    control = planner.control_for(program)
     union: set[int] = set()
     for horizon in range(earliest, last + 1):
         if horizon == earliest:
-            planner._advance_to(control, horizon)
+            planner.advance_to(control, horizon)
             for atom in relaxed:
                 control.assign_external(atom, None)  # free: what is not kept may be relaxed
             literal = {control.symbolic_atoms[atom].literal: k for k, atom in enumerate(relaxed)}
         else:
-            planner._advance(control, horizon)
+            planner.advance(control, horizon)
         with control.solve(assumptions=[(relaxed[k], False) for k in kept], async_=True) as handle:
-            planner._wait(handle, deadline, "no time left to explain why there is no plan")
+            planner.wait(handle, deadline, "no time left to explain why there is no plan")
             if handle.get().satisfiable:
                 return None
             union.update(literal[abs(lit)] for lit in handle.core() if abs(lit) in literal)

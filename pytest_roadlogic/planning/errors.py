@@ -13,6 +13,14 @@ class NoPlanError(Exception):
     """No plan exists up to the horizon limit, or none was found within the time limit."""
 
 
+class CannotPlanOnMap(NoPlanError):
+    """An encoding that plans one straight road only was asked to plan on a map's route."""
+
+
+class CannotReplan(NoPlanError):
+    """An encoding that does not replan from an observed state was asked to."""
+
+
 class PlanningTimeout(NoPlanError):
     """The time limit ran out before a plan was found (a plan may still exist)."""
 

@@ -34,44 +34,15 @@ def _planner_for(automaton, settings, seed):
     return planner_for(automaton, settings, seed)
 
 
-# the vehicle limits a plan is tried without, when none exists within them: (field, relaxed value,
-# unit). The relaxed values are beyond any car's, so a plan that needs them names the limit. The
-# gap between two cars in one lane is the planner's too: 8 m between centres is 3.5 m between
-# bumpers, and a scenario may ask for less (cut_out_obstacle stops the ego 5-15 m behind a wreck,
-# which had been reported as a value no concrete scenario has); relaxed, 0.5 m between bumpers
-RELAXED_LIMITS = (
-    ("max_jerk", 50.0, "m/s^3"),
-    ("min_acceleration", -20.0, "m/s^2"),
-    ("max_acceleration", 12.0, "m/s^2"),
-    ("max_speed", 100.0, "m/s"),
-    ("closing_time", 0.0, "s"),
-    ("min_gap", 5.0, "m"),
-)
-# of those, a real car's: a plan that needs one of them relaxed asks more than a car can do, so
-# its values have no concrete scenario (the scenario's, not the tool's; follow_then_overtake's
-# 19 s pass ending 15 m ahead after starting 39 m behind needs a 27 m drop back in 3 s). The others
-# (the gap between cars) are how closely the tool dares to plan cars: settings of the tool
-CAR_LIMITS = frozenset({"max_jerk", "min_acceleration", "max_acceleration", "max_speed"})
-ALL_LIMITS = frozenset(name for name, _, _ in RELAXED_LIMITS)
-SPACING = ALL_LIMITS - CAR_LIMITS
+def relaxed_names(settings, names: frozenset[str] | None = None) -> list[str]:
+    """Each of the settings' relaxable limits named (all by default) with its value, what it was
+    relaxed to, and why it had its value when the settings say (a map's curve bounding the top speed)."""
+    return [limit.describe() for limit in settings.limits() if names is None or limit.name in names]
 
 
-def with_limits_relaxed(settings, names=None):
-    """``settings`` with the ``RELAXED_LIMITS`` named (all by default) relaxed."""
-    return dataclasses.replace(
-        settings, **{name: value for name, value, _ in RELAXED_LIMITS if names is None or name in names}
-    )
-
-
-def relaxed_names(settings, names=None) -> list[str]:
-    """Each relaxed limit with its value and what it was relaxed to, and why it was that value
-    when the settings say (``limit_reasons``: a map's curve bounding the top speed)."""
-    reasons = dict(getattr(settings, "limit_reasons", ()))
-    return [
-        f"{name} {getattr(settings, name):g} {unit}{f' ({reasons[name]})' if name in reasons else ''} relaxed to {value:g}"
-        for name, value, unit in RELAXED_LIMITS
-        if names is None or name in names
-    ]
+def car_limits(settings) -> frozenset[str]:
+    """The relaxable limits that are a real car's (``Limit.of_a_car``): a plan beyond them has no concrete scenario."""
+    return frozenset(limit.name for limit in settings.limits() if limit.of_a_car)
 
 
 def tool_limit(plan: Plan, explanation: str, guide: Guide, settings, seed: int):
@@ -89,7 +60,7 @@ def tool_limit(plan: Plan, explanation: str, guide: Guide, settings, seed: int):
     if plan.stats.get("relaxed_limits"):
         names = binding_limits(guide, settings, seed)
         return LimitsBind(
-            relaxed_names(settings, names), explanation=explanation, beyond_a_car=bool(names & CAR_LIMITS)
+            relaxed_names(settings, names), explanation=explanation, beyond_a_car=bool(names & car_limits(settings))
         )
     return None
 
@@ -105,7 +76,7 @@ def fallback_needed(plan: Plan, guide: Guide, settings, seed: int) -> str:
         names = binding_limits(guide, settings, seed)
         whose = (
             "beyond a real car's: no car can drive this scenario"
-            if names & CAR_LIMITS
+            if names & car_limits(settings)
             else "the tool's spacing between cars, not a car's limit"
         )
         return f"no plan exists within the planner's vehicle limits: this one needs {' and '.join(relaxed_names(settings, names))} ({whose})"
@@ -120,15 +91,17 @@ def binding_limits(guide: Guide, settings, seed: int) -> frozenset[str]:
 
     def plannable(names) -> bool:
         try:
-            relaxed = with_limits_relaxed(settings, names)
+            relaxed = settings.relaxed(names)
             return next(_planner_for(guide(relaxed), relaxed, seed).plans(limit=1), None) is not None
         except NoPlanError:
             return False
 
-    for names in (*(frozenset({name}) for name, _, _ in RELAXED_LIMITS), CAR_LIMITS, SPACING):
+    every = frozenset(limit.name for limit in settings.limits())
+    cars = car_limits(settings)
+    for names in (*(frozenset({limit.name}) for limit in settings.limits()), cars, every - cars):
         if plannable(names):
             return names
-    return ALL_LIMITS
+    return every
 
 
 def fallback_settings(settings, beyond_limits: bool = True) -> list[tuple[object, str]]:
@@ -140,17 +113,13 @@ def fallback_settings(settings, beyond_limits: bool = True) -> list[tuple[object
     if thinned is None:
         return []
     quiet = dataclasses.replace(thinned, explain_unsatisfiable=False)
-    # half the planning step: durations between whole seconds (a 0.5 s wait, a 3.6 s brake)
-    finer = dataclasses.replace(
-        quiet, dt=quiet.dt / 2, max_horizon=quiet.max_horizon * 2, lane_change_gap=quiet.lane_change_gap * 2
-    )
     # the spacing first, then a car's limits too: a plan within a car's limits is one a car can
-    # drive (cut_out_obstacle's stop 5 m behind its wreck, planned with every limit relaxed,
-    # braked with a jerk of 4 m/s^3 and its simulated ego hit the wreck)
-    relaxed = [(with_limits_relaxed(quiet, SPACING), "relaxed_limits")] + (
-        [(with_limits_relaxed(quiet), "relaxed_limits")] if beyond_limits else []
+    # drive (a stop planned with every limit relaxed may brake harder than a car does)
+    spacing = frozenset(limit.name for limit in quiet.limits()) - car_limits(quiet)
+    relaxed = [(quiet.relaxed(spacing), "relaxed_limits")] + (
+        [(quiet.relaxed(), "relaxed_limits")] if beyond_limits else []
     )
-    return [(quiet, "thinned_margins"), (finer, "finer_step"), *relaxed]
+    return [(quiet, "thinned_margins"), (quiet.finer(), "finer_step"), *relaxed]
 
 
 def settings_of(plan: Plan, settings):
@@ -167,8 +136,8 @@ def planned(
     the planner's own; or, when it has none at all, those of a planner that keeps
     ``settings.fallback_margins`` of its margins (``stats["thinned_margins"]``), or else of one that
     also plans in half the step (``stats["finer_step"]``), or else of one that drives beyond the
-    vehicle limits (``RELAXED_LIMITS``, ``stats["relaxed_limits"]``; without ``beyond_limits`` only
-    the spacing between cars is relaxed, never ``CAR_LIMITS``). Each planner solves the sample
+    vehicle limits (``settings.limits()``, ``stats["relaxed_limits"]``; without ``beyond_limits`` only
+    the spacing between cars is relaxed, never a car's limits). Each planner solves the sample
     narrowed with its own margins (``guide``). Without ``fallbacks``, the planner's own plans only.
 
     Why: the margins and the limits are the planner's guesses at what the vehicles can track, not
@@ -195,9 +164,7 @@ def planned(
         if (yield from _fallback_plans(guide, settings, seed, limit, beyond_limits, deadline)):
             return
         if settings.explain_unsatisfiable:
-            explained = _planner_for(guide(settings), settings, seed)
-            explained.least_action = False  # the reason holds for any plan, natural or not
-            explained._explain(error, deadline)
+            _planner_for(guide(settings), settings, seed).explain_failure(error, deadline)
         raise error from None
     while plan is not None:
         yield plan
@@ -214,8 +181,8 @@ def _refuse_what_the_relaxation_proves(guide: Guide, settings, beyond_limits: bo
 
     widest = settings.thinned() or settings
     automaton = guide(widest)
-    fastest = dict((name, value) for name, value, _ in RELAXED_LIMITS)["max_speed"] if beyond_limits else None
-    conflict = provably_unplannable(automaton, max(fastest or 0.0, settings.max_speed))
+    fastest = settings.relaxed().max_speed if beyond_limits else settings.max_speed
+    conflict = provably_unplannable(automaton, max(fastest, settings.max_speed))
     if conflict:
         raise UnsatisfiableScenario(
             "no plan exists at these values (its linear relaxation has no solution)\n"

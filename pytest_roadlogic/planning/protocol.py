@@ -3,7 +3,11 @@
 An encoding is a folder (``encodings/<name>/``) with its settings, its instance writer, its ``.lp``
 files (``asp/<name>/``), its planner and its plan decoder, registered under its name
 (``encodings.available()``; ``--roadlogic-encoding NAME``, ini ``roadlogic_encoding``, ``--encoding``
-on the CLI). The pipeline, the fallbacks, the sampler and the reports speak only these protocols.
+on the CLI). The pipeline, the fallbacks, the reactive execution, the sampler and the reports speak
+only these protocols. Every capability is declared here and every encoding answers it, "cannot"
+included: planning on a map's route (``on_route``), the fallback chain (``thinned``, ``finer``,
+``limits``, ``relaxed``), replanning from an observed state (``replanning``, ``Planner.replan``) and
+the diagnosis (``Planner.explain_failure``).
 """
 
 from __future__ import annotations
@@ -13,13 +17,49 @@ from dataclasses import dataclass
 from typing import Any, ClassVar, Protocol
 
 from ..logic.automaton import SymbolicAutomaton
-from .plan import Plan
+from .errors import CannotPlanOnMap, CannotReplan  # noqa: F401 (the protocol's answers of "cannot")
+from .plan import Plan, PlanState
+
+
+@dataclass(frozen=True)
+class Limit:
+    """One vehicle limit a fallback planner may relax: its field, its value, the value it is relaxed
+    to, its unit, whether it is a real car's (a plan beyond it has no concrete scenario) or the
+    tool's spacing between cars, and why it has its value when that is not a car's own."""
+
+    name: str
+    value: float
+    relaxed: float
+    unit: str
+    of_a_car: bool
+    reason: str = ""
+
+    def describe(self) -> str:
+        why = f" ({self.reason})" if self.reason else ""
+        return f"{self.name} {self.value:g} {self.unit}{why} relaxed to {self.relaxed:g}"
+
+
+@dataclass(frozen=True)
+class Past:
+    """What a replan starts from: the planning step ``now``, every vehicle's ``observed`` state
+    there, the run so far (``seen``: every vehicle's state at every step before; None: the run the
+    driven plan took, its ``ran`` transitions (transition id, step)), the vehicle under test
+    ``self_driven`` and whether it is ``predicted`` (holds its observed speed and lane) or planned
+    as any car could drive."""
+
+    now: int
+    observed: dict[str, PlanState]
+    seen: dict[int, dict[str, PlanState]] | None
+    ran: tuple[tuple[int, int], ...]
+    self_driven: str
+    predicted: bool
 
 
 class PlannerSettings(Protocol):
     """An encoding's settings: plain, frozen data (``dataclasses.replace`` makes variants)."""
 
     encoding: ClassVar[str]  # the name the encoding is registered under
+    replanning: ClassVar[bool]  # whether its planner replans from an observed state (Planner.replan)
     dt: float  # seconds per planning step
     max_horizon: int  # steps
     time_limit: float  # seconds for one planning
@@ -36,8 +76,42 @@ class PlannerSettings(Protocol):
         """How far inside a range's edges the plan keeps, per physical dimension."""
         ...
 
+    max_speed: float  # m/s
+
     def thinned(self) -> PlannerSettings | None:
-        """The settings of a second search with thinner margins, or None when there is none."""
+        """The settings of a second search with thinner margins, or None when there is none (then
+        there is no fallback search at all)."""
+        ...
+
+    def finer(self) -> PlannerSettings:
+        """These settings in half the planning step (a fallback: durations between whole steps)."""
+        ...
+
+    def limits(self) -> tuple[Limit, ...]:
+        """The vehicle limits a fallback may relax, in the order a diagnosis tries them alone."""
+        ...
+
+    def relaxed(self, names: frozenset[str] | None = None) -> PlannerSettings:
+        """These settings with the ``limits`` named (all by default) at their relaxed values."""
+        ...
+
+    def describe_margins(self) -> str:
+        """The margins, with their units, for messages that blame them."""
+        ...
+
+    def on_route(self, route) -> PlannerSettings:
+        """These settings for a scenario on a map's ``route`` (``roads.Route``); ``CannotPlanOnMap``
+        from an encoding that plans one straight road only."""
+        ...
+
+    def at_origin(self, origin: float) -> PlannerSettings:
+        """These settings with the plan's position 0 pinned at ``origin`` metres along the route
+        (a replan stays where the simulation has the scenario); themselves off a map."""
+        ...
+
+    def with_road_speed(self, band: tuple[float, float]) -> PlannerSettings:
+        """These settings with the start speeds (m/s) a vehicle the scenario names none for is
+        preferred to have; themselves for an encoding without such a preference."""
         ...
 
     def summary(self, lanes: int) -> str:
@@ -67,6 +141,17 @@ class Planner(Protocol):
 
     def explain(self, deadline: float | None = None) -> tuple | None:
         """A smallest group of the scenario's constraints that no plan meets, or None."""
+        ...
+
+    def explain_failure(self, error: Exception, deadline: float) -> None:
+        """Raise the reason no plan exists, natural or not (``diagnosis.raise_reason``): a horizon
+        limit that binds, the smallest group of constraints that clash, else ``error``."""
+        ...
+
+    def replan(self, past: Past, shortest: int) -> Plan | None:
+        """The first plan, at least ``shortest`` steps long, that goes on from ``past``; None when
+        none does; ``NoPlanError`` saying why. ``CannotReplan`` from an encoding whose settings
+        say ``replanning = False``."""
         ...
 
 

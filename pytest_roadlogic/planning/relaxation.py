@@ -197,7 +197,7 @@ def _solvable(count: int, lows: dict[int, float], highs: dict[int, float], rows)
     import highspy
     import numpy as np
 
-    from .encodings.continuous.linear import quiet_highs
+    from .highs import quiet_highs
 
     solver = quiet_highs()
     lower = np.array([lows.get(k, -math.inf) for k in range(count)], dtype=float)

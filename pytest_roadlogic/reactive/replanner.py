@@ -4,7 +4,8 @@ A replan pins every vehicle's state at the observed step and plans the steps aft
 before are the past, which no vehicle limit or kinematics binds (``asp/continuous/replan.lp``).
 The run of the automaton so far is the monitor's: any run through the states the simulation had
 at the past steps (the planner finds it, through the same guards); when there is none at the
-steps (a guard that held only between two of them), the run the plan being driven took. The
+steps (a guard that held only between two of them), the run the plan being driven took. How the
+past is written for a planner is its encoding's (``Planner.replan``, ``planning.protocol.Past``). The
 vehicle under test is not planned but predicted: it holds its observed speed and lane; when no
 plan exists so, it is planned as any car could drive, and when none exists either, the scenario
 cannot go on from here: the replan says so.
@@ -16,26 +17,12 @@ import dataclasses
 import time
 from dataclasses import dataclass
 
-from ..planning.encodings.continuous.instance import number
-from ..planning.facts import atom
 from ..planning.plan import Plan, PlanState
+from ..planning.protocol import Past
+from ..simulation.interface import Replan
 
 # seconds one replan may take: a replan that takes longer is no reaction
 REPLAN_TIME_LIMIT = 5.0
-
-
-@dataclass(frozen=True)
-class Replan:
-    """One replanning: when (the time of the observation), how long it took, the plan found (None:
-    none), and how: the vehicle under test predicted at its speed or planned as any car, the run
-    so far the monitor's through what was seen or the old plan's; why none."""
-
-    time: float
-    seconds: float
-    plan: Plan | None
-    predicted: bool = True
-    why: str = ""
-    seen: bool = True
 
 
 @dataclass(frozen=True)
@@ -106,10 +93,16 @@ class Replanner:
             if (mode.seen and not complete) or mode in failed:
                 continue
             planner = planner_for(self.automaton, self.settings, self.seed)
-            planner.instance += "\n" + self.facts(plan, step, observed, seen if mode.seen else None, mode.predicted)
-            planner.shortest = max(step + 1, plan.horizon) if mode.full_length else step + 1
+            past = Past(
+                step,
+                observed,
+                seen if mode.seen else None,
+                tuple((transition, k) for k, transition in plan.transitions if k < step),
+                self.dut,
+                mode.predicted,
+            )
             try:
-                found = next(planner.plans(limit=1), None)
+                found = planner.replan(past, max(step + 1, plan.horizon) if mode.full_length else step + 1)
             except NoPlanError as error:
                 why = self.why[step] = str(error)
                 failed.add(mode)
@@ -126,31 +119,3 @@ class Replanner:
             f"from the state at t={at:g} s the scenario cannot go on, even with {self.dut} driving as any car could: {why}",
             seen=False,
         )
-
-    def facts(
-        self,
-        plan: Plan,
-        step: int,
-        observed: dict[str, PlanState],
-        seen: dict[int, dict[str, PlanState]] | None,
-        predicted: bool,
-    ) -> str:
-        """The replan's facts (``asp/continuous/replan.lp``): the past as ``seen`` (None: as ``plan`` ran)."""
-        lines = [f"now({step})."]
-        if seen is None:
-            lines.append("kept_run.")
-            lines += [f"ran({transition},{at})." for at, transition in plan.transitions if at < step]
-        else:
-            for k in range(step):
-                for vehicle, state in seen[k].items():
-                    lines.append(f"seen({atom(vehicle)},{k},{_state(state)}).")
-        for vehicle, state in observed.items():
-            lines.append(f"observed({atom(vehicle)},{_state(state)}).")
-        lines.append(f"self_driven({atom(self.dut)}).")
-        if predicted:
-            lines.append(f"predicted({atom(self.dut)}).")
-        return "\n".join(lines)
-
-
-def _state(state: PlanState) -> str:
-    return f"{number(state.position)},{number(max(state.speed, 0.0))},{state.lane}"

@@ -10,10 +10,13 @@ from importlib import import_module
 
 _HOMES = {
     "Driver": "driver",
+    "DriverBase": "driver",
     "Trajectory": "driver",
     "VehicleState": "driver",
     "DriverFactory": "interface",
     "GoalRecord": "interface",
+    "Reaction": "interface",
+    "Replan": "interface",
     "Simulation": "interface",
     "SimulationLimits": "interface",
     "SimulationTimeout": "interface",

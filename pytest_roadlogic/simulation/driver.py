@@ -62,7 +62,11 @@ class Trajectory:
 
 
 class Driver(Protocol):
-    """The interface every driver implements (see the README for a custom driver)."""
+    """What the lockstep loop calls of a driver (see the README for a custom driver). A driver
+    derived from ``DriverBase`` answers ``retarget`` and ``fallbacks`` by default; one that is not
+    is completed so (``complete``)."""
+
+    fallbacks: int  # steps it drove without a trajectory of its own (a fallback), for the report
 
     def start(self, vehicle: str, reference: Reference, road: Road, dt: float) -> None:
         """Called once before the simulation, with the vehicle's reference and the road."""
@@ -70,8 +74,45 @@ class Driver(Protocol):
     def plan(self, time: float, state: VehicleState, others: dict[str, Trajectory]) -> Trajectory:
         """Called every time step; returns a trajectory starting at ``state``."""
 
+    def retarget(self, vehicle: str, reference: Reference, road: Road, dt: float) -> None:
+        """Follow ``reference`` from now on (a replan of the reactive execution)."""
 
-class StationaryDriver:
+
+class DriverBase:
+    """A driver's defaults: a replan starts it again on the new reference, and it never falls back."""
+
+    fallbacks: int = 0
+
+    def start(self, vehicle: str, reference: Reference, road: Road, dt: float) -> None:
+        raise NotImplementedError
+
+    def plan(self, time: float, state: VehicleState, others: dict[str, Trajectory]) -> Trajectory:
+        raise NotImplementedError
+
+    def retarget(self, vehicle: str, reference: Reference, road: Road, dt: float) -> None:
+        self.start(vehicle, reference, road, dt)
+
+
+class _Completed(DriverBase):
+    """A user's driver with only ``start`` and ``plan``, given ``DriverBase``'s answers for the rest."""
+
+    def __init__(self, driver) -> None:
+        self.driver = driver
+
+    def start(self, vehicle: str, reference: Reference, road: Road, dt: float) -> None:
+        self.driver.start(vehicle, reference, road, dt)
+
+    def plan(self, time: float, state: VehicleState, others: dict[str, Trajectory]) -> Trajectory:
+        return self.driver.plan(time, state, others)
+
+
+def complete(driver) -> Driver:
+    """``driver`` as the lockstep loop calls it: itself when it derives from ``DriverBase``, else
+    its ``start`` and ``plan`` with ``DriverBase``'s ``retarget`` and ``fallbacks``."""
+    return driver if isinstance(driver, DriverBase) else _Completed(driver)
+
+
+class StationaryDriver(DriverBase):
     """Holds a stationary object where it stands: the plan's obstacles are not driven."""
 
     def start(self, vehicle: str, reference: Reference, road: Road, dt: float) -> None:

@@ -16,7 +16,7 @@ from dataclasses import dataclass, field
 from typing import Protocol, runtime_checkable
 
 from ..planning.plan import Plan
-from .driver import Driver
+from .driver import Driver, VehicleState
 from .reference import Reference, Waypoint
 from .road import Road
 from .trace import Trace
@@ -31,6 +31,32 @@ class SimulationLimits:
 
     dt: float = 0.1
     time_limit: float | None = None
+
+
+@dataclass(frozen=True)
+class Replan:
+    """One replanning: when (the time of the observation), how long it took, the plan found (None:
+    none), and how: the vehicle under test predicted at its speed or planned as any car, the run
+    so far the monitor's through what was seen or the old plan's; why none."""
+
+    time: float
+    seconds: float
+    plan: Plan | None
+    predicted: bool = True
+    why: str = ""
+    seen: bool = True
+
+
+class Reaction(Protocol):
+    """The lockstep loop's ``react`` (reactive execution, ``pytest_roadlogic.reactive``): asked at
+    every step, before the drivers plan, for new references of some vehicles from then on; it keeps
+    the ``Replan`` of each time it replanned, for the ``Simulation``."""
+
+    replans: list[Replan]
+
+    def __call__(
+        self, time: float, states: dict[str, VehicleState], road: Road, driven: dict[str, Reference]
+    ) -> dict[str, Reference] | None: ...
 
 
 @dataclass(frozen=True)
@@ -52,11 +78,7 @@ class Simulation:
     fallbacks: dict[str, int] = field(default_factory=dict)
     stationary: tuple[str, ...] = ()  # standing obstacles, not driven
     goals: dict[str, list[GoalRecord]] = field(default_factory=dict)  # per driven vehicle, in order
-    # the replans of a reactive execution (reactive.Replan), in order; none for a scripted run
-    replans: list = field(default_factory=list)
-
-    def missed_goals(self) -> list[tuple[str, GoalRecord]]:
-        return [(v, g) for v, records in self.goals.items() for g in records if g.reached_at is None]
+    replans: list[Replan] = field(default_factory=list)  # a reactive execution's, in order; none for a scripted run
 
 
 class SimulationTimeout(RuntimeError):

@@ -16,9 +16,9 @@ from collections.abc import Callable
 import numpy as np
 
 from ..planning.plan import Plan
-from .driver import Driver, StationaryDriver, Trajectory, VehicleState
+from .driver import Driver, StationaryDriver, Trajectory, VehicleState, complete
 from .geometry import boxes_overlap, corners
-from .interface import DriverFactory, GoalRecord, Simulation, SimulationLimits, SimulationTimeout
+from .interface import DriverFactory, GoalRecord, Reaction, Simulation, SimulationLimits, SimulationTimeout
 from .reference import TAIL, Reference, Waypoint, references
 from .road import Road
 from .trace import Incident, Trace
@@ -56,8 +56,117 @@ def _road_around(refs: dict[str, Reference], lanes: int, beyond: float = 60.0) -
     return Road(lanes, x_start=math.floor(start - 30.0), x_end=math.ceil(float(end) + beyond))
 
 
-# a reaction to the vehicles' states at a time: new references for some vehicles, from then on
-React = Callable[[float, dict[str, VehicleState], Road, dict[str, Reference]], "dict[str, Reference] | None"]
+class _Lockstep:
+    """One run of the loop: ``__init__`` sets the drivers and the road up, ``step`` drives every
+    vehicle one step on (after the reaction, if any), ``record`` writes the states at a step into
+    the trace's columns, ``simulation`` closes the run."""
+
+    def __init__(
+        self,
+        plan: Plan,
+        dt: float,
+        drivers: DriverFactory | None,
+        default: Callable[[], Driver],
+        held: Callable[[Reference, Road], bool],
+        react: Reaction | None,
+    ) -> None:
+        self.plan, self.dt, self.react = plan, dt, react
+        lanes = plan.lanes
+        # a reference reads only the lanes' centre lines, not the road's extent: build them once and
+        # size the road around them
+        self.refs = refs = references(plan, Road(lanes))
+        # a replan may lengthen the run: room for about ten more seconds at highway speed
+        road = _road_around(refs, lanes, 60.0 if react is None else 400.0)
+        if plan.route is not None:  # on a map: where the plan placed itself on the route
+            shift = plan.origin if plan.origin is not None else -road.x_start
+            road = dataclasses.replace(road, route=plan.route, route_shift=shift)
+        self.road = road
+        self.active: dict[str, Driver] = {}
+        for vehicle, reference in refs.items():
+            if vehicle in plan.stationary or held(reference, road):
+                driver = StationaryDriver()
+            else:
+                driver = complete((drivers(vehicle) if drivers else None) or default())
+            driver.start(vehicle, reference, road, dt)
+            self.active[vehicle] = driver
+        self.steps = self.last_step()
+        self.states = {
+            v: VehicleState(r.start_position, road.center_y(r.waypoints[0].lane), 0.0, r.start_speed, 0.0)
+            for v, r in refs.items()
+        }
+        self.predictions = {v: Trajectory.standing(s) for v, s in self.states.items()}
+        self.columns = {
+            v: {c: np.zeros(self.steps + 1) for c in ("x", "y", "heading", "speed", "acceleration", "lane")}
+            for v in refs
+        }
+        self.incidents: list[Incident] = []
+        self.goals = {v: _GoalSequence(r.waypoints) for v, r in refs.items() if v not in plan.stationary}
+
+    def last_step(self) -> int:
+        """The run lasts as long as the longest reference, and ``TAIL`` after."""
+        return int(round((max(r.end_time for r in self.refs.values()) + TAIL) / self.dt))
+
+    def record(self, k: int) -> None:
+        """The states at step ``k``: their columns, the goals reached, the incidents."""
+        time, road, states = k * self.dt, self.road, self.states
+        for v, s in states.items():
+            col = self.columns[v]
+            col["x"][k], col["y"][k], col["heading"][k] = s.x, s.y, s.heading
+            col["speed"][k], col["acceleration"][k], col["lane"][k] = s.speed, s.acceleration, road.lane_at(s.y)
+            if v in self.goals:
+                self.goals[v].update(time, s.x, int(col["lane"][k]))
+        names = list(states)
+        for i, a in enumerate(names):
+            if not road.on_road(corners(states[a])):
+                self.incidents.append(Incident(time, "off-road", (a,)))
+            for b in names[i + 1 :]:
+                if boxes_overlap(states[a], states[b]):
+                    self.incidents.append(Incident(time, "collision", (a, b)))
+
+    def step(self, k: int) -> None:
+        """Drive every vehicle from step ``k - 1`` to ``k``: the reaction's new references first
+        (their drivers ``retarget``), then every driver plans from the same snapshot."""
+        time = (k - 1) * self.dt
+        retargeted = self.react(time, self.states, self.road, self.refs) if self.react is not None else None
+        for v, reference in (retargeted or {}).items():
+            self.refs[v] = reference
+            self.active[v].retarget(v, reference, self.road, self.dt)
+            self.goals[v].retarget(reference.waypoints, time)
+        if retargeted:
+            self.steps = max(self.steps, self.last_step())
+            for col in self.columns.values():
+                for name, values in col.items():
+                    if len(values) < self.steps + 1:
+                        col[name] = np.concatenate([values, np.zeros(self.steps + 1 - len(values))])
+        chosen = {}
+        for v, driver in self.active.items():
+            others = {o: p for o, p in self.predictions.items() if o != v}
+            chosen[v] = driver.plan(time, self.states[v], others)
+        for v, trajectory in chosen.items():
+            self.states[v] = trajectory.state(1)
+            self.predictions[v] = trajectory.shifted()
+
+    def simulation(self) -> Simulation:
+        """The run's ``Simulation``: its trace (world coordinates too on a map), goals and replans."""
+        columns, road = self.columns, self.road
+        for v in columns:
+            columns[v]["lane"] = columns[v]["lane"].astype(int)
+            if road.route is not None:
+                col = columns[v]
+                col["world_x"], col["world_y"], col["world_heading"] = road.world(col["x"], col["y"], col["heading"])
+        trace = Trace(np.round(np.arange(self.steps + 1) * self.dt, 6), columns, _merge(self.incidents))
+        for sequence in self.goals.values():
+            sequence.update(math.inf, math.nan, -1)  # windows still open at the end are misses
+        return Simulation(
+            trace,
+            road,
+            self.refs,
+            self.dt,
+            {v: d.fallbacks for v, d in self.active.items()},
+            tuple(self.plan.stationary),
+            {v: g.records for v, g in self.goals.items()},
+            list(self.react.replans) if self.react is not None else [],
+        )
 
 
 def drive_in_lockstep(
@@ -65,119 +174,32 @@ def drive_in_lockstep(
     limits: SimulationLimits,
     drivers: DriverFactory | None,
     default: Callable[[], Driver],
-    react: React | None = None,
+    react: Reaction | None = None,
+    held: Callable[[Reference, Road], bool] = lambda reference, road: False,
 ) -> Simulation:
     """Drive every vehicle of ``plan`` from standstill through its waypoints.
 
     ``drivers`` maps a vehicle name to a custom driver (or ``None`` for ``default()``); stationary
-    objects are never driven. ``limits.time_limit`` (seconds of wall clock) bounds a run whose
-    driver (a plugged-in one, say) is far slower than expected; it raises ``SimulationTimeout``.
-    ``react`` (reactive execution, ``pytest_roadlogic.reactive``) is asked at every step, before the
-    drivers plan, for new references of some vehicles: their drivers follow those from then on
-    (``retarget``, else ``start`` again), and the run lasts as long as the longest reference.
+    objects, and those the backend holds (``held``), are never driven. ``limits.time_limit``
+    (seconds of wall clock) bounds a run whose driver (a plugged-in one, say) is far slower than
+    expected; it raises ``SimulationTimeout``. ``react`` (reactive execution) is asked at every
+    step, before the drivers plan, for new references of some vehicles: their drivers follow
+    those from then on (``Driver.retarget``), and the run lasts as long as the longest reference.
     """
-    dt, time_limit = limits.dt, limits.time_limit
-    deadline = clock.monotonic() + time_limit if time_limit is not None else math.inf
-    lanes = plan.lanes
-    # a reference reads only the lanes' centre lines, not the road's extent: build them once and
-    # size the road around them
-    refs = references(plan, Road(lanes))
-    # a replan may lengthen the run: room for about ten more seconds at highway speed
-    road = _road_around(refs, lanes, 60.0 if react is None else 400.0)
-    if plan.route is not None:  # on a map: where the plan placed itself on the route
-        shift = plan.origin if plan.origin is not None else -road.x_start
-        road = dataclasses.replace(road, route=plan.route, route_shift=shift)
-    active: dict[str, Driver] = {}
-    for vehicle, reference in refs.items():
-        if vehicle in plan.stationary or (road.route is not None and _held_still(reference)):
-            driver = StationaryDriver()
-        else:
-            driver = (drivers(vehicle) if drivers else None) or default()
-        driver.start(vehicle, reference, road, dt)
-        active[vehicle] = driver
-
-    def last_step() -> int:  # the run lasts as long as the longest reference, and TAIL after
-        return int(round((max(r.end_time for r in refs.values()) + TAIL) / dt))
-
-    steps = last_step()
-    states = {
-        v: VehicleState(r.start_position, road.center_y(r.waypoints[0].lane), 0.0, r.start_speed, 0.0)
-        for v, r in refs.items()
-    }
-    predictions = {v: Trajectory.standing(s) for v, s in states.items()}
-    columns = {
-        v: {c: np.zeros(steps + 1) for c in ("x", "y", "heading", "speed", "acceleration", "lane")} for v in refs
-    }
-    incidents: list[Incident] = []
-    goals = {v: _GoalSequence(r.waypoints) for v, r in refs.items() if v not in plan.stationary}
-
-    def record(k: int) -> None:
-        time = k * dt
-        for v, s in states.items():
-            col = columns[v]
-            col["x"][k], col["y"][k], col["heading"][k] = s.x, s.y, s.heading
-            col["speed"][k], col["acceleration"][k], col["lane"][k] = s.speed, s.acceleration, road.lane_at(s.y)
-            if v in goals:
-                goals[v].update(time, s.x, int(col["lane"][k]))
-        names = list(states)
-        for i, a in enumerate(names):
-            if not road.on_road(corners(states[a])):
-                incidents.append(Incident(time, "off-road", (a,)))
-            for b in names[i + 1 :]:
-                if boxes_overlap(states[a], states[b]):
-                    incidents.append(Incident(time, "collision", (a, b)))
-
-    record(0)
+    deadline = clock.monotonic() + limits.time_limit if limits.time_limit is not None else math.inf
+    run = _Lockstep(plan, limits.dt, drivers, default, held, react)
+    run.record(0)
     k = 0
-    while k < steps:
+    while k < run.steps:
         k += 1
         if clock.monotonic() > deadline:
             raise SimulationTimeout(
-                f"the simulation took over its limit of {time_limit:g} s at {k * dt:.1f} s of {steps * dt:.1f} s simulated"
+                f"the simulation took over its limit of {limits.time_limit:g} s at {k * limits.dt:.1f} s of "
+                f"{run.steps * limits.dt:.1f} s simulated"
             )
-        time = (k - 1) * dt
-        retargeted = react(time, states, road, refs) if react is not None else None
-        for v, reference in (retargeted or {}).items():
-            refs[v] = reference
-            driver = active[v]
-            if hasattr(driver, "retarget"):
-                driver.retarget(reference)
-            else:
-                driver.start(v, reference, road, dt)
-            goals[v].retarget(reference.waypoints, time)
-        if retargeted:
-            steps = max(steps, last_step())
-            for col in columns.values():
-                for name, values in col.items():
-                    if len(values) < steps + 1:
-                        col[name] = np.concatenate([values, np.zeros(steps + 1 - len(values))])
-        chosen = {}
-        for v, driver in active.items():
-            others = {o: p for o, p in predictions.items() if o != v}
-            chosen[v] = driver.plan(time, states[v], others)
-        for v, trajectory in chosen.items():
-            states[v] = trajectory.state(1)
-            predictions[v] = trajectory.shifted()
-        record(k)
-    for v in columns:
-        columns[v]["lane"] = columns[v]["lane"].astype(int)
-        if road.route is not None:
-            col = columns[v]
-            col["world_x"], col["world_y"], col["world_heading"] = road.world(col["x"], col["y"], col["heading"])
-    trace = Trace(np.round(np.arange(steps + 1) * dt, 6), columns, _merge(incidents))
-    fallbacks = {v: getattr(d, "fallbacks", 0) for v, d in active.items()}
-    for sequence in goals.values():
-        sequence.update(math.inf, math.nan, -1)  # windows still open at the end are misses
-    return Simulation(
-        trace,
-        road,
-        refs,
-        dt,
-        fallbacks,
-        tuple(plan.stationary),
-        {v: g.records for v, g in goals.items()},
-        list(getattr(react, "replans", [])),
-    )
+        run.step(k)
+        run.record(k)
+    return run.simulation()
 
 
 class LockstepSimulator:
@@ -187,21 +209,15 @@ class LockstepSimulator:
     name: str
     default_driver: Callable[[], Driver]
 
+    def holds(self, reference: Reference, road: Road) -> bool:
+        """Whether this backend holds the vehicle of ``reference`` still instead of driving it (a
+        quirk of its driver's); none by default."""
+        return False
+
     def simulate(
-        self, plan: Plan, limits: SimulationLimits, drivers: DriverFactory | None = None, react=None
+        self, plan: Plan, limits: SimulationLimits, drivers: DriverFactory | None = None, react: Reaction | None = None
     ) -> Simulation:
-        return drive_in_lockstep(plan, limits, drivers, self.default_driver, react)
-
-
-def _held_still(reference: Reference) -> bool:
-    """Whether a plan holds a vehicle at a standstill throughout (``remain_stationary``). On a map
-    such a car is held, not driven: frenetix lets a car standing in a curve creep (0.1 m/s, 0.3 m
-    in 10 s in the 500 m curve; none on the straight road, where it keeps driving them)."""
-    return all(abs(w.speed) < STILL for w in reference.waypoints)
-
-
-# m/s below which a planned vehicle counts as standing still (remain_stationary's bound is 0.1)
-STILL = 0.2
+        return drive_in_lockstep(plan, limits, drivers, self.default_driver, react, self.holds)
 
 
 def _merge(incidents: list[Incident]) -> list[Incident]:

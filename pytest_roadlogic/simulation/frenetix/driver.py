@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..driver import Trajectory, VehicleState
+from ..driver import DriverBase, Trajectory, VehicleState
 from ..geometry import CAR_LENGTH, CAR_WIDTH, WHEELBASE
 from ..reference import Reference
 from ..road import Road
@@ -50,7 +50,7 @@ def _coordinate_system(road: Road):
     return _COORDINATE_SYSTEMS[key]
 
 
-class FrenetixDriver:
+class FrenetixDriver(DriverBase):
     """Tracks the waypoint schedule with frenetix-generated trajectories."""
 
     horizon = 3.0  # s
@@ -130,7 +130,7 @@ class FrenetixDriver:
         self._committed: Trajectory | None = None  # the chosen trajectory, index 0 being now
         self._age = 0  # steps driven along it
 
-    def retarget(self, reference: Reference) -> None:
+    def retarget(self, vehicle: str, reference: Reference, road: Road, dt: float) -> None:
         """Follow ``reference`` from now on (a replan): the trajectory chosen for the old one is dropped."""
         self.reference = reference
         self._committed = None

@@ -16,7 +16,7 @@ import math
 
 import numpy as np
 
-from ..driver import Trajectory, VehicleState
+from ..driver import DriverBase, Trajectory, VehicleState
 from ..geometry import WHEELBASE
 from ..reference import Reference
 from ..road import Road
@@ -32,16 +32,14 @@ LOOK_AHEAD_TIME = 1.0  # s: the pursued point is this far ahead at the current s
 LOOK_AHEAD_MIN = 4.0  # m
 
 
-class KinematicDriver:
+class KinematicDriver(DriverBase):
     """Tracks its reference with the kinematic bicycle model and the closed-form controller."""
-
-    fallbacks = 0  # it never falls back (the lockstep loop reports the frenetix driver's)
 
     def start(self, vehicle: str, reference: Reference, road: Road, dt: float) -> None:
         self.reference, self.dt = reference, dt
         self.steps = max(2, int(round(HORIZON / dt)) + 1)
 
-    def retarget(self, reference: Reference) -> None:
+    def retarget(self, vehicle: str, reference: Reference, road: Road, dt: float) -> None:
         """Follow ``reference`` from now on (a replan): the controller keeps no other state."""
         self.reference = reference
 

@@ -22,14 +22,17 @@ import clingo
 from clingo.ast import ASTType, ProgramBuilder, parse_string
 
 from ....logic.automaton import SymbolicAutomaton
+from ... import diagnosis
 from ...core import ASP_DIR, AUTOMATON, KEEP_LANE, LEAST_ACTION, IncrementalPlanner, read_programs
 from ...diagnosis import check_satisfiable
 from ...errors import HorizonTooShort, NoPlanError, PlanningTimeout
 from ...plan import Plan
+from ...protocol import Past
 from .decode import decode_plan
 from .instance import build_continuous_instance, decimal
 from .linear import LazyLinearTheory, theory_program
 from .preferences import farthest, start_preferences
+from .replan import past_facts
 from .settings import ContinuousSettings
 
 ASP_CONTINUOUS = ASP_DIR / "continuous"
@@ -74,16 +77,16 @@ class ContinuousPlanner(IncrementalPlanner):
     def __init__(self, automaton: SymbolicAutomaton, settings: ContinuousSettings | None = None, seed: int = 0) -> None:
         super().__init__(automaton, settings or ContinuousSettings(), seed)  # type: ignore[arg-type]
 
-    def _instance(self, settings, relaxable: bool = False) -> str:
+    def instance_for(self, settings, relaxable: bool = False) -> str:
         return build_continuous_instance(self.automaton, settings, relaxable)
 
     def _start_preferences(self, draw: random.Random) -> str:
         return start_preferences(self.automaton, self.settings, draw)
 
-    def _widened(self):
+    def widened(self):
         return None  # every start speed the settings allow is tried at once
 
-    def _control(self, instance: str):
+    def control_for(self, instance: str):
         control = self._new_control()
         program = read_programs(*BACKGROUND)
         program += "\n#program base.\n" + instance + "\n" + self.preferences
@@ -143,8 +146,8 @@ class ContinuousPlanner(IncrementalPlanner):
             checked = window.floor > self.settings.max_horizon
             earliest = self._earliest(deadline, window) if checked else window.floor
             earliest = max(earliest, self.shortest)
-            control = self._control(self.instance)
-            self._advance_to(control, earliest)
+            control = self.control_for(self.instance)
+            self.advance_to(control, earliest)
             horizon = earliest
             # a random start's plans come from a search of their own at a drawn, longer horizon as
             # long as it answers within STRETCH_CONFLICTS (as the grid planner's do: _plans)
@@ -162,7 +165,7 @@ class ContinuousPlanner(IncrementalPlanner):
                         checked, grounded = True, horizon
                         earliest = horizon = max(horizon, self._earliest(deadline, window))
                         if horizon > grounded:
-                            self._advance_to(control, horizon, grounded)
+                            self.advance_to(control, horizon, grounded)
                             continue
                     if answer is None:
                         # one question, not the whole window's bisection (5 solves, a fifth of
@@ -171,13 +174,13 @@ class ContinuousPlanner(IncrementalPlanner):
                         if horizon >= self.settings.max_horizon or window.past_end(horizon + 1):
                             break  # no run of the automaton lasts longer: no longer plan either
                         horizon += 1
-                        self._advance(control, horizon)
+                        self.advance(control, horizon)
                         continue
                     source, plan_horizon = control, horizon
                     target = self._stretch_target(horizon)
                     if found == 0 and target > horizon and window.open_at(target):
-                        longer = self._control(self.instance)
-                        self._advance_to(longer, target)
+                        longer = self.control_for(self.instance)
+                        self.advance_to(longer, target)
                         longer_answer = self._model(longer, deadline, f"at horizon {target}", STRETCH_CONFLICTS)
                         if longer_answer is not None:
                             answer, source, plan_horizon = longer_answer, longer, target
@@ -206,7 +209,14 @@ class ContinuousPlanner(IncrementalPlanner):
         except NoPlanError as error:
             if (self.least_action and not self.least_change) or not self.settings.explain_unsatisfiable:
                 raise
-            self._explain(error, deadline, window)
+            diagnosis.raise_reason(self, error, deadline, window)
+
+    def replan(self, past: Past, shortest: int) -> Plan | None:
+        """The first plan from ``past`` on (``asp/continuous/replan.lp`` reads its facts), at
+        least ``shortest`` steps long. A planner replans once: the past joins its instance."""
+        self.instance += "\n" + past_facts(past)
+        self.shortest = shortest
+        return next(self.plans(limit=1), None)
 
     def _earliest(self, deadline: float, window) -> int:
         """The first horizon the durations allow (``needed_horizon``); ``NoPlanError`` when none does."""

@@ -9,6 +9,21 @@ from dataclasses import dataclass, replace
 from typing import ClassVar
 
 from ....settings import CONTINUOUS_HORIZON, ROAD_SPEED
+from ...protocol import Limit
+
+# the vehicle limits a fallback plans without, when no plan exists within them: (field, relaxed
+# value, unit, whether a real car's). The relaxed values are beyond any car's, so a plan that needs
+# them names the limit. A plan needing a car's limit relaxed asks more than a car can do: its values
+# have no concrete scenario. The others (the gap between cars) are how closely the tool dares to
+# plan cars: 8 m between centres is 3.5 m between bumpers, and a scenario may ask for less
+RELAXED_LIMITS = (
+    ("max_jerk", 50.0, "m/s^3", True),
+    ("min_acceleration", -20.0, "m/s^2", True),
+    ("max_acceleration", 12.0, "m/s^2", True),
+    ("max_speed", 100.0, "m/s", True),
+    ("closing_time", 0.0, "s", False),
+    ("min_gap", 5.0, "m", False),
+)
 
 
 @dataclass(frozen=True)
@@ -17,6 +32,7 @@ class ContinuousSettings:
     ``planning.protocol.PlannerSettings``)."""
 
     encoding: ClassVar[str] = "continuous"
+    replanning: ClassVar[bool] = True
 
     dt: float = 1.0  # seconds per step
     min_acceleration: float = -8.0  # m/s^2: hard braking of a real car
@@ -177,6 +193,28 @@ class ContinuousSettings:
             duration_margin=self.duration_margin * f,
             fallback_margins=1.0,
         )
+
+    def finer(self) -> ContinuousSettings:
+        """These settings in half the step (durations between whole seconds: a 0.5 s wait, a 3.6 s
+        brake), over as many seconds, lane changes as far apart in seconds."""
+        return replace(self, dt=self.dt / 2, max_horizon=self.max_horizon * 2, lane_change_gap=self.lane_change_gap * 2)
+
+    def limits(self) -> tuple[Limit, ...]:
+        """The ``RELAXED_LIMITS`` with their values here (and ``limit_reasons``)."""
+        reasons = dict(self.limit_reasons)
+        return tuple(
+            Limit(name, getattr(self, name), relaxed, unit, of_a_car, reasons.get(name, ""))
+            for name, relaxed, unit, of_a_car in RELAXED_LIMITS
+        )
+
+    def relaxed(self, names: frozenset[str] | None = None) -> ContinuousSettings:
+        return replace(self, **{name: value for name, value, _, _ in RELAXED_LIMITS if names is None or name in names})
+
+    def at_origin(self, origin: float) -> ContinuousSettings:
+        return replace(self, origin_span=(origin, origin)) if self.route_span is not None else self
+
+    def with_road_speed(self, band: tuple[float, float]) -> ContinuousSettings:
+        return replace(self, road_speed=band)
 
     def describe_margins(self) -> str:
         return (

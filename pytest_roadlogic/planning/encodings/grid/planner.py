@@ -18,9 +18,10 @@ from collections.abc import Iterator
 import clingo
 from clingodl import ClingoDLTheory
 
+from ... import diagnosis
 from ...core import ASP_DIR, AUTOMATON, KEEP_LANE, IncrementalPlanner, read_programs
 from ...diagnosis import check_satisfiable
-from ...errors import NoPlanError, PlanningTimeout
+from ...errors import CannotReplan, NoPlanError, PlanningTimeout
 from ...plan import Plan
 from .decode import decode_plan
 from .instance import build_instance, start_preferences
@@ -34,7 +35,7 @@ BACKGROUND = (
     ASP_DIR / "guards.lp",
     ASP_GRID / "guards.lp",
 )
-INITIAL = "initial.lp"  # the rules of the initial state, after the instance's facts (see _control)
+INITIAL = "initial.lp"  # the rules of the initial state, after the instance's facts (see control_for)
 PREFERENCES = (ASP_GRID / "preferences.lp", KEEP_LANE)  # loaded for a random start only, in this order
 # conflicts a random start may spend stretching its plan past the shortest horizon: random
 # preferences now and then lead the search into a long detour (measured: up to 36 s), and a count
@@ -55,14 +56,14 @@ class GridPlanner(IncrementalPlanner):
     def __init__(self, automaton, settings: GridSettings | None = None, seed: int = 0) -> None:
         super().__init__(automaton, settings or GridSettings(), seed)
 
-    def _instance(self, settings, relaxable: bool = False) -> str:
+    def instance_for(self, settings, relaxable: bool = False) -> str:
         return build_instance(self.automaton, settings, relaxable)
 
     def _start_preferences(self, draw: random.Random) -> str:
         """A random start's draws, as this encoding's rules."""
         return start_preferences(self.automaton, self.settings, draw)
 
-    def _control(self, instance: str) -> clingo.Control:
+    def control_for(self, instance: str) -> clingo.Control:
         control = self._new_control()
         self._theories[control] = theory = ClingoDLTheory()
         theory.register(control)
@@ -85,8 +86,8 @@ class GridPlanner(IncrementalPlanner):
         check_satisfiable(self.automaton)
         deadline = self._renewed(deadline)
         programs = [lambda: self.instance]
-        if (wide := self._widened()) is not None:
-            programs.append(lambda: self._instance(wide))
+        if (wide := self.widened()) is not None:
+            programs.append(lambda: self.instance_for(wide))
         # the paper's encoding plans as the paper did: least action (asp/least_action.lp) is the
         # continuous encoding's. Measured: with it, follow's grid plans changed and 3 of its 50
         # refined samples (the bench's) ended in a collision after the plan, which the grid, having
@@ -104,9 +105,13 @@ class GridPlanner(IncrementalPlanner):
                 last = error
         if not self.settings.explain_unsatisfiable:
             raise last
-        self._explain(last, deadline)
+        diagnosis.raise_reason(self, last, deadline)
 
-    def _widened(self) -> GridSettings | None:
+    def replan(self, past, shortest: int) -> Plan | None:
+        """Cannot (``GridSettings.replanning`` is False): the grid plans from a run-up at the start."""
+        raise CannotReplan("the grid encoding does not replan from an observed state: use the continuous encoding")
+
+    def widened(self) -> GridSettings | None:
         """The settings with any allowed start speed, when that is wider than the first try."""
         wide = dataclasses.replace(self.settings, initial_speed=(self.settings.min_speed, self.settings.max_speed))
         if not self.settings.widen_initial_speed or wide.initial_speeds() == self.settings.initial_speeds():
@@ -114,10 +119,10 @@ class GridPlanner(IncrementalPlanner):
         return wide
 
     def _plans(self, instance: str, limit: int | None, deadline: float) -> Iterator[Plan]:
-        control = self._control(instance)
+        control = self.control_for(instance)
         horizon = 0
         found = 0
-        self._advance(control, horizon)
+        self.advance(control, horizon)
         # a random start's first plan comes from a search of its own at a longer horizon; the plans
         # after it too, as long as that search answers within STRETCH_CONFLICTS, then the shortest
         # horizon's search goes on (a stretched search that stalls must not cost the run its plans)
@@ -140,7 +145,7 @@ class GridPlanner(IncrementalPlanner):
                             f"({self.settings.max_horizon * self.settings.dt:g} s)"
                         )
                     horizon += 1
-                    self._advance(control, horizon)
+                    self.advance(control, horizon)
                     continue
                 source, plan_horizon = control, horizon
                 target = self._stretch_target(horizon)
@@ -162,9 +167,9 @@ class GridPlanner(IncrementalPlanner):
     ) -> tuple[clingo.Control, list[clingo.Symbol]] | None:
         """A search for plans of exactly ``horizon`` steps and its first plan; None when none is
         found within STRETCH_CONFLICTS (a timed phase may forbid any)."""
-        control = self._control(instance)
+        control = self.control_for(instance)
         for step in range(horizon + 1):
-            self._advance(control, step)
+            self.advance(control, step)
         symbols = self._solve(control, deadline, STRETCH_CONFLICTS)
         return None if symbols is None else (control, symbols)
 

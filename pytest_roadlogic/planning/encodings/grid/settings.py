@@ -6,10 +6,12 @@ Plain data, importable without clingo: the pipeline, the sampler and the reports
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import ClassVar
 
 from ....settings import DEFAULT_HORIZON, DEFAULT_PLAN_TIMEOUT
+from ...errors import CannotPlanOnMap
+from ...protocol import Limit
 
 
 @dataclass(frozen=True)
@@ -17,6 +19,7 @@ class GridSettings:
     """The grid encoding's vehicle limits and planning bounds (``planning.protocol.PlannerSettings``)."""
 
     encoding: ClassVar[str] = "grid"
+    replanning: ClassVar[bool] = False  # its planner plans whole scenarios from their start only
     dt: float = 1.0  # seconds per planning step
     grid: float = 1.0  # metres per cell (the road's lanes come with the automaton)
     min_speed: float = 2.0  # m/s; positive, so that no vehicle stops (domain rule 1)
@@ -53,6 +56,34 @@ class GridSettings:
         """None: the grid encoding has no fallback search (``planning.fallbacks``), so a sample it
         has no plan for is reported at once; the continuous settings answer with thinner margins."""
         return None
+
+    def finer(self) -> GridSettings:
+        """These settings in half the step (the grid itself stays)."""
+        return replace(self, dt=self.dt / 2, max_horizon=self.max_horizon * 2, lane_change_gap=self.lane_change_gap * 2)
+
+    def limits(self) -> tuple[Limit, ...]:
+        """None: the grid's domain rules are the paper's, never relaxed."""
+        return ()
+
+    def relaxed(self, names: frozenset[str] | None = None) -> GridSettings:
+        return self
+
+    def describe_margins(self) -> str:
+        return f"speed_margin {self.speed_margin:g} m/s, position_margin {self.position_margin:g} m"
+
+    def on_route(self, route) -> GridSettings:
+        """Cannot: the grid plans one straight road of integer cells."""
+        raise CannotPlanOnMap(
+            f"the grid encoding plans on one straight road: {route.name} needs the continuous encoding "
+            "(leave out the encoding option)"
+        )
+
+    def at_origin(self, origin: float) -> GridSettings:
+        return self
+
+    def with_road_speed(self, band: tuple[float, float]) -> GridSettings:
+        """Themselves: the grid draws start speeds from ``initial_speed``, not a road's band."""
+        return self
 
     def summary(self, lanes: int) -> str:
         """The domain rules' numbers on a road of ``lanes`` lanes, for messages that blame them."""
