@@ -15,7 +15,7 @@ the default driver) and compared with the plan at its steps:
 
 Prints one row per file (median, 95th percentile and maximum of each error) and the same over all
 files. The planner keeps ``position_margin``/``speed_margin`` inside every range: those settings
-are set from these figures (planning/continuous.py cites them).
+are set from these figures (planning/encodings/continuous/settings.py cites them).
 """
 
 from __future__ import annotations

@@ -2,6 +2,7 @@
 
 import ast
 import pkgutil
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -231,3 +232,29 @@ def test_the_pipeline_fallbacks_and_lockstep_probe_no_object_for_a_capability():
         if isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and node.func.id in ("hasattr", "getattr")
     ]
     assert found == []
+
+
+SOURCE_PATH = re.compile(r"(?<![\w/.])((?:[A-Za-z_][\w.-]*/)+[\w-]+\.(?:py|lp))\b")
+
+
+def test_every_source_file_the_package_docs_and_encodings_name_exists():
+    """A path in a docstring, a comment, an encoding's header or the architecture docs is a
+    promise to a reader: it names a file that exists (relative to the repository, asp/, the package,
+    or the package's planning, simulation or frontend folder)."""
+    root = Path(pytest_roadlogic.__file__).resolve().parents[1]
+    package = root / "pytest_roadlogic"
+    bases = (root, root / "asp", package, package / "planning", package / "simulation", package / "frontend")
+    texts = [
+        *(p for p in package.rglob("*.py") if "generated" not in p.parts),
+        *root.glob("asp/**/*.lp"),
+        root / "docs" / "architecture.md",
+        root / "CONTRIBUTING.md",
+    ]
+    stale = [
+        f"{text.relative_to(root)}:{number}: {match.group(1)}"
+        for text in texts
+        for number, line in enumerate(text.read_text(encoding="utf-8").splitlines(), 1)
+        for match in SOURCE_PATH.finditer(line)
+        if not any((base / match.group(1)).exists() for base in bases)
+    ]
+    assert stale == []

@@ -1,4 +1,4 @@
-"""The continuous-dynamics encoding (asp/continuous.lp): its plans obey the vehicle limits, exact
+"""The continuous-dynamics encoding (asp/continuous/): its plans obey the vehicle limits, exact
 constant-acceleration kinematics, the lane rules, the gaps and the scenario's guards and durations,
 checked here independently of the encoding."""
 

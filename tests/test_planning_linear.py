@@ -1,4 +1,4 @@
-"""The lazy linear theory (planning/linear.py): clingo chooses which linear constraints hold, HiGHS
+"""The lazy linear theory (planning/encodings/continuous/linear.py): clingo chooses which linear constraints hold, HiGHS
 checks them together. What must hold, from its meaning rather than its code: a model's values meet
 every constraint its true atoms switch on; a conflict is returned as exactly the choices whose
 constraints cannot hold together (a Farkas certificate, never an innocent bystander); constraints

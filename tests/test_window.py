@@ -51,7 +51,7 @@ def test_no_run_of_the_automaton_ends_before_its_floor(path, dt):
     "name", ["realistic/five_vehicle_minute", "realistic/follow_then_overtake", "realistic/one_of_reaction", "overtake"]
 )
 def test_the_floor_of_phases_in_series_is_where_a_run_ends(name):
-    # why planning starts there without asking the window (planning/continuous.py): one solve less
+    # why planning starts there without asking the window (planning/encodings/continuous/planner.py): one solve less
     automaton = automaton_of(ROOT / "scenarios" / f"{name}.osc")
     assert shortest_run(automaton, 1.0) == window_without_floor(automaton, 1.0).earliest(480)
 

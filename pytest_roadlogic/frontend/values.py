@@ -267,17 +267,6 @@ def calls_in(expression: model.Expression | None) -> list[model.Call]:
     return [e for e in subexpressions(expression) if isinstance(e, model.Call)]
 
 
-def to_expression(value: Interval, location: SourceLocation) -> model.Quantity | model.Range:
-    """An evaluated interval back as a model value, for stages that read Quantity and Range."""
-    if value.is_point:
-        return model.Quantity(value.low, value.dimension, location)
-    return model.Range(
-        model.Quantity(value.low, value.dimension, location),
-        model.Quantity(value.high, value.dimension, location),
-        location,
-    )
-
-
 # ------------------------------------------------------------------ arguments, after checking
 
 

@@ -79,21 +79,6 @@ class Plan:
             **({"origin": self.origin} if self.origin is not None else {}),
         }
 
-    @classmethod
-    def from_dict(cls, data: dict) -> Plan:
-        return cls(
-            dt=data["dt"],
-            lanes=data["lanes"],
-            states={v: [PlanState(**s) for s in states] for v, states in data["states"].items()},
-            transitions=[(t["step"], t["transition"]) for t in data["transitions"]],
-            seed=data.get("seed", 0),
-            runup=data.get("runup", 7.0),
-            runup_acceleration=data.get("runup_acceleration", 2.0),
-            index=data.get("index", 0),
-            stats=data.get("stats", {}),
-            stationary=tuple(data.get("stationary", ())),
-        )
-
     def to_json(self) -> str:
         return json.dumps(self.to_dict(), indent=2)
 

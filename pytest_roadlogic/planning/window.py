@@ -4,7 +4,7 @@ The automaton alone, with every guard holding, says how long a run can last: no 
 the first horizon at which it can reach its final location (``earliest``), and none needs a
 horizon more than one step past the last step at which a run can still be under way
 (``last_open``; ``last_horizon``): the final location is absorbing, so a longer plan only idles
-longer. The one step is the plan's own: the checks of its last state (asp/continuous.lp, nobody
+longer. The one step is the plan's own: the checks of its last state (asp/continuous/dynamics.lp, nobody
 closes in at the end) may need a step after the scenario's last transition (measured: close_in's
 34 m start gap at half steps has a plan only so). Planning and the diagnosis solve only between
 ``earliest`` and ``last_horizon``. Measured: follow_then_overtake's

@@ -6,7 +6,7 @@ scenario starts, with the vehicles already moving, so the simulation begins with
 vehicles leave standstill together, accelerate at one common rate until each reaches its own
 step-0 speed, then cruise, arriving at their step-0 states together at ``runup`` seconds. Two
 vehicles are equally fast while both accelerate and one pulls away (or closes in) after, so every
-gap changes monotonically; the planner has made it safe at both ends (asp/domain.lp).
+gap changes monotonically; the planner has made it safe at both ends (asp/grid/domain.lp, asp/continuous/dynamics.lp).
 
 After the run-up the reference passes through every plan waypoint (position and speed, by cubic
 Hermite interpolation) and moves laterally to the planned lane; a lane change between plan steps

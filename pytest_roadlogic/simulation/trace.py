@@ -77,19 +77,3 @@ class Trace:
                 row += [f"{c[col][k]:.4f}" if col != "lane" else str(int(c[col][k])) for col in columns]
                 writer.writerow(row)
         return out.getvalue()
-
-    @classmethod
-    def from_csv(cls, text: str) -> Trace:
-        rows = list(csv.DictReader(io.StringIO(text)))
-        times = sorted({float(r["time"]) for r in rows})
-        index = {t: i for i, t in enumerate(times)}
-        names = list(dict.fromkeys(r["actor"] for r in rows))
-        columns = COLUMNS + (WORLD_COLUMNS if rows and WORLD_COLUMNS[0] in rows[0] else ())
-        actors = {n: {c: np.zeros(len(times)) for c in columns} for n in names}
-        for r in rows:
-            k = index[float(r["time"])]
-            for c in columns:
-                actors[r["actor"]][c][k] = float(r[c])
-        for n in names:
-            actors[n]["lane"] = actors[n]["lane"].astype(int)
-        return cls(np.array(times), actors)

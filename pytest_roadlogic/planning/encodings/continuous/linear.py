@@ -1,7 +1,7 @@
 """Linear constraints checked lazily: clingo decides the discrete plan, HiGHS checks its linear
 program, and a conflict comes back to clingo as a nogood over the choices that caused it.
 
-The continuous encoding (``asp/continuous.lp``) writes its linear constraints as theory atoms,
+The continuous encoding (``asp/continuous/``) writes its linear constraints as theory atoms,
 ``&sum{ c1*x1; c2*x2; ... } <= k :- body.``, which hold when their body does. clingo-lpx keeps
 them consistent at every decision with an exact rational simplex; measured on
 follow_then_overtake at its first horizon (24 steps, 2 vehicles): 53 conflicts in 20 s, about

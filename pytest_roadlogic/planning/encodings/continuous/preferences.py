@@ -30,7 +30,7 @@ def start_preferences(automaton: SymbolicAutomaton, settings: ContinuousSettings
     10 without and 17 with this; follow 0.210, overtake_third_actor 0.276); drawn apart from the
     start lane, follow 0.233.
 
-    And, as the grid planner's random start does (asp/preferences.lp), a driving vehicle keeps
+    And, as the grid planner's random start does (asp/grid/preferences.lp), a driving vehicle keeps
     one drawn acceleration (-drift, 0 or +drift, an ``&drift`` preference of the linear program,
     within ``drift_speeds``) and keeps its lane unless the scenario needs a change (asp/keep_lane.lp).
     Without them the smoothest plan held every vehicle the scenario leaves free at its start

@@ -91,7 +91,7 @@ class ContinuousSettings:
     max_horizon: int = CONTINUOUS_HORIZON  # steps
     time_limit: float = 60.0  # seconds for one solve, all horizons together
     # how the linear constraints are kept: "lazy" checks each complete choice with HiGHS and learns
-    # nogoods from its conflicts (planning/linear.py); "lpx" keeps them at every decision with
+    # nogoods from its conflicts (encodings/continuous/linear.py); "lpx" keeps them at every decision with
     # clingo-lpx's exact simplex (measured slower by orders of magnitude on long scenarios)
     theory: str = "lazy"
     lpx_options: tuple[tuple[str, str], ...] = ()  # clingo-lpx's own (propagate-conflicts, select, ...)

@@ -57,7 +57,7 @@ def build_instance(automaton: SymbolicAutomaton, settings: GridSettings, relaxab
         f"lane_change_gap({settings.lane_change_gap}).",
         f"min_gap({gap}).",
         "",
-        "% initial state (asp/initial.lp): the first vehicle at cell 0, the others in start zones",
+        "% initial state (asp/grid/initial.lp): the first vehicle at cell 0, the others in start zones",
         f"#const first_vehicle = {atom(vehicles[0])}.",
         f"#const zones = {zones}.",
         f"#const start_low = {starts[0]}.",
