@@ -43,16 +43,15 @@ KEEP_LANE = ASP_DIR / "keep_lane.lp"
 # a vehicle changes lane and speed only where its own constructs ask (both encodings), while the
 # external least_action holds (IncrementalPlanner.least_action)
 LEAST_ACTION = ASP_DIR / "least_action.lp"
-# steps grounded in one call before the time limit is looked at again (a call cannot be stopped;
-# one per step had cost 2.5 s over 45 steps against 0.36 s in one call)
+# steps grounded in one call before the time limit is looked at again (a call cannot be stopped,
+# and one call per step is several times slower: docs/decisions.md)
 GROUND_CHUNK = 50  # steps grounded in one call (the chunks decide the ground program's order, hence the plans)
 # A solve cannot be stopped while clasp prepares the ground program (equivalence preprocessing),
-# which takes about as long as grounding it did, up to 1.6 times (measured: 200 one-second phases,
-# 6.0 s of grounding, then 9.7 s before a cancel took effect). A solve that would start with less
+# which takes up to 1.6 times as long as grounding it did. A solve that would start with less
 # time left than this many times its control's grounding time is not started: the time limit then
 # holds within a tenth instead of being overrun by the preparation.
 PREPARATION_PER_GROUNDING = 1.6
-# what the process may hold while grounding: measured, 3,500 steps of five vehicles held 1.7 GB
+# what the process may hold while grounding (docs/decisions.md: what long horizons take)
 MAX_PLANNING_BYTES = 8 * 2**30
 
 
@@ -212,8 +211,7 @@ class IncrementalPlanner:
 
     def advance_to(self, control: clingo.Control, horizon: int, grounded: int = -1) -> None:
         """Ground the steps after ``grounded`` (-1: none yet, the base program too) up to
-        ``horizon`` in one call and ask for acceptance at ``horizon`` only (measured on
-        five_vehicle_minute: 45 steps in one call 0.36 s, one call per step 2.5 s)."""
+        ``horizon`` in one call and ask for acceptance at ``horizon`` only."""
         parts = [("base", []), ("state", [clingo.Number(0)]), ("check", [clingo.Number(0)])] if grounded < 0 else []
         for step in range(max(1, grounded + 1), horizon + 1):
             t = clingo.Number(step)
@@ -252,9 +250,7 @@ class IncrementalPlanner:
     def _renewed(self, deadline: float | None = None) -> float:
         """The deadline of the next plan: ``deadline`` when the caller set one for the first plan
         (``plans(deadline=...)``), else the whole time limit from now. The time a caller spends
-        with a plan before asking for the next (simulating it) is not planning time (measured:
-        five_vehicle_minute's second plan takes 0.24 s, but after its first plan's 45 s simulation
-        it ran out of the 60 s limit before it started)."""
+        with a plan before asking for the next (simulating it) is not planning time."""
         self._deadline = deadline if deadline is not None else time.monotonic() + self.settings.time_limit
         return self._deadline
 

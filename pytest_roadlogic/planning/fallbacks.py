@@ -144,8 +144,8 @@ def planned(
     the scenario's constraints; a plan nearer the scenario's edges is simulated and monitored like
     any other, and an accepted simulation is an instance of the scenario. A scenario with no plan
     even then raises the first planner's error, explained (``settings.explain_unsatisfiable``) only
-    then: its constraints clash. Explaining before the fallbacks had cost a sample that one of
-    them plans a whole diagnosis (measured: 43 of 90 s on follow_overtake_points)."""
+    then: its constraints clash (explaining before the fallbacks would cost a sample that one of
+    them plans a whole diagnosis)."""
     # one deadline for the first plan, however many planners and searches it takes: each had had
     # the whole limit (200 one-second phases: "timed out" after 34 s under a 10 s limit)
     deadline = time.monotonic() + settings.time_limit
@@ -174,7 +174,7 @@ def planned(
 def _refuse_what_the_relaxation_proves(guide: Guide, settings, beyond_limits: bool) -> None:
     """Raise ``UnsatisfiableScenario`` when the linear relaxation (``relaxation``) proves that no
     planner, the fallbacks' included, has a plan for the sample: milliseconds, where the planner
-    over every horizon, the fallbacks and the diagnosis had taken seconds. It reads the automaton
+    over every horizon, the fallbacks and the diagnosis take seconds. It reads the automaton
     of the widest fallback margins and the fastest speed any fallback plans."""
     from .errors import conflict_message
     from .relaxation import provably_unplannable

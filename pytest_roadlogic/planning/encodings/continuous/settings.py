@@ -68,10 +68,8 @@ class ContinuousSettings:
     # ends by a few tenths of a m/s
     acceleration_margin: float = 0.4
     # s likewise for a sampled duration (the refined strategy's, sampling._band): the motion planner
-    # meets a phase's entry condition up to 1.2 s after the plan's step (measured on
-    # follow_then_overtake's refined samples: a relative speed the plan reached at the pass's first
-    # step, the trace reached 1.2 s later), so a phase planned at its range's shortest (8 s of
-    # [8..20] s) was simulated 6.6 s long
+    # meets a phase's entry condition up to about a second after the plan's step, so a phase planned
+    # at its range's shortest is simulated shorter
     duration_margin: float = 1.0
     # when no plan keeps the margins, a second search keeps this fraction of them: the scenario may
     # have plans nearer its edges than the margins allow (catch_up_band: 0.5 m/s on both speeds over
@@ -92,24 +90,21 @@ class ContinuousSettings:
     time_limit: float = 60.0  # seconds for one solve, all horizons together
     # how the linear constraints are kept: "lazy" checks each complete choice with HiGHS and learns
     # nogoods from its conflicts (encodings/continuous/linear.py); "lpx" keeps them at every decision with
-    # clingo-lpx's exact simplex (measured slower by orders of magnitude on long scenarios)
+    # clingo-lpx's exact simplex (orders of magnitude slower on long scenarios)
     theory: str = "lazy"
     lpx_options: tuple[tuple[str, str], ...] = ()  # clingo-lpx's own (propagate-conflicts, select, ...)
     # when no plan exists, find the constraints that cannot hold together (UnsatisfiableScenario)
     explain_unsatisfiable: bool = True
     # seconds the diagnosis may spend deciding whether one constraint can leave the group that
-    # clashes; past it the constraint stays. Measured: infeasible_order's duration, once relaxed,
-    # leaves every horizon up to the limit to refute, 15 s at 120 steps, for a group that with it
-    # names one constraint more (the duration) and is still true
+    # clashes; past it the constraint stays (the group then may name one constraint more, and is
+    # still one that clashes): a relaxed duration can leave every horizon up to the limit to refute
     removal_time_limit: float | None = 1.0
     # a random start (the refined strategy): start lanes and speeds the scenario leaves open are
     # drawn from the seed (as preferences), not left to the solver's and the LP's habits
     random_start: bool = False
     # s: how long a random start's plan may last when it is stretched past the shortest horizon the
     # scenario allows (drawn uniformly up to it, as the grid planner draws its plans' lengths up to
-    # its 25-step horizon limit). Measured (roadlogic bench scenarios/ --encoding continuous, seed 1):
-    # with every refined plan at its shortest horizon, the refined instances' occupancy was more
-    # alike than the grid's on six of seven scenarios (change_lane 0.415 against 0.216)
+    # its 25-step horizon limit): plans all at their shortest horizon are alike
     stretch_limit: float = 25.0
     # m/s^2: a random start's driving vehicle prefers to accelerate at one of -drift, 0 and +drift,
     # drawn per vehicle, as the grid planner draws one of its accelerations; kept by the linear
