@@ -5,23 +5,16 @@ the first horizon at which it can reach its final location (``earliest``), and n
 horizon more than one step past the last step at which a run can still be under way
 (``last_open``; ``last_horizon``): the final location is absorbing, so a longer plan only idles
 longer. The one step is the plan's own: the checks of its last state (asp/continuous/dynamics.lp, nobody
-closes in at the end) may need a step after the scenario's last transition (measured: close_in's
-34 m start gap at half steps has a plan only so). Planning and the diagnosis solve only between
-``earliest`` and ``last_horizon``. Measured: follow_then_overtake's
-durations rule out horizons 0-23, which the continuous encoding spent 60 s refuting with the
-dynamics; infeasible_order (every phase 5-10 s) was refuted at all 120 horizons of the limit
-(21 s) where its durations allow 5 to 11 steps.
+closes in at the end) may need a step after the scenario's last transition. Planning and the
+diagnosis solve only between ``earliest`` and ``last_horizon``: refuting the horizons the
+durations rule out with the dynamics costs far more (docs/decisions.md).
 
 Both questions are monotone in the horizon (reaching the final location by h, being under way at
 h), so each is answered by doubling and then bisecting, on steps grounded in as few calls as
-possible: measured on five_vehicle_minute (481 transitions), 45 steps grounded one call per step
-took 2.5 s and in one call 0.36 s.
+possible.
 
 The search for ``earliest`` starts at a floor read off the automaton's graph (``shortest_run``), a
 step no run can end before: a scenario of serial phases ends exactly there, and one solve says so.
-Measured on five_vehicle_minute (three phases of at least 15 s, earliest 45): from step 0 the
-window grounded 64 steps and solved 9 times, 0.38 s of its 1.18 s first plan; from the floor it
-grounds 45 steps and solves once.
 """
 
 from __future__ import annotations
@@ -40,8 +33,7 @@ from .facts import timing_steps
 GROUND_CHUNK = 25  # steps grounded in one call, between two looks at the deadline
 PREPARATION_PER_GROUNDING = 1.0  # without equivalence preprocessing (see core's): 2.4 s after 3.7 s
 
-# every guard holds: the durations alone decide (as free choices, measured 7.5 s for
-# five_vehicle_minute's window, against well under a second this way)
+# every guard holds: the durations alone decide (guards as free choices are far slower)
 GUARDS_HOLD = "g(N,t) :- guard_of(_,N).\ng(N,t) :- invariant_of(_,N)."
 OPEN = "#program open(t).\n#external open(t).\n:- open(t), accepted(t)."
 
@@ -124,8 +116,7 @@ class DurationWindow:
 
     def _solve(self, external: str, horizon: int) -> bool:
         # a phase past its longest is cut off at the step after it: without that step grounded, a
-        # run seemed still under way at a step where its phase must have ended (measured:
-        # infeasible_gain's 3-step phase, open at step 3 when asked with 3 steps grounded)
+        # run seems still under way at a step where its phase must have ended
         self._ground_to(horizon + 1 if external == "open" else horizon)
         atom = clingo.Function(external, [clingo.Number(horizon)])
         self.control.assign_external(atom, True)
