@@ -3,9 +3,8 @@ program, and a conflict comes back to clingo as a nogood over the choices that c
 
 The continuous encoding (``asp/continuous/``) writes its linear constraints as theory atoms,
 ``&sum{ c1*x1; c2*x2; ... } <= k :- body.``, which hold when their body does. clingo-lpx keeps
-them consistent at every decision with an exact rational simplex; measured on
-follow_then_overtake at its first horizon (24 steps, 2 vehicles): 53 conflicts in 20 s, about
-0.4 s per conflict, and no plan in 120 s. Here they are checked only on a total assignment, as
+them consistent at every decision with an exact rational simplex, far too slowly on long
+scenarios (docs/decisions.md). Here they are checked only on a total assignment, as
 one floating-point linear program for HiGHS (highspy), kept across checks (``SwitchedCheck``): a
 choice switches its rows on through their bounds, and the dual simplex starts from the last basis.
 When the program is infeasible, HiGHS's dual ray is a Farkas certificate: the switched-on rows it
@@ -33,8 +32,8 @@ from fractions import Fraction
 
 import clingo
 
-# imported here, never first inside clingo's solving thread: scipy imported there left a thread
-# that made the interpreter hang at exit (measured)
+# imported here, never first inside clingo's solving thread: scipy imported there leaves a thread
+# that makes the interpreter hang at exit
 import highspy
 import numpy as np
 from scipy.sparse import csr_matrix, hstack, identity, vstack
@@ -57,8 +56,8 @@ INFEASIBLE = 1e-6
 # acceleration or of its change per step: a preference gives way only to what no plan avoids
 PREFERENCE_WEIGHT = 100.0
 # a nudge (``&nudge``, a random start's draws) weighs less than an acceleration: it spreads plans
-# where the scenario leaves them free, and never buys itself a hard brake (measured: drawn start
-# speeds at PREFERENCE_WEIGHT made change_lane's plans brake at -8 m/s^2 from the first instant)
+# where the scenario leaves them free, and never buys itself a hard brake (drawn start speeds
+# weighed as an acceleration make plans brake hard from the first instant)
 NUDGE_WEIGHT = 0.1
 # a drift (``&drift``, a random start's drawn acceleration and the speeds it holds within) weighs
 # more than an acceleration, so that a vehicle the scenario leaves free keeps accelerating at its
@@ -159,9 +158,9 @@ _PRINTED_ATOM = re.compile(r"^&\w+\{(.*)\}(<=|>=|=)(.*)$")
 def _printed_row(text: str, program: LinearProgram) -> tuple[dict[int, float], str, float] | None:
     """The atom read from its printed form, or None when it is not in the form above.
 
-    Why: walking the theory terms through clingo's API costs a foreign call per term, and was
-    most of the time to a first plan of the paper's small scenarios (measured: 0.07 of 0.17 s on
-    dodge_obstacle); one ``str(atom)`` and a regular expression read the same atom.
+    Why: walking the theory terms through clingo's API costs a foreign call per term, a large
+    share of a small scenario's first plan; one ``str(atom)`` and a regular expression read the
+    same atom.
     """
     whole = _PRINTED_ATOM.match(text)
     bound = whole and _PRINTED_BOUND.match(whole.group(3))
@@ -235,8 +234,7 @@ class LazyLinearPropagator:
 
     def check(self, control: clingo.PropagateControl) -> None:
         if not control.assignment.is_total:
-            # clingo also calls a Total-mode check on some partial fixpoints (measured: 3 of the
-            # 10 checks to overtake's first plan); the check of the total assignment that
+            # clingo also calls a Total-mode check on some partial fixpoints; the check of the total assignment that
             # follows decides, and a solution found here would not be the model's
             return
         on = [literal for literal in self.program.switched if control.assignment.is_true(literal)]
@@ -278,8 +276,7 @@ def solve_linear(cost: np.ndarray, a_ub, b_ub: np.ndarray, a_eq, b_eq: np.ndarra
     """min cost.x subject to a_ub x <= b_ub, a_eq x = b_eq, x >= lower (-inf: free), with HiGHS.
 
     Why highspy and not scipy's linprog (the same HiGHS inside): linprog's checks and conversions
-    cost about 2 ms a call, most of a small scenario's check (measured: 1.95 ms against 0.43 ms on
-    a 60-row program; overtake's first plan makes some 15 such calls).
+    cost several times what HiGHS's own solve does on a small program (docs/decisions.md).
     """
     n = len(cost)
     matrix = vstack([a_ub, a_eq], format="csc")
@@ -319,10 +316,8 @@ class SwitchedCheck:
     certificate: the switched rows with a non-zero entry cannot hold together with the rows that
     always hold. Rows and variables that later horizons ground are added, never rebuilt.
 
-    Why: each check used to build an elastic program from nothing and solve it (3-4 ms against
-    20-45 checks to a first plan of the overtake scenarios, most of their planning time); an
-    elastic program kept across checks with slack costs switched on and off still needed 60-150
-    simplex iterations a check (measured on overtake_third_actor).
+    Why: an elastic program built from nothing for each check, or kept across checks with slack
+    costs switched on and off, costs many times more simplex work per check (docs/decisions.md).
     """
 
     def __init__(self) -> None:
