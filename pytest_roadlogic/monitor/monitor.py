@@ -121,7 +121,6 @@ def monitor(automaton: SymbolicAutomaton, trace: Trace, floors: tuple[float, ...
        run there, or the bounds meet, that is the robustness; else a search above the lower bound
        keeps only the runs that could beat it.
 
-    A rejected trace had cost up to 150 times an accepted one (every run kept); now about as much.
     ``floors``: for the tests and the benchmark, which compare with a single pass that keeps every
     run, ``(-math.inf,)``.
     """
@@ -265,7 +264,7 @@ class _RunSearch:
         # same for every key, so min(value, margin) keeps the order of the values and the best key per
         # group is the best key per transition. Why: five_vehicle_minute's 481 transitions all start
         # or end a timed phase, 12 of them leave each location with one effect, and stepping every
-        # key for each of them was 33 s of monitoring for one 47 s trace (measured)
+        # key for each of them is far slower (docs/decisions.md)
         self.effects: list[list[tuple[tuple[tuple, tuple], list]]] = []
         for q in range(n_loc):
             grouped: dict[tuple[tuple, tuple], list] = {}
@@ -403,8 +402,8 @@ class _RunSearch:
         furthest = max(met, key=lambda q: (depth.get(q, 0), -(self.first_met[q] or 0)))
         accepted = self.best_final >= 0 and not trace.incidents
         events = {t.id: t.label for t in automaton.transitions}
-        # a rejected run's report marks only the transitions whose guards held (the best run to the end
-        # had marked guards that the explanation says never held: issue 38)
+        # a rejected run's report marks only the transitions whose guards held (the best run to the
+        # end may mark guards that the explanation says never held)
         shown = self.best_final_run if accepted else (self.met_run[furthest] or [])
         best_run = [(float(times[k]), events[tid]) for k, tid in shown]
         miss = None
@@ -503,7 +502,7 @@ def _rate_miss(automaton: SymbolicAutomaton, found: tuple, columns, times) -> Gu
 def _timing_miss(automaton: SymbolicAutomaton, found: tuple, trace: Trace, times) -> GuardMiss:
     """A guard that held where the run could not take it, because a phase it ends would have
     lasted too short or too long: the values it printed meet the guard, and this says why they
-    were not enough (issue 20: an explanation contradicted by its own values)."""
+    were not enough (an explanation must not be contradicted by its own values)."""
     outside, k, transition, phase, seconds = found
     timing = automaton.timings[phase]
     return GuardMiss(
