@@ -273,6 +273,16 @@ def conjunction(guards: list[Guard] | tuple[Guard, ...]) -> Guard:
     return parts[0] if len(parts) == 1 else And(tuple(parts))
 
 
+def required_bounds(guard: Guard) -> list[Bound]:
+    """The bounds a guard requires whichever way it holds: those of its conjunctions, in order, not
+    those under a disjunction or a negation (what a planner may take as plain rows)."""
+    if isinstance(guard, Bound):
+        return [guard]
+    if isinstance(guard, And):
+        return [b for part in guard.parts for b in required_bounds(part)]
+    return []
+
+
 def _wrap(guard: Guard) -> str:
     return f"({guard})" if isinstance(guard, (And, Or)) and len(getattr(guard, "parts", ())) > 1 else str(guard)
 

@@ -45,6 +45,11 @@ def car_limits(settings) -> frozenset[str]:
     return frozenset(limit.name for limit in settings.limits() if limit.of_a_car)
 
 
+def spacing_limits(settings) -> frozenset[str]:
+    """The relaxable limits that are the tool's spacing between cars, not a car's."""
+    return frozenset(limit.name for limit in settings.limits() if not limit.of_a_car)
+
+
 def tool_limit(plan: Plan, explanation: str, guide: Guide, settings, seed: int):
     """The error that says which setting of the tool binds, when the rejected ``plan`` (whose
     simulation the monitor explains with ``explanation``) came from one of ``planned``'s fallback
@@ -96,12 +101,11 @@ def binding_limits(guide: Guide, settings, seed: int) -> frozenset[str]:
         except NoPlanError:
             return False
 
-    every = frozenset(limit.name for limit in settings.limits())
-    cars = car_limits(settings)
-    for names in (*(frozenset({limit.name}) for limit in settings.limits()), cars, every - cars):
+    cars, spacing = car_limits(settings), spacing_limits(settings)
+    for names in (*(frozenset({limit.name}) for limit in settings.limits()), cars, spacing):
         if plannable(names):
             return names
-    return every
+    return cars | spacing
 
 
 def fallback_settings(settings, beyond_limits: bool = True) -> list[tuple[object, str]]:
@@ -115,8 +119,7 @@ def fallback_settings(settings, beyond_limits: bool = True) -> list[tuple[object
     quiet = dataclasses.replace(thinned, explain_unsatisfiable=False)
     # the spacing first, then a car's limits too: a plan within a car's limits is one a car can
     # drive (a stop planned with every limit relaxed may brake harder than a car does)
-    spacing = frozenset(limit.name for limit in quiet.limits()) - car_limits(quiet)
-    relaxed = [(quiet.relaxed(spacing), "relaxed_limits")] + (
+    relaxed = [(quiet.relaxed(spacing_limits(quiet)), "relaxed_limits")] + (
         [(quiet.relaxed(), "relaxed_limits")] if beyond_limits else []
     )
     return [(quiet, "thinned_margins"), (quiet.finer(), "finer_step"), *relaxed]
@@ -181,8 +184,8 @@ def _refuse_what_the_relaxation_proves(guide: Guide, settings, beyond_limits: bo
 
     widest = settings.thinned() or settings
     automaton = guide(widest)
-    fastest = settings.relaxed().max_speed if beyond_limits else settings.max_speed
-    conflict = provably_unplannable(automaton, max(fastest, settings.max_speed))
+    fastest = max(settings.relaxed().max_speed, settings.max_speed) if beyond_limits else settings.max_speed
+    conflict = provably_unplannable(automaton, fastest)
     if conflict:
         raise UnsatisfiableScenario(
             "no plan exists at these values (its linear relaxation has no solution)\n"

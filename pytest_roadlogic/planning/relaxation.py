@@ -26,10 +26,9 @@ paths (one constraint taken out at a time, kept out when the rest still fail on 
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable
 
 from ..logic.automaton import SymbolicAutomaton, Transition
-from ..logic.guards import POSITION, SPEED, And, Bound, Guard
+from ..logic.guards import POSITION, SPEED, Bound, required_bounds
 
 MAX_PATHS = 64  # an automaton with more paths to its end is left to the planner
 
@@ -74,15 +73,6 @@ def _paths(automaton: SymbolicAutomaton) -> list[list[Transition]] | None:
     return found
 
 
-def _bounds(guard: Guard) -> Iterable[Bound]:
-    """The bounds a guard is a conjunction of (of its conjunctive part; a disjunction is dropped)."""
-    if isinstance(guard, Bound):
-        yield guard
-    elif isinstance(guard, And):
-        for part in guard.parts:
-            yield from _bounds(part)
-
-
 def _linear(bound: Bound) -> bool:
     return bound.term.quantity in (POSITION, SPEED)
 
@@ -95,8 +85,10 @@ class _PathRelaxation:
         self.automaton, self.path, self.max_speed = automaton, path, max_speed
         self.actors = list(automaton.actors)
         # per instant, the bounds of its transition's guard; per interval, its location's invariant
-        self.at = [[b for b in _bounds(t.guard) if _linear(b)] for t in path]
-        self.during = [[b for b in _bounds(automaton.location(t.target).invariant) if _linear(b)] for t in path[:-1]]
+        self.at = [[b for b in required_bounds(t.guard) if _linear(b)] for t in path]
+        self.during = [
+            [b for b in required_bounds(automaton.location(t.target).invariant) if _linear(b)] for t in path[:-1]
+        ]
         # the timed phases and the instants that start and end them on this path
         started: dict[int, int] = {}
         self.durations: list[tuple[int, int, object]] = []

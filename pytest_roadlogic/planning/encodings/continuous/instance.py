@@ -12,7 +12,7 @@ import math
 from fractions import Fraction
 
 from ....logic.automaton import SpeedGain, SymbolicAutomaton, Travelled
-from ....logic.guards import HEADWAY, LANE, POSITION, SPEED, TRAVELED, And, Bound, Guard, Not
+from ....logic.guards import HEADWAY, LANE, POSITION, SPEED, TRAVELED, Bound, Guard, Not, required_bounds
 from ...facts import atom, guard_nodes, inset, origin, with_automaton
 from .settings import ContinuousSettings
 
@@ -97,7 +97,7 @@ def first_speeds(automaton: SymbolicAutomaton, settings: ContinuousSettings) -> 
         guards += [t.guard for t in automaton.outgoing(location)]
         for actor, band in automaton.location(location).targets():
             found.setdefault(actor, round(min(max(band.value, settings.min_speed), settings.max_speed), 2))
-    for bound in (b for guard in guards for b in _required_bounds(guard)):
+    for bound in (b for guard in guards for b in required_bounds(guard)):
         term = bound.term
         if term.quantity != SPEED or term.reference is not None or term.actor in found:
             continue
@@ -124,7 +124,7 @@ def spacing(automaton: SymbolicAutomaton, settings: ContinuousSettings) -> float
     guards = [transition.guard for transition in automaton.transitions]
     guards += [location.invariant for location in automaton.locations]
     for guard in guards:
-        required = _required_bounds(guard)
+        required = required_bounds(guard)
         for bound in required:
             term = bound.term
             if term.quantity != POSITION or term.reference is None or not _one_lane(required, *term.actors):
@@ -148,16 +148,6 @@ def _one_lane(bounds: list[Bound], a: str, b: str) -> bool:
         if term.reference is None and bound.low == bound.high:
             lanes[term.actor] = (bound.low, bound.high)
     return a in lanes and lanes.get(a) == lanes.get(b)
-
-
-def _required_bounds(guard: Guard) -> list[Bound]:
-    """The bounds a guard requires whichever way it holds: those of its conjunctions, not those
-    under a disjunction or a negation."""
-    if isinstance(guard, Bound):
-        return [guard]
-    if isinstance(guard, And):
-        return [b for part in guard.parts for b in _required_bounds(part)]
-    return []
 
 
 def decimal(value: float) -> str:
