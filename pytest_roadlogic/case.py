@@ -11,24 +11,12 @@ from __future__ import annotations
 
 import json
 import shlex
-from dataclasses import asdict, dataclass, field, fields, replace
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
 from .confinement import ReadRoots, UnreadableFile, project_root, read_bounded, regular_file_problem, shown
-from .settings import (
-    BASE,
-    CONTINUOUS,
-    DEFAULT_SIMULATOR,
-    DUT_NONE,
-    GRID,
-    OPTIONS_BY_NAME,
-    REFINED,
-    STANDARD_DIALECT,
-    OptionError,
-    RunSettings,
-    speed_band,
-)
+from .settings import BASE, OPTIONS, OptionError, RunSettings
 
 
 class CaseFileError(ValueError):
@@ -37,76 +25,49 @@ class CaseFileError(ValueError):
 
 @dataclass(frozen=True)
 class Case:
+    """A case: the scenario (``path``, its ``scenario``), what makes it this case among the
+    scenario's (``values`` sampled, or the planner's ``instance``), the run settings it was made
+    under, the drivers a hook gave, and the versions of what it ran on."""
+
     path: str
     scenario: str
-    seed: int = 1
-    strategy: str = REFINED
+    settings: RunSettings = field(default_factory=RunSettings)
     values: dict[str, Any] = field(default_factory=dict)  # the sample (refined strategy)
     instance: int = 0  # which of the planner's instances, from 0 (base strategy)
-    lanes: int | None = None
-    road_map: str | None = None  # the map option's OpenDRIVE file (a scenario's own set_map is in its file)
-    road_speed: str | None = None  # "LOW..HIGHmps" (settings.speed_band); None in older case files: the default
-    dialect: str = STANDARD_DIALECT
-    encoding: str | None = None  # None in case files older than the continuous encoding: the grid's
-    max_horizon: int | None = None
-    planning_time_limit: float | None = None
-    simulation_time_limit: float | None = None
-    max_tries: int = 5
-    simulator: str = DEFAULT_SIMULATOR
     # vehicle -> "module:QualName" of the driver a pytest_roadlogic_driver hook gave it (the others
     # are the simulator's own): a replay builds the same ones or refuses (simulation/named_drivers.py)
     drivers: dict[str, str] = field(default_factory=dict)
-    # the vehicle under test and its oracles (settings.RunSettings.under_test); None in older case files: none
-    dut: str | None = None
-    dut_driver: str | None = None
-    replan_period: float | None = None
-    min_ttc: float | None = None
-    min_gap: float | None = None
-    max_decel: float | None = None
     versions: dict[str, str] = field(default_factory=dict)  # of the packages a run depends on, when written
 
     @classmethod
-    def of(cls, path: str | Path, scenario: str, settings: RunSettings, **identity) -> Case:
-        """The case of ``scenario`` in ``path`` under ``settings``; ``identity`` gives the strategy,
-        the values (refined) or the instance (base)."""
-        return cls(
-            path=str(path),
-            scenario=scenario,
-            road_speed=f"{settings.road_speed[0]!r}..{settings.road_speed[1]!r}mps",
-            encoding=settings.encoding,
-            max_tries=settings.tries,
-            dut=settings.dut,
-            **{name: getattr(settings, name) for name in _COPIED},
-            **identity,
-        )
+    def of(
+        cls, path: str | Path, scenario: str, settings: RunSettings, strategy: str | None = None, **identity
+    ) -> Case:
+        """The case of ``scenario`` in ``path`` under ``settings``; ``strategy`` (the settings' when
+        not given) and ``identity`` give the values (refined) or the instance (base)."""
+        if strategy is not None:
+            settings = replace(settings, strategy=strategy)
+        return cls(path=str(path), scenario=scenario, settings=settings, **identity)
 
     @property
-    def planning_encoding(self) -> str:
-        """The encoding that planned this case (a case file without one predates the continuous one)."""
-        return self.encoding or GRID
+    def strategy(self) -> str:
+        return self.settings.strategy
 
-    def settings(self) -> RunSettings:
-        """The run settings this case was made under (defaults where an older case file is silent)."""
-        given = {
-            "strategy": self.strategy,
-            "road_speed": speed_band(self.road_speed) if self.road_speed is not None else None,
-            "encoding": self.planning_encoding,
-            "tries": self.max_tries,
-            # a case file from before vehicles under test drove every vehicle by its plan
-            "dut": self.dut if self.dut is not None else DUT_NONE,
-            **{name: getattr(self, name) for name in _COPIED},
-        }
-        return RunSettings(**{k: v for k, v in given.items() if v is not None})
+    @property
+    def seed(self) -> int:
+        return self.settings.seed
 
     def within(self, limits: RunSettings) -> Case:
         """This case with its time limits no higher than ``limits``' (the command line's or the
         session's): a case file is data, and ``"planning_time_limit": 1e9`` must not raise what the
         user allows (``--plan-timeout 5`` had not lowered it)."""
+        own = self.settings
         return replace(
             self,
-            planning_time_limit=min(self.planning_time_limit or limits.planning_time_limit, limits.planning_time_limit),
-            simulation_time_limit=min(
-                self.simulation_time_limit or limits.simulation_time_limit, limits.simulation_time_limit
+            settings=replace(
+                own,
+                planning_time_limit=min(own.planning_time_limit, limits.planning_time_limit),
+                simulation_time_limit=min(own.simulation_time_limit, limits.simulation_time_limit),
             ),
         )
 
@@ -148,7 +109,20 @@ class Case:
         ]
 
     def to_json(self) -> str:
-        return json.dumps(asdict(self), indent=2, sort_keys=True)
+        """The case file: its identity, and each run setting a case records (``Option.in_case``)
+        under its key, as a number or as the text its option reads back."""
+        data = {
+            "path": self.path,
+            "scenario": self.scenario,
+            "values": self.values,
+            "instance": self.instance,
+            "drivers": self.drivers,
+            "versions": self.versions,
+        }
+        for option in CASE_OPTIONS:
+            value = getattr(self.settings, option.field)
+            data[option.key] = value if value is None or option.kind is not str else option.text(value)
+        return json.dumps(data, indent=2, sort_keys=True)
 
     def save(self, path: str | Path) -> Path:
         from .artifacts.files import write_text
@@ -160,10 +134,11 @@ class Case:
     def load(cls, path: str | Path) -> Case:
         try:
             data = json.loads(read_bounded(path, MAX_CASE_BYTES).decode("utf-8"))
-            known = {f.name for f in fields(cls)}
+            known = {"path", "scenario", "values", "instance", "drivers", "versions"} | {o.key for o in CASE_OPTIONS}
             if not isinstance(data, dict) or not {"path", "scenario"} <= set(data) or set(data) - known:
                 raise TypeError(f"expected the keys {', '.join(sorted(known))}")
-            return cls(**_check_kinds(data))
+            identity = _check_kinds(data)
+            return cls(settings=_settings_of(data), **identity)
         except UnreadableFile as error:
             raise CaseFileError(f"cannot read the case file: {error}") from None
         except (json.JSONDecodeError, TypeError, UnicodeDecodeError, RecursionError) as error:
@@ -172,7 +147,8 @@ class Case:
             raise CaseFileError(f"a value the tool cannot run with: {error}") from None
 
     def command(self, case_file: str | Path | None = None) -> str:
-        """The shell command that replays this case: from its case file when there is one."""
+        """The shell command that replays this case: from its case file when there is one, else
+        from the scenario file with each recorded setting that is not its option's default."""
         if case_file is not None:
             return f"roadlogic replay {shlex.quote(str(case_file))}"
         parts = ["roadlogic", "replay", self.path, "--scenario", self.scenario, "--seed", str(self.seed)]
@@ -180,84 +156,22 @@ class Case:
             parts += ["--strategy", BASE, "--instance", str(self.instance)]
         if self.values:
             parts += ["--values", json.dumps(self.values, sort_keys=True)]
-        for option, value in (
-            ("--lanes", self.lanes),
-            ("--map", self.road_map),
-            ("--road-speed", self.road_speed),
-            ("--dialect", None if self.dialect == STANDARD_DIALECT else self.dialect),
-            ("--encoding", None if self.planning_encoding == CONTINUOUS else self.planning_encoding),
-            ("--horizon", self.max_horizon),
-            ("--tries", self.max_tries),
-            ("--dut", self.dut),
-            ("--dut-driver", self.dut_driver),
-            ("--replan-period", self.replan_period),
-            ("--min-ttc", self.min_ttc),
-            ("--min-gap", self.min_gap),
-            ("--max-decel", self.max_decel),
-        ):
-            if value is not None:
-                parts += [option, str(value)]
-        if self.simulator != DEFAULT_SIMULATOR:
-            parts += ["--simulator", self.simulator]
+        for option in REPLAY_OPTIONS:
+            value = getattr(self.settings, option.field)
+            if value is not None and value != option.default:
+                parts += [f"--{option.name}", option.text(value)]
         for vehicle, name in sorted(self.drivers.items()):
             parts += ["--driver", f"{vehicle}={name}"]
         return shlex.join(parts)
 
 
-# the run settings a case keeps under their own names (the others: road_speed as text, encoding,
-# tries as max_tries, dut; strategy with the case's identity)
-_COPIED = (
-    "seed",
-    "lanes",
-    "road_map",
-    "dialect",
-    "max_horizon",
-    "planning_time_limit",
-    "simulation_time_limit",
-    "simulator",
-    "dut_driver",
-    "replan_period",
-    "min_ttc",
-    "min_gap",
-    "max_decel",
+# the run settings a case file records, and those its replay command gives as flags (the seed and
+# the strategy are the case's identity, written first; the time limits are the replaying user's)
+CASE_OPTIONS = tuple(option for option in OPTIONS if option.in_case)
+REPLAY_OPTIONS = tuple(
+    option for option in CASE_OPTIONS if option.name not in ("seed", "strategy", "plan-timeout", "sim-timeout")
 )
-# the case's fields that are run settings, by the option (settings.OPTIONS) that reads and checks them
-_SETTING_OPTIONS = {
-    "seed": "seed",
-    "strategy": "strategy",
-    "lanes": "lanes",
-    "road_map": "map",
-    "road_speed": "road-speed",
-    "dialect": "dialect",
-    "encoding": "encoding",
-    "max_horizon": "horizon",
-    "planning_time_limit": "plan-timeout",
-    "simulation_time_limit": "sim-timeout",
-    "max_tries": "tries",
-    "simulator": "simulator",
-    "dut": "dut",
-    "dut_driver": "dut-driver",
-    "replan_period": "replan-period",
-    "min_ttc": "min-ttc",
-    "min_gap": "min-gap",
-    "max_decel": "max-decel",
-}
-
-
-# the case's fields the options read that hold numbers (whole numbers where the option reads one);
-# the other setting fields hold text
-_NUMBERS = {
-    "seed": int,
-    "lanes": int,
-    "max_horizon": int,
-    "max_tries": int,
-    "planning_time_limit": float,
-    "simulation_time_limit": float,
-    "replan_period": float,
-    "min_ttc": float,
-    "min_gap": float,
-    "max_decel": float,
-}
+IDENTITY = ("path", "scenario", "values", "instance", "drivers", "versions")
 # sizes past anything the tool writes: a case file is read whole before it is checked, and a
 # 100 MB string in ``versions`` had gone to stderr in a warning
 MAX_CASE_BYTES = 1_000_000
@@ -267,22 +181,21 @@ MAX_ENTRIES = 1_000  # entries of ``values``, ``drivers`` or ``versions``
 MAX_INSTANCE = 999
 
 
-def _check_kinds(data: dict[str, Any]) -> dict[str, Any]:
-    """``data`` with each setting read by its option, or ``TypeError`` / ``OptionError`` naming the
-    field: a case file is data from anywhere, checked (kinds, ranges, sizes) before anything runs (a
-    non-numeric seed had been a traceback under pytest, ``"lanes": "4"`` a ``TypeError``)."""
-    checked = dict(data)
-    for name in ("path", "scenario"):
-        if not isinstance(data[name], str) or len(data[name]) > MAX_TEXT:
-            raise TypeError(f"{name} must be a string of at most {MAX_TEXT} characters")
-    for name, option in _SETTING_OPTIONS.items():
-        value = data.get(name)
+def _settings_of(data: dict[str, Any]) -> RunSettings:
+    """The run settings a case file records, each read and checked by its option, or
+    ``TypeError`` / ``OptionError`` naming the field; a field the file lacks is what it meant when
+    it was written (``Option.absent``). A case file is data from anywhere: kinds, ranges and sizes
+    are checked before anything runs."""
+    values = {}
+    for option in CASE_OPTIONS:
+        value = data.get(option.key)
         if value is None:
+            values[option.field] = option.absent
             continue
-        kind = _NUMBERS.get(name)
-        if kind is None and not isinstance(value, str):
+        name, kind = option.key, option.kind
+        if kind is str and not isinstance(value, str):
             raise TypeError(f"{name} must be a string")
-        if kind is not None and (
+        if kind is not str and (
             isinstance(value, bool) or not isinstance(value, (int, float) if kind is float else int)
         ):
             raise TypeError(
@@ -291,10 +204,17 @@ def _check_kinds(data: dict[str, Any]) -> dict[str, Any]:
         if isinstance(value, str) and len(value) > MAX_TEXT:
             raise TypeError(f"{name} must be at most {MAX_TEXT} characters")
         try:
-            parsed = OPTIONS_BY_NAME[option].parse(str(value))
+            values[option.field] = option.parse(str(value))
         except OptionError as error:
             raise OptionError(f"{name}: {error}") from None
-        checked[name] = parsed if name != "road_speed" else value
+    return RunSettings(**values)
+
+
+def _check_kinds(data: dict[str, Any]) -> dict[str, Any]:
+    """The identity of the case in ``data`` (``IDENTITY``), checked, or ``TypeError`` naming the field."""
+    for name in ("path", "scenario"):
+        if not isinstance(data[name], str) or len(data[name]) > MAX_TEXT:
+            raise TypeError(f"{name} must be a string of at most {MAX_TEXT} characters")
     instance = data.get("instance", 0)
     if not isinstance(instance, int) or isinstance(instance, bool) or not 0 <= instance <= MAX_INSTANCE:
         raise TypeError(f"instance must be a whole number from 0 to {MAX_INSTANCE}")
@@ -319,14 +239,28 @@ def _check_kinds(data: dict[str, Any]) -> dict[str, Any]:
             )
         ):
             raise TypeError(f"{name} must map at most {MAX_ENTRIES} names to strings of at most {MAX_TEXT} characters")
-    return checked
+    return {name: data[name] for name in IDENTITY if name in data}
 
 
-# what a replay depends on besides the case: a different solver or motion planner may plan or drive otherwise
-VERSIONED = ("pytest-roadlogic", "clingo", "clingo-lpx", "frenetix", "commonroad-io", "hypothesis", "numpy", "scipy")
+# what a run's plan and trace depend on besides the case (the solvers, the linear programs'
+# solver, the motion planner, the sampler): the versions a case file records and a replay compares,
+# and those a bench reports
+VERSIONED = (
+    "pytest-roadlogic",
+    "clingo",
+    "clingo-dl",
+    "clingo-lpx",
+    "highspy",
+    "scipy",
+    "frenetix",
+    "commonroad-io",
+    "hypothesis",
+    "numpy",
+)
 
 
 def installed_versions() -> dict[str, str]:
+    """The Python version and each installed package of ``VERSIONED`` by its version."""
     import platform
     from importlib.metadata import PackageNotFoundError, version
 

@@ -36,12 +36,12 @@ from .outcomes import CONFORMANT, PASSED
 from .settings import (
     ARTIFACT_LEVELS,
     BASE,
+    OPTIONS,
     OPTIONS_BY_NAME,
     REFINED,
     STRATEGIES,
     OptionError,
     RunSettings,
-    lane_count,
     whole_number,
 )
 from .settings import (
@@ -49,25 +49,11 @@ from .settings import (
 )
 
 EXIT_ACCEPTED, EXIT_REJECTED, EXIT_INPUT = 0, 1, 2
-LANES_HELP = "lanes of the road (default: from the scenario: its path_min_driving_lanes/path_max_lanes and the lanes it names, at least 3)"
-# the run settings each command takes, as flags read from settings.OPTIONS
 DRIVER_HELP = "drive VEHICLE with the class MODULE:CLASS (built without arguments; see pytest_roadlogic.simulation.Driver) instead of the simulator's own; repeat for several"
-RUN_FLAGS = (
-    "seed",
-    "tries",
-    "road-speed",
-    "encoding",
-    "horizon",
-    "plan-timeout",
-    "sim-timeout",
-    "simulator",
-    "dut",
-    "dut-driver",
-    "replan-period",
-    "min-ttc",
-    "min-gap",
-    "max-decel",
-)
+# the run settings as flags, read from settings.OPTIONS: those that say which road a scenario is
+# on (every command about a scenario takes them), and the rest of what a case records
+ROAD_FLAGS = ("lanes", "dialect", "map")
+RUN_FLAGS = tuple(o.name for o in OPTIONS if o.in_case and o.name not in (*ROAD_FLAGS, "strategy"))
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -108,7 +94,6 @@ def main(argv: list[str] | None = None) -> int:
     replay.add_argument(
         "--instance", type=_flag(parse_count), default=0, help="with an .osc file: which plan, from 0 (base)"
     )
-    replay.add_argument("--lanes", type=_flag(lane_count), default=None, help=LANES_HELP)
     replay.add_argument(
         "--driver",
         type=_driver,
@@ -117,7 +102,7 @@ def main(argv: list[str] | None = None) -> int:
         metavar="VEHICLE=MODULE:CLASS",
         help="with an .osc file: " + DRIVER_HELP,
     )
-    _run_flags(replay, ("dialect", "map"), "with an .osc file: ")
+    _run_flags(replay, ROAD_FLAGS, "with an .osc file: ")
     _run_flags(replay, RUN_FLAGS, "with an .osc file: ")
     replay.add_argument("--out", type=Path, default=Path("out"), help="artifact directory (default out/)")
     _artifacts_flag(replay)
@@ -127,8 +112,7 @@ def main(argv: list[str] | None = None) -> int:
     check.add_argument(
         "--syntax-only", action="store_true", help="stop after parsing (for files written for other tools)"
     )
-    check.add_argument("--lanes", type=_flag(lane_count), default=None, help=LANES_HELP)
-    _run_flags(check, ("dialect", "map"))
+    _run_flags(check, ROAD_FLAGS)
     _allow_read(check)
     automaton = _scenario_command(
         commands, "automaton", "write a scenario's symbolic automaton as Graphviz DOT (and PNG when dot is installed)"
@@ -255,8 +239,7 @@ def _run_settings(args: argparse.Namespace, **extra) -> RunSettings:
         value = getattr(args, f"setting_{name.replace('-', '_')}", None)
         if value is not None:
             values[option.field] = value
-    lanes = getattr(args, "lanes", None)
-    return RunSettings(**values, lanes=lanes, **extra)
+    return RunSettings(**values, **extra)
 
 
 def _driver(text: str) -> tuple[str, str]:
@@ -320,8 +303,7 @@ def _scenario_command(commands, name: str, help: str) -> argparse.ArgumentParser
     command = commands.add_parser(name, help=help)
     command.add_argument("file", type=Path, help="an .osc file")
     command.add_argument("--scenario", help="the scenario when the file declares several (default: the first)")
-    command.add_argument("--lanes", type=_flag(lane_count), default=None, help=LANES_HELP)
-    _run_flags(command, ("dialect", "map"))
+    _run_flags(command, ROAD_FLAGS)
     _allow_read(command)
     return command
 
@@ -466,7 +448,7 @@ def _check(args: argparse.Namespace) -> int:
     failed = 0
     for path in files:
         ok, report = checked_report(
-            path, args.syntax_only, args.lanes, args.setting_dialect, _roots(args, path), args.setting_map
+            path, args.syntax_only, args.setting_lanes, args.setting_dialect, _roots(args, path), args.setting_map
         )
         if report:
             print(report)
@@ -480,7 +462,7 @@ def _load(args: argparse.Namespace):
     from .pipeline import load_scenario
 
     return load_scenario(
-        args.file, args.scenario, args.lanes, args.setting_dialect, _roots(args, args.file), args.setting_map
+        args.file, args.scenario, args.setting_lanes, args.setting_dialect, _roots(args, args.file), args.setting_map
     )
 
 
@@ -624,7 +606,9 @@ def _replay(args: argparse.Namespace) -> int:
 
             roots = _roots(args, args.case)
             name = (
-                load_file(args.case, args.lanes, dialect=args.setting_dialect, roots=roots, road_map=args.setting_map)
+                load_file(
+                    args.case, args.setting_lanes, dialect=args.setting_dialect, roots=roots, road_map=args.setting_map
+                )
                 .scenario_to_run(args.scenario)
                 .name
             )
@@ -735,11 +719,14 @@ def _print_unasked(plan, automaton, registry, indent: str = "") -> None:
 def oracle_line(report, replans: int) -> str:
     """The oracles' values of a vehicle under test in a line (``inf``: no one ahead in its path;
     a value of 0 had been printed as ``inf``)."""
-    values = {k: "inf" if v is None else v for k, v in report.values().items()}
-    return (
-        f"vehicle under test {report.vehicle}: least time to collision {values['min_time_to_collision_s']} s, "
-        f"least gap {values['min_gap_m']} m, hardest braking {values['max_deceleration_mps2']} m/s^2, {replans} replans"
+    from .oracles import ORACLES
+
+    values = report.values()
+    measured = ", ".join(
+        f"{oracle.title} {'inf' if values[oracle.value_key] is None else values[oracle.value_key]} {oracle.unit}"
+        for oracle in ORACLES
     )
+    return f"vehicle under test {report.vehicle}: {measured}, {replans} replans"
 
 
 def _bench(args: argparse.Namespace) -> int:

@@ -27,6 +27,7 @@ from pathlib import Path
 import pytest
 
 from .dut import NoSuchVehicle
+from .oracles.registry import ORACLES
 from .outcomes import (
     DUT_FAILED,
     NOT_EXERCISED,
@@ -67,7 +68,8 @@ def pytest_addoption(parser: pytest.Parser) -> None:
         parser.addini(ini, help, default="" if default is None else str(default))
 
     for option in OPTIONS:
-        add(option.name, option.help, option.default, option.default_text)
+        default = None if option.default is None else option.text(option.default)
+        add(option.name, option.help, default, option.default_text)
     for name, help, default in EXTRA_OPTIONS:
         add(name, help, default)
 
@@ -171,7 +173,7 @@ class OscWarning(pytest.PytestWarning):
     """A checker warning about an .osc file (an unused parameter, an idle actor)."""
 
 
-ORACLE_OPTIONS = ("min-ttc", "min-gap", "max-decel")  # what pytest_roadlogic_oracles may set per scenario
+ORACLE_OPTIONS = tuple(oracle.option for oracle in ORACLES)  # what pytest_roadlogic_oracles may set per scenario
 
 
 class OscFile(pytest.File):
@@ -295,7 +297,7 @@ class ScenarioItem(pytest.Item):
         # vehicle under test's failure with the default driver, and passed
         runner = Runner(
             self.scenario,
-            case.settings() if case is not None else settings,
+            case.settings if case is not None else settings,
             self.drivers,
             self._simulator(),
             explain=settings.strategy == BASE,
@@ -562,21 +564,18 @@ def _hypothesis_statistics(item: pytest.Item):
 
 
 def _oracle_properties(reports: list) -> list[tuple[str, object]]:
-    """JUnit properties of the vehicle under test over an item's cases: its closest time to
-    collision and gap, its hardest braking (none without a vehicle under test)."""
+    """JUnit properties of the vehicle under test over an item's cases: each oracle's value
+    nearest to failing (``dut_<value key>``; none without a vehicle under test)."""
     if not reports:
         return []
     values = [report.values() for report in reports]
 
-    def extreme(name: str, pick):
-        found = [v[name] for v in values if v[name] is not None]
-        return pick(found) if found else "inf"
+    def worst(oracle) -> object:
+        found = [v[oracle.value_key] for v in values if v[oracle.value_key] is not None]
+        return oracle.worst(found) if found else "inf"
 
-    return [
-        ("vehicle_under_test", reports[0].vehicle),
-        ("dut_min_time_to_collision_s", extreme("min_time_to_collision_s", min)),
-        ("dut_min_gap_m", extreme("min_gap_m", min)),
-        ("dut_max_deceleration_mps2", extreme("max_deceleration_mps2", max)),
+    return [("vehicle_under_test", reports[0].vehicle)] + [
+        (f"dut_{oracle.value_key}", worst(oracle)) for oracle in ORACLES
     ]
 
 

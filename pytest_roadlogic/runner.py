@@ -312,10 +312,11 @@ def replay(
     ``roots`` (``confinement.ReadRoots``): where the scenario's imports may be read from."""
     from .frontend import load_file
 
-    scenario = load_file(case.path, case.lanes, dialect=case.dialect, roots=roots, road_map=case.road_map).scenario(
-        case.scenario
-    )
-    return Runner(scenario, case.settings(), drivers, simulator).run_case(case)
+    settings = case.settings
+    scenario = load_file(
+        case.path, settings.lanes, dialect=settings.dialect, roots=roots, road_map=settings.road_map
+    ).scenario(case.scenario)
+    return Runner(scenario, settings, drivers, simulator).run_case(case)
 
 
 def _events(result: CaseResult) -> None:

@@ -12,8 +12,14 @@ from __future__ import annotations
 import math
 import re
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, make_dataclass
+from dataclasses import field as dataclass_field
 from typing import Any
+
+from .dut.registry import BUILT_IN as BUILT_IN_DRIVERS
+from .dut.registry import DEFAULT as DEFAULT_DUT_DRIVER
+from .dut.registry import driver_names
+from .oracles.registry import ORACLES
 
 REFINED, BASE = "refined", "base"
 STRATEGIES = (REFINED, BASE)
@@ -199,9 +205,11 @@ ROAD_SPEED = speed_band(ROAD_SPEED_TEXT)  # m/s
 
 # the vehicle under test (dut.roles): the scenario's own dut, none (every vehicle follows its plan), or a name
 DUT_AUTO, DUT_NONE = "auto", "none"
-# the reference drivers of a vehicle under test a hook gives no driver (dut.roles.REFERENCE_DRIVERS)
-DUT_DRIVERS = ("acc", "late-acc", "weak-braking-acc")
-dut_driver = one_of(DUT_DRIVERS, "a reference driver of the vehicle under test")
+
+
+def dut_driver(text: str) -> str:
+    """A reference driver's name, one of ``dut.registry.driver_names()``."""
+    return one_of(driver_names(), "a reference driver of the vehicle under test")(text)
 
 
 def replan_period(text: str) -> float:
@@ -222,17 +230,26 @@ def name(text: str) -> str:
     return str(text).strip()
 
 
+_DEFAULT = object()  # an Option's ``before``: a case file without the field meant the default
+
+
 @dataclass(frozen=True)
 class Option:
     """One setting a user can give: ``--roadlogic-<name>`` / ini ``roadlogic_<name>`` under pytest,
-    ``--<name>`` on the command line, ``RunSettings.<field>`` in Python."""
+    ``--<name>`` on the command line, ``RunSettings.<field>`` in Python, and (unless it says how
+    cases are drawn rather than what one is) a field of a case file and a flag of its replay."""
 
     name: str
     field: str  # the RunSettings field it sets
     parse: Callable[[str], Any]
-    default: Any
+    default: Any  # the value (as ``parse`` returns it) where the user gives none
     help: str
     shown: str = ""  # how help texts name the default, when it is not a value (None: decided elsewhere)
+    kind: type = str  # what a case file holds for it: a whole number, a number, or its text (``text``)
+    in_case: bool = True  # a case file records it and its replay takes it (not: how many cases, how drawn)
+    case_key: str = ""  # its key in a case file, when not the field's name (older files' spelling)
+    before: Any = _DEFAULT  # what a case file without it meant (written before the option existed)
+    text: Callable[[Any], str] = str  # a value as text that ``parse`` reads back
 
     @property
     def default_text(self) -> str:
@@ -241,6 +258,27 @@ class Option:
     @property
     def ini(self) -> str:
         return f"roadlogic_{self.name.replace('-', '_')}"
+
+    @property
+    def key(self) -> str:
+        """Its key in a case file."""
+        return self.case_key or self.field
+
+    @property
+    def absent(self) -> Any:
+        """Its value in a case file without it."""
+        return self.default if self.before is _DEFAULT else self.before
+
+
+def speed_band_text(band: tuple[float, float]) -> str:
+    """A speed band (m/s) as the text ``speed_band`` reads back exactly."""
+    return f"{band[0]!r}..{band[1]!r}mps"
+
+
+def threshold_option(oracle) -> Option:
+    """The option that sets ``oracle``'s threshold (an ``oracles.registry.Oracle``)."""
+    parse = positive(f"a {oracle.quantity}", f"{oracle.default:g}")
+    return Option(oracle.option, oracle.setting, parse, oracle.default, oracle.help, kind=float)
 
 
 OPTIONS = (
@@ -257,14 +295,16 @@ OPTIONS = (
         whole_number(1, "a number of examples"),
         10,
         "samples (refined) or plans (base) per scenario",
+        in_case=False,
     ),
-    Option("seed", "seed", seed, 1, "fixes sampling, planning and simulation"),
+    Option("seed", "seed", seed, 1, "fixes sampling, planning and simulation", kind=int),
     Option(
         "shards",
         "shards",
         whole_number(1, "a number of shards"),
         1,
         "items per scenario, each drawing a disjoint share of its samples (refined): spread one scenario over pytest-xdist workers",
+        in_case=False,
     ),
     Option(
         "no-plan",
@@ -272,6 +312,7 @@ OPTIONS = (
         no_plan_policy,
         FAIL,
         "a sample at which no plan exists: fail the item (the scenario's ranges hold values no concrete scenario meets), or discard it like assume() (refined)",
+        in_case=False,
     ),
     Option(
         "tries",
@@ -279,8 +320,19 @@ OPTIONS = (
         whole_number(1, "a number of tries", 100),
         5,
         "plans to try per case when the monitor rejects the simulation",
+        kind=int,
+        case_key="max_tries",
     ),
-    Option("lanes", "lanes", lanes_or_none, None, "lanes of the road for every scenario", "each scenario's own"),
+    Option(
+        "lanes",
+        "lanes",
+        lanes_or_none,
+        None,
+        "lanes of the road (from the scenario when not given: its path_min_driving_lanes/path_max_lanes and the "
+        "lanes it names, at least 3)",
+        "each scenario's own",
+        kind=int,
+    ),
     Option(
         "map",
         "road_map",
@@ -294,8 +346,10 @@ OPTIONS = (
         "road-speed",
         "road_speed",
         speed_band,
-        ROAD_SPEED_TEXT,
+        ROAD_SPEED,
         "the speeds a vehicle starts at where the scenario names none (its first phase's speed otherwise)",
+        ROAD_SPEED_TEXT,
+        text=speed_band_text,
     ),
     Option(
         "dialect",
@@ -310,6 +364,7 @@ OPTIONS = (
         encoding,
         CONTINUOUS,
         "continuous: real-valued speeds and positions (asp/continuous/); grid: the paper's integer grid with a run-up from standstill (asp/grid/); or one a package registers",
+        before=GRID,  # case files from before the continuous encoding
     ),
     Option(
         "horizon",
@@ -318,14 +373,23 @@ OPTIONS = (
         None,
         f"planning horizon limit in steps of 1 s, at most {MAX_HORIZON}",
         f"the encoding's: {CONTINUOUS_HORIZON} continuous, {DEFAULT_HORIZON} grid",
+        kind=int,
     ),
-    Option("plan-timeout", "planning_time_limit", seconds, DEFAULT_PLAN_TIMEOUT, "seconds one planning may take"),
+    Option(
+        "plan-timeout",
+        "planning_time_limit",
+        seconds,
+        DEFAULT_PLAN_TIMEOUT,
+        "seconds one planning may take",
+        kind=float,
+    ),
     Option(
         "sim-timeout",
         "simulation_time_limit",
         seconds,
         DEFAULT_SIM_TIMEOUT,
         "seconds (wall clock) one simulation may take",
+        kind=float,
     ),
     Option(
         "simulator",
@@ -341,13 +405,15 @@ OPTIONS = (
         DUT_AUTO,
         "the vehicle under test, which drives itself and is judged by the oracles: auto (the scenario's dut.car or dut), "
         "none (every vehicle follows its plan: conformance only), or a vehicle's name",
+        before=DUT_NONE,  # case files from before vehicles under test: every vehicle followed its plan
     ),
     Option(
         "dut-driver",
         "dut_driver",
         dut_driver,
-        "acc",
-        f"the reference driver of a vehicle under test no pytest_roadlogic_driver hook drives: {', '.join(DUT_DRIVERS)}",
+        DEFAULT_DUT_DRIVER,
+        f"the reference driver of a vehicle under test no pytest_roadlogic_driver hook drives: {', '.join(BUILT_IN_DRIVERS)}, "
+        "or one a package registers",
     ),
     Option(
         "replan-period",
@@ -356,71 +422,40 @@ OPTIONS = (
         0.25,
         "seconds between replans of the other vehicles from what the vehicle under test really does (at least the "
         "simulation step, 0.1); 0: they follow their first plan",
+        kind=float,
     ),
-    Option(
-        "min-ttc",
-        "min_ttc",
-        positive("a time to collision", "1.5"),
-        1.5,
-        "seconds: a smaller time to collision of the vehicle under test with one ahead in its path fails it",
-    ),
-    Option(
-        "min-gap",
-        "min_gap",
-        positive("a gap", "2"),
-        2.0,
-        "metres bumper to bumper: a smaller gap of the vehicle under test to one ahead in its path fails it",
-    ),
-    Option(
-        "max-decel",
-        "max_decel",
-        positive("a deceleration", "8"),
-        8.0,
-        "m/s^2: harder braking of the vehicle under test fails it (8: beyond a car's hard braking)",
-    ),
+    *(threshold_option(oracle) for oracle in ORACLES),
 )
 OPTIONS_BY_NAME = {option.name: option for option in OPTIONS}
 
 
-@dataclass(frozen=True)
-class RunSettings:
-    """Everything that decides what a run does, besides the scenario, the sample and the drivers."""
+def _from_texts(
+    cls, texts: Mapping[str, str | None], origin: Callable[[Option], str] = lambda o: o.name
+) -> RunSettings:
+    """Settings from option texts by option name (a missing or None text keeps the default);
+    an unusable text raises ``OptionError`` naming the option as ``origin`` spells it."""
+    values = {}
+    for option in OPTIONS:
+        text = texts.get(option.name)
+        if text is None:
+            continue
+        try:
+            values[option.field] = option.parse(text)
+        except OptionError as error:
+            raise OptionError(f"{origin(option)}: {error}") from None
+    return cls(**values)
 
-    strategy: str = REFINED
-    examples: int = 10
-    seed: int = 1
-    shards: int = 1  # items per scenario (refined strategy), each with its share of the examples
-    tries: int = 5
-    no_plan: str = FAIL
-    lanes: int | None = None
-    road_map: str | None = None  # an OpenDRIVE file every scenario runs on (the map option)
-    road_speed: tuple[float, float] = ROAD_SPEED  # m/s (the road-speed option)
-    dialect: str = STANDARD_DIALECT
-    encoding: str = CONTINUOUS
-    max_horizon: int | None = None  # the encoding's own
-    planning_time_limit: float = DEFAULT_PLAN_TIMEOUT
-    simulation_time_limit: float = DEFAULT_SIM_TIMEOUT
-    simulator: str = DEFAULT_SIMULATOR
-    dut: str = DUT_AUTO  # the vehicle under test: auto, none or a vehicle's name (dut.UnderTest)
-    dut_driver: str = "acc"
-    replan_period: float = 0.25  # s (reactive execution); 0: the other vehicles follow their first plan
-    min_ttc: float = 1.5  # s: the oracles' thresholds (oracles.Thresholds)
-    min_gap: float = 2.0  # m
-    max_decel: float = 8.0  # m/s^2
 
-    @classmethod
-    def from_texts(
-        cls, texts: Mapping[str, str | None], origin: Callable[[Option], str] = lambda o: o.name
-    ) -> RunSettings:
-        """Settings from option texts by option name (a missing or None text keeps the default);
-        an unusable text raises ``OptionError`` naming the option as ``origin`` spells it."""
-        values = {}
-        for option in OPTIONS:
-            text = texts.get(option.name)
-            if text is None:
-                continue
-            try:
-                values[option.field] = option.parse(text)
-            except OptionError as error:
-                raise OptionError(f"{origin(option)}: {error}") from None
-        return cls(**values)
+# Everything that decides what a run does, besides the scenario, the sample and the drivers: one
+# field per option (``Option.field``), with the option's default, so that an option is written once.
+RunSettings = make_dataclass(
+    "RunSettings",
+    [(option.field, Any, dataclass_field(default=option.default)) for option in OPTIONS],
+    frozen=True,
+    namespace={
+        "__doc__": "Everything that decides what a run does, besides the scenario, the sample and the drivers: "
+        "a field per option of ``settings.OPTIONS`` (``Option.field``), its default the option's.",
+        "__module__": __name__,
+        "from_texts": classmethod(_from_texts),
+    },
+)

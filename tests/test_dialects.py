@@ -60,7 +60,7 @@ def test_the_realistic_carla_file_and_its_library_check_clean_in_carlas_dialect(
 def test_the_dialect_travels_with_a_case_and_its_replay_command():
     case = Case.of(CARLA_FILE, "top", RunSettings(dialect="carla"), strategy="refined", values={})
     assert "--dialect carla" in case.command()
-    assert Case(**{**case.__dict__}).settings().dialect == "carla"
+    assert Case(**{**case.__dict__}).settings.dialect == "carla"
     assert "--dialect" not in Case.of(CARLA_FILE, "top", RunSettings(), strategy="refined", values={}).command()
 
 

@@ -75,11 +75,15 @@ def test_gap_and_time_to_collision_are_those_of_the_definition_on_random_traffic
     trace = trace_of(columns)
     report = judge(trace, "dut", Thresholds())
     gap, ttc = brute_force(trace, "dut", Thresholds().reaction_time)
-    assert report.gap.value == pytest.approx(gap) if math.isfinite(gap) else report.gap.value == math.inf
     assert (
-        report.time_to_collision.value == pytest.approx(ttc)
+        report.measured["gap"].value == pytest.approx(gap)
+        if math.isfinite(gap)
+        else report.measured["gap"].value == math.inf
+    )
+    assert (
+        report.measured["time_to_collision"].value == pytest.approx(ttc)
         if math.isfinite(ttc)
-        else not math.isfinite(report.time_to_collision.value)
+        else not math.isfinite(report.measured["time_to_collision"].value)
     )
 
 
@@ -91,7 +95,7 @@ def test_a_car_that_cuts_in_close_is_judged_only_after_the_reaction_time():
     y_npc = [3.5 if k < 10 else 0.0 for k in range(n)]
     trace = trace_of({"dut": {"x": x_dut, "speed": [20.0] * n}, "npc": {"x": x_npc, "y": y_npc, "speed": [20.5] * n}})
     report = judge(trace, "dut")
-    assert report.gap.value == pytest.approx(3.0 + 0.5 * 2.0)  # from t = 2 s, a second after it cut in
+    assert report.measured["gap"].value == pytest.approx(3.0 + 0.5 * 2.0)  # from t = 2 s, a second after it cut in
     assert not report.failed
 
 
@@ -118,10 +122,10 @@ def test_a_side_collision_is_caused_by_the_one_that_moved_across():
 def test_braking_harder_than_the_threshold_fails_and_the_margin_says_how_close_each_oracle_was():
     n = 10
     hard = trace_of({"dut": {"x": list(range(n)), "acceleration": [0, 0, -7.5, -7.5, 0, 0, 0, 0, 0, 0]}})
-    report = judge(hard, "dut", Thresholds(max_deceleration=7.0))
+    report = judge(hard, "dut", Thresholds.given(deceleration=7.0))
     assert report.failed and "braked at 7.50 m/s^2" in report.failures[0]
     assert report.margin() == pytest.approx((7.0 - 7.5) / 7.0)
-    gentle = judge(hard, "dut", Thresholds(max_deceleration=10.0))
+    gentle = judge(hard, "dut", Thresholds.given(deceleration=10.0))
     assert not gentle.failed and gentle.margin() == pytest.approx(0.25)
 
 

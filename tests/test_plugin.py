@@ -447,3 +447,30 @@ def test_the_summary_and_junit_say_which_vehicle_had_to_do_what_nothing_asked_wh
     properties = {p.get("name"): p.get("value") for p in ET.parse(pytester.path / "junit.xml").iter("property")}
     assert properties["unasked"] == "1"
     assert properties["unasked_changes"].startswith("slow changes speed from"), properties["unasked_changes"]
+
+
+def test_every_option_is_a_run_setting_and_unless_it_says_how_cases_are_drawn_a_case_field_and_a_replay_flag(
+    tmp_path, capsys
+):
+    import dataclasses
+
+    from pytest_roadlogic.case import CASE_OPTIONS, REPLAY_OPTIONS, Case
+    from pytest_roadlogic.cli import main
+    from pytest_roadlogic.oracles import ORACLES
+    from pytest_roadlogic.settings import OPTIONS, RunSettings
+
+    assert [f.name for f in dataclasses.fields(RunSettings)] == [o.field for o in OPTIONS]
+    assert all(getattr(RunSettings(), o.field) == o.default for o in OPTIONS)
+    assert {o.option for o in ORACLES} <= {o.name for o in CASE_OPTIONS}, "each oracle's threshold is recorded"
+    with pytest.raises(SystemExit):
+        main(["replay", "--help"])
+    flags = set(re.findall(r"--[a-z-]+", capsys.readouterr().out))
+    assert {f"--{option.name}" for option in REPLAY_OPTIONS} <= flags, "replay takes every flag a case's command gives"
+    # a case records a setting away from its default, and its replay command gives it back
+    settings = RunSettings(min_gap=3.0, tries=2, road_speed=(20.0, 30.0), dut_driver="late-acc")
+    case = Case.of("s.osc", "s", settings, strategy="base", instance=1)
+    again = Case.load(case.save(tmp_path / "case.json"))
+    assert again.settings == settings.__class__(**{**dataclasses.asdict(settings), "strategy": "base"})
+    command = case.command()
+    assert "--min-gap 3.0" in command and "--tries 2" in command and "--road-speed 20.0..30.0mps" in command
+    assert "--dut-driver late-acc" in command and "--encoding" not in command, "defaults are not repeated"

@@ -307,4 +307,4 @@ def test_a_vehicle_the_scenario_names_no_speed_for_starts_in_the_road_speed_band
     plan = planner_for(build_automaton(checked.scenarios[0]), settings_for(run), 1).first()
     assert 100 / 3.6 - 1e-6 <= plan.states["ego"][0].speed <= 120 / 3.6 + 1e-6
     case = Case.of("s.osc", "s", run)
-    assert Case.load(case.save(tmp_path / "case.json")).settings().road_speed == run.road_speed
+    assert Case.load(case.save(tmp_path / "case.json")).settings.road_speed == run.road_speed

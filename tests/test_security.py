@@ -275,8 +275,8 @@ def test_a_case_file_that_is_not_a_small_regular_file_is_refused_without_reading
 def test_a_case_files_time_limits_never_exceed_the_command_lines(tmp_path):
     from pytest_roadlogic.settings import RunSettings
 
-    case = Case(path="a.osc", scenario="s", planning_time_limit=3000.0, simulation_time_limit=2.0)
-    bounded = case.within(RunSettings(planning_time_limit=5.0))
+    case = Case(path="a.osc", scenario="s", settings=RunSettings(planning_time_limit=3000.0, simulation_time_limit=2.0))
+    bounded = case.within(RunSettings(planning_time_limit=5.0)).settings
     assert bounded.planning_time_limit == 5.0 and bounded.simulation_time_limit == 2.0
 
 
@@ -328,7 +328,7 @@ def _loaded_or_refused(folder: Path, data: dict) -> None:
     except CaseFileError as error:
         assert "Traceback" not in str(error) and len(str(error)) < 2_000
         return
-    settings = case.within(RunSettings()).settings()  # any other exception fails with this input
+    settings = case.within(RunSettings()).settings  # any other exception fails with this input
     assert settings.planning_time_limit <= RunSettings().planning_time_limit
     try:
         case.scenario_file(folder / "case.json")

@@ -52,7 +52,9 @@ def test_the_reference_vehicle_passes_the_cut_out_and_the_one_that_reacts_late_f
     verdict = json.loads(next(pytester.path.glob("roadlogic-artifacts/*/verdict.json")).read_text())
     assert verdict["vehicle_under_test"]["failures"] and verdict["replans"], "the oracles and the replans are recorded"
     case = Case.load(next(pytester.path.glob("roadlogic-artifacts/*/case.json")))
-    assert case.dut == "auto" and case.dut_driver == "late-acc" and case.replan_period == 0.25
+    assert (
+        case.settings.dut == "auto" and case.settings.dut_driver == "late-acc" and case.settings.replan_period == 0.25
+    )
 
     # the case replays to the same failure under pytest, with the recorded reference driver
     again = pytester.runpytest_subprocess(
@@ -121,7 +123,7 @@ def test_a_bad_value_of_an_oracle_or_driver_option_is_a_usage_error_naming_the_o
 def test_a_case_file_keeps_who_was_under_test_and_refuses_a_crafted_value(tmp_path):
     settings = RunSettings(dut="ego", dut_driver="weak-braking-acc", min_ttc=2.0, replan_period=0.0)
     case = Case.of("s.osc", "s", settings)
-    again = Case.load(case.save(tmp_path / "case.json")).settings()
+    again = Case.load(case.save(tmp_path / "case.json")).settings
     assert (again.dut, again.dut_driver, again.min_ttc, again.replan_period) == ("ego", "weak-braking-acc", 2.0, 0.0)
     data = json.loads((tmp_path / "case.json").read_text())
     data["dut_driver"] = "os:system"
@@ -131,7 +133,7 @@ def test_a_case_file_keeps_who_was_under_test_and_refuses_a_crafted_value(tmp_pa
     # a case file from before vehicles under test scripted every vehicle, and still does
     del data["dut"], data["dut_driver"]
     (tmp_path / "old.json").write_text(json.dumps(data))
-    assert Case.load(tmp_path / "old.json").settings().dut == "none"
+    assert Case.load(tmp_path / "old.json").settings.dut == "none"
 
 
 def test_an_item_fails_when_most_of_its_simulated_cases_were_not_exercised():
@@ -162,5 +164,46 @@ def test_roadlogic_run_prints_a_gap_of_zero_as_zero_and_no_one_ahead_as_inf():
     from pytest_roadlogic.cli import oracle_line
     from pytest_roadlogic.oracles import Closest, DutReport, Thresholds
 
-    line = oracle_line(DutReport("dut.car", Thresholds(), gap=Closest(0.0, 1.0, "npc")), replans=3)
+    line = oracle_line(DutReport("dut.car", Thresholds(), measured={"gap": Closest(0.0, 1.0, "npc")}), replans=3)
     assert "least time to collision inf s" in line and "least gap 0.0 m" in line and "3 replans" in line
+
+
+PACKAGED_DRIVER = '''
+from pathlib import Path
+
+from pytest_roadlogic.dut.acc import AdaptiveCruiseControl
+
+
+class Cautious(AdaptiveCruiseControl):
+    """An adaptive cruise control that leaves itself a second more."""
+
+    def start(self, vehicle, reference, road, dt):
+        Path("CAUTIOUS_DROVE").write_text(vehicle)
+        super().start(vehicle, reference, road, dt)
+'''
+
+
+def test_a_reference_driver_plugs_in_from_an_installed_package_through_its_entry_point_alone(pytester, monkeypatch):
+    # a package on the path with nothing but its module and its metadata: no hook, no conftest
+    site = pytester.path / "site"
+    (site / "cautious_acc-1.0.dist-info").mkdir(parents=True)
+    (site / "cautious_acc.py").write_text(PACKAGED_DRIVER)
+    (site / "cautious_acc-1.0.dist-info" / "METADATA").write_text(
+        "Metadata-Version: 2.1\nName: cautious-acc\nVersion: 1.0\n"
+    )
+    (site / "cautious_acc-1.0.dist-info" / "entry_points.txt").write_text(
+        "[pytest_roadlogic.drivers]\ncautious = cautious_acc:Cautious\n"
+    )
+    monkeypatch.setenv("PYTHONPATH", str(site))
+    copy(pytester, "cut_in.osc")
+    result = pytester.runpytest_subprocess(*ONE, "--roadlogic-dut-driver", "cautious")
+    result.assert_outcomes(passed=1)
+    assert (pytester.path / "CAUTIOUS_DROVE").read_text() == "dut.car", (
+        "the package's driver drove the vehicle under test"
+    )
+
+    unknown = pytester.runpytest_subprocess(*ONE, "--roadlogic-dut-driver", "reckless")
+    assert (
+        "'reckless' is not a reference driver of the vehicle under test; give acc or late-acc or weak-braking-acc or cautious"
+        in unknown.stderr.str()
+    )

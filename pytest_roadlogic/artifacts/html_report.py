@@ -11,6 +11,8 @@ import base64
 import html
 from pathlib import Path
 
+from ..oracles.registry import ORACLES
+
 
 def report_extras(paths: dict[str, Path], replay: list[str]) -> list[dict]:
     """pytest-html extras for one failing case: plot, animation, replay commands."""
@@ -46,14 +48,9 @@ def _oracle_table(verdict: Path | None) -> str:
     if not values:
         return ""
     rows = [
-        (
-            "least time to collision",
-            values["min_time_to_collision_s"],
-            "s",
-            values["thresholds"]["min_time_to_collision"],
-        ),
-        ("least gap", values["min_gap_m"], "m", values["thresholds"]["min_gap"]),
-        ("hardest braking", values["max_deceleration_mps2"], "m/s^2", values["thresholds"]["max_deceleration"]),
+        (oracle.title, values.get(oracle.value_key), oracle.unit, values["thresholds"].get(oracle.key))
+        for oracle in ORACLES
+        if oracle.key in values["thresholds"]  # a verdict written before the oracle existed has none
     ]
     cells = "".join(
         f"<tr><td>{name}</td><td>{'none ahead' if value is None else f'{value:g} {unit}'}</td><td>{threshold:g} {unit}</td></tr>"

@@ -4,7 +4,7 @@ The vehicle under test is the scenario's own (the standard's ``dut.car``, or a v
 ``dut``) unless the ``dut`` option names another vehicle, or ``none`` (every vehicle follows its
 plan: conformance scenarios, as the RoadLogic paper generates them). It drives itself with the
 driver a ``pytest_roadlogic_driver`` hook gives it, else with the reference driver the
-``dut-driver`` option names (``REFERENCE_DRIVERS``). Every other vehicle is the scenario's.
+``dut-driver`` option names (``dut.registry``). Every other vehicle is the scenario's.
 """
 
 from __future__ import annotations
@@ -13,16 +13,11 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 
 from ..oracles import Thresholds
+from .registry import DEFAULT, reference_driver
 
 AUTO, NONE = "auto", "none"
 # the spellings of the vehicle under test in scenario files: the standard library's dut.car, and dut
 STANDARD_NAMES = ("dut.car", "dut")
-# the reference drivers by the names the dut-driver option takes: (module, class) in this package
-REFERENCE_DRIVERS = {
-    "acc": "AdaptiveCruiseControl",
-    "late-acc": "LateAcc",
-    "weak-braking-acc": "WeakBrakingAcc",
-}
 
 
 class NoSuchVehicle(ValueError):
@@ -35,7 +30,7 @@ class UnderTest:
     the oracles' thresholds, and how often the other vehicles are replanned around it."""
 
     role: str = AUTO
-    driver: str = "acc"
+    driver: str = DEFAULT
     thresholds: Thresholds = field(default_factory=Thresholds)
     # seconds between replans of the scenario's other vehicles while it drives (reactive execution);
     # 0: they follow their first plan whatever it does (open loop)
@@ -44,12 +39,7 @@ class UnderTest:
     @classmethod
     def of(cls, settings) -> UnderTest:
         """Who is under test in a run of ``settings`` (``RunSettings``), and how it is judged."""
-        return cls(
-            settings.dut,
-            settings.dut_driver,
-            Thresholds(settings.min_ttc, settings.min_gap, settings.max_decel),
-            settings.replan_period,
-        )
+        return cls(settings.dut, settings.dut_driver, Thresholds.of(settings), settings.replan_period)
 
     def vehicle(self, vehicles: Sequence[str]) -> str | None:
         """The vehicle under test among the scenario's ``vehicles``, None when there is none."""
@@ -66,9 +56,7 @@ class UnderTest:
 
     def reference_driver(self):
         """A new reference driver of the kind ``driver`` names."""
-        from . import acc
-
-        return getattr(acc, REFERENCE_DRIVERS[self.driver])()
+        return reference_driver(self.driver)
 
     def drivers(self, vehicle: str | None, given: Callable[[str], object] | None):
         """The driver factory of a run: ``given`` (a hook's) first; the vehicle under test, when the

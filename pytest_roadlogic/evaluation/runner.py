@@ -19,12 +19,12 @@ import sys
 import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
-from importlib import metadata
 from pathlib import Path
 from typing import Any
 
 from ..artifacts.files import write_text
 from ..artifacts.writer import write_artifacts
+from ..case import VERSIONED, installed_versions
 from ..confinement import unique_name
 from ..frontend import OscError
 from ..frontend.logical import describe_values
@@ -40,18 +40,6 @@ RESULTS_FILE = "results.json"
 # what a bench writes in its --out folder (results, report, plots, each instance's artifacts, and
 # the writer's temporary files): a folder holding anything else is not the bench's to write in
 BENCH_NAMES = re.compile(r"results\.json|report\.md|rq[12]-[A-Za-z0-9_.-]*\.png|instances|\..*\.partial.*")
-PACKAGES = (
-    "pytest-roadlogic",
-    "clingo",
-    "clingo-dl",
-    "clingo-lpx",
-    "frenetix",
-    "commonroad-io",
-    "hypothesis",
-    "numpy",
-    "matplotlib",
-    "pytest",
-)
 
 
 # instances per scenario: the paper's (which the targets are set for), and a run to try the setup
@@ -346,12 +334,7 @@ def conftest_dialect(path: Path, roots: list[Path]) -> str | None:
 
 def environment() -> dict[str, Any]:
     """The machine and the versions a run was measured with."""
-    versions = {"python": platform.python_version()}
-    for package in PACKAGES:
-        try:
-            versions[package] = metadata.version(package)
-        except metadata.PackageNotFoundError:
-            versions[package] = "not installed"
+    versions = {**dict.fromkeys(VERSIONED, "not installed"), **installed_versions()}
     return {
         "platform": platform.platform(),
         "processor": _cpu_model(),

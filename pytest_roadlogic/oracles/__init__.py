@@ -1,9 +1,11 @@
 """Stage 5b: did the vehicle under test fail? Oracles over a trace, apart from the monitor's
 "did the scenario happen" (``judge``: a ``Trace`` and the vehicle in, a ``DutReport`` out).
-``Thresholds`` is plain data; the rest loads numpy on first use."""
+``ORACLES`` (one record per oracle) and ``Thresholds`` are plain data; the rest loads numpy on
+first use."""
 
 from importlib import import_module
 
+from .registry import ORACLES, ORACLES_BY_NAME, Oracle
 from .thresholds import Thresholds
 
 _HOMES = {"Closest": "measures", "Collision": "report", "DutReport": "report", "judge": "report"}
@@ -15,4 +17,4 @@ def __getattr__(name: str):
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
-__all__ = ["Closest", "Collision", "DutReport", "Thresholds", "judge"]
+__all__ = ["ORACLES", "ORACLES_BY_NAME", "Closest", "Collision", "DutReport", "Oracle", "Thresholds", "judge"]

@@ -12,6 +12,9 @@ leader:
 - the **time to collision** is the gap over the speed at which the follower closes in, when it
   does (infinite otherwise);
 - the **deceleration** of a vehicle is minus its acceleration, when it brakes.
+
+Each oracle's measure (``oracles.registry.Oracle.measure``) reads one ``Seen`` and returns the
+``Closest`` its oracle judges.
 """
 
 from __future__ import annotations
@@ -32,6 +35,17 @@ class Closest:
     value: float  # math.inf when the measure never applied (no vehicle ahead in the path)
     time: float | None = None
     other: str | None = None
+
+
+@dataclass(frozen=True)
+class Seen:
+    """What every measure reads: the trace, the vehicle under test, its gaps to each vehicle ahead
+    in its path (``gaps_ahead``), and the sample from which nothing is judged (None: none)."""
+
+    trace: Trace
+    vehicle: str
+    gaps: dict[str, np.ndarray]
+    until: int | None = None
 
 
 def in_path(trace: Trace, follower: str, leader: str) -> np.ndarray:
@@ -70,32 +84,29 @@ def gaps_ahead(trace: Trace, follower: str, reaction: float = 0.0, until: int | 
     return gaps
 
 
-def least_gap(trace: Trace, gaps: dict[str, np.ndarray]) -> Closest:
-    """The smallest of a follower's ``gaps`` (``gaps_ahead``) to a vehicle ahead in its path."""
-    return _least(trace, gaps)
+def least_gap(seen: Seen) -> Closest:
+    """The smallest gap of the vehicle under test to a vehicle ahead in its path."""
+    return _least(seen.trace, seen.gaps)
 
 
-def least_time_to_collision(trace: Trace, follower: str, gaps: dict[str, np.ndarray]) -> Closest:
-    """The smallest time to collision of ``follower`` with a vehicle ahead in its path, from its
-    ``gaps`` (``gaps_ahead``)."""
-    f = trace.actors[follower]
+def least_time_to_collision(seen: Seen) -> Closest:
+    """The smallest time to collision of the vehicle under test with a vehicle ahead in its path."""
+    f = seen.trace.actors[seen.vehicle]
     ttcs = {}
-    for other, gap in gaps.items():
-        closing = f["speed"] - trace.actors[other]["speed"]
+    for other, gap in seen.gaps.items():
+        closing = f["speed"] - seen.trace.actors[other]["speed"]
         with np.errstate(divide="ignore", invalid="ignore"):
-            ttc = np.where((closing > 1e-6) & np.isfinite(gap), gap / closing, np.inf)
-        ttcs[other] = ttc
-    return _least(trace, ttcs)
+            ttcs[other] = np.where((closing > 1e-6) & np.isfinite(gap), gap / closing, np.inf)
+    return _least(seen.trace, ttcs)
 
 
-def greatest_deceleration(trace: Trace, vehicle: str, until: int | None = None) -> Closest:
-    """The hardest braking of ``vehicle`` (m/s^2, positive), 0 when it never brakes; samples from
-    ``until`` on are not judged."""
-    deceleration = -trace.actors[vehicle]["acceleration"][:until]
+def greatest_deceleration(seen: Seen) -> Closest:
+    """The hardest braking of the vehicle under test (m/s^2, positive), 0 when it never brakes."""
+    deceleration = -seen.trace.actors[seen.vehicle]["acceleration"][: seen.until]
     if not len(deceleration):
         return Closest(0.0)
     k = int(np.argmax(deceleration))
-    return Closest(max(0.0, float(deceleration[k])), float(trace.times[k]))
+    return Closest(max(0.0, float(deceleration[k])), float(seen.trace.times[k]))
 
 
 def _least(trace: Trace, series: dict[str, np.ndarray]) -> Closest:

@@ -1,8 +1,8 @@
 """Did the vehicle under test fail? The oracles' verdict on one trace (``judge``).
 
 The monitor says whether the scenario happened; this says whether the vehicle under test
-misbehaved while it did: a collision it caused, leaving the road, a time to collision or a gap
-to the vehicle ahead in its path below a threshold, braking harder than a threshold. Every value
+misbehaved while it did: a collision it caused, leaving the road, or any oracle of the registry
+(``oracles.registry.ORACLES``: time to collision, gap, braking) past its threshold. Every value
 is kept (``DutReport.values``), failed or not, for reports and case files; ``margin`` is how far
 the closest oracle is from failing, what a search for failures steers by.
 """
@@ -10,13 +10,16 @@ the closest oracle is from failing, what a search for failures steers by.
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from dataclasses import asdict, dataclass, field
 
 import numpy as np
 
 from ..logic.dimensions import CAR_LENGTH, CAR_WIDTH
 from ..simulation.trace import Trace
-from .measures import Closest, gaps_ahead, greatest_deceleration, least_gap, least_time_to_collision
+from . import measures
+from .measures import Closest, Seen, gaps_ahead
+from .registry import ORACLES, Oracle
 from .thresholds import Thresholds
 
 
@@ -36,36 +39,33 @@ class Collision:
 
 @dataclass(frozen=True)
 class DutReport:
-    """The oracles' verdict on the vehicle under test in one trace."""
+    """The oracles' verdict on the vehicle under test in one trace: its collisions, when it left
+    the road, and each oracle's measured value by the oracle's name (``oracles.registry``)."""
 
     vehicle: str
     thresholds: Thresholds
     collisions: tuple[Collision, ...] = ()
     off_road: float | None = None  # when it first left the road
-    time_to_collision: Closest = field(default_factory=lambda: Closest(math.inf))
-    gap: Closest = field(default_factory=lambda: Closest(math.inf))
-    deceleration: Closest = field(default_factory=lambda: Closest(0.0))
+    measured: Mapping[str, Closest] = field(default_factory=dict)  # an oracle missing: it never applied
+
+    def value(self, oracle: Oracle) -> Closest:
+        """What ``oracle`` measured (its never-failing value where it never applied)."""
+        return self.measured.get(oracle.name) or Closest(oracle.never)
 
     @property
     def failures(self) -> list[str]:
         """Each oracle that failed, as a sentence naming the value, the threshold and when."""
-        t = self.thresholds
         found = [str(c) for c in self.collisions if c.caused]
         if self.off_road is not None:
             found.append(f"left the road at t={self.off_road:.1f} s")
-        if self.time_to_collision.value < t.min_time_to_collision:
-            found.append(
-                f"time to collision {self.time_to_collision.value:.2f} s (threshold {t.min_time_to_collision:g} s) "
-                f"behind {self.time_to_collision.other} at t={self.time_to_collision.time:.1f} s"
-            )
-        if self.gap.value < t.min_gap:
-            found.append(
-                f"gap {self.gap.value:.2f} m (threshold {t.min_gap:g} m) behind {self.gap.other} at t={self.gap.time:.1f} s"
-            )
-        if self.deceleration.value > t.max_deceleration:
-            found.append(
-                f"braked at {self.deceleration.value:.2f} m/s^2 (threshold {t.max_deceleration:g} m/s^2) at t={self.deceleration.time:.1f} s"
-            )
+        for oracle in ORACLES:
+            closest, threshold = self.value(oracle), self.thresholds[oracle.name]
+            if oracle.fails(closest.value, threshold):
+                found.append(
+                    oracle.failure.format(
+                        value=closest.value, threshold=threshold, other=closest.other, time=closest.time
+                    )
+                )
         return found
 
     @property
@@ -82,36 +82,23 @@ class DutReport:
         (negative once one fails; -1 for a collision it caused or leaving the road)."""
         if any(c.caused for c in self.collisions) or self.off_road is not None:
             return -1.0
-        t = self.thresholds
-        margins = [
-            _fraction(self.time_to_collision.value, t.min_time_to_collision),
-            _fraction(self.gap.value, t.min_gap),
-            (t.max_deceleration - self.deceleration.value) / t.max_deceleration,
-        ]
-        return min(margins)
+        return min(oracle.margin(self.value(oracle).value, self.thresholds[oracle.name]) for oracle in ORACLES)
 
     def values(self) -> dict[str, object]:
-        """Every value measured, for JUnit properties and case files (inf as None)."""
+        """Every value measured, for JUnit properties and case files (inf as None), each oracle's
+        under its ``Oracle.value_key``."""
 
         def number(x: float) -> float | None:
             return None if not math.isfinite(x) else round(x, 3)
 
         return {
             "vehicle": self.vehicle,
-            "min_time_to_collision_s": number(self.time_to_collision.value),
-            "min_gap_m": number(self.gap.value),
-            "max_deceleration_mps2": number(self.deceleration.value),
+            **{oracle.value_key: number(self.value(oracle).value) for oracle in ORACLES},
             "collisions": [asdict(c) for c in self.collisions],
             "off_road_at_s": self.off_road,
-            "thresholds": asdict(self.thresholds),
+            "thresholds": self.thresholds.by_key(),
             "failures": self.failures,
         }
-
-
-def _fraction(value: float, threshold: float) -> float:
-    if not math.isfinite(value):
-        return 1.0
-    return min(1.0, (value - threshold) / threshold) if threshold > 0 else 1.0
 
 
 def judge(trace: Trace, vehicle: str, thresholds: Thresholds | None = None) -> DutReport:
@@ -129,15 +116,13 @@ def judge(trace: Trace, vehicle: str, thresholds: Thresholds | None = None) -> D
     # after another vehicle ran into it, what it does is no longer judged: the scenario went wrong
     hit = min((c.time for c in collisions if not c.caused), default=None)
     until = int(np.searchsorted(trace.times, hit - 1e-9)) if hit is not None else None
-    gaps = gaps_ahead(trace, vehicle, thresholds.reaction_time, until)
+    seen = Seen(trace, vehicle, gaps_ahead(trace, vehicle, thresholds.reaction_time, until), until)
     return DutReport(
         vehicle,
         thresholds,
         collisions,
         off_road,
-        least_time_to_collision(trace, vehicle, gaps),
-        least_gap(trace, gaps),
-        greatest_deceleration(trace, vehicle, until),
+        {oracle.name: getattr(measures, oracle.measure)(seen) for oracle in ORACLES},
     )
 
 

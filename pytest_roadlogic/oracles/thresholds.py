@@ -2,19 +2,42 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+
+from .registry import ORACLES, ORACLES_BY_NAME
+
+
+def _defaults() -> dict[str, float]:
+    return {oracle.name: oracle.default for oracle in ORACLES}
 
 
 @dataclass(frozen=True)
 class Thresholds:
-    """Where an oracle fails: below ``min_time_to_collision`` (s) or ``min_gap`` (m, bumper to
-        bumper) to the vehicle ahead in the path (from ``reaction_time`` after it entered the path),
-    above ``max_deceleration`` (m/s^2). Options
-        ``--roadlogic-min-ttc``, ``--roadlogic-min-gap``, ``--roadlogic-max-decel`` (and ini keys)."""
+    """Each oracle's threshold by its name (``oracles.registry.ORACLES``; its default where none
+    is given), and how long after a vehicle enters the path of the one under test its gap to it
+    is judged from."""
 
-    min_time_to_collision: float = 1.5
-    min_gap: float = 2.0
-    max_deceleration: float = 8.0
-    # s after a vehicle enters the path of the one under test before its gap to it is judged: a
-    # car that cuts in close is the scenario's doing, what the vehicle under test does next its own
+    limits: Mapping[str, float] = field(default_factory=_defaults)
+    # s: a car that cuts in close is the scenario's doing, what the vehicle under test does next its own
     reaction_time: float = 1.0
+
+    @classmethod
+    def given(cls, **limits: float) -> Thresholds:
+        """The defaults, with ``limits`` (by oracle name) in their place; an unknown name raises ``KeyError``."""
+        unknown = set(limits) - set(ORACLES_BY_NAME)
+        if unknown:
+            raise KeyError(f"no oracle named {', '.join(sorted(unknown))}; the oracles: {', '.join(ORACLES_BY_NAME)}")
+        return cls({**_defaults(), **limits})
+
+    @classmethod
+    def of(cls, settings) -> Thresholds:
+        """The thresholds a run's ``settings`` (``RunSettings``) set, each oracle's by its option."""
+        return cls({oracle.name: getattr(settings, oracle.setting) for oracle in ORACLES})
+
+    def __getitem__(self, oracle: str) -> float:
+        return self.limits.get(oracle, ORACLES_BY_NAME[oracle].default)
+
+    def by_key(self) -> dict[str, float]:
+        """Each threshold under its oracle's key (``Oracle.key``), for verdict.json."""
+        return {oracle.key: self[oracle.name] for oracle in ORACLES}
