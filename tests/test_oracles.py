@@ -38,8 +38,9 @@ def trace_of(columns: dict[str, dict[str, list[float]]], incidents=()) -> Trace:
 
 
 def brute_force(trace: Trace, me: str, reaction: float):
-    """(least gap, least time to collision) by the definitions, one sample and one vehicle at a time."""
-    gaps, ttcs = [math.inf], [math.inf]
+    """(least gap, least time to collision, least time headway) by the definitions, one sample and
+    one vehicle at a time."""
+    gaps, ttcs, headways = [math.inf], [math.inf], [math.inf]
     for other in trace.names:
         if other == me:
             continue
@@ -58,11 +59,12 @@ def brute_force(trace: Trace, me: str, reaction: float):
             closing = a["speed"][k] - b["speed"][k]
             if closing > 1e-6:
                 ttcs.append(gap / closing)
-    return min(gaps), min(ttcs)
+                headways.append(gap / a["speed"][k])  # judged while it closes in
+    return min(gaps), min(ttcs), min(headways)
 
 
 @pytest.mark.parametrize("seed", range(30))
-def test_gap_and_time_to_collision_are_those_of_the_definition_on_random_traffic(seed):
+def test_gap_time_to_collision_and_time_headway_are_those_of_the_definition_on_random_traffic(seed):
     draw = random.Random(seed)
     n = 60
     columns = {}
@@ -74,7 +76,7 @@ def test_gap_and_time_to_collision_are_those_of_the_definition_on_random_traffic
         columns[name] = {"x": x, "y": [y] * n, "speed": speed}
     trace = trace_of(columns)
     report = judge(trace, "dut", Thresholds())
-    gap, ttc = brute_force(trace, "dut", Thresholds().reaction_time)
+    gap, ttc, headway = brute_force(trace, "dut", Thresholds().reaction_time)
     assert (
         report.measured["gap"].value == pytest.approx(gap)
         if math.isfinite(gap)
@@ -85,6 +87,8 @@ def test_gap_and_time_to_collision_are_those_of_the_definition_on_random_traffic
         if math.isfinite(ttc)
         else not math.isfinite(report.measured["time_to_collision"].value)
     )
+    least_headway = report.measured["time_headway"].value
+    assert least_headway == pytest.approx(headway) if math.isfinite(headway) else least_headway == math.inf
 
 
 def test_a_car_that_cuts_in_close_is_judged_only_after_the_reaction_time():
@@ -181,3 +185,21 @@ def test_the_reference_acc_cruises_at_its_set_speed_in_its_lane_with_no_one_ahea
     for k in range(300):
         me = driver.plan(k * DT, me, {}).state(1)
     assert me.speed == pytest.approx(25.0, abs=0.3) and me.y == pytest.approx(road.center_y(2), abs=0.01)
+
+
+def test_closing_in_nearer_in_time_than_the_headway_threshold_fails_and_a_car_drawing_away_is_not_judged():
+    n = 40
+    # at 25 m/s behind one at 24 m/s, from 12 m to 8 m: a time headway down to 0.32 s while it closes in
+    lead = [25.0 * k * DT + CAR_LENGTH + 12.0 - 1.0 * k * DT for k in range(n)]
+    closing = trace_of(
+        {"dut": {"x": [25.0 * k * DT for k in range(n)], "speed": [25.0] * n}, "lead": {"x": lead, "speed": [24.0] * n}}
+    )
+    report = judge(closing, "dut", Thresholds.given(time_headway=0.5))
+    assert report.measured["time_headway"].value == pytest.approx((12.0 - 3.9) / 25.0)
+    assert report.failed and "time headway 0.32 s (threshold 0.5 s) behind lead at t=3.9 s" in report.failures[0]
+    assert report.margin() == pytest.approx(((12.0 - 3.9) / 25.0 - 0.5) / 0.5)
+    # the same near gap to one that draws away: the scenario's doing, not judged
+    away = trace_of(
+        {"dut": {"x": [25.0 * k * DT for k in range(n)], "speed": [25.0] * n}, "lead": {"x": lead, "speed": [26.0] * n}}
+    )
+    assert judge(away, "dut", Thresholds.given(time_headway=0.5)).measured["time_headway"].value == math.inf

@@ -9,6 +9,7 @@ from collections import Counter
 import pytest
 
 from pytest_roadlogic.case import Case, CaseFileError
+from pytest_roadlogic.oracles import ORACLES
 from pytest_roadlogic.outcomes import DUT_FAILED, NOT_EXERCISED, PASSED, mostly_not_exercised
 from pytest_roadlogic.settings import RunSettings
 from tests.conftest import ROOT
@@ -155,9 +156,8 @@ def test_a_conftest_judges_one_scenario_by_its_own_thresholds_and_a_bad_one_is_n
     assert "(threshold 50 m)" in strict.stdout.str()
     pytester.makeconftest("def pytest_roadlogic_oracles(config, scenario):\n    return {'min_ttc': 'soon'}\n")
     bad = pytester.runpytest_subprocess(*ONE)
-    assert "pytest_roadlogic_oracles gave 'min_ttc' for scenario cut_out; give min-ttc, min-gap, max-decel" in (
-        bad.stdout.str()
-    )
+    options = ", ".join(oracle.option for oracle in ORACLES)
+    assert f"pytest_roadlogic_oracles gave 'min_ttc' for scenario cut_out; give {options}" in (bad.stdout.str())
 
 
 def test_roadlogic_run_prints_a_gap_of_zero_as_zero_and_no_one_ahead_as_inf():

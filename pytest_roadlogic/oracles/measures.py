@@ -11,6 +11,7 @@ leader:
 - the **gap** is bumper to bumper: the centres' distance along the road less a car's length;
 - the **time to collision** is the gap over the speed at which the follower closes in, when it
   does (infinite otherwise);
+- the **time headway** is that gap over the follower's own speed, judged while it closes in;
 - the **deceleration** of a vehicle is minus its acceleration, when it brakes.
 
 Each oracle's measure (``oracles.registry.Oracle.measure``) reads one ``Seen`` and returns the
@@ -98,6 +99,19 @@ def least_time_to_collision(seen: Seen) -> Closest:
         with np.errstate(divide="ignore", invalid="ignore"):
             ttcs[other] = np.where((closing > 1e-6) & np.isfinite(gap), gap / closing, np.inf)
     return _least(seen.trace, ttcs)
+
+
+def least_time_headway(seen: Seen) -> Closest:
+    """The smallest time headway of the vehicle under test while it closes in on a vehicle ahead
+    in its path: how near in time it drove up to one (a car that cut in close and draws away
+    leaves it a short headway that is the scenario's doing, not its own)."""
+    f = seen.trace.actors[seen.vehicle]
+    headways = {}
+    for other, gap in seen.gaps.items():
+        closing = f["speed"] - seen.trace.actors[other]["speed"]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            headways[other] = np.where((closing > 1e-6) & np.isfinite(gap), gap / f["speed"], np.inf)
+    return _least(seen.trace, headways)
 
 
 def greatest_deceleration(seen: Seen) -> Closest:

@@ -22,7 +22,7 @@ _UNIT_KEYS = {"s": "s", "m": "m", "m/s^2": "mps2"}
 
 @dataclass(frozen=True)
 class Oracle:
-    """One oracle of the vehicle under test, measured over a trace against one threshold."""
+    """One oracle of the vehicle under test: a value read off a trace, judged against one threshold."""
 
     name: str  # its identity, in thresholds and reports: "time_to_collision"
     quantity: str  # what it measures, as messages name it: "time to collision"
@@ -94,6 +94,20 @@ ORACLES = (
         "metres bumper to bumper: a smaller gap of the vehicle under test to one ahead in its path fails it",
         "least_gap",
         "gap {value:.2f} m (threshold {threshold:g} m) behind {other} at t={time:.1f} s",
+    ),
+    Oracle(
+        "time_headway",
+        "time headway",
+        "least time headway",
+        "s",
+        LOWER,
+        "min-headway",
+        "min_headway",
+        0.5,
+        "seconds: a smaller time headway (the gap over its own speed) of the vehicle under test while it closes in on "
+        "one ahead in its path fails it",
+        "least_time_headway",
+        "time headway {value:.2f} s (threshold {threshold:g} s) behind {other} at t={time:.1f} s",
     ),
     Oracle(
         "deceleration",
