@@ -66,10 +66,9 @@ class Blame:
         of 3 s from 120 to 30 kph needs more than the 6 m/s^2 the file allows), so a sample can
         fall outside the logical scenario while every value in it lies inside. Such a sample is no
         instance to test, where a value that no concrete scenario has is a defect of the file
-        (catch_up_band's gaps above its edge). Measured on follow_then_overtake: 6 of 10 samples
-        had plans only beyond the planner's margins or jerk limit (a 17 s pass at 15 kph faster
-        ending 32 m ahead), whose simulations were then not accepted, at 20-30 s each; every one
-        of their values alone had plans within them. So the values are tried alone first, within
+        (catch_up_band's gaps above its edge). A sample may have plans only beyond the planner's
+        margins or jerk limit, whose simulations are then seldom accepted, while each of its values
+        alone has plans within them (docs/decisions.md). So the values are tried alone first, within
         the margins and limits, and only a sample with a value that has none there is planned again
         with the fallbacks (``planning.fallbacks``, by ``rerun``), whose result it then reports. When that
         result is that only a plan beyond a real car's limits exists, the culprit is a value that

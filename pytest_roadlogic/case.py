@@ -60,7 +60,7 @@ class Case:
     def within(self, limits: RunSettings) -> Case:
         """This case with its time limits no higher than ``limits``' (the command line's or the
         session's): a case file is data, and ``"planning_time_limit": 1e9`` must not raise what the
-        user allows (``--plan-timeout 5`` had not lowered it)."""
+        user allows."""
         own = self.settings
         return replace(
             self,
@@ -172,12 +172,12 @@ REPLAY_OPTIONS = tuple(
     option for option in CASE_OPTIONS if option.name not in ("seed", "strategy", "plan-timeout", "sim-timeout")
 )
 IDENTITY = ("path", "scenario", "values", "instance", "drivers", "versions")
-# sizes past anything the tool writes: a case file is read whole before it is checked, and a
-# 100 MB string in ``versions`` had gone to stderr in a warning
+# sizes past anything the tool writes: a case file is read whole before it is checked, and its
+# strings go into messages
 MAX_CASE_BYTES = 1_000_000
 MAX_TEXT = 1_000  # characters of one string field (a path, a name, a version)
 MAX_ENTRIES = 1_000  # entries of ``values``, ``drivers`` or ``versions``
-# plans enumerated to reach a base-strategy instance: ``"instance": 1000000`` had run past 120 s
+# plans enumerated to reach a base-strategy instance: each costs a planning
 MAX_INSTANCE = 999
 
 

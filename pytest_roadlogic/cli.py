@@ -29,8 +29,7 @@ import sys
 import time
 from pathlib import Path
 
-# Light imports only: `roadlogic --help` and argument errors must not load the pipeline (issue 53:
-# it had imported the whole package, 0.35 s of CPU against 0.01 s for a bare interpreter); each
+# Light imports only: `roadlogic --help` and argument errors must not load the pipeline; each
 # command imports the stages it uses.
 from .outcomes import CONFORMANT, PASSED
 from .settings import (
@@ -271,7 +270,7 @@ def _driver_factory(names: dict[str, str], scenario_file: Path, roots=None):
 def _drivers_of_case(case, given: dict[str, str]) -> dict[str, str]:
     """The drivers a case file's replay uses: those the command line gives, which must be the ones
     the case records. A case file is data: the module names in it are never imported on its word
-    (one named os:abort or sys:exit had run); the user names them with --driver after reading them."""
+    (it could name os:abort or sys:exit); the user names them with --driver after reading them."""
     from .simulation.named_drivers import DriverLoadError
 
     if given == case.drivers:
@@ -717,8 +716,7 @@ def _print_unasked(plan, automaton, registry, indent: str = "") -> None:
 
 
 def oracle_line(report, replans: int) -> str:
-    """The oracles' values of a vehicle under test in a line (``inf``: no one ahead in its path;
-    a value of 0 had been printed as ``inf``)."""
+    """The oracles' values of a vehicle under test in a line (``inf``: no one ahead in its path)."""
     from .oracles import ORACLES
 
     values = report.values()
@@ -768,7 +766,7 @@ def _bench(args: argparse.Namespace) -> int:
 def _bench_out_refused(args: argparse.Namespace) -> bool:
     """``--out`` of the bench names a folder it may not write (a file, one holding files the bench
     does not write, one another bench holds, a name the system refuses): say so before running
-    (True). A user's own report.md had been overwritten, two benches had mixed their results."""
+    (True): a user's own files are never overwritten, and two benches never mix their results."""
     from .artifacts.files import NotAnArtifactFolder, check_replaceable, claimed
     from .evaluation.runner import BENCH_NAMES, RESULTS_FILE
 
@@ -776,7 +774,7 @@ def _bench_out_refused(args: argparse.Namespace) -> bool:
         args.held.enter_context(claimed(args.out))  # first: a second bench into it is told so
         check_replaceable(args.out, BENCH_NAMES)
         if args.out.is_dir() and any(args.out.iterdir()) and not (args.out / RESULTS_FILE).is_file():
-            # the names a bench writes, but no results of one: a user's own report.md had been overwritten
+            # the names a bench writes, but no results of one: a user's own report.md, say
             raise NotAnArtifactFolder(
                 f"{args.out} holds files but no {RESULTS_FILE}: not a folder a bench wrote; give a new or empty folder"
             )
@@ -804,8 +802,7 @@ def _bench_settings(args: argparse.Namespace):
         base=args.base,
         refined=args.refined,
         run=_run_settings(args),
-        # the paper's evaluation (docs/evaluation.md) was measured on the grid encoding: it stays
-        # the bench's default until the continuous one is measured there (--encoding continuous)
+        # the paper's evaluation (docs/evaluation.md) runs on the grid encoding unless one is given
         paper_run=_run_settings(args, **({} if args.setting_encoding else {"encoding": "grid"})),
         artifacts=not args.no_artifacts,
         explicit_realistic=args.realistic is not None,

@@ -36,8 +36,8 @@ class OutsideRoots(ValueError):
 
 def too_wide(folder: Path) -> bool:
     """Whether ``folder`` is one the tool never reads everything under: the file system's root and
-    the home folder (run from ``/``, a container's default, the working folder had become the read
-    root, and ``import "/proc/self/environ"`` printed a CI job's secrets)."""
+    the home folder (run from ``/``, a container's default, the working folder would be the read
+    root, and ``import "/proc/self/environ"`` show a CI job's secrets)."""
     folder = folder.resolve()
     try:
         home = Path.home().resolve()
@@ -164,7 +164,7 @@ def read_bounded(path: str | Path, limit: int) -> bytes:
     Every file a scenario, a case file or a map names is read through here. The kind is judged on
     the open descriptor (opened without blocking, so a FIFO cannot hold the open, nor a link
     swapped after a ``stat`` change what is read) and the size by what is read, not by ``stat``:
-    a link to ``/dev/zero`` has size 0 and had been read to 5 GB."""
+    a link to ``/dev/zero`` has size 0 and no end."""
     if (problem := regular_file_problem(path)) is not None:  # a device is never even opened
         raise UnreadableFile(problem)
     try:
@@ -218,8 +218,8 @@ def safe_name(text: str, fallback: str = "scenario") -> str:
 
 def unique_name(text: str) -> str:
     """``safe_name(text)`` made unique to ``text``: its first 90 characters and a short hash of the
-    whole, so two texts never share one (``ä.osc::plain`` and ``ö.osc::plain`` had shared an
-    artifacts folder, and replaying one ran the other; so had names equal in 100 characters)."""
+    whole, so two texts never share one (``ä.osc::plain`` and ``ö.osc::plain``, or names equal in
+    their first 100 characters, would share an artifacts folder)."""
     import hashlib
 
     digest = hashlib.sha256(text.encode("utf-8", "surrogatepass")).hexdigest()[:10]

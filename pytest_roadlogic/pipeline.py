@@ -184,10 +184,8 @@ def guided_planning(
 
     Why a function: a sample is narrowed to a band that keeps the planner's margins inside its
     parameter's range, which moves a value near an edge inward by the margin. A fallback planner
-    with thinner margins must solve for the value itself, not for the first planner's moved one:
-    emit_wait_brake's change_speed of 7.8 s (its range 4..8 s, but it must equal the 0.5-1.5 s wait
-    plus the 3-5 s lane change) was moved to 6.5-7.5 s, where a plan at 6.5 s exists, and reported
-    as a value the scenario meets (measured before this).
+    with thinner margins must solve for the value itself, not for the first planner's moved one,
+    or a value the scenario cannot meet is reported as one it meets.
 
     On a map, the settings are the encoding's for the scenario's route (``on_route``); an
     encoding that cannot plan on a map (the grid's) says so (``CannotPlanOnMap``) rather than plan

@@ -126,7 +126,7 @@ def _settings(config: pytest.Config) -> RunSettings:
             "--roadlogic-strategy refined"
         )
     if settings.shards > settings.examples:
-        # a shard with no sample of its own had failed with Hypothesis's max_examples=0 (18 of 20 items)
+        # a shard with no sample of its own would fail with Hypothesis's max_examples=0
         raise pytest.UsageError(
             f"roadlogic: --roadlogic-shards (ini roadlogic_shards): {settings.shards} shards share "
             f"{settings.examples} examples, and each shard draws at least one; give at most {settings.examples} shards, "
@@ -293,8 +293,8 @@ class ScenarioItem(pytest.Item):
             except CaseFileError as error:
                 raise pytest.UsageError(f"roadlogic: --roadlogic-replay {replay}: {error}") from None
         # a replayed case runs with its own settings (who is under test, with which reference driver,
-        # its thresholds, tries, ...), as roadlogic replay runs it: the session's had replayed a late
-        # vehicle under test's failure with the default driver, and passed
+        # its thresholds, tries, ...), as roadlogic replay runs it: the session's would replay a
+        # defective vehicle under test's failure with the default driver, and pass
         runner = Runner(
             self.scenario,
             case.settings if case is not None else settings,
@@ -521,8 +521,8 @@ def _replays(item: ScenarioItem, case) -> bool:
 
 
 def pytest_collection_modifyitems(session: pytest.Session, config: pytest.Config, items: list) -> None:
-    """With ``--roadlogic-replay``, a case that no collected item runs is a usage error: it had
-    skipped every item and passed (exit 0). A vehicle under test that no collected scenario has is
+    """With ``--roadlogic-replay``, a case that no collected item runs is a usage error, not
+    every item skipped and a pass (exit 0). A vehicle under test that no collected scenario has is
     a usage error too (``--roadlogic-dut ghost``): each item would fail alike."""
     settings = config.stash.get(SETTINGS, None)
     scenarios = [item for item in items if isinstance(item, ScenarioItem)]
@@ -547,8 +547,8 @@ def pytest_collection_modifyitems(session: pytest.Session, config: pytest.Config
 
 def _hypothesis_statistics(item: pytest.Item):
     """Collect the refined search's statistics where Hypothesis's pytest plugin looks for them
-    (``item.hypothesis_statistics``), as it does for ``@given`` tests, which these items are not:
-    ``--hypothesis-show-statistics`` had printed an empty section."""
+    (``item.hypothesis_statistics``), as it does for ``@given`` tests, which these items are not,
+    so that ``--hypothesis-show-statistics`` prints them."""
     import contextlib
 
     try:

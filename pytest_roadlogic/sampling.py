@@ -7,7 +7,7 @@ holds at one point of a phase: ``position([10..20]m, ..., at: start)``, ``at: en
 A range a modifier holds throughout its phase (``speed([0..130]kph)``, whose ``at:`` is ``all``
 by default) is not a parameter: it says the motion stays within it, so the planner keeps it as
 a bound, and sampling it as one constant held for the whole phase would ask for something the
-scenario does not (measured on catch_up_band: every sample without a plan, shrunk to 0 kph).
+scenario does not.
 The base strategy leaves them all to the planner, which picks whatever its search reaches first;
 sampling them instead spreads the instances over the whole logical scenario, and lets Hypothesis
 shrink a failure to the simplest values that still fail.
@@ -50,8 +50,8 @@ class UnknownParameter(ValueError):
 def checked_value(parameter: LogicalParameter, value: Any) -> Any:
     """``value`` when ``parameter`` may take it; else ``UnknownParameter`` saying what it may take.
 
-    Why: a sample outside the declared range was planned at the range's edge without a word
-    (issue 20: start_gap 99 of [10..30] planned at 28 m), and a string was a ValueError traceback."""
+    Why: a value outside the declared range must not be planned at the range's edge without a word,
+    nor a string end in a traceback."""
     if parameter.choices:
         if value not in parameter.choices:
             raise UnknownParameter(

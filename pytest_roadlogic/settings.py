@@ -84,7 +84,7 @@ def positive(what: str, example: str, unit: str = "a number") -> Callable[[str],
 
 
 # a day: far past any planning or simulation of one case, and far inside what a timer takes
-# (``--plan-timeout 1e308`` had overflowed the deadline and timed out at once)
+# (``--plan-timeout 1e308`` would overflow the deadline)
 MAX_SECONDS = 86_400.0
 
 
@@ -136,8 +136,7 @@ def map_file(text: str) -> str:
 map_file_or_none = or_none(map_file)  # a map, or each scenario's own road
 lanes_or_none = or_none(lane_count)  # a lane count, or each scenario's own road
 # an hour of scenario time in steps of 1 s: far past a driving scenario (the realistic suite's
-# longest is a minute), and a bound on what planning grounds (--horizon 2000000 with a 1e6 s
-# duration had grown to 8.8 GB)
+# longest is a minute), and a bound on what planning grounds
 MAX_HORIZON = 3600
 
 

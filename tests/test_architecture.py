@@ -258,3 +258,25 @@ def test_every_source_file_the_package_docs_and_encodings_name_exists():
         if not any((base / match.group(1)).exists() for base in bases)
     ]
     assert stale == []
+
+
+# the marks of a measurement or of an issue's story in a comment or docstring: they belong in
+# docs/decisions.md and the CHANGELOG, the code keeps what and why
+HISTORY = re.compile(
+    r"\bissue \d+\b|\bMeasured\b|\bmeasured (on|over|with)\b|\bhad (been|run|grown|taken|cost|printed)\b"
+)
+
+
+def test_the_code_keeps_what_and_why_and_leaves_measurements_and_issue_stories_to_the_docs():
+    root = Path(pytest_roadlogic.__file__).resolve().parents[1]
+    texts = [
+        *(p for p in (root / "pytest_roadlogic").rglob("*.py") if "generated" not in p.parts),
+        *root.glob("asp/**/*.lp"),
+    ]
+    notes = [
+        f"{text.relative_to(root)}:{number}: {line.strip()[:100]}"
+        for text in texts
+        for number, line in enumerate(text.read_text(encoding="utf-8").splitlines(), 1)
+        if HISTORY.search(line)
+    ]
+    assert notes == []

@@ -2,9 +2,9 @@
 time, and which phase of the scenario the monitor's run was in; the view follows the vehicles (on
 a map, turned with the route at the view's centre, the lanes bending as the map's).
 
-Frames are drawn straight into palette images with Pillow, not through matplotlib: measured on a
-15 s, three-car run (benchmarks/artifacts.py), matplotlib's FuncAnimation took 4.6 s for 76 frames
-(a figure redrawn and quantised per frame), these 0.1-0.2 s. Frames are taken every ``frame_dt``
+Frames are drawn straight into palette images with Pillow, not through matplotlib, whose
+animation redraws and quantises a figure per frame, an order of magnitude slower
+(docs/decisions.md). Frames are taken every ``frame_dt``
 seconds (0.2 s by default, half the samples of the trace), which keeps a 20 s run to about a
 hundred frames and the file small enough to attach to a CI report.
 """

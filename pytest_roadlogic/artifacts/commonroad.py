@@ -107,7 +107,7 @@ def write_commonroad_xml(simulation: Simulation, path: str | Path) -> Path:
         affiliation="",
         source="pytest-roadlogic",
         # a list in a fixed order, not a set: the writer writes tags in the order it iterates them,
-        # and a set of enums iterates in the order PYTHONHASHSEED gives (scenario.xml had differed
+        # and a set of enums iterates in the order PYTHONHASHSEED gives (scenario.xml would differ
         # between processes)
         tags=sorted((Tag.HIGHWAY, Tag.MULTI_LANE), key=lambda tag: tag.value),
         file_format=FileFormat.XML,

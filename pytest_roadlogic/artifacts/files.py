@@ -42,8 +42,8 @@ def replaced_directory(directory: Path, artifact: re.Pattern) -> Iterator[Path]:
     """A fresh staging folder beside ``directory`` to write a set of artifacts into, swapped in for
     ``directory`` as one set when the block ends, and removed when it fails or is interrupted.
 
-    Why: a run into an existing ``--out`` overwrote file by file, so that an interrupted one left a
-    mix of two runs' artifacts (issue 20). Ctrl-C during the swap (two renames) waits for it to end,
+    Why: a run into an existing ``--out`` that overwrote file by file would, interrupted, leave a
+    mix of two runs' artifacts. Ctrl-C during the swap (two renames) waits for it to end,
     so the folder holds the old set or the new one, never neither. A folder with names that
     ``artifact`` does not match is refused (``NotAnArtifactFolder``) before anything is written:
     ``--out .`` must not replace the working directory.
@@ -73,7 +73,7 @@ def replaced_directory(directory: Path, artifact: re.Pattern) -> Iterator[Path]:
 def check_writable(directory: Path, probe: bool = True) -> None:
     """Raise ``NotAnArtifactFolder`` unless a folder can be made at ``directory``: asked when a
     command or session starts, so that ``--out /proc/x`` or an artifacts path that is a file stops
-    it at once rather than after the run (a traceback had come at the first failure). With
+    it at once rather than with a traceback at the first failure. With
     ``probe``, a folder is made and removed in the nearest folder that exists, which says what
     permissions do; without, only that no file stands in the way (nothing is written)."""
     directory = Path(directory)
@@ -133,7 +133,7 @@ def _alive(pid: int) -> bool:
 
 def remove_stale(directory: Path) -> None:
     """Remove what a killed run left beside ``directory``: its ``.NAME.PID.*.partial`` staging
-    folders and files (``kill -9`` during ``run --out`` had left them for good), when that process
+    folders and files (``kill -9`` during ``run --out`` leaves them), when that process
     is gone."""
     pattern = re.compile(rf"\.{re.escape(directory.name)}\.(\d+)\..*(partial|old).*")
     try:

@@ -130,9 +130,7 @@ def beside(write: Callable[[], object]) -> Callable[..., None]:
 
     Why: the OpenSCENARIO writer's first call is mostly the import of ``scenariogeneration`` (0.8 s
     on a slow machine, 0.5 s of it scipy.integrate, which its OpenDRIVE geometry imports), and the
-    plot's is matplotlib's; on two cores the two overlap. Measured (``benchmarks/artifacts.py``,
-    each in a fresh process): the whole set of overtake 2.13 -> 1.69 s, of overtake_third_actor
-    2.28 -> 1.59 s, on a machine where overtake's stages took 0.6-0.85 s.
+    plot's is matplotlib's; on two cores the two overlap (docs/decisions.md).
     The child writes its files through ``files.replaced`` like every writer and returns nothing but
     its exit status and, when it fails, the error's text. Without fork (or on one core) it runs here.
     """

@@ -181,7 +181,7 @@ class _Builder:
     def parallel(self, behavior: model.Composition) -> _Fragment:
         """Members that start together and end together; an ``emit`` among them is emitted at
         their start, the one instant it shares with every member (the standard allows emit in any
-        composition; it had been refused here)."""
+        composition)."""
         events = [child.event for child in behavior.children if isinstance(child, model.Emit)]
         children = [self.translate(child) for child in behavior.children if not isinstance(child, model.Emit)]
         if not children:
@@ -394,10 +394,9 @@ def _serial(first: _Fragment, second: _Fragment, location=None) -> _Fragment:
 
 
 # The most transitions a parallel's product or a serial's junctions may make. Variants per starting
-# lane multiply across the members of a parallel and across a serial's junctions: measured, the
-# largest automaton among the paper's, the realistic and the corpus scenarios has 481 transitions;
-# five_vehicle_minute mutated to an 11-lane road made 124,522 junction edges and took 44 s. Past
-# this, building the automaton stops with a located error.
+# lane multiply across the members of a parallel and across a serial's junctions; the bound is far
+# above any hand-written scenario's (docs/decisions.md). Past it, building the automaton stops
+# with a located error.
 MAX_TRANSITIONS = 20_000
 
 
@@ -420,8 +419,8 @@ def _parallel(children: list[_Fragment], location=None) -> _Fragment:
     while frontier:
         current = frontier.pop()
         # members of a parallel end together: each member's moves split into those that leave it
-        # final and those that do not, and only all-final or none-final combinations are made (the
-        # product of all moves had been enumerated and filtered: 2^30 combinations for 30 members)
+        # final and those that do not, and only all-final or none-final combinations are made
+        # (never the product of all moves, 2^n for n members, filtered afterwards)
         ending: list[list[_Edge | None]] = []
         going_on: list[list[_Edge | None]] = []
         for child, key in zip(children, current):
@@ -515,9 +514,8 @@ def _finish(
             scenario.location, f"scenario {scenario.name!r} can never finish: its phases cannot all end", hint=hint
         )
     # what is asked here, and what the phases an edge from here starts ask for at their first
-    # instant (a change the next phase needs at its start comes in the phase before it). Per edge:
-    # a parallel member's own start had been asked again before every later junction of another
-    # member (CARLA's overtake_concrete: the npc's lane(2, at: start) let it leave its lane)
+    # instant (a change the next phase needs at its start comes in the phase before it). Per edge,
+    # so that a parallel member's own start is not asked again at another member's later junction
     asked = {
         key: fragment.asks.get(key, frozenset()).union(
             *(e.early for e in fragment.edges if e.source == key and e.target in useful)

@@ -199,9 +199,7 @@ class AnchoredModifier(Modifier):
     def asked_within(self, binding: Binding) -> bool:
         """Asked per instant (docs/language.md, "What a vehicle is asked to do"): a lane or a
         speed asked ``at: start`` is asked at the phase's first instant only (reached before it,
-        then kept: a lane asked so had licensed a lane change anywhere in the phase, and the car
-        being overtaken had moved into the overtaker's lane; a speed so, a 5 s cruise at 10 m/s
-        had ended at 56 kph); ``at: end`` asks for a change within the phase, and so does a range
+        then kept, licensing no change of lane or speed later in the phase); ``at: end`` asks for a change within the phase, and so does a range
         held throughout."""
         return self.anchor(binding) != "start"
 

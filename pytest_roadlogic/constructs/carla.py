@@ -6,8 +6,7 @@
 - ``speed(v)`` without ``at:`` is the phase's target speed, as CARLA's runner sets it: from the
   phase's first instant the car drives toward it at a comfortable rate, never away from it nor
   past it, and holds it once reached; it is checked at the phase's end (``at: all`` written out
-  still means throughout). It had been read as "v at the end", and plans ramped over 20 s or
-  dipped from 30 to 16 kph inside ``speed(30kph)``.
+  still means throughout).
 - ``drive(path, adjust: b)``: CARLA's runner builds a drive from its modifiers and reads none of
   its arguments; ``adjust:`` (public CARLA examples give it) is read with one located warning.
 - ``change_speed(dv)`` and ``change_lane(lane_changes: k, side: s)`` are modifiers, as its runner

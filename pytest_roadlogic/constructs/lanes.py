@@ -32,8 +32,7 @@ class Lane(AnchoredModifier):
     """``lane(k)``, ``lane([1..2])``, ``lane(k, from: left)``, ``lane(same_as:|left_of:|right_of: x)``,
     ``lane(side_of: x, side: left)``. ``left_of: x`` is the lane next to x's on the left, and
     ``lane(k, left_of: x)`` the k-th lane left of it: the standard's ``lane:`` argument counts the
-    lanes to the side and defaults to 1 (CARLA's runner, too, takes the adjacent lane). It had
-    meant any lane on that side (the paper's l(v1) < l(v2)), and a car was placed two lanes away."""
+    lanes to the side and defaults to 1 (CARLA's runner, too, takes the adjacent lane), not any lane on that side."""
 
     counted_from: ClassVar[str] = "right"  # where lane(1) is when from: is not given
     convention: ClassVar[str] = LANE_CONVENTION

@@ -35,8 +35,8 @@ def keep_speed_variants(actor: str, source: SourceLocation, written: str = "keep
 
 
 def refuse_negative_speed(binding: Binding, argument: str, context: CheckContext, relative: bool = False) -> None:
-    """A speed below 0 is an error at its place: vehicles drive forward, and the planner had read
-    speed(-20kph) as 0 kph, so that only ``run`` said "no plan" (issue 38)."""
+    """A speed below 0 is an error at its place: vehicles drive forward, and the planner would read
+    speed(-20kph) as 0 kph and only ``run`` say "no plan"."""
     given = binding[argument]
     value = context.evaluate(given) if given is not None else None
     if value is not None and value.low < 0:

@@ -1,4 +1,4 @@
-"""Least action, measured: the lane and speed changes of a plan that no construct of the vehicle
+"""Least action, counted: the lane and speed changes of a plan that no construct of the vehicle
 asks for (docs/language.md, "What a vehicle is asked to do").
 
 Written from the definition, not from the encoding (``asp/least_action.lp``), so that a test can
@@ -43,8 +43,7 @@ class UnaskedChange:
     def described(self, lane_number: Callable[[int], int] | None = None) -> str:
         """The change in a user's terms: lanes as ``lane_number(index)`` gives them (the scenario's
         dialect's numbering, as the plan's table shows them; default the planner's index, 0 the
-        leftmost), speeds in m/s and kph. The message had said "lane 1 to 0" beside a table
-        that showed the same change as 2 -> 3."""
+        leftmost), speeds in m/s and kph: the message and the table name a lane alike."""
         if self.kind == "lane":
             number = lane_number or (lambda index: index)
             return (

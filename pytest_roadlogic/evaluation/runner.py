@@ -333,7 +333,7 @@ def conftest_dialect(path: Path, roots: list[Path]) -> str | None:
 
 
 def environment() -> dict[str, Any]:
-    """The machine and the versions a run was measured with."""
+    """The machine and the versions a run was timed on."""
     versions = {**dict.fromkeys(VERSIONED, "not installed"), **installed_versions()}
     return {
         "platform": platform.platform(),

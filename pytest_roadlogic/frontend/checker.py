@@ -235,7 +235,7 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks):
         called = {name for s in main.scenarios for name in calls.get(s.name, ())}
         for scenario in main.scenarios:
             # a scenario that calls itself, directly or through others, is checked on its own, so that
-            # expand_calls reports the recursion at the call (it had been skipped as a callee: "no scenario")
+            # expand_calls reports the recursion at the call (as a callee alone it would be skipped)
             if (
                 scenario.name in called
                 and scenario.name not in seen
@@ -655,7 +655,7 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks):
 
     def _not_relative_to_itself(self, signature, binding: library.Binding, actor: str | None, what: str) -> None:
         """An error at an argument that places the invocation's own actor relative to itself
-        (``ego.drive() with: lane(right_of: ego)``): no plan can meet it, and check had passed it."""
+        (``ego.drive() with: lane(right_of: ego)``): no plan can meet it, so check says so."""
         for parameter in signature.parameters:
             argument = binding[parameter.name] if parameter.kind == "actor" else None
             if actor is not None and argument is not None and isinstance(argument.value, model.Name):

@@ -50,7 +50,7 @@ class ImportLoading:
                 )
                 continue
             if not self.roots.allows(target):
-                # never opened, never shown: import "/proc/self/environ" had printed the environment's first line
+                # never opened, never shown (import "/proc/self/environ" would show the environment)
                 self.error(
                     item.location,
                     f"the imported file {item.target!r} is outside the folders the tool reads ({self.roots.describe()})",

@@ -1,12 +1,10 @@
 """What the front end reads at most: inputs beyond these are refused before parsing, at their place.
 
 Why: the generated ANTLR parser recurses once per nesting level (a few dozen Python frames per
-parenthesis of an expression), so a file with 1,000 nested parentheses ended in a RecursionError
-that stopped a whole pytest session (issue 20), and a 1 MB identifier went on into the renderer
-for minutes. Hand-written scenarios nest a few levels deep: measured over the project's 149 .osc
-files (suites, corpus, realistic twelve, library), at most 2 brackets, 6 indented blocks and a
-25-character name. The limits are far above that and far below what the parser survives under
-pytest's own stack.
+parenthesis of an expression), so deep nesting would end in a RecursionError that stops a whole
+pytest session, and a huge identifier would go on into the renderer for minutes. The limits are
+far above what hand-written scenarios reach (docs/decisions.md) and far below what the parser
+survives under pytest's own stack.
 """
 
 from __future__ import annotations

@@ -172,8 +172,8 @@ class _Resolver:
         space = ParameterSpace({p.name: self.domain(p) for p in self.parameters}, tuple(self.relations))
         for relation in space.relations:
             if space.refutes(relation):
-                # keep(a + b <= 20m) with a and b in [15..25]m: every sample had been filtered out
-                # (a Hypothesis traceback), and --values ran a case that breaks it as conformant
+                # keep(a + b <= 20m) with a and b in [15..25]m: no sample can meet it; said here,
+                # before Hypothesis filters every sample out or --values runs a case that breaks it
                 names = sorted({n.name for n in names_in(relation.expression)} & set(space.domains))
                 self.add_error(
                     relation.location,

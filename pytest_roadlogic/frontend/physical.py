@@ -123,7 +123,7 @@ def declared_physics(files: Iterable[model.OscFile]) -> DeclaredPhysics:
             if known is not None and not (
                 math.isclose(known[1], unit.factor, rel_tol=FACTOR_TOLERANCE) and math.isclose(offset, unit.offset)
             ):
-                # the file's own declaration is what its author measured with: read, with a warning
+                # the file's own declaration is what its author's numbers mean: read, with a warning
                 physics.problems.append(
                     Diagnostic(
                         unit.location,

@@ -13,8 +13,7 @@ from .values import EvaluationError, Interval, evaluate
 DEFAULT_LANES = 3  # a road whose scenario says nothing of its lanes
 
 # the default driver's Frenet frame reaches 25 m from the road's right edge (frenetix's projection
-# domain): 7 lanes of 3.5 m. Measured: lane(7) and up ended in "x and/or y coordinate outside of
-# projection domain" inside the simulation (issue 20), 1,000,000 lanes at 1.7 GB
+# domain): past 7 lanes of 3.5 m it fails inside the simulation
 MAX_LANES = 6
 
 

@@ -684,7 +684,7 @@ class _Builder:
             )
             return model.Literal("<bad range>", location)
         if low.value > high.value:
-            # an empty interval: no value lies in it; most likely the bounds were swapped (issue 20)
+            # an empty interval: no value lies in it; most likely the bounds were swapped
             self.error(
                 location,
                 "an empty range: its first bound is above its second",
@@ -701,8 +701,7 @@ class _Builder:
         return model.Quantity(value, dimension, location)
 
     def bounded(self, value: float, dimension: str | None, location: SourceLocation) -> None:
-        """Refuse a physical value past MAX_MAGNITUDE: 1e308 m reached the planner and came back as a
-        300-digit number in a message (issue 20)."""
+        """Refuse a physical value past MAX_MAGNITUDE at its place, before the planner reads it."""
         if dimension is not None and not abs(value) <= MAX_MAGNITUDE:
             unit = SI_UNIT.get(dimension, "")
             self.error(

@@ -218,7 +218,7 @@ class IncrementalPlanner:
             parts += [("dynamics", [t]), ("state", [t]), ("check", [t])]
             if step % GROUND_CHUNK == 0 and step < horizon:
                 # a grounding call cannot be interrupted: ground in chunks and keep to the time limit
-                # between them (a 3,500 s scenario of five vehicles had grounded for 55 s under a 5 s limit)
+                # between them
                 self._ground(control, parts)
                 parts = []
                 if time.monotonic() > self._deadline:

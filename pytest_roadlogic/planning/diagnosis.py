@@ -118,8 +118,8 @@ def _failing(planner, program: str, settings, kept: list[int], count: int, deadl
     earliest = window.earliest(settings.max_horizon)
     if earliest is None:
         # the kept durations let no run end within the horizon limit: they fail among themselves,
-        # whatever the bounds (emit_wait_brake's brake of 6.3-7.3 s that must equal its 0.5-1 s
-        # wait plus its 3-3.5 s lane change had been reported with no constraint named)
+        # whatever the bounds, and are named (a brake of 6.3-7.3 s that must equal a 0.5-1 s wait
+        # plus a 3-3.5 s lane change)
         timings = {
             k for k, constraint in enumerate(relaxable_constraints(planner.automaton)) if isinstance(constraint, Timing)
         }

@@ -149,8 +149,8 @@ def planned(
     even then raises the first planner's error, explained (``settings.explain_unsatisfiable``) only
     then: its constraints clash (explaining before the fallbacks would cost a sample that one of
     them plans a whole diagnosis)."""
-    # one deadline for the first plan, however many planners and searches it takes: each had had
-    # the whole limit (200 one-second phases: "timed out" after 34 s under a 10 s limit)
+    # one deadline for the first plan, however many planners and searches it takes, not the whole
+    # limit for each
     deadline = time.monotonic() + settings.time_limit
     if not fallbacks:
         yield from _planner_for(guide(settings), settings, seed).plans(limit=limit, deadline=deadline)

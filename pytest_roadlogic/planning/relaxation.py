@@ -5,10 +5,9 @@ fastest speed any planner may plan. What comes out: None, or the smallest group 
 constraints (``Bound``s and ``Timing``s, as ``diagnosis.smallest_conflict`` gives them) under
 which no plan of any planner exists, because even the relaxation has no solution.
 
-Why: a sample with no plan had cost seconds (the planner over every horizon, then four fallback
-planners, then the diagnosis), and Hypothesis's shrinking of a failing band lives on such samples
-(issue 53: ``catch_up_band`` stopped shrinking at 291 m, its edge about 192 m). Most of them are
-plain arithmetic: a gap no speed allowed can close in the time allowed.
+Why: without it a sample with no plan costs the planner over every horizon, the fallback planners
+and the diagnosis, and Hypothesis's shrinking of a failing band lives on such samples. Most of
+them are plain arithmetic: a gap no speed allowed can close in the time allowed.
 
 The relaxation, per path of the automaton from its initial to its final location (at most
 ``MAX_PATHS``; more, and it proves nothing): one instant per transition of the path, with its time

@@ -85,8 +85,7 @@ class DurationWindow:
         for step in range(self.grounded + 1, horizon + 1):
             t = clingo.Number(step)
             parts += [("state", [t]), ("check", [t]), ("open", [t])]
-            # the time limit covers grounding too (a call cannot be stopped): 200 one-second
-            # phases took 2.2 s to ground 200 steps in one call, 25 keep to the limit within 10%
+            # the time limit covers grounding too (a call cannot be stopped): ground in chunks
             if step % GROUND_CHUNK == 0 and step < horizon:
                 self._ground(parts)
                 parts = []

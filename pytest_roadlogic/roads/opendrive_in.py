@@ -27,17 +27,17 @@ from .reference_line import Geometry, ReferenceLine
 # gigabytes) and keeps what reaches the planner and the simulator inside what they can take. Public
 # maps are far inside them (CARLA's Town04: 16 MB, its longest road 1.2 km, radii from 5 m).
 MAX_BYTES = 50_000_000  # read, not as stat says: a link to /dev/zero is never read past it
-MAX_ELEMENTS = 200_000  # XML elements: 600,000 <width> records had taken 69 s to check
+MAX_ELEMENTS = 200_000  # XML elements: past this a map takes minutes to check
 MAX_ATTRIBUTE = 1_000  # characters of one attribute's value: a road id of 5,000 digits
-# m: a longer road is refused (a road is sampled every quarter metre; a legal straight road of
-# 100 km had run past 120 s in the simulator's frame)
+# m: a longer road is refused (a road is sampled every quarter metre, and the simulator's frame
+# is built over all of it)
 MAX_LENGTH = 20_000.0
-MAX_TOTAL_LENGTH = 200_000.0  # m of all roads together: 60 geometries of 100 km had grown to 1.9 GB
+MAX_TOTAL_LENGTH = 200_000.0  # m of all roads together: what sampling them holds in memory
 MAX_GEOMETRIES = 10_000  # plan-view records of one road
 MAX_CURVATURE = 0.5  # 1/m: a radius under 2 m is no road (a spiral to 1e6 broke the simulator's frame)
 MAX_COORDINATE = 1e7  # m from the map's origin (10,000 km), of any point of a reference line
 MAX_LANES = 16  # lanes on one side of one section: 2,000 driving lanes broke the simulator's projection
-MAX_LANE_WIDTH = 20.0  # m: a lane width of 1e300 had overflowed the simulator's projection
+MAX_LANE_WIDTH = 20.0  # m: wider is no lane, and 1e300 overflows the simulator's projection
 
 
 class MapError(Exception):
@@ -315,8 +315,7 @@ def _road(path: Path, element: _Element) -> MapRoad:
 
 def _check_reference_line(path: Path, records: list[_Element], geometries: tuple[Geometry, ...]) -> None:
     """``MapError`` at the geometry whose line leaves the map's extent, is not finite, or bends
-    tighter than ``MAX_CURVATURE``: what the simulator's frame and the plot cannot take (paramPoly3
-    coefficients of 1e300 had reached the animation as NaN)."""
+    tighter than ``MAX_CURVATURE``: what the simulator's frame and the plot cannot take."""
     import numpy as np
 
     for geometry, record in zip(geometries, records):
@@ -418,8 +417,8 @@ def _geometry(path: Path, element: _Element) -> Geometry:
 
 def _check_widths(path: Path, lane: _Element, widths: tuple[LaneWidth, ...], length: float) -> None:
     """``MapError`` at a driving lane with no width, or at a width record whose cubic leaves
-    0..``MAX_LANE_WIDTH`` over its stretch (a width of 0 or -3.5 m everywhere had been reported as
-    a scenario without a plan: the map is at fault, and is named)."""
+    0..``MAX_LANE_WIDTH`` over its stretch: the map is at fault, and is named, not the scenario
+    reported without a plan)."""
     import numpy as np
 
     kind = lane.attributes.get("type", "none")

@@ -29,9 +29,7 @@ HALF_CAR = 3.0  # m: half a car's 4.5 m and some
 # behind the rearmost vehicle, and a car's half length and its driver's look-ahead need road
 ROUTE_MARGIN = 30.0
 # m/s^2 of lateral acceleration a planned car holds in a curve (0.2 g: 114 kph in a 500 m curve).
-# Measured (benchmarks/roads.py, the paper's seven on curved_highway.xodr, 10 samples each, one
-# try): 70 of 70 accepted at 2 m/s^2, 64 of 70 at 3 m/s^2 (139 kph: the passing cars of the
-# overtakes lag their plans at those speeds in the curve); docs/evaluation.md
+# Above it the passing cars of the overtakes lag their plans in a curve (docs/decisions.md).
 MAX_LATERAL_ACCELERATION = 2.0
 
 
@@ -207,8 +205,8 @@ def pick_route(
     where it is), at least that long, and with a ``curve`` (min radius, max radius, side; the
     standard's ``path_curve``) when one is asked for. ``MapError`` saying why no road fits, road by
     road."""
-    # a scenario that names no path_length still needs room to drive: a 10 m route had been
-    # reported as a scenario without a plan, blaming the scenario for the map
+    # a scenario that names no path_length still needs room to drive: a route too short for it
+    # would be reported as a scenario without a plan, blaming the scenario for the map
     length = length or MIN_ROUTE_LENGTH
     fitting = []
     for road in road_map.roads.values():

@@ -1,10 +1,10 @@
 """Drivers by importable name: what a case file records of the drivers that produced a failure.
 
 Why: a failure found with a ``pytest_roadlogic_driver`` hook (the vehicle under test driven by the
-user's planner) replayed as accepted under ``roadlogic replay``, which knew nothing of the hook and
-drove every vehicle with the default driver (issue 20). The plugin now records, per vehicle, the
-class of the driver the hook gave (``module:QualName``); a replay outside pytest builds the same
-classes again, and one that cannot says so rather than run other drivers.
+user's planner) must replay with the same drivers under ``roadlogic replay``, which knows nothing
+of the hook. The plugin records, per vehicle, the class of the driver the hook gave
+(``module:QualName``); a replay outside pytest builds the same classes again, and one that cannot
+says so rather than run other drivers.
 """
 
 from __future__ import annotations

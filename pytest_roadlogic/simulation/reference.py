@@ -25,9 +25,7 @@ from .road import Road
 
 LANE_CHANGE_DURATION = 3.0  # s; fits between two lane changes (3 planning steps apart)
 # s simulated after the plan's last step: the scenario's last phase may end then if its duration
-# allows. Measured on cut_out_obstacle (the ego brakes to a stop at the plan's last step and the
-# simulated car settles below 0.5 m/s about 0.5 s late): first plans accepted over seeds 1-10, 1 with
-# 2 s, 9 with 4 s; the paper's seven and the other realistic files unchanged (67 of 70, 10 of 10)
+# allows, and a car braking to a stop settles a little after its plan does (docs/decisions.md)
 TAIL = 4.0
 
 
@@ -79,8 +77,7 @@ class Reference:
         self._vel = np.array([w.speed for w in self.waypoints])
         self._lanes = [w.lane for w in self.waypoints]
         speed, rate = self._vel[0], self.runup_acceleration
-        # seconds into the run-up when the vehicle stops accelerating (never, with no run-up's rate:
-        # the division had warned "divide by zero" and given the same infinity)
+        # seconds into the run-up when the vehicle stops accelerating (never, with no run-up's rate)
         self._cruise_from = speed / rate if rate > 0 else np.inf
         # without a run-up the simulation starts in the plan's first state (the scenario's first
         # instant is the simulation's); with one, from standstill that far behind it

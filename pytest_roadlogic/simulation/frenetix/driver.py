@@ -54,45 +54,25 @@ class FrenetixDriver(DriverBase):
     """Tracks the waypoint schedule with frenetix-generated trajectories."""
 
     horizon = 3.0  # s
-    # Which trajectories are sampled and how much of each is compared with the reference decide how
-    # fast the car follows a change of speed. With end times 1, 2, 3 s and 2 s compared, a car whose
-    # plan brakes at 2 m/s^2 and then speeds up at 2 m/s^2 within a 5 s pull-out reached about half
-    # of either, 1.5-2.5 s late (follow_then_overtake's refined samples: the pass's relative speed
-    # came 2-3 s after the plan's, 6 of 16 first plans rejected for it). A 0.5 s end time and 0.5 s
-    # compared track it: benchmarks/driver.py, first plans of refined samples, one try each
-    # (accepted/collisions), before -> after: the paper's seven at seeds 11 and 12, 279/0 -> 279/0
-    # of 280; the realistic files but five_vehicle_minute, 110/1 -> 113/0 of 114 (seed 11) and
-    # 82/0 -> 83/0 of 86 (seed 12); those 16 follow_then_overtake samples 10 -> 13. Compared over
-    # 0.3 s the car followed the plan too eagerly (131/3 on the paper's seven at seed 12).
+    # which trajectories are sampled and how much of each is compared with the reference decide how
+    # fast the car follows a change of speed: short ones, compared briefly (docs/decisions.md)
     durations = (0.5, 1.0, 2.0, 3.0)  # s, end times of the sampled trajectories
     speed_offsets = (-3.0, -1.5, -0.5, 0.0, 0.5, 1.5, 3.0)  # m/s around the reference end speed
     tracked = 0.5  # s of each trajectory compared with the reference
-    # s of each trajectory checked for collisions and for leaving the road: as far ahead as before,
-    # whatever the tracking compares (checked over the 0.5 s tracked only, overtake collided once
-    # in 20 samples at seed 12; over 0.3 s, three times)
+    # s of each trajectory checked for collisions and for leaving the road: further ahead than the
+    # tracking compares, which alone lets collisions through (docs/decisions.md)
     guarded = 2.0
     low_velocity = 2.0  # m/s; below it frenetix plans lateral motion over distance, not time
     # weights of the tracking cost: squared errors of s (m), d (m) and v (m/s) over the tracked
-    # window, and the clearance (m, beyond the boxes) kept from the others' trajectories. Measured
-    # (issue 20) on 280 refined samples of the paper's seven (20 per scenario, seeds 11 and 12), one
-    # try each: weights 1, 2, 0.2 accepted 267 (3 collisions); with the reference's lateral end state
-    # (below) 266 (2); speed weight 2 alone 271 (9 collisions); both 279 (none). The reference's
-    # acceleration as the longitudinal end state too was worse (overtake's first plans, seeds
-    # 1-10: 6 of 10 accepted against 8). Those two left the corpus's 53_stop_and_go
-    # creeping at 1 m/s where it had to stand (0 of 6 seeds; 5 of 6 before): with the stopping
-    # sample (stop_deceleration) 5 of 6 again, and the 280 samples still 279 accepted, no collision
+    # window, and the clearance (m, beyond the boxes) kept from the others' trajectories; chosen by
+    # the accepted share of refined samples (docs/decisions.md)
     position_weight, lateral_weight, speed_weight = 1.0, 2.0, 2.0
     longitudinal_clearance, lateral_clearance = 0.5, 0.2
     derivative_step = 0.05  # s, of the reference's numerical derivatives
     stop_deceleration: float | None = 3.0  # m/s^2 of the stopping sample
-    # a trajectory's acceleration as the change of its speed, not frenetix's cartesian ``a``: that
-    # array is not the derivative of the speeds beside it (braking at 5.4 m/s^2 it read 3.5; its
-    # first sample half the state's), and the chosen trajectory's next state is where the following
-    # replanning starts, so each one began with too little acceleration and the car lagged behind
-    # every change of speed. benchmarks/driver.py, first plans of refined samples, one try each,
-    # frenetix's a -> the speeds' change: the paper's seven at seeds 11 and 12, 276 -> 278 of 280;
-    # the realistic files but five_vehicle_minute, 197 -> 199 of 200; no collision either way; 16
-    # follow_then_overtake samples whose pull-out had lagged, 13 -> 16
+    # a trajectory's acceleration as the change of its speed, not frenetix's cartesian ``a``, which
+    # is not the derivative of the speeds beside it: the next replanning starts from the chosen
+    # trajectory's next state, and with too little acceleration the car lags every change of speed
     acceleration_from_speed = True
     # s between two samplings: in between, the car drives on along the trajectory it chose, unless
     # another vehicle is near (``near``: metres along and across the road, between centres), or a
@@ -235,8 +215,7 @@ class FrenetixDriver(DriverBase):
         ends = time + durations
         v_refs = self.reference.v(ends)
         # the lateral end state is the reference's, rate and curvature too: a candidate ending
-        # mid lane change at rest (d' = 0) stalled the change, each replanning again (the car
-        # crossed the lane line up to 1 s late, issue 20)
+        # mid lane change at rest (d' = 0) would stall the change, each replanning again
         around = self.reference.d(np.stack([ends - h, ends, ends + h], axis=1).ravel()).reshape(-1, 3) - self.d_origin
         d_refs = around[:, 1]
         d_rates = (around[:, 2] - around[:, 0]) / (2 * h)

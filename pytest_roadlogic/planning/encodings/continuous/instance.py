@@ -86,8 +86,7 @@ def first_speeds(automaton: SymbolicAutomaton, settings: ContinuousSettings) -> 
     running there, or the speed CARLA's ``speed(v)`` drives toward there; the middle of its range
     within the settings' speeds. A vehicle starts at it rather than at the road's typical speed
     (``asp/continuous/dynamics.lp``): "drive at 10 kph" starts at 10 kph. Only the first phases:
-    a speed a later phase asks for (a CARLA npc's speed(10kph) two phases on) had been its start
-    speed, and the npc had started at 10 kph to then speed up to pass."""
+    a speed a later phase asks for is where it goes, not where it starts."""
     found: dict[str, float] = {}
     first = [t.target for t in automaton.outgoing(automaton.initial)]
     guards = [automaton.location(automaton.initial).invariant]

@@ -147,7 +147,7 @@ def _element(term: clingo.TheoryTerm, program: LinearProgram) -> tuple[int, floa
 
 # the printed form of the elements the encoding writes: ``x``, ``((-1)*x)``, ``((-"0.5")*x)``,
 # ``("2"*x)``, ``-x``, where x is a function term without nested parentheses (its arguments may be
-# quoted strings: a vehicle named ``"dut.car"``, whose rows had all taken the slow path); and of a bound
+# quoted strings: a vehicle named ``"dut.car"``); and of a bound
 _PRINTED_ELEMENT = re.compile(
     r'^\(*(?:\(?(-)?"?(-?[0-9.]+(?:/[0-9]+)?)"?\)?\*)?(-)?([a-z_][A-Za-z0-9_]*\((?:[^()"]|"[^"]*")*\))\)*$'
 )

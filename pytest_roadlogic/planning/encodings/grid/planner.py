@@ -38,9 +38,8 @@ BACKGROUND = (
 INITIAL = "initial.lp"  # the rules of the initial state, after the instance's facts (see control_for)
 PREFERENCES = (ASP_GRID / "preferences.lp", KEEP_LANE)  # loaded for a random start only, in this order
 # conflicts a random start may spend stretching its plan past the shortest horizon: random
-# preferences now and then lead the search into a long detour (measured: up to 36 s), and a count
-# of conflicts, unlike a time limit, ends it at the same point on every machine (50 000: about 2 s
-# here; past it the plan keeps the shortest horizon)
+# preferences now and then lead the search into a long detour, and a count of conflicts, unlike a
+# time limit, ends it at the same point on every machine (past it the plan keeps the shortest horizon)
 STRETCH_CONFLICTS = 50_000
 
 
@@ -89,9 +88,8 @@ class GridPlanner(IncrementalPlanner):
         if (wide := self.widened()) is not None:
             programs.append(lambda: self.instance_for(wide))
         # the paper's encoding plans as the paper did: least action (asp/least_action.lp) is the
-        # continuous encoding's. Measured: with it, follow's grid plans changed and 3 of its 50
-        # refined samples (the bench's) ended in a collision after the plan, which the grid, having
-        # no rule against closing in at a plan's end, does not prevent
+        # continuous encoding's: the grid has no rule against closing in at a plan's end, and least
+        # action's plans can end in a collision after it (docs/decisions.md)
         self.least_action = False
         self.stats["least_action"] = 0.0
         for program in programs:
