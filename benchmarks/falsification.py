@@ -46,7 +46,7 @@ class Found(Exception):
 
 def late_by(delay: float):
     """A driver factory: the reference ACC acting ``delay`` seconds late drives the vehicle under test."""
-    from pytest_roadlogic.dut.acc import AdaptiveCruiseControl
+    from pytest_roadlogic.dut.reference_drivers import AdaptiveCruiseControl
 
     class Late(AdaptiveCruiseControl):
         reaction_delay = delay

@@ -32,7 +32,7 @@ sys.path.insert(0, str(ROOT))
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from pytest_roadlogic.automaton import build_automaton  # noqa: E402
-from pytest_roadlogic.evaluation.runner import conftest_dialect  # noqa: E402
+from pytest_roadlogic.evaluation.bench import conftest_dialect  # noqa: E402
 from pytest_roadlogic.frontend import OscError, check_file  # noqa: E402
 from pytest_roadlogic.planning import (  # noqa: E402  # noqa: E402
     ContinuousPlanner,

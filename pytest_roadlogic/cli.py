@@ -731,7 +731,7 @@ def _bench(args: argparse.Namespace) -> int:
     """Run the evaluation (or read a run's results) and write its report; exit 0 when every target
     is met, 1 when one is missed, 2 when the input is unusable."""
     from .evaluation import BenchmarkResults, summaries, targets_met, write_report
-    from .evaluation.runner import RESULTS_FILE
+    from .evaluation.bench import RESULTS_FILE
 
     if args.report_only:
         try:
@@ -768,7 +768,7 @@ def _bench_out_refused(args: argparse.Namespace) -> bool:
     does not write, one another bench holds, a name the system refuses): say so before running
     (True): a user's own files are never overwritten, and two benches never mix their results."""
     from .artifacts.files import NotAnArtifactFolder, check_replaceable, claimed
-    from .evaluation.runner import BENCH_NAMES, RESULTS_FILE
+    from .evaluation.bench import BENCH_NAMES, RESULTS_FILE
 
     try:
         args.held.enter_context(claimed(args.out))  # first: a second bench into it is told so

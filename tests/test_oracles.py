@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 from pytest_roadlogic.dut import AUTO, NONE, NoSuchVehicle, UnderTest
-from pytest_roadlogic.dut.acc import AdaptiveCruiseControl, LateAcc, WeakBrakingAcc
+from pytest_roadlogic.dut.reference_drivers import AdaptiveCruiseControl, LateAcc, WeakBrakingAcc
 from pytest_roadlogic.logic.dimensions import CAR_LENGTH, CAR_WIDTH
 from pytest_roadlogic.oracles import Thresholds, judge
 from pytest_roadlogic.simulation.driver import Trajectory, VehicleState

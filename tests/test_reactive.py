@@ -12,7 +12,7 @@ import pytest
 
 from pytest_roadlogic.automaton import build_automaton
 from pytest_roadlogic.dut import UnderTest
-from pytest_roadlogic.dut.acc import AdaptiveCruiseControl
+from pytest_roadlogic.dut.reference_drivers import AdaptiveCruiseControl
 from pytest_roadlogic.pipeline import guided_planning, load_scenario, run_instances
 from pytest_roadlogic.planning import settings_for
 from pytest_roadlogic.planning.fallbacks import planned

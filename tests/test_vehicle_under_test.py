@@ -73,7 +73,7 @@ def test_an_item_whose_cases_mostly_did_not_happen_fails_saying_it_tested_nothin
     copy(pytester, "cut_in.osc")
     # a vehicle under test set 15% below the speed it starts at: its plan holds the speed
     pytester.makeconftest(
-        "from pytest_roadlogic.dut.acc import AdaptiveCruiseControl\n\n"
+        "from pytest_roadlogic.dut.reference_drivers import AdaptiveCruiseControl\n\n"
         "class Cautious(AdaptiveCruiseControl):\n"
         "    def start(self, vehicle, reference, road, dt):\n"
         "        super().start(vehicle, reference, road, dt)\n"
@@ -171,7 +171,7 @@ def test_roadlogic_run_prints_a_gap_of_zero_as_zero_and_no_one_ahead_as_inf():
 PACKAGED_DRIVER = '''
 from pathlib import Path
 
-from pytest_roadlogic.dut.acc import AdaptiveCruiseControl
+from pytest_roadlogic.dut.reference_drivers import AdaptiveCruiseControl
 
 
 class Cautious(AdaptiveCruiseControl):

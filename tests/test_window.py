@@ -8,7 +8,7 @@ from pathlib import Path
 import pytest
 
 from pytest_roadlogic.automaton import build_automaton
-from pytest_roadlogic.evaluation.runner import conftest_dialect
+from pytest_roadlogic.evaluation.bench import conftest_dialect
 from pytest_roadlogic.frontend import check_file
 from pytest_roadlogic.planning import ContinuousPlanner, ContinuousSettings
 from pytest_roadlogic.planning.window import shortest_run

@@ -1,4 +1,4 @@
-"""The vehicle under test: who it is (``roles``) and reference drivers for it (``registry``, ``acc``).
+"""The vehicle under test: who it is (``roles``) and reference drivers for it (``registry`` names them, ``reference_drivers`` holds the built-in ones).
 
 A vehicle under test is given a goal, not a script: it drives itself (with the user's driver, or
 a reference one), the oracles (``pytest_roadlogic.oracles``) say whether it failed, and the

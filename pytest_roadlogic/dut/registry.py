@@ -15,9 +15,9 @@ ENTRY_POINT_GROUP = "pytest_roadlogic.drivers"
 DEFAULT = "acc"
 # the built-in ones, as "module:class" in this package, loaded when a run builds one
 BUILT_IN = {
-    "acc": "pytest_roadlogic.dut.acc:AdaptiveCruiseControl",
-    "late-acc": "pytest_roadlogic.dut.acc:LateAcc",
-    "weak-braking-acc": "pytest_roadlogic.dut.acc:WeakBrakingAcc",
+    "acc": "pytest_roadlogic.dut.reference_drivers:AdaptiveCruiseControl",
+    "late-acc": "pytest_roadlogic.dut.reference_drivers:LateAcc",
+    "weak-braking-acc": "pytest_roadlogic.dut.reference_drivers:WeakBrakingAcc",
 }
 
 

@@ -1,9 +1,9 @@
 """The paper's evaluation as a command (``roadlogic bench``): run every scenario under the base and
 the refined strategy, then report time per stage and conformance (RQ1) and diversity (RQ2)."""
 
+from .bench import BenchmarkResults, BenchmarkSettings, InstanceRecord, run_benchmark
 from .occupancy import Occupancy, jaccard, mean_pairwise, similarity_matrix
 from .report import write_report
-from .runner import BenchmarkResults, BenchmarkSettings, InstanceRecord, run_benchmark
 from .summary import StrategySummary, summaries, targets, targets_met
 
 __all__ = [

@@ -16,7 +16,7 @@ from ..outcomes import (
     TIMED_OUT,
     shown,
 )
-from .runner import STRATEGIES
+from .bench import STRATEGIES
 from .summary import StrategySummary
 
 STAGE_COLOURS = {

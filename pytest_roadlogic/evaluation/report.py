@@ -11,7 +11,7 @@ from ..confinement import safe_name
 from ..outcomes import CONFORMANT, NO_PLAN, STAGES, shown
 from ..settings import BASE, REFINED
 from . import figures
-from .runner import PAPER_COUNTS, STRATEGIES, BenchmarkResults
+from .bench import PAPER_COUNTS, STRATEGIES, BenchmarkResults
 from .summary import StrategySummary, summaries, targets
 
 REPORT_FILE = "report.md"

@@ -13,7 +13,7 @@ from pathlib import Path
 from ..confinement import osc_files
 from ..frontend import OscError, check_file
 from ..settings import RunSettings
-from .runner import (
+from .bench import (
     PAPER_COUNTS,
     QUICK_COUNTS,
     REALISTIC_COUNTS,

@@ -12,8 +12,8 @@ from dataclasses import dataclass
 
 from ..outcomes import CONFORMANT, OUTCOMES, STAGES, TIMED_OUT
 from ..settings import BASE, REFINED
+from .bench import STRATEGIES, BenchmarkResults, InstanceRecord
 from .occupancy import mean_pairwise, similarity_matrix
-from .runner import STRATEGIES, BenchmarkResults, InstanceRecord
 
 # the acceptance targets
 BASE_CONFORMANT = 1.0

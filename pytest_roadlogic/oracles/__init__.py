@@ -8,7 +8,7 @@ from importlib import import_module
 from .registry import ORACLES, ORACLES_BY_NAME, Oracle
 from .thresholds import Thresholds
 
-_HOMES = {"Closest": "measures", "Collision": "report", "DutReport": "report", "judge": "report"}
+_HOMES = {"Closest": "measures", "Collision": "verdict", "DutReport": "verdict", "judge": "verdict"}
 
 
 def __getattr__(name: str):

@@ -8,7 +8,7 @@ record here and its measure in ``oracles/measures.py``. Plain data: the settings
 module in every pytest session, so it imports nothing.
 
 Collisions and leaving the road are not records: they fail at any value, have no threshold, and
-say who caused them (``oracles.report``).
+say who caused them (``oracles.verdict``).
 """
 
 from __future__ import annotations
