@@ -27,7 +27,6 @@ from pathlib import Path
 import pytest
 
 from .dut import NoSuchVehicle
-from .oracles.registry import ORACLES
 from .outcomes import (
     DUT_FAILED,
     NOT_EXERCISED,
@@ -38,6 +37,7 @@ from .outcomes import (
     mostly_not_exercised,
     with_a_vehicle_under_test,
 )
+from .registries.oracles import ORACLES
 from .settings import BASE, DUT_AUTO, DUT_NONE, OPTIONS, OPTIONS_BY_NAME, REFINED, OptionError, RunSettings
 from .settings import dialect as parse_dialect
 

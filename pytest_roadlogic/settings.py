@@ -16,10 +16,10 @@ from dataclasses import dataclass, make_dataclass
 from dataclasses import field as dataclass_field
 from typing import Any
 
-from .dut.registry import BUILT_IN as BUILT_IN_DRIVERS
-from .dut.registry import DEFAULT as DEFAULT_DUT_DRIVER
-from .dut.registry import driver_names
-from .oracles.registry import ORACLES
+from .registries.drivers import BUILT_IN as BUILT_IN_DRIVERS
+from .registries.drivers import DEFAULT as DEFAULT_DUT_DRIVER
+from .registries.drivers import driver_names
+from .registries.oracles import ORACLES
 
 REFINED, BASE = "refined", "base"
 STRATEGIES = (REFINED, BASE)
@@ -207,7 +207,7 @@ DUT_AUTO, DUT_NONE = "auto", "none"
 
 
 def dut_driver(text: str) -> str:
-    """A reference driver's name, one of ``dut.registry.driver_names()``."""
+    """A reference driver's name, one of ``registries.drivers.driver_names()``."""
     return one_of(driver_names(), "a reference driver of the vehicle under test")(text)
 
 
@@ -275,7 +275,7 @@ def speed_band_text(band: tuple[float, float]) -> str:
 
 
 def threshold_option(oracle) -> Option:
-    """The option that sets ``oracle``'s threshold (an ``oracles.registry.Oracle``)."""
+    """The option that sets ``oracle``'s threshold (an ``registries.oracles.Oracle``)."""
     parse = positive(f"a {oracle.quantity}", f"{oracle.default:g}")
     return Option(oracle.option, oracle.setting, parse, oracle.default, oracle.help, kind=float)
 

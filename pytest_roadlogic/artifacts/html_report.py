@@ -11,7 +11,7 @@ import base64
 import html
 from pathlib import Path
 
-from ..oracles.registry import ORACLES
+from ..registries.oracles import ORACLES
 
 
 def report_extras(paths: dict[str, Path], replay: list[str]) -> list[dict]:

@@ -4,7 +4,7 @@ The vehicle under test is the scenario's own (the standard's ``dut.car``, or a v
 ``dut``) unless the ``dut`` option names another vehicle, or ``none`` (every vehicle follows its
 plan: conformance scenarios, as the RoadLogic paper generates them). It drives itself with the
 driver a ``pytest_roadlogic_driver`` hook gives it, else with the reference driver the
-``dut-driver`` option names (``dut.registry``). Every other vehicle is the scenario's.
+``dut-driver`` option names (``registries.drivers``). Every other vehicle is the scenario's.
 """
 
 from __future__ import annotations
@@ -13,7 +13,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 
 from ..oracles import Thresholds
-from .registry import DEFAULT, reference_driver
+from ..registries.drivers import DEFAULT, reference_driver
 
 AUTO, NONE = "auto", "none"
 # the spellings of the vehicle under test in scenario files: the standard library's dut.car, and dut

@@ -5,7 +5,7 @@ first use."""
 
 from importlib import import_module
 
-from .registry import ORACLES, ORACLES_BY_NAME, Oracle
+from ..registries.oracles import ORACLES, ORACLES_BY_NAME, Oracle
 from .thresholds import Thresholds
 
 _HOMES = {"Closest": "measures", "Collision": "verdict", "DutReport": "verdict", "judge": "verdict"}

@@ -14,7 +14,7 @@ leader:
 - the **time headway** is that gap over the follower's own speed, judged while it closes in;
 - the **deceleration** of a vehicle is minus its acceleration, when it brakes.
 
-Each oracle's measure (``oracles.registry.Oracle.measure``) reads one ``Seen`` and returns the
+Each oracle's measure (``registries.oracles.Oracle.measure``) reads one ``Seen`` and returns the
 ``Closest`` its oracle judges.
 """
 

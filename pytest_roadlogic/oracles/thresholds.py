@@ -5,7 +5,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 
-from .registry import ORACLES, ORACLES_BY_NAME
+from ..registries.oracles import ORACLES, ORACLES_BY_NAME
 
 
 def _defaults() -> dict[str, float]:
@@ -14,7 +14,7 @@ def _defaults() -> dict[str, float]:
 
 @dataclass(frozen=True)
 class Thresholds:
-    """Each oracle's threshold by its name (``oracles.registry.ORACLES``; its default where none
+    """Each oracle's threshold by its name (``registries.oracles.ORACLES``; its default where none
     is given), and how long after a vehicle enters the path of the one under test its gap to it
     is judged from."""
 

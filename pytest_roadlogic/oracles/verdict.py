@@ -2,7 +2,7 @@
 
 The monitor says whether the scenario happened; this says whether the vehicle under test
 misbehaved while it did: a collision it caused, leaving the road, or any oracle of the registry
-(``oracles.registry.ORACLES``: time to collision, gap, braking) past its threshold. Every value
+(``registries.oracles.ORACLES``: time to collision, gap, braking) past its threshold. Every value
 is kept (``DutReport.values``), failed or not, for reports and case files; ``margin`` is how far
 the closest oracle is from failing, what a search for failures steers by.
 """
@@ -16,10 +16,10 @@ from dataclasses import asdict, dataclass, field
 import numpy as np
 
 from ..logic.dimensions import CAR_LENGTH, CAR_WIDTH
+from ..registries.oracles import ORACLES, Oracle
 from ..simulation.trace import Trace
 from . import measures
 from .measures import Closest, Seen, gaps_ahead
-from .registry import ORACLES, Oracle
 from .thresholds import Thresholds
 
 
@@ -40,7 +40,7 @@ class Collision:
 @dataclass(frozen=True)
 class DutReport:
     """The oracles' verdict on the vehicle under test in one trace: its collisions, when it left
-    the road, and each oracle's measured value by the oracle's name (``oracles.registry``)."""
+    the road, and each oracle's measured value by the oracle's name (``registries.oracles``)."""
 
     vehicle: str
     thresholds: Thresholds
