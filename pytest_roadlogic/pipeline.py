@@ -134,8 +134,6 @@ def run_instances(
             seconds["planning"] += time.perf_counter() - start
             if plan is None:
                 break
-            if scenario.route is not None:
-                plan = dataclasses.replace(plan, route=scenario.route)
             start = time.perf_counter()
             react = _reactive(plan, guide, settings, seed, dut, under_test)
             simulation = simulator.simulate(plan, limits, drivers, **({"react": react} if react else {}))

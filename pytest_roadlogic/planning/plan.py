@@ -4,6 +4,10 @@ from __future__ import annotations
 
 import json
 from dataclasses import asdict, dataclass, field
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from ..roads.route import Route
 
 
 @dataclass(frozen=True)
@@ -38,9 +42,9 @@ class Plan:
     stats: dict[str, float] = field(default_factory=dict)
     # vehicles that never move (stationary objects): simulated as standing obstacles
     stationary: tuple[str, ...] = ()
-    # the route of a map it is driven on (roads.Route, set by the pipeline from the scenario); None:
-    # the straight road
-    route: object = field(default=None, compare=False, repr=False)
+    # the route of a map it was planned on and is driven on (its settings' ``route``); None: the
+    # straight road
+    route: Route | None = field(default=None, compare=False, repr=False)
     # on a map's route: the metres along it of position 0 (asp/continuous/route.lp); None: the
     # straight road, or a plan that does not say
     origin: float | None = None

@@ -14,11 +14,14 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
-from typing import Any, ClassVar, Protocol
+from typing import TYPE_CHECKING, Any, ClassVar, Protocol
 
 from ..logic.automaton import SymbolicAutomaton
 from .errors import CannotPlanOnMap, CannotReplan  # noqa: F401 (the protocol's answers of "cannot")
 from .plan import Plan, PlanState
+
+if TYPE_CHECKING:
+    from ..roads.route import Route
 
 
 @dataclass(frozen=True)
@@ -67,6 +70,9 @@ class PlannerSettings(Protocol):
     random_start: bool  # the refined strategy's draws from the seed
     position_margin: float  # metres planned inside a position range
     speed_margin: float  # m/s planned inside a speed range
+    route: (
+        Route | None
+    )  # the map's route these settings plan on (``on_route``), which each plan carries; None: the straight road
 
     def resolution(self) -> dict[str | None, float]:
         """How wide a band a sampled value is narrowed to, per physical dimension."""

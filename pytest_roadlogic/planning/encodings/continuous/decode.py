@@ -50,5 +50,6 @@ def decode_plan(
         stats=dict(stats),
         runup=0.0,
         stationary=tuple(v for v in automaton.actors if v in automaton.stationary),
+        route=settings.route,
         origin=float(Fraction(str(values["origin"]).strip('"'))) if "origin" in values else None,
     )

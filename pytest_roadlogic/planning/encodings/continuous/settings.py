@@ -5,11 +5,14 @@ Plain data, importable without clingo: the pipeline, the sampler and the reports
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
-from typing import ClassVar
+from dataclasses import dataclass, field, replace
+from typing import TYPE_CHECKING, ClassVar
 
 from ....settings import CONTINUOUS_HORIZON, ROAD_SPEED
 from ...protocol import Limit
+
+if TYPE_CHECKING:
+    from ....roads.route import Route
 
 # the vehicle limits a fallback plans without, when no plan exists within them: (field, relaxed
 # value, unit, whether a real car's). The relaxed values are beyond any car's, so a plan that needs
@@ -84,6 +87,7 @@ class ContinuousSettings:
     # where the plan's position 0 (its first vehicle's start) lies along the route, when the
     # scenario asks for a curve (path_curve); None: anywhere the route_span allows
     origin_span: tuple[float, float] | None = None
+    route: Route | None = field(default=None, compare=False, repr=False)  # the map's route (on_route)
     # why a limit has the value it has when not a car's own: (field, why), for the messages
     limit_reasons: tuple[tuple[str, str], ...] = ()
     max_horizon: int = CONTINUOUS_HORIZON  # steps
@@ -144,6 +148,7 @@ class ContinuousSettings:
             route_span=(ROUTE_MARGIN, route.length - ROUTE_MARGIN),
             lane_spans=tuple((lane, first, last) for lane, (first, last) in sorted(route.spans().items())),
             origin_span=route.start_within,
+            route=route,
         )
 
     def resolution(self) -> dict[str | None, float]:

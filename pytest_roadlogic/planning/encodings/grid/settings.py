@@ -20,6 +20,7 @@ class GridSettings:
 
     encoding: ClassVar[str] = "grid"
     replanning: ClassVar[bool] = False  # its planner plans whole scenarios from their start only
+    route: ClassVar[None] = None  # it plans on no map (on_route says CannotPlanOnMap)
     dt: float = 1.0  # seconds per planning step
     grid: float = 1.0  # metres per cell (the road's lanes come with the automaton)
     min_speed: float = 2.0  # m/s; positive, so that no vehicle stops (domain rule 1)
