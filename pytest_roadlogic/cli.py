@@ -478,6 +478,7 @@ def _reporting_input_errors(args: argparse.Namespace, action):
     from .dut import NoSuchVehicle
     from .frontend import OscError
     from .planning import NoPlanError, UnsatisfiableScenario
+    from .registries.drivers import UnknownDriver
     from .sampling import UnknownParameter
     from .simulation.backends import UnknownSimulator
     from .simulation.named_drivers import DriverLoadError
@@ -487,7 +488,7 @@ def _reporting_input_errors(args: argparse.Namespace, action):
     except OscError as error:
         print(error.report(), file=sys.stderr)
         return EXIT_INPUT
-    except (UnknownParameter, CaseFileError, UnknownSimulator) as error:
+    except (UnknownParameter, CaseFileError, UnknownSimulator, UnknownDriver) as error:
         print(f"{args.file}: error: {error}", file=sys.stderr)
         return EXIT_INPUT
     except NoSuchVehicle as error:

@@ -37,6 +37,7 @@ from .outcomes import (
     mostly_not_exercised,
     with_a_vehicle_under_test,
 )
+from .registries.drivers import BUILT_IN as BUILT_IN_DRIVERS
 from .registries.oracles import ORACLES
 from .settings import BASE, DUT_AUTO, DUT_NONE, OPTIONS, OPTIONS_BY_NAME, REFINED, OptionError, RunSettings
 from .settings import dialect as parse_dialect
@@ -132,6 +133,14 @@ def _settings(config: pytest.Config) -> RunSettings:
             f"{settings.examples} examples, and each shard draws at least one; give at most {settings.examples} shards, "
             "or more examples with --roadlogic-examples"
         )
+    if settings.dut_driver not in BUILT_IN_DRIVERS:
+        # a package's driver: loaded once here, so that one that cannot load stops the session with why
+        from .registries.drivers import UnknownDriver, reference_driver
+
+        try:
+            reference_driver(settings.dut_driver)
+        except UnknownDriver as error:
+            raise pytest.UsageError(f"roadlogic: --roadlogic-dut-driver (ini roadlogic_dut_driver): {error}") from None
     from .simulation.backends import available  # names only: no backend is imported
 
     if settings.simulator not in available():

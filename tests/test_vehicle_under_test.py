@@ -192,8 +192,9 @@ def test_a_reference_driver_plugs_in_from_an_installed_package_through_its_entry
         "Metadata-Version: 2.1\nName: cautious-acc\nVersion: 1.0\n"
     )
     (site / "cautious_acc-1.0.dist-info" / "entry_points.txt").write_text(
-        "[pytest_roadlogic.drivers]\ncautious = cautious_acc:Cautious\n"
+        "[pytest_roadlogic.drivers]\ncautious = cautious_acc:Cautious\nbroken = broken_acc:Driver\n"
     )
+    (site / "broken_acc.py").write_text("import a_module_nobody_installed\n")
     monkeypatch.setenv("PYTHONPATH", str(site))
     copy(pytester, "cut_in.osc")
     result = pytester.runpytest_subprocess(*ONE, "--roadlogic-dut-driver", "cautious")
@@ -202,8 +203,12 @@ def test_a_reference_driver_plugs_in_from_an_installed_package_through_its_entry
         "the package's driver drove the vehicle under test"
     )
 
+    broken = pytester.runpytest_subprocess(*ONE, "--roadlogic-dut-driver", "broken")
+    assert "the entry point broken_acc:Driver for the reference driver 'broken' cannot be loaded" in broken.stderr.str()
+    assert "Traceback" not in broken.stderr.str() + broken.stdout.str()
+
     unknown = pytester.runpytest_subprocess(*ONE, "--roadlogic-dut-driver", "reckless")
     assert (
-        "'reckless' is not a reference driver of the vehicle under test; give acc or late-acc or weak-braking-acc or cautious"
+        "'reckless' is not a reference driver of the vehicle under test; give acc or late-acc or weak-braking-acc or cautious or broken"
         in unknown.stderr.str()
     )

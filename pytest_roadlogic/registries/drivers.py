@@ -40,7 +40,13 @@ def reference_driver(name: str = DEFAULT):
         return getattr(import_module(module), attribute)()
     for point in metadata.entry_points(group=ENTRY_POINT_GROUP):
         if point.name == name:
-            driver = point.load()()
+            try:
+                driver = point.load()()
+            except Exception as error:  # a package's code: whatever it raises is its entry point's fault
+                raise UnknownDriver(
+                    f"the entry point {point.value} for the reference driver {name!r} cannot be loaded: "
+                    f"{type(error).__name__}: {error}; reinstall or fix the package that declares it"
+                ) from None
             # a package's object, checked once here: the loop calls these two on every vehicle it drives
             if not all(callable(getattr(driver, method, None)) for method in ("start", "plan")):
                 raise UnknownDriver(
