@@ -153,11 +153,12 @@ def test_item_11_an_interrupt_or_a_closed_pipe_ends_the_cli_without_a_traceback(
     monkeypatch, capsys, raised, code, said
 ):
     from pytest_roadlogic import cli
+    from pytest_roadlogic.cli import check
 
     def interrupted(args):
         raise raised()
 
-    monkeypatch.setattr(cli, "_check", interrupted)
+    monkeypatch.setattr(check, "_check", interrupted)
     assert cli.main(["check", "x.osc"]) == code
     assert capsys.readouterr().err.strip() == said
 

@@ -161,7 +161,7 @@ def test_a_conftest_judges_one_scenario_by_its_own_thresholds_and_a_bad_one_is_n
 
 
 def test_roadlogic_run_prints_a_gap_of_zero_as_zero_and_no_one_ahead_as_inf():
-    from pytest_roadlogic.cli import oracle_line
+    from pytest_roadlogic.cli.common import oracle_line
     from pytest_roadlogic.oracles import Closest, DutReport, Thresholds
 
     line = oracle_line(DutReport("dut.car", Thresholds(), measured={"gap": Closest(0.0, 1.0, "npc")}), replans=3)

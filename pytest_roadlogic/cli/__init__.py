@@ -1,0 +1,58 @@
+"""The ``roadlogic`` command: one module per subcommand (``run``, ``check``, ``automaton``, ``plan``,
+``replay``, ``bench``), each with its flags (``add``) and its action; ``common`` holds what they share.
+
+    roadlogic run FILE.osc [--scenario NAME] [--seed S] [--out DIR] [--lanes N] [--tries N] [--instances N | --values JSON]
+                  [--encoding continuous|grid] [--horizon N] [--plan-timeout S] [--sim-timeout S] [--simulator NAME]
+    roadlogic check PATH... [--syntax-only] [--lanes N]
+    roadlogic automaton FILE.osc [--scenario NAME] [--out FILE.dot] [--lanes N]
+    roadlogic plan FILE.osc [--scenario NAME] [--plans N] [--seed S] [--lanes N] [--show-asp]
+    roadlogic replay CASE.json [--out DIR]
+    roadlogic replay FILE.osc [--scenario NAME] [--seed S] [--values JSON | --strategy base --instance K] [--out DIR]
+
+Exit codes of ``run``: 0 the simulation was accepted; 1 it was rejected (or no plan exists);
+2 the input is unusable (a file that does not parse or check, a bad option).
+Exit codes of ``check``: 0 every file is fine; 1 some file has an error; 2 a path does not exist.
+Exit codes of ``automaton``: 0 written; 2 the input is unusable.
+Exit codes of ``plan``: 0 at least one plan; 1 no plan exists; 2 the input is unusable.
+Exit codes of ``replay``: as ``run``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import contextlib
+import os
+import sys
+
+# Light imports only: `roadlogic --help` and argument errors must not load the pipeline; each
+# command imports the stages it uses when it runs.
+from . import automaton, bench, check, plan, replay, run
+from .common import EXIT_ACCEPTED, EXIT_INPUT, EXIT_REJECTED
+
+__all__ = ["EXIT_ACCEPTED", "EXIT_INPUT", "EXIT_REJECTED", "main"]
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(
+        prog="roadlogic", description="Concrete, monitored simulations from OpenSCENARIO DSL scenarios."
+    )
+    commands = parser.add_subparsers(dest="command", required=True)
+    for command in (run, replay, check, automaton, plan, bench):
+        command.add(commands)
+    args = parser.parse_args(argv)
+    args.argv = list(sys.argv[1:] if argv is None else argv)
+    command = args.action
+    try:
+        with contextlib.ExitStack() as args.held:  # what a command holds while it runs (its --out folder's claim)
+            return command(args)
+    except KeyboardInterrupt:
+        # Ctrl-C: a line, not the traceback of wherever the solver or the simulation was
+        print(f"roadlogic {args.command}: interrupted", file=sys.stderr)
+        return 130
+    except BrokenPipeError:
+        # the reader of our output went away (roadlogic check ... | head): stop quietly, as cat does
+        try:
+            os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())  # nothing more to flush at exit
+        except OSError:
+            pass
+        return 141

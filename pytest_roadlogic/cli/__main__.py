@@ -1,0 +1,5 @@
+"""``python -m pytest_roadlogic.cli``: the ``roadlogic`` command."""
+
+from . import main
+
+raise SystemExit(main())
