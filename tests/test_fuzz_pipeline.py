@@ -31,7 +31,7 @@ from hypothesis import strategies as st
 from pytest_roadlogic.automaton import build_automaton
 from pytest_roadlogic.frontend import OscError, check_text
 from pytest_roadlogic.planning import ContinuousSettings, NoPlanError, planner_for
-from tests.test_frontend_robustness import SOURCES, mutated_text
+from tests.frontend.test_frontend_robustness import SOURCES, mutated_text
 
 PLANNING = ContinuousSettings(max_horizon=6, time_limit=1.0, explain_unsatisfiable=False)
 SECONDS_PER_INPUT = (

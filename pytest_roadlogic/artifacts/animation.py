@@ -71,7 +71,7 @@ def animate_simulation(
     images = []
     for k in frames:
         # centred between the rearmost and the foremost vehicle: around their mean, a car far ahead
-        # of two others fell outside the view (found by tests/test_animation.py)
+        # of two others fell outside the view (found by tests/artifacts/test_animation.py)
         left = float(xs[:, k].min() + xs[:, k].max()) / 2 - view / 2
         image = Image.new("P", (PIXELS_WIDE, height), BACKGROUND)
         image.putpalette(palette)

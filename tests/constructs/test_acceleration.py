@@ -1,0 +1,111 @@
+"""The acceleration modifier: a phase's mean acceleration, (v(end) - v(start)) / its length, lies in
+the range. The checker reads it, the automaton hangs it on the phase's timing, the planner keeps it
+(one linear row per length the phase may have) and the monitor measures it between the two
+samples at which its run starts and ends the phase."""
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from pytest_roadlogic.automaton import build_automaton
+from pytest_roadlogic.frontend import OscError, check_text
+from pytest_roadlogic.monitor import monitor
+from pytest_roadlogic.pipeline import load_scenario
+from pytest_roadlogic.planning import ContinuousPlanner, ContinuousSettings
+from pytest_roadlogic.simulation import Trace
+from tests.planning.test_planning_continuous import check_continuous_plan
+
+ROOT = Path(__file__).resolve().parents[2]
+CORPUS_FILE = ROOT / "tests" / "corpus" / "50_acceleration.osc"
+
+
+@pytest.fixture(scope="module")
+def automaton():
+    return build_automaton(load_scenario(CORPUS_FILE))
+
+
+def test_the_timed_brake_carries_its_mean_acceleration_and_a_phase_without_duration_is_timed_for_it(automaton):
+    by_name = {timing.name: timing for timing in automaton.timings.values()}
+    brake, go = by_name["brake"], by_name["go"]
+    assert (brake.low, brake.high) == (3.0, 6.0)
+    assert [(r.actor, r.low, r.high) for r in brake.rates] == [("car1", -6.0, -3.0)]
+    assert (go.low, go.high) == (0.0, float("inf")) and [(r.low, r.high) for r in go.rates] == [(1.0, 2.0)]
+    assert "mean acceleration of car1 over brake in -6..-3 m/s^2" in automaton.describe()
+
+
+@pytest.mark.parametrize("seed", [1, 2])
+def test_a_plan_keeps_each_phases_mean_acceleration_in_range(automaton, seed):
+    plan = ContinuousPlanner(automaton, ContinuousSettings(random_start=True), seed).first()
+    check_continuous_plan(plan, automaton)  # check_run measures every phase's mean acceleration
+
+
+def speed_trace(automaton, profile: list[tuple[float, float]], dt: float = 0.1) -> Trace:
+    """car1 driving the piecewise-linear speed ``profile`` ((time, speed) corners) in the lane its plan starts in."""
+    lane = ContinuousPlanner(automaton, ContinuousSettings(), 1).first().states["car1"][0].lane
+    times = np.arange(0, profile[-1][0] + dt / 2, dt)
+    speed = np.interp(times, *zip(*profile))
+    x = np.concatenate([[0.0], np.cumsum((speed[1:] + speed[:-1]) / 2 * dt)])
+    n = len(times)
+    columns = {
+        "x": x,
+        "y": np.zeros(n),
+        "heading": np.zeros(n),
+        "speed": speed,
+        "acceleration": np.gradient(speed, dt),
+        "lane": np.full(n, lane),
+    }
+    return Trace(times, {"car1": columns})
+
+
+def test_a_brake_at_minus_4_25_mpsps_is_accepted(automaton):
+    trace = speed_trace(automaton, [(0, 27), (4, 27), (8, 10), (9, 10), (16, 20), (17, 20)])
+    verdict = monitor(automaton, trace)
+    assert verdict.accepted, verdict.explain()
+
+
+def test_a_brake_too_gentle_is_rejected_and_the_report_names_the_mean_acceleration_it_reached(automaton):
+    # 27 to 10 m/s in 6 s: -2.83 m/s^2 wherever the run starts and ends the brake
+    trace = speed_trace(automaton, [(0, 27), (4, 27), (10, 10), (11, 10), (18, 20), (19, 20)])
+    verdict = monitor(automaton, trace)
+    assert not verdict.accepted
+    assert verdict.miss.guard == "mean acceleration of car1 over brake in -6..-3 m/s^2"
+    assert verdict.miss.values["mean a(car1)"] == pytest.approx(-2.83, abs=0.01)
+    assert verdict.miss.robustness == pytest.approx(-0.17, abs=0.01)
+    assert "50_acceleration.osc:13:" in str(verdict.miss.locations[0])
+
+
+def scenario(modifier: str) -> str:
+    return f"""import osc.standard
+scenario s:
+    car1: car
+    do car1.change_speed(target: 10mps, duration: 4s) with:
+        {modifier}
+"""
+
+
+@pytest.mark.parametrize(
+    "modifier, message",
+    [
+        ("acceleration(-3mpsps, at: end)", "not supported: acceleration at: end"),
+        ("acceleration(3mps)", "acceleration"),
+    ],
+)
+def test_an_acceleration_the_tool_cannot_read_is_a_located_error(modifier, message):
+    checked = check_text(scenario(modifier), "a.osc")
+    if checked.errors:
+        report = checked.report()
+    else:
+        with pytest.raises(OscError) as raised:
+            build_automaton(checked.scenarios[0])
+        report = raised.value.report()
+    assert "a.osc:5:" in report and message in report, report
+
+
+def test_the_grid_encoding_refuses_the_acceleration_modifier_at_its_place(automaton):
+    from pytest_roadlogic.planning import GridPlanner, GridSettings
+
+    with pytest.raises(OscError) as raised:
+        GridPlanner(automaton, GridSettings(), 1).first()
+    report = raised.value.report()
+    assert "50_acceleration.osc:13:" in report and "continuous" in report, report

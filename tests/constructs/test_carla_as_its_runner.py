@@ -1,0 +1,166 @@
+"""CARLA's dialect as CARLA's scenario runner executes it (constructs/carla.py, docs/language.md):
+``speed(v)`` is the phase's target from its first instant, driven toward at a comfortable rate and
+held; ``change_speed(dv)`` and ``change_lane(lane_changes:, side:)`` are modifiers. Read on the
+first plan of files written as CARLA's examples are written."""
+
+from __future__ import annotations
+
+import pytest
+
+from pytest_roadlogic.evaluation.fidelity import unasked_changes
+from pytest_roadlogic.frontend import check_text
+from pytest_roadlogic.planning import ContinuousSettings
+from tests.constructs.test_asked_per_instant import planned
+
+SETTINGS = ContinuousSettings()  # the planner's defaults: the comfortable rates read below
+KPH = 1 / 3.6
+HELD = 1.0 * KPH  # a held speed stays within 1 kph
+
+
+def first_plan(tmp_path, text: str):
+    return planned(tmp_path, text, dialect="carla")
+
+
+CRUISE_THEN_FASTER = """scenario cruise_then_faster:
+    ego: car
+    npc: car
+    do serial:
+        cruise: parallel(duration: 20s):
+            npc.drive() with:
+                lane(2, at: start)
+                speed(30kph)
+            ego.drive() with:
+                lane(same_as: npc, at: start)
+                position(40m, behind: npc, at: start)
+                speed(30kph)
+        faster: parallel(duration: 10s):
+            npc.drive() with:
+                speed(50kph)
+            ego.drive() with:
+                speed(40kph)
+"""
+
+
+def test_a_target_speed_is_where_the_car_starts_and_is_held_through_its_phase(tmp_path):
+    plan, automaton, planner = first_plan(tmp_path, CRUISE_THEN_FASTER)
+    assert planner.stats["least_action"] == 1.0
+    for vehicle in ("ego", "npc"):
+        speeds = [state.speed for state in plan.states[vehicle][:20]]
+        # it had been read as "30 kph at the end": speeds dipped and ramped inside the phase
+        assert max(abs(v - 30 * KPH) for v in speeds) <= HELD, (vehicle, speeds)
+
+
+@pytest.mark.parametrize("vehicle, target", [("ego", 40), ("npc", 50)])
+def test_a_new_target_is_driven_toward_at_a_comfortable_rate_never_past_it_then_held(tmp_path, vehicle, target):
+    plan, _, _ = first_plan(tmp_path, CRUISE_THEN_FASTER)
+    speeds = [state.speed for state in plan.states[vehicle][20:]]
+    steps = [after - before for before, after in zip(speeds, speeds[1:])]
+    assert all(-0.05 <= change <= SETTINGS.comfortable_acceleration * SETTINGS.dt + 1e-6 for change in steps), steps
+    assert max(speeds) <= target * KPH + HELD, speeds
+    reached = next(k for k, v in enumerate(speeds) if abs(v - target * KPH) <= HELD)
+    assert reached <= 4, speeds  # 20 kph more at 2 m/s^2 is 3 s; the jerk limit adds a step
+    assert all(abs(v - target * KPH) <= HELD for v in speeds[reached:]), speeds
+
+
+def test_the_first_plan_of_a_cruise_changes_nothing_that_is_not_asked(tmp_path):
+    plan, automaton, _ = first_plan(tmp_path, CRUISE_THEN_FASTER)
+    assert unasked_changes(plan, automaton) == []
+
+
+CHANGE_MODIFIERS = """scenario change_modifiers:
+    ego: car
+    npc: car
+    do serial:
+        get_ahead: parallel(duration: 15s):
+            ego.drive() with:
+                speed(25kph)
+                lane(1, at: start)
+            npc.drive() with:
+                lane(right_of: ego, at: start)
+                position(15m, behind: ego, at: start)
+                position(20m, ahead_of: ego, at: end)
+        change: parallel(duration: 5s):
+            ego.drive()
+            npc.drive() with:
+                change_lane(lane_changes: [1..2], side: left)
+        slow: parallel(duration: 10s):
+            ego.drive() with:
+                change_speed(3kph)
+            npc.drive() with:
+                speed(28kph)
+"""
+
+
+def test_change_speed_and_change_lane_are_modifiers_that_do_what_carlas_runner_does(tmp_path):
+    plan, automaton, _ = first_plan(tmp_path, CHANGE_MODIFIERS)
+    fired = [step for step, _ in plan.transitions]
+    change_starts, slow_starts, end = fired[1], fired[2], fired[3]
+    npc = plan.states["npc"]
+    # lane(1) is the leftmost in CARLA's dialect: the npc starts right of the ego, moves back left
+    assert npc[change_starts].lane == plan.states["ego"][0].lane + 1
+    assert npc[slow_starts].lane == plan.states["ego"][0].lane
+    ego = plan.states["ego"]
+    gained = ego[end].speed - ego[slow_starts].speed
+    assert gained == pytest.approx(3 * KPH, abs=0.5), gained
+
+
+def test_change_speed_as_a_modifier_is_carlas_only():
+    text = "scenario s:\n    ego: car\n    do ego.drive(duration: 5s) with:\n        speed(20kph)\n        change_speed(3kph)\n"
+    standard = check_text(text, "s.osc")
+    assert any(d.severity == "error" and d.location.line == 5 for d in standard.diagnostics)
+    check_text(text, "s.osc", dialect="carla").raise_for_errors()
+
+
+def test_a_scenario_level_set_position_is_read_with_one_located_warning(tmp_path):
+    text = (
+        "scenario s:\n    ego: car\n    ego.set_position(x: 205.7m, y: -395.8m, z: 0.0m)\n"
+        "    do ego.drive(duration: 5s) with:\n        speed(120kph)\n"
+    )
+    checked = check_text(text, "s.osc", dialect="carla")
+    checked.raise_for_errors()
+    warnings = [d for d in checked.diagnostics if d.severity == "warning"]
+    assert len(warnings) == 1 and warnings[0].location.line == 3
+    assert "read but not simulated" in warnings[0].message
+    plan, _, _ = first_plan(tmp_path, text)
+    assert all(abs(state.speed - 120 * KPH) <= HELD for state in plan.states["ego"])
+
+
+def test_drive_adjust_as_carlas_examples_give_it_is_read_with_one_located_warning(tmp_path):
+    text = "scenario s:\n    ego: car\n    do ego.drive(adjust: true, duration: 5s) with:\n        speed(50kph)\n"
+    assert any(d.severity == "error" and d.location.line == 3 for d in check_text(text, "s.osc").diagnostics)
+    checked = check_text(text, "s.osc", dialect="carla")
+    checked.raise_for_errors()
+    warnings = [d for d in checked.diagnostics if d.severity == "warning"]
+    assert [(w.location.line, w.location.column) for w in warnings] == [(3, 18)]
+    assert "adjust" in warnings[0].message
+    plan, _, _ = first_plan(tmp_path, text)
+    assert all(abs(state.speed - 50 * KPH) <= HELD for state in plan.states["ego"])
+
+
+SHADOWED_AT = """global start: string
+global end: string
+
+scenario s:
+    ego: car
+    npc: car
+    do parallel(duration: 20s):
+        ego.drive() with:
+            lane(1, at: start)
+            speed(30kph)
+        npc.drive() with:
+            lane(right_of: ego, at: start)
+            position(15m, behind: ego, at: start)
+            position(20m, ahead_of: ego, at: end)
+"""
+
+
+def test_at_start_is_the_at_value_even_where_a_string_parameter_is_named_start(tmp_path):
+    checked = check_text(SHADOWED_AT, "s.osc", dialect="carla")
+    checked.raise_for_errors()
+    warned = [d for d in checked.diagnostics if "read as the at value" in d.message]
+    assert [d.location.line for d in warned] == [9, 14], "once per shadowed name, where it is first read"
+    plan, _, _ = first_plan(tmp_path, SHADOWED_AT)
+    ego, npc = plan.states["ego"], plan.states["npc"]
+    assert npc[0].lane == ego[0].lane + 1  # right of the leftmost lane, at the start only
+    assert ego[0].position - npc[0].position == pytest.approx(15, abs=0.6)
+    assert npc[-1].position - ego[-1].position == pytest.approx(20, abs=0.6)

@@ -1,0 +1,501 @@
+"""Roads beyond one straight road: OpenDRIVE read as data (geometry checked against closed forms),
+a route picked or refused with reasons, set_map and the map option, and a run on a curve."""
+
+from __future__ import annotations
+
+import math
+import textwrap
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from pytest_roadlogic.roads.opendrive_in import MapError, read_map
+from pytest_roadlogic.roads.reference_line import Geometry, ReferenceLine
+from pytest_roadlogic.roads.route import curve_speed, pick_route
+
+pytest_plugins = ["pytester"]
+
+ROOT = Path(__file__).resolve().parents[2]
+MAPS = ROOT / "scenarios" / "roads" / "maps"
+
+
+def test_the_committed_maps_are_what_their_recipe_writes(tmp_path):
+    import importlib.util
+
+    spec = importlib.util.spec_from_file_location("make_maps", MAPS / "make_maps.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    for written in module.write(tmp_path):
+        assert same_document(written, MAPS / written.name), written.name
+
+
+def same_document(one: Path, other: Path, tolerance: float = 1e-9) -> bool:
+    """Whether two XML files hold the same elements, attributes and text, numbers equal within
+    ``tolerance`` (absolute, or relative to the larger): the last digits of a float differ between
+    machines (``b="-3.039e-17"`` here, ``-3.553e-17`` there), so a byte comparison failed on one."""
+    import xml.etree.ElementTree as ET
+
+    def same_text(a: str | None, b: str | None) -> bool:
+        a, b = (a or "").strip(), (b or "").strip()
+        if a == b:
+            return True
+        try:
+            x, y = float(a), float(b)
+        except ValueError:
+            return False
+        return math.isclose(x, y, rel_tol=tolerance, abs_tol=tolerance)
+
+    def same(a: ET.Element, b: ET.Element) -> bool:
+        return (
+            a.tag == b.tag
+            and a.attrib.keys() == b.attrib.keys()
+            and all(same_text(a.attrib[k], b.attrib[k]) for k in a.attrib)
+            and same_text(a.text, b.text)
+            and len(a) == len(b)
+            and all(same(x, y) for x, y in zip(a, b))
+        )
+
+    return same(ET.parse(one).getroot(), ET.parse(other).getroot())
+
+
+def test_two_documents_differing_in_a_floats_last_digits_are_the_same_and_in_a_value_are_not(tmp_path):
+    one, two, three = tmp_path / "1.xml", tmp_path / "2.xml", tmp_path / "3.xml"
+    one.write_text('<r><w a="0" b="-3.039235529911366e-17">1.0</w></r>')
+    two.write_text('<r><w a="0" b="-3.552713678800501e-17">1.0</w></r>')
+    three.write_text('<r><w a="0" b="-3.5e-3">1.0</w></r>')
+    assert same_document(one, two) and not same_document(one, three)
+
+
+def test_an_arc_keeps_its_radius_and_turns_by_its_length_over_the_radius():
+    radius = 500.0
+    line = ReferenceLine((Geometry(0.0, 10.0, -5.0, 0.3, 400.0, "arc", curvature=1 / radius),))
+    s = np.linspace(0.0, 400.0, 81)
+    x, y, heading = line.pose(s)
+    centre = (10.0 - math.sin(0.3) * radius, -5.0 + math.cos(0.3) * radius)
+    assert np.hypot(x - centre[0], y - centre[1]) == pytest.approx(np.full_like(s, radius), abs=1e-3)
+    assert heading == pytest.approx(0.3 + s / radius)
+    # a point 3.5 m left of the line is 3.5 m nearer the centre of a left curve
+    xl, yl, _ = line.pose(s, 3.5)
+    assert np.hypot(xl - centre[0], yl - centre[1]) == pytest.approx(np.full_like(s, radius - 3.5), abs=1e-3)
+
+
+def test_a_clothoid_from_a_straight_follows_the_fresnel_integrals():
+    from scipy.special import fresnel
+
+    length, end = 100.0, 1 / 500.0
+    line = ReferenceLine((Geometry(0.0, 0.0, 0.0, 0.0, length, "spiral", curvature_start=0.0, curvature_end=end),))
+    s = np.linspace(0.0, length, 21)
+    x, y, heading = line.pose(s)
+    # heading = a s^2 / 2 with a = end / length; x + i y = integral of exp(i a u^2 / 2)
+    a = end / length
+    scale = math.sqrt(math.pi / a)
+    fresnel_s, fresnel_c = fresnel(s / scale)
+    assert x == pytest.approx(scale * fresnel_c, abs=1e-3)
+    assert y == pytest.approx(scale * fresnel_s, abs=1e-3)
+    assert heading == pytest.approx(a * s**2 / 2, abs=1e-9)
+    assert line.curvature(s) == pytest.approx(a * s)
+
+
+def test_the_test_maps_read_as_their_recipe_describes():
+    curved = read_map(MAPS / "curved_highway.xodr").roads["1"]
+    s, _, _, heading, curvature = curved.reference_line.sampled()
+    assert curved.length == pytest.approx(1250.0)
+    assert heading[-1] == pytest.approx(0.1 + 700 / 500 + 0.1, abs=1e-6)  # two clothoids and the arc
+    assert np.abs(curvature).max() == pytest.approx(1 / 500)
+    assert curve_speed(pick_route(read_map(MAPS / "curved_highway.xodr"), 3)) == pytest.approx(math.sqrt(2.0 * 500))
+    ramp = read_map(MAPS / "on_ramp.xodr").roads["1"]
+    assert [len(section.right) for section in ramp.sections] == [3, 4, 4, 4, 3]
+    opening = ramp.sections[1]
+    assert float(opening.right[3].width(0.0)) == pytest.approx(0.0, abs=1e-9)
+    assert float(opening.right[3].width(opening.end - opening.s)) == pytest.approx(3.5, abs=1e-6)
+    drop = read_map(MAPS / "lane_drop.xodr").roads["1"]
+    assert [len(section.right) for section in drop.sections] == [3, 3, 2]
+
+
+def write(path: Path, text: str) -> Path:
+    path.write_text(textwrap.dedent(text).lstrip())
+    return path
+
+
+def test_a_map_with_a_document_type_is_refused_at_it_and_no_entity_is_read(tmp_path):
+    secret = tmp_path / "secret.txt"
+    secret.write_text("TOKEN-123")
+    hostile = write(
+        tmp_path / "hostile.xodr",
+        f"""
+        <?xml version="1.0"?>
+        <!DOCTYPE OpenDRIVE [<!ENTITY leak SYSTEM "file://{secret}">]>
+        <OpenDRIVE><header name="&leak;"/></OpenDRIVE>
+        """,
+    )
+    with pytest.raises(MapError) as caught:
+        read_map(hostile)
+    assert caught.value.line == 2 and "document type" in caught.value.message
+    assert "TOKEN" not in str(caught.value)
+
+
+@pytest.mark.parametrize(
+    "body, line, words",
+    [
+        ("<OpenDRIVE><road length='10'>", 1, "not well-formed"),
+        ("<html/>", 1, "not an OpenDRIVE file"),
+        ("<OpenDRIVE>\n<road id='1' length='x'/></OpenDRIVE>", 2, "is not a number"),
+        (
+            "<OpenDRIVE><road id='1' length='10'><planView>\n<geometry s='0' x='0' y='0' hdg='0' length='10'>"
+            "<clothoid/></geometry></planView></road></OpenDRIVE>",
+            2,
+            "unknown plan view geometry",
+        ),
+        (
+            "<OpenDRIVE><road id='1' length='10'><planView><geometry s='0' x='0' y='0' hdg='0' length='10'>"
+            "<line/></geometry></planView><lanes>\n<laneOffset s='0' a='1' b='0' c='0' d='0'/>"
+            "<laneSection s='0'/></lanes></road></OpenDRIVE>",
+            2,
+            "lane offset",
+        ),
+        (
+            "<OpenDRIVE>\n<road id='1' length='1e12'><planView><geometry s='0' x='0' y='0' hdg='0' length='1e12'>"
+            "<line/></geometry></planView></road></OpenDRIVE>",
+            2,
+            "a road 1e+12 m long",
+        ),
+    ],
+)
+def test_a_map_that_cannot_be_read_is_refused_naming_its_line(tmp_path, body, line, words):
+    with pytest.raises(MapError) as caught:
+        read_map(write(tmp_path / "bad.xodr", body))
+    assert caught.value.line == line and words in caught.value.message, str(caught.value)
+
+
+def test_no_route_on_a_map_without_enough_lanes_says_road_by_road_why():
+    with pytest.raises(MapError) as caught:
+        pick_route(read_map(MAPS / "lane_drop.xodr"), 4)
+    message = caught.value.message
+    assert "no road of the map has 4 driving lanes" in message
+    assert "road 1: 2 driving lanes over 900 m, 3 in parts" in message
+
+
+def test_a_road_inside_a_junction_is_never_a_route_and_is_named_so(tmp_path):
+    text = (MAPS / "s_curve.xodr").read_text().replace('junction="-1"', 'junction="7"')
+    with pytest.raises(MapError) as caught:
+        pick_route(read_map(write(tmp_path / "junction.xodr", text)), 3)
+    assert "road 1: inside junction 7 (a route may not cross a junction yet)" in caught.value.message
+
+
+SCENARIO = """
+import osc.standard
+
+scenario curve:
+    npc: car
+    path: Path
+    path.set_map("{map}")
+    do serial:
+        follow: parallel(duration: [4s..5s]):
+            ego.drive() with:
+                lane({ego_lane}, at: start)
+                speed([22mps..25mps], at: start)
+            npc.drive() with:
+                lane(1, at: start)
+                position(distance: [20m..30m], behind: ego, at: start)
+        pass: parallel(duration: [5s..8s]):
+            ego.drive()
+            npc.change_lane(num_of_lanes: 1, side: left)
+"""
+
+
+def scenario_file(folder: Path, map_name: str, ego_lane: int = 1) -> Path:
+    return write(folder / "curve.osc", SCENARIO.format(map=map_name, ego_lane=ego_lane))
+
+
+def test_set_map_runs_a_scenario_on_the_route_of_its_map_and_the_trace_carries_world_poses(tmp_path):
+    from pytest_roadlogic.pipeline import load_scenario, run_scenario
+
+    (tmp_path / "maps").mkdir()
+    (tmp_path / "maps" / "curved.xodr").write_bytes((MAPS / "curved_highway.xodr").read_bytes())
+    scenario = load_scenario(scenario_file(tmp_path, "maps/curved.xodr"))
+    assert scenario.route is not None and scenario.lanes == 3
+    outcome = run_scenario(scenario, seed=1)
+    assert outcome.verdict.accepted, outcome.verdict.explain()
+    trace, road = outcome.simulation.trace, outcome.simulation.road
+    assert trace.on_map
+    for name, columns in trace.actors.items():
+        # the world pose is the road pose mapped onto the map: same point, recomputed independently
+        wx, wy, wh = scenario.route.reference_line.pose(columns["x"] + road.route_shift, columns["y"] - road.width)
+        assert columns["world_x"] == pytest.approx(wx) and columns["world_y"] == pytest.approx(wy)
+        # the cars follow the curve: they turn with it (the route turns 0.5 rad over the run's 300 m)
+        assert columns["world_heading"][-1] - columns["world_heading"][0] > 0.2, name
+    ego = trace.actors["ego"]
+    assert np.abs(ego["y"] - road.center_y(2)).max() < 0.6, "the ego keeps its lane through the curve"
+
+
+def test_a_map_with_too_few_lanes_is_refused_at_set_map_with_the_maps_reason(tmp_path):
+    from pytest_roadlogic.frontend import check_file
+
+    (tmp_path / "drop.xodr").write_bytes((MAPS / "lane_drop.xodr").read_bytes())
+    checked = check_file(scenario_file(tmp_path, "drop.xodr", ego_lane=4))
+    errors = [d for d in checked.diagnostics if d.severity == "error"]
+    assert errors and errors[0].location.line == 6, checked.report()
+    assert "no road of the map has 4 driving lanes" in errors[0].message
+
+
+def test_a_map_outside_the_folders_the_tool_reads_is_refused_unread(tmp_path):
+    from pytest_roadlogic.confinement import ReadRoots
+    from pytest_roadlogic.frontend import check_file
+
+    inside = tmp_path / "project"
+    inside.mkdir()
+    checked = check_file(scenario_file(inside, str(MAPS / "curved_highway.xodr")), roots=ReadRoots.of(inside))
+    errors = [d for d in checked.diagnostics if d.severity == "error"]
+    assert errors and "outside the folders the tool reads" in errors[0].message
+
+
+def test_a_town_name_still_runs_on_the_straight_road_with_a_warning(tmp_path):
+    from pytest_roadlogic.frontend import check_file
+
+    checked = check_file(scenario_file(tmp_path, "Town04"))
+    assert not checked.errors and checked.scenarios[0].route is None
+    assert any("straight road" in d.message for d in checked.diagnostics)
+
+
+def test_the_map_option_runs_every_scenario_on_its_map_and_a_bad_value_is_a_usage_error(pytester):
+    plain = SCENARIO.replace('    path.set_map("{map}")\n', "")
+    pytester.makefile(".osc", plain=plain.format(ego_lane=1), wide=plain.format(ego_lane=4).replace("curve:", "wide:"))
+    (pytester.path / "curved.xodr").write_bytes((MAPS / "curved_highway.xodr").read_bytes())
+    result = pytester.runpytest_subprocess(
+        "--roadlogic-map", "curved.xodr", "--roadlogic-examples", "2", "-p", "no:cacheprovider"
+    )
+    # the plain file runs on the map's three lanes; the one that needs a fourth is refused by it
+    result.assert_outcomes(passed=1, errors=1)
+    assert "the map (the map option)" in result.stdout.str() and "no road of the map has 4 driving lanes" in (
+        result.stdout.str()
+    )
+    bad = pytester.runpytest_subprocess("--roadlogic-map", "curved.txt", "-p", "no:cacheprovider")
+    assert bad.ret != 0 and "--roadlogic-map" in bad.stderr.str() + bad.stdout.str()
+    assert "Traceback" not in bad.stderr.str() + bad.stdout.str()
+
+
+def test_the_merge_from_the_ramp_runs_conformant_and_leaves_the_acceleration_lane_before_it_ends():
+    from pytest_roadlogic.pipeline import load_scenario, run_scenario
+
+    scenario = load_scenario(ROOT / "scenarios" / "roads" / "merge_from_ramp.osc")
+    assert scenario.lanes == 4  # the highway's three and the acceleration lane
+    outcome = run_scenario(scenario, seed=1)
+    assert outcome.verdict.accepted, outcome.verdict.explain()
+    first, last = scenario.route.spans()[3]
+    road = outcome.simulation.road
+    for name, states in outcome.plan.states.items():
+        for state in states:
+            along = state.position + outcome.plan.origin
+            assert 30.0 <= along <= scenario.route.length - 30.0
+            if state.lane == 3:
+                assert first <= along <= last, (name, along)
+    npc = outcome.simulation.trace.actors["npc"]
+    on_ramp = npc["lane"] == 3
+    assert on_ramp[0] and not on_ramp[-1], "the npc starts on the acceleration lane and leaves it"
+    assert (npc["x"][on_ramp] + road.route_shift).max() <= scenario.route.spans()[3][1] + 10.0
+    assert not outcome.simulation.trace.incidents
+
+
+def test_a_car_asked_to_stay_in_a_lane_past_its_end_has_no_plan(tmp_path):
+    from pytest_roadlogic.pipeline import load_scenario, run_scenario
+    from pytest_roadlogic.planning import NoPlanError
+
+    (tmp_path / "drop.xodr").write_bytes((MAPS / "lane_drop.xodr").read_bytes())
+    stay = write(
+        tmp_path / "stay.osc",
+        """
+        import osc.standard
+
+        scenario stay:
+            path: Path
+            path.set_map("drop.xodr")
+            do serial:
+                cruise: parallel(duration: [25s..30s]):
+                    ego.drive() with:
+                        lane(1)
+                        speed([80kph..90kph])
+        """,
+    )
+    # 25 s at 80 kph or more is 555 m: more than the 440 m the ending lane takes a car
+    with pytest.raises(NoPlanError):
+        run_scenario(load_scenario(stay), seed=1)
+
+
+def test_the_lane_drop_runs_conformant_and_no_car_is_in_the_ending_lane_past_its_end():
+    from pytest_roadlogic.pipeline import load_scenario, run_scenario
+
+    scenario = load_scenario(ROOT / "scenarios" / "roads" / "lane_drop.osc")
+    outcome = run_scenario(scenario, seed=1)
+    assert outcome.verdict.accepted, outcome.verdict.explain()
+    road = outcome.simulation.road
+    last = scenario.route.spans()[2][1]
+    for name, columns in outcome.simulation.trace.actors.items():
+        along = columns["x"] + road.route_shift
+        assert not ((columns["lane"] == 2) & (along > last + 10.0)).any(), name
+    # both drive on past the end of the lane: the drop is on the scenario's way
+    assert (outcome.simulation.trace.actors["ego"]["x"][-1] + road.route_shift) > last
+
+
+def test_on_a_map_the_planner_knows_the_curve_speed_the_speed_limit_and_where_each_lane_is(tmp_path):
+    from pytest_roadlogic.automaton import build_automaton
+    from pytest_roadlogic.pipeline import guided_planning, load_scenario
+    from pytest_roadlogic.planning import settings_for
+    from pytest_roadlogic.roads.route import MAX_LATERAL_ACCELERATION
+    from pytest_roadlogic.settings import RunSettings
+
+    (tmp_path / "s.xodr").write_bytes((MAPS / "s_curve.xodr").read_bytes())
+    scenario = load_scenario(scenario_file(tmp_path, "s.xodr"))
+    _, settings, _ = guided_planning(scenario, build_automaton(scenario), None, settings_for(RunSettings()), 1)
+    assert settings.max_speed == pytest.approx(math.sqrt(MAX_LATERAL_ACCELERATION * 400.0))
+    # a message naming the top speed says where it comes from
+    assert dict(settings.limit_reasons)["max_speed"].startswith("the sharpest curve of road 1 of s.xodr, radius 400 m")
+    assert settings.road_speed[1] == pytest.approx(100 / 3.6)  # the map's limit, 100 km/h
+    assert settings.route_span == (30.0, 970.0) and settings.lane_spans == ()
+    ramp = load_scenario(ROOT / "scenarios" / "roads" / "merge_from_ramp.osc")
+    _, settings, _ = guided_planning(ramp, build_automaton(ramp), None, settings_for(RunSettings()), 1)
+    ((lane, first, last),) = settings.lane_spans
+    assert lane == 3 and 180.0 < first < 200.0 and 395.0 < last < 410.0
+
+
+@pytest.mark.parametrize(
+    "asks, fits",
+    [
+        ("path.path_curve(min_radius: 300m, max_radius: 450m, side: right)", True),
+        ("path.path_curve(min_radius: 300m, max_radius: 350m)", False),
+        ("path.path_length(min_length: 900m)", True),
+        ("path.path_length(min_length: 1200m)", False),
+    ],
+)
+def test_path_curve_and_path_length_narrow_the_route_and_a_map_without_one_says_what_its_roads_have(
+    tmp_path, asks, fits
+):
+    from pytest_roadlogic.frontend import check_file
+
+    (tmp_path / "s.xodr").write_bytes((MAPS / "s_curve.xodr").read_bytes())
+    text = SCENARIO.format(map="s.xodr", ego_lane=1).replace(
+        '    path.set_map("s.xodr")\n', f'    path.set_map("s.xodr")\n    {asks}\n'
+    )
+    checked = check_file(write(tmp_path / "asks.osc", text))
+    errors = [d for d in checked.diagnostics if d.severity == "error"]
+    if fits:
+        assert not errors and checked.scenarios[0].route is not None, checked.report()
+    else:
+        assert errors and errors[0].location.line == 6, checked.report()
+        assert "curves of radius down to left 400 m and right 400 m" in errors[0].message
+
+
+def test_path_curve_without_a_map_is_an_error_at_it(tmp_path):
+    from pytest_roadlogic.frontend import check_file
+
+    text = SCENARIO.format(map="Town04", ego_lane=1).replace(
+        '    path.set_map("Town04")\n', "    path.path_curve(min_radius: 300m, max_radius: 450m)\n"
+    )
+    checked = check_file(write(tmp_path / "curve.osc", text))
+    errors = [d for d in checked.diagnostics if d.severity == "error"]
+    assert errors and errors[0].location.line == 6 and "straight road" in errors[0].message
+
+
+def test_the_animation_of_a_run_on_a_curve_draws_the_road_bending(tmp_path):
+    from PIL import Image
+
+    from pytest_roadlogic.artifacts.animation import LINE, PALETTE, animate_simulation
+    from pytest_roadlogic.pipeline import load_scenario, run_scenario
+
+    (tmp_path / "curved.xodr").write_bytes((MAPS / "curved_highway.xodr").read_bytes())
+    outcome = run_scenario(load_scenario(scenario_file(tmp_path, "curved.xodr")), seed=1)
+    gif = animate_simulation(outcome.simulation, outcome.verdict, tmp_path / "run.gif")
+    image = Image.open(gif)
+    image.seek(image.n_frames // 2)
+    grey = (np.array(image.convert("RGB")) == PALETTE[LINE]).all(axis=2)
+    # the road's left edge, the first line's row by column: in a left curve turned level at the
+    # centre, it rises toward both ends of the view
+    top = [int(np.argmax(grey[:, column])) for column in (5, grey.shape[1] // 2, grey.shape[1] - 5)]
+    assert all(grey[row, column] for row, column in zip(top, (5, grey.shape[1] // 2, grey.shape[1] - 5)))
+    assert top[0] < top[1] - 3 and top[2] < top[1] - 3, top
+
+
+def test_past_the_ends_of_a_route_the_road_runs_on_straight_with_its_end_lanes():
+    route = pick_route(read_map(MAPS / "curved_highway.xodr"), 3)
+    x, y, heading = route.reference_line.pose(np.array([route.length, route.length + 50.0]))
+    assert heading[1] == pytest.approx(heading[0])
+    assert math.hypot(x[1] - x[0], y[1] - y[0]) == pytest.approx(50.0)
+    assert route.right_edge([-20.0, route.length + 80.0]) == pytest.approx([0.0, 0.0])
+    drop = pick_route(read_map(MAPS / "lane_drop.xodr"), 3)
+    assert drop.right_edge([drop.length + 80.0]) == pytest.approx([3.5])  # two lanes on past the drop
+
+
+def test_a_scenario_that_asks_for_a_curve_starts_in_it(tmp_path):
+    from pytest_roadlogic.pipeline import load_scenario, run_scenario
+
+    (tmp_path / "s.xodr").write_bytes((MAPS / "s_curve.xodr").read_bytes())
+    asks = "path.path_curve(min_radius: 300m, max_radius: 450m, side: right)"
+    text = SCENARIO.format(map="s.xodr", ego_lane=1).replace(
+        '    path.set_map("s.xodr")\n', f'    path.set_map("s.xodr")\n    {asks}\n'
+    )
+    scenario = load_scenario(write(tmp_path / "right.osc", text))
+    first, last = scenario.route.start_within
+    assert first == pytest.approx(400.0, abs=1.0) and last == pytest.approx(650.0, abs=1.0)  # the right-hand arc
+    outcome = run_scenario(scenario, seed=1)
+    assert outcome.verdict.accepted, outcome.verdict.explain()
+    assert first - 1e-6 <= outcome.plan.origin <= last + 1e-6
+
+
+def test_a_broken_map_is_a_located_collection_error_and_the_other_files_still_run(pytester):
+    (pytester.path / "bad.xodr").write_text("<OpenDRIVE>\n<road id='1' length='oops'/></OpenDRIVE>\n")
+    plain = SCENARIO.replace('    path.set_map("{map}")\n', "").format(ego_lane=1)
+    pytester.makefile(
+        ".osc", good=plain, broken=SCENARIO.format(map="bad.xodr", ego_lane=1).replace("curve:", "broken:")
+    )
+    result = pytester.runpytest_subprocess("--roadlogic-examples", "2", "-p", "no:cacheprovider")
+    result.assert_outcomes(passed=1, errors=1)
+    out = result.stdout.str()
+    assert "broken.osc:6:" in out and "bad.xodr:2:" in out and "is not a number" in out
+    assert "Traceback" not in out + result.stderr.str()
+
+
+def test_the_artifacts_of_a_run_on_a_map_are_on_it(tmp_path):
+    import json
+
+    from pytest_roadlogic.artifacts.writer import write_artifacts
+    from pytest_roadlogic.pipeline import load_scenario, run_scenario
+
+    outcome = run_scenario(load_scenario(ROOT / "scenarios" / "roads" / "merge_from_ramp.osc"), seed=1)
+    write_artifacts(outcome, tmp_path / "out", animation=False)
+    out = tmp_path / "out"
+    assert (out / "road.xodr").read_bytes() == (MAPS / "on_ramp.xodr").read_bytes()
+    verdict = json.loads((out / "verdict.json").read_text())
+    assert verdict["map"]["road"] == "1" and verdict["map"]["origin_m"] == pytest.approx(outcome.plan.origin)
+    assert (out / "trace.csv").read_text().splitlines()[0].endswith("world_x,world_y,world_heading")
+    # CommonRoad: the lanelets run along the route, in the map's coordinates
+    xml = (out / "scenario.xml").read_text()
+    assert xml.count("<lanelet ") == outcome.simulation.road.lanes
+    plan = json.loads((out / "plan.json").read_text())
+    assert plan["origin"] == pytest.approx(outcome.plan.origin)
+
+
+def test_on_a_curve_a_car_the_plan_holds_still_stays_still_and_a_vehicle_under_test_is_replanned_in_place():
+    from pytest_roadlogic.dut import UnderTest
+    from pytest_roadlogic.pipeline import load_scenario, run_instances
+
+    scenario = load_scenario(ROOT / "scenarios" / "dut" / "cut_out.osc", road_map=MAPS / "curved_highway.xodr")
+    outcome = next(run_instances(scenario, 1, seed=1, under_test=UnderTest(), max_tries=1))
+    assert outcome.verdict.accepted and not outcome.dut.failed, outcome.verdict.explain()
+    wreck = outcome.simulation.trace.actors["wreck"]
+    # (its planned start speed, 0.05 m/s, is its first sample's; held, it stands from then on)
+    assert float(np.abs(wreck["speed"][1:]).max()) == 0.0 and float(np.ptp(wreck["x"])) == 0.0
+    replans = outcome.simulation.replans
+    assert replans and all(r.plan is not None for r in replans)
+    # every replan keeps the scenario where the simulation has it on the route
+    assert {r.plan.origin for r in replans} == {outcome.plan.origin}
+
+
+def test_the_grid_encoding_on_a_map_has_no_plan_and_says_why_rather_than_plan_a_straight_road():
+    from pytest_roadlogic.pipeline import load_scenario, run_scenario
+    from pytest_roadlogic.planning import NoPlanError, settings_for
+    from pytest_roadlogic.settings import RunSettings
+
+    scenario = load_scenario(ROOT / "scenarios" / "roads" / "merge_from_ramp.osc")
+    with pytest.raises(NoPlanError) as caught:
+        run_scenario(scenario, seed=1, settings=settings_for(RunSettings(encoding="grid")))
+    assert "needs the continuous encoding" in str(caught.value)

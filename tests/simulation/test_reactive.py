@@ -1,0 +1,237 @@
+"""Reactive execution: the rest of a scenario planned again from observed states, checked on the
+plan's own terms (what is pinned is pinned, the run so far is kept, a constraint relative to the
+vehicle under test follows where it really is) and end to end (the scenario happens around a
+vehicle under test that does not drive as planned)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from types import SimpleNamespace
+
+import pytest
+
+from pytest_roadlogic.automaton import build_automaton
+from pytest_roadlogic.dut import UnderTest
+from pytest_roadlogic.dut.reference_drivers import AdaptiveCruiseControl
+from pytest_roadlogic.pipeline import guided_planning, load_scenario, run_instances
+from pytest_roadlogic.planning import settings_for
+from pytest_roadlogic.planning.fallbacks import planned
+from pytest_roadlogic.planning.plan import PlanState
+from pytest_roadlogic.reactive import ReactiveExecution, Replanner
+from pytest_roadlogic.reactive.replanner import Replan
+from pytest_roadlogic.settings import RunSettings
+
+ROOT = Path(__file__).resolve().parents[2]
+CUT_IN = ROOT / "scenarios" / "dut" / "cut_in.osc"
+VALUES = {
+    "approach.duration": 3.0,
+    "brake.duration": 4.2,
+    "cut_in.duration": 3.5,
+    "cut_in_gap": 23.7,
+    "dut_speed": 28.9,
+    "npc.change_speed.target": 18.4,
+    "npc.drive.position.distance": 20.0,
+    "npc.drive.speed.speed": 4.3,
+}
+
+
+@pytest.fixture(scope="module")
+def first_plan():
+    scenario = load_scenario(CUT_IN)
+    guide, settings, seed = guided_planning(scenario, build_automaton(scenario), VALUES, settings_for(RunSettings()), 1)
+    return guide, settings, seed, next(planned(guide, settings, seed, 1))
+
+
+@pytest.fixture
+def planning(first_plan):
+    """A replanner of its own (it remembers what failed from which step) and the plan it replans."""
+    guide, settings, seed, plan = first_plan
+    return Replanner(guide(settings), settings, seed, "dut.car"), plan
+
+
+def observed_at(plan, step, **moved):
+    """Every vehicle where ``plan`` has it at ``step``; ``moved``: vehicle -> (metres, m/s) added."""
+    states = {}
+    for vehicle, trajectory in plan.states.items():
+        state = trajectory[step]
+        dx, dv = moved.get(vehicle.replace(".", "_"), (0.0, 0.0))
+        states[vehicle] = PlanState(state.position + dx, state.lane, state.speed + dv)
+    return states
+
+
+def test_a_replan_pins_every_vehicle_where_it_was_observed_and_keeps_the_run_so_far(planning):
+    replanner, plan = planning
+    step = 4
+    observed = observed_at(plan, step, dut_car=(-6.0, -3.0))
+    replan = replanner.replan(plan, step, observed)
+    assert replan.plan is not None, replan.why
+    for vehicle, state in observed.items():
+        now = replan.plan.states[vehicle][step]
+        assert now.position == pytest.approx(state.position, abs=1e-3)
+        assert now.speed == pytest.approx(state.speed, abs=1e-3)
+        assert now.lane == state.lane
+    assert [t for t in replan.plan.transitions if t[0] < step] == [t for t in plan.transitions if t[0] < step]
+    assert replan.plan.horizon > step
+
+
+def test_the_vehicle_under_test_is_predicted_at_its_observed_speed_and_the_npc_meets_its_gap_to_where_it_really_is(
+    planning,
+):
+    replanner, plan = planning
+    step = 3
+    replan = replanner.replan(plan, step, observed_at(plan, step, dut_car=(-10.0, -2.0)))
+    assert replan.predicted, "a plan exists with the vehicle under test at its observed speed"
+    dut = replan.plan.states["dut.car"]
+    assert all(s.speed == pytest.approx(dut[step].speed, abs=1e-3) for s in dut[step:])
+    # the cut-in ends cut_in_gap ahead of the vehicle under test (within the planning cell), in its lane
+    cut_in_ends = plan.transitions[2][1]  # start, approach -> cut-in, cut-in -> brake, end
+    end = next(at for at, transition in replan.plan.transitions if transition == cut_in_ends)
+    npc = replan.plan.states["npc"][end]
+    assert npc.lane == dut[end].lane
+    assert npc.position - dut[end].position == pytest.approx(VALUES["cut_in_gap"], abs=1.5)
+
+
+def test_no_vehicle_limit_binds_the_past_so_a_vehicle_under_test_that_braked_harder_than_a_plan_may_still_replans(
+    planning,
+):
+    replanner, plan = planning
+    # 6 m/s slower than a second before: beyond the plan's jerk limit, which binds only the future
+    assert plan.states["dut.car"][1].speed - (plan.states["dut.car"][2].speed - 7.0) > 6.0
+    replan = replanner.replan(plan, 2, observed_at(plan, 2, dut_car=(-3.0, -7.0)))
+    assert replan.plan is not None, replan.why
+
+
+def test_a_replan_that_finds_no_plan_says_why_and_keeps_nothing(planning):
+    replanner, plan = planning
+    # the npc observed 80 m behind and slower: no cut-in 23.7 m ahead of the vehicle under test can come
+    replan = replanner.replan(plan, 5, observed_at(plan, 5, npc=(-80.0, -10.0)))
+    assert replan.plan is None
+    assert "cannot go on" in replan.why and "t=5 s" in replan.why
+
+
+def seen_until(plan, step, **changed):
+    """The plan's states at the steps before ``step``, as a simulation would have seen them;
+    ``changed``: vehicle -> step -> lane seen there instead."""
+    seen = {}
+    for k in range(step):
+        seen[k] = {}
+        for vehicle, trajectory in plan.states.items():
+            state = trajectory[k]
+            lane = changed.get(vehicle.replace(".", "_"), {}).get(k, state.lane)
+            seen[k][vehicle] = PlanState(state.position, lane, state.speed)
+    return seen
+
+
+def test_a_replan_through_what_was_seen_at_the_steps_pins_the_past_and_takes_a_run_of_the_automaton_through_it(
+    planning,
+):
+    replanner, plan = planning
+    step = 5
+    seen = seen_until(plan, step)
+    replan = replanner.replan(plan, step, observed_at(plan, step), seen)
+    assert replan.plan is not None and replan.seen, replan.why
+    for k, states in seen.items():
+        for vehicle, state in states.items():
+            assert replan.plan.states[vehicle][k].position == pytest.approx(state.position, abs=1e-3)
+            assert replan.plan.states[vehicle][k].lane == state.lane
+
+
+def test_a_cut_in_seen_not_to_have_happened_when_planned_is_replanned_to_end_later_within_its_duration():
+    # the cut-in's duration left to its range, [3s..5s]: a cut-in that has not happened by the
+    # step its plan ended it may still end later
+    values = {k: v for k, v in VALUES.items() if k != "cut_in.duration"}
+    scenario = load_scenario(CUT_IN)
+    guide, settings, seed = guided_planning(scenario, build_automaton(scenario), values, settings_for(RunSettings()), 1)
+    plan = next(planned(guide, settings, seed, 1))
+    replanner = Replanner(guide(settings), settings, seed, "dut.car")
+    end, cut_in_ends = plan.transitions[2]  # start, approach -> cut-in, cut-in -> brake, end
+    npc = plan.states["npc"]
+    before = npc[0].lane
+    assert npc[end].lane != before, "the plan's npc is in the lane of the vehicle under test when its cut-in ends"
+    # observed at that step: the npc seen in its first lane throughout, and still there, lagging
+    # its plan as a simulated car does (8 m back, 4 m/s faster than the vehicle under test, not
+    # the 11 m/s its plan had reached: from there no car could still end the cut-in at its gap)
+    seen = seen_until(plan, end, npc={k: before for k in range(end)})
+    observed = observed_at(plan, end)
+    observed["npc"] = PlanState(observed["npc"].position - 8.0, before, observed["dut.car"].speed + 4.0)
+    replan = replanner.replan(plan, end, observed, seen)
+    assert replan.plan is not None and replan.seen, replan.why
+    ended = [at for at, t in replan.plan.transitions if t == cut_in_ends]
+    assert ended and ended[0] > end, replan.plan.transitions
+    assert replan.plan.states["npc"][ended[0]].lane == replan.plan.states["dut.car"][ended[0]].lane
+
+
+class CautiousAcc(AdaptiveCruiseControl):
+    """A reference driver set 15% below the speed it starts at: it slows down where its plan holds
+    its speed (the plan's vehicle under test holds what it is asked at the start)."""
+
+    def start(self, vehicle, reference, road, dt):
+        super().start(vehicle, reference, road, dt)
+        self.set_speed *= 0.85
+
+
+def cautious(name: str):
+    return CautiousAcc() if name == "dut.car" else None
+
+
+def test_with_replanning_the_cut_in_happens_around_a_vehicle_under_test_that_does_not_drive_as_planned():
+    scenario = load_scenario(CUT_IN)
+    reactive = next(run_instances(scenario, 1, values=VALUES, drivers=cautious, under_test=UnderTest(), max_tries=1))
+    scripted = next(
+        run_instances(scenario, 1, values=VALUES, drivers=cautious, under_test=UnderTest(replan_period=0), max_tries=1)
+    )
+    assert reactive.verdict.accepted and not reactive.dut.failed, reactive.verdict.explain()
+    assert reactive.simulation.replans and all(r.plan is not None for r in reactive.simulation.replans)
+    assert not scripted.verdict.accepted and not scripted.simulation.replans
+
+
+class RecordingReplanner:
+    """Records the replans asked of it and finds none."""
+
+    dut = "dut.car"
+
+    def __init__(self):
+        self.asked = []
+
+    def replan(self, plan, step, observed, seen, at):
+        self.asked.append((round(at, 6), step, sorted(seen), observed))
+        return Replan(at, 0.0, None, False, "recorded")
+
+
+def test_replans_come_every_period_several_times_a_second_each_from_the_next_planning_step_with_every_step_before_seen():
+    from pytest_roadlogic.simulation.driver import VehicleState
+    from pytest_roadlogic.simulation.road import Road
+
+    replanner = RecordingReplanner()
+    plan = SimpleNamespace(dt=1.0, horizon=3, vehicles=("dut.car",), stationary=())
+    execution = ReactiveExecution(replanner, plan, 0.25)
+    road = Road(3)
+    for k in range(40):  # the lockstep asks at every simulation step of 0.1 s
+        state = VehicleState(10.0 * k * 0.1, road.center_y(1), 0.0, 10.0, 0.0)
+        assert execution(round(k * 0.1, 6), {"dut.car": state}, road, {}) is None
+    # every 0.25 s, at the first simulation step not before it; none once the plan has ended (t >= 2)
+    assert [at for at, *_ in replanner.asked] == [0.3, 0.5, 0.8, 1.0, 1.3, 1.5, 1.8, 2.0]
+    assert [step for _, step, *_ in replanner.asked] == [1, 1, 1, 1, 2, 2, 2, 2]
+    assert all(set(range(step)) <= set(seen) for _, step, seen, _ in replanner.asked)
+    # a replan between steps pins where the vehicle will be at the next one
+    at, step, _, observed = replanner.asked[0]
+    assert observed["dut.car"].position == pytest.approx(10.0 * step)
+    assert len(execution.replans) == 8
+
+
+def test_a_state_predicted_to_the_next_step_stops_rather_than_reverses_and_crosses_into_the_lane_it_is_heading_for():
+    import math
+
+    from pytest_roadlogic.reactive.execution import _observed
+    from pytest_roadlogic.simulation.driver import VehicleState
+    from pytest_roadlogic.simulation.road import Road
+
+    road = Road(3)
+    braking = VehicleState(0.0, road.center_y(1), 0.0, 10.0, -20.0)
+    assert _observed({"car": braking}, road, 0.9)["car"] == PlanState(pytest.approx(2.5), 1, 0.0)
+    # 0.3 m short of the line to lane 0 (left: larger y), drifting left at 1 m/s
+    line = road.center_y(1) + road.lane_width / 2
+    heading = math.asin(1.0 / 20.0)
+    drifting = VehicleState(0.0, line - 0.3, heading, 20.0, 0.0)
+    assert _observed({"car": drifting}, road, 0.0)["car"].lane == 1
+    assert _observed({"car": drifting}, road, 0.5)["car"].lane == 0
