@@ -11,7 +11,7 @@ import time
 from pathlib import Path
 
 from pytest_roadlogic.frontend import OscError, check_file
-from pytest_roadlogic.frontend.physical import parse_with_declared_units
+from pytest_roadlogic.frontend.semantics.physical import parse_with_declared_units
 
 ROOT = Path(__file__).resolve().parent.parent
 REPEATS = 20

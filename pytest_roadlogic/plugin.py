@@ -432,7 +432,7 @@ class ScenarioItem(pytest.Item):
         from .artifacts.writer import write_artifacts
         from .case import installed_versions
         from .confinement import unique_name
-        from .frontend.logical import describe_values
+        from .frontend.semantics.logical import describe_values
         from .outcomes import NO_PLAN
 
         if result.outcome == NO_PLAN:

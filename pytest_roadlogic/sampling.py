@@ -29,11 +29,11 @@ from pathlib import Path
 from typing import Any
 
 from .frontend import model
-from .frontend.checked import CheckedScenario
 from .frontend.errors import SourceLocation
-from .frontend.logical import UNIT, LogicalParameter
-from .frontend.parameters import MIRRORED, ParameterSpace
-from .frontend.values import EvaluationError, Interval, evaluate
+from .frontend.semantics.checked import CheckedScenario
+from .frontend.semantics.logical import UNIT, LogicalParameter
+from .frontend.semantics.parameters import MIRRORED, ParameterSpace
+from .frontend.semantics.values import EvaluationError, Interval, evaluate
 
 # Samples of physical values lie on a 0.1 grid (in SI units): readable in reports, and a shrunk
 # failure lands on a round value instead of 12.000000000000002.

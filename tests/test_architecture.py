@@ -280,3 +280,14 @@ def test_the_code_keeps_what_and_why_and_leaves_measurements_and_issue_stories_t
         if HISTORY.search(line)
     ]
     assert notes == []
+
+
+def test_the_front_ends_syntax_never_imports_its_semantics():
+    syntax = Path(pytest_roadlogic.__file__).resolve().parent / "frontend" / "syntax"
+    found = [
+        f"{path.name}:{number}: {line.strip()}"
+        for path in syntax.glob("*.py")
+        for number, line in enumerate(path.read_text(encoding="utf-8").splitlines(), 1)
+        if re.match(r"\s*(from|import) \S*semantics\b", line)
+    ]
+    assert found == []

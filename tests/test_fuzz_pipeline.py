@@ -3,7 +3,7 @@
 Whatever the input, every stage either goes on or stops with the project's own errors: a located
 ``OscError`` from the front end or the automaton, a ``NoPlanError`` (no plan, a limit of the tool,
 a time limit) from the planner, an ``UnknownParameter`` for values. Never another exception, and
-never an input that takes long or grows the process: the size limits (frontend/limits.py, the
+never an input that takes long or grows the process: the size limits (frontend/syntax/limits.py, the
 checker's lanes, the parser's magnitudes) refuse before anything expensive starts.
 
 The generator writes scenarios from the constructs the tool executes (including issue 18's

@@ -4,7 +4,7 @@ stops the others. Each test names the numbered item of the issue it checks."""
 import pytest
 
 from pytest_roadlogic.frontend import OscError, check_file, check_text
-from pytest_roadlogic.frontend.limits import MAX_BLOCKS, MAX_BRACKETS, MAX_NAME
+from pytest_roadlogic.frontend.syntax.limits import MAX_BLOCKS, MAX_BRACKETS, MAX_NAME
 
 pytest_plugins = ["pytester"]
 QUIET = ["-p", "no:cacheprovider", "-p", "no:randomly"]

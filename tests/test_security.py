@@ -351,6 +351,6 @@ def test_five_thousand_hostile_case_files_are_loaded_or_refused(tmp_path_factory
 
 def test_a_diagnostic_reads_at_most_what_the_front_end_reads_of_a_file():
     from pytest_roadlogic.frontend.errors import SHOWN_FILE_BYTES
-    from pytest_roadlogic.frontend.limits import MAX_BYTES
+    from pytest_roadlogic.frontend.syntax.limits import MAX_BYTES
 
     assert SHOWN_FILE_BYTES == 4 * MAX_BYTES  # a character is at most 4 bytes of UTF-8

@@ -26,9 +26,9 @@ from collections.abc import Hashable
 from dataclasses import dataclass, field, replace
 
 from ..frontend import model
-from ..frontend.checked import CheckedScenario
 from ..frontend.errors import error_at
-from ..frontend.logical import names_by_place
+from ..frontend.semantics.checked import CheckedScenario
+from ..frontend.semantics.logical import names_by_place
 from ..logic.automaton import Location, PhaseBound, SymbolicAutomaton, Timing, Toward, Transition
 from ..logic.guards import LANE, TRUE, Guard, Not, conjunction
 from ..logic.phase import Variant

@@ -14,11 +14,11 @@ raised here are for what the automaton cannot express.
 from __future__ import annotations
 
 from ..frontend import model
-from ..frontend.checked import Registry
 from ..frontend.errors import error_at
-from ..frontend.tolerances import DURATION_TOLERANCE, widened
-from ..frontend.units import TIME
-from ..frontend.values import argument_range
+from ..frontend.semantics.checked import Registry
+from ..frontend.semantics.tolerances import DURATION_TOLERANCE, widened
+from ..frontend.semantics.values import argument_range
+from ..frontend.syntax.units import TIME
 from ..logic.phase import Phase
 
 

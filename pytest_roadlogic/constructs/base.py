@@ -20,8 +20,8 @@ from typing import ClassVar, Protocol
 
 from ..frontend import model
 from ..frontend.errors import SourceLocation, error_at
-from ..frontend.library import Binding, Signature, bind
-from ..frontend.values import Interval, argument_interval, argument_range
+from ..frontend.semantics.library import Binding, Signature, bind
+from ..frontend.semantics.values import Interval, argument_interval, argument_range
 from ..logic.guards import Guard
 from ..logic.phase import Phase
 from ..settings import STANDARD_DIALECT

@@ -19,9 +19,9 @@ Everything else is the standard's. The dialect is chosen by ``--dialect carla`` 
 
 from __future__ import annotations
 
-from ..frontend.library import DURATION, Binding, Parameter, Signature
-from ..frontend.tolerances import SPEED_TOLERANCE, widened
-from ..frontend.units import SPEED
+from ..frontend.semantics.library import DURATION, Binding, Parameter, Signature
+from ..frontend.semantics.tolerances import SPEED_TOLERANCE, widened
+from ..frontend.syntax.units import SPEED
 from ..logic.automaton import SpeedGain
 from ..logic.phase import Phase, Toward
 from ..settings import CARLA_DIALECT

@@ -18,7 +18,7 @@ from __future__ import annotations
 from typing import ClassVar
 
 from ..frontend import model
-from ..frontend.library import DURATION, Binding, Parameter, Signature
+from ..frontend.semantics.library import DURATION, Binding, Parameter, Signature
 from ..logic.guards import HEADWAY
 from ..logic.phase import Phase
 from .base import ASKS_SPEED, Action, CheckContext, Use

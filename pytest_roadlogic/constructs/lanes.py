@@ -11,7 +11,7 @@ from __future__ import annotations
 from typing import ClassVar
 
 from ..frontend.errors import SourceLocation, error_at
-from ..frontend.library import AT, DURATION, RATE, Binding, Parameter, Signature
+from ..frontend.semantics.library import AT, DURATION, RATE, Binding, Parameter, Signature
 from ..logic.guards import LANE, Bound, Guard, Term
 from ..logic.phase import Phase, Variant
 from .base import ASKS_LANE, Action, AnchoredModifier, CheckContext, Modifier, Use

@@ -4,9 +4,9 @@ the motion as a whole: ``distance()``, ``along()`` and ``avoid_collisions()``.""
 from __future__ import annotations
 
 from ..frontend import model
-from ..frontend.library import DURATION, Binding, Parameter, Signature
-from ..frontend.tolerances import POSITION_TOLERANCE, STANDSTILL, widened
-from ..frontend.units import LENGTH
+from ..frontend.semantics.library import DURATION, Binding, Parameter, Signature
+from ..frontend.semantics.tolerances import POSITION_TOLERANCE, STANDSTILL, widened
+from ..frontend.syntax.units import LENGTH
 from ..logic.automaton import Travelled
 from ..logic.guards import SPEED, Bound, Term
 from ..logic.phase import Phase

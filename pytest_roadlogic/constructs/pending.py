@@ -7,7 +7,7 @@ one a ``translate`` and ``translated = True`` is how it becomes supported.
 
 from __future__ import annotations
 
-from ..frontend.library import AT, Parameter, Signature
+from ..frontend.semantics.library import AT, Parameter, Signature
 from .base import Modifier
 
 

@@ -6,9 +6,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ..frontend.errors import error_at
-from ..frontend.library import AT, Parameter, Signature
-from ..frontend.tolerances import HEADWAY_TOLERANCE, POSITION_TOLERANCE, widened
-from ..frontend.units import LENGTH, TIME
+from ..frontend.semantics.library import AT, Parameter, Signature
+from ..frontend.semantics.tolerances import HEADWAY_TOLERANCE, POSITION_TOLERANCE, widened
+from ..frontend.syntax.units import LENGTH, TIME
 from ..logic.guards import HEADWAY, POSITION, Bound, Guard, Term
 from .base import ASKS_SPEED, AnchoredModifier, Use
 

@@ -9,9 +9,9 @@ from __future__ import annotations
 
 from ..frontend import model
 from ..frontend.errors import SourceLocation, error_at
-from ..frontend.library import AT, DURATION, Binding, Parameter, Signature
-from ..frontend.tolerances import ACCELERATION_TOLERANCE, SPEED_TOLERANCE, widened
-from ..frontend.units import ACCELERATION, SPEED
+from ..frontend.semantics.library import AT, DURATION, Binding, Parameter, Signature
+from ..frontend.semantics.tolerances import ACCELERATION_TOLERANCE, SPEED_TOLERANCE, widened
+from ..frontend.syntax.units import ACCELERATION, SPEED
 from ..logic.automaton import MeanAcceleration
 from ..logic.guards import SPEED as SPEED_Q
 from ..logic.guards import Bound, Guard, Term

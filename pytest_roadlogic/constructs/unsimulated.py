@@ -10,7 +10,7 @@ parameters are the standard library's (stdlib/osc/movement.osc), checked as decl
 
 from __future__ import annotations
 
-from ..frontend.library import AT, Binding, Parameter, Signature
+from ..frontend.semantics.library import AT, Binding, Parameter, Signature
 from ..logic.phase import Phase
 from .base import CheckContext, Modifier, Use
 

@@ -27,7 +27,7 @@ from ..artifacts.writer import write_artifacts
 from ..case import VERSIONED, installed_versions
 from ..confinement import unique_name
 from ..frontend import OscError
-from ..frontend.logical import describe_values
+from ..frontend.semantics.logical import describe_values
 from ..outcomes import NO_PLAN, STAGES
 from ..pipeline import load_scenario
 from ..runner import CaseResult, Runner
@@ -116,7 +116,7 @@ class InstanceRecord:
     tries: int = 0
     seconds: dict[str, float] = field(default_factory=dict)  # per stage, summed over tries
     values: dict[str, Any] | None = None  # the sample (refined)
-    # the sample as every report shows it (frontend.logical.describe_values): value, unit, line, kind
+    # the sample as every report shows it (frontend.semantics.logical.describe_values): value, unit, line, kind
     described: list[str] = field(default_factory=list)
     robustness: float | None = None
     horizon: int | None = None  # planning steps of the simulated plan

@@ -5,12 +5,12 @@ resolve names, types and parameter ranges into a ``CheckedFile`` of ``CheckedSce
 every later stage takes); ``load_file`` raises on any error.
 """
 
-from .checked import CheckedFile, CheckedScenario
-from .checker import check_file, check_text, load_file
 from .errors import Diagnostic, OscError, SourceLocation
 from .model import Actor, Argument, Composition, Invocation, Modifier, Name, OscFile, Quantity, Range, Scenario
-from .parameters import ParameterDomain, ParameterSpace
-from .parser import parse_file, parse_text
+from .semantics.checked import CheckedFile, CheckedScenario
+from .semantics.checker import check_file, check_text, load_file
+from .semantics.parameters import ParameterDomain, ParameterSpace
+from .syntax.parser import parse_file, parse_text
 
 __all__ = [
     "Actor",

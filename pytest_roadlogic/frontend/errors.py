@@ -12,7 +12,7 @@ from dataclasses import dataclass, field
 from ..confinement import UnreadableFile, read_bounded, shown
 
 # the most of a file read to show one of its lines: what the front end reads of a file at most
-# (frontend.limits.MAX_BYTES characters, 4 bytes each; limits imports this module, so not from there)
+# (frontend.syntax.limits.MAX_BYTES characters, 4 bytes each; limits imports this module, so not from there)
 SHOWN_FILE_BYTES = 8_000_000
 
 

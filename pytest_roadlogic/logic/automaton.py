@@ -211,7 +211,7 @@ class SymbolicAutomaton:
     timings: dict[int, Timing] = field(default_factory=dict)
     # Lanes of the road the guards were built for (keep_lane and change_lane enumerate them).
     lanes: int = 3
-    # The logical parameters used at each place of the file (``frontend.logical.names_by_place``):
+    # The logical parameters used at each place of the file (``frontend.semantics.logical.names_by_place``):
     # a bound's or a duration's source names the parameters behind it, for the planner's instance
     # and the messages that name constraints.
     parameters: dict = field(default_factory=dict, compare=False)

@@ -8,8 +8,8 @@ import pytest
 from pytest_roadlogic.automaton import SPEED, Bound, Term, build_automaton
 from pytest_roadlogic.constructs import STANDARD, AnchoredModifier, Registry
 from pytest_roadlogic.frontend import OscError, check_text
-from pytest_roadlogic.frontend.library import AT, Parameter, Signature
-from pytest_roadlogic.frontend.units import SPEED as SPEED_DIMENSION
+from pytest_roadlogic.frontend.semantics.library import AT, Parameter, Signature
+from pytest_roadlogic.frontend.syntax.units import SPEED as SPEED_DIMENSION
 
 
 class AtLeast(AnchoredModifier):

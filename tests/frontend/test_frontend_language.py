@@ -246,7 +246,7 @@ def test_a_relation_between_parameters_is_checked_on_samples():
 
 
 def test_arithmetic_in_an_argument_is_evaluated_over_the_range():
-    from pytest_roadlogic.frontend.values import evaluate
+    from pytest_roadlogic.frontend.semantics.values import evaluate
 
     result = checked(PAIR + "    gap: length with:\n        keep(it in [10..20]m)\n" + uses("gap"))
     argument = result.scenarios[0].scenario.behavior.children[1].modifiers[0].arguments[0].value

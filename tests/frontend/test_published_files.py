@@ -11,7 +11,7 @@ from pathlib import Path
 import pytest
 
 from pytest_roadlogic.frontend import check_file, check_text
-from pytest_roadlogic.frontend.values import Interval
+from pytest_roadlogic.frontend.semantics.values import Interval
 
 LIBRARY = """type speed is SI(m: 1, s: -1)
 unit mph of speed is SI(m: 1, s: -1, factor: 0.447038889)

@@ -8,8 +8,9 @@ from pathlib import Path
 import pytest
 
 from pytest_roadlogic.constructs import CARLA, STANDARD, carla, conditions
-from pytest_roadlogic.frontend import check_text, library
-from pytest_roadlogic.frontend.standard_library import UNITS, part_file, part_names, standard_library
+from pytest_roadlogic.frontend import check_text
+from pytest_roadlogic.frontend.semantics import library
+from pytest_roadlogic.frontend.syntax.standard_library import UNITS, part_file, part_names, standard_library
 
 
 def declared_kind(type_name: str) -> str:

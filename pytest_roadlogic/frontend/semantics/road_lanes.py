@@ -5,9 +5,10 @@ from __future__ import annotations
 import math
 from pathlib import Path
 
-from ..settings import STANDARD_DIALECT
-from . import library, model
-from .errors import SourceLocation
+from ...settings import STANDARD_DIALECT
+from .. import model
+from ..errors import SourceLocation
+from . import library
 from .values import EvaluationError, Interval, evaluate
 
 DEFAULT_LANES = 3  # a road whose scenario says nothing of its lanes
@@ -97,8 +98,8 @@ class RoadLanes:
         """The lanes of the route the scenario runs on in the map it asked for (``self.map_asked``):
         the map's road that has the ``needed`` lanes; an error at ``set_map`` (or at the scenario,
         for the map option) saying why no road fits, or why the map cannot be read."""
-        from ..roads.opendrive_in import MapError, read_map
-        from ..roads.route import pick_route
+        from ...roads.opendrive_in import MapError, read_map
+        from ...roads.route import pick_route
 
         path, location = self.map_asked
         at = location or scenario.location

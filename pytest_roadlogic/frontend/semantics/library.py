@@ -14,8 +14,8 @@ from __future__ import annotations
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 
-from . import model
-from .standard_library import LazyTable
+from .. import model
+from ..syntax.standard_library import LazyTable
 
 # Built-in actor types that can drive on (or stand on) the highway.
 ACTOR_TYPES = ("car", "truck", "vehicle", "stationary_object")

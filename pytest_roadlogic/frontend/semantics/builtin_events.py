@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import dataclasses
 
-from . import model
+from .. import model
 
 EDGES = ("start", "end")
 

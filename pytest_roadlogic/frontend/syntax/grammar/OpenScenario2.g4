@@ -7,12 +7,12 @@
 // refuse them by name and place instead of a syntax error.
 //
 // The layout is Python-like: the lexer emits NEWLINE tokens, and
-// pytest_roadlogic.frontend.lexer.IndentingLexer turns leading whitespace into the INDENT and
+// pytest_roadlogic.frontend.syntax.lexer.IndentingLexer turns leading whitespace into the INDENT and
 // DEDENT tokens declared below and drops line breaks inside (...) and [...]. Keeping that logic in
 // Python (not in target-specific @members) keeps this file free of target code.
 //
 // The generated parser in ../generated is committed. Regenerate it with
-//     python -m pytest_roadlogic.frontend.regenerate
+//     python -m pytest_roadlogic.frontend.syntax.regenerate
 // (tests/test_frontend_generated.py fails when it is stale).
 
 grammar OpenScenario2;

@@ -18,8 +18,8 @@ from __future__ import annotations
 import dataclasses
 from collections.abc import Mapping
 
-from . import model
-from .errors import Diagnostic
+from .. import model
+from ..errors import Diagnostic
 
 
 def inherited(

@@ -16,7 +16,7 @@ from collections import deque
 from antlr4 import InputStream
 from antlr4.Token import CommonToken, Token
 
-from .errors import Diagnostic, SourceLocation
+from ..errors import Diagnostic, SourceLocation
 from .generated.OpenScenario2Lexer import OpenScenario2Lexer
 from .generated.OpenScenario2Parser import OpenScenario2Parser
 

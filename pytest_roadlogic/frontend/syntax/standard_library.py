@@ -7,7 +7,7 @@ The tool's meaning of each construct is in ``pytest_roadlogic.constructs`` (and 
 construct's parameters equal to its declaration here); a construct declared here that the tool
 does not provide is refused by name where it is used.
 
-The files are read with the project's syntax (``frontend.syntax``, which needs no unit table of
+The files are read with the project's syntax (``frontend.syntax.syntax``, which needs no unit table of
 its own) on first use, not at import, so the tables are lazy mappings (``LazyTable``).
 """
 
@@ -21,7 +21,7 @@ from pathlib import Path
 from .syntax import parse_text
 from .units import dimension_of
 
-STDLIB_DIR = Path(__file__).resolve().parent.parent / "stdlib"
+STDLIB_DIR = Path(__file__).resolve().parents[2] / "stdlib"
 LIBRARY_ROOT = "osc"
 
 

@@ -22,8 +22,8 @@ from __future__ import annotations
 import dataclasses
 from collections.abc import Callable, Mapping
 
-from . import model
-from .errors import Diagnostic
+from .. import model
+from ..errors import Diagnostic
 
 # calls inside calls: deeper than this is a recursion the checker reports
 MAX_DEPTH = 8

@@ -4,11 +4,11 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from ..confinement import ALLOW_READ_HINT, MISSING, regular_file_problem
-from . import model
-from .errors import OscError
-from .parser import parse_file
-from .standard_library import part_file, part_names
+from ...confinement import ALLOW_READ_HINT, MISSING, regular_file_problem
+from .. import model
+from ..errors import OscError
+from ..syntax.parser import parse_file
+from ..syntax.standard_library import part_file, part_names
 
 
 class ImportLoading:

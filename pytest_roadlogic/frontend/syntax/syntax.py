@@ -3,7 +3,7 @@
 ``parse_text`` runs the generated ANTLR parser (through ``IndentingLexer``) and turns the parse
 tree into ``model`` dataclasses, reading physical literals with the unit table it is given. It
 knows nothing of the standard library, so that the library's own files are read with it; the
-parser of every other file (``frontend.parser``) gives it the library's units. Problems are collected, not printed, and raised together
+parser of every other file (``frontend.syntax.parser``) gives it the library's units. Problems are collected, not printed, and raised together
 as one ``OscError``: a user fixing a file wants every mistake in one run, not one per run.
 
 The parser judges spelling only (syntax, units, literal forms). Whether names exist and values have
@@ -23,8 +23,8 @@ from antlr4.error.ErrorListener import ErrorListener
 from antlr4.Token import Token
 from antlr4.tree.Tree import TerminalNode
 
-from . import model
-from .errors import Diagnostic, OscError, SourceLocation
+from .. import model
+from ..errors import Diagnostic, OscError, SourceLocation
 from .generated.OpenScenario2Parser import OpenScenario2Parser as P
 from .lexer import DEDENT, INDENT, IndentingLexer
 from .limits import MAX_MAGNITUDE, check_limits

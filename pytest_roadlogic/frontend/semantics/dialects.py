@@ -12,7 +12,7 @@ from __future__ import annotations
 import functools
 from importlib import metadata
 
-from ..settings import STANDARD_DIALECT
+from ...settings import STANDARD_DIALECT
 from .checked import Registry
 
 ENTRY_POINT_GROUP = "pytest_roadlogic.dialects"

@@ -16,13 +16,17 @@ import math
 from dataclasses import dataclass, replace
 from pathlib import Path
 
-from ..confinement import ReadRoots, project_root
-from ..settings import STANDARD_DIALECT
-from . import library, model
+from ...confinement import ReadRoots, project_root
+from ...settings import STANDARD_DIALECT
+from .. import model
+from ..errors import Diagnostic, OscError, SourceLocation
+from ..syntax.parser import parse_text
+from ..syntax.standard_library import UNITS, standard_library
+from ..syntax.units import SPEED, TIME
+from . import library
 from .builtin_events import with_builtin_events
 from .checked import CheckedFile, CheckedScenario, Registry
 from .dialects import registry as dialect_registry
-from .errors import Diagnostic, OscError, SourceLocation
 from .events import EventChecks
 from .field_types import FieldTyping
 from .imports import ImportLoading
@@ -30,11 +34,8 @@ from .inheritance import inherited
 from .invocation import RECURSION, called_scenarios, expand_calls, substitute_names
 from .logical import logical_parameters_of
 from .parameters import ParameterSpace, parameter_space
-from .parser import parse_text
 from .physical import declared_physics, parse_with_declared_units
 from .road_lanes import DEFAULT_LANES, RoadLanes
-from .standard_library import UNITS, standard_library
-from .units import SPEED, TIME
 from .values import EvaluationError, Interval, calls_in, describe, evaluate, names_in
 
 

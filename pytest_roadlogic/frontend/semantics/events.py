@@ -2,10 +2,10 @@
 
 from __future__ import annotations
 
-from . import model
+from .. import model
+from ..errors import OscError, SourceLocation
+from ..syntax.units import TIME
 from .builtin_events import EDGES
-from .errors import OscError, SourceLocation
-from .units import TIME
 from .values import EvaluationError, Interval, describe, evaluate
 
 

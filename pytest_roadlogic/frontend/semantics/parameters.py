@@ -16,8 +16,9 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from . import library, model
-from .errors import Diagnostic, SourceLocation
+from .. import model
+from ..errors import Diagnostic, SourceLocation
+from . import library
 from .invocation import substitute_names
 from .values import EvaluationError, Interval, describe, evaluate, names_in, possibly
 

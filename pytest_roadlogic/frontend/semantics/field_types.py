@@ -4,8 +4,9 @@ from __future__ import annotations
 
 from dataclasses import replace
 
-from . import library, model
-from .standard_library import LazyTable
+from .. import model
+from ..syntax.standard_library import LazyTable
+from . import library
 
 # the built-in physical type of each dimension, for a declared alias (velocity for speed)
 _BUILTIN_PHYSICAL = LazyTable(lambda _: {dimension: name for name, dimension in library.PHYSICAL_TYPES.items()})

@@ -13,8 +13,8 @@ from collections.abc import Collection
 from dataclasses import dataclass, field
 from typing import Any, Protocol
 
-from . import model
-from .errors import Diagnostic, OscError, SourceLocation
+from .. import model
+from ..errors import Diagnostic, OscError, SourceLocation
 from .logical import LogicalParameter
 from .parameters import ParameterSpace
 
@@ -23,7 +23,7 @@ class Registry(Protocol):
     """What the checker and the automaton ask of the constructs a scenario may use: each action and
     modifier by name (its signature, check and translation) and the guard of a condition. The
     constructs (``pytest_roadlogic.constructs``) provide it, one registry per dialect
-    (``frontend.dialects``); the front end only names what it needs, so that it sits below them."""
+    (``frontend.semantics.dialects``); the front end only names what it needs, so that it sits below them."""
 
     dialect: str
 
@@ -45,7 +45,7 @@ class CheckedScenario:
     lanes: int
     registry: Registry
     sources: dict[str, str] = field(default_factory=dict, compare=False, repr=False)  # path -> text, for error reports
-    # its logical parameters, each once (``frontend.logical``): what is sampled, planned and reported
+    # its logical parameters, each once (``frontend.semantics.logical``): what is sampled, planned and reported
     parameters: tuple[LogicalParameter, ...] = field(default=(), compare=False)
     # the road it runs on when it runs on a map (``roads.Route``: set_map or the map option); None:
     # the straight road of ``lanes`` lanes

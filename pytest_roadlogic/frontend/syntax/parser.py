@@ -1,8 +1,8 @@
 """Reading ``.osc`` files and text into the scenario model, with the standard library's units.
 
-``parse_text`` / ``parse_file`` read syntax only (``frontend.syntax``), physical literals in the
+``parse_text`` / ``parse_file`` read syntax only (``frontend.syntax.syntax``), physical literals in the
 units the standard library declares unless a table is given (a file that declares its own units is
-read again with them: ``frontend.physical``). Problems are collected, not printed, and raised
+read again with them: ``frontend.semantics.physical``). Problems are collected, not printed, and raised
 together as one ``OscError``: a user fixing a file wants every mistake in one run, not one per run.
 
 The parser judges spelling only (syntax, units, literal forms). Whether names exist and values have
@@ -15,9 +15,10 @@ from __future__ import annotations
 from collections.abc import Mapping
 from pathlib import Path
 
-from ..confinement import UnreadableFile, read_bounded
-from . import model, syntax
-from .errors import Diagnostic, OscError, SourceLocation
+from ...confinement import UnreadableFile, read_bounded
+from .. import model
+from ..errors import Diagnostic, OscError, SourceLocation
+from . import syntax
 from .limits import MAX_BYTES
 from .standard_library import UNITS, standard_library
 

@@ -22,12 +22,12 @@ from collections.abc import Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from ..confinement import ReadRoots, regular_file_problem
-from . import model
-from .errors import Diagnostic, OscError
-from .parser import parse_file
-from .standard_library import UNITS, standard_library
-from .units import dimension_of
+from ...confinement import ReadRoots, regular_file_problem
+from .. import model
+from ..errors import Diagnostic, OscError
+from ..syntax.parser import parse_file
+from ..syntax.standard_library import UNITS, standard_library
+from ..syntax.units import dimension_of
 
 FACTOR_TOLERANCE = 1e-6  # relative: CARLA's libraries write kph's factor with 9 digits
 

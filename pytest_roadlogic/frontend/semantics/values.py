@@ -12,12 +12,12 @@ import math
 from collections.abc import Mapping
 from dataclasses import dataclass
 
-from . import model
-from .errors import SourceLocation, error_at
+from .. import model
+from ..errors import SourceLocation, error_at
+from ..syntax.units import DIMENSIONS as _DIMENSIONS
+from ..syntax.units import EXPONENTS as _EXPONENTS
+from ..syntax.units import SI_UNIT
 from .library import UNSUPPORTED_EXPRESSIONS
-from .units import DIMENSIONS as _DIMENSIONS
-from .units import EXPONENTS as _EXPONENTS
-from .units import SI_UNIT
 
 
 def describe(dimension: str | None) -> str:
