@@ -15,6 +15,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..roads.road import Road
 from ..simulation.geometry import CAR_LENGTH, CAR_WIDTH
 from ..simulation.interface import Simulation
 from .files import replaced
@@ -38,7 +39,7 @@ def commonroad_scenario(simulation: Simulation):
     from commonroad.scenario.trajectory import Trajectory
 
     scenario = Scenario(dt=simulation.dt, scenario_id=ScenarioID(country_id="ZAM", map_name="RoadLogic", map_id=1))
-    scenario.add_objects(simulation.road.lanelet_network())
+    scenario.add_objects(lanelet_network(simulation.road))
     trace = simulation.trace
     shape = RectObstacleShape(width=CAR_WIDTH, length=CAR_LENGTH)
     problems = PlanningProblemSet()
@@ -115,3 +116,46 @@ def write_commonroad_xml(simulation: Simulation, path: str | Path) -> Path:
     with replaced(path) as temporary:
         writer.write_to_file(temporary, OverwriteExistingFile.ALWAYS)
     return path
+
+
+def lanelet_network(road: Road):
+    """``road`` as a CommonRoad lanelet network: one lanelet per lane, adjacent same-direction (on a
+    map, in its coordinates: each lane's lines every 2 m along the route)."""
+    from commonroad.scenario.lanelet import Lanelet, LaneletNetwork, LaneletType, LineMarking
+
+    network = LaneletNetwork()
+    if road.route is None:
+        xs = np.linspace(road.x_start, road.x_end, 2)
+    else:
+        xs = np.linspace(road.x_start, road.x_end, max(2, int((road.x_end - road.x_start) / 2.0) + 1))
+
+    def line(y: float) -> np.ndarray:
+        wx, wy, _ = road.world(xs, np.full_like(xs, y))
+        return np.stack([wx, wy], axis=1)
+
+    for lane in range(road.lanes):
+        top = (road.lanes - lane) * road.lane_width
+        bottom = top - road.lane_width
+        left, right = line(top), line(bottom)
+        center = (left + right) / 2
+        network.add_lanelet(
+            Lanelet(
+                left_vertices=left,
+                center_vertices=center,
+                right_vertices=right,
+                lanelet_id=lanelet_id(lane),
+                adjacent_left=lanelet_id(lane - 1) if lane > 0 else None,
+                adjacent_left_same_direction=True if lane > 0 else None,
+                adjacent_right=lanelet_id(lane + 1) if lane < road.lanes - 1 else None,
+                adjacent_right_same_direction=True if lane < road.lanes - 1 else None,
+                line_marking_left_vertices=LineMarking.SOLID if lane == 0 else LineMarking.DASHED,
+                line_marking_right_vertices=LineMarking.SOLID if lane == road.lanes - 1 else LineMarking.DASHED,
+                lanelet_type={LaneletType.HIGHWAY},
+            )
+        )
+    return network
+
+
+def lanelet_id(lane: int) -> int:
+    """The id of ``lane``'s lanelet."""
+    return 100 + lane

@@ -42,13 +42,13 @@ import math
 from collections.abc import Callable, Collection
 from dataclasses import dataclass
 
+from ..dimensions import CAR_LENGTH, CAR_WIDTH, LANE_WIDTH
 from ..frontend import model
 from ..frontend.errors import error_at
 from ..frontend.semantics.library import refused_call
 from ..frontend.semantics.tolerances import SPEED_TOLERANCE, widened
 from ..frontend.semantics.values import EvaluationError, argument_interval, describe
 from ..frontend.syntax.units import LENGTH, SPEED, TIME
-from ..logic.dimensions import CAR_LENGTH, CAR_WIDTH, LANE_WIDTH
 from ..logic.guards import (
     HEADWAY,
     LANE,

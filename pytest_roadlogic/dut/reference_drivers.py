@@ -33,10 +33,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..logic.dimensions import CAR_LENGTH, CAR_WIDTH
+from ..dimensions import CAR_LENGTH, CAR_WIDTH
+from ..roads.road import Road
 from ..simulation.driver import DriverBase, Trajectory, VehicleState
 from ..simulation.reference import Reference
-from ..simulation.road import Road
 
 HORIZON = 3.0  # s of trajectory returned each cycle (what the others see as its prediction)
 

@@ -25,7 +25,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..logic.dimensions import CAR_LENGTH, CAR_WIDTH
+from ..dimensions import CAR_LENGTH, CAR_WIDTH
 from ..simulation.trace import Trace
 
 

@@ -15,7 +15,7 @@ from dataclasses import asdict, dataclass, field
 
 import numpy as np
 
-from ..logic.dimensions import CAR_LENGTH, CAR_WIDTH
+from ..dimensions import CAR_LENGTH, CAR_WIDTH
 from ..registries.oracles import ORACLES, Oracle
 from ..simulation.trace import Trace
 from . import measures

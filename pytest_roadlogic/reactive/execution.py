@@ -14,9 +14,9 @@ from __future__ import annotations
 import math
 
 from ..planning.plan import Plan, PlanState
+from ..roads.road import Road
 from ..simulation.driver import VehicleState
 from ..simulation.reference import Reference, references
-from ..simulation.road import Road
 from .replanner import Replan, Replanner
 
 

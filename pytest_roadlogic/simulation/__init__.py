@@ -24,7 +24,7 @@ _HOMES = {
     "Reference": "reference",
     "Waypoint": "reference",
     "references": "reference",
-    "Road": "road",
+    "Road": ".roads.road",  # the road model is roads'; a driver is given one
     "ActorSnapshot": "trace",
     "Incident": "trace",
     "Trace": "trace",

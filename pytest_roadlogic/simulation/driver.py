@@ -14,8 +14,8 @@ from typing import Protocol
 
 import numpy as np
 
+from ..roads.road import Road
 from .reference import Reference
-from .road import Road
 
 
 @dataclass(frozen=True)

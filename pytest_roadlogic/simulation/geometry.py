@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..logic.dimensions import CAR_LENGTH, CAR_WIDTH
+from ..dimensions import CAR_LENGTH, CAR_WIDTH
 
 __all__ = ["CAR_LENGTH", "CAR_WIDTH", "WHEELBASE", "boxes_overlap", "corners"]
 WHEELBASE = 2.7  # m, for the kinematic checks of motion planners

@@ -16,9 +16,9 @@ from dataclasses import dataclass, field
 from typing import Protocol, runtime_checkable
 
 from ..planning.plan import Plan
+from ..roads.road import Road
 from .driver import Driver, VehicleState
 from .reference import Reference, Waypoint
-from .road import Road
 from .trace import Trace
 
 # vehicle name -> the driver that should drive it, or None for the backend's own

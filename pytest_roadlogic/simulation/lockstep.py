@@ -16,11 +16,11 @@ from collections.abc import Callable
 import numpy as np
 
 from ..planning.plan import Plan
+from ..roads.road import Road
 from .driver import Driver, StationaryDriver, Trajectory, VehicleState, complete
 from .geometry import boxes_overlap, corners
 from .interface import DriverFactory, GoalRecord, Reaction, Simulation, SimulationLimits, SimulationTimeout
 from .reference import TAIL, Reference, Waypoint, references
-from .road import Road
 from .trace import Incident, Trace
 
 

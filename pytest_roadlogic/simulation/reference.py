@@ -21,7 +21,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..planning.plan import Plan
-from .road import Road
+from ..roads.road import Road
 
 LANE_CHANGE_DURATION = 3.0  # s; fits between two lane changes (3 planning steps apart)
 # s simulated after the plan's last step: the scenario's last phase may end then if its duration

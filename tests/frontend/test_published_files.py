@@ -211,7 +211,7 @@ def _gap_guard(direction: str, operator: str, value: str):
 
 def _space_gap(a, b, direction: str) -> float:
     """The standard's definition, written out: the distance one box travels to touch the other."""
-    from pytest_roadlogic.logic.dimensions import CAR_LENGTH, CAR_WIDTH, LANE_WIDTH
+    from pytest_roadlogic.dimensions import CAR_LENGTH, CAR_WIDTH, LANE_WIDTH
 
     if direction == "longitudinal":
         d, extent = a.position - b.position, CAR_LENGTH

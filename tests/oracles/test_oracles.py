@@ -12,9 +12,9 @@ import random
 import numpy as np
 import pytest
 
+from pytest_roadlogic.dimensions import CAR_LENGTH, CAR_WIDTH
 from pytest_roadlogic.dut import AUTO, NONE, NoSuchVehicle, UnderTest
 from pytest_roadlogic.dut.reference_drivers import AdaptiveCruiseControl, LateAcc, WeakBrakingAcc
-from pytest_roadlogic.logic.dimensions import CAR_LENGTH, CAR_WIDTH
 from pytest_roadlogic.oracles import Thresholds, judge
 from pytest_roadlogic.simulation.driver import Trajectory, VehicleState
 from pytest_roadlogic.simulation.trace import Incident, Trace
@@ -145,8 +145,8 @@ def test_the_vehicle_under_test_is_the_scenarios_dut_unless_an_option_names_anot
 def follow(driver, lead_speed, lead_braking, seconds=25.0):
     """The driver behind a lead that starts 40 m ahead at its speed and brakes at ``lead_braking``
     from t = 3 s to a stop; returns (least gap, collided)."""
+    from pytest_roadlogic.roads.road import Road
     from pytest_roadlogic.simulation.reference import Reference, Waypoint
-    from pytest_roadlogic.simulation.road import Road
 
     road = Road(3)
     reference = Reference("dut", 0.0, 0.0, [Waypoint(0.0, 0.0, 1, lead_speed)], road)
@@ -175,8 +175,8 @@ def test_the_reference_acc_stops_behind_a_lead_that_brakes_hard_and_the_defectiv
 
 
 def test_the_reference_acc_cruises_at_its_set_speed_in_its_lane_with_no_one_ahead():
+    from pytest_roadlogic.roads.road import Road
     from pytest_roadlogic.simulation.reference import Reference, Waypoint
-    from pytest_roadlogic.simulation.road import Road
 
     road = Road(3)
     driver = AdaptiveCruiseControl()

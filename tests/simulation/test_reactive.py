@@ -199,8 +199,8 @@ class RecordingReplanner:
 
 
 def test_replans_come_every_period_several_times_a_second_each_from_the_next_planning_step_with_every_step_before_seen():
+    from pytest_roadlogic.roads.road import Road
     from pytest_roadlogic.simulation.driver import VehicleState
-    from pytest_roadlogic.simulation.road import Road
 
     replanner = RecordingReplanner()
     plan = SimpleNamespace(dt=1.0, horizon=3, vehicles=("dut.car",), stationary=())
@@ -223,8 +223,8 @@ def test_a_state_predicted_to_the_next_step_stops_rather_than_reverses_and_cross
     import math
 
     from pytest_roadlogic.reactive.execution import _observed
+    from pytest_roadlogic.roads.road import Road
     from pytest_roadlogic.simulation.driver import VehicleState
-    from pytest_roadlogic.simulation.road import Road
 
     road = Road(3)
     braking = VehicleState(0.0, road.center_y(1), 0.0, 10.0, -20.0)

@@ -4,9 +4,9 @@ unless the user's ``drivers`` give a vehicle another driver (the vehicle under t
 
 from __future__ import annotations
 
+from ...roads.road import Road
 from ..lockstep import LockstepSimulator
 from ..reference import Reference
-from ..road import Road
 from .driver import FrenetixDriver
 
 # m/s below which a planned vehicle counts as standing still (remain_stationary's bound is 0.1)

@@ -10,10 +10,10 @@ from __future__ import annotations
 
 import numpy as np
 
+from ...roads.road import Road
 from ..driver import DriverBase, Trajectory, VehicleState
 from ..geometry import CAR_LENGTH, CAR_WIDTH, WHEELBASE
 from ..reference import Reference
-from ..road import Road
 
 _COORDINATE_SYSTEMS: dict[tuple, object] = {}
 

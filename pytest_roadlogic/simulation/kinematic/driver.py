@@ -16,10 +16,10 @@ import math
 
 import numpy as np
 
+from ...roads.road import Road
 from ..driver import DriverBase, Trajectory, VehicleState
 from ..geometry import WHEELBASE
 from ..reference import Reference
-from ..road import Road
 
 HORIZON = 3.0  # s of prediction
 POSITION_GAIN = 0.5  # 1/s^2

@@ -1,4 +1,4 @@
-"""The road: all lanes in one direction along +x, in road coordinates.
+"""The road a simulation drives on: all lanes in one direction along +x, in road coordinates.
 
 Lane 0 is the leftmost (largest y), lane ``lanes - 1`` the rightmost; the right road edge is y = 0.
 On the straight road these are the world's coordinates too. On a map (``route``: a
@@ -11,10 +11,14 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ..logic.dimensions import LANE_WIDTH
+from ..dimensions import LANE_WIDTH
+
+if TYPE_CHECKING:
+    from .route import Route
 
 
 @dataclass(frozen=True)
@@ -23,7 +27,7 @@ class Road:
     x_start: float = -200.0
     x_end: float = 400.0
     lane_width: float = LANE_WIDTH
-    route: object = None  # roads.Route, None: the straight road
+    route: Route | None = None  # the map's route it lies along; None: the straight road
     route_shift: float = 0.0  # m along the route of x = 0
 
     @property
@@ -57,44 +61,3 @@ class Road:
             return x, y, np.asarray(heading, dtype=float) + 0.0 * x
         wx, wy, wh = self.route.pose(np.asarray(x, dtype=float) + self.route_shift, y)
         return wx, wy, wh + heading
-
-    def lanelet_network(self):
-        """The road as a CommonRoad lanelet network: one lanelet per lane, adjacent same-direction
-        (on a map, in its coordinates: each lane's lines every 2 m along the route)."""
-        from commonroad.scenario.lanelet import Lanelet, LaneletNetwork, LaneletType, LineMarking
-
-        network = LaneletNetwork()
-        if self.route is None:
-            xs = np.linspace(self.x_start, self.x_end, 2)
-        else:
-            xs = np.linspace(self.x_start, self.x_end, max(2, int((self.x_end - self.x_start) / 2.0) + 1))
-
-        def line(y: float) -> np.ndarray:
-            wx, wy, _ = self.world(xs, np.full_like(xs, y))
-            return np.stack([wx, wy], axis=1)
-
-        for lane in range(self.lanes):
-            top = (self.lanes - lane) * self.lane_width
-            bottom = top - self.lane_width
-            left, right = line(top), line(bottom)
-            center = (left + right) / 2
-            network.add_lanelet(
-                Lanelet(
-                    left_vertices=left,
-                    center_vertices=center,
-                    right_vertices=right,
-                    lanelet_id=self.lanelet_id(lane),
-                    adjacent_left=self.lanelet_id(lane - 1) if lane > 0 else None,
-                    adjacent_left_same_direction=True if lane > 0 else None,
-                    adjacent_right=self.lanelet_id(lane + 1) if lane < self.lanes - 1 else None,
-                    adjacent_right_same_direction=True if lane < self.lanes - 1 else None,
-                    line_marking_left_vertices=LineMarking.SOLID if lane == 0 else LineMarking.DASHED,
-                    line_marking_right_vertices=LineMarking.SOLID if lane == self.lanes - 1 else LineMarking.DASHED,
-                    lanelet_type={LaneletType.HIGHWAY},
-                )
-            )
-        return network
-
-    @staticmethod
-    def lanelet_id(lane: int) -> int:
-        return 100 + lane
