@@ -115,6 +115,11 @@ class IncrementalPlanner:
         """A random start's draws from ``draw``, as this encoding's rules."""
         raise NotImplementedError
 
+    def base_parts(self) -> list[tuple[str, list]]:
+        """The program parts grounded once, before step 0: the instance's; an encoding adds its
+        own (a replan's past, for the continuous one)."""
+        return [("base", [])]
+
     def control_for(self, instance: str) -> clingo.Control:
         """A control with this encoding's background, theory and the instance, nothing grounded."""
         raise NotImplementedError
@@ -202,7 +207,7 @@ class IncrementalPlanner:
         """Ground step ``horizon`` (with the base program at 0) and ask for acceptance there only."""
         t = clingo.Number(horizon)
         if horizon == 0:
-            self._ground(control, [("base", []), ("state", [t]), ("check", [t])])
+            self._ground(control, [*self.base_parts(), ("state", [t]), ("check", [t])])
             self._assign_action(control)
         else:
             self._ground(control, [("dynamics", [t]), ("state", [t]), ("check", [t])])
@@ -212,7 +217,9 @@ class IncrementalPlanner:
     def advance_to(self, control: clingo.Control, horizon: int, grounded: int = -1) -> None:
         """Ground the steps after ``grounded`` (-1: none yet, the base program too) up to
         ``horizon`` in one call and ask for acceptance at ``horizon`` only."""
-        parts = [("base", []), ("state", [clingo.Number(0)]), ("check", [clingo.Number(0)])] if grounded < 0 else []
+        parts = (
+            [*self.base_parts(), ("state", [clingo.Number(0)]), ("check", [clingo.Number(0)])] if grounded < 0 else []
+        )
         for step in range(max(1, grounded + 1), horizon + 1):
             t = clingo.Number(step)
             parts += [("dynamics", [t]), ("state", [t]), ("check", [t])]

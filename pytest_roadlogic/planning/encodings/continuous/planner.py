@@ -76,6 +76,12 @@ class ContinuousPlanner(IncrementalPlanner):
 
     def __init__(self, automaton: SymbolicAutomaton, settings: ContinuousSettings | None = None, seed: int = 0) -> None:
         super().__init__(automaton, settings or ContinuousSettings(), seed)  # type: ignore[arg-type]
+        # a replan's past as facts (replan.py), the program part ``past`` that asp/continuous/replan.lp
+        # reads; empty for a plan from the start
+        self.past = ""
+
+    def base_parts(self) -> list[tuple[str, list]]:
+        return [("base", []), *([("past", [])] if self.past else [])]
 
     def instance_for(self, settings, relaxable: bool = False) -> str:
         return build_continuous_instance(self.automaton, settings, relaxable)
@@ -90,6 +96,8 @@ class ContinuousPlanner(IncrementalPlanner):
         control = self._new_control()
         program = read_programs(*BACKGROUND)
         program += "\n#program base.\n" + instance + "\n" + self.preferences
+        if self.past:
+            program += "\n#program past.\n" + self.past
         if self.settings.random_start:
             program += "\n" + read_programs(*RANDOM_START)
         if self.settings.theory == "lpx":
@@ -211,9 +219,9 @@ class ContinuousPlanner(IncrementalPlanner):
             diagnosis.raise_reason(self, error, deadline, window)
 
     def replan(self, past: Past, shortest: int) -> Plan | None:
-        """The first plan from ``past`` on (``asp/continuous/replan.lp`` reads its facts), at
-        least ``shortest`` steps long. A planner replans once: the past joins its instance."""
-        self.instance += "\n" + past_facts(past)
+        """The first plan from ``past`` on (``asp/continuous/replan.lp`` reads its facts, the
+        program part ``past``), at least ``shortest`` steps long. A planner replans once."""
+        self.past = past_facts(past)
         self.shortest = shortest
         return next(self.plans(limit=1), None)
 
