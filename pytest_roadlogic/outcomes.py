@@ -39,6 +39,18 @@ THE_DUT_FAILED = "the vehicle under test failed"
 DID_NOT_HAPPEN = "the scenario did not happen"
 
 
+def simulated_outcome(accepted: bool, dut=None) -> str:
+    """What a simulated case came to, from whether the monitor ``accepted`` it and the oracles'
+    verdict on its vehicle under test (``oracles.DutReport``; None: there was none)."""
+    if dut is None:
+        return CONFORMANT if accepted else NON_CONFORMANT
+    if dut.failed:
+        return DUT_FAILED
+    if dut.hit_by_others or not accepted:
+        return NOT_EXERCISED
+    return PASSED
+
+
 def shown(counts) -> tuple[str, ...]:
     """The outcomes a table of ``counts`` (Counters or dicts by outcome) shows: every conformance
     outcome, and those of a vehicle under test where any case had one."""

@@ -261,9 +261,10 @@ class ScenarioFailed(Exception):
     """One concrete case of the scenario failed; carries its result. The artifacts are written
     once, for the final (shrunk) case."""
 
-    def __init__(self, result, report: str = "") -> None:
+    def __init__(self, result, report: str = "", summary: str = "") -> None:
         super().__init__(report or result.message)
         self.result = result
+        self.summary = summary  # what the item's failure says before the case (an item that tested nothing)
 
 
 class ScenarioItem(pytest.Item):
@@ -280,7 +281,7 @@ class ScenarioItem(pytest.Item):
             None  # (artifact paths, replay commands) of the reported case
         )
         self.dut_reports: list = []  # the oracles' verdicts of the cases run (a vehicle under test drove)
-        self.not_exercised = ""  # why the last case that was not exercised did not happen
+        self.not_exercised = None  # the last case that was not exercised (a runner.CaseResult)
         self.unasked_cases = 0  # cases whose plan needed changes nothing asks for
         self.unasked_said: list[str] = []  # the last such plan's changes, as a user reads them
 
@@ -336,7 +337,7 @@ class ScenarioItem(pytest.Item):
                     )
             self._fail_if_mostly_not_exercised()
         except ScenarioFailed as failure:
-            self._report_failure(runner, failure.result)
+            self._report_failure(runner, failure.result, failure.summary)
         except NoSuchVehicle as error:
             missing = error  # failed below, outside the handler: not as a chained "During handling"
         finally:
@@ -377,20 +378,20 @@ class ScenarioItem(pytest.Item):
                 self.unasked_cases += 1
                 self.unasked_said = said
         if result.outcome == NOT_EXERCISED:
-            self.not_exercised = result.message
+            self.not_exercised = result
         if result.failed:
             raise ScenarioFailed(result)
 
     def _fail_if_mostly_not_exercised(self) -> None:
-        """An item whose cases mostly did not happen around the vehicle under test tested nothing: it fails."""
+        """An item whose cases mostly did not happen around the vehicle under test tested nothing: it
+        fails, reported as a failing case is (the last such case's values, artifacts and replay)."""
         outcomes = self.tally.outcomes
         if mostly_not_exercised(outcomes):
-            pytest.fail(
-                f"scenario {self.scenario.name}: {outcomes[NOT_EXERCISED]} of {with_a_vehicle_under_test(outcomes)} "
-                "cases were not exercised (the scenario did not happen around the vehicle under test, so they "
-                "tested nothing); the last: "
-                f"{self.not_exercised.splitlines()[0] if self.not_exercised else '-'}",
-                pytrace=False,
+            raise ScenarioFailed(
+                self.not_exercised,
+                summary=f"scenario {self.scenario.name}: {outcomes[NOT_EXERCISED]} of "
+                f"{with_a_vehicle_under_test(outcomes)} cases were not exercised (the scenario did not happen "
+                "around the vehicle under test, so they tested nothing); the last:",
             )
 
     def _discard(self, result) -> None:
@@ -428,7 +429,7 @@ class ScenarioItem(pytest.Item):
 
     # ---------------------------------------------------------------- reporting
 
-    def _report_failure(self, runner, result) -> None:
+    def _report_failure(self, runner, result, summary: str = "") -> None:
         from .artifacts.writer import write_artifacts
         from .case import installed_versions
         from .confinement import unique_name
@@ -456,7 +457,8 @@ class ScenarioItem(pytest.Item):
         if result.at_no_values:
             where = "at any values; for example at"
         shard = f", {self.shard}" if self.shard.count > 1 else ""
-        lines = [
+        lines = [summary] if summary else []
+        lines += [
             f"scenario {self.scenario.name}: {result.kind} ({result.outcome}) {where} these values (seed {case.seed}{self._sampled_with()}{shard}, {self.tally.cases} examples run):"
         ]
         if case.values:

@@ -37,6 +37,7 @@ from .outcomes import (
     THE_DUT_FAILED,
     TIMED_OUT,
     TOOL_LIMIT,
+    simulated_outcome,
 )
 from .pipeline import SimulatedInstance, run_instances
 from .planning import HorizonTooShort, LimitsBind, NoPlanError, PlanningTimeout, UnsatisfiableScenario, settings_for
@@ -331,26 +332,18 @@ def _events(result: CaseResult) -> None:
 
 
 def _result(case: Case, outcome: SimulatedInstance) -> CaseResult:
-    accepted = outcome.verdict.accepted
     seconds = {stage: outcome.seconds.get(stage, 0.0) for stage in STAGES}
     report = outcome.dut
-    if report is None:
-        return CaseResult(
-            case,
-            CONFORMANT if accepted else NON_CONFORMANT,
-            outcome,
-            "" if accepted else outcome.verdict.explain(),
-            seconds,
-        )
-    # a vehicle under test drove itself: did it fail (the oracles), else did the scenario happen (the monitor)
-    if report.failed:
-        return CaseResult(case, DUT_FAILED, outcome, f"{report.vehicle}: " + "; ".join(report.failures), seconds)
-    if report.hit_by_others:
-        why = "; ".join(str(c) for c in report.hit_by_others)
-        return CaseResult(case, NOT_EXERCISED, outcome, f"another vehicle ran into {report.vehicle}: {why}", seconds)
-    if not accepted:
-        return CaseResult(case, NOT_EXERCISED, outcome, outcome.verdict.explain(), seconds)
-    return CaseResult(case, PASSED, outcome, "", seconds)
+    word = simulated_outcome(outcome.verdict.accepted, report)
+    if word == DUT_FAILED:
+        why = f"{report.vehicle}: " + "; ".join(report.failures)
+    elif word == NOT_EXERCISED and report.hit_by_others:
+        why = f"another vehicle ran into {report.vehicle}: " + "; ".join(str(c) for c in report.hit_by_others)
+    elif word in (NON_CONFORMANT, NOT_EXERCISED):
+        why = outcome.verdict.explain()
+    else:
+        why = ""
+    return CaseResult(case, word, outcome, why, seconds)
 
 
 def _failure(case: Case, error: Exception, started: float) -> CaseResult:

@@ -1,5 +1,9 @@
 from pathlib import Path
 
+# loaded before any test: pytester drops the modules a test imported when it ends, and numpy's
+# extension modules cannot be loaded twice in one process ("cannot load module more than once per
+# process" in whichever test imported numpy.fft next, on the worker that ran a pytester test first)
+import numpy.fft  # noqa: F401
 import pytest
 
 from pytest_roadlogic.automaton import build_automaton

@@ -7,6 +7,7 @@ import warnings
 from pathlib import Path
 
 from ..monitor import Verdict
+from ..outcomes import DUT_FAILED, FINE, simulated_outcome
 from ..simulation import Simulation
 from ..simulation.geometry import CAR_LENGTH, CAR_WIDTH
 from .files import replaced
@@ -70,11 +71,24 @@ def _top_on_map(top, simulation: Simulation, x_min: float, x_max: float, run_ind
     top.set_ylabel(f"map y [m] ({road.route.name})")
 
 
+def status_line(verdict: Verdict, dut=None) -> str:
+    """How the picture's title states the case's outcome (``outcomes.simulated_outcome``): a failing
+    one in capitals, with the oracle that failed for a vehicle under test."""
+    word = simulated_outcome(verdict.accepted, dut)
+    robustness = f"robustness {verdict.robustness:+.2f}"
+    if word == DUT_FAILED:
+        return f"vehicle under test FAILED: {dut.failures[0]} ({robustness})"
+    if word in FINE:
+        return f"{word} ({robustness})"
+    return f"{word.upper()} ({robustness})"
+
+
 def plot_simulation(
-    simulation: Simulation, verdict: Verdict, path: str | Path, title: str = "", lane_number=None
+    simulation: Simulation, verdict: Verdict, path: str | Path, title: str = "", lane_number=None, dut=None
 ) -> Path:
     """The picture, lanes labelled by ``lane_number(index)`` (the scenario's dialect's numbering;
-    default the standard's, 1 the rightmost)."""
+    default the standard's, 1 the rightmost); its title says the case's outcome, with ``dut`` (the
+    oracles' ``DutReport``) for a vehicle under test."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -122,10 +136,7 @@ def plot_simulation(
     top.legend(loc="lower right", fontsize=8)
     bottom.set_xlabel("time [s]")
     bottom.set_ylabel("x [m]")
-    status = "accepted" if verdict.accepted else "REJECTED"
-    figure.suptitle(
-        f"{title}  {status} (robustness {verdict.robustness:+.2f}); numbered marks: guards met", fontsize=10
-    )
+    figure.suptitle(f"{title}  {status_line(verdict, dut)}; numbered marks: guards met", fontsize=10)
     with warnings.catch_warnings():
         # five_vehicle_minute's 13 guard labels leave tight_layout no room, and matplotlib said so
         # on stderr of every run ("Tight layout not applied"); the figure is drawn as laid out

@@ -104,7 +104,12 @@ def write_artifacts(
             "openscenario": scenario_xosc,  # written by the forked process, waited for below
             "opendrive": road_xodr,
             "plot": plot_simulation(
-                outcome.simulation, outcome.verdict, directory / "trajectories.png", title=name, lane_number=lane_number
+                outcome.simulation,
+                outcome.verdict,
+                directory / "trajectories.png",
+                title=name,
+                lane_number=lane_number,
+                dut=outcome.dut,
             ),
         }
         if animation:

@@ -37,3 +37,21 @@ def test_a_scenario_without_a_verdict_is_drawn_too(outcome, tmp_path):
     path = animate_simulation(outcome.simulation, None, tmp_path / "plain.gif")
     with Image.open(path) as gif:
         assert gif.n_frames > 10 and gif.size[0] == 1000
+
+
+def test_the_plots_title_says_the_cases_outcome_a_vehicle_under_tests_failure_naming_its_oracle():
+    from types import SimpleNamespace
+
+    from pytest_roadlogic.artifacts.plot import status_line
+
+    accepted, rejected = (
+        SimpleNamespace(accepted=True, robustness=0.5),
+        SimpleNamespace(accepted=False, robustness=-0.2),
+    )
+    failed = SimpleNamespace(failed=True, hit_by_others=[], failures=["gap 0.55 m (threshold 2 m) behind wreck"])
+    fine = SimpleNamespace(failed=False, hit_by_others=[], failures=[])
+    assert status_line(accepted) == "conformant (robustness +0.50)"
+    assert status_line(rejected) == "NON-CONFORMANT (robustness -0.20)"
+    assert status_line(accepted, failed).startswith("vehicle under test FAILED: gap 0.55 m"), "not REJECTED"
+    assert status_line(accepted, fine) == "passed (robustness +0.50)"
+    assert status_line(rejected, fine) == "not exercised (robustness -0.20)"

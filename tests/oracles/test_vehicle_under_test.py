@@ -65,7 +65,9 @@ def test_the_reference_vehicle_passes_the_cut_out_and_the_one_that_reacts_late_f
     assert "the vehicle under test failed" in again.stdout.str()
 
 
-def test_an_item_whose_cases_mostly_did_not_happen_fails_saying_it_tested_nothing(pytester):
+def test_an_item_whose_cases_mostly_did_not_happen_fails_saying_it_tested_nothing_with_the_last_cases_artifacts(
+    pytester,
+):
     # open loop (no replanning) the npc cuts in where the plan expected the vehicle under test, not
     # where it is: at these values the cut-in does not happen (tests/simulation/test_reactive.py)
     from tests.simulation.test_reactive import VALUES
@@ -88,6 +90,9 @@ def test_an_item_whose_cases_mostly_did_not_happen_fails_saying_it_tested_nothin
     result.assert_outcomes(failed=1)
     report = result.stdout.str()
     assert "1 of 1 cases were not exercised (the scenario did not happen around the vehicle under test" in report
+    # reported as a failing case is: its values, its artifacts and how to replay it
+    assert "the scenario did not happen (not exercised)" in report and "artifacts:" in report
+    assert "replay: pytest" in report and "roadlogic replay" in report
 
 
 def test_none_scripts_every_vehicle_and_a_vehicle_the_scenario_lacks_is_a_usage_error(pytester):
