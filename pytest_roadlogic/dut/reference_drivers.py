@@ -1,4 +1,4 @@
-"""Reference vehicles under test: adaptive cruise control with lane keeping, and two defective ones.
+"""Reference vehicles under test: adaptive cruise control with lane keeping, and three defective ones.
 
 ``AdaptiveCruiseControl`` is a ``simulation.Driver`` that is given a goal, not a script: it keeps
 the lane it starts in and cruises at its set speed (the speed its plan starts it at, one the
@@ -17,8 +17,9 @@ stops takes. It brakes
 harder than b when it must, down to ``max_braking``. Its waypoints are read for its start lane
 and speed only.
 
-Two defective variants make failures to find: ``LateAcc`` sees the vehicle ahead 1.5 s late,
-``WeakBrakingAcc`` never brakes harder than 3 m/s^2.
+Three defective variants make failures to find: ``LateAcc`` sees the vehicle ahead 1.5 s late,
+``WeakBrakingAcc`` never brakes harder than 3 m/s^2, ``SlowAcquisitionAcc`` sees a vehicle that
+enters its path only 2 s after it did.
 
 Why our own and not a package: CommonRoad's IDM planner does not install beside commonroad-io 2026.1
 (pip cannot resolve it), and the model is ten lines; what a package would add (its own road
@@ -145,3 +146,30 @@ class WeakBrakingAcc(AdaptiveCruiseControl):
     """A defective adaptive cruise control: it never brakes harder than 3 m/s^2."""
 
     max_braking = 3.0
+
+
+class SlowAcquisitionAcc(AdaptiveCruiseControl):
+    """A defective adaptive cruise control: when another vehicle becomes the nearest ahead in its
+    path, it sees that one only 2 s later (a slow target acquisition: blind to a car that has just
+    cut in, or to a stopped one that a car changing lane has just revealed); meanwhile it follows
+    the next one ahead, or none."""
+
+    acquisition_delay = 2.0  # s
+
+    def start(self, vehicle: str, reference: Reference, road: Road, dt: float) -> None:
+        super().start(vehicle, reference, road, dt)
+        self.nearest: str | None = None  # the nearest vehicle ahead in its path, and since when
+        self.since = 0.0
+
+    def plan(self, time: float, state: VehicleState, others: dict[str, Trajectory]) -> Trajectory:
+        ahead = []
+        for name, trajectory in others.items():
+            other = trajectory.state(0)
+            if other.x > state.x and abs(other.y - state.y) < CAR_WIDTH:
+                ahead.append((other.x, name))
+        nearest = min(ahead)[1] if ahead else None
+        if nearest != self.nearest:
+            self.nearest, self.since = nearest, time
+        if nearest is not None and time - self.since < self.acquisition_delay - 1e-9:
+            others = {name: trajectory for name, trajectory in others.items() if name != nearest}
+        return super().plan(time, state, others)

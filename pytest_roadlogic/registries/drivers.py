@@ -18,6 +18,7 @@ BUILT_IN = {
     "acc": "pytest_roadlogic.dut.reference_drivers:AdaptiveCruiseControl",
     "late-acc": "pytest_roadlogic.dut.reference_drivers:LateAcc",
     "weak-braking-acc": "pytest_roadlogic.dut.reference_drivers:WeakBrakingAcc",
+    "slow-acquisition-acc": "pytest_roadlogic.dut.reference_drivers:SlowAcquisitionAcc",
 }
 
 

@@ -14,7 +14,7 @@ import pytest
 
 from pytest_roadlogic.dimensions import CAR_LENGTH, CAR_WIDTH
 from pytest_roadlogic.dut import AUTO, NONE, NoSuchVehicle, UnderTest
-from pytest_roadlogic.dut.reference_drivers import AdaptiveCruiseControl, LateAcc, WeakBrakingAcc
+from pytest_roadlogic.dut.reference_drivers import AdaptiveCruiseControl, LateAcc, SlowAcquisitionAcc, WeakBrakingAcc
 from pytest_roadlogic.oracles import Thresholds, judge
 from pytest_roadlogic.simulation.driver import Trajectory, VehicleState
 from pytest_roadlogic.simulation.trace import Incident, Trace
@@ -203,3 +203,32 @@ def test_closing_in_nearer_in_time_than_the_headway_threshold_fails_and_a_car_dr
         {"dut": {"x": [25.0 * k * DT for k in range(n)], "speed": [25.0] * n}, "lead": {"x": lead, "speed": [26.0] * n}}
     )
     assert judge(away, "dut", Thresholds.given(time_headway=0.5)).measured["time_headway"].value == math.inf
+
+
+def revealed(driver, speed=25.0, reveal_at=3.0, seconds=12.0):
+    """The driver 30 m behind a lead at its own speed that changes lane at ``reveal_at`` s, 40 m
+    before a stopped car (70 m ahead of the driver then); returns the least gap to the stopped car."""
+    from pytest_roadlogic.roads.road import Road
+    from pytest_roadlogic.simulation.reference import Reference, Waypoint
+
+    road = Road(3)
+    driver.start("dut", Reference("dut", 0.0, 0.0, [Waypoint(0.0, 0.0, 1, speed)], road), road, DT)
+    me = VehicleState(0.0, road.center_y(1), 0.0, speed, 0.0)
+    wreck_at = 30.0 + speed * reveal_at + 40.0
+    least = math.inf
+    for k in range(int(seconds / DT)):
+        t = k * DT
+        lead = VehicleState(30.0 + speed * t, road.center_y(1 if t < reveal_at else 0), 0.0, speed, 0.0)
+        wreck = VehicleState(wreck_at, road.center_y(1), 0.0, 0.0, 0.0)
+        others = {
+            name: Trajectory(*(np.array([v]) for v in (s.x, s.y, s.heading, s.speed, s.acceleration)))
+            for name, s in (("lead", lead), ("wreck", wreck))
+        }
+        me = driver.plan(t, me, others).state(1)
+        least = min(least, wreck_at - me.x - CAR_LENGTH)
+    return least
+
+
+def test_a_driver_slow_to_acquire_a_new_target_comes_closer_to_a_revealed_stopped_car_than_the_gap_oracle_allows():
+    assert revealed(AdaptiveCruiseControl()) >= 2.0, "the reference stops 2 m or more behind it"
+    assert revealed(SlowAcquisitionAcc()) < 2.0, "2 s blind to the revealed car: it stops too close, or not at all"
