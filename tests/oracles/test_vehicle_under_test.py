@@ -11,6 +11,7 @@ import pytest
 from pytest_roadlogic.case import Case, CaseFileError
 from pytest_roadlogic.oracles import ORACLES
 from pytest_roadlogic.outcomes import DUT_FAILED, NOT_EXERCISED, PASSED, mostly_not_exercised
+from pytest_roadlogic.registries.drivers import BUILT_IN
 from pytest_roadlogic.settings import RunSettings
 from tests.conftest import ROOT
 
@@ -213,7 +214,5 @@ def test_a_reference_driver_plugs_in_from_an_installed_package_through_its_entry
     assert "Traceback" not in broken.stderr.str() + broken.stdout.str()
 
     unknown = pytester.runpytest_subprocess(*ONE, "--roadlogic-dut-driver", "reckless")
-    assert (
-        "'reckless' is not a reference driver of the vehicle under test; give acc or late-acc or weak-braking-acc or cautious or broken"
-        in unknown.stderr.str()
-    )
+    names = " or ".join([*BUILT_IN, "cautious", "broken"])
+    assert f"'reckless' is not a reference driver of the vehicle under test; give {names}" in unknown.stderr.str()
