@@ -275,9 +275,11 @@ def speed_band_text(band: tuple[float, float]) -> str:
 
 
 def threshold_option(oracle) -> Option:
-    """The option that sets ``oracle``'s threshold (an ``registries.oracles.Oracle``)."""
+    """The option that sets ``oracle``'s threshold (an ``registries.oracles.Oracle``). A case file
+    without it was written before the oracle existed: it replays with the oracle off (None), so that
+    its verdict is the one it was written with."""
     parse = positive(f"a {oracle.quantity}", f"{oracle.default:g}")
-    return Option(oracle.option, oracle.setting, parse, oracle.default, oracle.help, kind=float)
+    return Option(oracle.option, oracle.setting, parse, oracle.default, oracle.help, kind=float, before=None)
 
 
 OPTIONS = (

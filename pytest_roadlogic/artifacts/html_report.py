@@ -50,7 +50,7 @@ def _oracle_table(verdict: Path | None) -> str:
     rows = [
         (oracle.title, values.get(oracle.value_key), oracle.unit, values["thresholds"].get(oracle.key))
         for oracle in ORACLES
-        if oracle.key in values["thresholds"]  # a verdict written before the oracle existed has none
+        if values["thresholds"].get(oracle.key) is not None  # off, or a verdict written before the oracle existed
     ]
     cells = "".join(
         f"<tr><td>{name}</td><td>{'none ahead' if value is None else f'{value:g} {unit}'}</td><td>{threshold:g} {unit}</td></tr>"

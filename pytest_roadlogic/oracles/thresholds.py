@@ -15,10 +15,10 @@ def _defaults() -> dict[str, float]:
 @dataclass(frozen=True)
 class Thresholds:
     """Each oracle's threshold by its name (``registries.oracles.ORACLES``; its default where none
-    is given), and how long after a vehicle enters the path of the one under test its gap to it
-    is judged from."""
+    is given, None: the oracle is off), and how long after a vehicle enters the path of the one
+    under test its gap to it is judged from."""
 
-    limits: Mapping[str, float] = field(default_factory=_defaults)
+    limits: Mapping[str, float | None] = field(default_factory=_defaults)
     # s: a car that cuts in close is the scenario's doing, what the vehicle under test does next its own
     reaction_time: float = 1.0
 
@@ -35,9 +35,9 @@ class Thresholds:
         """The thresholds a run's ``settings`` (``RunSettings``) set, each oracle's by its option."""
         return cls({oracle.name: getattr(settings, oracle.setting) for oracle in ORACLES})
 
-    def __getitem__(self, oracle: str) -> float:
+    def __getitem__(self, oracle: str) -> float | None:
         return self.limits.get(oracle, ORACLES_BY_NAME[oracle].default)
 
-    def by_key(self) -> dict[str, float]:
+    def by_key(self) -> dict[str, float | None]:
         """Each threshold under its oracle's key (``Oracle.key``), for verdict.json."""
         return {oracle.key: self[oracle.name] for oracle in ORACLES}

@@ -232,3 +232,25 @@ def revealed(driver, speed=25.0, reveal_at=3.0, seconds=12.0):
 def test_a_driver_slow_to_acquire_a_new_target_comes_closer_to_a_revealed_stopped_car_than_the_gap_oracle_allows():
     assert revealed(AdaptiveCruiseControl()) >= 2.0, "the reference stops 2 m or more behind it"
     assert revealed(SlowAcquisitionAcc()) < 2.0, "2 s blind to the revealed car: it stops too close, or not at all"
+
+
+def test_a_case_file_written_before_an_oracle_existed_replays_with_that_oracle_off(tmp_path):
+    import json
+
+    from pytest_roadlogic.case import Case
+
+    (tmp_path / "case.json").write_text(
+        json.dumps({"path": "a.osc", "scenario": "s", "dut": "auto", "min_ttc": 1.5, "min_gap": 2.0, "max_decel": 8.0})
+    )
+    settings = Case.load(tmp_path / "case.json").settings
+    assert settings.min_headway is None and settings.min_gap == 2.0
+    n = 40
+    close = trace_of(
+        {
+            "dut": {"x": [25.0 * k * DT for k in range(n)], "speed": [25.0] * n},
+            "lead": {"x": [25.0 * k * DT + CAR_LENGTH + 8.0 - 0.5 * k * DT for k in range(n)], "speed": [24.5] * n},
+        }
+    )
+    assert judge(close, "dut", Thresholds.given(time_headway=0.5)).failed, "closing in within 0.32 s"
+    off = judge(close, "dut", Thresholds.of(settings))
+    assert not off.failed and off.values()["thresholds"]["min_time_headway"] is None
