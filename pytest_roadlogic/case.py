@@ -111,14 +111,7 @@ class Case:
     def to_json(self) -> str:
         """The case file: its identity, and each run setting a case records (``Option.in_case``)
         under its key, as a number or as the text its option reads back."""
-        data = {
-            "path": self.path,
-            "scenario": self.scenario,
-            "values": self.values,
-            "instance": self.instance,
-            "drivers": self.drivers,
-            "versions": self.versions,
-        }
+        data = {name: getattr(self, name) for name in IDENTITY}
         for option in CASE_OPTIONS:
             value = getattr(self.settings, option.field)
             data[option.key] = value if value is None or option.kind is not str else option.text(value)
@@ -134,7 +127,7 @@ class Case:
     def load(cls, path: str | Path) -> Case:
         try:
             data = json.loads(read_bounded(path, MAX_CASE_BYTES).decode("utf-8"))
-            known = {"path", "scenario", "values", "instance", "drivers", "versions"} | {o.key for o in CASE_OPTIONS}
+            known = set(IDENTITY) | {o.key for o in CASE_OPTIONS}
             if not isinstance(data, dict) or not {"path", "scenario"} <= set(data) or set(data) - known:
                 raise TypeError(f"expected the keys {', '.join(sorted(known))}")
             identity = _check_kinds(data)

@@ -21,6 +21,7 @@ Each oracle's measure (``registries.oracles.Oracle.measure``) reads one ``Seen``
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
@@ -92,26 +93,26 @@ def least_gap(seen: Seen) -> Closest:
 
 def least_time_to_collision(seen: Seen) -> Closest:
     """The smallest time to collision of the vehicle under test with a vehicle ahead in its path."""
-    f = seen.trace.actors[seen.vehicle]
-    ttcs = {}
-    for other, gap in seen.gaps.items():
-        closing = f["speed"] - seen.trace.actors[other]["speed"]
-        with np.errstate(divide="ignore", invalid="ignore"):
-            ttcs[other] = np.where((closing > 1e-6) & np.isfinite(gap), gap / closing, np.inf)
-    return _least(seen.trace, ttcs)
+    return _least(seen.trace, _while_closing_in(seen, lambda closing, speed: closing))
 
 
 def least_time_headway(seen: Seen) -> Closest:
     """The smallest time headway of the vehicle under test while it closes in on a vehicle ahead
     in its path: how near in time it drove up to one (a car that cut in close and draws away
     leaves it a short headway that is the scenario's doing, not its own)."""
-    f = seen.trace.actors[seen.vehicle]
-    headways = {}
+    return _least(seen.trace, _while_closing_in(seen, lambda closing, speed: speed))
+
+
+def _while_closing_in(seen: Seen, per: Callable[[np.ndarray, np.ndarray], np.ndarray]) -> dict[str, np.ndarray]:
+    """Per vehicle ahead: the gap to it over ``per(closing speed, own speed)`` where the vehicle
+    under test closes in on it, inf elsewhere."""
+    speed = seen.trace.actors[seen.vehicle]["speed"]
+    ratios = {}
     for other, gap in seen.gaps.items():
-        closing = f["speed"] - seen.trace.actors[other]["speed"]
+        closing = speed - seen.trace.actors[other]["speed"]
         with np.errstate(divide="ignore", invalid="ignore"):
-            headways[other] = np.where((closing > 1e-6) & np.isfinite(gap), gap / f["speed"], np.inf)
-    return _least(seen.trace, headways)
+            ratios[other] = np.where((closing > 1e-6) & np.isfinite(gap), gap / per(closing, speed), np.inf)
+    return ratios
 
 
 def greatest_deceleration(seen: Seen) -> Closest:

@@ -60,7 +60,7 @@ class DutReport:
             found.append(f"left the road at t={self.off_road:.1f} s")
         for oracle in ORACLES:
             closest, threshold = self.value(oracle), self.thresholds[oracle.name]
-            if threshold is not None and oracle.fails(closest.value, threshold):
+            if oracle.fails(closest.value, threshold):
                 found.append(
                     oracle.failure.format(
                         value=closest.value, threshold=threshold, other=closest.other, time=closest.time
@@ -82,15 +82,7 @@ class DutReport:
         (negative once one fails; -1 for a collision it caused or leaving the road)."""
         if any(c.caused for c in self.collisions) or self.off_road is not None:
             return -1.0
-        judged = [(oracle, self.thresholds[oracle.name]) for oracle in ORACLES]
-        return min(
-            (
-                oracle.margin(self.value(oracle).value, threshold)
-                for oracle, threshold in judged
-                if threshold is not None
-            ),
-            default=1.0,
-        )
+        return min(oracle.margin(self.value(oracle).value, self.thresholds[oracle.name]) for oracle in ORACLES)
 
     def values(self) -> dict[str, object]:
         """Every value measured, for JUnit properties and case files (inf as None), each oracle's

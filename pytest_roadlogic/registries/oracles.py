@@ -52,13 +52,16 @@ class Oracle:
         """Its value where it never applied (no vehicle ahead in the path, no braking): never failing."""
         return float("inf") if self.bound == LOWER else 0.0
 
-    def fails(self, value: float, threshold: float) -> bool:
+    def fails(self, value: float, threshold: float | None) -> bool:
+        """Whether ``value`` is past ``threshold`` (None: the oracle is off, and nothing fails it)."""
+        if threshold is None:
+            return False
         return value < threshold if self.bound == LOWER else value > threshold
 
-    def margin(self, value: float, threshold: float) -> float:
+    def margin(self, value: float, threshold: float | None) -> float:
         """How far ``value`` is from failing, as a fraction of ``threshold``: negative once it fails,
-        at most 1 (a value that never applied is as far as can be)."""
-        if value == self.never or threshold <= 0:
+        at most 1 (a value that never applied, or an oracle that is off, is as far as can be)."""
+        if threshold is None or value == self.never or threshold <= 0:
             return 1.0
         distance = value - threshold if self.bound == LOWER else threshold - value
         return min(1.0, distance / threshold)
