@@ -19,6 +19,7 @@ from typing import Any
 from .registries.drivers import BUILT_IN as BUILT_IN_DRIVERS
 from .registries.drivers import DEFAULT as DEFAULT_DUT_DRIVER
 from .registries.drivers import driver_names
+from .registries.entry_points import registered_names
 from .registries.oracles import ORACLES
 
 REFINED, BASE = "refined", "base"
@@ -167,10 +168,7 @@ def one_of(choices: tuple[str, ...], what: str) -> Callable[[str], str]:
 def encoding_names() -> tuple[str, ...]:
     """Every planner encoding's name: the built-in ones, then those packages register (names
     only: nothing is imported)."""
-    from importlib import metadata
-
-    registered = [point.name for point in metadata.entry_points(group=ENCODING_ENTRY_POINTS)]
-    return (*ENCODINGS, *(name for name in registered if name not in ENCODINGS))
+    return registered_names(ENCODINGS, ENCODING_ENTRY_POINTS)
 
 
 def encoding(text: str) -> str:

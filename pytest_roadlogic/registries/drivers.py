@@ -11,6 +11,8 @@ from __future__ import annotations
 
 from importlib import import_module, metadata
 
+from .entry_points import registered_names
+
 ENTRY_POINT_GROUP = "pytest_roadlogic.drivers"
 DEFAULT = "acc"
 # the built-in ones, as "module:class" in this package, loaded when a run builds one
@@ -29,8 +31,7 @@ class UnknownDriver(ValueError):
 
 def driver_names() -> tuple[str, ...]:
     """Every reference driver's name: the built-in ones, then those packages register."""
-    registered = [point.name for point in metadata.entry_points(group=ENTRY_POINT_GROUP)]
-    return (*BUILT_IN, *(name for name in registered if name not in BUILT_IN))
+    return registered_names(BUILT_IN, ENTRY_POINT_GROUP)
 
 
 def reference_driver(name: str = DEFAULT):

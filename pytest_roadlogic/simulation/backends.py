@@ -11,6 +11,8 @@ from __future__ import annotations
 from importlib import metadata
 from typing import TYPE_CHECKING
 
+from ..registries.entry_points import registered_names
+
 if TYPE_CHECKING:
     from .interface import Simulator
 
@@ -39,8 +41,7 @@ BUILT_IN = {"frenetix": _frenetix, "kinematic": _kinematic}
 
 def available() -> list[str]:
     """Every backend name: the built-in ones, then the registered ones."""
-    registered = [point.name for point in metadata.entry_points(group=ENTRY_POINT_GROUP)]
-    return [*BUILT_IN, *(name for name in registered if name not in BUILT_IN)]
+    return list(registered_names(BUILT_IN, ENTRY_POINT_GROUP))
 
 
 def simulator(name: str = DEFAULT) -> Simulator:
