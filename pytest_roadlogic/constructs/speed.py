@@ -140,9 +140,17 @@ class ChangeSpeed(Action):
             raise error_at(use.location, "change_speed() needs a target speed, e.g. change_speed(target: 20mps)")
         low, high = widened(*use.range("target", SPEED, "a speed such as 20mps"), SPEED_TOLERANCE)
         phase.add(end=Bound(Term(SPEED_Q, use.actor), max(0.0, low), high, use.location))
+        if low <= 0:
+            # a car braking to a standstill stands there: it makes no progress to require, and its
+            # speed at the end (and an asked rate) say what it does
+            phase.drives = False
         if use.argument("rate_peak") is not None:
             _, peak = use.range("rate_peak", ACCELERATION, "an acceleration such as 3mpss")
-            phase.rates.append(MeanAcceleration(use.actor, -peak, peak, source=use.argument("rate_peak").location))
+            phase.rates.append(
+                MeanAcceleration(
+                    use.actor, -peak, peak, source=use.argument("rate_peak").location, standstill=SPEED_TOLERANCE
+                )
+            )
 
 
 class AssignSpeed(Action):
@@ -196,7 +204,7 @@ class Acceleration(Modifier):
             *use.range("acceleration", ACCELERATION, "an acceleration such as -3mpsps or [-6..-3]mpsps"),
             ACCELERATION_TOLERANCE,
         )
-        phase.rates.append(MeanAcceleration(use.actor, low, high, source=use.location))
+        phase.rates.append(MeanAcceleration(use.actor, low, high, source=use.location, standstill=SPEED_TOLERANCE))
 
 
 CONSTRUCTS = (Speed(), KeepSpeedModifier(), KeepSpeedAction(), ChangeSpeed(), AssignSpeed(), Acceleration())

@@ -78,6 +78,11 @@ class PhaseBound:
         """The bounded value of a phase of ``seconds`` whose column reads ``start`` and ``end``."""
         raise NotImplementedError
 
+    def span(self, series, begun: int, end: int) -> int:
+        """The sample up to which the bound reads the phase that runs from sample ``begun`` to
+        ``end`` of the actor's column ``series``: its end, unless the bound says otherwise."""
+        return end
+
     def margin(self, start: float, end: float, seconds: float) -> float:
         """How far inside the range the value lies (in its unit, negative outside)."""
         value = self.value(start, end, seconds)
@@ -96,14 +101,17 @@ class PhaseBound:
 
 @dataclass(frozen=True)
 class MeanAcceleration(PhaseBound):
-    """``acceleration(a)`` on a phase: the actor's speed changes by ``a`` times the phase's length,
-    (v(end) - v(start)) / duration in low..high (m/s^2).
+    """``acceleration(a)`` on a phase (the standard's ``at: all``): the actor accelerates at a rate
+    in low..high (m/s^2) while it moves in the phase. A car braking to a standstill inside the
+    phase meets a braking bound by standing still after (it cannot brake further).
 
-    Why the mean and not every instant (the standard's ``at: all``): a real vehicle ramps its
-    acceleration up and down (jerk), so an instantaneous bound fails at every phase's first and
-    last instants in a simulation; the mean is what a braking or speeding-up phase is asked for,
-    and it is linear in the speeds at the phase's two ends for a known length (the planner writes
-    one row per length)."""
+    The planner holds the bound on every step of the phase. The monitor judges the mean, (v(end)
+    - v(start)) / duration, from the phase's start to its end or to the first sample at which the
+    actor stands still (its speed at most ``standstill``, m/s), whichever comes first: a real
+    car's brakes ramp up within a few tenths of a second, so a bound on every instant would fail
+    at each phase's first one."""
+
+    standstill: float = 0.0
 
     column: ClassVar[str] = "speed"
     construct: ClassVar[str] = "the acceleration modifier"
@@ -113,6 +121,15 @@ class MeanAcceleration(PhaseBound):
 
     def value(self, start: float, end: float, seconds: float) -> float:
         return (end - start) / seconds
+
+    def span(self, series, begun: int, end: int) -> int:
+        """The phase's end, or the first sample at which an actor moving at its start stands still."""
+        if series[begun] <= self.standstill:
+            return end
+        for k in range(begun + 1, end):
+            if series[k] <= self.standstill:
+                return k
+        return end
 
 
 @dataclass(frozen=True)

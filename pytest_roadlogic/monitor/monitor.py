@@ -469,7 +469,8 @@ def _advance(
             if seconds <= 0:
                 return None
             series = columns[rate.column][rate.actor]
-            rate_margin = rate.margin(series[begun], series[k], seconds)
+            read = rate.span(series, begun, k)
+            rate_margin = rate.margin(series[begun], series[read], times[read] - times[begun])
             margin = min(margin, rate_margin)
             if rate_margin < 0 and (missed is None or rate_margin < missed[0]):
                 missed = (rate_margin, (rate, begun))
@@ -480,8 +481,9 @@ def _rate_miss(automaton: SymbolicAutomaton, found: tuple, columns, times) -> Gu
     """A bound over a phase's two ends (a mean acceleration, a distance travelled) that no run
     met, where it came closest (all else met up to there)."""
     margin, k, location, (rate, begun) = found
-    seconds = times[k] - times[begun]
     series = columns[rate.column][rate.actor]
+    k = rate.span(series, begun, k)
+    seconds = times[k] - times[begun]
     name = "v" if rate.column == "speed" else rate.column
     return GuardMiss(
         source=automaton.location(location).name,

@@ -27,6 +27,10 @@ LANE_CHANGE_DURATION = 3.0  # s; fits between two lane changes (3 planning steps
 # s simulated after the plan's last step: the scenario's last phase may end then if its duration
 # allows, and a car braking to a stop settles a little after its plan does (docs/decisions.md)
 TAIL = 4.0
+# m/s^2: a change of the planned acceleration from one step to the next larger than any plan's
+# gentle jerk allows (the continuous encoding's 2 m/s^3 over its 1 s step): the step of a vehicle
+# the scenario asks to brake or speed up briskly, which the driver acts on at that instant
+ONSET = 3.0
 
 
 @dataclass(frozen=True)
@@ -84,6 +88,17 @@ class Reference:
         self.runup_distance = speed * self.runup - speed**2 / (2 * rate) if self.runup > 0 else 0.0
         self.start_position = self._pos[0] - self.runup_distance
         self.start_speed = 0.0 if self.runup > 0 else float(speed)
+        # the waypoint times at which the planned acceleration steps by more than ONSET: a driver
+        # acts on such a change when it comes, not before (a smooth tracker that looks ahead brakes
+        # early, and a phase asking the speed it held ends before its time)
+        steps = np.diff(self._vel) / np.maximum(np.diff(self._times), 1e-9)
+        jumps = np.abs(np.diff(np.concatenate([[0.0], steps])))
+        self.onsets = self._times[:-1][jumps > ONSET]
+
+    def next_onset(self, time: float) -> float:
+        """The first onset after ``time`` (s), or infinity."""
+        later = self.onsets[self.onsets > time + 1e-9]
+        return float(later[0]) if len(later) else np.inf
 
     @property
     def end_time(self) -> float:

@@ -1,7 +1,8 @@
-"""The acceleration modifier: a phase's mean acceleration, (v(end) - v(start)) / its length, lies in
-the range. The checker reads it, the automaton hangs it on the phase's timing, the planner keeps it
-(one linear row per length the phase may have) and the monitor measures it between the two
-samples at which its run starts and ends the phase."""
+"""The acceleration modifier: the actor accelerates at a rate in the range while it moves in the
+phase (a car braking to a standstill stands after). The checker reads it, the automaton hangs it on
+the phase's timing, the planner keeps it on every step of the phase (stepping into it at once: the
+vehicle's own dynamics), the monitor measures the mean, (v(end) - v(start)) / its length, from the
+phase's start to its end or to a standstill, and the simulation brakes as the plan asks."""
 
 from pathlib import Path
 
@@ -40,9 +41,9 @@ def test_a_plan_keeps_each_phases_mean_acceleration_in_range(automaton, seed):
     check_continuous_plan(plan, automaton)  # check_run measures every phase's mean acceleration
 
 
-def speed_trace(automaton, profile: list[tuple[float, float]], dt: float = 0.1) -> Trace:
-    """car1 driving the piecewise-linear speed ``profile`` ((time, speed) corners) in the lane its plan starts in."""
-    lane = ContinuousPlanner(automaton, ContinuousSettings(), 1).first().states["car1"][0].lane
+def speed_trace(automaton, profile: list[tuple[float, float]], dt: float = 0.1, actor: str = "car1") -> Trace:
+    """``actor`` driving the piecewise-linear speed ``profile`` ((time, speed) corners) in the lane its plan starts in."""
+    lane = ContinuousPlanner(automaton, ContinuousSettings(), 1).first().states[actor][0].lane
     times = np.arange(0, profile[-1][0] + dt / 2, dt)
     speed = np.interp(times, *zip(*profile))
     x = np.concatenate([[0.0], np.cumsum((speed[1:] + speed[:-1]) / 2 * dt)])
@@ -55,7 +56,7 @@ def speed_trace(automaton, profile: list[tuple[float, float]], dt: float = 0.1) 
         "acceleration": np.gradient(speed, dt),
         "lane": np.full(n, lane),
     }
-    return Trace(times, {"car1": columns})
+    return Trace(times, {actor: columns})
 
 
 def test_a_brake_at_minus_4_25_mpsps_is_accepted(automaton):
@@ -73,6 +74,63 @@ def test_a_brake_too_gentle_is_rejected_and_the_report_names_the_mean_accelerati
     assert verdict.miss.values["mean a(car1)"] == pytest.approx(-2.83, abs=0.01)
     assert verdict.miss.robustness == pytest.approx(-0.17, abs=0.01)
     assert "50_acceleration.osc:13:" in str(verdict.miss.locations[0])
+
+
+HARD_STOP = """import osc.standard
+scenario s:
+    lead: car
+    do serial:
+        cruise: lead.drive(duration: 3s) with:
+            lane(1)
+            speed(100kph)
+        stop: lead.change_speed(target: 0kph, duration: 6s) with:
+            acceleration([-8mpsps..-6mpsps])
+"""
+
+
+@pytest.fixture(scope="module")
+def hard_stop():
+    checked = check_text(HARD_STOP, "hard_stop.osc")
+    checked.raise_for_errors()
+    return build_automaton(checked.scenarios[0])
+
+
+def test_a_car_asked_to_brake_hard_to_a_stop_steps_into_the_braking_and_stands_when_it_has_stopped(hard_stop):
+    plan = ContinuousPlanner(hard_stop, ContinuousSettings(), 1).first()
+    check_continuous_plan(plan, hard_stop)  # every step of the stop brakes within -8..-6, or stands
+    speeds = [s.speed for s in plan.states["lead"]]
+    stop_begins = next(step for step, transition in plan.transitions if transition == 1)
+    first = speeds[stop_begins + 1] - speeds[stop_begins]
+    assert -8 <= first <= -6, f"the first step of the stop brakes at {first:.2f} m/s^2, not at once"
+    assert speeds[-1] == pytest.approx(0.0, abs=1e-6)  # stopped within the 6 s phase, standing after
+
+
+def test_a_brake_to_a_standstill_is_judged_up_to_the_standstill(hard_stop):
+    # 27.8 m/s to 0 in 4 s (-6.9 m/s^2), then 2 s standing: the phase's own mean would be -4.6
+    trace = speed_trace(hard_stop, [(0, 27.78), (3, 27.78), (7, 0.0), (11, 0.0)], actor="lead")
+    assert monitor(hard_stop, trace).accepted
+    # at -4.6 m/s^2 to the same standstill the braking itself is too gentle
+    gentle = speed_trace(hard_stop, [(0, 27.78), (3, 27.78), (9, 0.0), (11, 0.0)], actor="lead")
+    verdict = monitor(hard_stop, gentle)
+    assert not verdict.accepted and verdict.miss.values["mean a(lead)"] == pytest.approx(-4.6, abs=0.1)
+
+
+def test_a_simulated_car_brakes_as_its_plan_asks_at_the_instant_it_asks(hard_stop):
+    """The frenetix driver of a car whose plan steps into hard braking: no braking before the
+    step, 6 m/s^2 within half a second after it, never beyond the asked 8 m/s^2 by 1 m/s^2."""
+    from pytest_roadlogic.simulation import simulate
+
+    plan = ContinuousPlanner(hard_stop, ContinuousSettings(), 1).first()
+    trace = simulate(plan).trace
+    times = trace.times
+    acceleration = trace.actors["lead"]["acceleration"]
+    onset = next(step for step, transition in plan.transitions if transition == 1) * plan.dt
+    before = acceleration[times < onset - 0.05]
+    assert before.min() > -1.5, f"brakes at {before.min():.1f} m/s^2 before the stop begins"
+    within = acceleration[(times >= onset) & (times <= onset + 0.5)]
+    assert within.min() <= -6.0, f"reaches only {within.min():.1f} m/s^2 half a second into the stop"
+    assert acceleration.min() >= -9.0, f"brakes at {acceleration.min():.1f} m/s^2, beyond the asked 8 by more than 1"
+    assert monitor(hard_stop, trace).accepted
 
 
 def scenario(modifier: str) -> str:

@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pytest
 
-from pytest_roadlogic.logic.automaton import Travelled
+from pytest_roadlogic.logic.automaton import MeanAcceleration, Travelled
 from pytest_roadlogic.planning import GridPlanner, GridSettings
 
 SETTINGS = GridSettings()
@@ -71,10 +71,19 @@ def check_run(plan, automaton):
             assert timing.admits((step - begun) * plan.dt), f"{timing} broken at step {step}"
             for rate in timing.rates:
                 start, end = plan.at(rate.actor, begun), plan.at(rate.actor, step)
+                if isinstance(rate, MeanAcceleration):  # every step's, but a standstill's
+                    for k in range(begun + 1, step + 1):
+                        before, after = plan.at(rate.actor, k - 1), plan.at(rate.actor, k)
+                        value = (after.speed - before.speed) / plan.dt
+                        stands = after.speed <= 1e-6 and value <= 0
+                        assert value >= rate.low - 1e-6 and (value <= rate.high + 1e-6 or stands), (
+                            f"{rate} broken: {value:.2f} at step {k}"
+                        )
+                    continue
                 if isinstance(rate, Travelled):  # metres covered in the phase
                     value = end.position - start.position
-                else:  # the mean acceleration over the phase
-                    value = (end.speed - start.speed) / ((step - begun) * plan.dt)
+                else:  # the speed gained over the phase
+                    value = end.speed - start.speed
                 assert rate.low - 1e-6 <= value <= rate.high + 1e-6, (
                     f"{rate} broken: {value:.2f} from step {begun} to {step}"
                 )

@@ -70,6 +70,9 @@ class FrenetixDriver(DriverBase):
     longitudinal_clearance, lateral_clearance = 0.5, 0.2
     derivative_step = 0.05  # s, of the reference's numerical derivatives
     stop_deceleration: float | None = 3.0  # m/s^2 of the stopping sample
+    # m/s^2 a vehicle braking as its scenario asks (its plan has brisk onsets) brakes at most,
+    # where a trajectory that does not exists: a car's hard braking, the planner's limit and a half
+    hardest_braking = 8.5
     # a trajectory's acceleration as the change of its speed, not frenetix's cartesian ``a``, which
     # is not the derivative of the speeds beside it: the next replanning starts from the chosen
     # trajectory's next state, and with too little acceleration the car lags every change of speed
@@ -115,12 +118,15 @@ class FrenetixDriver(DriverBase):
         self.reference = reference
         self._committed = None
 
-    def _driven_on(self, state: VehicleState, others: dict[str, Trajectory]) -> Trajectory | None:
+    def _driven_on(self, time: float, state: VehicleState, others: dict[str, Trajectory]) -> Trajectory | None:
         """The chosen trajectory one step on, when it is still to be followed: chosen less than a
-        replanning period ago, long enough, ``state`` where it led, and clear of the others."""
+        replanning period ago, long enough, ``state`` where it led, clear of the others, and no
+        brisk change of speed due within the step."""
         committed = self._committed
         if committed is None or self._age + 1 >= self.replan_steps or len(committed.x) < self.guarded_steps + 2:
             return None
+        if self.reference.next_onset(time) <= time + self.dt + 1e-9:
+            return None  # a brisk change of speed is due: act on it at its instant
         expected = committed.state(1)
         if abs(expected.x - state.x) > 1e-9 or abs(expected.y - state.y) > 1e-9:
             return None
@@ -141,7 +147,7 @@ class FrenetixDriver(DriverBase):
         import frenetix
         import frenetix.trajectory_functions as tf
 
-        onward = self._driven_on(state, others)
+        onward = self._driven_on(time, state, others)
         if onward is not None:
             return onward
         self._committed = None
@@ -179,8 +185,13 @@ class FrenetixDriver(DriverBase):
         if not candidates:
             self.fallbacks += 1
             return Trajectory.standing(state, 2)
-        # the reference over the tracked window, evaluated once for all candidates
-        times = time + np.arange(1, self.tracked_steps) * self.dt
+        # the reference over the tracked window, evaluated once for all candidates; up to a brisk
+        # change of speed still to come only, so that the car does not act on it before its time
+        tracked = self.tracked_steps
+        onset = self.reference.next_onset(time)
+        if onset < time + tracked * self.dt:
+            tracked = max(2, int((onset - time) / self.dt + 1e-9) + 1)
+        times = time + np.arange(1, tracked) * self.dt
         target = (
             self.reference.s(times) - self.s_origin - WHEELBASE / 2,
             self.reference.d(times) - self.d_origin,
@@ -191,6 +202,8 @@ class FrenetixDriver(DriverBase):
             candidates,
             (self.position_weight, self.lateral_weight, self.speed_weight),
             self.road.route is not None,
+            self.hardest_braking * self.dt if len(self.reference.onsets) else None,
+            self.guarded_steps,
         ) + np.array([c.cost for c in candidates])
         ranked = [candidates[i] for i in np.argsort(costs, kind="stable")[:40]]
         road_now = self._road_violation(Trajectory.standing(state))
@@ -220,15 +233,24 @@ class FrenetixDriver(DriverBase):
         d_refs = around[:, 1]
         d_rates = (around[:, 2] - around[:, 0]) / (2 * h)
         d_curves = (around[:, 2] - 2 * around[:, 1] + around[:, 0]) / h**2
+        # a vehicle whose plan changes its acceleration briskly also ends trajectories at the
+        # reference's acceleration: one ending at rest (a = 0) cannot brake at 7 m/s^2 in half a
+        # second without overshooting it
+        if len(self.reference.onsets):
+            a_refs = (self.reference.v(ends + h) - self.reference.v(ends - h)) / (2 * h)
+        else:
+            a_refs = np.zeros_like(ends)
         rows = []
-        for duration, v_ref, d_ref, d_rate, d_curve in zip(
-            self.durations, v_refs.tolist(), d_refs.tolist(), d_rates.tolist(), d_curves.tolist()
+        for duration, v_ref, a_ref, d_ref, d_rate, d_curve in zip(
+            self.durations, v_refs.tolist(), a_refs.tolist(), d_refs.tolist(), d_rates.tolist(), d_curves.tolist()
         ):
             ends_v = {max(0.0, v_ref + o) for o in self.speed_offsets} | {max(0.0, state.speed - 3.0 * duration)}
+            end_accelerations = (0.0, a_ref) if abs(a_ref) > 1e-6 and v_ref > 0 else (0.0,)
             for v_end in sorted(ends_v):
-                rows.append([0.0, duration, *lon, v_end, 0.0, *lat, d_ref, d_rate, d_curve])
-                if d_now != d_ref:
-                    rows.append([0.0, duration, *lon, v_end, 0.0, *lat, d_now, 0.0, 0.0])
+                for a_end in end_accelerations:
+                    rows.append([0.0, duration, *lon, v_end, a_end, *lat, d_ref, d_rate, d_curve])
+                    if d_now != d_ref:
+                        rows.append([0.0, duration, *lon, v_end, a_end, *lat, d_now, 0.0, 0.0])
         if self.stop_deceleration:
             # a stop at a constant deceleration: "be at 0 in 1 s", replanned every step, only ever
             # halves the speed (the car crept at 1 m/s where the scenario asked for a standstill)
@@ -243,12 +265,16 @@ class FrenetixDriver(DriverBase):
         candidates: list,
         weights: tuple[float, float, float],
         rate_along: bool = False,
+        braking_limit: float | None = None,
+        guarded: int = 0,
     ) -> np.ndarray:
         """Mean squared distance from the reference (s of the rear axle, d, v) over the tracked
         window, for all candidates at once (they share the planning horizon, hence the length).
         ``rate_along``: the speed compared is the rate along the frame's line (on a map's route, whose
         plans are in lengths along it: a car in a curve's outer lane drives faster than that rate,
-        in its inner lane slower), else the car's own speed."""
+        in its inner lane slower), else the car's own speed. ``braking_limit`` (m/s lost per
+        step): a candidate losing more in a step of the window or of its first ``guarded`` steps ranks behind every one that does
+        not (a brisk stop tracked by catching up with the reference would brake harder than any car)."""
         s_ref, d_ref, v_ref = target
         curves = [c.curvilinear for c in candidates]  # each access copies frenetix's arrays: once
         along = [curve.s for curve in curves]
@@ -261,11 +287,17 @@ class FrenetixDriver(DriverBase):
         else:
             v = np.array([c.cartesian.v[1:n] for c in candidates])
         w_s, w_d, w_v = weights
-        return (
+        costs = (
             w_s * ((s - s_ref[:m]) ** 2).mean(axis=1)
             + w_d * ((d - d_ref[:m]) ** 2).mean(axis=1)
             + w_v * ((v - v_ref[:m]) ** 2).mean(axis=1)
         )
+        if braking_limit is not None:
+            k = max(n, guarded)
+            speeds = [curve.s_dot[:k] for curve in curves] if rate_along else [c.cartesian.v[:k] for c in candidates]
+            lost = np.array([-np.diff(np.asarray(v)).min(initial=0.0) for v in speeds])
+            costs = costs + 1e6 * (lost > braking_limit)
+        return costs
 
     def _copy(self, candidate) -> Trajectory:
         # frenetix's arrays are views into memory freed with the sample: copy before keeping

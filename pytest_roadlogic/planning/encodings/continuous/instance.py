@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 from fractions import Fraction
 
-from ....logic.automaton import SpeedGain, SymbolicAutomaton, Travelled
+from ....logic.automaton import MeanAcceleration, SpeedGain, SymbolicAutomaton, Travelled
 from ....logic.guards import HEADWAY, LANE, POSITION, SPEED, TRAVELED, Bound, Guard, Not, required_bounds
 from ...facts import atom, guard_nodes, inset, origin, with_automaton
 from .settings import ContinuousSettings
@@ -40,6 +40,7 @@ def build_continuous_instance(
         f"#const amin = {number(s.min_acceleration)}.",
         f"#const amax = {number(s.max_acceleration)}.",
         f"#const jerk = {number(s.max_jerk * s.dt)}.",
+        f"#const brisk_jerk = {number(max(s.max_jerk, s.brisk_jerk) * s.dt)}.",
         f"#const vmin = {number(s.min_speed)}.",
         f"#const vmax = {number(s.max_speed)}.",
         f"#const v0min = {number(start_low)}.",
@@ -53,6 +54,7 @@ def build_continuous_instance(
         *(f"vehicle({atom(v)})." for v in vehicles),
         *(f"stationary({atom(v)})." for v in vehicles if v in automaton.stationary),
         *(f"may_stop({atom(v)})." for v in sorted(stopping(automaton, s))),
+        *(f"brisk({atom(v)})." for v in sorted(brisk(automaton))),
         *(f"start_speed({atom(v)},{number(x)})." for v, x in sorted(first_speeds(automaton, s).items())),
         # CARLA's speed(v): a band driven toward from a phase's start (asp/continuous/toward.lp)
         *(
@@ -156,13 +158,15 @@ def decimal(value: float) -> str:
 
 
 def rate_facts(automaton: SymbolicAutomaton, settings: ContinuousSettings, relax: dict) -> list[str]:
-    """The bounds over a timed phase's two ends (``asp/continuous/rates.lp``), rate R of phase P
-    for vehicle V. A mean acceleration, ``mean_acceleration(R,P,V)``: per length D the phase may
-    have (a known length makes the mean linear), ``gain_at_least(R,D,X)`` / ``gain_at_most(R,D,X)``
-    with X the bound times D*dt, inset by ``acceleration_margin``; the lengths run up to the
-    phase's upper bound, or to the horizon limit for a phase with none. A distance travelled,
-    ``travelled(R,P,V)`` with ``travelled_at_least(R,X)`` / ``travelled_at_most(R,X)``, inset by
-    ``position_margin``. A rate the diagnosis may relax: ``relaxable(rate(R),K)``."""
+    """The bounds over a timed phase (``asp/continuous/rates.lp``), rate R of phase P for vehicle
+    V. An acceleration (``MeanAcceleration``), ``mean_acceleration(R,P,V)``: the bound on every
+    step of the phase, ``step_at_least(R,X)`` / ``step_at_most(R,X)``, inset by
+    ``acceleration_margin``. A speed gain (``SpeedGain``), ``mean_acceleration(R,P,V)`` with, per
+    length D the phase may have (up to its upper bound, or to the horizon limit for a phase with
+    none), ``gain_at_least(R,D,X)`` / ``gain_at_most(R,D,X)``, inset by ``speed_margin``. A
+    distance travelled, ``travelled(R,P,V)`` with ``travelled_at_least(R,X)`` /
+    ``travelled_at_most(R,X)``, inset by ``position_margin``. A rate the diagnosis may relax:
+    ``relaxable(rate(R),K)``."""
     facts = ["% rates over a phase's two ends (asp/continuous/rates.lp)"]
     rate_id = 0
     for phase, timing in sorted(automaton.timings.items()):
@@ -199,13 +203,24 @@ def rate_facts(automaton: SymbolicAutomaton, settings: ContinuousSettings, relax
                 continue
             low, high = inset(rate.low, rate.high, automaton.planned_margin(rate, settings.acceleration_margin))
             facts.append(f"mean_acceleration({r},{phase},{actor}).")
-            for length in range(shortest, longest + 1):
-                seconds = length * settings.dt
-                if math.isfinite(low):
-                    facts.append(f"gain_at_least({r},{length},{number(low * seconds)}).")
-                if math.isfinite(high):
-                    facts.append(f"gain_at_most({r},{length},{number(high * seconds)}).")
+            if math.isfinite(low):
+                facts.append(f"step_at_least({r},{number(low)}).")
+            if math.isfinite(high):
+                facts.append(f"step_at_most({r},{number(high)}).")
     return facts
+
+
+def brisk(automaton: SymbolicAutomaton) -> set[str]:
+    """The vehicles the scenario asks an acceleration of (a phase's mean acceleration: the
+    acceleration modifier, a speed change's rate_peak): their own dynamics are the scenario's, so
+    their acceleration may change as fast as a car's brakes act (``brisk_jerk``), not at the
+    gentle rate every other vehicle keeps."""
+    return {
+        rate.actor
+        for timing in automaton.timings.values()
+        for rate in timing.rates
+        if isinstance(rate, MeanAcceleration)
+    }
 
 
 def stopping(automaton: SymbolicAutomaton, settings: ContinuousSettings) -> set[str]:

@@ -41,6 +41,10 @@ class ContinuousSettings:
     min_acceleration: float = -8.0  # m/s^2: hard braking of a real car
     max_acceleration: float = 4.0  # m/s^2
     max_jerk: float = 2.0  # m/s^3: how much the acceleration may change from one step to the next
+    # m/s^3 for a vehicle the scenario asks an acceleration of (the acceleration modifier, a speed
+    # change's rate_peak): a car braking as hard as its driver can reaches full braking within a
+    # few tenths of a second, so such a plan may step to the asked rate from one step to the next
+    brisk_jerk: float = 20.0
     # m/s^2: the rates at which a car drives toward a target speed (CARLA's speed(v)), as a driver
     # would: neither a crawl over the phase nor the car's limit
     comfortable_acceleration: float = 2.0
