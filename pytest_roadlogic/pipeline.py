@@ -118,10 +118,11 @@ def run_instances(
     limits = SimulationLimits(time_limit=simulation_time_limit)
     start = time.perf_counter()
     specification = build_automaton(scenario)
-    guide, settings, seed = guided_planning(scenario, specification, values, settings, seed)
     dut = under_test.vehicle(specification.actors) if under_test is not None else None
     if dut is not None:
         drivers = under_test.drivers(dut, drivers)
+        settings = settings.with_self_driven(dut)
+    guide, settings, seed = guided_planning(scenario, specification, values, settings, seed)
     automaton_seconds = time.perf_counter() - start
     plans = planned(guide, settings, seed, count * max_tries, fallbacks)
     for instance in range(count):

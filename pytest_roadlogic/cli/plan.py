@@ -16,12 +16,13 @@ def add(commands) -> None:
     """The ``plan`` command's flags, and its action."""
     plan = scenario_command(commands, "plan", "solve a scenario's planning problem and print the plans as tables")
     plan.add_argument("--plans", type=int, default=1, help="how many plans to enumerate (default 1)")
-    setting_flags(plan, ("seed", "road-speed", "encoding", "horizon", "plan-timeout"))
+    setting_flags(plan, ("seed", "road-speed", "encoding", "horizon", "plan-timeout", "dut"))
     plan.add_argument("--show-asp", action="store_true", help="also print the generated instance program")
     plan.set_defaults(action=_plan)
 
 
 def _plan(args: argparse.Namespace) -> int:
+    from ..dut import UnderTest
     from ..planning import planner_for, settings_for
     from ..planning.fallbacks import fallback_needed, planned
 
@@ -29,6 +30,10 @@ def _plan(args: argparse.Namespace) -> int:
         scenario, automaton = load_automaton(args)
         settings = run_settings(args)
         planner_settings = settings_for(settings)
+        # as a run plans: the vehicle under test drives itself (planned as braking as a car can)
+        dut = UnderTest.of(settings).vehicle(automaton.actors)
+        if dut is not None:
+            planner_settings = planner_settings.with_self_driven(dut)
         planner = planner_for(automaton, planner_settings, settings.seed)
         if args.show_asp:
             print(planner.instance_program())

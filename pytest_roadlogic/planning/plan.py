@@ -42,6 +42,9 @@ class Plan:
     stats: dict[str, float] = field(default_factory=dict)
     # vehicles that never move (stationary objects): simulated as standing obstacles
     stationary: tuple[str, ...] = ()
+    # vehicles the scenario asks an acceleration of: their plan may step it from one step to the
+    # next, and their drivers act on such a step at its instant (simulation.reference's onsets)
+    brisk: tuple[str, ...] = ()
     # the route of a map it was planned on and is driven on (its settings' ``route``); None: the
     # straight road
     route: Route | None = field(default=None, compare=False, repr=False)
@@ -80,6 +83,7 @@ class Plan:
             "states": {v: [asdict(s) for s in states] for v, states in self.states.items()},
             "stats": self.stats,
             "stationary": list(self.stationary),
+            **({"brisk": list(self.brisk)} if self.brisk else {}),
             **({"origin": self.origin} if self.origin is not None else {}),
         }
 

@@ -120,6 +120,12 @@ class PlannerSettings(Protocol):
         preferred to have; themselves for an encoding without such a preference."""
         ...
 
+    def with_self_driven(self, vehicle: str) -> PlannerSettings:
+        """These settings with ``vehicle`` driving itself (the vehicle under test): its plan is
+        a guess at what its own driver does, so it is planned as braking as briskly as a car can;
+        themselves for an encoding that plans every vehicle alike."""
+        ...
+
     def summary(self, lanes: int) -> str:
         """The vehicle limits and bounds on a road of ``lanes`` lanes, for messages that blame them."""
         ...

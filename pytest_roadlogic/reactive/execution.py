@@ -86,7 +86,7 @@ def _observed(states: dict[str, VehicleState], road: Road, ahead: float) -> dict
 def _spliced(old: Reference, new: Reference, now: float) -> Reference:
     """``old``'s waypoints before ``now`` and ``new``'s from it on."""
     waypoints = [w for w in old.waypoints if w.time < now - 1e-9] + [w for w in new.waypoints if w.time >= now - 1e-9]
-    return Reference(old.vehicle, old.runup, old.runup_acceleration, waypoints, old.road)
+    return Reference(old.vehicle, old.runup, old.runup_acceleration, waypoints, old.road, brisk=new.brisk)
 
 
 def replanning_seconds(replans: list[Replan]) -> tuple[float, float]:

@@ -27,9 +27,9 @@ LANE_CHANGE_DURATION = 3.0  # s; fits between two lane changes (3 planning steps
 # s simulated after the plan's last step: the scenario's last phase may end then if its duration
 # allows, and a car braking to a stop settles a little after its plan does (docs/decisions.md)
 TAIL = 4.0
-# m/s^2: a change of the planned acceleration from one step to the next larger than any plan's
-# gentle jerk allows (the continuous encoding's 2 m/s^3 over its 1 s step): the step of a vehicle
-# the scenario asks to brake or speed up briskly, which the driver acts on at that instant
+# m/s^2: a change of a brisk vehicle's planned acceleration (``Plan.brisk``) from one step to the
+# next larger than a gentle plan's (the continuous encoding's 2 m/s^3 over its 1 s step): a step
+# into braking or speeding up that the scenario asks, which its driver acts on at that instant
 ONSET = 3.0
 
 
@@ -74,6 +74,7 @@ class Reference:
     runup_acceleration: float
     waypoints: list[Waypoint]
     road: Road
+    brisk: bool = False  # whether the plan may step its acceleration (``Plan.brisk``): then it has onsets
 
     def __post_init__(self) -> None:
         self._times = np.array([w.time for w in self.waypoints])
@@ -93,7 +94,7 @@ class Reference:
         # early, and a phase asking the speed it held ends before its time)
         steps = np.diff(self._vel) / np.maximum(np.diff(self._times), 1e-9)
         jumps = np.abs(np.diff(np.concatenate([[0.0], steps])))
-        self.onsets = self._times[:-1][jumps > ONSET]
+        self.onsets = self._times[:-1][jumps > ONSET] if self.brisk else self._times[:0]
 
     def next_onset(self, time: float) -> float:
         """The first onset after ``time`` (s), or infinity."""
@@ -157,7 +158,9 @@ def references(plan: Plan, road: Road) -> dict[str, Reference]:
             Waypoint(duration + k * plan.dt, s.position, s.lane, s.speed, window=plan.dt / 2)
             for k, s in enumerate(plan.states[vehicle])
         ]
-        result[vehicle] = Reference(vehicle, duration, plan.runup_acceleration, waypoints, road)
+        result[vehicle] = Reference(
+            vehicle, duration, plan.runup_acceleration, waypoints, road, brisk=vehicle in plan.brisk
+        )
     return result
 
 

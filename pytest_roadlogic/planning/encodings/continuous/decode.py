@@ -6,6 +6,7 @@ from fractions import Fraction
 
 from ...facts import atom
 from ...plan import Plan, PlanState
+from .instance import brisk
 
 
 def decode_plan(
@@ -50,6 +51,7 @@ def decode_plan(
         stats=dict(stats),
         runup=0.0,
         stationary=tuple(v for v in automaton.actors if v in automaton.stationary),
+        brisk=tuple(v for v in automaton.actors if v in brisk(automaton)),
         route=settings.route,
         origin=float(Fraction(str(values["origin"]).strip('"'))) if "origin" in values else None,
     )

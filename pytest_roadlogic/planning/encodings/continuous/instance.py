@@ -55,6 +55,7 @@ def build_continuous_instance(
         *(f"stationary({atom(v)})." for v in vehicles if v in automaton.stationary),
         *(f"may_stop({atom(v)})." for v in sorted(stopping(automaton, s))),
         *(f"brisk({atom(v)})." for v in sorted(brisk(automaton))),
+        *([f"self_driven({atom(s.self_driven)})."] if s.self_driven in vehicles else []),
         *(f"start_speed({atom(v)},{number(x)})." for v, x in sorted(first_speeds(automaton, s).items())),
         # CARLA's speed(v): a band driven toward from a phase's start (asp/continuous/toward.lp)
         *(

@@ -45,6 +45,9 @@ class ContinuousSettings:
     # change's rate_peak): a car braking as hard as its driver can reaches full braking within a
     # few tenths of a second, so such a plan may step to the asked rate from one step to the next
     brisk_jerk: float = 20.0
+    # the vehicle under test, which drives itself: planned as braking as briskly as a car can, it
+    # may stop, and whether it closes in at the plan's end is its driver's business (dynamics.lp)
+    self_driven: str | None = None
     # m/s^2: the rates at which a car drives toward a target speed (CARLA's speed(v)), as a driver
     # would: neither a crawl over the phase nor the car's limit
     comfortable_acceleration: float = 2.0
@@ -219,6 +222,9 @@ class ContinuousSettings:
 
     def with_road_speed(self, band: tuple[float, float]) -> ContinuousSettings:
         return replace(self, road_speed=band)
+
+    def with_self_driven(self, vehicle: str) -> ContinuousSettings:
+        return replace(self, self_driven=vehicle)
 
     def describe_margins(self) -> str:
         return (

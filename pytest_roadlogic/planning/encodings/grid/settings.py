@@ -86,6 +86,10 @@ class GridSettings:
         """Themselves: the grid draws start speeds from ``initial_speed``, not a road's band."""
         return self
 
+    def with_self_driven(self, vehicle: str) -> GridSettings:
+        """Themselves: the grid plans every vehicle with the same accelerations."""
+        return self
+
     def summary(self, lanes: int) -> str:
         """The domain rules' numbers on a road of ``lanes`` lanes, for messages that blame them."""
         return (
