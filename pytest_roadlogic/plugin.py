@@ -612,6 +612,7 @@ class SessionSummary:
     def __init__(self) -> None:
         self.items = 0
         self.counts: dict[str, float] = {}
+        self.test_points: list = []  # dut.catalogue.TestPoint of each item with a vehicle under test
 
     @pytest.hookimpl
     def pytest_runtest_logreport(self, report) -> None:
@@ -621,6 +622,10 @@ class SessionSummary:
         if "strategy" not in properties:
             return
         self.items += 1
+        if "vehicle_under_test" in properties:
+            from .dut.catalogue import test_point
+
+            self.test_points.append(test_point(report.nodeid, properties))
         for name, value in properties.items():
             if isinstance(value, (int, float)) and not isinstance(value, bool) and name != "seed":
                 self.counts[name] = self.counts.get(name, 0) + value
@@ -649,3 +654,18 @@ class SessionSummary:
                 "ones): the item's JUnit property unasked_changes says which vehicle did what"
             )
         terminalreporter.write_line(f"time per stage: {seconds}")
+        if self.test_points:
+            from .dut.catalogue import grade, text_table
+
+            terminalreporter.write_sep("-", "vehicle under test")
+            for line in text_table(self.test_points):
+                terminalreporter.write_line(line)
+            terminalreporter.write_line(grade(self.test_points))
+
+    @pytest.hookimpl(optionalhook=True)
+    def pytest_html_results_summary(self, prefix, summary, postfix) -> None:
+        """With pytest-html, the vehicle under test's test points and grade head the report."""
+        if self.test_points:
+            from .dut.catalogue import html_table
+
+            prefix.append(html_table(self.test_points))
