@@ -623,9 +623,9 @@ class SessionSummary:
             return
         self.items += 1
         if "vehicle_under_test" in properties:
-            from .dut.catalogue import test_point
+            from .dut.catalogue import point_from
 
-            self.test_points.append(test_point(report.nodeid, properties))
+            self.test_points.append(point_from(report.nodeid, properties))
         for name, value in properties.items():
             if isinstance(value, (int, float)) and not isinstance(value, bool) and name != "seed":
                 self.counts[name] = self.counts.get(name, 0) + value

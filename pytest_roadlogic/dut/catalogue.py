@@ -38,7 +38,7 @@ class TestPoint:
         return PASSED if self.passed else NOT_EXERCISED
 
 
-def test_point(name: str, properties: dict[str, object]) -> TestPoint | None:
+def point_from(name: str, properties: dict[str, object]) -> TestPoint | None:
     """The test point of an item with these JUnit ``properties``; None without a vehicle under test."""
     if "vehicle_under_test" not in properties:
         return None
