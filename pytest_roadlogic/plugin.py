@@ -622,10 +622,11 @@ class SessionSummary:
         if "strategy" not in properties:
             return
         self.items += 1
-        if "vehicle_under_test" in properties:
-            from .dut.catalogue import point_from
+        from .dut.catalogue import point_from
 
-            self.test_points.append(point_from(report.nodeid, properties))
+        point = point_from(report.nodeid, properties)
+        if point is not None:
+            self.test_points.append(point)
         for name, value in properties.items():
             if isinstance(value, (int, float)) and not isinstance(value, bool) and name != "seed":
                 self.counts[name] = self.counts.get(name, 0) + value

@@ -92,9 +92,11 @@ class Reference:
         # the waypoint times at which the planned acceleration steps by more than ONSET: a driver
         # acts on such a change when it comes, not before (a smooth tracker that looks ahead brakes
         # early, and a phase asking the speed it held ends before its time)
-        steps = np.diff(self._vel) / np.maximum(np.diff(self._times), 1e-9)
-        jumps = np.abs(np.diff(np.concatenate([[0.0], steps])))
-        self.onsets = self._times[:-1][jumps > ONSET] if self.brisk else self._times[:0]
+        self.onsets = self._times[:0]
+        if self.brisk:
+            steps = np.diff(self._vel) / np.maximum(np.diff(self._times), 1e-9)
+            jumps = np.abs(np.diff(np.concatenate([[0.0], steps])))
+            self.onsets = self._times[:-1][jumps > ONSET]
 
     def next_onset(self, time: float) -> float:
         """The first onset after ``time`` (s), or infinity."""

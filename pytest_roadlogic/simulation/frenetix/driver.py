@@ -282,10 +282,11 @@ class FrenetixDriver(DriverBase):
         m = n - 1
         s = np.array([a[1:n] for a in along])
         d = np.array([curve.d[1:n] for curve in curves])
-        if rate_along:
-            v = np.array([curve.s_dot[1:n] for curve in curves])
-        else:
-            v = np.array([c.cartesian.v[1:n] for c in candidates])
+        # the speeds from now on, read once: over the window, and over the guarded steps too when
+        # the braking is limited
+        k = max(n, guarded) if braking_limit is not None else n
+        speeds = [curve.s_dot[:k] for curve in curves] if rate_along else [c.cartesian.v[:k] for c in candidates]
+        v = np.array([speed[1:n] for speed in speeds])
         w_s, w_d, w_v = weights
         costs = (
             w_s * ((s - s_ref[:m]) ** 2).mean(axis=1)
@@ -293,9 +294,7 @@ class FrenetixDriver(DriverBase):
             + w_v * ((v - v_ref[:m]) ** 2).mean(axis=1)
         )
         if braking_limit is not None:
-            k = max(n, guarded)
-            speeds = [curve.s_dot[:k] for curve in curves] if rate_along else [c.cartesian.v[:k] for c in candidates]
-            lost = np.array([-np.diff(np.asarray(v)).min(initial=0.0) for v in speeds])
+            lost = np.array([-np.diff(np.asarray(speed)).min(initial=0.0) for speed in speeds])
             costs = costs + 1e6 * (lost > braking_limit)
         return costs
 
