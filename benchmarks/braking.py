@@ -49,14 +49,18 @@ def main() -> None:
     parser.add_argument("--seeds", type=int, default=10)
     parser.add_argument("--plot", type=Path)
     args = parser.parse_args()
-    print(f"{'seed':>4}  {'step at':>7}  {'6 m/s^2 after':>13}  {'hardest':>8}  {'early':>5}  {'verdict':>8}  {'seconds':>7}")
+    print(
+        f"{'seed':>4}  {'step at':>7}  {'6 m/s^2 after':>13}  {'hardest':>8}  {'early':>5}  {'verdict':>8}  {'seconds':>7}"
+    )
     delays, peaks = [], []
     for seed in range(1, args.seeds + 1):
         instance, onset, delay, peak, early, seconds = measure(seed)
         delays.append(delay)
         peaks.append(peak)
         verdict = "accepted" if instance.verdict.accepted else "rejected"
-        print(f"{seed:>4}  {onset:>6.1f}s  {delay:>12.2f}s  {peak:>8.2f}  {str(early):>5}  {verdict:>8}  {seconds:>7.2f}")
+        print(
+            f"{seed:>4}  {onset:>6.1f}s  {delay:>12.2f}s  {peak:>8.2f}  {str(early):>5}  {verdict:>8}  {seconds:>7.2f}"
+        )
         if args.plot and seed == 1:
             plot(instance, args.plot)
     print(
