@@ -1,22 +1,28 @@
-"""Falsification: how fast the search finds a defective vehicle under test's failure, and how often
+"""Falsification: how fast each search finds a defective vehicle under test's failure, and how often
 the scenario happens around a good one.
 
-    python benchmarks/falsification.py [--scenario scenarios/dut/cut_in.osc] [--seeds 10] [--budget 30]
-        [--defective late-acc | --delay SECONDS] [--samples 20] [--periods 0.25,1,0]
+    python benchmarks/falsification.py [--scenario benchmarks/scenarios/rear_braking_rare.osc]
+        [--max-braking 5 | --delay SECONDS | --defective NAME] [--seeds 10] [--budget 200]
+        [--searches random,cross-entropy,hypothesis] [--replan-period 0] [--jobs 2]
+        [--samples 0] [--periods 0.25,1,0]
 
 Prints two tables:
 
-1. samples and seconds to the first failure of the defective driver (``--defective``, default
-   ``weak-braking-acc``; or, with ``--delay``, the reference one acting that many seconds late: a
-   milder defect, whose failures are rarer than the shipped variants' and so worth searching for), Hypothesis steered by the oracles' margin (``hypothesis.target``, as the
-   plugin runs it) against plain random sampling of the same strategy, mean over ``--seeds`` seeds
-   (a seed that finds none within ``--budget`` samples counts the budget);
-2. with the good driver (``acc``), the share of ``--samples`` samples in which the scenario happened
-   (the monitor accepted the trace, one try each), reactive (the other vehicles replanned every
-   ``--periods`` seconds) against open loop (period 0: they follow their first plan), the replanning
-   seconds per call (median, 95th percentile) against the period, the replans that found no plan
-   and those whose run so far had to be the old plan's (no run of the automaton went through the
-   states seen at the planning steps), and the table row's wall-clock seconds.
+1. simulations to the first failure of a defective driver, per search (the ``--roadlogic-search``
+   values, each run as the plugin runs it: ``Runner.refined`` with the oracles' margin as
+   Hypothesis's target; no shrinking): median, quartiles and range over ``--seeds`` sampling
+   seeds (a seed that finds none within ``--budget`` samples counts the budget), and the ratio of
+   each search's median to random's. The default defect, an adaptive cruise control that never
+   brakes harder than 5 m/s^2, fails in about 2% of ``rear_braking_rare``'s space (a corner: fast,
+   close, the car ahead braking gently and long; the good driver passes everywhere): a rare
+   failure region. ``--replan-period 0``: that scenario's car ahead does not react to the vehicle
+   under test, so its first plan is its plan (a simulation costs tenths of a second);
+2. with ``--samples N``, the good driver (``acc``): the share of N samples in which the scenario
+   happened (the monitor accepted the trace, one try each), reactive (the other vehicles replanned
+   every ``--periods`` seconds) against open loop (period 0: they follow their first plan), the
+   replanning seconds per call (median, 95th percentile) against the period, the replans that
+   found no plan and those whose run so far had to be the old plan's (no run of the automaton went
+   through the states seen at the planning steps), and the table row's wall-clock seconds.
 """
 
 from __future__ import annotations
@@ -25,64 +31,80 @@ import argparse
 import statistics
 import sys
 import time
+from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from hypothesis import HealthCheck, Phase, given, settings, target  # noqa: E402
+from hypothesis import HealthCheck, Phase, given, settings  # noqa: E402
 from hypothesis import seed as seeded  # noqa: E402
 
 from pytest_roadlogic.dut import UnderTest  # noqa: E402
+from pytest_roadlogic.outcomes import DUT_FAILED  # noqa: E402
 from pytest_roadlogic.pipeline import load_scenario, run_instances  # noqa: E402
 from pytest_roadlogic.planning import NoPlanError  # noqa: E402
 from pytest_roadlogic.reactive import replanning_seconds  # noqa: E402
+from pytest_roadlogic.runner import Runner  # noqa: E402
 from pytest_roadlogic.sampling import strategy  # noqa: E402
+from pytest_roadlogic.settings import HYPOTHESIS_SEARCH, SEARCHES, RunSettings  # noqa: E402
 
 
 class Found(Exception):
     pass
 
 
-def late_by(delay: float):
-    """A driver factory: the reference ACC acting ``delay`` seconds late drives the vehicle under test."""
+def defective(delay: float | None, max_braking: float | None):
+    """A driver factory: the reference ACC acting ``delay`` seconds late, or never braking harder
+    than ``max_braking`` m/s^2, drives the vehicle under test."""
     from pytest_roadlogic.dut.reference_drivers import AdaptiveCruiseControl
 
-    class Late(AdaptiveCruiseControl):
-        reaction_delay = delay
+    flaws = {"reaction_delay": delay, "max_braking": max_braking}
+    Defective = type("Defective", (AdaptiveCruiseControl,), {k: v for k, v in flaws.items() if v is not None})
 
-    return lambda vehicle: Late() if vehicle in ("dut.car", "dut") else None
+    return lambda vehicle: Defective() if vehicle in ("dut.car", "dut") else None
 
 
-def first_failure(scenario, driver, seed: int, budget: int, targeted: bool) -> tuple[int, float]:
-    """(samples, seconds) until the first failure of ``driver`` (a reference driver's name, or a
-    driver factory); (budget, seconds) when none."""
-    count, started = 0, time.perf_counter()
-    phases = [Phase.generate, Phase.target] if targeted else [Phase.generate]
+def first_failure(
+    path: str, search: str, seed: int, budget: int, driver: str, delay, max_braking, replan_period: float
+) -> tuple[int, int, float]:
+    """(samples, simulations, seconds) until the first failure of the vehicle under test in a
+    property search ``search`` with sampling seed ``seed``; the budget when none."""
+    scenario = load_scenario(path)
+    bench = settings(
+        database=None,
+        deadline=None,
+        phases=[Phase.generate, Phase.target] if search == HYPOTHESIS_SEARCH else [Phase.generate],
+        suppress_health_check=list(HealthCheck),
+    )
+    settings.register_profile("falsification-bench", bench)
+    settings.load_profile("falsification-bench")
+    run_settings = RunSettings(search=search, examples=budget, tries=1, replan_period=replan_period, dut_driver=driver)
+    drivers = defective(delay, max_braking) if delay is not None or max_braking is not None else None
+    runner = Runner(scenario, run_settings, drivers=drivers, explain=False)
+    samples = simulations = 0
+    found: tuple[int, int, float] | None = None
+    started = time.perf_counter()
 
-    @seeded(seed)
-    @settings(max_examples=budget, database=None, deadline=None, phases=phases, suppress_health_check=list(HealthCheck))
-    @given(strategy(scenario))
-    def sample(values):
-        nonlocal count
-        count += 1
-        try:
-            if isinstance(driver, str):
-                run = next(run_instances(scenario, 1, seed=1, values=values, under_test=UnderTest(driver=driver)))
-            else:
-                run = next(run_instances(scenario, 1, seed=1, values=values, under_test=UnderTest(), drivers=driver))
-        except NoPlanError:
-            return
-        if targeted:
-            target(-run.dut.margin(), label="closeness of the vehicle under test to failing")
-        if run.dut.failed:
+    def each(result) -> None:
+        nonlocal samples, simulations, found
+        samples += 1
+        simulations += result.run is not None
+        if result.outcome == DUT_FAILED:
+            if found is None:
+                found = (samples, simulations, time.perf_counter() - started)
             raise Found()
 
     try:
-        sample()
+        runner.refined(each, count=budget, search=True, sampling_seed=seed)
     except Found:
-        return count, time.perf_counter() - started
-    return budget, time.perf_counter() - started
+        pass
+    return found or (budget, simulations, time.perf_counter() - started)
+
+
+def quartiles(values: list[float]) -> tuple[float, float, float]:
+    low, median, high = statistics.quantiles(values, n=4, method="inclusive")
+    return low, median, high
 
 
 def happened(scenario, samples: int, period: float) -> tuple[int, int, list]:
@@ -112,30 +134,59 @@ def happened(scenario, samples: int, period: float) -> tuple[int, int, list]:
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--scenario", default=str(ROOT / "scenarios" / "dut" / "cut_in.osc"))
-    parser.add_argument("--defective", default="weak-braking-acc")
-    parser.add_argument("--delay", type=float, default=None, help="instead: the reference ACC this many seconds late")
+    parser.add_argument("--scenario", default=str(ROOT / "benchmarks" / "scenarios" / "rear_braking_rare.osc"))
+    parser.add_argument("--defective", default="acc", help="a reference driver's name (with neither of the next two)")
+    parser.add_argument("--delay", type=float, default=None, help="the reference ACC this many seconds late")
+    parser.add_argument("--max-braking", type=float, default=5.0, help="the reference ACC braking at most this (m/s^2)")
+    parser.add_argument("--searches", default="random,cross-entropy", help=f"of {', '.join(SEARCHES)}")
     parser.add_argument("--seeds", type=int, default=10)
-    parser.add_argument("--budget", type=int, default=30, help="samples per seed before giving up")
-    parser.add_argument("--samples", type=int, default=20, help="samples for the share that happened")
+    parser.add_argument("--budget", type=int, default=200, help="samples per seed before giving up")
+    parser.add_argument("--replan-period", type=float, default=0.0)
+    parser.add_argument("--jobs", type=int, default=2, help="processes running seeds side by side")
+    parser.add_argument("--samples", type=int, default=0, help="samples for the share that happened (0: none)")
     parser.add_argument(
         "--periods", default="0.25,1,0", help="replanning periods (s) of the share that happened; 0: open loop"
     )
     args = parser.parse_args()
-    scenario = load_scenario(args.scenario)
-    driver = args.defective if args.delay is None else late_by(args.delay)
-    name = args.defective if args.delay is None else f"acc {args.delay:g} s late"
+    if args.delay is not None or args.defective != "acc":
+        args.max_braking = None
+    name = (
+        f"acc {args.delay:g} s late"
+        if args.delay is not None
+        else f"acc braking at most {args.max_braking:g} m/s^2"
+        if args.max_braking is not None
+        else args.defective
+    )
+    searches = args.searches.split(",")
     if args.seeds:
         print(f"{Path(args.scenario).name}: first failure of {name}, {args.seeds} seeds, budget {args.budget}")
-        print(f"{'search':<10} {'samples (mean)':>15} {'seconds (mean)':>15} {'seeds failed':>13}")
-    for targeted in (True, False) if args.seeds else ():
-        results = [first_failure(scenario, driver, s, args.budget, targeted) for s in range(args.seeds)]
-        found = sum(n < args.budget for n, _ in results)
+        tasks = [
+            (args.scenario, search, seed, args.budget, args.defective, args.delay, args.max_braking, args.replan_period)
+            for seed in range(args.seeds)
+            for search in searches  # interleaved, so that each search meets the same load
+        ]
+        with ProcessPoolExecutor(max_workers=args.jobs) as pool:
+            results = list(pool.map(first_failure, *zip(*tasks)))
+        by_search = {search: [r for t, r in zip(tasks, results) if t[1] == search] for search in searches}
         print(
-            f"{'targeted' if targeted else 'random':<10} {statistics.mean(n for n, _ in results):15.1f} "
-            f"{statistics.mean(t for _, t in results):15.1f} {found:>8} of {args.seeds}",
-            flush=True,
+            f"{'search':<14} {'simulations to the first failure: median':>41} {'quartiles':>13} {'range':>11} "
+            f"{'found':>8} {'s/seed':>7} {'random/this':>12}"
         )
+        random_median = statistics.median(s for _, s, _ in by_search["random"]) if "random" in by_search else None
+        for search, rows in by_search.items():
+            counts = [s for _, s, _ in rows]
+            low, median, high = quartiles(counts)
+            found = sum(n < args.budget for n, _, _ in rows)
+            ratio = f"{random_median / median:12.1f}" if random_median is not None and median else f"{'':>12}"
+            print(
+                f"{search:<14} {median:41.1f} {low:6.1f}-{high:<6.1f} {min(counts):>4}-{max(counts):<6} "
+                f"{found:>3} of {len(rows):<2} {statistics.mean(t for _, _, t in rows):7.1f} {ratio}",
+                flush=True,
+            )
+            print(f"{'':<14} per seed: {counts}")
+    if not args.samples:
+        return
+    scenario = load_scenario(args.scenario)
     print(f"\n{Path(args.scenario).name}: the good driver (acc), {args.samples} samples, one try each")
     print(
         f"{'execution':<16} {'happened':>12} {'replans':>8} {'median s':>9} {'p95 s':>7} {'none':>5} "
@@ -146,9 +197,9 @@ def main() -> None:
         accepted, simulated, replans = happened(scenario, args.samples, period)
         seconds = time.perf_counter() - started
         median, p95 = replanning_seconds(replans)
-        name = f"every {period:g} s" if period else "open loop"
+        label = f"every {period:g} s" if period else "open loop"
         print(
-            f"{name:<16} {accepted:>5} of {simulated:<4} {len(replans):>8} {median:9.3f} {p95:7.3f} "
+            f"{label:<16} {accepted:>5} of {simulated:<4} {len(replans):>8} {median:9.3f} {p95:7.3f} "
             f"{sum(r.plan is None for r in replans):>5} {sum(r.plan is not None and not r.seen for r in replans):>9} "
             f"{seconds:8.1f}",
             flush=True,

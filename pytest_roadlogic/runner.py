@@ -42,7 +42,7 @@ from .outcomes import (
 from .pipeline import SimulatedInstance, run_instances
 from .planning import HorizonTooShort, LimitsBind, NoPlanError, PlanningTimeout, UnsatisfiableScenario, settings_for
 from .sampling import Shard
-from .settings import BASE, DISCARD, REFINED, RunSettings
+from .settings import BASE, CROSS_ENTROPY, DISCARD, HYPOTHESIS_SEARCH, REFINED, RunSettings
 from .simulation import DriverFactory, SimulationTimeout, Simulator
 
 
@@ -181,7 +181,9 @@ class Runner:
         ``search``: a property search, as the plugin runs it: the loaded Hypothesis profile, the
         monitor's robustness fed to ``hypothesis.target``, and a failure that ``each`` raises shrunk
         to the simplest values that still fail (``key`` keeps one example database entry per
-        scenario). With ``settings.no_plan == "discard"``, a sample without a plan goes to
+        scenario); ``settings.search`` says who draws the samples: Hypothesis, or a backend of
+        ``falsification`` (uniformly at random, or steered by cross-entropy from the first sample)
+        whose failure Hypothesis then shrinks. With ``settings.no_plan == "discard"``, a sample without a plan goes to
         ``discarded`` and is rejected as ``assume(False)`` rejects one (Hypothesis's health check
         stops an item whose samples mostly have none). Otherwise a sample whose constraints clash
         fails only when one of its values alone has no plan (``CaseResult.culprit``); one whose
@@ -254,6 +256,10 @@ class Runner:
                 deadline=None,
                 print_blob=False,
                 report_multiple_bugs=False,
+                # the explain phase traces every line while shrinking (sys.settrace: each case about
+                # five times slower) to say which lines of the test ran: here the tool's own lines,
+                # nothing a scenario's author can use
+                phases=[phase for phase in profile.phases if phase != Phase.explain],
                 # samples discarded for having no plan are what the filter health check is for
                 suppress_health_check=[
                     *profile.suppress_health_check,
@@ -273,7 +279,16 @@ class Runner:
                 suppress_health_check=list(HealthCheck),
             )
         seed = self.settings.seed if sampling_seed is None else sampling_seed
-        hypothesis.seed(seed)(chosen(hypothesis.given(strategy(self.scenario, shard))(example)))()
+        test = hypothesis.given(strategy(self.scenario, shard))(example)
+        if not search or self.settings.search == HYPOTHESIS_SEARCH:
+            hypothesis.seed(seed)(chosen(test))()
+            return
+        from .falsification import backend, untraced
+
+        # the random or cross-entropy search: a backend of Hypothesis's that draws the choices
+        steered = self.settings.search == CROSS_ENTROPY
+        with untraced():
+            hypothesis.seed(seed)(hypothesis.settings(chosen, backend=backend(seed, steered))(test))()
 
     def explained(self, result: CaseResult) -> CaseResult:
         """A case without a plan, run again to say why: the constraints that cannot hold together

@@ -33,6 +33,12 @@ ENCODING_ENTRY_POINTS = "pytest_roadlogic.encodings"
 # discarded as hypothesis.assume(False) discards it (the item then tests what can be instantiated)
 FAIL, DISCARD = "fail", "discard"
 NO_PLAN_POLICIES = (FAIL, DISCARD)
+# how the refined strategy's property search draws its samples: Hypothesis's own generation (biased
+# toward each range's ends; its target phase steers toward the closest-to-failing samples once half
+# the examples are spent), uniformly at random, or by a cross-entropy sampler that steers from the
+# first sample (falsification.py)
+HYPOTHESIS_SEARCH, RANDOM_SEARCH, CROSS_ENTROPY = "hypothesis", "random", "cross-entropy"
+SEARCHES = (HYPOTHESIS_SEARCH, RANDOM_SEARCH, CROSS_ENTROPY)
 STANDARD_DIALECT, CARLA_DIALECT = "standard", "carla"
 DIALECTS = (STANDARD_DIALECT, CARLA_DIALECT)  # constructs.DIALECTS holds their registries
 DEFAULT_HORIZON = 25  # planning steps (of 1 s) of the grid encoding
@@ -179,6 +185,7 @@ def encoding(text: str) -> str:
 dialect = one_of(DIALECTS, "a dialect")
 strategy = one_of(STRATEGIES, "a strategy")
 no_plan_policy = one_of(NO_PLAN_POLICIES, "what to do with a sample without a plan")
+search = one_of(SEARCHES, "a search")
 
 
 SPEED_UNITS = {"kph": 1 / 3.6, "kmph": 1 / 3.6, "mps": 1.0, "mph": 0.44704}
@@ -294,6 +301,17 @@ OPTIONS = (
         whole_number(1, "a number of examples"),
         10,
         "samples (refined) or plans (base) per scenario",
+        in_case=False,
+    ),
+    Option(
+        "search",
+        "search",
+        search,
+        HYPOTHESIS_SEARCH,
+        "how samples look for a failure (refined, under pytest): hypothesis (favouring each range's ends, then toward "
+        "the case nearest to failing after half the examples), random (uniformly), or cross-entropy (toward the case "
+        "nearest to failing from the first sample: fewer simulations to a rare failure); a failure is shrunk and "
+        "replays either way",
         in_case=False,
     ),
     Option("seed", "seed", seed, 1, "fixes sampling, planning and simulation", kind=int),
