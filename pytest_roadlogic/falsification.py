@@ -4,9 +4,11 @@ Hypothesis draws a scenario's logical parameters favouring each range's ends and
 ``target()`` only once half its examples are spent (its target phase): on a rare failure away
 from the ends it is no faster than random. ``CrossEntropyProvider`` is a Hypothesis backend (a
 ``PrimitiveProvider``: Hypothesis's extension point for what draws the choices) that steers from
-the first sample, in the manner of VerifAI's cross-entropy sampler: each choice the strategy draws
-(one per logical parameter, ``sampling.strategy``) is split into ``BUCKETS`` buckets; a bucket is
-drawn and a value uniformly inside it. After each sample, the next ones follow the elite (the
+the first sample. Its first ``CORNERS`` samples probe the corners of the space, every choice (one
+per logical parameter, ``sampling.strategy``) at one of its ends: a physical failure most often
+lies at an extreme (fastest, closest, hardest), and probing them is boundary-value testing. Then,
+in the manner of VerifAI's cross-entropy sampler, each choice is split into ``BUCKETS`` buckets; a
+bucket is drawn and a value uniformly inside it. After each sample, the next ones follow the elite (the
 share ``ELITE`` of the samples so far that came closest to failing, read from the ``target()`` the
 runner reports, a failure closest of all): with a probability growing to ``MOST_FOLLOWED``, a
 choice takes the bucket of an elite sample or a bucket next to it (so that the search moves past
@@ -37,6 +39,7 @@ ELITE = 0.1  # the share of samples so far whose buckets the next samples favour
 # (tuned on synthetic rare failures: docs/evaluation.md)
 SETTLE = 1.0
 MOST_FOLLOWED = 0.9
+CORNERS = 8  # samples probing the corners first: all of them for up to 3 parameters
 TARGET = "target"  # how Hypothesis names a target() value among an observation's features ("target:label")
 
 Key = tuple[int, int]  # (the choice's position in the sample, its number of buckets)
@@ -57,6 +60,8 @@ class CrossEntropyProvider(PrimitiveProvider):
         self._random = random.Random(self.seed)
         self._drawn: list[tuple[Key, int]] = []  # this sample's (choice, bucket)
         self._history: list[tuple[float, list[tuple[Key, int]]]] = []  # (score, choices) per observed sample
+        self._samples = 0  # samples drawn so far, those rejected too
+        self._flips: list[bool] = []  # per choice: whether the corners' order starts at its highest value
 
     # ------------------------------------------------------------ Hypothesis's protocol
 
@@ -66,7 +71,10 @@ class CrossEntropyProvider(PrimitiveProvider):
     @contextlib.contextmanager
     def _sample(self) -> Iterator[None]:
         self._drawn = []
-        yield
+        try:
+            yield
+        finally:
+            self._samples += 1
 
     def on_observation(self, observation: Any) -> None:
         """Learn from one sample: its score is its ``target()`` value (a failure scores above all)."""
@@ -98,6 +106,10 @@ class CrossEntropyProvider(PrimitiveProvider):
         high = max_value if max_value is not None else low + 2**17
         size = high - low + 1
         key = (len(self._drawn), min(BUCKETS, size))
+        corner = self._corner(key[0])
+        if corner is not None:
+            self._drawn.append((key, key[1] - 1 if corner else 0))
+            return high if corner else low
         bucket = self._bucket(key)
         self._drawn.append((key, bucket))
         first = low + (size * bucket) // key[1]
@@ -128,6 +140,18 @@ class CrossEntropyProvider(PrimitiveProvider):
         return bytes(self._random.randrange(256) for _ in range(size))
 
     # ------------------------------------------------------------ the cross-entropy distribution
+
+    def _corner(self, position: int) -> bool | None:
+        """While the search probes the corners of the space (its first ``CORNERS`` samples), which
+        end the choice at ``position`` takes (True: its highest value): the sample's number in
+        binary, each bit one choice's end, so that the first 2^d samples visit every corner of d
+        choices, in an order the seed shuffles. None after, or for the random search."""
+        probe = self._samples
+        if not self.steered or probe >= CORNERS:
+            return None
+        if position >= len(self._flips):
+            self._flips.extend(self._random.random() < 0.5 for _ in range(position + 1 - len(self._flips)))
+        return bool((probe >> position) & 1) != self._flips[position]
 
     def _bucket(self, key: Key) -> int:
         """A bucket of choice ``key``: with probability ``followed``, an elite sample's bucket or one
