@@ -21,7 +21,7 @@ from ..planning.plan import Plan, PlanState
 from ..planning.protocol import Past
 from ..simulation.interface import Replan
 
-# seconds one replan may take: a replan that takes longer is no reaction
+# seconds one replan may take, all its ways together: a replan that takes longer is no reaction
 REPLAN_TIME_LIMIT = 5.0
 
 
@@ -64,9 +64,11 @@ class Replanner:
         self.seed = seed
         self.dut = dut
         self.predicting = True  # whether the last replan found a plan with the vehicle under test predicted
-        # the modes that found no plan from a step, and why: a later replan from the same step (the
-        # states there predicted from a later instant, less than a step ahead) does not try them again
-        self.failed: dict[int, set[_Mode]] = {}
+        # the modes that found no plan from a step, and why, by whether the states there were
+        # predicted (from an instant before the step) or observed at it: a later replan from the
+        # same step does not try them again, unless it observes what an earlier one predicted (a
+        # prediction carries the tracking's wobble a step ahead)
+        self.failed: dict[tuple[int, bool], set[_Mode]] = {}
         self.why: dict[int, str] = {}
 
     def replan(
@@ -88,11 +90,16 @@ class Replanner:
         at = step * plan.dt if at is None else at
         why = self.why.get(step, "")
         complete = seen is not None and all(k in seen for k in range(step))
-        failed = self.failed.setdefault(step, set())
+        failed = self.failed.setdefault((step, abs(at - step * plan.dt) > 1e-6), set())
         for mode in sorted(MODES, key=lambda m: (not m.full_length, not m.seen, m.predicted != self.predicting)):
             if (mode.seen and not complete) or mode in failed:
                 continue
-            planner = planner_for(self.automaton, self.settings, self.seed)
+            left = REPLAN_TIME_LIMIT - (time.perf_counter() - started)
+            if left <= 0.05:
+                why = why or f"no plan within the replanning time limit ({REPLAN_TIME_LIMIT:g} s)"
+                break
+            settings = dataclasses.replace(self.settings, time_limit=min(self.settings.time_limit, left))
+            planner = planner_for(self.automaton, settings, self.seed)
             past = Past(
                 step,
                 observed,

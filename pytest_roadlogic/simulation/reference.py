@@ -31,6 +31,7 @@ TAIL = 4.0
 # next larger than a gentle plan's (the continuous encoding's 2 m/s^3 over its 1 s step): a step
 # into braking or speeding up that the scenario asks, which its driver acts on at that instant
 ONSET = 3.0
+STANDSTILL = 0.1  # m/s: a reference this slow has stopped
 
 
 @dataclass(frozen=True)
@@ -80,6 +81,8 @@ class Reference:
         self._times = np.array([w.time for w in self.waypoints])
         self._pos = np.array([w.position for w in self.waypoints])
         self._vel = np.array([w.speed for w in self.waypoints])
+        if self.brisk:
+            self._stop_at_rate()
         self._lanes = [w.lane for w in self.waypoints]
         speed, rate = self._vel[0], self.runup_acceleration
         # seconds into the run-up when the vehicle stops accelerating (never, with no run-up's rate)
@@ -91,12 +94,40 @@ class Reference:
         self.start_speed = 0.0 if self.runup > 0 else float(speed)
         # the waypoint times at which the planned acceleration steps by more than ONSET: a driver
         # acts on such a change when it comes, not before (a smooth tracker that looks ahead brakes
-        # early, and a phase asking the speed it held ends before its time)
+        # early, and a phase asking the speed it held ends before its time); a standstill is none
+        # (a car braking to a standstill keeps braking into it: no change it waits for)
         self.onsets = self._times[:0]
         if self.brisk:
             steps = np.diff(self._vel) / np.maximum(np.diff(self._times), 1e-9)
             jumps = np.abs(np.diff(np.concatenate([[0.0], steps])))
-            self.onsets = self._times[:-1][jumps > ONSET]
+            self.onsets = self._times[:-1][(jumps > ONSET) & (self._vel[:-1] > STANDSTILL)]
+
+    def _stop_at_rate(self) -> None:
+        """A car braking briskly to a standstill stops at its braking rate. Its plan, in whole
+        steps, reaches the standstill at the end of a step and so brakes gently over that last one
+        (from 2 m/s to 0 in 1 s, where it braked at 6 m/s^2 before): tracked as planned, the car
+        crept to a stop and its mean rate fell short of the asked one. The motion instead brakes on
+        at the step before's rate and stands where that stops it (short of the planned place by at
+        most half the last step's distance), standing there while the plan stands."""
+        times, pos, vel = list(self._times), list(self._pos), list(self._vel)
+        k = 1
+        while k < len(vel) - 1:
+            rate = (vel[k - 1] - vel[k]) / (times[k] - times[k - 1])
+            last = (vel[k] - vel[k + 1]) / (times[k + 1] - times[k])
+            if vel[k] > STANDSTILL and vel[k + 1] <= STANDSTILL and rate > last + 1e-6 and rate > ONSET:
+                stop_time = times[k] + vel[k] / rate
+                stop = pos[k] + vel[k] ** 2 / (2 * rate)
+                times.insert(k + 1, stop_time)
+                pos.insert(k + 1, stop)
+                vel.insert(k + 1, 0.0)
+                j = k + 2
+                while j < len(vel) and vel[j] <= STANDSTILL:
+                    pos[j] = stop
+                    j += 1
+                k = j
+                continue
+            k += 1
+        self._times, self._pos, self._vel = np.array(times), np.array(pos), np.array(vel)
 
     def next_onset(self, time: float) -> float:
         """The first onset after ``time`` (s), or infinity."""

@@ -121,3 +121,34 @@ def test_a_collision_or_leaving_the_road_is_never_accepted_even_when_the_guards_
     assert [i.kind for i in verdict.incidents] == [incident]
     assert not verdict.accepted
     assert incident in verdict.explain()
+
+
+def braking_to_a_stop(brisk: bool):
+    """A reference braking from 14 m/s at 6 m/s^2 from t = 1 s, its plan in whole steps: 14, 14, 8,
+    2, then standing (the plan's last braking step brakes 2 m/s^2: it stands at its end)."""
+    from pytest_roadlogic.roads.road import Road
+    from pytest_roadlogic.simulation.reference import Reference, Waypoint
+
+    speeds = [14.0, 14.0, 8.0, 2.0, 0.0, 0.0, 0.0]
+    positions = [0.0]
+    for before, after in zip(speeds, speeds[1:]):
+        positions.append(positions[-1] + (before + after) / 2)
+    waypoints = [Waypoint(float(k), p, 1, v) for k, (p, v) in enumerate(zip(positions, speeds))]
+    return Reference("lead", 0.0, 0.0, waypoints, Road(3), brisk=brisk), positions
+
+
+def test_a_car_braking_briskly_to_a_standstill_brakes_on_at_its_rate_into_it_and_stands_there():
+    reference, positions = braking_to_a_stop(brisk=True)
+    stop = 3.0 + 2.0 / 6.0
+    assert reference.v([3.2])[0] == pytest.approx(2.0 - 6.0 * 0.2, abs=1e-6)
+    assert reference.v([stop, 4.0, 6.0]).tolist() == pytest.approx([0.0, 0.0, 0.0])
+    stands = positions[3] + 2.0**2 / (2 * 6.0)
+    assert reference.s([stop, 5.0, 6.0]).tolist() == pytest.approx([stands] * 3)
+    assert stands < positions[4], "short of the planned place, by less than the last step's distance"
+    assert reference.next_onset(2.5) == np.inf, "a standstill is no onset the car waits for"
+
+
+def test_a_car_not_braking_briskly_follows_its_plan_through_the_last_step():
+    reference, positions = braking_to_a_stop(brisk=False)
+    assert reference.v([3.5])[0] > 0.5, "the plan's gentle last step, as planned"
+    assert reference.s([4.0])[0] == pytest.approx(positions[4])

@@ -275,9 +275,11 @@ def node_facts(node: int, guard: Guard, settings: ContinuousSettings, automaton:
         low, high = inset(bound.low, bound.high, automaton.planned_margin(bound, margin))
         if bound.term.quantity == SPEED and bound.term.reference is None and bound.low <= 0:
             low = 0.0  # no margin below a standstill: no vehicle undershoots it (none reverses)
-        sides = (("at_least", low, low), ("at_most", high, high))
+        sides = (("at_least", low, bound.low), ("at_most", high, bound.high))
         kind = "within"
-    sides = [(name, value) for name, value, end in sides if math.isfinite(end)]
+    # each side as planned (with the margin) and as written (``written_``: what a replan's past
+    # and observed steps are held to, as the monitor holds the trace)
+    sides = [(name, value, end) for name, value, end in sides if math.isfinite(end)]
     if kind == "outside" and not sides:
         return ["% never holds"]
     if headway:
@@ -287,10 +289,12 @@ def node_facts(node: int, guard: Guard, settings: ContinuousSettings, automaton:
             f"headway({node},{ahead},{behind}).",
             f"headway_gap({node},{number(bound.term.offset)}).",
         ]
-        facts += [f"headway_{name}({node},{number(-value)})." for name, value in sides]
+        facts += [f"headway_{name}({node},{number(-value)})." for name, value, _ in sides]
+        facts += [f"written_headway_{name}({node},{number(-end)})." for name, _, end in sides]
         return facts
     facts = [f"{kind}({node}).", *_term_facts(node, bound)]
-    facts += [f"{name}({node},{number(value)})." for name, value in sides]
+    facts += [f"{name}({node},{number(value)})." for name, value, _ in sides]
+    facts += [f"written_{name}({node},{number(end)})." for name, _, end in sides]
     if kind == "within" and bound.term.quantity == SPEED:
         facts.append(f"speed_bound({node}).")
     return facts
