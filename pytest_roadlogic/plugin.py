@@ -338,6 +338,15 @@ class ScenarioItem(pytest.Item):
             self._fail_if_mostly_not_exercised()
         except ScenarioFailed as failure:
             self._report_failure(runner, failure.result, failure.summary)
+        except ExceptionGroup as group:
+            # Hypothesis's FlakyFailure: a case failed, and not again when Hypothesis ran its values
+            # once more (a time limit is wall-clock time, on a machine others share): the failure
+            # is reported as it happened, saying so
+            failed = _first_failure(group)
+            if failed is None:
+                raise
+            again = "it did not fail again when rerun at the same values (a time limit counts wall-clock time)"
+            self._report_failure(runner, failed.result, "; ".join(filter(None, (failed.summary, again))))
         except NoSuchVehicle as error:
             missing = error  # failed below, outside the handler: not as a chained "During handling"
         finally:
@@ -522,6 +531,16 @@ class ScenarioItem(pytest.Item):
         return self.path, self.scenario.scenario.location.line - 1, f"scenario {self.scenario.name}"
 
 
+def _first_failure(group: BaseExceptionGroup) -> ScenarioFailed | None:
+    """The first ``ScenarioFailed`` inside ``group`` (nested groups too), or None."""
+    for error in group.exceptions:
+        if isinstance(error, ScenarioFailed):
+            return error
+        if isinstance(error, BaseExceptionGroup) and (found := _first_failure(error)) is not None:
+            return found
+    return None
+
+
 def _replays(item: ScenarioItem, case) -> bool:
     """Whether ``case`` is a case of ``item``: its file (relative to the rootdir) and its scenario."""
     return (
@@ -624,7 +643,7 @@ class SessionSummary:
         self.items += 1
         from .dut.catalogue import point_from
 
-        point = point_from(report.nodeid, properties)
+        point = point_from(report.nodeid, properties, report.passed, "" if report.passed else str(report.longrepr))
         if point is not None:
             self.test_points.append(point)
         for name, value in properties.items():

@@ -1,8 +1,9 @@
 """A vehicle-under-test catalogue's summary: one row per test point, and a grade to track.
 
 A test point is one scenario item run with a vehicle under test (``pytest scenarios/dut/``): it
-passed when every case that tested something passed, failed when a case failed an oracle, and was
-not exercised when no case tested anything. The grade is the share of test points passed. The
+failed when a case failed an oracle; passed when its item passed and a case tested something; and
+was not exercised otherwise: no case tested anything, or its item failed without an oracle failing
+(most cases tested nothing, a case timed out or had no plan: the row says which). The grade is the share of test points passed. The
 rows are read from the items' JUnit properties (the plugin's), so that a session's workers and a
 JUnit file give the same summary; the plugin prints it, the HTML report shows it.
 """
@@ -14,6 +15,8 @@ from dataclasses import dataclass
 
 from ..outcomes import DUT_FAILED, NOT_EXERCISED, PASSED, key
 from ..registries.oracles import ORACLES
+
+MOST_SAID = 160  # characters of an item's failure in a row
 
 
 @dataclass(frozen=True)
@@ -30,16 +33,21 @@ class TestPoint:
     not_exercised: int
     worst: dict[str, object]
     failure: str = ""
+    item_passed: bool = True
+    why_not: str = ""  # why the item failed without an oracle failing (its report's first line)
 
     @property
     def verdict(self) -> str:
         if self.failed:
             return DUT_FAILED
-        return PASSED if self.passed else NOT_EXERCISED
+        return PASSED if self.passed and self.item_passed else NOT_EXERCISED
 
 
-def point_from(name: str, properties: dict[str, object]) -> TestPoint | None:
-    """The test point of an item with these JUnit ``properties``; None without a vehicle under test."""
+def point_from(
+    name: str, properties: dict[str, object], item_passed: bool = True, report: str = ""
+) -> TestPoint | None:
+    """The test point of an item with these JUnit ``properties``, whether the item passed and its
+    failure's report; None without a vehicle under test."""
     if "vehicle_under_test" not in properties:
         return None
     return TestPoint(
@@ -49,6 +57,8 @@ def point_from(name: str, properties: dict[str, object]) -> TestPoint | None:
         not_exercised=int(properties.get(key(NOT_EXERCISED), 0)),
         worst={o.value_key: properties.get(f"dut_{o.value_key}", "inf") for o in ORACLES},
         failure=str(properties.get("explanation", "")),
+        item_passed=item_passed,
+        why_not=next((line.strip() for line in report.splitlines() if line.strip()), "")[:MOST_SAID],
     )
 
 
@@ -77,7 +87,7 @@ def rows(points: list[TestPoint]) -> list[list[str]]:
             p.verdict,
             f"{p.passed}/{p.failed}/{p.not_exercised}",
             *(_value(p.worst[o.value_key]) for o in ORACLES),
-            p.failure if p.verdict == DUT_FAILED else "",
+            p.failure if p.verdict == DUT_FAILED else p.why_not if not p.item_passed else "",
         ]
         for p in sorted(points, key=lambda p: p.name)
     ]

@@ -34,3 +34,16 @@ def test_verdicts_grade_and_table_say_what_each_test_point_did():
     assert "failed" in failed_row and "2/1/0" in failed_row and "1.20" in failed_row
     assert failed_row.endswith("dut.car: time to collision 1.20 s")
     assert "<table" in html_table(points) and "grade 33%" in html_table(points)
+
+
+def test_an_item_that_failed_without_an_oracle_failing_is_not_exercised_and_its_row_says_why():
+    # a case ran over its time limit, or most cases tested nothing: the item failed, so the test
+    # point did not pass, whatever its other cases did
+    timed_out = point_from(
+        "d.osc::d", properties(passed=1), item_passed=False, report="simulation timed out: over 120 s\nmore lines"
+    )
+    mostly = point_from("e.osc::e", properties(passed=4, not_exercised=6), item_passed=False, report="6 of 10 ...")
+    assert [timed_out.verdict, mostly.verdict] == ["not exercised", "not exercised"]
+    assert grade([timed_out, mostly]) == "grade 0% (0 of 2 test points passed, 0 failed, 2 not exercised)"
+    row = next(line for line in text_table([timed_out]) if line.startswith("d.osc::d"))
+    assert row.endswith("simulation timed out: over 120 s")

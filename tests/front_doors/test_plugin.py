@@ -474,3 +474,31 @@ def test_every_option_is_a_run_setting_and_unless_it_says_how_cases_are_drawn_a_
     command = case.command()
     assert "--min-gap 3.0" in command and "--tries 2" in command and "--road-speed 20.0..30.0mps" in command
     assert "--dut-driver late-acc" in command and "--encoding" not in command, "defaults are not repeated"
+
+
+FLAKY_CONFTEST = f"""
+import sys
+sys.path.insert(0, {str(ROOT)!r})
+from tests.drivers import NeverChangesLane
+
+calls = []
+
+def pytest_roadlogic_driver(config, scenario, vehicle):
+    if vehicle != "v1":
+        return None
+    calls.append(vehicle)
+    return NeverChangesLane() if len(calls) == 1 else None
+"""
+
+
+def test_a_failure_that_does_not_come_again_when_rerun_is_reported_as_it_happened_without_a_traceback(pytester):
+    # as a simulation over its wall-clock limit on a loaded machine: Hypothesis reruns the failing
+    # values, they pass, and it raises its FlakyFailure (an exception group)
+    copy(pytester, SCENARIOS / "overtake.osc")
+    pytester.makeconftest(FLAKY_CONFTEST + PROFILE)
+    result = pytester.runpytest_subprocess("--hypothesis-profile", "quick", "--roadlogic-tries", "1", *QUIET)
+    result.assert_outcomes(failed=1)
+    report = result.stdout.str()
+    assert "Traceback" not in report + result.stderr.str(), report
+    assert "it did not fail again when rerun at the same values" in report
+    assert "scenario overtake: the simulation was not accepted (non-conformant) at these values" in report
