@@ -167,3 +167,19 @@ def test_the_grid_encoding_refuses_the_acceleration_modifier_at_its_place(automa
         GridPlanner(automaton, GridSettings(), 1).first()
     report = raised.value.report()
     assert "50_acceleration.osc:13:" in report and "continuous" in report, report
+
+
+STOP_AND_STAND = HARD_STOP.replace(
+    "            acceleration([-8mpsps..-6mpsps])\n",
+    "            acceleration([-8mpsps..-6mpsps])\n        stand: lead.drive(duration: 3s) with:\n            speed(0kph)\n",
+)
+
+
+def test_a_car_asked_to_stand_with_speed_0kph_is_accepted_standing_still():
+    # it stops 4 s into the 6 s brake and stands 5 s: a drive at 0 km/h asks no progress of it (it
+    # had been required to creep forward, and a car standing exactly still was not accepted)
+    checked = check_text(STOP_AND_STAND, "stop_and_stand.osc")
+    checked.raise_for_errors()
+    automaton = build_automaton(checked.scenarios[0])
+    trace = speed_trace(automaton, [(0, 27.78), (3, 27.78), (7, 0.0), (14, 0.0)], actor="lead")
+    assert monitor(automaton, trace).accepted
