@@ -273,12 +273,14 @@ def node_facts(node: int, guard: Guard, settings: ContinuousSettings, automaton:
         kind = "outside"
     else:
         low, high = inset(bound.low, bound.high, automaton.planned_margin(bound, margin))
-        if bound.term.quantity == SPEED and bound.term.reference is None and bound.low <= 0:
+        standstill = bound.term.quantity == SPEED and bound.term.reference is None and bound.low <= 0
+        if standstill:
             low = 0.0  # no margin below a standstill: no vehicle undershoots it (none reverses)
-        sides = (("at_least", low, bound.low), ("at_most", high, bound.high))
+        sides = (("at_least", low, 0.0 if standstill else low - margin), ("at_most", high, high + margin))
         kind = "within"
-    # each side as planned (with the margin) and as written (``written_``: what a replan's past
-    # and observed steps are held to, as the monitor holds the trace)
+    # each side as planned and with the margin's slack (``written_``: what a replan's past and
+    # observed steps are held to: the range as written, or a sampled band widened by the margin;
+    # the margin is for tracking error still to come, and an observed state has made its own)
     sides = [(name, value, end) for name, value, end in sides if math.isfinite(end)]
     if kind == "outside" and not sides:
         return ["% never holds"]
