@@ -61,6 +61,7 @@ class CrossEntropyProvider(PrimitiveProvider):
         self._drawn: list[tuple[Key, int]] = []  # this sample's (choice, bucket)
         self._history: list[tuple[float, list[tuple[Key, int]]]] = []  # (score, choices) per observed sample
         self._samples = 0  # samples drawn so far, those rejected too
+        self._following: list[list[tuple[Key, int]]] = []  # this sample's elite (``_elite``), for every choice
         self._flips: list[bool] = []  # per choice: whether the corners' order starts at its highest value
 
     # ------------------------------------------------------------ Hypothesis's protocol
@@ -71,6 +72,7 @@ class CrossEntropyProvider(PrimitiveProvider):
     @contextlib.contextmanager
     def _sample(self) -> Iterator[None]:
         self._drawn = []
+        self._following = self._elite() if self.steered else []
         try:
             yield
         finally:
@@ -158,11 +160,10 @@ class CrossEntropyProvider(PrimitiveProvider):
         next to it (so that the search moves past the best buckets seen, toward a failure beyond
         them), else uniformly."""
         buckets = key[1]
-        elite = self._elite() if self.steered else []
-        if elite:
+        if self._following:
             followed = MOST_FOLLOWED * len(self._history) / (len(self._history) + SETTLE)
             if self._random.random() < followed:
-                used = [bucket for choices in elite for k, bucket in choices if k == key]
+                used = [bucket for choices in self._following for k, bucket in choices if k == key]
                 if used:
                     bucket = self._random.choice(used) + self._random.choice((-1, 0, 0, 1))
                     return min(buckets - 1, max(0, bucket))

@@ -12,6 +12,7 @@ case (``outcomes``), on the seconds per stage, and on how Hypothesis is set up.
 
 from __future__ import annotations
 
+import contextlib
 import math
 import time
 from collections.abc import Callable, Iterator
@@ -279,16 +280,15 @@ class Runner:
                 suppress_health_check=list(HealthCheck),
             )
         seed = self.settings.seed if sampling_seed is None else sampling_seed
-        test = hypothesis.given(strategy(self.scenario, shard))(example)
-        if not search or self.settings.search == HYPOTHESIS_SEARCH:
-            hypothesis.seed(seed)(chosen(test))()
-            return
-        from .falsification import backend, untraced
+        drawing = contextlib.nullcontext()
+        if search and self.settings.search != HYPOTHESIS_SEARCH:
+            from .falsification import backend, untraced
 
-        # the random or cross-entropy search: a backend of Hypothesis's that draws the choices
-        steered = self.settings.search == CROSS_ENTROPY
-        with untraced():
-            hypothesis.seed(seed)(hypothesis.settings(chosen, backend=backend(seed, steered))(test))()
+            # the random or cross-entropy search: a backend of Hypothesis's that draws the choices
+            chosen = hypothesis.settings(chosen, backend=backend(seed, self.settings.search == CROSS_ENTROPY))
+            drawing = untraced()
+        with drawing:
+            hypothesis.seed(seed)(chosen(hypothesis.given(strategy(self.scenario, shard))(example)))()
 
     def explained(self, result: CaseResult) -> CaseResult:
         """A case without a plan, run again to say why: the constraints that cannot hold together

@@ -66,9 +66,9 @@ class Speed(AnchoredModifier):
         refuse_negative_speed(binding, "speed", context, relative=any(binding[r] is not None for r in RELATIONS))
 
     def translate(self, use: Use, phase: Phase) -> None:
-        super().translate(use, phase)
-        guard = self.guard(use)
-        if self.anchor(use.binding) == "all" and guard.term.reference is None and guard.high <= SPEED_TOLERANCE:
+        guard, anchor = self.guard(use), self.anchor(use.binding)
+        phase.anchor(guard, anchor)
+        if anchor == "all" and guard.term.reference is None and guard.high <= SPEED_TOLERANCE:
             # a car asked to stand (``speed(0kph)`` throughout) makes no progress to require: it
             # stands, as one that braked to a standstill does (``change_speed`` to 0)
             phase.drives = False
