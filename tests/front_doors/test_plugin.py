@@ -102,11 +102,16 @@ settings.register_profile("quick", max_examples=2, phases=[Phase.explicit, Phase
 """
 
 
-def test_the_driver_hook_drives_the_vehicle_under_test_and_a_bad_one_fails_with_a_replayable_report(pytester):
+def overtake_driven_by(pytester, conftest: str):
+    """overtake.osc under pytest with ``conftest``'s drivers and the quick profile (a Hypothesis
+    profile is respected: two examples, no shrinking, each would be a simulation), one try."""
     copy(pytester, SCENARIOS / "overtake.osc")
-    # a Hypothesis profile is respected: two examples, no shrinking (each would be a simulation)
-    pytester.makeconftest(DRIVER_CONFTEST + PROFILE)
-    result = pytester.runpytest_subprocess("--hypothesis-profile", "quick", "--roadlogic-tries", "1", *QUIET)
+    pytester.makeconftest(conftest + PROFILE)
+    return pytester.runpytest_subprocess("--hypothesis-profile", "quick", "--roadlogic-tries", "1", *QUIET)
+
+
+def test_the_driver_hook_drives_the_vehicle_under_test_and_a_bad_one_fails_with_a_replayable_report(pytester):
+    result = overtake_driven_by(pytester, DRIVER_CONFTEST)
     result.assert_outcomes(failed=1)
     report = result.stdout.str()
     assert "scenario overtake: the simulation was not accepted (non-conformant) at these values" in report
@@ -494,9 +499,7 @@ def pytest_roadlogic_driver(config, scenario, vehicle):
 def test_a_failure_that_does_not_come_again_when_rerun_is_reported_as_it_happened_without_a_traceback(pytester):
     # as a simulation over its wall-clock limit on a loaded machine: Hypothesis reruns the failing
     # values, they pass, and it raises its FlakyFailure (an exception group)
-    copy(pytester, SCENARIOS / "overtake.osc")
-    pytester.makeconftest(FLAKY_CONFTEST + PROFILE)
-    result = pytester.runpytest_subprocess("--hypothesis-profile", "quick", "--roadlogic-tries", "1", *QUIET)
+    result = overtake_driven_by(pytester, FLAKY_CONFTEST)
     result.assert_outcomes(failed=1)
     report = result.stdout.str()
     assert "Traceback" not in report + result.stderr.str(), report
