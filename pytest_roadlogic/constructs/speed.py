@@ -7,12 +7,15 @@ and stays within a band of it, so it varies by 1.5 m/s at most).
 
 from __future__ import annotations
 
+import math
+
 from ..frontend import model
 from ..frontend.errors import SourceLocation, error_at
 from ..frontend.semantics.library import AT, DURATION, Binding, Parameter, Signature
 from ..frontend.semantics.tolerances import ACCELERATION_TOLERANCE, SPEED_TOLERANCE, widened
+from ..frontend.semantics.values import EvaluationError, evaluate
 from ..frontend.syntax.units import ACCELERATION, SPEED
-from ..logic.automaton import MeanAcceleration
+from ..logic.automaton import MeanAcceleration, ShapedSpeedChange
 from ..logic.guards import SPEED as SPEED_Q
 from ..logic.guards import Bound, Guard, Term
 from ..logic.phase import Phase, Variant
@@ -104,13 +107,43 @@ class KeepSpeedAction(Action):
         phase.branch(keep_speed_variants(use.actor, use.location))
 
 
+# a speed change's rate_profile (the standard's dynamics_shape since 2.0, rate_profile in 1.0) -> the
+# shape this tool plans: 1.0's constant rate is linear, its asap a step; smooth, the motion planner's
+# own (rate_peak then bounds the acceleration)
+SHAPES = {
+    "linear": "linear",
+    "constant": "linear",
+    "cubic": "cubic",
+    "sinusoidal": "sinusoidal",
+    "step": "step",
+    "asap": "step",
+    "smooth": None,
+}
+# m/s^2: the mean a change asked at once (step) is judged to reach at least: no car changes its
+# speed at once, so it is planned at the car's limit (4 m/s^2 up, 8 down) and judged brisk
+STEP_LEAST = 3.0
+
+
+def profile_of(binding: Binding, env: dict) -> tuple[str | None, model.Argument | None]:
+    """The rate_profile given (a member, or a parameter whose value is one) and its argument."""
+    given = binding["rate_profile"]
+    if given is None:
+        return None, None
+    try:
+        value = evaluate(given.value, env)
+    except EvaluationError:
+        value = given.value
+    return (value.name.rpartition(".")[2] if isinstance(value, model.Name) else None), given
+
+
 class ChangeSpeed(Action):
     """``change_speed(target)``: the target speed (+- the tolerance for a single value) at the phase's
-    end. ``rate_peak: a``: the phase's mean acceleration lies within -a..a (a mean, as for the
-    ``acceleration`` modifier: the plan keeps it, the car's instantaneous peak is not checked).
-    ``rate_profile: smooth`` is what every run does (the motion planner's trajectories are
-    jerk-optimal); ``constant`` and ``asap`` shape the profile inside the phase, which the plan
-    does not fix, so they are refused rather than silently read as smooth."""
+    end. ``rate_profile`` (the standard's ``dynamics_shape``) with ``rate_peak: p``: the speed moves
+    to the target in that shape, its acceleration peaking at p (``ShapedSpeedChange``): ``linear``
+    (1.0's ``constant``) at p throughout, ``cubic`` and ``sinusoidal`` from none to p and back to
+    none; ``step`` (1.0's ``asap``) asks the target at once, which no car can: planned at the
+    car's limit. Without a shape (or ``smooth``, what the motion planner does), ``rate_peak: p``
+    bounds the acceleration within -p..p on every step (the monitor judges the mean)."""
 
     asks = ASKS_SPEED
     signature = Signature(
@@ -118,7 +151,7 @@ class ChangeSpeed(Action):
         (
             Parameter("target", "speed", positional=True),
             DURATION,
-            Parameter("rate_profile", "enum:rate_profile"),
+            Parameter("rate_profile", "enum:dynamics_shape"),
             Parameter("rate_peak", "acceleration"),
         ),
         required=(("target",),),
@@ -127,21 +160,27 @@ class ChangeSpeed(Action):
 
     def check(self, binding: Binding, context: CheckContext) -> None:
         refuse_negative_speed(binding, "target", context)
-        profile = binding["rate_profile"]
-        if (
-            profile is not None
-            and isinstance(profile.value, model.Name)
-            and profile.value.name.rpartition(".")[2] in ("constant", "asap")
-        ):
-            context.error(
-                profile.location,
-                f"not supported: rate_profile: {profile.value.name.rpartition('.')[2]} (the speed's shape inside the phase)",
-                "the plan fixes the speed at the phase's ends: bound the mean rate with rate_peak, or drop rate_profile (smooth is what every run does)",
-            )
         peak = binding["rate_peak"]
         value = context.evaluate(peak) if peak is not None else None
         if value is not None and value.low <= 0:
             context.error(peak.value.location, "rate_peak must be a positive acceleration", "e.g. rate_peak: 3mpss")
+        shape, given = profile_of(binding, {})
+        if given is None or shape not in SHAPES or SHAPES[shape] is None:
+            return
+        if SHAPES[shape] == "step":
+            if peak is not None:
+                context.warning(
+                    peak.location,
+                    f"rate_peak has no effect with rate_profile: {shape}: the target is asked at once, "
+                    "which a car meets at its limit",
+                    "drop rate_peak, or give rate_profile: linear to change at that rate",
+                )
+        elif peak is None:
+            context.error(
+                given.location,
+                f"rate_profile: {shape} needs rate_peak: the peak acceleration of the change",
+                "e.g. rate_profile: linear, rate_peak: 3mpss",
+            )
 
     def translate(self, use: Use, phase: Phase) -> None:
         if use.argument("target") is None:
@@ -152,13 +191,28 @@ class ChangeSpeed(Action):
             # a car braking to a standstill stands there: it makes no progress to require, and its
             # speed at the end (and an asked rate) say what it does
             phase.drives = False
-        if use.argument("rate_peak") is not None:
-            _, peak = use.range("rate_peak", ACCELERATION, "an acceleration such as 3mpss")
+        name, given = profile_of(use.binding, use.env)
+        shape = SHAPES.get(name) if name is not None else None
+        if shape == "step":
             phase.rates.append(
-                MeanAcceleration(
-                    use.actor, -peak, peak, source=use.argument("rate_peak").location, standstill=SPEED_TOLERANCE
+                ShapedSpeedChange(
+                    use.actor, STEP_LEAST, math.inf, source=given.location, shape=shape, target=(max(0.0, low), high)
                 )
             )
+            return
+        if use.argument("rate_peak") is None:
+            return
+        peak_low, peak = use.range("rate_peak", ACCELERATION, "an acceleration such as 3mpss")
+        source = use.argument("rate_peak").location
+        if shape is None:
+            phase.rates.append(MeanAcceleration(use.actor, -peak, peak, source=source, standstill=SPEED_TOLERANCE))
+            return
+        peak_low, peak = widened(peak_low, peak, ACCELERATION_TOLERANCE)
+        phase.rates.append(
+            ShapedSpeedChange(
+                use.actor, max(0.0, peak_low), peak, source=source, shape=shape, target=(max(0.0, low), high)
+            )
+        )
 
 
 class AssignSpeed(Action):

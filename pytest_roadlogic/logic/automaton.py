@@ -132,6 +132,50 @@ class MeanAcceleration(PhaseBound):
         return end
 
 
+# a speed change's shape (the standard's dynamics_shape) -> its peak acceleration over its mean:
+# linear and step keep one rate; cubic, v0 + dv (3s^2 - 2s^3), peaks at 1.5 times its mean;
+# sinusoidal, v0 + dv (1 - cos(pi s)) / 2, at pi/2 times it
+SHAPE_PEAK_OVER_MEAN = {"linear": 1.0, "step": 1.0, "cubic": 1.5, "sinusoidal": math.pi / 2}
+
+
+@dataclass(frozen=True)
+class ShapedSpeedChange(MeanAcceleration):
+    """``change_speed(target, rate_profile: shape, rate_peak: p)``: the speed moves from its value at
+    the phase's start to the target in the standard's ``dynamics_shape``, its acceleration peaking at
+    p (low..high: the peak's size, m/s^2, either way). ``linear``: at p on every step until the
+    target; ``cubic`` / ``sinusoidal``: from no acceleration at the start to p halfway to none at the
+    end; ``step`` (the target at once, which no car can): at the car's limit, low..high the
+    least and most a brisk change is judged to have.
+
+    The planner keeps the shape on every step (``asp/continuous/rates.lp``). The monitor judges
+    the peak the shape implies from the mean, the shape's factor times |v(end) - v(start)| / the
+    time, from the phase's start to the first sample at the target (``target``, m/s: the action
+    ends when its target is reached, so a change made faster and then held is not read as a slow
+    one), or to the phase's end when it never gets there."""
+
+    shape: str = "linear"
+    target: tuple[float, float] = (0.0, math.inf)
+
+    construct: ClassVar[str] = "change_speed's rate_profile"
+    what: ClassVar[str] = "peak acceleration"
+    symbol: ClassVar[str] = "peak a"
+
+    def value(self, start: float, end: float, seconds: float) -> float:
+        return SHAPE_PEAK_OVER_MEAN[self.shape] * abs(end - start) / seconds
+
+    def span(self, series, begun: int, end: int) -> int:
+        """The first sample after the phase's start at which the speed is at the target, else its end."""
+        low, high = self.target
+        for k in range(begun + 1, end):
+            if low <= series[k] <= high:
+                return k
+        return end
+
+    def __str__(self) -> str:
+        over = f" over {self.phase}" if self.phase else ""
+        return f"{self.shape} speed change of {self.actor}{over}, {self.what} {self.low:g}..{self.high:g} {self.unit}"
+
+
 @dataclass(frozen=True)
 class ChangeOverPhase(PhaseBound):
     """A bound on how much the column changes between the phase's two ends, x(end) - x(start),

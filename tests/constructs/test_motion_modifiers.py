@@ -1,7 +1,7 @@
 """The standard's remaining motion vocabulary, each read as the README's scenario model says:
 ``distance(d)`` (metres covered in the phase), ``keep_position()`` (stand still),
 ``assign_speed(v)`` (the speed at the phase's start), ``change_speed(target, rate_peak: a)`` (the
-phase's mean acceleration within -a..a), ``change_lane([1..2], side)`` (one of those counts),
+acceleration within -a..a; its shapes: test_speed_shapes.py), ``change_lane([1..2], side)`` (one of those counts),
 ``along(path)`` and ``avoid_collisions(true)`` (always true on this tool's one road)."""
 
 import numpy as np
@@ -150,18 +150,3 @@ def _bounds(guard):
         inner = getattr(guard, "guard", None)
         return _bounds(inner) if inner is not None else ([guard] if hasattr(guard, "term") else [])
     return [b for p in parts for b in _bounds(p)]
-
-
-def test_rate_profile_smooth_is_what_every_run_does_and_the_shapes_the_plan_does_not_fix_are_refused():
-    change = "    do car1.change_speed(target: 15mps, duration: [3s..5s]{})\n"
-    plain = automaton_of(HEADER + change.format(""))
-    assert automaton_of(HEADER + change.format(", rate_profile: smooth")).describe() == plain.describe()
-    for shape in ("constant", "asap"):
-        errors = [
-            d
-            for d in check_text(HEADER + change.format(f", rate_profile: {shape}"), "top.osc").diagnostics
-            if d.severity == "error"
-        ]
-        assert [(d.location.line, d.message) for d in errors] == [
-            (6, f"not supported: rate_profile: {shape} (the speed's shape inside the phase)")
-        ]

@@ -4,11 +4,12 @@ The checks here are written from the rules, independently of the ASP encoding.
 """
 
 import dataclasses
+import math
 from pathlib import Path
 
 import pytest
 
-from pytest_roadlogic.logic.automaton import MeanAcceleration, Travelled
+from pytest_roadlogic.logic.automaton import MeanAcceleration, ShapedSpeedChange, Travelled
 from pytest_roadlogic.planning import GridPlanner, GridSettings
 
 SETTINGS = GridSettings()
@@ -71,6 +72,9 @@ def check_run(plan, automaton):
             assert timing.admits((step - begun) * plan.dt), f"{timing} broken at step {step}"
             for rate in timing.rates:
                 start, end = plan.at(rate.actor, begun), plan.at(rate.actor, step)
+                if isinstance(rate, ShapedSpeedChange):
+                    check_shape(plan, rate, begun, step)
+                    continue
                 if isinstance(rate, MeanAcceleration):  # every step's, but a standstill's
                     for k in range(begun + 1, step + 1):
                         before, after = plan.at(rate.actor, k - 1), plan.at(rate.actor, k)
@@ -89,6 +93,34 @@ def check_run(plan, automaton):
                 )
         location, last_step = transition.target, step
     assert location == automaton.final
+
+
+def check_shape(plan, rate, begun: int, step: int) -> None:
+    """A speed change in the standard's shape. Linear (and step): one way, at the peak (step: at
+    least its least) on every step but the last, where the car reaches its target, and those after
+    a standstill. Cubic and sinusoidal: at each step inside, the share of the change the curve
+    has made there (within a quarter m/s), the change's peak (the curve's factor times its mean)
+    within the band."""
+    speeds = [plan.at(rate.actor, k).speed for k in range(begun, step + 1)]
+    rates = [(b - a) / plan.dt for a, b in zip(speeds, speeds[1:])]
+    if rate.shape in ("linear", "step"):
+        sign = 1.0 if speeds[-1] >= speeds[0] else -1.0
+        for k, value in enumerate(rates):
+            size = sign * value
+            assert -1e-6 <= size <= rate.high + 1e-6, f"{rate} broken: {value:.2f} at step {begun + k + 1}"
+            last = k == len(rates) - 1 or speeds[k + 1] <= 1e-6
+            assert last or size >= rate.low - 1e-6, f"{rate} broken: {value:.2f} at step {begun + k + 1}"
+        return
+    length = len(rates)
+    for k in range(1, length):
+        s = k / length
+        share = 3 * s**2 - 2 * s**3 if rate.shape == "cubic" else (1 - math.cos(math.pi * s)) / 2
+        assert abs(speeds[k] - (speeds[0] + share * (speeds[-1] - speeds[0]))) <= 0.25 + 1e-4, (
+            f"{rate} broken: off its curve at step {begun + k}"
+        )
+    factor = 1.5 if rate.shape == "cubic" else math.pi / 2
+    peak = factor * abs(speeds[-1] - speeds[0]) / (length * plan.dt)
+    assert rate.low - 1e-6 <= peak <= rate.high + 1e-6, f"{rate} broken: peak {peak:.2f}"
 
 
 BENCHMARK = sorted((Path(__file__).resolve().parents[2] / "scenarios").glob("*.osc"))

@@ -747,9 +747,10 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks):
             return
         if kind.startswith("enum:"):
             enum = kind[5:]
-            members = self.enums[enum]
+            types = library.enum_types(enum)
+            members = tuple(m for t in types for m in self.enums[t])
             if isinstance(value, model.Name) and scenario.parameter(value.name) is not None:
-                if scenario.parameter(value.name).type != enum and value.enum is None and value.name in members:
+                if scenario.parameter(value.name).type not in types and value.enum is None and value.name in members:
                     # the argument's type decides: CARLA's examples declare `global start: string`
                     # and still write at: start
                     if (value.name, enum) not in self.shadowed:
@@ -760,7 +761,7 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks):
                             f"is taken, not as the {scenario.parameter(value.name).type} parameter of that name",
                             f"write {enum}!{value.name} to say so, or rename the parameter",
                         )
-                elif scenario.parameter(value.name).type != enum:
+                elif scenario.parameter(value.name).type not in types:
                     self.error(
                         value.location,
                         f"{parameter.name}: takes a {enum}, but {value.name!r} is a {scenario.parameter(value.name).type}",
@@ -769,7 +770,7 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks):
             if (
                 not isinstance(value, model.Name)
                 or value.name not in members
-                or (value.enum is not None and value.enum != enum)
+                or (value.enum is not None and value.enum not in types)
             ):
                 self.error(
                     value.location,

@@ -55,6 +55,15 @@ SCALAR_TYPES: Mapping[str, None] = LazyTable(
 
 # the standard library's enums (stdlib/osc/types.osc)
 ENUMS: Mapping[str, tuple[str, ...]] = LazyTable(lambda library: library.enums)
+# an enum the standard replaced, by its successor: a parameter of the successor's type still takes
+# the earlier enum's members (a speed change's rate_profile was a rate_profile in 1.0, with
+# constant/smooth/asap, and is a dynamics_shape since 2.0)
+ENUM_PREDECESSORS: Mapping[str, str] = {"dynamics_shape": "rate_profile"}
+
+
+def enum_types(enum: str) -> tuple[str, ...]:
+    """The enum types whose members a parameter of type ``enum`` takes: itself and its predecessor."""
+    return (enum, ENUM_PREDECESSORS[enum]) if enum in ENUM_PREDECESSORS else (enum,)
 
 
 @dataclass(frozen=True)

@@ -11,7 +11,14 @@ from __future__ import annotations
 import math
 from fractions import Fraction
 
-from ....logic.automaton import MeanAcceleration, SpeedGain, SymbolicAutomaton, Travelled
+from ....logic.automaton import (
+    SHAPE_PEAK_OVER_MEAN,
+    MeanAcceleration,
+    ShapedSpeedChange,
+    SpeedGain,
+    SymbolicAutomaton,
+    Travelled,
+)
 from ....logic.guards import HEADWAY, LANE, POSITION, SPEED, TRAVELED, Bound, Guard, Not, required_bounds
 from ...facts import atom, guard_nodes, inset, origin, with_automaton
 from .settings import ContinuousSettings
@@ -202,6 +209,9 @@ def rate_facts(automaton: SymbolicAutomaton, settings: ContinuousSettings, relax
                     if math.isfinite(high):
                         facts.append(f"gain_at_most({r},{length},{number(high)}).")
                 continue
+            if isinstance(rate, ShapedSpeedChange):
+                facts.extend(shape_facts(r, phase, actor, rate, settings, automaton, range(shortest, longest + 1)))
+                continue
             low, high = inset(rate.low, rate.high, automaton.planned_margin(rate, settings.acceleration_margin))
             facts.append(f"mean_acceleration({r},{phase},{actor}).")
             if math.isfinite(low):
@@ -209,6 +219,56 @@ def rate_facts(automaton: SymbolicAutomaton, settings: ContinuousSettings, relax
             if math.isfinite(high):
                 facts.append(f"step_at_most({r},{number(high)}).")
     return facts
+
+
+# m/s^2: the band below a car's limit in which a change asked at once (dynamics_shape step) is planned
+STEP_BAND = 1.0
+# m/s: how far a cubic or sinusoidal change's speed may stray from its shape at a step inside it
+SHAPE_SLACK = 0.25
+
+
+def shape_facts(
+    r: int, phase: str, actor: str, rate: ShapedSpeedChange, settings: ContinuousSettings, automaton, lengths
+) -> list[str]:
+    """A shaped speed change's facts (``asp/continuous/rates.lp``): linear, its peak (inset by
+    ``acceleration_margin``) on every step; step, a band at the car's limits either way; cubic and
+    sinusoidal, per length D the phase may have, the size of the change a peak in the band gives
+    over D steps and the speed the shape has at each step inside."""
+    if rate.shape == "step":
+        up = (settings.max_acceleration - STEP_BAND, settings.max_acceleration)
+        down = (-settings.min_acceleration - STEP_BAND, -settings.min_acceleration)
+        return [
+            f"held_rate({r},{phase},{actor}).",
+            f"rate_up({r},{number(up[0])},{number(up[1])}).",
+            f"rate_down({r},{number(down[0])},{number(down[1])}).",
+        ]
+    if rate.shape == "linear":
+        low, high = inset(rate.low, rate.high, automaton.planned_margin(rate, settings.acceleration_margin))
+        return [
+            f"held_rate({r},{phase},{actor}).",
+            f"rate_up({r},{number(low)},{number(high)}).",
+            f"rate_down({r},{number(low)},{number(high)}).",
+        ]
+    # no margin inside the peak's band: the change lasts whole steps, so the peak a length D gives
+    # moves by about peak / D from one length to the next (a cubic stop from 80 kph at 6 m/s^2:
+    # 6.7 over 5 s, 5.6 over 6 s), and a band inset by the margin would leave no length
+    low, high = rate.low, rate.high
+    factor = SHAPE_PEAK_OVER_MEAN[rate.shape]
+    facts = [f"shaped({r},{phase},{actor})."]
+    for length in lengths:
+        seconds = length * settings.dt
+        facts.append(f"shape_gain({r},{length},{number(low * seconds / factor)},{number(high * seconds / factor)}).")
+        for k in range(1, length):
+            share = shape_share(rate.shape, k / length)
+            facts.append(f"shape_point({r},{length},{k},{number(share)},{number(1 - share)},{number(SHAPE_SLACK)}).")
+    return facts
+
+
+def shape_share(shape: str, s: float) -> float:
+    """How much of its change a cubic or sinusoidal speed change has made at fraction ``s`` of its time."""
+    if shape == "cubic":
+        return 3 * s**2 - 2 * s**3
+    return (1 - math.cos(math.pi * s)) / 2
 
 
 def brisk(automaton: SymbolicAutomaton) -> set[str]:
