@@ -6,10 +6,10 @@ kind, hence no external file read and no entity expansion), and a file over ``MA
 refused before it is parsed. Every element keeps its line and column for the messages.
 
 Read: each road's id, name, length, junction, links (predecessor, successor), plan view (line,
-arc, spiral, poly3, paramPoly3), lane offset (refused unless zero: the routes here run along the
-reference line), lane sections with their right lanes (type, width records) and the speed of its
-type records; junctions' ids and names. Left lanes are read for the refusal of a route in them:
-routes run in the direction of the reference line (right-hand traffic).
+arc, spiral, poly3, paramPoly3), lane offset (the lanes' centre line off the reference line, as
+cubic records), lane sections with their right lanes (type, width records) and the speed of its
+type records; junctions' ids and names. Left lanes are counted: routes run in the direction of
+the reference line (right-hand traffic).
 """
 
 from __future__ import annotations
@@ -137,16 +137,22 @@ class MapLane:
 
     def width(self, ds):
         """Its width at ``ds`` metres into its section (an array or a number)."""
-        import numpy as np
+        return piecewise_cubic(self.widths, ds)
 
-        ds = np.asarray(ds, dtype=float)
-        result = np.zeros_like(ds)
-        for i, record in enumerate(self.widths):
-            end = self.widths[i + 1].offset if i + 1 < len(self.widths) else math.inf
-            inside = (ds >= record.offset - 1e-9) & (ds < end)
-            u = ds - record.offset
-            result = np.where(inside, record.a + record.b * u + record.c * u**2 + record.d * u**3, result)
-        return result
+
+def piecewise_cubic(records: tuple[LaneWidth, ...], u):
+    """The value of OpenDRIVE's cubic records (each from its ``offset`` on, a + b du + c du^2 + d du^3)
+    at ``u`` (an array or a number): 0 before the first record."""
+    import numpy as np
+
+    u = np.asarray(u, dtype=float)
+    result = np.zeros_like(u)
+    for i, record in enumerate(records):
+        end = records[i + 1].offset if i + 1 < len(records) else math.inf
+        inside = (u >= record.offset - 1e-9) & (u < end)
+        du = u - record.offset
+        result = np.where(inside, record.a + record.b * du + record.c * du**2 + record.d * du**3, result)
+    return result
 
 
 @dataclass(frozen=True)
@@ -181,6 +187,13 @@ class MapRoad:
     predecessor: Link | None
     successor: Link | None
     speed_limit: float | None  # m/s, the least of its type records' speeds; None: the map gives none
+    # the lane offset: metres left of the reference line at which its lanes begin, by records from
+    # their s on (none: the reference line)
+    lane_offset: tuple[LaneWidth, ...] = ()
+
+    def offset(self, s):
+        """The lane offset at ``s`` metres along the road (an array or a number)."""
+        return piecewise_cubic(self.lane_offset, s)
 
     @property
     def label(self) -> str:
@@ -279,15 +292,7 @@ def _road(path: Path, element: _Element) -> MapRoad:
     lanes = element.find("lanes")
     if lanes is None:
         raise MapError(path, "a road without <lanes>", "give its lane sections", element.line, element.column)
-    for offset in lanes.findall("laneOffset"):
-        if any(_number(path, offset, c, 0.0) for c in "abcd"):
-            raise MapError(
-                path,
-                "not supported: a lane offset (the lanes shifted off the reference line)",
-                "use a map whose lanes start at the reference line",
-                offset.line,
-                offset.column,
-            )
+    lane_offset = _lane_offset(path, lanes.findall("laneOffset"), length)
     starts = [_number(path, s, "s") for s in lanes.findall("laneSection")]
     if not starts:
         raise MapError(path, "a road without a lane section", "give one", lanes.line, lanes.column)
@@ -310,7 +315,37 @@ def _road(path: Path, element: _Element) -> MapRoad:
         _link(link, "predecessor"),
         _link(link, "successor"),
         min(speeds) if speeds else None,
+        lane_offset,
     )
+
+
+def _lane_offset(path: Path, records: list[_Element], length: float) -> tuple[LaneWidth, ...]:
+    """A road's lane offset records, in order of s; ``MapError`` at one that moves the lanes more
+    than ``MAX_LANE_WIDTH`` times ``MAX_LANES`` off the reference line (no real road's lanes lie
+    so far from it) or is not finite."""
+    import numpy as np
+
+    offsets = sorted(
+        ((LaneWidth(*(_number(path, r, n, 0.0) for n in ("s", "a", "b", "c", "d"))), r) for r in records),
+        key=lambda item: item[0].offset,
+    )
+    most = MAX_LANE_WIDTH * MAX_LANES
+    for i, (record, element) in enumerate(offsets):
+        end = offsets[i + 1][0].offset if i + 1 < len(offsets) else length
+        u = np.linspace(0.0, max(0.0, end - record.offset), 9)
+        with np.errstate(all="ignore"):
+            value = record.a + record.b * u + record.c * u**2 + record.d * u**3
+        if not np.all(np.isfinite(value)) or np.max(np.abs(value)) > most:
+            raise MapError(
+                path,
+                f"a lane offset that moves the lanes {np.max(np.abs(value)):g} m off the reference line",
+                f"give a lane offset within {most:g} m",
+                element.line,
+                element.column,
+            )
+    if not any(record.a or record.b or record.c or record.d for record, _ in offsets):
+        return ()  # all zero: the reference line
+    return tuple(record for record, _ in offsets)
 
 
 def _check_reference_line(path: Path, records: list[_Element], geometries: tuple[Geometry, ...]) -> None:

@@ -54,6 +54,14 @@ class Road:
             return np.zeros_like(np.asarray(x, dtype=float))
         return self.route.right_edge(np.asarray(x, dtype=float) + self.route_shift)
 
+    def inner_edge(self, x) -> np.ndarray:
+        """Metres left of the route's reference line at which its driving lanes begin, at ``x`` (0
+        on the straight road): the simulator's frame runs along the reference line, so a lateral
+        position in it is ``y`` less the lanes' width plus this."""
+        if self.route is None:
+            return np.zeros_like(np.asarray(x, dtype=float))
+        return self.route.inner_edge(np.asarray(x, dtype=float) + self.route_shift)
+
     def world(self, x, y, heading=0.0) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """World x, y and heading of road coordinates (on the straight road, the same)."""
         if self.route is None:

@@ -1,11 +1,12 @@
 """The road a scenario runs on (``Route``), and the choice of one in a map (``pick_route``).
 
 A route runs along one road of a map in the direction of its reference line (right-hand traffic:
-the road's right lanes), its lanes numbered as the planner numbers them: 0 at the reference line
-(the leftmost), then rightward. Its coordinates are the ones every stage reads: ``x`` metres along
-the reference line from the route's start and ``y`` metres left of the right edge of its lanes (on
-the straight road, exactly the coordinates the tool has always used). ``pose`` maps them to the
-world.
+the road's right lanes), its lanes numbered as the planner numbers them: 0 nearest the reference
+line (the leftmost), then rightward. Its driving lanes begin at their inner edge: the road's lane
+offset, and right of the lanes that are not for driving between it and them (a motorway's median
+border, e6mini's). Its coordinates are the ones every stage reads: ``x`` metres along the
+reference line from the route's start and ``y`` metres left of the right edge of its lanes (on the
+straight road, exactly the coordinates the tool has always used). ``pose`` maps them to the world.
 
 A route that would cross a junction is not picked yet: a road inside a junction (a connecting
 road) is never a route, and a route is one road, not a chain of them.
@@ -18,7 +19,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .opendrive_in import LaneSection, MapError, MapRoad, RoadMap
+from .opendrive_in import LaneSection, MapError, MapLane, MapRoad, RoadMap
 from .reference_line import ReferenceLine
 
 DRIVING = "driving"
@@ -78,7 +79,27 @@ class Route:
 
     def pose(self, x, y) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """World x, y and heading of the route's points (``x`` along, ``y`` left of its lanes' right edge)."""
-        return self.reference_line.pose(np.asarray(x, dtype=float), np.asarray(y, dtype=float) - self.width)
+        return self.reference_line.pose(np.asarray(x, dtype=float), self.lateral(x, y))
+
+    def lateral(self, x, y) -> np.ndarray:
+        """Metres left of the reference line of the route's points (``x`` along, ``y`` left of its
+        lanes' right edge): ``y`` less the lanes' width, from their inner edge."""
+        return self.inner_edge(x) + np.asarray(y, dtype=float) - self.width
+
+    def inner_edge(self, s) -> np.ndarray:
+        """Metres left of the reference line at which the driving lanes begin, at lengths ``s`` along
+        the route: the lane offset, less the lanes between it and them that are not for driving.
+        Before its start and past its end, its first and last values."""
+        s = np.clip(np.asarray(s, dtype=float), 0.0, self.length)
+        edge = np.asarray(self.road.offset(s), dtype=float)
+        for section in self.sections:
+            inner, _ = driving_lanes(section)
+            if not inner:
+                continue
+            last = section is self.sections[-1]
+            inside = (s >= section.s - 1e-9) & ((s < section.end - 1e-9) | last)
+            edge = edge - np.where(inside, sum(lane.width(s - section.s) for lane in inner), 0.0)
+        return edge
 
     def curvature(self, s) -> np.ndarray:
         """The reference line's curvature (1/m, positive to the left) at lengths ``s`` along the route."""
@@ -110,11 +131,10 @@ class Route:
         width = np.zeros_like(s)
         for section in self.sections:
             inside = (s >= section.s - 1e-9) & (s <= section.end + 1e-9)
-            if not inside.any() or lane >= len(section.right):
+            _, driving = driving_lanes(section)
+            if not inside.any() or lane >= len(driving):
                 continue
-            if any(section.right[k].type != DRIVING for k in range(lane + 1)):
-                continue
-            width = np.where(inside, section.right[lane].width(s - section.s), width)
+            width = np.where(inside, driving[lane].width(s - section.s), width)
         return width
 
     def right_edge(self, s) -> np.ndarray:
@@ -138,17 +158,22 @@ def curve_speed(route: Route) -> float:
     return (MAX_LATERAL_ACCELERATION / curvature) ** 0.5 if curvature > 0 else float("inf")
 
 
+def driving_lanes(section: LaneSection) -> tuple[tuple[MapLane, ...], tuple[MapLane, ...]]:
+    """A section's right lanes as a route takes them: (the lanes not for driving between the
+    reference line and the first driving lane, the driving lanes from there on, side by side)."""
+    first = next((k for k, lane in enumerate(section.right) if lane.type == DRIVING), len(section.right))
+    driving = []
+    for lane in section.right[first:]:
+        if lane.type != DRIVING:
+            break
+        driving.append(lane)
+    return section.right[:first], tuple(driving)
+
+
 def _through_lanes(road: MapRoad) -> tuple[int, int]:
-    """(driving lanes from the reference line that run the road's whole length, the most driving
-    lanes anywhere on it)."""
-    counts = []
-    for section in road.sections:
-        n = 0
-        for lane in section.right:
-            if lane.type != DRIVING:
-                break
-            n += 1
-        counts.append(n)
+    """(driving lanes side by side that run the road's whole length, the most driving lanes
+    anywhere on it)."""
+    counts = [len(driving_lanes(section)[1]) for section in road.sections]
     return min(counts), max(counts)
 
 
@@ -228,7 +253,7 @@ def pick_route(
             "ask for less (the lanes it names, path_min_driving_lanes, path_length, path_curve) or give a map with a road that has it",
         )
     _, road = max(fitting, key=lambda item: (item[0], -int(item[1].id) if item[1].id.isdigit() else 0))
-    widest = max(road.sections, key=lambda section: len(section.right))
-    width = float(widest.right[0].width(0.0))
+    widest = max(road.sections, key=lambda section: len(driving_lanes(section)[1]))
+    width = float(driving_lanes(widest)[1][0].width(0.0))
     stretch = curve_stretch(road, curve) if curve is not None else None
     return Route(road_map.path, road, _through_lanes(road)[1], width, road_map.data, stretch)

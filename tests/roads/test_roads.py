@@ -149,10 +149,10 @@ def test_a_map_with_a_document_type_is_refused_at_it_and_no_entity_is_read(tmp_p
         ),
         (
             "<OpenDRIVE><road id='1' length='10'><planView><geometry s='0' x='0' y='0' hdg='0' length='10'>"
-            "<line/></geometry></planView><lanes>\n<laneOffset s='0' a='1' b='0' c='0' d='0'/>"
+            "<line/></geometry></planView><lanes>\n<laneOffset s='0' a='1e6' b='0' c='0' d='0'/>"
             "<laneSection s='0'/></lanes></road></OpenDRIVE>",
             2,
-            "lane offset",
+            "a lane offset that moves the lanes 1e+06 m off the reference line",
         ),
         (
             "<OpenDRIVE>\n<road id='1' length='1e12'><planView><geometry s='0' x='0' y='0' hdg='0' length='1e12'>"
@@ -227,6 +227,58 @@ def test_set_map_runs_a_scenario_on_the_route_of_its_map_and_the_trace_carries_w
         assert columns["world_heading"][-1] - columns["world_heading"][0] > 0.2, name
     ego = trace.actors["ego"]
     assert np.abs(ego["y"] - road.center_y(2)).max() < 0.6, "the ego keeps its lane through the curve"
+
+
+def offset_map(path: Path) -> Path:
+    """A straight 600 m road along +x whose lanes move off the reference line, as published maps'
+    do: a lane offset rising from 0 to 3 m over its first 100 m (a cubic), then a 2 m median
+    border, then three 3.5 m driving lanes."""
+    lane = "<lane id='{id}' type='{type}'><width sOffset='0' a='{width}' b='0' c='0' d='0'/></lane>"
+    lanes = "".join(
+        lane.format(id=i, type=t, width=w)
+        for i, t, w in ((-1, "border", 2.0), (-2, "driving", 3.5), (-3, "driving", 3.5), (-4, "driving", 3.5))
+    )
+    return write(
+        path,
+        f"""
+        <?xml version="1.0"?>
+        <OpenDRIVE><header/>
+        <road id="1" length="600" junction="-1"><planView>
+        <geometry s="0" x="0" y="0" hdg="0" length="600"><line/></geometry></planView>
+        <lanes><laneOffset s="0" a="0" b="0" c="0.0009" d="-0.000006"/><laneOffset s="100" a="3" b="0" c="0" d="0"/>
+        <laneSection s="0"><left><lane id="1" type="driving"><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane></left>
+        <right>{lanes}</right></laneSection></lanes></road>
+        </OpenDRIVE>
+        """,
+    )
+
+
+def test_a_lane_offset_and_a_median_move_a_routes_lanes_off_the_reference_line(tmp_path):
+    route = pick_route(read_map(offset_map(tmp_path / "offset.xodr")), 3)
+    assert route.lanes == 3 and route.lane_width == 3.5
+    # the lanes begin at the offset less the 2 m border: -2 m at the start, 1 m from 100 m on
+    assert route.inner_edge([0.0, 50.0, 100.0, 400.0]) == pytest.approx([-2.0, -0.5, 1.0, 1.0])
+    # the centre of lane 0 (y = 8.75 m left of the right edge of 10.5 m of lanes) lies 1.75 m inside them
+    _, y, _ = route.pose([400.0], [route.width - 1.75])
+    assert y == pytest.approx([1.0 - 1.75])
+
+
+def test_a_scenario_runs_in_the_lanes_of_a_map_whose_lanes_are_off_the_reference_line(tmp_path):
+    from pytest_roadlogic.pipeline import load_scenario, run_scenario
+
+    (tmp_path / "maps").mkdir()
+    offset_map(tmp_path / "maps" / "offset.xodr")
+    scenario = load_scenario(scenario_file(tmp_path, "maps/offset.xodr"))
+    outcome = run_scenario(scenario, seed=1)
+    assert outcome.verdict.accepted, outcome.verdict.explain()
+    trace, road = outcome.simulation.trace, outcome.simulation.road
+    for name, columns in trace.actors.items():
+        # on this straight map the world's y is the lateral position: every car inside the three
+        # driving lanes, which begin at the lane offset less the border
+        inner = scenario.route.inner_edge(columns["x"] + road.route_shift)
+        assert np.all(columns["world_y"] <= inner - 0.8) and np.all(columns["world_y"] >= inner - 10.5 + 0.8), name
+    ego = trace.actors["ego"]
+    assert np.abs(ego["y"] - road.center_y(2)).max() < 0.6, "the ego keeps its lane where the lanes move"
 
 
 def test_a_map_with_too_few_lanes_is_refused_at_set_map_with_the_maps_reason(tmp_path):

@@ -192,9 +192,10 @@ class FrenetixDriver(DriverBase):
         if onset < time + tracked * self.dt:
             tracked = max(2, int((onset - time) / self.dt + 1e-9) + 1)
         times = time + np.arange(1, tracked) * self.dt
+        along = self.reference.s(times)
         target = (
-            self.reference.s(times) - self.s_origin - WHEELBASE / 2,
-            self.reference.d(times) - self.d_origin,
+            along - self.s_origin - WHEELBASE / 2,
+            self.reference.d(times) - self.d_origin + self.road.inner_edge(along),
             self.reference.v(times),
         )
         costs = self._tracking_costs(
@@ -229,7 +230,10 @@ class FrenetixDriver(DriverBase):
         v_refs = self.reference.v(ends)
         # the lateral end state is the reference's, rate and curvature too: a candidate ending
         # mid lane change at rest (d' = 0) would stall the change, each replanning again
-        around = self.reference.d(np.stack([ends - h, ends, ends + h], axis=1).ravel()).reshape(-1, 3) - self.d_origin
+        instants = np.stack([ends - h, ends, ends + h], axis=1).ravel()
+        around = (
+            self.reference.d(instants) - self.d_origin + self.road.inner_edge(self.reference.s(instants))
+        ).reshape(-1, 3)
         d_refs = around[:, 1]
         d_rates = (around[:, 2] - around[:, 0]) / (2 * h)
         d_curves = (around[:, 2] - 2 * around[:, 1] + around[:, 0]) / h**2
@@ -255,7 +259,8 @@ class FrenetixDriver(DriverBase):
             # a stop at a constant deceleration: "be at 0 in 1 s", replanned every step, only ever
             # halves the speed (the car crept at 1 m/s where the scenario asked for a standstill)
             duration = max(self.dt, state.speed / self.stop_deceleration)
-            d_stop = float(self.reference.d([time + duration])[0]) - self.d_origin
+            stop = [time + duration]
+            d_stop = float((self.reference.d(stop) - self.d_origin + self.road.inner_edge(self.reference.s(stop)))[0])
             rows.append([0.0, duration, *lon, 0.0, 0.0, *lat, d_stop, 0.0, 0.0])
         return np.array(rows, dtype=float)
 
@@ -325,13 +330,13 @@ class FrenetixDriver(DriverBase):
         ``heading``: faster in a curve's outer lanes, slower in its inner ones."""
         route = self.road.route
         curvature = float(route.curvature(x + self.road.route_shift))
-        return (1.0 - curvature * (y - route.width)) / max(float(np.cos(heading)), 0.5)
+        return (1.0 - curvature * float(route.lateral(x + self.road.route_shift, y))) / max(float(np.cos(heading)), 0.5)
 
     def _along_route(self, candidate) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """A candidate's rear axle in road coordinates (its s and d in the frame) and its heading
         less the route's there: on a map, the centre is then half a wheelbase ahead along it."""
         s = np.array(candidate.curvilinear.s, copy=True) + self.s_origin
-        d = np.array(candidate.curvilinear.d, copy=True) + self.d_origin
+        d = np.array(candidate.curvilinear.d, copy=True) + self.d_origin - self.road.inner_edge(s)
         _, _, along = self.road.world(s, d)
         heading = np.array(candidate.cartesian.theta, copy=True) - along
         return s, d, (heading + np.pi) % (2 * np.pi) - np.pi
