@@ -38,6 +38,8 @@ MAX_CURVATURE = 0.5  # 1/m: a radius under 2 m is no road (a spiral to 1e6 broke
 MAX_COORDINATE = 1e7  # m from the map's origin (10,000 km), of any point of a reference line
 MAX_LANES = 16  # lanes on one side of one section: 2,000 driving lanes broke the simulator's projection
 MAX_LANE_WIDTH = 20.0  # m: wider is no lane, and 1e300 overflows the simulator's projection
+# m: a lane not for driving may be wider (esmini's crest-curve has 30 m of verge), not without end
+MAX_VERGE_WIDTH = 200.0
 
 
 class MapError(Exception):
@@ -452,7 +454,7 @@ def _geometry(path: Path, element: _Element) -> Geometry:
 
 def _check_widths(path: Path, lane: _Element, widths: tuple[LaneWidth, ...], length: float) -> None:
     """``MapError`` at a driving lane with no width, or at a width record whose cubic leaves
-    0..``MAX_LANE_WIDTH`` over its stretch: the map is at fault, and is named, not the scenario
+    0..``MAX_LANE_WIDTH`` (a lane not for driving: ``MAX_VERGE_WIDTH``) over its stretch: the map is at fault, and is named, not the scenario
     reported without a plan)."""
     import numpy as np
 
@@ -462,16 +464,17 @@ def _check_widths(path: Path, lane: _Element, widths: tuple[LaneWidth, ...], len
             raise MapError(path, "a driving lane without <width>", "give its widths", lane.line, lane.column)
         return
     records = lane.findall("width")
+    widest = MAX_LANE_WIDTH if kind == "driving" else MAX_VERGE_WIDTH
     most = 0.0
     for i, (record, element) in enumerate(zip(widths, records)):
         end = widths[i + 1].offset if i + 1 < len(widths) else length
         u = np.linspace(0.0, max(0.0, end - record.offset), 9)
         with np.errstate(all="ignore"):
             width = record.a + record.b * u + record.c * u**2 + record.d * u**3
-        if not np.all(np.isfinite(width)) or np.min(width) < -1e-6 or np.max(width) > MAX_LANE_WIDTH:
+        if not np.all(np.isfinite(width)) or np.min(width) < -1e-6 or np.max(width) > widest:
             raise MapError(
                 path,
-                f"lane {lane.attributes.get('id', '?')[:20]}'s width runs outside 0..{MAX_LANE_WIDTH:g} m "
+                f"lane {lane.attributes.get('id', '?')[:20]}'s width runs outside 0..{widest:g} m "
                 f"(from {np.min(width):g} to {np.max(width):g} m)",
                 "give a lane's width in metres, 0 where it begins or ends",
                 element.line,

@@ -263,6 +263,26 @@ def test_a_lane_offset_and_a_median_move_a_routes_lanes_off_the_reference_line(t
     assert y == pytest.approx([1.0 - 1.75])
 
 
+def test_a_wide_verge_is_read_where_a_driving_lane_as_wide_is_refused(tmp_path):
+    verge = (
+        offset_map(tmp_path / "verge.xodr")
+        .read_text()
+        .replace(
+            "<lane id='-4' type='driving'><width sOffset='0' a='3.5'",
+            "<lane id='-4' type='none'><width sOffset='0' a='30'",
+        )
+    )
+    route = pick_route(read_map(write(tmp_path / "verge.xodr", verge)), 2)
+    assert route.lanes == 2
+    with pytest.raises(MapError, match="width runs outside 0..20 m"):
+        read_map(
+            write(
+                tmp_path / "wide.xodr",
+                verge.replace("type='none'><width sOffset='0' a='30'", "type='driving'><width sOffset='0' a='30'"),
+            )
+        )
+
+
 def test_a_scenario_runs_in_the_lanes_of_a_map_whose_lanes_are_off_the_reference_line(tmp_path):
     from pytest_roadlogic.pipeline import load_scenario, run_scenario
 
