@@ -192,6 +192,8 @@ class MapRoad:
     # the lane offset: metres left of the reference line at which its lanes begin, by records from
     # their s on (none: the reference line)
     lane_offset: tuple[LaneWidth, ...] = ()
+    # its traffic rule: RHT (right-hand traffic, OpenDRIVE's default) or LHT
+    rule: str = "RHT"
 
     def offset(self, s):
         """The lane offset at ``s`` metres along the road (an array or a number)."""
@@ -318,6 +320,7 @@ def _road(path: Path, element: _Element) -> MapRoad:
         _link(link, "successor"),
         min(speeds) if speeds else None,
         lane_offset,
+        "LHT" if element.attributes.get("rule", "RHT").upper() == "LHT" else "RHT",
     )
 
 

@@ -181,6 +181,8 @@ def describe(road: MapRoad) -> str:
     """A road as a refusal lists it: its lanes, length and curves, or why it is no route."""
     if road.junction not in ("", "-1"):
         return f"{road.label}: inside junction {road.junction} (a route may not cross a junction yet)"
+    if road.rule == "LHT":
+        return f"{road.label}: left-hand traffic (rule LHT), which this tool does not drive yet"
     through, most = _through_lanes(road)
     extra = f", {most} in parts" if most > through else ""
     _, _, _, _, curvature = road.reference_line.sampled()
@@ -235,8 +237,8 @@ def pick_route(
     length = length or MIN_ROUTE_LENGTH
     fitting = []
     for road in road_map.roads.values():
-        if road.junction not in ("", "-1"):
-            continue
+        if road.junction not in ("", "-1") or road.rule == "LHT":
+            continue  # a route drives the right lanes along the reference line: right-hand traffic
         _, most = _through_lanes(road)
         if most >= lanes and road.length >= length and (curve is None or curve_stretch(road, curve) is not None):
             fitting.append((road.length, road))

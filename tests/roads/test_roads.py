@@ -263,6 +263,14 @@ def test_a_lane_offset_and_a_median_move_a_routes_lanes_off_the_reference_line(t
     assert y == pytest.approx([1.0 - 1.75])
 
 
+def test_a_left_hand_traffic_road_is_no_route_and_is_named_so(tmp_path):
+    # its right lanes run against the reference line: driving them along it would be the wrong way
+    text = offset_map(tmp_path / "lht.xodr").read_text().replace('junction="-1"', 'junction="-1" rule="LHT"')
+    with pytest.raises(MapError) as caught:
+        pick_route(read_map(write(tmp_path / "lht.xodr", text)), 2)
+    assert "road 1: left-hand traffic (rule LHT), which this tool does not drive yet" in caught.value.message
+
+
 def test_a_wide_verge_is_read_where_a_driving_lane_as_wide_is_refused(tmp_path):
     verge = (
         offset_map(tmp_path / "verge.xodr")
