@@ -455,8 +455,9 @@ def _geometry(path: Path, element: _Element) -> Geometry:
     )
 
 
-def _check_widths(path: Path, lane: _Element, widths: tuple[LaneWidth, ...], length: float) -> None:
-    """``MapError`` at a driving lane with no width, or at a width record whose cubic leaves
+def _check_widths(path: Path, lane: _Element, widths: tuple[LaneWidth, ...], length: float) -> str:
+    """The lane's type as read (a driving lane never 0.5 m wide in its section is none there);
+    ``MapError`` at a driving lane with no width, or at a width record whose cubic leaves
     0..``MAX_LANE_WIDTH`` (a lane not for driving: ``MAX_VERGE_WIDTH``) over its stretch: the map is at fault, and is named, not the scenario
     reported without a plan)."""
     import numpy as np
@@ -465,7 +466,7 @@ def _check_widths(path: Path, lane: _Element, widths: tuple[LaneWidth, ...], len
     if not widths:
         if kind == "driving":
             raise MapError(path, "a driving lane without <width>", "give its widths", lane.line, lane.column)
-        return
+        return kind
     records = lane.findall("width")
     widest = MAX_LANE_WIDTH if kind == "driving" else MAX_VERGE_WIDTH
     most = 0.0
@@ -485,13 +486,10 @@ def _check_widths(path: Path, lane: _Element, widths: tuple[LaneWidth, ...], len
             )
         most = max(most, float(np.max(width)))
     if kind == "driving" and most < 0.5:
-        raise MapError(
-            path,
-            f"driving lane {lane.attributes.get('id', '?')[:20]} is never wider than {most:g} m",
-            "give the lane a width a car fits in",
-            lane.line,
-            lane.column,
-        )
+        # no car fits: a lane that exists in other sections of its road is written so in this one
+        # (esmini's tunnels): it is no lane for driving here
+        return "none"
+    return kind
 
 
 def _section(path: Path, element: _Element, start: float, end: float) -> LaneSection:
@@ -507,7 +505,7 @@ def _section(path: Path, element: _Element, start: float, end: float) -> LaneSec
         widths = tuple(
             LaneWidth(*(_number(path, w, n) for n in ("sOffset", "a", "b", "c", "d"))) for w in lane.findall("width")
         )
-        _check_widths(path, lane, widths, end - start)
+        kind = _check_widths(path, lane, widths, end - start)
         if lane.findall("border"):
             raise MapError(
                 path,
@@ -516,7 +514,7 @@ def _section(path: Path, element: _Element, start: float, end: float) -> LaneSec
                 lane.line,
                 lane.column,
             )
-        lanes.append(MapLane(int(_number(path, lane, "id")), lane.attributes.get("type", "none"), widths))
+        lanes.append(MapLane(int(_number(path, lane, "id")), kind, widths))
     lanes.sort(key=lambda lane: -lane.id)
     if [lane.id for lane in lanes] != list(range(-1, -len(lanes) - 1, -1)):
         raise MapError(

@@ -271,6 +271,20 @@ def test_a_left_hand_traffic_road_is_no_route_and_is_named_so(tmp_path):
     assert "road 1: left-hand traffic (rule LHT), which this tool does not drive yet" in caught.value.message
 
 
+def test_a_driving_lane_no_car_fits_in_is_no_lane_there(tmp_path):
+    # OpenDRIVE writes a lane that exists in other sections as 0 m wide in this one (esmini's tunnels)
+    text = (
+        offset_map(tmp_path / "zero.xodr")
+        .read_text()
+        .replace(
+            "<lane id='-4' type='driving'><width sOffset='0' a='3.5'",
+            "<lane id='-4' type='driving'><width sOffset='0' a='0'",
+        )
+    )
+    route = pick_route(read_map(write(tmp_path / "zero.xodr", text)), 2)
+    assert route.lanes == 2
+
+
 def test_a_wide_verge_is_read_where_a_driving_lane_as_wide_is_refused(tmp_path):
     verge = (
         offset_map(tmp_path / "verge.xodr")
