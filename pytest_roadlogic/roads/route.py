@@ -73,6 +73,13 @@ class Route:
         return self.road.speed_limit
 
     @property
+    def closed(self) -> bool:
+        """Whether the route is a loop: its reference line ends where it starts, heading the same way."""
+        x, y, heading = self.reference_line.pose(np.array([0.0, self.length]))
+        turn = (heading[1] - heading[0] + np.pi) % (2 * np.pi) - np.pi
+        return bool(np.hypot(x[1] - x[0], y[1] - y[0]) < 1.0 and abs(turn) < 0.1)
+
+    @property
     def width(self) -> float:
         """The width of its lanes where they are most: ``y`` = 0 is their right edge there."""
         return self.lanes * self.lane_width

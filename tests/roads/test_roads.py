@@ -323,6 +323,37 @@ def test_a_scenario_runs_in_the_lanes_of_a_map_whose_lanes_are_off_the_reference
     assert np.abs(ego["y"] - road.center_y(2)).max() < 0.6, "the ego keeps its lane where the lanes move"
 
 
+def test_a_run_on_a_loop_keeps_to_its_lap(tmp_path):
+    """A road that ends where it starts (esmini's velodrome): the cars were projected a lap on, from
+    30 m to 2,030 m in the first tenth of a second, and no run was conformant."""
+    from pytest_roadlogic.pipeline import load_scenario, run_scenario
+
+    radius = 400.0
+    lanes = "".join(
+        f"<lane id='{i}' type='driving'><width sOffset='0' a='3.5' b='0' c='0' d='0'/></lane>" for i in (-1, -2, -3)
+    )
+    (tmp_path / "maps").mkdir()
+    write(
+        tmp_path / "maps" / "loop.xodr",
+        f"""
+        <?xml version="1.0"?>
+        <OpenDRIVE><header/>
+        <road id="1" length="{2 * math.pi * radius}" junction="-1"><link>
+        <predecessor elementType="road" elementId="1" contactPoint="end"/>
+        <successor elementType="road" elementId="1" contactPoint="start"/></link><planView>
+        <geometry s="0" x="0" y="0" hdg="0" length="{2 * math.pi * radius}"><arc curvature="{1 / radius}"/></geometry>
+        </planView><lanes><laneSection s="0"><right>{lanes}</right></laneSection></lanes></road>
+        </OpenDRIVE>
+        """,
+    )
+    scenario = load_scenario(scenario_file(tmp_path, "maps/loop.xodr"))
+    assert scenario.route.closed
+    outcome = run_scenario(scenario, seed=1)
+    assert outcome.verdict.accepted, outcome.verdict.explain()
+    for name, columns in outcome.simulation.trace.actors.items():
+        assert np.abs(np.diff(columns["x"])).max() < 5.0, name
+
+
 def test_a_map_with_too_few_lanes_is_refused_at_set_map_with_the_maps_reason(tmp_path):
     from pytest_roadlogic.frontend import check_file
 

@@ -8,6 +8,8 @@ that importing the backend stays cheap.
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from ...roads.road import Road
@@ -40,6 +42,12 @@ def _coordinate_system(road: Road):
         else:
             route = road.route
             before, after = 100.0, 500.0
+            if route.closed:
+                # a loop's line runs on past its end over its start: a car near the start would be
+                # projected a lap on (esmini's velodrome jumped from 30 m to 2030 m). The frame keeps
+                # to the lap, from where the road begins to where it ends
+                before = max(0.0, -math.floor(road.x_start + road.route_shift))
+                after = 0.0
             x, y, _ = route.reference_line.pose(np.arange(-before, route.length + after + 0.5, 1.0))
             path = np.stack([x, y], axis=1)
             _COORDINATE_SYSTEMS[key] = (
