@@ -15,6 +15,7 @@ from pytest_roadlogic.monitor import monitor
 from pytest_roadlogic.planning import ContinuousPlanner, ContinuousSettings
 from pytest_roadlogic.planning.encodings.continuous.instance import SHAPE_SLACK, shape_share
 from pytest_roadlogic.simulation import Trace
+from tests.constructs.test_acceleration import speed_trace
 from tests.planning.test_planning_continuous import check_continuous_plan
 
 HEADER = "import osc.standard\n\nscenario top:\n    path: Path\n    car1: car\n"
@@ -121,33 +122,22 @@ def test_a_step_is_planned_at_the_cars_limit():
     assert (speeds[begin + 1] - speeds[begin]) / plan.dt <= settings.min_acceleration + 1.0 + 1e-6
 
 
-def braking_trace(rate: float, shape: str = "linear", dt: float = 0.1) -> Trace:
+def braking_trace(automaton, rate: float, shape: str = "linear", dt: float = 0.1) -> Trace:
     """25 m/s for 3 s, then to 10 m/s in ``shape`` with its acceleration peaking at ``rate``, then held."""
     seconds = SHAPE_PEAK_OVER_MEAN[shape] * 15.0 / rate
     times = np.arange(0, 3 + seconds + 3 + dt / 2, dt)
     into = np.clip((times - 3) / seconds, 0, 1)
     share = into if shape == "linear" else (1 - np.cos(math.pi * into)) / 2
-    speed = 25.0 - 15.0 * share
-    x = np.concatenate([[0.0], np.cumsum((speed[1:] + speed[:-1]) / 2 * dt)])
-    n = len(times)
-    columns = {
-        "x": x,
-        "y": np.zeros(n),
-        "heading": np.zeros(n),
-        "speed": speed,
-        "acceleration": np.gradient(speed, dt),
-        "lane": np.zeros(n),
-    }
-    return Trace(times, {"car1": columns})
+    return speed_trace(automaton, list(zip(times, 25.0 - 15.0 * share)), dt)
 
 
 def test_the_monitor_judges_the_peak_a_shape_implies():
     linear = automaton_of("10mps", ", rate_profile: linear, rate_peak: 5mpss")
-    assert monitor(linear, braking_trace(5.0)).accepted
-    assert not monitor(linear, braking_trace(2.5)).accepted
+    assert monitor(linear, braking_trace(linear, 5.0)).accepted
+    assert not monitor(linear, braking_trace(linear, 2.5)).accepted
     sinusoidal = automaton_of("10mps", ", rate_profile: sinusoidal, rate_peak: 5mpss")
-    assert monitor(sinusoidal, braking_trace(5.0, "sinusoidal")).accepted
+    assert monitor(sinusoidal, braking_trace(sinusoidal, 5.0, "sinusoidal")).accepted
     # a linear change at 5 m/s^2 would be a sinusoidal one peaking at 7.9
-    verdict = monitor(sinusoidal, braking_trace(5.0))
+    verdict = monitor(sinusoidal, braking_trace(sinusoidal, 5.0))
     assert not verdict.accepted
     assert "peak acceleration" in verdict.explain()

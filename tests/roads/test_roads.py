@@ -271,38 +271,29 @@ def test_a_left_hand_traffic_road_is_no_route_and_is_named_so(tmp_path):
     assert "road 1: left-hand traffic (rule LHT), which this tool does not drive yet" in caught.value.message
 
 
-def test_a_driving_lane_no_car_fits_in_is_no_lane_there(tmp_path):
-    # OpenDRIVE writes a lane that exists in other sections as 0 m wide in this one (esmini's tunnels)
-    text = (
-        offset_map(tmp_path / "zero.xodr")
+def with_outer_lane(path: Path, kind: str, width: float) -> str:
+    """``offset_map``'s text with its outermost lane (-4) of ``kind`` and ``width``."""
+    return (
+        offset_map(path)
         .read_text()
         .replace(
             "<lane id='-4' type='driving'><width sOffset='0' a='3.5'",
-            "<lane id='-4' type='driving'><width sOffset='0' a='0'",
+            f"<lane id='-4' type='{kind}'><width sOffset='0' a='{width:g}'",
         )
     )
-    route = pick_route(read_map(write(tmp_path / "zero.xodr", text)), 2)
-    assert route.lanes == 2
+
+
+def test_a_driving_lane_no_car_fits_in_is_no_lane_there(tmp_path):
+    # OpenDRIVE writes a lane that exists in other sections as 0 m wide in this one (esmini's tunnels)
+    zero = write(tmp_path / "zero.xodr", with_outer_lane(tmp_path / "zero.xodr", "driving", 0.0))
+    assert pick_route(read_map(zero), 2).lanes == 2
 
 
 def test_a_wide_verge_is_read_where_a_driving_lane_as_wide_is_refused(tmp_path):
-    verge = (
-        offset_map(tmp_path / "verge.xodr")
-        .read_text()
-        .replace(
-            "<lane id='-4' type='driving'><width sOffset='0' a='3.5'",
-            "<lane id='-4' type='none'><width sOffset='0' a='30'",
-        )
-    )
-    route = pick_route(read_map(write(tmp_path / "verge.xodr", verge)), 2)
-    assert route.lanes == 2
+    verge = write(tmp_path / "verge.xodr", with_outer_lane(tmp_path / "verge.xodr", "none", 30.0))
+    assert pick_route(read_map(verge), 2).lanes == 2
     with pytest.raises(MapError, match="width runs outside 0..20 m"):
-        read_map(
-            write(
-                tmp_path / "wide.xodr",
-                verge.replace("type='none'><width sOffset='0' a='30'", "type='driving'><width sOffset='0' a='30'"),
-            )
-        )
+        read_map(write(tmp_path / "wide.xodr", with_outer_lane(tmp_path / "wide.xodr", "driving", 30.0)))
 
 
 def test_a_scenario_runs_in_the_lanes_of_a_map_whose_lanes_are_off_the_reference_line(tmp_path):
