@@ -335,11 +335,7 @@ def _lane_offset(path: Path, records: list[_Element], length: float) -> tuple[La
         key=lambda item: item[0].offset,
     )
     most = MAX_LANE_WIDTH * MAX_LANES
-    for i, (record, element) in enumerate(offsets):
-        end = offsets[i + 1][0].offset if i + 1 < len(offsets) else length
-        u = np.linspace(0.0, max(0.0, end - record.offset), 9)
-        with np.errstate(all="ignore"):
-            value = record.a + record.b * u + record.c * u**2 + record.d * u**3
+    for (_, element), value in zip(offsets, _sampled_records(tuple(record for record, _ in offsets), length)):
         if not np.all(np.isfinite(value)) or np.max(np.abs(value)) > most:
             raise MapError(
                 path,
@@ -351,6 +347,20 @@ def _lane_offset(path: Path, records: list[_Element], length: float) -> tuple[La
     if not any(record.a or record.b or record.c or record.d for record, _ in offsets):
         return ()  # all zero: the reference line
     return tuple(record for record, _ in offsets)
+
+
+def _sampled_records(records: tuple[LaneWidth, ...], length: float) -> list:
+    """Each cubic record's values at 9 points over its stretch (from its offset to the next
+    record's, the last to ``length``), as the bounds on widths and offsets check them."""
+    import numpy as np
+
+    sampled = []
+    for i, record in enumerate(records):
+        end = records[i + 1].offset if i + 1 < len(records) else length
+        u = np.linspace(0.0, max(0.0, end - record.offset), 9)
+        with np.errstate(all="ignore"):
+            sampled.append(record.a + record.b * u + record.c * u**2 + record.d * u**3)
+    return sampled
 
 
 def _check_reference_line(path: Path, records: list[_Element], geometries: tuple[Geometry, ...]) -> None:
@@ -470,11 +480,7 @@ def _check_widths(path: Path, lane: _Element, widths: tuple[LaneWidth, ...], len
     records = lane.findall("width")
     widest = MAX_LANE_WIDTH if kind == "driving" else MAX_VERGE_WIDTH
     most = 0.0
-    for i, (record, element) in enumerate(zip(widths, records)):
-        end = widths[i + 1].offset if i + 1 < len(widths) else length
-        u = np.linspace(0.0, max(0.0, end - record.offset), 9)
-        with np.errstate(all="ignore"):
-            width = record.a + record.b * u + record.c * u**2 + record.d * u**3
+    for element, width in zip(records, _sampled_records(widths, length)):
         if not np.all(np.isfinite(width)) or np.min(width) < -1e-6 or np.max(width) > widest:
             raise MapError(
                 path,

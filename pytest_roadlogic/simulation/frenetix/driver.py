@@ -203,7 +203,7 @@ class FrenetixDriver(DriverBase):
         along = self.reference.s(times)
         target = (
             along - self.s_origin - WHEELBASE / 2,
-            self.reference.d(times) - self.d_origin + self.road.inner_edge(along),
+            self._frame_d(times, along),
             self.reference.v(times),
         )
         costs = self._tracking_costs(
@@ -238,10 +238,7 @@ class FrenetixDriver(DriverBase):
         v_refs = self.reference.v(ends)
         # the lateral end state is the reference's, rate and curvature too: a candidate ending
         # mid lane change at rest (d' = 0) would stall the change, each replanning again
-        instants = np.stack([ends - h, ends, ends + h], axis=1).ravel()
-        around = (
-            self.reference.d(instants) - self.d_origin + self.road.inner_edge(self.reference.s(instants))
-        ).reshape(-1, 3)
+        around = self._frame_d(np.stack([ends - h, ends, ends + h], axis=1).ravel()).reshape(-1, 3)
         d_refs = around[:, 1]
         d_rates = (around[:, 2] - around[:, 0]) / (2 * h)
         d_curves = (around[:, 2] - 2 * around[:, 1] + around[:, 0]) / h**2
@@ -267,8 +264,7 @@ class FrenetixDriver(DriverBase):
             # a stop at a constant deceleration: "be at 0 in 1 s", replanned every step, only ever
             # halves the speed (the car crept at 1 m/s where the scenario asked for a standstill)
             duration = max(self.dt, state.speed / self.stop_deceleration)
-            stop = [time + duration]
-            d_stop = float((self.reference.d(stop) - self.d_origin + self.road.inner_edge(self.reference.s(stop)))[0])
+            d_stop = float(self._frame_d(np.array([time + duration]))[0])
             rows.append([0.0, duration, *lon, 0.0, 0.0, *lat, d_stop, 0.0, 0.0])
         return np.array(rows, dtype=float)
 
@@ -332,6 +328,12 @@ class FrenetixDriver(DriverBase):
             speed=speed,
             acceleration=acceleration,
         )
+
+    def _frame_d(self, times: np.ndarray, along: np.ndarray | None = None) -> np.ndarray:
+        """The reference's lateral position in the frame at ``times``: its y less the lanes' width,
+        plus their inner edge where it is (``along``: its x then, when already known)."""
+        along = self.reference.s(times) if along is None else along
+        return self.reference.d(times) - self.d_origin + self.road.inner_edge(along)
 
     def _own_speed_factor(self, x: float, y: float, heading: float) -> float:
         """A car's own speed over its rate along the route, at road coordinates (x, y) turned by
