@@ -45,12 +45,17 @@ def write_artifacts(
         "goals": {v: [g.reached_at for g in records] for v, records in outcome.simulation.goals.items()},
         "seconds": outcome.seconds,
         **outcome.verdict.to_dict(),
-        # on a map: which, the road the route runs along, and the metres along it of the plan's position 0
+        # on a map: which, the road the route runs along (which way, with how many oncoming lanes),
+        # and the metres along it of the plan's position 0
         **(
             {
                 "map": {
                     "file": str(outcome.simulation.road.route.source),
                     "road": outcome.simulation.road.route.road.id,
+                    # driven against its reference line (its left lanes), and how many of the
+                    # scenario's lanes (its leftmost) are the other direction's
+                    "against_reference_line": outcome.simulation.road.route.road.against,
+                    "oncoming_lanes": outcome.simulation.road.route.road.oncoming,
                     "origin_m": round(outcome.simulation.road.route_shift, 3),
                 }
             }

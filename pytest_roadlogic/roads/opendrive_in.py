@@ -159,12 +159,12 @@ def piecewise_cubic(records: tuple[LaneWidth, ...], u):
 
 @dataclass(frozen=True)
 class LaneSection:
-    """The lanes from ``s`` to ``end``: right lanes in order -1, -2, ..., and how many left lanes."""
+    """The lanes from ``s`` to ``end``: right lanes in order -1, -2, ..., left lanes 1, 2, ..."""
 
     s: float
     end: float
     right: tuple[MapLane, ...]
-    left_lanes: int
+    left: tuple[MapLane, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -194,6 +194,10 @@ class MapRoad:
     lane_offset: tuple[LaneWidth, ...] = ()
     # its traffic rule: RHT (right-hand traffic, OpenDRIVE's default) or LHT
     rule: str = "RHT"
+    # read against its reference line (``directions.against``): s from its end, its left lanes as right
+    against: bool = False
+    # its first right lanes that carry the other direction's traffic (``directions.with_oncoming``)
+    oncoming: int = 0
 
     def offset(self, s):
         """The lane offset at ``s`` metres along the road (an array or a number)."""
@@ -201,7 +205,11 @@ class MapRoad:
 
     @property
     def label(self) -> str:
-        return f"road {self.id}" + (f" ({self.name!r})" if self.name else "")
+        return (
+            f"road {self.id}"
+            + (f" ({self.name!r})" if self.name else "")
+            + (" against its reference line" if self.against else "")
+        )
 
 
 @dataclass(frozen=True)
@@ -506,12 +514,18 @@ def _section(path: Path, element: _Element, start: float, end: float) -> LaneSec
             raise MapError(
                 path, f"more than {MAX_LANES} lanes on one side", "give a map of real roads", side.line, side.column
             )
+    return LaneSection(start, end, _side(path, right, end - start, -1), _side(path, left, end - start, 1))
+
+
+def _side(path: Path, side: _Element | None, length: float, sign: int) -> tuple[MapLane, ...]:
+    """A section's lanes on one side (``sign`` -1: right, 1: left), in order from the reference line
+    outward; ``MapError`` at a lane given by its border or at ids not numbered in turn."""
     lanes = []
-    for lane in right.findall("lane") if right is not None else []:
+    for lane in side.findall("lane") if side is not None else []:
         widths = tuple(
             LaneWidth(*(_number(path, w, n) for n in ("sOffset", "a", "b", "c", "d"))) for w in lane.findall("width")
         )
-        kind = _check_widths(path, lane, widths, end - start)
+        kind = _check_widths(path, lane, widths, length)
         if lane.findall("border"):
             raise MapError(
                 path,
@@ -521,9 +535,15 @@ def _section(path: Path, element: _Element, start: float, end: float) -> LaneSec
                 lane.column,
             )
         lanes.append(MapLane(int(_number(path, lane, "id")), kind, widths))
-    lanes.sort(key=lambda lane: -lane.id)
-    if [lane.id for lane in lanes] != list(range(-1, -len(lanes) - 1, -1)):
+    lanes.sort(key=lambda lane: sign * lane.id)
+    if [lane.id for lane in lanes] != [sign * k for k in range(1, len(lanes) + 1)]:
+        name = "right" if sign < 0 else "left"
+        numbers = "-1, -2" if sign < 0 else "1, 2"
         raise MapError(
-            path, "the right lanes' ids are not -1, -2, ... in turn", "number them from the centre", element.line
+            path,
+            f"the {name} lanes' ids are not {numbers}, ... in turn",
+            "number them from the centre",
+            side.line,
+            side.column,
         )
-    return LaneSection(start, end, tuple(lanes), len(left.findall("lane")) if left is not None else 0)
+    return tuple(lanes)

@@ -110,11 +110,18 @@ class Geometry:
 
 @dataclass(frozen=True)
 class ReferenceLine:
-    """A road's reference line: its geometries in order of s, sampled every ``step`` metres."""
+    """A road's reference line: its geometries in order of s, sampled every ``step`` metres.
+    ``against``: the line read from its end (s from there, heading turned round, left and right
+    exchanged), as a road driven against its reference line has it."""
 
     geometries: tuple[Geometry, ...]
     step: float = 0.5
     samples: dict = field(default_factory=dict, compare=False, repr=False)
+    against: bool = False
+
+    def reversed(self) -> ReferenceLine:
+        """The same line read from its other end."""
+        return dataclasses.replace(self, against=not self.against, samples={})
 
     @property
     def length(self) -> float:
@@ -132,7 +139,11 @@ class ReferenceLine:
                 parts.append((geometry.s + ds, x, y, heading, curvature))
             s, x, y, heading, curvature = (np.concatenate([p[i] for p in parts]) for i in range(5))
             keep = np.concatenate([[True], np.diff(s) > 1e-9])  # each geometry's start is its predecessor's end
-            self.samples["all"] = (s[keep], x[keep], y[keep], np.unwrap(heading[keep]), curvature[keep])
+            s, x, y, heading, curvature = s[keep], x[keep], y[keep], heading[keep], curvature[keep]
+            if self.against:
+                s = (s[-1] - s)[::-1]
+                x, y, heading, curvature = x[::-1], y[::-1], heading[::-1] + math.pi, -curvature[::-1]
+            self.samples["all"] = (s, x, y, np.unwrap(heading), curvature)
         return self.samples["all"]
 
     def pose(self, s, t=0.0) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

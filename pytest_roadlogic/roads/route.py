@@ -19,6 +19,7 @@ from pathlib import Path
 
 import numpy as np
 
+from .directions import against, with_oncoming
 from .opendrive_in import LaneSection, MapError, MapLane, MapRoad, RoadMap
 from .reference_line import ReferenceLine
 
@@ -185,13 +186,16 @@ def _through_lanes(road: MapRoad) -> tuple[int, int]:
 
 
 def describe(road: MapRoad) -> str:
-    """A road as a refusal lists it: its lanes, length and curves, or why it is no route."""
+    """A road as a refusal lists it: its lanes each way, length and curves, or why it is no route."""
     if road.junction not in ("", "-1"):
         return f"{road.label}: inside junction {road.junction} (a route may not cross a junction yet)"
     if road.rule == "LHT":
         return f"{road.label}: left-hand traffic (rule LHT), which this tool does not drive yet"
     through, most = _through_lanes(road)
     extra = f", {most} in parts" if most > through else ""
+    back, back_most = _through_lanes(against(road))
+    if back_most:
+        extra += f", {back}{f' ({back_most} in parts)' if back_most > back else ''} the other way"
     _, _, _, _, curvature = road.reference_line.sampled()
     curves = []
     for side, sign in (("left", 1.0), ("right", -1.0)):
@@ -199,7 +203,8 @@ def describe(road: MapRoad) -> str:
         if sharpest > 1e-6:
             curves.append(f"{side} {1 / sharpest:.0f} m")
     bends = f", curves of radius down to {' and '.join(curves)}" if curves else ", straight"
-    return f"{road.label}: {through} driving lanes over {road.length:g} m{extra}{bends}"
+    plural = "" if through == 1 else "s"
+    return f"{road.label}: {through} driving lane{plural} over {road.length:g} m{extra}{bends}"
 
 
 def curve_stretch(road: MapRoad, curve: tuple[float | None, float | None, str | None]) -> tuple[float, float] | None:
@@ -242,16 +247,25 @@ def pick_route(
     # a scenario that names no path_length still needs room to drive: a route too short for it
     # would be reported as a scenario without a plan, blaming the scenario for the map
     length = length or MIN_ROUTE_LENGTH
-    fitting = []
-    for road in road_map.roads.values():
-        if road.junction not in ("", "-1") or road.rule == "LHT":
-            continue  # a route drives the right lanes along the reference line: right-hand traffic
-        _, most = _through_lanes(road)
-        if most >= lanes and road.length >= length and (curve is None or curve_stretch(road, curve) is not None):
-            fitting.append((road.length, road))
+    ways = [
+        way
+        for road in road_map.roads.values()
+        if road.junction in ("", "-1") and road.rule != "LHT"  # a route drives a road's right lanes: RHT
+        for way in (road, against(road))
+    ]
+
+    def fits(way: MapRoad) -> bool:
+        _, most = _through_lanes(way)
+        return most >= lanes and way.length >= length and (curve is None or curve_stretch(way, curve) is not None)
+
+    # the lanes of one direction first; a road of too few, with its oncoming lanes joined, only
+    # when no road has enough (an overtake on a road of one lane each way passes in the oncoming one)
+    fitting = [way for way in ways if fits(way)] or [
+        joined for way in ways if (joined := with_oncoming(way)) is not None and fits(joined)
+    ]
     if not fitting:
         lines = "; ".join(describe(road) for road in road_map.roads.values())
-        need = f"{lanes} driving lanes" + (f" over {length:g} m" if length else "")
+        need = f"{lanes} driving lane{'' if lanes == 1 else 's'}" + (f" over {length:g} m" if length else "")
         if curve is not None:
             low, high, side = curve
             radius = f"{low or 0:g}..{high:g} m" if high else f"at least {low:g} m"
@@ -261,8 +275,10 @@ def pick_route(
             f"no road of the map has {need}: {lines}",
             "ask for less (the lanes it names, path_min_driving_lanes, path_length, path_curve) or give a map with a road that has it",
         )
-    _, road = max(fitting, key=lambda item: (item[0], -int(item[1].id) if item[1].id.isdigit() else 0))
+    # the longest; of two as long, the one along its reference line, then the least id
+    road = max(fitting, key=lambda way: (way.length, not way.against, -int(way.id) if way.id.isdigit() else 0))
     widest = max(road.sections, key=lambda section: len(driving_lanes(section)[1]))
-    width = float(driving_lanes(widest)[1][0].width(0.0))
+    within = np.linspace(0.0, widest.end - widest.s, 9)
+    width = float(max(np.max(lane.width(within)) for lane in driving_lanes(widest)[1]))
     stretch = curve_stretch(road, curve) if curve is not None else None
     return Route(road_map.path, road, _through_lanes(road)[1], width, road_map.data, stretch)

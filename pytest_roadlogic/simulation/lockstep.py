@@ -50,10 +50,11 @@ class _GoalSequence:
                 return
 
 
-def _road_around(refs: dict[str, Reference], lanes: int, beyond: float = 60.0) -> Road:
+def _road_around(refs: dict[str, Reference], lanes: Road, beyond: float = 60.0) -> Road:
+    """``lanes`` (a road of the plan's lanes) long enough for every reference and ``beyond`` metres more."""
     start = min(r.start_position for r in refs.values())
     end = max(r.s(r.end_time + TAIL) for r in refs.values())
-    return Road(lanes, x_start=math.floor(start - 30.0), x_end=math.ceil(float(end) + beyond))
+    return dataclasses.replace(lanes, x_start=math.floor(start - 30.0), x_end=math.ceil(float(end) + beyond))
 
 
 class _Lockstep:
@@ -71,10 +72,12 @@ class _Lockstep:
         react: Reaction | None,
     ) -> None:
         self.plan, self.dt, self.react = plan, dt, react
-        lanes = plan.lanes
         # a reference reads only the lanes' centre lines, not the road's extent: build them once and
-        # size the road around them
-        self.refs = refs = references(plan, Road(lanes))
+        # size the road around them. On a map the lanes are as wide as the route's (a car in a lane
+        # is at its centre there)
+        route = plan.route
+        lanes = Road(plan.lanes) if route is None else Road(plan.lanes, lane_width=route.lane_width)
+        self.refs = refs = references(plan, lanes)
         # a replan may lengthen the run: room for about ten more seconds at highway speed
         road = _road_around(refs, lanes, 60.0 if react is None else 400.0)
         if plan.route is not None:  # on a map: where the plan placed itself on the route

@@ -135,6 +135,18 @@ class RoadLanes:
                 f"the lanes option sets {self.requested_lanes} lanes, but the route on {self.route.name} has {lanes}",
                 "leave out the lanes option with a map: the map gives the lanes",
             )
+        oncoming = self.route.road.oncoming
+        if oncoming:
+            # said plainly: no road has the lanes one way, so the scenario's leftmost lanes carry the
+            # other direction's traffic (an overtake on a country road passes in them)
+            which = f"lane {lanes}" if oncoming == 1 else f"lanes {lanes - oncoming + 1} to {lanes}"
+            self.warning(
+                at,
+                f"no road of the map has {needed} driving lanes one way: the route on {self.route.name} "
+                f"has {lanes - oncoming} of its own and {which} the oncoming "
+                f"{'lane' if oncoming == 1 else 'lanes'} (a car there drives on the other direction's side of the road)",
+                "give a map with a road of that many lanes one way, unless the scenario passes in the oncoming lane",
+            )
         self.lanes, self.lanes_origin = lanes, f" (the route on {self.route.name})"
         return lanes
 

@@ -22,13 +22,18 @@ _COORDINATE_SYSTEMS: dict[tuple, object] = {}
 
 def _coordinate_system(road: Road):
     """The frame the drivers of a road sample in: (frenetix's coordinate system, the frame's s at
-    x = 0 negated, its d at y = 0 negated).
+    x = 0 negated, its d at y = 0 negated, the angle by which the world is turned in it).
 
     On the straight road, the line y = 0 (the right road edge), d being y. On a map, the route's
     reference line (its lanes' left edge), sampled every metre and run on straight 100 m before its
     start and 500 m past its end (a run goes on a few seconds past its plan), d being y less the
     lanes' width. Building one costs tens of
     milliseconds, so it is built once per road extent.
+
+    frenetix's yaw-rate check differences its trajectories' headings without wrapping them: a
+    trajectory whose heading crosses pi turns by 2 pi in a step and is infeasible (on a road
+    heading west every car stopped where it crossed). The frame is the world turned so that the
+    route's headings over the simulated extent lie around 0.
     """
     import frenetix
 
@@ -38,7 +43,7 @@ def _coordinate_system(road: Road):
         if road.route is None:
             xs = np.arange(road.x_start - 100.0, road.x_end + 200.0, 1.0)
             path = np.stack([xs, np.zeros_like(xs)], axis=1)
-            _COORDINATE_SYSTEMS[key] = (frenetix.CoordinateSystemWrapper(path), float(xs[0]), 0.0)
+            _COORDINATE_SYSTEMS[key] = (frenetix.CoordinateSystemWrapper(path), float(xs[0]), 0.0, 0.0)
         else:
             route = road.route
             before, after = 100.0, 500.0
@@ -49,13 +54,24 @@ def _coordinate_system(road: Road):
                 before = max(0.0, -math.floor(road.x_start + road.route_shift))
                 after = 0.0
             x, y, _ = route.reference_line.pose(np.arange(-before, route.length + after + 0.5, 1.0))
-            path = np.stack([x, y], axis=1)
+            _, _, heading = route.reference_line.pose(
+                np.arange(road.x_start - 100.0, road.x_end + 100.0, 1.0) + road.route_shift
+            )
+            turn = float(heading.min() + heading.max()) / 2
+            path = np.stack(_turned(x, y, -turn), axis=1)
             _COORDINATE_SYSTEMS[key] = (
                 frenetix.CoordinateSystemWrapper(path),
                 -(road.route_shift + before),
                 route.width,
+                turn,
             )
     return _COORDINATE_SYSTEMS[key]
+
+
+def _turned(x, y, angle: float) -> tuple[np.ndarray, np.ndarray]:
+    """The points (x, y) turned by ``angle`` about the origin."""
+    cos, sin = math.cos(angle), math.sin(angle)
+    return cos * np.asarray(x) - sin * np.asarray(y), sin * np.asarray(x) + cos * np.asarray(y)
 
 
 class FrenetixDriver(DriverBase):
@@ -100,7 +116,7 @@ class FrenetixDriver(DriverBase):
         self.reference = reference
         self.road = road
         self.dt = dt
-        self.coordinates, self.s_origin, self.d_origin = _coordinate_system(road)
+        self.coordinates, self.s_origin, self.d_origin, self.turn = _coordinate_system(road)
         handler = frenetix.TrajectoryHandler(dt=dt)
         handler.add_feasability_function(
             ff.CheckYawRateConstraint(deltaMax=0.4, wheelbase=WHEELBASE, wholeTrajectory=False)
@@ -170,7 +186,8 @@ class FrenetixDriver(DriverBase):
             rear_x = state.x - np.cos(state.heading) * WHEELBASE / 2
             rear_y = state.y - np.sin(state.heading) * WHEELBASE / 2
             x, y, heading = (float(v) for v in self.road.world(rear_x, rear_y, state.heading))
-            rear = np.array([x, y])
+            rear = np.array(_turned(x, y, -self.turn))  # in the frame's turned world
+            heading = (heading - self.turn + math.pi) % (2 * math.pi) - math.pi
             factor = self._own_speed_factor(rear_x, rear_y, state.heading)
             speed, acceleration = speed * factor, acceleration * factor
         cartesian = frenetix.CartesianPlannerState(rear, float(heading), float(speed), float(acceleration), 0.0)
@@ -348,7 +365,7 @@ class FrenetixDriver(DriverBase):
         s = np.array(candidate.curvilinear.s, copy=True) + self.s_origin
         d = np.array(candidate.curvilinear.d, copy=True) + self.d_origin - self.road.inner_edge(s)
         _, _, along = self.road.world(s, d)
-        heading = np.array(candidate.cartesian.theta, copy=True) - along
+        heading = np.array(candidate.cartesian.theta, copy=True) + self.turn - along
         return s, d, (heading + np.pi) % (2 * np.pi) - np.pi
 
     def _steps(self, trajectory: Trajectory) -> int:

@@ -11,6 +11,9 @@ Each is one road, driven in the direction of its reference line (OpenDRIVE's rig
 - ``on_ramp.xodr``: three lanes and an acceleration lane on their right from 150 m to 450 m (the
   ramp's lane: it opens over 50 m and ends, narrowing to nothing, over the last 60 m), 800 m.
 - ``lane_drop.xodr``: three lanes, the rightmost ending between 450 m and 530 m, 900 m.
+- ``rural_road.xodr``: a country road of one lane each way (3.25 m; its left lane, id 1, carries
+  the other direction), 100 km/h; 300 m straight, a 300 m arc of 800 m radius to the right,
+  400 m straight (1 km).
 
 The files are committed; run this to write them anew (the test ``test_roads`` checks that they
 are what it writes).
@@ -29,14 +32,14 @@ HERE = Path(__file__).resolve().parent
 LANE_WIDTH = 3.5
 
 
-def _road(geometry, right_lanes) -> xodr.Road:
+def _road(geometry, right_lanes, left_lanes=0, lane_width=LANE_WIDTH, center=xodr.RoadMarkType.solid) -> xodr.Road:
     road = xodr.create_road(
         geometry,
         id=1,
-        left_lanes=0,
+        left_lanes=left_lanes,
         right_lanes=right_lanes,
-        lane_width=LANE_WIDTH,
-        center_road_mark=xodr.RoadMark(xodr.RoadMarkType.solid, 0.12),
+        lane_width=lane_width,
+        center_road_mark=xodr.RoadMark(center, 0.12),
     )
     road.add_elevation(0.0, 0.0, 0.0, 0.0, 0.0)
     return road
@@ -66,6 +69,7 @@ def maps() -> dict[str, xodr.OpenDrive]:
         xodr.LaneDef(390.0, 450.0, 4, 3, -4),
     ]
     drop = [xodr.LaneDef(450.0, 530.0, 3, 2, -3)]
+    rural = [xodr.Line(300.0), xodr.Arc(-1 / 800.0, 300.0), xodr.Line(400.0)]
     return {
         "curved_highway.xodr": _network("pytest-roadlogic curved highway", _road(curved, 3)),
         "s_curve.xodr": _network(
@@ -74,6 +78,12 @@ def maps() -> dict[str, xodr.OpenDrive]:
         ),
         "on_ramp.xodr": _network("pytest-roadlogic on-ramp merge", _road([xodr.Line(800.0)], ramp)),
         "lane_drop.xodr": _network("pytest-roadlogic lane drop", _road([xodr.Line(900.0)], drop)),
+        "rural_road.xodr": _network(
+            "pytest-roadlogic rural road",
+            _road(rural, 1, 1, 3.25, xodr.RoadMarkType.broken).add_type(
+                xodr.RoadType.rural, 0, speed=100, speed_unit="km/h"
+            ),
+        ),
     }
 
 

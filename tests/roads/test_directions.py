@@ -1,0 +1,187 @@
+"""Both directions of a road: its left lanes driven against its reference line, and a road of one
+lane each way whose oncoming lane an overtake passes in (docs/roads.md, "The route")."""
+
+from __future__ import annotations
+
+import textwrap
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from pytest_roadlogic.roads.cubic_records import reversed_records, summed
+from pytest_roadlogic.roads.directions import against, with_oncoming
+from pytest_roadlogic.roads.opendrive_in import LaneWidth, MapError, piecewise_cubic, read_map
+from pytest_roadlogic.roads.route import pick_route
+
+MAPS = Path(__file__).resolve().parents[2] / "scenarios" / "roads" / "maps"
+
+
+def write(path: Path, text: str) -> Path:
+    path.write_text(textwrap.dedent(text).strip() + "\n")
+    return path
+
+
+def lane(lane_id: int, kind: str = "driving", widths: str = "<width sOffset='0' a='3.5' b='0' c='0' d='0'/>") -> str:
+    return f"<lane id='{lane_id}' type='{kind}'>{widths}</lane>"
+
+
+def two_way_map(path: Path, left: str, right: str, length: float = 700.0) -> Path:
+    """A road of ``length`` m along a clothoid from a 600 m left bend to a 500 m right one, with a
+    lane offset that moves its lanes 0.5 m left over the first 200 m, and two sections: ``left``
+    and ``right`` lanes in the first, and from 400 m on a further left lane that opens (0 to 3.5 m
+    over 100 m) beside them."""
+    opening = (
+        "<width sOffset='0' a='0' b='0' c='0.00105' d='-0.000007'/><width sOffset='100' a='3.5' b='0' c='0' d='0'/>"
+    )
+    return write(
+        path,
+        f"""
+        <?xml version="1.0"?>
+        <OpenDRIVE><header/>
+        <road id="1" length="{length}" junction="-1"><planView>
+        <geometry s="0" x="10" y="-20" hdg="0.3" length="{length}"><spiral curvStart="0.0016667" curvEnd="-0.002"/></geometry>
+        </planView><lanes>
+        <laneOffset s="0" a="0" b="0" c="0.0000375" d="-0.000000125"/><laneOffset s="200" a="0.5" b="0" c="0" d="0"/>
+        <laneSection s="0"><left>{left}</left><right>{right}</right></laneSection>
+        <laneSection s="400"><left>{left}{lane(len(left.split("<lane ")), widths=opening)}</left><right>{right}</right></laneSection>
+        </lanes></road>
+        </OpenDRIVE>
+        """,
+    )
+
+
+def test_cubic_records_read_backwards_and_added_up_give_the_same_values():
+    records = (
+        LaneWidth(0.0, 1.0, 0.1, -0.002, 0.00001),
+        LaneWidth(30.0, 2.0, 0.0, 0.001, 0.0),
+        LaneWidth(70.0, 3.0, 0, 0, 0),
+    )
+    u = np.linspace(0.0, 99.999, 401)
+    back = reversed_records(records, 100.0, sign=-1.0)
+    assert piecewise_cubic(back, 100.0 - u) == pytest.approx(-piecewise_cubic(records, u), abs=1e-9)
+    late = (LaneWidth(20.0, 1.5, 0.01, 0, 0),)  # 0 before 20 m, and so read backwards past 80 m
+    assert piecewise_cubic(reversed_records(late, 100.0), 100.0 - u) == pytest.approx(
+        piecewise_cubic(late, u), abs=1e-9
+    )
+    other = (LaneWidth(0.0, 0.5, 0.02, 0.0, -0.00001),)
+    total = summed([(0.0, 100.0, records), (40.0, 90.0, other)], 100.0)
+    inside = (u >= 40.0) & (u < 90.0)
+    want = piecewise_cubic(records, u) + np.where(inside, piecewise_cubic(other, u - 40.0), 0.0)
+    assert piecewise_cubic(total, u) == pytest.approx(want, abs=1e-9)
+
+
+def test_a_road_read_against_its_reference_line_is_the_same_road_from_its_other_end(tmp_path):
+    left = lane(1) + lane(2, widths="<width sOffset='0' a='3.2' b='0.001' c='0' d='0'/>")
+    road = read_map(two_way_map(tmp_path / "two_way.xodr", left, lane(-1) + lane(-2))).roads["1"]
+    back = against(road)
+    length = road.length
+    s = np.linspace(0.0, length, 57)
+    for t in (-4.0, 0.0, 2.5):
+        x, y, heading = road.reference_line.pose(s, t)
+        bx, by, bheading = back.reference_line.pose(length - s, -t)
+        assert bx == pytest.approx(x, abs=1e-6) and by == pytest.approx(y, abs=1e-6)
+        turned = (bheading - heading - np.pi + np.pi) % (2 * np.pi) - np.pi
+        assert turned == pytest.approx(0.0, abs=1e-6)
+    assert back.reference_line.curvature(length - s) == pytest.approx(-road.reference_line.curvature(s), abs=1e-9)
+    assert back.offset(length - s[1:-1]) == pytest.approx(-road.offset(s[1:-1]), abs=1e-9)
+    # its right lanes are the road's left ones, read from the other end, section by section
+    assert [len(section.right) for section in back.sections] == [3, 2]
+    for section, mirrored in zip(road.sections, reversed(back.sections)):
+        ds = np.linspace(0.0, section.end - section.s - 1e-6, 9)
+        for original, read in zip(section.left, mirrored.right):
+            assert read.id == -original.id
+            assert read.width(section.end - section.s - ds) == pytest.approx(original.width(ds), abs=1e-9)
+    assert back.label == "road 1 against its reference line" and against(back).sections == road.sections
+
+
+def test_a_road_whose_driving_lanes_run_against_its_reference_line_is_a_route_that_way(tmp_path):
+    sidewalk = lane(-1, "sidewalk", "<width sOffset='0' a='2' b='0' c='0' d='0'/>")
+    road_map = read_map(two_way_map(tmp_path / "one_way.xodr", lane(1) + lane(2), sidewalk))
+    route = pick_route(road_map, 2)
+    assert route.road.against and route.road.oncoming == 0 and route.lanes == 3  # the third opens on it
+    original = road_map.roads["1"]
+    x = np.array([50.0, 250.0, 600.0])
+    # its lane 0 (next to the reference line) is the road's left lane 1: 1.75 m left of the lane
+    # offset, on the left of the road's reference line as the map draws it
+    wx, wy, heading = route.pose(x, route.width - 1.75)
+    ox, oy, oheading = original.reference_line.pose(original.length - x, original.offset(original.length - x) + 1.75)
+    assert wx == pytest.approx(ox, abs=1e-6) and wy == pytest.approx(oy, abs=1e-6)
+    assert np.cos(heading - oheading) == pytest.approx(-1.0)
+
+
+def test_a_road_of_one_lane_each_way_joins_its_oncoming_lane_only_for_a_scenario_that_needs_two():
+    road_map = read_map(MAPS / "rural_road.xodr")
+    own = pick_route(road_map, 1)
+    assert own.lanes == 1 and own.road.oncoming == 0 and not own.road.against
+    joined = pick_route(road_map, 2)
+    assert joined.lanes == 2 and joined.road.oncoming == 1 and joined.lane_width == 3.25
+    # lane 0 (the scenario's lane 2) is the oncoming lane, left of the reference line; lane 1 the own
+    x = np.array([10.0, 450.0, 900.0])
+    line = road_map.roads["1"].reference_line
+    for y, t in ((joined.width - 1.625, 1.625), (1.625, -1.625)):
+        wx, wy, _ = joined.pose(x, y)
+        ox, oy, _ = line.pose(x, t)
+        assert wx == pytest.approx(ox, abs=1e-6) and wy == pytest.approx(oy, abs=1e-6)
+
+
+def test_a_median_keeps_the_oncoming_lanes_apart_and_a_map_without_a_fit_says_what_each_way_has(tmp_path):
+    median = lane(1, "border", "<width sOffset='0' a='1' b='0' c='0' d='0'/>") + lane(2)
+    road_map = read_map(two_way_map(tmp_path / "divided.xodr", median, lane(-1)))
+    assert with_oncoming(road_map.roads["1"]) is None
+    with pytest.raises(MapError) as caught:
+        pick_route(road_map, 3)
+    assert "road 1: 1 driving lane over 700 m, 1 (2 in parts) the other way" in caught.value.message
+
+
+def test_the_rural_overtake_passes_in_the_oncoming_lane_and_only_to_pass():
+    from pytest_roadlogic.frontend import check_file
+    from pytest_roadlogic.pipeline import load_scenario, run_scenario
+
+    path = MAPS.parent / "overtake_rural.osc"
+    warnings = check_file(path).warnings
+    assert any("lane 2 the oncoming lane" in w.message for w in warnings), warnings
+    scenario = load_scenario(path)
+    outcome = run_scenario(scenario, seed=1)
+    assert outcome.verdict.accepted, outcome.verdict.explain()
+    trace, road = outcome.simulation.trace, outcome.simulation.road
+    slow, ego = trace.actors["slow"], trace.actors["ego"]
+    assert set(slow["lane"]) == {1}, "the slow car keeps to its own lane"
+    # the ego is in the oncoming lane (lane 0: left of the reference line, as the map has it) in
+    # one stretch, from its pull-out to its pull-in, and passes the slow car there
+    oncoming = np.flatnonzero(ego["lane"] == 0)
+    assert len(oncoming) and np.all(np.diff(oncoming) == 1)
+    lateral = road.route.lateral(ego["x"][oncoming] + road.route_shift, ego["y"][oncoming])
+    assert np.all(lateral > 0.0)
+    assert ego["x"][oncoming[0]] < slow["x"][oncoming[0]] and ego["x"][oncoming[-1]] > slow["x"][oncoming[-1]]
+    # on 3.25 m lanes a car keeps its lane's centre: the slow car 1.625 m right of the centre line
+    slow_lateral = road.route.lateral(slow["x"] + road.route_shift, slow["y"])
+    assert np.abs(slow_lateral + 1.625).max() < 0.15
+
+
+def test_a_road_heading_west_is_driven(tmp_path):
+    """frenetix's yaw-rate check differences headings without wrapping them: on a road whose heading
+    crossed pi every car stood still there (esmini's jolengatan). This one heads west and bends
+    right (clockwise) so that its heading crosses pi 120 m along it, where the cars drive."""
+    from pytest_roadlogic.pipeline import load_scenario, run_scenario
+
+    lanes = lane(-1) + lane(-2)
+    write(
+        tmp_path / "west.xodr",
+        f"""
+        <?xml version="1.0"?>
+        <OpenDRIVE><header/>
+        <road id="1" length="260" junction="-1"><planView>
+        <geometry s="0" x="0" y="0" hdg="{np.pi - 0.06}" length="260"><arc curvature="0.0005"/></geometry>
+        </planView><lanes><laneSection s="0"><right>{lanes}</right></laneSection></lanes></road>
+        </OpenDRIVE>
+        """,
+    )
+    osc = (MAPS.parents[1] / "change_lane.osc").read_text()
+    osc = "import osc.standard\n" + osc.replace("  v2: car\n", '  v2: car\n  path: Path\n  path.set_map("west.xodr")\n')
+    outcome = run_scenario(load_scenario(write(tmp_path / "west.osc", osc)), seed=1)
+    assert outcome.verdict.accepted, outcome.verdict.explain()
+    for name, columns in outcome.simulation.trace.actors.items():
+        heading = columns["world_heading"]
+        assert heading.min() < np.pi < heading.max(), f"{name} drove where the heading crosses pi"
+        assert np.diff(columns["x"]).min() > 1.0, f"{name} never stands still"
