@@ -7,9 +7,8 @@ refused before it is parsed. Every element keeps its line and column for the mes
 
 Read: each road's id, name, length, junction, links (predecessor, successor), plan view (line,
 arc, spiral, poly3, paramPoly3), lane offset (the lanes' centre line off the reference line, as
-cubic records), lane sections with their right lanes (type, width records) and the speed of its
-type records; junctions' ids and names. Left lanes are counted: routes run in the direction of
-the reference line (right-hand traffic).
+cubic records), lane sections with their right and left lanes (type, width records) and the speed of its
+type records; junctions' ids, names and connections.
 """
 
 from __future__ import annotations
@@ -169,10 +168,22 @@ class LaneSection:
 
 @dataclass(frozen=True)
 class Link:
-    """A road's predecessor or successor: a road or a junction, by id."""
+    """A road's predecessor or successor: a road or a junction, by id; a road's ``contact``: its
+    end (start or end) that touches this one."""
 
     type: str
     id: str
+    contact: str = ""
+
+
+@dataclass(frozen=True)
+class Connection:
+    """A junction's way from its incoming road into a connecting road (a road inside the junction),
+    entered at the connecting road's ``contact`` (start or end)."""
+
+    incoming: str
+    connecting: str
+    contact: str
 
 
 @dataclass(frozen=True)
@@ -198,6 +209,8 @@ class MapRoad:
     against: bool = False
     # its first right lanes that carry the other direction's traffic (``directions.with_oncoming``)
     oncoming: int = 0
+    # roads one after another (``chains.chained``): their labels, in order; () for a road of the map
+    chain: tuple[str, ...] = ()
 
     def offset(self, s):
         """The lane offset at ``s`` metres along the road (an array or a number)."""
@@ -205,6 +218,10 @@ class MapRoad:
 
     @property
     def label(self) -> str:
+        if len(self.chain) > 3:
+            return f"roads: {self.chain[0]}, then {len(self.chain) - 2} more, then {self.chain[-1]}"
+        if self.chain:
+            return "roads: " + ", then ".join(self.chain)
         return (
             f"road {self.id}"
             + (f" ({self.name!r})" if self.name else "")
@@ -214,12 +231,14 @@ class MapRoad:
 
 @dataclass(frozen=True)
 class RoadMap:
-    """A map: its file, its roads by id, its junctions' names by id, the file's bytes as read."""
+    """A map: its file, its roads by id, its junctions' names by id, the file's bytes as read, and
+    each junction's connections."""
 
     path: Path
     roads: dict[str, MapRoad]
     junctions: dict[str, str]
     data: bytes = field(default=b"", repr=False, compare=False)
+    connections: dict[str, tuple[Connection, ...]] = field(default_factory=dict, compare=False)
 
 
 def read_map(path: str | Path) -> RoadMap:
@@ -252,7 +271,18 @@ def read_map(path: str | Path) -> RoadMap:
     if not roads:
         raise MapError(path, "the map has no road", "give a .xodr file with at least one <road>", root.line)
     junctions = {j.attributes.get("id", ""): j.attributes.get("name", "") for j in root.findall("junction")}
-    return RoadMap(path, roads, junctions, text)
+    connections = {
+        j.attributes.get("id", ""): tuple(
+            Connection(
+                c.attributes.get("incomingRoad", ""),
+                c.attributes.get("connectingRoad", ""),
+                c.attributes.get("contactPoint", "start"),
+            )
+            for c in j.findall("connection")
+        )
+        for j in root.findall("junction")
+    }
+    return RoadMap(path, roads, junctions, text, connections)
 
 
 def _number(path: Path, element: _Element, name: str, default: float | None = None) -> float:
@@ -409,7 +439,11 @@ def _link(link: _Element | None, kind: str) -> Link | None:
     found = link.find(kind) if link is not None else None
     if found is None:
         return None
-    return Link(found.attributes.get("elementType", "road"), found.attributes.get("elementId", ""))
+    return Link(
+        found.attributes.get("elementType", "road"),
+        found.attributes.get("elementId", ""),
+        found.attributes.get("contactPoint", ""),
+    )
 
 
 _SPEED_UNITS = {"m/s": 1.0, "km/h": 1 / 3.6, "mph": 0.44704}

@@ -161,3 +161,31 @@ class ReferenceLine:
     def curvature(self, s) -> np.ndarray:
         line_s, _, _, _, curvature = self.sampled()
         return np.interp(s, line_s, curvature)
+
+
+@dataclass(frozen=True)
+class JoinedLine(ReferenceLine):
+    """Reference lines one after another (a route over several roads: each road's line as the
+    route drives it, the next starting where the last ends), read as one line: s runs on over
+    them."""
+
+    parts: tuple[ReferenceLine, ...] = ()
+
+    @property
+    def length(self) -> float:
+        return sum(part.length for part in self.parts)
+
+    def reversed(self) -> ReferenceLine:
+        return JoinedLine((), self.step, {}, False, tuple(part.reversed() for part in reversed(self.parts)))
+
+    def sampled(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        if not self.samples:
+            parts, start = [], 0.0
+            for k, part in enumerate(self.parts):
+                s, x, y, heading, curvature = part.sampled()
+                keep = slice(1, None) if k else slice(None)  # a part's start is its predecessor's end
+                parts.append((s[keep] - s[0] + start, x[keep], y[keep], heading[keep], curvature[keep]))
+                start += part.length
+            s, x, y, heading, curvature = (np.concatenate([p[i] for p in parts]) for i in range(5))
+            self.samples["all"] = (s, x, y, np.unwrap(heading), curvature)
+        return self.samples["all"]

@@ -63,9 +63,11 @@ class Road:
         return self.route.inner_edge(np.asarray(x, dtype=float) + self.route_shift)
 
     def world(self, x, y, heading=0.0) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """World x, y and heading of road coordinates (on the straight road, the same)."""
+        """World x, y and heading of road coordinates (on the straight road, the same). On a map the
+        heading is within -pi..pi (a route's own runs on unwrapped: 7.9 rad along a long one, which
+        CommonRoad refuses)."""
         if self.route is None:
             x, y = np.asarray(x, dtype=float), np.asarray(y, dtype=float)
             return x, y, np.asarray(heading, dtype=float) + 0.0 * x
         wx, wy, wh = self.route.pose(np.asarray(x, dtype=float) + self.route_shift, y)
-        return wx, wy, wh + heading
+        return wx, wy, (wh + heading + np.pi) % (2 * np.pi) - np.pi

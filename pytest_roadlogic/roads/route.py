@@ -1,15 +1,15 @@
-"""The road a scenario runs on (``Route``), and the choice of one in a map (``pick_route``).
+"""The road a scenario runs on (``Route``): a road of a map (``MapRoad``) as a route drives it.
 
-A route runs along one road of a map in the direction of its reference line (right-hand traffic:
-the road's right lanes), its lanes numbered as the planner numbers them: 0 nearest the reference
+A route runs along a road in the direction of its reference line (right-hand traffic: the road's
+right lanes), its lanes numbered as the planner numbers them: 0 nearest the reference
 line (the leftmost), then rightward. Its driving lanes begin at their inner edge: the road's lane
 offset, and right of the lanes that are not for driving between it and them (a motorway's median
 border, e6mini's). Its coordinates are the ones every stage reads: ``x`` metres along the
 reference line from the route's start and ``y`` metres left of the right edge of its lanes (on the
 straight road, exactly the coordinates the tool has always used). ``pose`` maps them to the world.
 
-A route that would cross a junction is not picked yet: a road inside a junction (a connecting
-road) is never a route, and a route is one road, not a chain of them.
+A route is one road driven one way (``directions``) or roads that continue one another
+(``chains``); ``choice.pick_route`` picks the one a scenario runs on.
 """
 
 from __future__ import annotations
@@ -19,8 +19,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .directions import against, with_oncoming
-from .opendrive_in import LaneSection, MapError, MapLane, MapRoad, RoadMap
+from .opendrive_in import LaneSection, MapLane, MapRoad
 from .reference_line import ReferenceLine
 
 DRIVING = "driving"
@@ -178,107 +177,8 @@ def driving_lanes(section: LaneSection) -> tuple[tuple[MapLane, ...], tuple[MapL
     return section.right[:first], tuple(driving)
 
 
-def _through_lanes(road: MapRoad) -> tuple[int, int]:
+def through_lanes(road: MapRoad) -> tuple[int, int]:
     """(driving lanes side by side that run the road's whole length, the most driving lanes
     anywhere on it)."""
     counts = [len(driving_lanes(section)[1]) for section in road.sections]
     return min(counts), max(counts)
-
-
-def describe(road: MapRoad) -> str:
-    """A road as a refusal lists it: its lanes each way, length and curves, or why it is no route."""
-    if road.junction not in ("", "-1"):
-        return f"{road.label}: inside junction {road.junction} (a route may not cross a junction yet)"
-    if road.rule == "LHT":
-        return f"{road.label}: left-hand traffic (rule LHT), which this tool does not drive yet"
-    through, most = _through_lanes(road)
-    extra = f", {most} in parts" if most > through else ""
-    back, back_most = _through_lanes(against(road))
-    if back_most:
-        extra += f", {back}{f' ({back_most} in parts)' if back_most > back else ''} the other way"
-    _, _, _, _, curvature = road.reference_line.sampled()
-    curves = []
-    for side, sign in (("left", 1.0), ("right", -1.0)):
-        sharpest = float((sign * curvature).max())
-        if sharpest > 1e-6:
-            curves.append(f"{side} {1 / sharpest:.0f} m")
-    bends = f", curves of radius down to {' and '.join(curves)}" if curves else ", straight"
-    plural = "" if through == 1 else "s"
-    return f"{road.label}: {through} driving lane{plural} over {road.length:g} m{extra}{bends}"
-
-
-def curve_stretch(road: MapRoad, curve: tuple[float | None, float | None, str | None]) -> tuple[float, float] | None:
-    """The longest stretch of the road (first, last metre along it) that bends with a radius
-    between ``curve``'s (metres; None: no bound) to its side (left, right; None: either); None
-    when it has none."""
-    low, high, side = curve
-    s, _, _, _, curvature = road.reference_line.sampled()
-    best = None
-    for name, sign in (("left", 1.0), ("right", -1.0)):
-        if side not in (None, name):
-            continue
-        bending = sign * curvature
-        radius = np.where(bending > 1e-9, 1.0 / np.maximum(bending, 1e-12), np.inf)
-        inside = np.isfinite(radius) & (radius >= (low or 0.0) - 1e-6) & (radius <= (high or np.inf) + 1e-6)
-        # runs of consecutive samples inside: (start index, end index)
-        edges = np.flatnonzero(np.diff(np.concatenate([[0], inside.astype(int), [0]])))
-        for start, end in zip(edges[::2], edges[1::2]):
-            stretch = (float(s[start]), float(s[end - 1]))
-            if best is None or stretch[1] - stretch[0] > best[1] - best[0]:
-                best = stretch
-    return best
-
-
-MIN_ROUTE_LENGTH = 200.0  # m of route a scenario that names no path_length is given at least
-
-
-def pick_route(
-    road_map: RoadMap,
-    lanes: int,
-    length: float = 0.0,
-    curve: tuple[float | None, float | None, str | None] | None = None,
-) -> Route:
-    """The route of ``road_map`` a scenario of ``lanes`` lanes and ``length`` metres fits on: the
-    longest road outside junctions with at least that many driving lanes (those beyond the lanes
-    that run its whole length begin or end on it: the planner keeps a car in such a lane only
-    where it is), at least that long, and with a ``curve`` (min radius, max radius, side; the
-    standard's ``path_curve``) when one is asked for. ``MapError`` saying why no road fits, road by
-    road."""
-    # a scenario that names no path_length still needs room to drive: a route too short for it
-    # would be reported as a scenario without a plan, blaming the scenario for the map
-    length = length or MIN_ROUTE_LENGTH
-    ways = [
-        way
-        for road in road_map.roads.values()
-        if road.junction in ("", "-1") and road.rule != "LHT"  # a route drives a road's right lanes: RHT
-        for way in (road, against(road))
-    ]
-
-    def fits(way: MapRoad) -> bool:
-        _, most = _through_lanes(way)
-        return most >= lanes and way.length >= length and (curve is None or curve_stretch(way, curve) is not None)
-
-    # the lanes of one direction first; a road of too few, with its oncoming lanes joined, only
-    # when no road has enough (an overtake on a road of one lane each way passes in the oncoming one)
-    fitting = [way for way in ways if fits(way)] or [
-        joined for way in ways if (joined := with_oncoming(way)) is not None and fits(joined)
-    ]
-    if not fitting:
-        lines = "; ".join(describe(road) for road in road_map.roads.values())
-        need = f"{lanes} driving lane{'' if lanes == 1 else 's'}" + (f" over {length:g} m" if length else "")
-        if curve is not None:
-            low, high, side = curve
-            radius = f"{low or 0:g}..{high:g} m" if high else f"at least {low:g} m"
-            need += f" and a curve{' to the ' + side if side else ''} of radius {radius}"
-        raise MapError(
-            road_map.path,
-            f"no road of the map has {need}: {lines}",
-            "ask for less (the lanes it names, path_min_driving_lanes, path_length, path_curve) or give a map with a road that has it",
-        )
-    # the longest; of two as long, the one along its reference line, then the least id
-    road = max(fitting, key=lambda way: (way.length, not way.against, -int(way.id) if way.id.isdigit() else 0))
-    widest = max(road.sections, key=lambda section: len(driving_lanes(section)[1]))
-    within = np.linspace(0.0, widest.end - widest.s, 9)
-    width = float(max(np.max(lane.width(within)) for lane in driving_lanes(widest)[1]))
-    stretch = curve_stretch(road, curve) if curve is not None else None
-    return Route(road_map.path, road, _through_lanes(road)[1], width, road_map.data, stretch)

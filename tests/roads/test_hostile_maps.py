@@ -18,8 +18,8 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from pytest_roadlogic.roads.choice import pick_route
 from pytest_roadlogic.roads.opendrive_in import MapError, read_map
-from pytest_roadlogic.roads.route import pick_route
 
 MAPS = Path(__file__).resolve().parents[2] / "scenarios" / "roads" / "maps"
 SECONDS = 10.0  # guards a hang, not a speed: a crafted map is refused in milliseconds

@@ -10,9 +10,10 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from pytest_roadlogic.roads.choice import pick_route
 from pytest_roadlogic.roads.opendrive_in import MapError, read_map
 from pytest_roadlogic.roads.reference_line import Geometry, ReferenceLine
-from pytest_roadlogic.roads.route import curve_speed, pick_route
+from pytest_roadlogic.roads.route import curve_speed
 
 pytest_plugins = ["pytester"]
 

@@ -98,8 +98,8 @@ class RoadLanes:
         """The lanes of the route the scenario runs on in the map it asked for (``self.map_asked``):
         the map's road that has the ``needed`` lanes; an error at ``set_map`` (or at the scenario,
         for the map option) saying why no road fits, or why the map cannot be read."""
+        from ...roads.choice import pick_route
         from ...roads.opendrive_in import MapError, read_map
-        from ...roads.route import pick_route
 
         path, location = self.map_asked
         at = location or scenario.location

@@ -1,0 +1,131 @@
+"""The choice of a route in a map (``pick_route``), and a map's roads as a refusal lists them.
+
+The route is one that has the lanes, the length and the curve a scenario asks for: one road driven
+either way, or roads that continue one another (``chains``), the longest of those whose sharpest
+curve lets a car drive ``BRISK`` (else the gentlest); a road of one lane each way with its
+oncoming lane joined only when none has enough lanes one way.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .chains import chained, chains
+from .directions import against, with_oncoming
+from .opendrive_in import MapError, MapRoad, RoadMap
+from .route import MAX_LATERAL_ACCELERATION, Route, driving_lanes, through_lanes
+
+# m/s a route's sharpest curve should let a car hold (90 kph): a longer route with a town's bend
+# (26 m, 26 kph) lost to a shorter one without
+BRISK = 25.0
+
+
+def describe(road: MapRoad) -> str:
+    """A road as a refusal lists it: its lanes each way, length and curves, or why it is no route."""
+    if road.junction not in ("", "-1"):
+        return f"{road.label}: inside junction {road.junction} (a route may not cross a junction yet)"
+    if road.rule == "LHT":
+        return f"{road.label}: left-hand traffic (rule LHT), which this tool does not drive yet"
+    through, most = through_lanes(road)
+    extra = f", {most} in parts" if most > through else ""
+    back, back_most = through_lanes(against(road))
+    if back_most:
+        extra += f", {back}{f' ({back_most} in parts)' if back_most > back else ''} the other way"
+    _, _, _, _, curvature = road.reference_line.sampled()
+    curves = []
+    for side, sign in (("left", 1.0), ("right", -1.0)):
+        sharpest = float((sign * curvature).max())
+        if sharpest > 1e-6:
+            curves.append(f"{side} {1 / sharpest:.0f} m")
+    bends = f", curves of radius down to {' and '.join(curves)}" if curves else ", straight"
+    plural = "" if through == 1 else "s"
+    return f"{road.label}: {through} driving lane{plural} over {road.length:g} m{extra}{bends}"
+
+
+def curve_stretch(road: MapRoad, curve: tuple[float | None, float | None, str | None]) -> tuple[float, float] | None:
+    """The longest stretch of the road (first, last metre along it) that bends with a radius
+    between ``curve``'s (metres; None: no bound) to its side (left, right; None: either); None
+    when it has none."""
+    low, high, side = curve
+    s, _, _, _, curvature = road.reference_line.sampled()
+    best = None
+    for name, sign in (("left", 1.0), ("right", -1.0)):
+        if side not in (None, name):
+            continue
+        bending = sign * curvature
+        radius = np.where(bending > 1e-9, 1.0 / np.maximum(bending, 1e-12), np.inf)
+        inside = np.isfinite(radius) & (radius >= (low or 0.0) - 1e-6) & (radius <= (high or np.inf) + 1e-6)
+        # runs of consecutive samples inside: (start index, end index)
+        edges = np.flatnonzero(np.diff(np.concatenate([[0], inside.astype(int), [0]])))
+        for start, end in zip(edges[::2], edges[1::2]):
+            stretch = (float(s[start]), float(s[end - 1]))
+            if best is None or stretch[1] - stretch[0] > best[1] - best[0]:
+                best = stretch
+    return best
+
+
+MIN_ROUTE_LENGTH = 200.0  # m of route a scenario that names no path_length is given at least
+
+
+def pick_route(
+    road_map: RoadMap,
+    lanes: int,
+    length: float = 0.0,
+    curve: tuple[float | None, float | None, str | None] | None = None,
+) -> Route:
+    """The route of ``road_map`` a scenario of ``lanes`` lanes and ``length`` metres fits on: the
+    longest road outside junctions with at least that many driving lanes (those beyond the lanes
+    that run its whole length begin or end on it: the planner keeps a car in such a lane only
+    where it is), at least that long, and with a ``curve`` (min radius, max radius, side; the
+    standard's ``path_curve``) when one is asked for. ``MapError`` saying why no road fits, road by
+    road."""
+    # a scenario that names no path_length still needs room to drive: a route too short for it
+    # would be reported as a scenario without a plan, blaming the scenario for the map
+    length = length or MIN_ROUTE_LENGTH
+    ways = [
+        way
+        for road in road_map.roads.values()
+        if road.junction in ("", "-1") and road.rule != "LHT"  # a route drives a road's right lanes: RHT
+        for way in (road, against(road))
+    ]
+
+    def fits(way: MapRoad) -> bool:
+        _, most = through_lanes(way)
+        return most >= lanes and way.length >= length and (curve is None or curve_stretch(way, curve) is not None)
+
+    # the lanes of one direction first, on one road or on roads that continue one another; a road
+    # of too few, with its oncoming lanes joined, only when no route has enough (an overtake on a
+    # road of one lane each way passes in the oncoming one)
+    fitting = [way for way in ways + [chained(c) for c in chains(road_map, ways, lanes)] if fits(way)]
+    if not fitting:
+        one_way = ways + [chained(c) for c in chains(road_map, ways, 1)]
+        fitting = [joined for way in one_way if (joined := with_oncoming(way)) is not None and fits(joined)]
+    if not fitting:
+        lines = "; ".join(describe(road) for road in road_map.roads.values())
+        need = f"{lanes} driving lane{'' if lanes == 1 else 's'}" + (f" over {length:g} m" if length else "")
+        if curve is not None:
+            low, high, side = curve
+            radius = f"{low or 0:g}..{high:g} m" if high else f"at least {low:g} m"
+            need += f" and a curve{' to the ' + side if side else ''} of radius {radius}"
+        raise MapError(
+            road_map.path,
+            f"no road of the map has {need}: {lines}",
+            "ask for less (the lanes it names, path_min_driving_lanes, path_length, path_curve) or give a map with a road that has it",
+        )
+
+    # the planner holds every car to the speed of the route's sharpest curve: of the routes that let
+    # cars drive ``BRISK`` the longest, else the gentlest; of two alike, the one along its
+    # reference line, then the least id
+    def rank(way: MapRoad) -> tuple:
+        curvature = float(np.abs(way.reference_line.sampled()[4]).max())
+        speed = (MAX_LATERAL_ACCELERATION / curvature) ** 0.5 if curvature > 0 else float("inf")
+        return (min(speed, BRISK), way.length, not way.against, -int(way.id) if way.id.isdigit() else 0)
+
+    road = max(fitting, key=rank)
+    widest = max(road.sections, key=lambda section: len(driving_lanes(section)[1]))
+    within = np.linspace(0.0, widest.end - widest.s, 9)
+    # the innermost lane's width (a route's lanes are as wide as one another; the outer ones of a
+    # published map may be a parking bay 5 m wide here and there)
+    width = float(np.max(driving_lanes(widest)[1][0].width(within)))
+    stretch = curve_stretch(road, curve) if curve is not None else None
+    return Route(road_map.path, road, through_lanes(road)[1], width, road_map.data, stretch)
