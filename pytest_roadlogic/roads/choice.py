@@ -23,7 +23,7 @@ BRISK = 25.0
 def describe(road: MapRoad) -> str:
     """A road as a refusal lists it: its lanes each way, length and curves, or why it is no route."""
     if road.junction not in ("", "-1"):
-        return f"{road.label}: inside junction {road.junction} (a route may not cross a junction yet)"
+        return f"{road.label}: inside junction {road.junction} (a route goes through a junction straight on, never begins in one)"
     if road.rule == "LHT":
         return f"{road.label}: left-hand traffic (rule LHT), which this tool does not drive yet"
     through, most = through_lanes(road)

@@ -181,7 +181,10 @@ def test_a_road_inside_a_junction_is_never_a_route_and_is_named_so(tmp_path):
     text = (MAPS / "s_curve.xodr").read_text().replace('junction="-1"', 'junction="7"')
     with pytest.raises(MapError) as caught:
         pick_route(read_map(write(tmp_path / "junction.xodr", text)), 3)
-    assert "road 1: inside junction 7 (a route may not cross a junction yet)" in caught.value.message
+    assert (
+        "road 1: inside junction 7 (a route goes through a junction straight on, never begins in one)"
+        in caught.value.message
+    )
 
 
 SCENARIO = """
