@@ -1,15 +1,52 @@
-"""OpenDRIVE's cubic records (lane widths, the lane offset) read from the other end, and added up.
+"""OpenDRIVE's cubic records (lane widths, the lane offset): evaluated, sampled for the map's
+bounds, read from the other end, and added up.
 
 A record holds from its ``offset`` on, to the next record's: a + b du + c du^2 + d du^3 with du
-metres from its offset (``opendrive_in.LaneWidth``; ``piecewise_cubic`` evaluates a tuple of them).
-A road driven against its reference line reads its widths and its offset backwards, and a route
-whose lanes begin beyond the oncoming lanes has its lanes' edge at the offset plus their widths:
-both are again cubic records, so that everything downstream reads them as it reads the map's own.
+metres from its offset (``LaneWidth``; ``piecewise_cubic`` evaluates a tuple of them). A road
+driven against its reference line reads its widths and its offset backwards, and a route whose
+lanes begin beyond the oncoming lanes has its lanes' edge at the offset plus their widths: both
+are again cubic records, so that everything downstream reads them as it reads the map's own.
 """
 
 from __future__ import annotations
 
-from .opendrive_in import LaneWidth
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+
+@dataclass(frozen=True)
+class LaneWidth:
+    """One width record of a lane: from ``offset`` metres into its section, a + b ds + c ds^2 + d ds^3."""
+
+    offset: float
+    a: float
+    b: float
+    c: float
+    d: float
+
+
+def piecewise_cubic(records: tuple[LaneWidth, ...], u):
+    """The value of the records at ``u`` (an array or a number): 0 before the first record."""
+    u = np.asarray(u, dtype=float)
+    result = np.zeros_like(u)
+    for record, end in _stretches(records, math.inf):
+        inside = (u >= record.offset - 1e-9) & (u < end)
+        du = u - record.offset
+        result = np.where(inside, record.a + record.b * du + record.c * du**2 + record.d * du**3, result)
+    return result
+
+
+def sampled_records(records: tuple[LaneWidth, ...], length: float) -> list[np.ndarray]:
+    """Each record's values at 9 points over its stretch (from its offset to the next record's, the
+    last to ``length``), as the map's bounds on widths and offsets check them."""
+    sampled = []
+    for record, end in _stretches(records, length):
+        u = np.linspace(0.0, max(0.0, end - record.offset), 9)
+        with np.errstate(all="ignore"):
+            sampled.append(record.a + record.b * u + record.c * u**2 + record.d * u**3)
+    return sampled
 
 
 def _expanded(record: LaneWidth, at: float) -> tuple[float, float, float, float]:

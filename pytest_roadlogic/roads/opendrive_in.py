@@ -19,6 +19,7 @@ from pathlib import Path
 from xml.parsers import expat
 
 from ..confinement import UnreadableFile, read_bounded
+from .cubic_records import LaneWidth, piecewise_cubic, sampled_records
 from .reference_line import Geometry, ReferenceLine
 
 # What a map may hold (docs/roads.md, "What a map may hold"). A map is data from anywhere: each
@@ -118,17 +119,6 @@ def _parse(path: Path, text: bytes) -> _Element:
 
 
 @dataclass(frozen=True)
-class LaneWidth:
-    """One width record of a lane: from ``offset`` metres into its section, a + b ds + c ds^2 + d ds^3."""
-
-    offset: float
-    a: float
-    b: float
-    c: float
-    d: float
-
-
-@dataclass(frozen=True)
 class MapLane:
     """A lane of a section: its OpenDRIVE id (negative: right of the reference line), its type and widths."""
 
@@ -139,21 +129,6 @@ class MapLane:
     def width(self, ds):
         """Its width at ``ds`` metres into its section (an array or a number)."""
         return piecewise_cubic(self.widths, ds)
-
-
-def piecewise_cubic(records: tuple[LaneWidth, ...], u):
-    """The value of OpenDRIVE's cubic records (each from its ``offset`` on, a + b du + c du^2 + d du^3)
-    at ``u`` (an array or a number): 0 before the first record."""
-    import numpy as np
-
-    u = np.asarray(u, dtype=float)
-    result = np.zeros_like(u)
-    for i, record in enumerate(records):
-        end = records[i + 1].offset if i + 1 < len(records) else math.inf
-        inside = (u >= record.offset - 1e-9) & (u < end)
-        du = u - record.offset
-        result = np.where(inside, record.a + record.b * du + record.c * du**2 + record.d * du**3, result)
-    return result
 
 
 @dataclass(frozen=True)
@@ -373,7 +348,7 @@ def _lane_offset(path: Path, records: list[_Element], length: float) -> tuple[La
         key=lambda item: item[0].offset,
     )
     most = MAX_LANE_WIDTH * MAX_LANES
-    for (_, element), value in zip(offsets, _sampled_records(tuple(record for record, _ in offsets), length)):
+    for (_, element), value in zip(offsets, sampled_records(tuple(record for record, _ in offsets), length)):
         if not np.all(np.isfinite(value)) or np.max(np.abs(value)) > most:
             raise MapError(
                 path,
@@ -385,20 +360,6 @@ def _lane_offset(path: Path, records: list[_Element], length: float) -> tuple[La
     if not any(record.a or record.b or record.c or record.d for record, _ in offsets):
         return ()  # all zero: the reference line
     return tuple(record for record, _ in offsets)
-
-
-def _sampled_records(records: tuple[LaneWidth, ...], length: float) -> list:
-    """Each cubic record's values at 9 points over its stretch (from its offset to the next
-    record's, the last to ``length``), as the bounds on widths and offsets check them."""
-    import numpy as np
-
-    sampled = []
-    for i, record in enumerate(records):
-        end = records[i + 1].offset if i + 1 < len(records) else length
-        u = np.linspace(0.0, max(0.0, end - record.offset), 9)
-        with np.errstate(all="ignore"):
-            sampled.append(record.a + record.b * u + record.c * u**2 + record.d * u**3)
-    return sampled
 
 
 def _check_reference_line(path: Path, records: list[_Element], geometries: tuple[Geometry, ...]) -> None:
@@ -522,7 +483,7 @@ def _check_widths(path: Path, lane: _Element, widths: tuple[LaneWidth, ...], len
     records = lane.findall("width")
     widest = MAX_LANE_WIDTH if kind == "driving" else MAX_VERGE_WIDTH
     most = 0.0
-    for element, width in zip(records, _sampled_records(widths, length)):
+    for element, width in zip(records, sampled_records(widths, length)):
         if not np.all(np.isfinite(width)) or np.min(width) < -1e-6 or np.max(width) > widest:
             raise MapError(
                 path,

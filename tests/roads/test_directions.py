@@ -10,9 +10,9 @@ import numpy as np
 import pytest
 
 from pytest_roadlogic.roads.choice import pick_route
-from pytest_roadlogic.roads.cubic_records import reversed_records, summed
+from pytest_roadlogic.roads.cubic_records import LaneWidth, piecewise_cubic, reversed_records, summed
 from pytest_roadlogic.roads.directions import against, with_oncoming
-from pytest_roadlogic.roads.opendrive_in import LaneWidth, MapError, piecewise_cubic, read_map
+from pytest_roadlogic.roads.opendrive_in import MapError, read_map
 
 MAPS = Path(__file__).resolve().parents[2] / "scenarios" / "roads" / "maps"
 
