@@ -24,7 +24,7 @@ from .cubic_records import summed
 from .directions import against
 from .opendrive_in import LaneSection, MapRoad, RoadMap
 from .reference_line import JoinedLine
-from .route import driving_lanes, through_lanes
+from .route import driving_lanes, inner_edge, through_lanes
 
 JOINT_TOLERANCE = 0.3  # m between a lane's centre at one road's end and at the next one's start
 STRAIGHT_ON = math.radians(20.0)  # the most a connecting road may turn for a route to go through it
@@ -47,9 +47,9 @@ def _lane_centres(road: MapRoad, s: float) -> np.ndarray:
     """World points (n x 2) of the centres of the driving lanes of ``road`` at ``s`` metres along
     it, from the reference line outward (a lane narrower than 1 m there is left out)."""
     section = next((x for x in road.sections if x.s - 1e-9 <= s <= x.end + 1e-9), road.sections[-1])
-    inner, driving = driving_lanes(section)
+    _, driving = driving_lanes(section)
     ds = min(max(s - section.s, 0.0), section.end - section.s)
-    edge = float(road.offset(s)) - sum(float(lane.width(ds)) for lane in inner)
+    edge = float(inner_edge(road, s))
     centres = []
     for lane in driving:
         width = float(lane.width(ds))
@@ -72,12 +72,6 @@ def continues(first: MapRoad, then: MapRoad) -> bool:
     _, _, heading_start = then.reference_line.pose(np.array([0.0]))
     turn = (float(heading_start[0] - heading_end[0]) + math.pi) % (2 * math.pi) - math.pi
     return abs(turn) < 0.1 and bool(np.all(np.hypot(*(end[:n] - start[:n]).T) < JOINT_TOLERANCE))
-
-
-def _sharpest(road: MapRoad) -> float:
-    """The greatest curvature of a road (1/m, either side)."""
-    _, _, _, _, curvature = road.reference_line.sampled()
-    return float(np.abs(curvature).max())
 
 
 def _turn(road: MapRoad) -> float:
@@ -116,7 +110,7 @@ def chains(road_map: RoadMap, starts: list[MapRoad], lanes: int) -> list[tuple[M
     driving lanes all along (a connecting road inside a junction: at least one) and continues the
     last: the longest ones, each as far as it goes."""
     found: list[tuple[MapRoad, ...]] = []
-    stack = [((start,), _sharpest(start)) for start in starts if through_lanes(start)[0] >= lanes]
+    stack = [((start,), start.reference_line.sharpest()) for start in starts if through_lanes(start)[0] >= lanes]
     followed = 0
     while stack and followed < MAX_CHAINS:
         route, sharpest = stack.pop()
@@ -128,7 +122,7 @@ def chains(road_map: RoadMap, starts: list[MapRoad], lanes: int) -> list[tuple[M
                 if any(road.id in taken for road in step):
                     continue
                 lanes_on = [through_lanes(road)[0] >= (lanes if road is step[-1] else 1) for road in step]
-                bends = max(_sharpest(road) for road in step)
+                bends = max(road.reference_line.sharpest() for road in step)
                 chain = (route[-1], *step)
                 if (
                     all(lanes_on)

@@ -13,7 +13,7 @@ import numpy as np
 from .chains import chained, chains
 from .directions import against, with_oncoming
 from .opendrive_in import MapError, MapRoad, RoadMap
-from .route import MAX_LATERAL_ACCELERATION, Route, driving_lanes, through_lanes
+from .route import Route, driving_lanes, holding_speed, through_lanes
 
 # m/s a route's sharpest curve should let a car hold (90 kph): a longer route with a town's bend
 # (26 m, 26 kph) lost to a shorter one without
@@ -117,8 +117,7 @@ def pick_route(
     # cars drive ``BRISK`` the longest, else the gentlest; of two alike, the one along its
     # reference line, then the least id
     def rank(way: MapRoad) -> tuple:
-        curvature = float(np.abs(way.reference_line.sampled()[4]).max())
-        speed = (MAX_LATERAL_ACCELERATION / curvature) ** 0.5 if curvature > 0 else float("inf")
+        speed = holding_speed(way.reference_line.sharpest())
         return (min(speed, BRISK), way.length, not way.against, -int(way.id) if way.id.isdigit() else 0)
 
     road = max(fitting, key=rank)

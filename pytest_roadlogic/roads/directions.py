@@ -15,8 +15,7 @@ import dataclasses
 
 from .cubic_records import reversed_records, summed
 from .opendrive_in import LaneSection, MapLane, MapRoad
-
-DRIVING = "driving"
+from .route import DRIVING
 
 
 def _mirrored(lanes: tuple[MapLane, ...], length: float) -> tuple[MapLane, ...]:

@@ -162,6 +162,12 @@ class ReferenceLine:
         line_s, _, _, _, curvature = self.sampled()
         return np.interp(s, line_s, curvature)
 
+    def sharpest(self, start: float = 0.0, end: float | None = None) -> float:
+        """The greatest curvature (1/m, either side) between ``start`` and ``end`` metres along it."""
+        s, _, _, _, curvature = self.sampled()
+        inside = (s >= start) & (s <= (self.length if end is None else end))
+        return float(np.abs(curvature[inside]).max()) if inside.any() else 0.0
+
 
 @dataclass(frozen=True)
 class JoinedLine(ReferenceLine):

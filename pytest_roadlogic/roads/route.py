@@ -97,16 +97,7 @@ class Route:
         """Metres left of the reference line at which the driving lanes begin, at lengths ``s`` along
         the route: the lane offset, less the lanes between it and them that are not for driving.
         Before its start and past its end, its first and last values."""
-        s = np.clip(np.asarray(s, dtype=float), 0.0, self.length)
-        edge = np.asarray(self.road.offset(s), dtype=float)
-        for section in self.sections:
-            inner, _ = driving_lanes(section)
-            if not inner:
-                continue
-            last = section is self.sections[-1]
-            inside = (s >= section.s - 1e-9) & ((s < section.end - 1e-9) | last)
-            edge = edge - np.where(inside, sum(lane.width(s - section.s) for lane in inner), 0.0)
-        return edge
+        return inner_edge(self.road, np.clip(np.asarray(s, dtype=float), 0.0, self.length))
 
     def curvature(self, s) -> np.ndarray:
         """The reference line's curvature (1/m, positive to the left) at lengths ``s`` along the route."""
@@ -153,16 +144,34 @@ class Route:
 
     def greatest_curvature(self, start: float = 0.0, end: float | None = None) -> float:
         """The greatest curvature (1/m, either side) between ``start`` and ``end`` metres along it."""
-        s, _, _, _, curvature = self.reference_line.sampled()
-        inside = (s >= start) & (s <= (self.length if end is None else end))
-        return float(np.abs(curvature[inside]).max()) if inside.any() else 0.0
+        return self.reference_line.sharpest(start, end)
+
+
+def holding_speed(curvature: float) -> float:
+    """The greatest speed (m/s) at which a car holds a curve of ``curvature`` (1/m) at
+    ``MAX_LATERAL_ACCELERATION`` (v^2 k = a); infinite on a straight."""
+    return (MAX_LATERAL_ACCELERATION / curvature) ** 0.5 if curvature > 0 else float("inf")
 
 
 def curve_speed(route: Route) -> float:
-    """The greatest speed (m/s) at which a car holds the route's sharpest curve at
-    ``MAX_LATERAL_ACCELERATION`` (v^2 k = a); infinite on a straight route."""
-    curvature = route.greatest_curvature()
-    return (MAX_LATERAL_ACCELERATION / curvature) ** 0.5 if curvature > 0 else float("inf")
+    """The greatest speed (m/s) at which a car holds the route's sharpest curve."""
+    return holding_speed(route.greatest_curvature())
+
+
+def inner_edge(road: MapRoad, s) -> np.ndarray:
+    """Metres left of ``road``'s reference line at which its driving lanes begin, at lengths ``s``
+    (inside the road) along it: its lane offset, less the lanes between it and them that are not
+    for driving."""
+    s = np.asarray(s, dtype=float)
+    edge = np.asarray(road.offset(s), dtype=float)
+    for section in road.sections:
+        inner, _ = driving_lanes(section)
+        if not inner:
+            continue
+        last = section is road.sections[-1]
+        inside = (s >= section.s - 1e-9) & ((s < section.end - 1e-9) | last)
+        edge = edge - np.where(inside, sum(lane.width(s - section.s) for lane in inner), 0.0)
+    return edge
 
 
 def driving_lanes(section: LaneSection) -> tuple[tuple[MapLane, ...], tuple[MapLane, ...]]:
