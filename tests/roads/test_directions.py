@@ -3,7 +3,6 @@ lane each way whose oncoming lane an overtake passes in (docs/roads.md, "The rou
 
 from __future__ import annotations
 
-import textwrap
 from pathlib import Path
 
 import numpy as np
@@ -13,13 +12,7 @@ from pytest_roadlogic.roads.choice import pick_route
 from pytest_roadlogic.roads.cubic_records import LaneWidth, piecewise_cubic, reversed_records, summed
 from pytest_roadlogic.roads.directions import against, with_oncoming
 from pytest_roadlogic.roads.opendrive_in import MapError, read_map
-
-MAPS = Path(__file__).resolve().parents[2] / "scenarios" / "roads" / "maps"
-
-
-def write(path: Path, text: str) -> Path:
-    path.write_text(textwrap.dedent(text).strip() + "\n")
-    return path
+from tests.roads.map_files import MAPS, write
 
 
 def lane(lane_id: int, kind: str = "driving", widths: str = "<width sOffset='0' a='3.5' b='0' c='0' d='0'/>") -> str:

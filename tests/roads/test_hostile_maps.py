@@ -20,8 +20,8 @@ from hypothesis import strategies as st
 
 from pytest_roadlogic.roads.choice import pick_route
 from pytest_roadlogic.roads.opendrive_in import MapError, read_map
+from tests.roads.map_files import MAPS
 
-MAPS = Path(__file__).resolve().parents[2] / "scenarios" / "roads" / "maps"
 SECONDS = 10.0  # guards a hang, not a speed: a crafted map is refused in milliseconds
 MEGABYTES = 500
 

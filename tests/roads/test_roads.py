@@ -4,7 +4,6 @@ a route picked or refused with reasons, set_map and the map option, and a run on
 from __future__ import annotations
 
 import math
-import textwrap
 from pathlib import Path
 
 import numpy as np
@@ -14,11 +13,11 @@ from pytest_roadlogic.roads.choice import pick_route
 from pytest_roadlogic.roads.opendrive_in import MapError, read_map
 from pytest_roadlogic.roads.reference_line import Geometry, ReferenceLine
 from pytest_roadlogic.roads.route import curve_speed
+from tests.roads.map_files import MAPS, write
 
 pytest_plugins = ["pytester"]
 
 ROOT = Path(__file__).resolve().parents[2]
-MAPS = ROOT / "scenarios" / "roads" / "maps"
 
 
 def test_the_committed_maps_are_what_their_recipe_writes(tmp_path):
@@ -112,11 +111,6 @@ def test_the_test_maps_read_as_their_recipe_describes():
     assert float(opening.right[3].width(opening.end - opening.s)) == pytest.approx(3.5, abs=1e-6)
     drop = read_map(MAPS / "lane_drop.xodr").roads["1"]
     assert [len(section.right) for section in drop.sections] == [3, 3, 2]
-
-
-def write(path: Path, text: str) -> Path:
-    path.write_text(textwrap.dedent(text).lstrip())
-    return path
 
 
 def test_a_map_with_a_document_type_is_refused_at_it_and_no_entity_is_read(tmp_path):
