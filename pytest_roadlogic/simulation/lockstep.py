@@ -80,9 +80,9 @@ class _Lockstep:
         self.refs = refs = references(plan, lanes)
         # a replan may lengthen the run: room for about ten more seconds at highway speed
         road = _road_around(refs, lanes, 60.0 if react is None else 400.0)
-        if plan.route is not None:  # on a map: where the plan placed itself on the route
+        if route is not None:  # on a map: where the plan placed itself on the route
             shift = plan.origin if plan.origin is not None else -road.x_start
-            road = dataclasses.replace(road, route=plan.route, route_shift=shift)
+            road = dataclasses.replace(road, route=route, route_shift=shift)
         self.road = road
         self.active: dict[str, Driver] = {}
         for vehicle, reference in refs.items():

@@ -234,20 +234,16 @@ def shape_facts(
     ``acceleration_margin``) on every step; step, a band at the car's limits either way; cubic and
     sinusoidal, per length D the phase may have, the size of the change a peak in the band gives
     over D steps and the speed the shape has at each step inside."""
-    if rate.shape == "step":
-        up = (settings.max_acceleration - STEP_BAND, settings.max_acceleration)
-        down = (-settings.min_acceleration - STEP_BAND, -settings.min_acceleration)
+    if rate.shape in ("step", "linear"):
+        if rate.shape == "step":
+            up = (settings.max_acceleration - STEP_BAND, settings.max_acceleration)
+            down = (-settings.min_acceleration - STEP_BAND, -settings.min_acceleration)
+        else:
+            up = down = inset(rate.low, rate.high, automaton.planned_margin(rate, settings.acceleration_margin))
         return [
             f"held_rate({r},{phase},{actor}).",
             f"rate_up({r},{number(up[0])},{number(up[1])}).",
             f"rate_down({r},{number(down[0])},{number(down[1])}).",
-        ]
-    if rate.shape == "linear":
-        low, high = inset(rate.low, rate.high, automaton.planned_margin(rate, settings.acceleration_margin))
-        return [
-            f"held_rate({r},{phase},{actor}).",
-            f"rate_up({r},{number(low)},{number(high)}).",
-            f"rate_down({r},{number(low)},{number(high)}).",
         ]
     # no margin inside the peak's band: the change lasts whole steps, so the peak a length D gives
     # moves by about peak / D from one length to the next (a cubic stop from 80 kph at 6 m/s^2:
