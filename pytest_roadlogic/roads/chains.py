@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+from collections.abc import Iterator
 
 import numpy as np
 
@@ -31,6 +32,9 @@ STRAIGHT_ON = math.radians(20.0)  # the most a connecting road may turn for a ro
 GENTLE = 1 / 500.0  # 1/m: a highway's curve (114 kph at the planner's 2 m/s^2 of lateral acceleration)
 MAX_ROADS = 20  # roads on one route
 MAX_CHAINS = 2_000  # routes followed from all roads together: a map of many junctions stays quick
+# continuations looked at, all routes together (each road's are worked out once): routes through
+# two crafted junctions of 12,000 connections each would be looked at by the hundred million
+MAX_STEPS = 50_000
 
 
 def way(road_map: RoadMap, road_id: str, contact: str) -> MapRoad | None:
@@ -80,18 +84,19 @@ def _turn(road: MapRoad) -> float:
     return abs(float(heading[-1] - heading[0]))
 
 
-def next_ways(road_map: RoadMap, current: MapRoad) -> list[tuple[MapRoad, ...]]:
+def next_ways(road_map: RoadMap, current: MapRoad) -> Iterator[tuple[MapRoad, ...]]:
     """The roads a route may drive after ``current``'s end: the next road (one), or through a
     junction a connecting road that goes straight on and the road after it (two)."""
     link = current.successor
     if link is None:
-        return []
+        return
     if link.type == "road":
         after = way(road_map, link.id, link.contact or "start")
-        return [(after,)] if after is not None and after.junction in ("", "-1") else []
+        if after is not None and after.junction in ("", "-1"):
+            yield (after,)
+        return
     if link.type != "junction":
-        return []
-    result = []
+        return
     for connection in road_map.connections.get(link.id, ()):
         if connection.incoming != current.id:
             continue
@@ -101,34 +106,43 @@ def next_ways(road_map: RoadMap, current: MapRoad) -> list[tuple[MapRoad, ...]]:
         out = inside.successor
         after = way(road_map, out.id, out.contact or "start") if out.type == "road" else None
         if after is not None and after.junction in ("", "-1"):
-            result.append((inside, after))
-    return result
+            yield (inside, after)
 
 
 def chains(road_map: RoadMap, starts: list[MapRoad], lanes: int) -> list[tuple[MapRoad, ...]]:
     """Every route of two or more roads from one of ``starts`` on which each road has ``lanes``
     driving lanes all along (a connecting road inside a junction: at least one) and continues the
-    last: the longest ones, each as far as it goes."""
+    last: the longest ones, each as far as it goes (as far as ``MAX_CHAINS`` routes and ``MAX_STEPS``
+    continuations looked at find them)."""
     found: list[tuple[MapRoad, ...]] = []
+    onward: dict[tuple[str, bool], list[tuple[tuple[MapRoad, ...], float]]] = {}
+
+    def steps_after(current: MapRoad) -> list[tuple[tuple[MapRoad, ...], float]]:
+        """The continuations of ``current`` that have the lanes and meet its lanes, each with its
+        sharpest curve: worked out once per road and direction, whatever route reaches it."""
+        key = (current.id, current.against)
+        if key not in onward:
+            onward[key] = [
+                (step, max(road.reference_line.sharpest() for road in step))
+                for step in next_ways(road_map, current)
+                if all(through_lanes(road)[0] >= (lanes if road is step[-1] else 1) for road in step)
+                and all(continues(a, b) for a, b in zip((current, *step), step))
+            ]
+        return onward[key]
+
     stack = [((start,), start.reference_line.sharpest()) for start in starts if through_lanes(start)[0] >= lanes]
-    followed = 0
-    while stack and followed < MAX_CHAINS:
+    followed = looked = 0
+    while stack and followed < MAX_CHAINS and looked < MAX_STEPS:
         route, sharpest = stack.pop()
         followed += 1
         grown = False
         if len(route) < MAX_ROADS:
             taken = {road.id for road in route}
-            for step in next_ways(road_map, route[-1]):
-                if any(road.id in taken for road in step):
-                    continue
-                lanes_on = [through_lanes(road)[0] >= (lanes if road is step[-1] else 1) for road in step]
-                bends = max(road.reference_line.sharpest() for road in step)
-                chain = (route[-1], *step)
-                if (
-                    all(lanes_on)
-                    and bends <= max(sharpest, GENTLE)
-                    and all(continues(a, b) for a, b in zip(chain, chain[1:]))
-                ):
+            for step, bends in steps_after(route[-1]):
+                looked += 1
+                if looked > MAX_STEPS:
+                    break
+                if bends <= max(sharpest, GENTLE) and not any(road.id in taken for road in step):
                     stack.append((route + step, max(sharpest, bends)))
                     grown = True
         if not grown and len(route) > 1:
