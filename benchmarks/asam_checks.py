@@ -51,6 +51,7 @@ def main() -> None:
     parser.add_argument("--out", type=Path, default=Path(tempfile.mkdtemp(prefix="asam-")))
     args = parser.parse_args()
     files = sorted((ROOT / "scenarios" / "roads" / "maps").glob("*.xodr"))
+    files += sorted((ROOT / "scenarios" / "junctions" / "maps").glob("*.xodr"))
     for name, extra in (("straight", []), ("curved", ["--map", "scenarios/roads/maps/curved_highway.xodr"])):
         out = args.out / name
         subprocess.run(

@@ -30,6 +30,8 @@ def _plan(args: argparse.Namespace) -> int:
         scenario, automaton = load_automaton(args)
         settings = run_settings(args)
         planner_settings = settings_for(settings)
+        if scenario.route is not None:  # as a run plans: on the map's route (CannotPlanOnMap from the grid)
+            planner_settings = planner_settings.on_route(scenario.route)
         # as a run plans: the vehicle under test drives itself (planned as braking as a car can)
         dut = UnderTest.of(settings).vehicle(automaton.actors)
         if dut is not None:

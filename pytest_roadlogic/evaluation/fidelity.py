@@ -10,7 +10,9 @@ that phase's first instant), or, for a speed the vehicle is asked to drive towar
 A speed change counts when the mean acceleration over the step is above ``SPEED_CHANGE`` in
 size, but braking is asked by the standard's avoid_collisions (on by default) while another
 vehicle or an obstacle is ahead in a lane the vehicle occupies (one changing lane occupies both
-lanes in that step). Where a vehicle starts (its lane and speed) is no change.
+lanes in that step). A vehicle that drives through the junction of a route that turns (``along(path)``:
+``Route.crossers``) is asked by the road to change speed: it slows for the turn and drives on after
+it. Where a vehicle starts (its lane and speed) is no change.
 """
 
 from __future__ import annotations
@@ -72,6 +74,7 @@ def unasked_changes(plan: Plan, automaton: SymbolicAutomaton) -> list[UnaskedCha
     """Every lane change and speed change in ``plan`` that no construct of its vehicle asks for."""
     where = locations_by_step(plan, automaton)
     found: list[UnaskedChange] = []
+    turning = plan.route.crossers if plan.route is not None else frozenset()
     for vehicle, states in plan.states.items():
         if vehicle in plan.stationary:
             continue
@@ -81,7 +84,7 @@ def unasked_changes(plan: Plan, automaton: SymbolicAutomaton) -> list[UnaskedCha
             if after.lane != before.lane and not location.asked(vehicle, "lane"):
                 found.append(UnaskedChange(vehicle, step, "lane", before.lane, after.lane))
             acceleration = (after.speed - before.speed) / plan.dt
-            if abs(acceleration) <= SPEED_CHANGE or location.asked(vehicle, "speed"):
+            if abs(acceleration) <= SPEED_CHANGE or location.asked(vehicle, "speed") or vehicle in turning:
                 continue
             band = location.toward(vehicle)
             if band is not None and _toward(before.speed, after.speed, band.low, band.high):

@@ -12,6 +12,7 @@ import numpy as np
 
 from .chains import chained, chains
 from .directions import against, with_oncoming
+from .junctions import describe_junctions, junction_span, number_of_roads, turn_route, turns
 from .opendrive_in import MapError, MapRoad, RoadMap
 from .route import Route, driving_lanes, holding_speed, through_lanes
 
@@ -72,16 +73,20 @@ def pick_route(
     lanes: int,
     length: float = 0.0,
     curve: tuple[float | None, float | None, str | None] | None = None,
+    turn: tuple[str | None, int | None] | None = None,
 ) -> Route:
     """The route of ``road_map`` a scenario of ``lanes`` lanes and ``length`` metres fits on: the
     longest road outside junctions with at least that many driving lanes (those beyond the lanes
     that run its whole length begin or end on it: the planner keeps a car in such a lane only
     where it is), at least that long, and with a ``curve`` (min radius, max radius, side; the
-    standard's ``path_curve``) when one is asked for. ``MapError`` saying why no road fits, road by
-    road."""
+    standard's ``path_curve``) when one is asked for; with a ``turn`` (direction, number of roads
+    at the junction; None: any), the route of a turn at a junction (``pick_turn``). ``MapError``
+    saying why no road fits, road by road."""
     # a scenario that names no path_length still needs room to drive: a route too short for it
     # would be reported as a scenario without a plan, blaming the scenario for the map
     length = length or MIN_ROUTE_LENGTH
+    if turn is not None:
+        return pick_turn(road_map, lanes, length, turn)
     ways = [
         way
         for road in road_map.roads.values()
@@ -121,10 +126,55 @@ def pick_route(
         return (min(speed, BRISK), way.length, not way.against, -int(way.id) if way.id.isdigit() else 0)
 
     road = max(fitting, key=rank)
+    stretch = curve_stretch(road, curve) if curve is not None else None
+    return Route(road_map.path, road, through_lanes(road)[1], _lane_width(road), road_map.data, stretch)
+
+
+def _lane_width(road: MapRoad) -> float:
+    """The width of a route's lanes: its innermost lane's, where the road has the most lanes (a
+    route's lanes are as wide as one another; the outer ones of a published map may be a parking
+    bay 5 m wide here and there)."""
     widest = max(road.sections, key=lambda section: len(driving_lanes(section)[1]))
     within = np.linspace(0.0, widest.end - widest.s, 9)
-    # the innermost lane's width (a route's lanes are as wide as one another; the outer ones of a
-    # published map may be a parking bay 5 m wide here and there)
-    width = float(np.max(driving_lanes(widest)[1][0].width(within)))
-    stretch = curve_stretch(road, curve) if curve is not None else None
-    return Route(road_map.path, road, through_lanes(road)[1], width, road_map.data, stretch)
+    return float(np.max(driving_lanes(widest)[1][0].width(within)))
+
+
+def pick_turn(road_map: RoadMap, lanes: int, length: float, turn: tuple[str | None, int | None]) -> Route:
+    """The route of a turn at one of ``road_map``'s junctions (the standard's
+    ``map.roads_follow_in_junction(direction:, number_of_roads:)``): the road in, the junction's
+    connecting road and the road out, with ``lanes`` driving lanes on the roads in and out and
+    ``length`` metres in all; of several, the first in the map's order. ``MapError`` naming the
+    map's junctions and the turns they offer when none fits."""
+    direction, roads = turn
+    offered = [
+        t
+        for t in turns(road_map)
+        if direction in (None, t.direction)
+        and roads in (None, number_of_roads(road_map, t.junction))
+        and min(through_lanes(t.into)[0], through_lanes(t.out_of)[0]) >= lanes
+        and sum(road.length for road in t.roads) >= length
+    ]
+    if not offered:
+        where = f"a junction of {roads} roads" if roads else "a junction"
+        asked = {
+            "uturn": f"U-turn at {where}",
+            "straight": f"way straight on through {where}",
+            None: f"turn at {where}",
+        }.get(direction, f"{direction} turn at {where}")
+        need = f" with {lanes} driving lane{'' if lanes == 1 else 's'} in and out" if lanes > 1 else ""
+        raise MapError(
+            road_map.path,
+            f"the map has no {asked}{need}: {describe_junctions(road_map)}",
+            "ask for a turn the map has (roads_follow_in_junction's direction, number_of_roads), or give a map with one",
+        )
+    chosen = offered[0]
+    road = turn_route(chosen)
+    return Route(
+        road_map.path,
+        road,
+        min(through_lanes(chosen.into)[1], through_lanes(chosen.out_of)[1]),
+        _lane_width(chosen.into),
+        road_map.data,
+        junction_span=junction_span(chosen),
+        turn=f"{chosen.describe()} at junction {chosen.junction}",
+    )

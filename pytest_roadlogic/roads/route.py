@@ -32,6 +32,10 @@ ROUTE_MARGIN = 30.0
 # m/s^2 of lateral acceleration a planned car holds in a curve (0.2 g: 114 kph in a 500 m curve).
 # Above it the passing cars of the overtakes lag their plans in a curve (docs/decisions.md).
 MAX_LATERAL_ACCELERATION = 2.0
+# 1/m: a bend sharper than a 100 m radius (a turn at a junction, a town's corner) is a slow stretch
+# of its own: a car keeps to its speed only there (``Route.slow_stretches``); gentler curves bound
+# the speed all along the route (``curve_speed``)
+SLOW_CURVE = 1 / 100.0
 
 
 @dataclass(frozen=True)
@@ -51,6 +55,12 @@ class Route:
     # where the scenario starts (its first vehicle's first position, metres along the route), when
     # it asks for a curve (path_curve): that curve's stretch; None: anywhere that fits
     start_within: tuple[float, float] | None = None
+    # a route that turns at a junction (``junctions.turn_route``): the junction's first and last
+    # metre along it, the turn as a message says it, and the vehicles that drive through it
+    # (``along(path)`` on their drive): each starts short of it and ends past it
+    junction_span: tuple[float, float] | None = None
+    turn: str = ""
+    crossers: frozenset[str] = frozenset()
 
     @property
     def name(self) -> str:
@@ -146,6 +156,44 @@ class Route:
         """The greatest curvature (1/m, either side) between ``start`` and ``end`` metres along it."""
         return self.reference_line.sharpest(start, end)
 
+    def lane_curvature(self, s) -> np.ndarray:
+        """The greatest curvature (1/m, either side) of a lane's centre line at lengths ``s`` along
+        the route: the reference line's k, at t metres left of it, is k / (1 - k t) (a right turn's
+        inner lane bends more sharply than the road's centre)."""
+        s = np.atleast_1d(np.asarray(s, dtype=float))
+        k = self.curvature(s)
+        sharpest = np.zeros_like(s)
+        for lane in range(self.lanes):
+            t = self.lateral(s, self.width - (lane + 0.5) * self.lane_width)
+            sharpest = np.maximum(sharpest, np.abs(k / np.maximum(1.0 - k * t, 0.1)))
+        return sharpest
+
+    def slow_stretches(self) -> tuple[tuple[float, float, float], ...]:
+        """The stretches of the route whose lanes bend more sharply than ``SLOW_CURVE`` (a turn at a
+        junction): (first metre, last metre, the speed in m/s at which a car holds the sharpest of
+        it), each widened by half a car at both ends (a car's centre is where its plan is)."""
+        s = np.arange(0.0, self.length + STEP / 2, STEP)
+        bending = self.lane_curvature(s)
+        sharp = bending > SLOW_CURVE
+        edges = np.flatnonzero(np.diff(np.concatenate([[0], sharp.astype(int), [0]])))
+        return tuple(
+            (
+                max(0.0, float(s[first]) - HALF_CAR),
+                min(self.length, float(s[last - 1]) + HALF_CAR),
+                holding_speed(float(bending[first:last].max())),
+            )
+            for first, last in zip(edges[::2], edges[1::2])
+        )
+
+    def gentle_curvature(self) -> float:
+        """The greatest curvature (1/m, either side) of the route outside its slow stretches."""
+        bounds = [0.0]
+        for first, last, _ in self.slow_stretches():
+            bounds += [first, last]
+        bounds.append(self.length)
+        gaps = [(a, b) for a, b in zip(bounds[::2], bounds[1::2]) if b > a]
+        return max((self.greatest_curvature(a, b) for a, b in gaps), default=0.0)
+
 
 def holding_speed(curvature: float) -> float:
     """The greatest speed (m/s) at which a car holds a curve of ``curvature`` (1/m) at
@@ -154,8 +202,9 @@ def holding_speed(curvature: float) -> float:
 
 
 def curve_speed(route: Route) -> float:
-    """The greatest speed (m/s) at which a car holds the route's sharpest curve."""
-    return holding_speed(route.greatest_curvature())
+    """The greatest speed (m/s) at which a car holds the route's sharpest curve outside its slow
+    stretches (those bound a car only where they are)."""
+    return holding_speed(route.gentle_curvature())
 
 
 def inner_edge(road: MapRoad, s) -> np.ndarray:

@@ -362,7 +362,7 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks):
                     "use the built-in modifiers (speed, position, lane, ...)",
                 )
                 continue
-            if declared.owner == library.ROAD_TYPE:
+            if declared.owner in library.ROAD_TYPES:
                 known = declared.name in library.ROAD_MODIFIERS
             else:
                 known = self.registry.modifier(declared.name) is not None

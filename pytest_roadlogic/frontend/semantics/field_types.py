@@ -20,7 +20,7 @@ class FieldTyping:
         if item.is_list:
             self.error(location, "not supported: list parameters", "use one parameter per value")
             return None
-        if item.type == library.ROAD_TYPE:
+        if item.type in library.ROAD_TYPES:
             if item.constraints or item.default is not None:
                 self.error(
                     location,

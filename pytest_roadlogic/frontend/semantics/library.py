@@ -42,6 +42,8 @@ UNSUPPORTED_ACTOR_TYPES = ("person", "pedestrian", "animal", "cyclist", "bicycle
 # The road a scenario runs on, in the dialect of public OS2 scenario runners: a field of this type,
 # constrained by modifiers applied to the whole scenario (`path: Path`, `path.path_min_driving_lanes(4)`).
 ROAD_TYPE = "Path"
+# the same, as the standard declares it (`map: map`, `map.roads_follow_in_junction(...)`)
+ROAD_TYPES = (ROAD_TYPE, "map")
 
 NUMBER_TYPES = ("int", "uint", "float")
 # the physical types the pipeline models (length, time, speed, acceleration: metres and seconds),
@@ -196,6 +198,24 @@ ROAD_MODIFIERS: dict[str, Signature] = _signatures(
         (Parameter("min_radius", "length"), Parameter("max_radius", "length"), Parameter("side", "enum:side")),
         required=(("min_radius", "max_radius"),),
         description="on a map: the route has a curve of a radius in min_radius..max_radius (to the side)",
+    ),
+    # the standard's map.roads_follow_in_junction: the route turns at a junction of the map; the
+    # roads, lanes and routes it names as values of their own are not yet (docs/junctions.md)
+    Signature(
+        "roads_follow_in_junction",
+        (
+            Parameter("direction", "enum:junction_direction"),
+            Parameter("number_of_roads", "uint"),
+            Parameter("junction", "road", supported=False),
+            Parameter("in_road", "road", supported=False),
+            Parameter("out_road", "road", supported=False),
+            Parameter("clockwise_count", "uint", supported=False),
+            Parameter("in_lane", "road", supported=False),
+            Parameter("out_lane", "road", supported=False),
+            Parameter("junction_route", "road", supported=False),
+            Parameter("resulting_route", "road", supported=False),
+        ),
+        description="on a map: the route turns at a junction (direction: straight, left, right, uturn)",
     ),
     # an OpenDRIVE file: the scenario's map; a name (CARLA's towns): a warning, the straight road stands in
     Signature(

@@ -46,6 +46,12 @@ class RoadLanes:
                 "path_curve() asks for a curve, but the scenario runs on the straight road",
                 'give it a map with one: set_map("file.xodr"), or --roadlogic-map FILE',
             )
+        if "turn" in self.route_asks:
+            self.error(
+                self.route_asks["turn"][2],
+                "roads_follow_in_junction() asks for a junction, but the scenario runs on the straight road",
+                'give it a map with one: set_map("file.xodr"), or --roadlogic-map FILE',
+            )
         if least and most and least[0] > most[0]:
             self.error(
                 most[1],
@@ -116,8 +122,9 @@ class RoadLanes:
         asks = self.route_asks
         length = (asks["path_length"][0] or 0.0) if "path_length" in asks else 0.0
         curve = asks["path_curve"][:3] if "path_curve" in asks else None
+        turn = asks["turn"][:2] if "turn" in asks else None
         try:
-            self.route = pick_route(read_map(path), needed, length, curve)
+            self.route = pick_route(read_map(path), needed, length, curve, turn)
         except MapError as error:
             where_in_map = f"{error.path}:{error.line}:{error.column}: " if error.line else f"{error.path}: "
             self.error(at, f"the map{origin}: {where_in_map}{error.message}", error.hint or None)
@@ -147,8 +154,28 @@ class RoadLanes:
                 f"{'lane' if oncoming == 1 else 'lanes'} (a car there drives on the other direction's side of the road)",
                 "give a map with a road of that many lanes one way, unless the scenario passes in the oncoming lane",
             )
+        if self.route.junction_span is not None:
+            self._crossers(scenario, at)
         self.lanes, self.lanes_origin = lanes, f" (the route on {self.route.name})"
         return lanes
+
+    def _crossers(self, scenario: model.Scenario, at: SourceLocation) -> None:
+        """On a route that turns at a junction: the vehicles whose drive goes ``along(path)`` drive
+        through it (kept in the route); a warning when none does."""
+        import dataclasses
+
+        crossers = set()
+        for behavior in scenario.behaviors:
+            for node in model.walk(behavior):
+                if isinstance(node, model.Invocation) and any(m.name == "along" for m in node.modifiers):
+                    crossers.add(node.actor)
+        if not crossers:
+            self.warning(
+                at,
+                f"the route turns ({self.route.turn}), but no vehicle drives along it through the junction",
+                "add along(path) to the drive of each vehicle that takes the turn",
+            )
+        self.route = dataclasses.replace(self.route, crossers=frozenset(crossers))
 
     def _road_bounds(
         self, scenario: model.Scenario, env: dict, roads: list[str]
@@ -210,6 +237,9 @@ class RoadLanes:
             if modifier.name in ("path_length", "path_curve"):
                 self._route_ask(modifier, binding, env, before)
                 continue
+            if modifier.name == "roads_follow_in_junction":
+                self._turn_ask(modifier, binding, env, before)
+                continue
             argument = binding["lanes"]
             if argument is None or any(d.severity == "error" for d in self.diagnostics[before:]):
                 continue
@@ -230,6 +260,34 @@ class RoadLanes:
             else:
                 bounds[modifier.name] = (int(value.low), modifier.location)
         return bounds
+
+    def _turn_ask(self, modifier: model.Modifier, binding, env: dict, before: int) -> None:
+        """``roads_follow_in_junction``: the route turns at a junction, kept in ``self.route_asks``
+        as ("turn" -> (direction or None, number of roads or None, where))."""
+        if any(d.severity == "error" for d in self.diagnostics[before:]):
+            return
+        if "turn" in self.route_asks:
+            self.error(
+                modifier.location,
+                f"roads_follow_in_junction() is already given on line {self.route_asks['turn'][2].line}",
+                "the scenario's route turns at one junction: give it once",
+            )
+            return
+        direction = binding["direction"]
+        name = direction.value.name if direction is not None and isinstance(direction.value, model.Name) else None
+        roads = None
+        argument = binding["number_of_roads"]
+        if argument is not None:
+            value = evaluate(argument.value, env)
+            if not (
+                isinstance(value, Interval) and value.is_point and float(value.low).is_integer() and value.low >= 3
+            ):
+                self.error(
+                    argument.value.location, "number_of_roads takes one whole number from 3 up, e.g. number_of_roads: 4"
+                )
+                return
+            roads = int(value.low)
+        self.route_asks["turn"] = (name, roads, modifier.location)
 
     def _route_ask(self, modifier: model.Modifier, binding, env: dict, before: int) -> None:
         """``path_length`` / ``path_curve``: what the route on a map must have, kept in

@@ -91,6 +91,11 @@ class FrenetixDriver(DriverBase):
     # window, and the clearance (m, beyond the boxes) kept from the others' trajectories; chosen by
     # the accepted share of refined samples (docs/decisions.md)
     position_weight, lateral_weight, speed_weight = 1.0, 2.0, 2.0
+    # the lateral weight in a route's sharp bends (a turn at a junction, ``Route.slow_stretches``):
+    # with the highway's, a car turning at 20 kph in a 16 m radius ran 1.3 m wide of its lane's
+    # centre and off the road (the trajectories that keep the car where it is weigh as little as
+    # those that bring it back); with this, 0.1 m
+    bend_lateral_weight = 10.0
     longitudinal_clearance, lateral_clearance = 0.5, 0.2
     derivative_step = 0.05  # s, of the reference's numerical derivatives
     stop_deceleration: float | None = 3.0  # m/s^2 of the stopping sample
@@ -136,6 +141,8 @@ class FrenetixDriver(DriverBase):
         self.replan_steps = max(1, int(round(self.replan_period / dt)))
         self._committed: Trajectory | None = None  # the chosen trajectory, index 0 being now
         self._age = 0  # steps driven along it
+        # the route's sharp bends (metres along it, first and last), where the lateral error weighs more
+        self.bends = tuple((a, b) for a, b, _ in road.route.slow_stretches()) if road.route is not None else ()
 
     def retarget(self, vehicle: str, reference: Reference, road: Road, dt: float) -> None:
         """Follow ``reference`` from now on (a replan): the trajectory chosen for the old one is dropped."""
@@ -226,7 +233,7 @@ class FrenetixDriver(DriverBase):
         costs = self._tracking_costs(
             target,
             candidates,
-            (self.position_weight, self.lateral_weight, self.speed_weight),
+            (self.position_weight, self._lateral_weight(along), self.speed_weight),
             self.road.route is not None,
             self.hardest_braking * self.dt if len(self.reference.onsets) else None,
             self.guarded_steps,
@@ -351,6 +358,15 @@ class FrenetixDriver(DriverBase):
         plus their inner edge where it is (``along``: its x then, when already known)."""
         along = self.reference.s(times) if along is None else along
         return self.reference.d(times) - self.d_origin + self.road.inner_edge(along)
+
+    def _lateral_weight(self, along: np.ndarray) -> float:
+        """The weight of the lateral error over the tracked window whose centres are ``along``
+        (road x): ``bend_lateral_weight`` where any lies in a sharp bend, else ``lateral_weight``."""
+        if self.bends:
+            s = np.asarray(along, dtype=float) + self.road.route_shift
+            if any(bool(np.any((s >= a) & (s <= b))) for a, b in self.bends):
+                return self.bend_lateral_weight
+        return self.lateral_weight
 
     def _own_speed_factor(self, x: float, y: float, heading: float) -> float:
         """A car's own speed over its rate along the route, at road coordinates (x, y) turned by

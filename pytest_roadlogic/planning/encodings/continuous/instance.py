@@ -78,6 +78,12 @@ def build_continuous_instance(
         *([f"route_span({number(s.route_span[0])},{number(s.route_span[1])})."] if s.route_span else []),
         *(f"lane_span({lane},{number(first)},{number(last)})." for lane, first, last in s.lane_spans),
         *([f"origin_span({number(s.origin_span[0])},{number(s.origin_span[1])})."] if s.origin_span else []),
+        *(
+            f"slow_span({k},{number(first)},{number(last)},{number(speed)})."
+            for k, (first, last, speed) in enumerate(s.slow_spans)
+        ),
+        *([f"junction_span({number(s.junction_span[0])},{number(s.junction_span[1])})."] if s.junction_span else []),
+        *(f"crosses({atom(v)})." for v in vehicles if v in s.crossers),
         "",
     ]
     return with_automaton(

@@ -94,6 +94,12 @@ class ContinuousSettings:
     # where the plan's position 0 (its first vehicle's start) lies along the route, when the
     # scenario asks for a curve (path_curve); None: anywhere the route_span allows
     origin_span: tuple[float, float] | None = None
+    # the route's sharp bends (a turn at a junction): (first metre, last metre, m/s), a car between
+    # them at most that fast; and the junction the vehicles in ``crossers`` drive through (first and
+    # last metre along the route)
+    slow_spans: tuple[tuple[float, float, float], ...] = ()
+    junction_span: tuple[float, float] | None = None
+    crossers: frozenset[str] = frozenset()
     route: Route | None = field(default=None, compare=False, repr=False)  # the map's route (on_route)
     # why a limit has the value it has when not a car's own: (field, why), for the messages
     limit_reasons: tuple[tuple[str, str], ...] = ()
@@ -129,9 +135,11 @@ class ContinuousSettings:
 
     def on_route(self, route) -> ContinuousSettings:
         """These settings for a scenario on a map's ``route`` (``roads.Route``): no vehicle faster
-        than the route's sharpest curve lets a car hold (``roads.route.curve_speed``), each on the
-        route and in a lane only where it is (``asp/continuous/route.lp``), the scenario starting in
-        the curve it asks for, and a start speed the scenario leaves open at most the map's limit."""
+        than the route's sharpest curve lets a car hold (``roads.route.curve_speed``) and, in its
+        sharp bends (a turn at a junction), than the bend lets it; each on the route and in a lane
+        only where it is (``asp/continuous/route.lp``), the scenario starting in the curve it asks
+        for, the vehicles that drive through the route's junction doing so, and a start speed the
+        scenario leaves open at most the map's limit."""
         from ....roads.route import MAX_LATERAL_ACCELERATION, ROUTE_MARGIN, curve_speed
 
         low, high = self.road_speed
@@ -143,7 +151,7 @@ class ContinuousSettings:
             reasons = (
                 (
                     "max_speed",
-                    f"the sharpest curve of {route.name}, radius {1 / route.greatest_curvature():.0f} m, at "
+                    f"the sharpest curve of {route.name}, radius {1 / route.gentle_curvature():.0f} m, at "
                     f"{MAX_LATERAL_ACCELERATION:g} m/s^2 of lateral acceleration",
                 ),
             )
@@ -155,6 +163,9 @@ class ContinuousSettings:
             route_span=(ROUTE_MARGIN, route.length - ROUTE_MARGIN),
             lane_spans=tuple((lane, first, last) for lane, (first, last) in sorted(route.spans().items())),
             origin_span=route.start_within,
+            slow_spans=route.slow_stretches(),
+            junction_span=route.junction_span,
+            crossers=route.crossers,
             route=route,
         )
 

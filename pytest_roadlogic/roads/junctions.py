@@ -1,0 +1,141 @@
+"""A map's junctions as a scenario names them: the turns each junction offers (``turns``), told
+apart by direction as the standard's ``map.roads_follow_in_junction`` does, and the route of one
+turn (``turn_route``).
+
+A turn is one of a junction's connections: a road driven into the junction (its end at the junction
+if the junction is its successor, else driven against its reference line), the connecting road
+inside the junction entered at the connection's contact, and the road it leads out into. Its
+direction is how far the heading turns from the road in to the road out (left positive):
+straight on within ``STRAIGHT``, a U-turn from ``UTURN`` on, else left or right. A junction's
+``number_of_roads`` is the roads that meet it outside it (a four-way crossing's four). The geometry
+decides, as it does for routes that go straight on (``chains``): a turn is offered only where the
+connecting road's driving lane continues the road in and the road out, lane centres within
+``chains.JOINT_TOLERANCE`` in the world.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from .chains import chained, continues, way
+from .opendrive_in import MapRoad, RoadMap
+from .route import through_lanes
+
+STRAIGHT = math.radians(30.0)  # a turn of less is straight on
+UTURN = math.radians(150.0)  # a turn of this or more is a U-turn
+DIRECTIONS = ("straight", "left", "right", "uturn")  # the standard's junction_direction
+
+
+@dataclass(frozen=True)
+class Turn:
+    """One way through junction ``junction``: ``into`` (the road driven into it), ``inside`` (its
+    connecting road, as driven) and ``out_of`` (the road driven out), each as a route drives it;
+    ``angle`` the heading's change in radians (left positive), ``direction`` its name."""
+
+    junction: str
+    into: MapRoad
+    inside: MapRoad
+    out_of: MapRoad
+    angle: float
+    direction: str
+
+    @property
+    def roads(self) -> tuple[MapRoad, MapRoad, MapRoad]:
+        return (self.into, self.inside, self.out_of)
+
+    def describe(self) -> str:
+        return f"{self.direction} from road {self.into.id} into road {self.out_of.id}"
+
+
+def direction(angle: float) -> str:
+    """The standard's junction direction of a turn by ``angle`` radians (left positive)."""
+    if abs(angle) < STRAIGHT:
+        return "straight"
+    if abs(angle) >= UTURN:
+        return "uturn"
+    return "left" if angle > 0 else "right"
+
+
+def _heading(road: MapRoad, s: float) -> float:
+    return float(road.reference_line.pose(np.array([s]))[2][0])
+
+
+def _into(road_map: RoadMap, road_id: str, junction: str) -> MapRoad | None:
+    """Road ``road_id`` as driven into ``junction``: along its reference line when the junction is
+    its successor, against it when its predecessor; None when neither (or no such road)."""
+    road = road_map.roads.get(road_id)
+    if road is None or road.rule == "LHT":
+        return None
+    if road.successor is not None and road.successor.type == "junction" and road.successor.id == junction:
+        return road
+    if road.predecessor is not None and road.predecessor.type == "junction" and road.predecessor.id == junction:
+        return way(road_map, road_id, "end")
+    return None
+
+
+def turns(road_map: RoadMap) -> list[Turn]:
+    """Every turn of every junction of ``road_map`` whose connecting road's driving lane continues
+    the road in and the road out, in the map's order of connections."""
+    found = []
+    for junction, connections in road_map.connections.items():
+        for connection in connections:
+            into = _into(road_map, connection.incoming, junction)
+            inside = way(road_map, connection.connecting, connection.contact)
+            if into is None or inside is None or inside.successor is None or inside.successor.type != "road":
+                continue
+            out_of = way(road_map, inside.successor.id, inside.successor.contact or "start")
+            if out_of is None or out_of.junction not in ("", "-1"):
+                continue
+            if min(through_lanes(road)[0] for road in (into, inside, out_of)) < 1:
+                continue
+            if not (continues(into, inside) and continues(inside, out_of)):
+                continue
+            turned = _heading(out_of, 0.0) - _heading(into, into.length)
+            angle = (turned + math.pi) % (2 * math.pi) - math.pi
+            found.append(Turn(junction, into, inside, out_of, angle, direction(angle)))
+    return found
+
+
+def number_of_roads(road_map: RoadMap, junction: str) -> int:
+    """How many roads outside ``junction`` meet it (lead into it or out of it)."""
+    meeting = set()
+    for connection in road_map.connections.get(junction, ()):
+        meeting.add(connection.incoming)
+        inside = road_map.roads.get(connection.connecting)
+        if inside is not None:
+            for link in (inside.predecessor, inside.successor):
+                if link is not None and link.type == "road":
+                    meeting.add(link.id)
+    return len(meeting)
+
+
+def describe_junctions(road_map: RoadMap) -> str:
+    """The map's junctions and the turns each offers, as a refusal lists them ("none" when it has no
+    junction a route can turn at)."""
+    by_junction: dict[str, list[Turn]] = {}
+    for turn in turns(road_map):
+        by_junction.setdefault(turn.junction, []).append(turn)
+    if not by_junction:
+        return "the map has no junction with a turn a route can drive"
+    parts = []
+    for junction, offered in by_junction.items():
+        name = road_map.junctions.get(junction, "")
+        label = f"junction {junction}" + (f" ({name!r})" if name else "")
+        parts.append(
+            f"{label}, {number_of_roads(road_map, junction)} roads: " + ", ".join(t.describe() for t in offered)
+        )
+    return "; ".join(parts)
+
+
+def turn_route(turn: Turn) -> MapRoad:
+    """The route of ``turn``: the road in, the connecting road and the road out as one road
+    (``chains.chained``), s from the road in's start."""
+    return chained(turn.roads)
+
+
+def junction_span(turn: Turn) -> tuple[float, float]:
+    """Where the junction lies along ``turn_route(turn)``: its connecting road's first and last metre."""
+    return (turn.into.length, turn.into.length + turn.inside.length)

@@ -1,0 +1,181 @@
+"""Turns at junctions, from their definitions: a junction's turns read from the map's geometry and
+named as the standard's ``roads_follow_in_junction`` names them, the route of a turn, the speed its
+bend allows, a turn the map lacks refused with the turns it has, and the junction suite run."""
+
+from __future__ import annotations
+
+import importlib.util
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from pytest_roadlogic.roads.choice import pick_route
+from pytest_roadlogic.roads.junctions import direction, turns
+from pytest_roadlogic.roads.opendrive_in import MapError, read_map
+from pytest_roadlogic.roads.route import MAX_LATERAL_ACCELERATION
+from tests.roads.map_files import write
+from tests.roads.test_roads import same_document
+
+ROOT = Path(__file__).resolve().parents[2]
+SUITE = ROOT / "scenarios" / "junctions"
+MAPS = SUITE / "maps"
+
+
+def test_the_committed_junction_maps_are_what_their_recipe_writes(tmp_path):
+    spec = importlib.util.spec_from_file_location("make_junction_maps", MAPS / "make_maps.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    for written in module.write(tmp_path):
+        assert same_document(written, MAPS / written.name), written.name
+
+
+@pytest.mark.parametrize(
+    "degrees, name",
+    [
+        (0, "straight"),
+        (29, "straight"),
+        (-29, "straight"),
+        (31, "left"),
+        (90, "left"),
+        (-90, "right"),
+        (150, "uturn"),
+        (-179, "uturn"),
+    ],
+)
+def test_a_turns_direction_is_named_by_how_far_its_heading_turns(degrees, name):
+    assert direction(math.radians(degrees)) == name
+
+
+def test_a_four_way_crossing_offers_every_turn_from_every_arm_each_turning_as_its_name_says():
+    road_map = read_map(MAPS / "crossing.xodr")
+    offered = turns(road_map)
+    assert len(offered) == 12  # four arms, three ways out of each
+    for name, angle in (("left", 90.0), ("right", -90.0), ("straight", 0.0)):
+        named = [t for t in offered if t.direction == name]
+        assert len(named) == 4, name
+        assert {t.into.id for t in named} == {"1", "2", "3", "4"}
+        for turn in named:
+            # the heading's change, read from the world poses where the turn's route enters and leaves
+            _, _, heading_in = turn.into.reference_line.pose(np.array([turn.into.length]))
+            _, _, heading_out = turn.out_of.reference_line.pose(np.array([0.0]))
+            turned = (float(heading_out[0] - heading_in[0]) + math.pi) % (2 * math.pi) - math.pi
+            assert math.degrees(turned) == pytest.approx(angle, abs=1.0)
+
+
+def test_a_turns_route_runs_on_without_a_gap_through_the_junction_in_its_lane():
+    route = pick_route(read_map(MAPS / "crossing.xodr"), 1, 0.0, None, ("left", 4))
+    first, last = route.junction_span
+    s = np.arange(0.0, route.length, 0.5)
+    x, y, _ = route.pose(s, np.full(len(s), route.width / 2))  # the lane's centre
+    steps = np.hypot(np.diff(x), np.diff(y))
+    # half a metre along the reference line is more along the outer lane of a left turn, never a jump
+    assert steps.max() < 0.65 and steps.min() > 0.4
+    assert 190.0 < first < last < 250.0 and route.lanes == 1 and route.lane_width == pytest.approx(3.5)
+
+
+def test_a_turn_is_driven_no_faster_than_its_lane_lets_a_car_hold_and_only_there():
+    road_map = read_map(MAPS / "crossing.xodr")
+    for name in ("left", "right"):
+        route = pick_route(road_map, 1, 0.0, None, (name, 4))
+        ((first, last, speed),) = route.slow_stretches()
+        begin, end = route.junction_span
+        assert first <= begin + 1.0 and last >= end - 1.0  # the bend is the junction's
+        # the lane's centre is 1.75 m right of the connecting road's reference line: a left turn's
+        # lane bends less sharply than the line, a right turn's more (k / (1 - k t))
+        k = route.greatest_curvature(begin, end)
+        lane_radius = 1 / k + (1.75 if name == "left" else -1.75)
+        assert speed == pytest.approx(math.sqrt(MAX_LATERAL_ACCELERATION * lane_radius), rel=0.02)
+        assert route.gentle_curvature() == 0.0  # the streets are straight: no limit elsewhere
+
+
+def test_a_turn_the_map_lacks_is_refused_with_the_junctions_and_their_turns():
+    road_map = read_map(MAPS / "t_junction.xodr")
+    with pytest.raises(MapError) as refused:
+        pick_route(road_map, 1, 0.0, None, ("left", 4))
+    message = refused.value.message
+    assert message.startswith(
+        "the map has no left turn at a junction of 4 roads: junction 100 ('t-junction'), 3 roads:"
+    )
+    assert "right from road 1 into road 2" in message and "straight from road 3 into road 1" in message
+    with pytest.raises(MapError, match="no U-turn at a junction"):
+        pick_route(road_map, 1, 0.0, None, ("uturn", None))
+
+
+SCENARIO = """\
+    scenario turn:
+        path: Path
+        path.set_map("maps/t_junction.xodr")
+        path.roads_follow_in_junction({ask})
+        ego: car
+        do parallel(duration: [10s..15s]):
+            ego.drive() with:
+                along(path)
+"""
+
+
+def test_check_refuses_a_turn_the_map_lacks_at_set_map_naming_what_it_has(tmp_path):
+    from pytest_roadlogic.frontend import OscError
+    from pytest_roadlogic.pipeline import load_scenario
+
+    (tmp_path / "maps").mkdir()
+    (tmp_path / "maps" / "t_junction.xodr").write_bytes((MAPS / "t_junction.xodr").read_bytes())
+    path = write(tmp_path / "turn.osc", SCENARIO.format(ask="direction: uturn"))
+    with pytest.raises(OscError) as refused:
+        load_scenario(path)
+    text = str(refused.value)
+    assert "turn.osc:3:" in text and "no U-turn at a junction" in text and "left from road 2 into road 1" in text
+
+
+def test_a_turn_without_a_map_and_a_junction_too_small_are_errors_at_their_lines(tmp_path):
+    from pytest_roadlogic.frontend import OscError
+    from pytest_roadlogic.pipeline import load_scenario
+
+    lines = SCENARIO.format(ask="direction: left").splitlines(keepends=True)
+    text = "".join(line for line in lines if "set_map" not in line)
+    with pytest.raises(OscError, match=r"turn.osc:3:\d+: error: roads_follow_in_junction\(\) asks for a junction"):
+        load_scenario(write(tmp_path / "turn.osc", text))
+    (tmp_path / "maps").mkdir()
+    (tmp_path / "maps" / "t_junction.xodr").write_bytes((MAPS / "t_junction.xodr").read_bytes())
+    with pytest.raises(OscError, match="number_of_roads takes one whole number from 3 up"):
+        load_scenario(write(tmp_path / "turn.osc", SCENARIO.format(ask="number_of_roads: 2")))
+
+
+def test_every_vehicle_driving_along_the_turn_goes_through_the_junction_no_faster_than_its_bend_allows():
+    from pytest_roadlogic.automaton import build_automaton
+    from pytest_roadlogic.pipeline import load_scenario
+    from pytest_roadlogic.planning import ContinuousPlanner, ContinuousSettings
+
+    scenario = load_scenario(SUITE / "left_turn_behind_lead.osc")
+    assert scenario.route.crossers == {"ego", "lead"}
+    settings = ContinuousSettings(time_limit=30.0).on_route(scenario.route)
+    planner = ContinuousPlanner(build_automaton(scenario), settings, 1)
+    plan = planner.first()
+    assert planner.stats["least_action"] == 1.0
+    begin, end = scenario.route.junction_span
+    ((first, last, speed),) = scenario.route.slow_stretches()
+    for name, states in plan.states.items():
+        along = [state.position + plan.origin for state in states]
+        assert along[0] <= begin and along[-1] >= end, name
+        for step in range(1, len(states)):
+            # a step that ends in the bend, or leaves a place short of it for one beyond its entry
+            # (1 mm: the linear program's values at the bend's ends are its ends)
+            if first + 1e-3 < along[step] < last - 1e-3 or (
+                along[step - 1] < first - 1e-3 and along[step] > first + 1e-3
+            ):
+                assert states[step].speed <= speed + 1e-6, (name, step)
+                assert states[step - 1].speed <= speed + 1e-6, (name, step)
+
+
+@pytest.mark.parametrize("name", ["left_turn_behind_lead", "right_turn_at_t_junction", "straight_across"])
+def test_the_junction_suite_runs_conformant_each_car_in_its_lane_through_the_turn(name):
+    from pytest_roadlogic.pipeline import load_scenario, run_scenario
+
+    scenario = load_scenario(SUITE / f"{name}.osc")
+    outcome = run_scenario(scenario, seed=1)
+    assert outcome.verdict.accepted, outcome.verdict.explain()
+    assert not outcome.simulation.trace.incidents
+    for vehicle, columns in outcome.simulation.trace.actors.items():
+        # within half a metre of its lane's centre all along, the turn included
+        assert np.abs(np.asarray(columns["y"]) - scenario.route.lane_width / 2).max() < 0.5, vehicle
