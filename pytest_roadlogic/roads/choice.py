@@ -164,7 +164,7 @@ def pick_turn(road_map: RoadMap, lanes: int, length: float, turn: tuple[str | No
         need = f" with {lanes} driving lane{'' if lanes == 1 else 's'} in and out" if lanes > 1 else ""
         raise MapError(
             road_map.path,
-            f"the map has no {asked}{need}: {describe_junctions(road_map)}",
+            f"no {asked}{need} in the map: {describe_junctions(road_map)}",
             "ask for a turn the map has (roads_follow_in_junction's direction, number_of_roads), or give a map with one",
         )
     chosen = offered[0]

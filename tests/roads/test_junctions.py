@@ -95,9 +95,7 @@ def test_a_turn_the_map_lacks_is_refused_with_the_junctions_and_their_turns():
     with pytest.raises(MapError) as refused:
         pick_route(road_map, 1, 0.0, None, ("left", 4))
     message = refused.value.message
-    assert message.startswith(
-        "the map has no left turn at a junction of 4 roads: junction 100 ('t-junction'), 3 roads:"
-    )
+    assert message.startswith("no left turn at a junction of 4 roads in the map: junction 100 ('t-junction'), 3 roads:")
     assert "right from road 1 into road 2" in message and "straight from road 3 into road 1" in message
     with pytest.raises(MapError, match="no U-turn at a junction"):
         pick_route(road_map, 1, 0.0, None, ("uturn", None))
@@ -179,3 +177,21 @@ def test_the_junction_suite_runs_conformant_each_car_in_its_lane_through_the_tur
     for vehicle, columns in outcome.simulation.trace.actors.items():
         # within half a metre of its lane's centre all along, the turn included
         assert np.abs(np.asarray(columns["y"]) - scenario.route.lane_width / 2).max() < 0.5, vehicle
+
+
+def test_the_plot_of_a_turn_draws_every_road_of_its_junction():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from pytest_roadlogic.artifacts.plot import _junction_roads
+
+    route = pick_route(read_map(MAPS / "crossing.xodr"), 1, 0.0, None, ("right", 4))
+    figure, axes = plt.subplots()
+    try:
+        _junction_roads(axes, route)
+        # four arms and six connecting roads, each its two outer edges
+        assert len(axes.lines) == 20
+    finally:
+        plt.close(figure)
