@@ -176,14 +176,16 @@ class Route:
         bending = self.lane_curvature(s)
         sharp = bending > SLOW_CURVE
         edges = np.flatnonzero(np.diff(np.concatenate([[0], sharp.astype(int), [0]])))
-        return tuple(
-            (
-                max(0.0, float(s[first]) - HALF_CAR),
-                min(self.length, float(s[last - 1]) + HALF_CAR),
-                holding_speed(float(bending[first:last].max())),
-            )
-            for first, last in zip(edges[::2], edges[1::2])
-        )
+        stretches: list[tuple[float, float, float]] = []
+        for first, last in zip(edges[::2], edges[1::2]):
+            begin = max(0.0, float(s[first]) - HALF_CAR)
+            end = min(self.length, float(s[last - 1]) + HALF_CAR)
+            speed = holding_speed(float(bending[first:last].max()))
+            if stretches and begin <= stretches[-1][1]:  # widened, two bends close together are one
+                before = stretches.pop()
+                begin, speed = before[0], min(speed, before[2])
+            stretches.append((begin, end, speed))
+        return tuple(stretches)
 
     def gentle_curvature(self) -> float:
         """The greatest curvature (1/m, either side) of the route outside its slow stretches."""

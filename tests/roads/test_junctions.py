@@ -195,3 +195,33 @@ def test_the_plot_of_a_turn_draws_every_road_of_its_junction():
         assert len(axes.lines) == 20
     finally:
         plt.close(figure)
+
+
+def test_a_car_where_the_simulators_frame_has_no_projection_stands_as_a_fallback_not_a_traceback():
+    from pytest_roadlogic.pipeline import load_scenario, run_scenario
+    from pytest_roadlogic.simulation.driver import VehicleState
+    from pytest_roadlogic.simulation.frenetix import FrenetixDriver
+
+    answers = []
+
+    class Astray:
+        """frenetix, asked once for a car 1 km off the route (a town corner tighter than a lane's
+        distance from the reference line puts a car so: fabriksgatan's)."""
+
+        def __init__(self):
+            self.inner = FrenetixDriver()
+
+        def start(self, vehicle, reference, road, dt):
+            self.inner.start(vehicle, reference, road, dt)
+
+        def plan(self, time, state, others):
+            if not answers and time > 1.0:
+                astray = VehicleState(state.x, state.y + 1000.0, state.heading, state.speed, 0.0)
+                answers.append((self.inner.plan(time, astray, others), self.inner.fallbacks))
+            return self.inner.plan(time, state, others)
+
+    scenario = load_scenario(SUITE / "straight_across.osc")
+    run_scenario(scenario, seed=1, max_tries=1, drivers=lambda v: Astray() if v == "ego" else None)
+    ((trajectory, fallbacks),) = answers
+    # it holds its place (the standing trajectory), counted as a fallback
+    assert fallbacks == 1 and float(np.ptp(trajectory.x)) == 0.0 and float(trajectory.y[0]) > 900.0

@@ -198,9 +198,16 @@ class FrenetixDriver(DriverBase):
             factor = self._own_speed_factor(rear_x, rear_y, state.heading)
             speed, acceleration = speed * factor, acceleration * factor
         cartesian = frenetix.CartesianPlannerState(rear, float(heading), float(speed), float(acceleration), 0.0)
-        initial = frenetix.compute_initial_state(
-            coordinate_system=self.coordinates, x_0=cartesian, wheelbase=WHEELBASE, low_velocity_mode=low
-        )
+        try:
+            initial = frenetix.compute_initial_state(
+                coordinate_system=self.coordinates, x_0=cartesian, wheelbase=WHEELBASE, low_velocity_mode=low
+            )
+        except ValueError:
+            # the car is where the frame has no projection (inside a bend tighter than its distance
+            # from the route's reference line: a town corner of 6 m, fabriksgatan's): no trajectory
+            # from here; it stands, counted as a fallback, and the verdict says what went wrong
+            self.fallbacks += 1
+            return Trajectory.standing(state, 2)
         handler = self.handler
         handler.add_function(
             tf.FillCoordinates(
