@@ -8,6 +8,7 @@ maps are what their recipe writes.
 from __future__ import annotations
 
 import xml.etree.ElementTree as ET
+from pathlib import Path
 
 # the header's date of every OpenDRIVE file the project writes
 OPENDRIVE_DATE = "2026-01-01T00:00:00"
@@ -21,3 +22,14 @@ def opendrive_xml(opendrive) -> bytes:
         header.set("date", OPENDRIVE_DATE)
     ET.indent(root, space="    ")
     return ET.tostring(root, encoding="utf-8", xml_declaration=True) + b"\n"
+
+
+def write_maps(opendrives: dict, directory: Path) -> list[Path]:
+    """Each ``scenariogeneration.xodr.OpenDrive`` of ``opendrives`` (file name -> map) as its file in
+    ``directory`` (``opendrive_xml``); their paths. What the project's map recipes write."""
+    written = []
+    for name, opendrive in opendrives.items():
+        path = Path(directory) / name
+        path.write_bytes(opendrive_xml(opendrive))
+        written.append(path)
+    return written

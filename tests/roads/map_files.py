@@ -3,6 +3,7 @@ test makes."""
 
 from __future__ import annotations
 
+import importlib.util
 import textwrap
 from pathlib import Path
 
@@ -13,3 +14,11 @@ def write(path: Path, text: str) -> Path:
     """``text``, dedented, as the file ``path``; the path."""
     path.write_text(textwrap.dedent(text).lstrip())
     return path
+
+
+def recipe(folder: Path):
+    """The map recipe ``make_maps.py`` of ``folder``, loaded as a module (its ``write(directory)``)."""
+    spec = importlib.util.spec_from_file_location(f"make_maps_{folder.parent.name}", folder / "make_maps.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module

@@ -4,7 +4,6 @@ bend allows, a turn the map lacks refused with the turns it has, and the junctio
 
 from __future__ import annotations
 
-import importlib.util
 import math
 from pathlib import Path
 
@@ -15,7 +14,7 @@ from pytest_roadlogic.roads.choice import pick_route
 from pytest_roadlogic.roads.junctions import direction, turns
 from pytest_roadlogic.roads.opendrive_in import MapError, read_map
 from pytest_roadlogic.roads.route import MAX_LATERAL_ACCELERATION
-from tests.roads.map_files import write
+from tests.roads.map_files import recipe, write
 from tests.roads.test_roads import same_document
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -24,10 +23,7 @@ MAPS = SUITE / "maps"
 
 
 def test_the_committed_junction_maps_are_what_their_recipe_writes(tmp_path):
-    spec = importlib.util.spec_from_file_location("make_junction_maps", MAPS / "make_maps.py")
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    for written in module.write(tmp_path):
+    for written in recipe(MAPS).write(tmp_path):
         assert same_document(written, MAPS / written.name), written.name
 
 

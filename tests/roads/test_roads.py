@@ -13,7 +13,7 @@ from pytest_roadlogic.roads.choice import pick_route
 from pytest_roadlogic.roads.opendrive_in import MapError, read_map
 from pytest_roadlogic.roads.reference_line import Geometry, ReferenceLine
 from pytest_roadlogic.roads.route import curve_speed
-from tests.roads.map_files import MAPS, write
+from tests.roads.map_files import MAPS, recipe, write
 
 pytest_plugins = ["pytester"]
 
@@ -21,12 +21,7 @@ ROOT = Path(__file__).resolve().parents[2]
 
 
 def test_the_committed_maps_are_what_their_recipe_writes(tmp_path):
-    import importlib.util
-
-    spec = importlib.util.spec_from_file_location("make_maps", MAPS / "make_maps.py")
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    for written in module.write(tmp_path):
+    for written in recipe(MAPS).write(tmp_path):
         assert same_document(written, MAPS / written.name), written.name
 
 

@@ -22,7 +22,7 @@ from pathlib import Path
 
 from scenariogeneration import xodr
 
-from pytest_roadlogic.roads.opendrive_out import opendrive_xml
+from pytest_roadlogic.roads.opendrive_out import write_maps
 
 HERE = Path(__file__).resolve().parent
 LANE_WIDTH = 3.5
@@ -78,12 +78,7 @@ def maps() -> dict[str, xodr.OpenDrive]:
 
 def write(directory: Path = HERE) -> list[Path]:
     """Write every map into ``directory``; their paths."""
-    written = []
-    for name, opendrive in maps().items():
-        path = directory / name
-        path.write_bytes(opendrive_xml(opendrive))
-        written.append(path)
-    return written
+    return write_maps(maps(), directory)
 
 
 if __name__ == "__main__":
