@@ -146,14 +146,30 @@ def pick_turn(road_map: RoadMap, lanes: int, length: float, turn: tuple[str | No
     ``length`` metres in all; of several, the first in the map's order. ``MapError`` naming the
     map's junctions and the turns they offer when none fits."""
     direction, roads = turn
-    offered = [
+    asked_for = [
         t
         for t in turns(road_map)
-        if direction in (None, t.direction)
-        and roads in (None, number_of_roads(road_map, t.junction))
-        and min(through_lanes(t.into)[0], through_lanes(t.out_of)[0]) >= lanes
+        if direction in (None, t.direction) and roads in (None, number_of_roads(road_map, t.junction))
+    ]
+    offered = [
+        t
+        for t in asked_for
+        if min(through_lanes(t.into)[0], through_lanes(t.out_of)[0]) >= lanes
         and sum(road.length for road in t.roads) >= length
     ]
+    if asked_for and not offered:
+        # the map has the turn, but not with the lanes or the room the scenario needs: say so
+        longest = max(asked_for, key=lambda t: sum(road.length for road in t.roads))
+        most = max(min(through_lanes(t.into)[0], through_lanes(t.out_of)[0]) for t in asked_for)
+        raise MapError(
+            road_map.path,
+            f"the map's {len(asked_for)} turn{'' if len(asked_for) == 1 else 's'} of the kind asked "
+            f"({', '.join(t.describe() for t in asked_for[:6])}{', ...' if len(asked_for) > 6 else ''}) "
+            f"{'has' if len(asked_for) == 1 else 'have'} at most {most} driving lane{'' if most == 1 else 's'} in and out "
+            f"and {sum(road.length for road in longest.roads):.0f} m of road at most; the scenario needs "
+            f"{lanes} and {length:g} m",
+            "ask for less (the lanes it names, path_length), or give a map whose junction has longer roads",
+        )
     if not offered:
         where = f"a junction of {roads} roads" if roads else "a junction"
         asked = {

@@ -221,3 +221,13 @@ def test_a_car_where_the_simulators_frame_has_no_projection_stands_as_a_fallback
     ((trajectory, fallbacks),) = answers
     # it holds its place (the standing trajectory), counted as a fallback
     assert fallbacks == 1 and float(np.ptp(trajectory.x)) == 0.0 and float(trajectory.y[0]) > 900.0
+
+
+def test_a_turn_the_map_has_but_too_short_for_the_scenario_is_refused_saying_how_long_it_is():
+    with pytest.raises(MapError) as refused:
+        pick_route(read_map(MAPS / "crossing.xodr"), 1, 1000.0, None, ("left", 4))
+    message = refused.value.message
+    assert message.startswith("the map's 4 turns of the kind asked (left from road 2 into road 1,")
+    assert message.endswith(
+        "have at most 1 driving lane in and out and 433 m of road at most; the scenario needs 1 and 1000 m"
+    )
