@@ -39,8 +39,7 @@ def _top_on_map(top, simulation: Simulation, x_min: float, x_max: float, run_ind
     import numpy as np
 
     trace, road = simulation.trace, simulation.road
-    if road.route.junction_span is not None:
-        _junction_roads(top, road.route)
+    _junction_roads(top, road.route)
     xs = np.linspace(x_min, x_max, 400)
     edge = road.right_edge(xs)
     wx, wy, _ = road.world(xs, edge)
@@ -79,37 +78,19 @@ def _top_on_map(top, simulation: Simulation, x_min: float, x_max: float, run_ind
 
 
 def _junction_roads(top, route) -> None:
-    """The edges of every road of a route's map that meets its junction or lies in it (light): the
-    junction the route turns at, as a reader sees it. Nothing when the map cannot be read again."""
+    """The outer edges of the roads of the junction a route turns at and of those meeting it
+    (``Route.junction_roads``), light: the junction as a reader sees it."""
     import numpy as np
 
-    from ..roads.opendrive_in import MapError, read_map
-
-    try:
-        road_map = read_map(route.source)
-    except (MapError, OSError):
-        return
-    junction = next(
-        (
-            road.junction
-            for road in road_map.roads.values()
-            if road.id in route.road.id.split("+") and road.junction not in ("", "-1")
-        ),
-        None,
-    )
-    for road in road_map.roads.values():
-        links = [link for link in (road.predecessor, road.successor) if link is not None]
-        if road.junction != junction and not any(link.type == "junction" and link.id == junction for link in links):
-            continue
+    for road in route.junction_roads:
         s = np.linspace(0.0, road.length, max(2, int(road.length) + 1))
-        for side in ("left", "right"):
+        for sign, side in ((1.0, lambda section: section.left), (-1.0, lambda section: section.right)):
             width = np.zeros_like(s)
             for section in road.sections:
                 inside = (s >= section.s - 1e-9) & (s <= section.end + 1e-9)
-                for lane in getattr(section, side):
+                for lane in side(section):
                     width = np.where(inside, width + lane.width(s - section.s), width)
-            t = road.offset(s) + (width if side == "left" else -width)
-            x, y, _ = road.reference_line.pose(s, t)
+            x, y, _ = road.reference_line.pose(s, road.offset(s) + sign * width)
             top.plot(x, y, "-", color="lightgrey", linewidth=0.7, zorder=0)
 
 

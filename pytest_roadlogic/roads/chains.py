@@ -72,10 +72,15 @@ def continues(first: MapRoad, then: MapRoad) -> bool:
     n = min(len(end), len(start))
     if n == 0:
         return False
+    return abs(heading_change(first, then)) < 0.1 and bool(np.all(np.hypot(*(end[:n] - start[:n]).T) < JOINT_TOLERANCE))
+
+
+def heading_change(first: MapRoad, then: MapRoad) -> float:
+    """How far the heading turns from ``first``'s end to ``then``'s start (radians, -pi..pi, left
+    positive)."""
     _, _, heading_end = first.reference_line.pose(np.array([first.length]))
     _, _, heading_start = then.reference_line.pose(np.array([0.0]))
-    turn = (float(heading_start[0] - heading_end[0]) + math.pi) % (2 * math.pi) - math.pi
-    return abs(turn) < 0.1 and bool(np.all(np.hypot(*(end[:n] - start[:n]).T) < JOINT_TOLERANCE))
+    return (float(heading_start[0] - heading_end[0]) + math.pi) % (2 * math.pi) - math.pi
 
 
 def _turn(road: MapRoad) -> float:

@@ -12,7 +12,7 @@ import numpy as np
 
 from .chains import chained, chains
 from .directions import against, with_oncoming
-from .junctions import describe_junctions, junction_span, number_of_roads, turn_route, turns
+from .junctions import describe_junctions, junction_roads, junction_span, number_of_roads, turn_route, turns
 from .opendrive_in import MapError, MapRoad, RoadMap
 from .route import Route, driving_lanes, holding_speed, through_lanes
 
@@ -151,22 +151,17 @@ def pick_turn(road_map: RoadMap, lanes: int, length: float, turn: tuple[str | No
         for t in turns(road_map)
         if direction in (None, t.direction) and roads in (None, number_of_roads(road_map, t.junction))
     ]
-    offered = [
-        t
-        for t in asked_for
-        if min(through_lanes(t.into)[0], through_lanes(t.out_of)[0]) >= lanes
-        and sum(road.length for road in t.roads) >= length
-    ]
+    offered = [t for t in asked_for if t.lanes >= lanes and t.length >= length]
     if asked_for and not offered:
         # the map has the turn, but not with the lanes or the room the scenario needs: say so
-        longest = max(asked_for, key=lambda t: sum(road.length for road in t.roads))
-        most = max(min(through_lanes(t.into)[0], through_lanes(t.out_of)[0]) for t in asked_for)
+        longest = max(t.length for t in asked_for)
+        most = max(t.lanes for t in asked_for)
         raise MapError(
             road_map.path,
             f"the map's {len(asked_for)} turn{'' if len(asked_for) == 1 else 's'} of the kind asked "
             f"({', '.join(t.describe() for t in asked_for[:6])}{', ...' if len(asked_for) > 6 else ''}) "
             f"{'has' if len(asked_for) == 1 else 'have'} at most {most} driving lane{'' if most == 1 else 's'} in and out "
-            f"and {sum(road.length for road in longest.roads):.0f} m of road at most; the scenario needs "
+            f"and {longest:.0f} m of road at most; the scenario needs "
             f"{lanes} and {length:g} m",
             "ask for less (the lanes it names, path_length), or give a map whose junction has longer roads",
         )
@@ -193,4 +188,5 @@ def pick_turn(road_map: RoadMap, lanes: int, length: float, turn: tuple[str | No
         road_map.data,
         junction_span=junction_span(chosen),
         turn=f"{chosen.describe()} at junction {chosen.junction}",
+        junction_roads=junction_roads(road_map, chosen.junction),
     )

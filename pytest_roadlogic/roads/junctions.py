@@ -18,15 +18,12 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-import numpy as np
-
-from .chains import chained, continues, way
+from .chains import chained, continues, heading_change, way
 from .opendrive_in import MapRoad, RoadMap
 from .route import through_lanes
 
 STRAIGHT = math.radians(30.0)  # a turn of less is straight on
 UTURN = math.radians(150.0)  # a turn of this or more is a U-turn
-DIRECTIONS = ("straight", "left", "right", "uturn")  # the standard's junction_direction
 
 
 @dataclass(frozen=True)
@@ -46,6 +43,16 @@ class Turn:
     def roads(self) -> tuple[MapRoad, MapRoad, MapRoad]:
         return (self.into, self.inside, self.out_of)
 
+    @property
+    def lanes(self) -> int:
+        """The driving lanes it has all along on the road in and the road out, the fewer."""
+        return min(through_lanes(self.into)[0], through_lanes(self.out_of)[0])
+
+    @property
+    def length(self) -> float:
+        """Metres of its route: the road in, the connecting road and the road out."""
+        return sum(road.length for road in self.roads)
+
     def describe(self) -> str:
         return f"{self.direction} from road {self.into.id} into road {self.out_of.id}"
 
@@ -57,10 +64,6 @@ def direction(angle: float) -> str:
     if abs(angle) >= UTURN:
         return "uturn"
     return "left" if angle > 0 else "right"
-
-
-def _heading(road: MapRoad, s: float) -> float:
-    return float(road.reference_line.pose(np.array([s]))[2][0])
 
 
 def _into(road_map: RoadMap, road_id: str, junction: str) -> MapRoad | None:
@@ -93,8 +96,7 @@ def turns(road_map: RoadMap) -> list[Turn]:
                 continue
             if not (continues(into, inside) and continues(inside, out_of)):
                 continue
-            turned = _heading(out_of, 0.0) - _heading(into, into.length)
-            angle = (turned + math.pi) % (2 * math.pi) - math.pi
+            angle = heading_change(into, out_of)
             found.append(Turn(junction, into, inside, out_of, angle, direction(angle)))
     return found
 
@@ -113,8 +115,7 @@ def number_of_roads(road_map: RoadMap, junction: str) -> int:
 
 
 def describe_junctions(road_map: RoadMap) -> str:
-    """The map's junctions and the turns each offers, as a refusal lists them ("none" when it has no
-    junction a route can turn at)."""
+    """The map's junctions and the turns each offers, as a refusal lists them (or that it has none)."""
     by_junction: dict[str, list[Turn]] = {}
     for turn in turns(road_map):
         by_junction.setdefault(turn.junction, []).append(turn)
@@ -139,3 +140,17 @@ def turn_route(turn: Turn) -> MapRoad:
 def junction_span(turn: Turn) -> tuple[float, float]:
     """Where the junction lies along ``turn_route(turn)``: its connecting road's first and last metre."""
     return (turn.into.length, turn.into.length + turn.inside.length)
+
+
+def junction_roads(road_map: RoadMap, junction: str) -> tuple[MapRoad, ...]:
+    """The roads of ``junction`` (its connecting roads) and those that meet it, as the map has them:
+    what a picture of the junction draws."""
+    return tuple(
+        road
+        for road in road_map.roads.values()
+        if road.junction == junction
+        or any(
+            link is not None and link.type == "junction" and link.id == junction
+            for link in (road.predecessor, road.successor)
+        )
+    )

@@ -15,6 +15,7 @@ A route is one road driven one way (``directions``) or roads that continue one a
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import cached_property
 from pathlib import Path
 
 import numpy as np
@@ -61,6 +62,8 @@ class Route:
     junction_span: tuple[float, float] | None = None
     turn: str = ""
     crossers: frozenset[str] = frozenset()
+    # the roads of that junction and those meeting it, as the map has them (the plot draws them)
+    junction_roads: tuple[MapRoad, ...] = field(default=(), repr=False, compare=False)
 
     @property
     def name(self) -> str:
@@ -168,10 +171,12 @@ class Route:
             sharpest = np.maximum(sharpest, np.abs(k / np.maximum(1.0 - k * t, 0.1)))
         return sharpest
 
+    @cached_property
     def slow_stretches(self) -> tuple[tuple[float, float, float], ...]:
         """The stretches of the route whose lanes bend more sharply than ``SLOW_CURVE`` (a turn at a
         junction): (first metre, last metre, the speed in m/s at which a car holds the sharpest of
-        it), each widened by half a car at both ends (a car's centre is where its plan is)."""
+        it), each widened by half a car at both ends (a car's centre is where its plan is). Worked
+        out once per route: the planner's settings, the speed limit and every driver read them."""
         s = np.arange(0.0, self.length + STEP / 2, STEP)
         bending = self.lane_curvature(s)
         sharp = bending > SLOW_CURVE
@@ -190,7 +195,7 @@ class Route:
     def gentle_curvature(self) -> float:
         """The greatest curvature (1/m, either side) of the route outside its slow stretches."""
         bounds = [0.0]
-        for first, last, _ in self.slow_stretches():
+        for first, last, _ in self.slow_stretches:
             bounds += [first, last]
         bounds.append(self.length)
         gaps = [(a, b) for a, b in zip(bounds[::2], bounds[1::2]) if b > a]

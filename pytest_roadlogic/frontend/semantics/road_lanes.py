@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from pathlib import Path
 
@@ -162,8 +163,6 @@ class RoadLanes:
     def _crossers(self, scenario: model.Scenario, at: SourceLocation) -> None:
         """On a route that turns at a junction: the vehicles whose drive goes ``along(path)`` drive
         through it (kept in the route); a warning when none does."""
-        import dataclasses
-
         crossers = set()
         for behavior in scenario.behaviors:
             for node in model.walk(behavior):

@@ -142,7 +142,7 @@ class FrenetixDriver(DriverBase):
         self._committed: Trajectory | None = None  # the chosen trajectory, index 0 being now
         self._age = 0  # steps driven along it
         # the route's sharp bends (metres along it, first and last), where the lateral error weighs more
-        self.bends = tuple((a, b) for a, b, _ in road.route.slow_stretches()) if road.route is not None else ()
+        self.bends = tuple((a, b) for a, b, _ in road.route.slow_stretches) if road.route is not None else ()
 
     def retarget(self, vehicle: str, reference: Reference, road: Road, dt: float) -> None:
         """Follow ``reference`` from now on (a replan): the trajectory chosen for the old one is dropped."""

@@ -163,7 +163,7 @@ class ContinuousSettings:
             route_span=(ROUTE_MARGIN, route.length - ROUTE_MARGIN),
             lane_spans=tuple((lane, first, last) for lane, (first, last) in sorted(route.spans().items())),
             origin_span=route.start_within,
-            slow_spans=route.slow_stretches(),
+            slow_spans=route.slow_stretches,
             junction_span=route.junction_span,
             crossers=route.crossers,
             route=route,
