@@ -22,3 +22,18 @@ def recipe(folder: Path):
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
     return module
+
+
+def one_road_map(path: Path, length: float, plan_view: str, lanes: str) -> Path:
+    """A map of one road (id 1, ``length`` metres, outside junctions) whose ``<planView>`` and
+    ``<lanes>`` hold ``plan_view`` and ``lanes``, as the file ``path``; the path."""
+    return write(
+        path,
+        f"""
+        <?xml version="1.0"?>
+        <OpenDRIVE><header/>
+        <road id="1" length="{length}" junction="-1"><planView>{plan_view}</planView>
+        <lanes>{lanes}</lanes></road>
+        </OpenDRIVE>
+        """,
+    )

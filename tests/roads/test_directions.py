@@ -12,7 +12,7 @@ from pytest_roadlogic.roads.choice import pick_route
 from pytest_roadlogic.roads.cubic_records import LaneWidth, piecewise_cubic, reversed_records, summed
 from pytest_roadlogic.roads.directions import against, with_oncoming
 from pytest_roadlogic.roads.opendrive_in import MapError, read_map
-from tests.roads.map_files import MAPS, write
+from tests.roads.map_files import MAPS, one_road_map, write
 
 
 def lane(lane_id: int, kind: str = "driving", widths: str = "<width sOffset='0' a='3.5' b='0' c='0' d='0'/>") -> str:
@@ -27,20 +27,15 @@ def two_way_map(path: Path, left: str, right: str, length: float = 700.0) -> Pat
     opening = (
         "<width sOffset='0' a='0' b='0' c='0.00105' d='-0.000007'/><width sOffset='100' a='3.5' b='0' c='0' d='0'/>"
     )
-    return write(
+    return one_road_map(
         path,
-        f"""
-        <?xml version="1.0"?>
-        <OpenDRIVE><header/>
-        <road id="1" length="{length}" junction="-1"><planView>
-        <geometry s="0" x="10" y="-20" hdg="0.3" length="{length}"><spiral curvStart="0.0016667" curvEnd="-0.002"/></geometry>
-        </planView><lanes>
-        <laneOffset s="0" a="0" b="0" c="0.0000375" d="-0.000000125"/><laneOffset s="200" a="0.5" b="0" c="0" d="0"/>
-        <laneSection s="0"><left>{left}</left><right>{right}</right></laneSection>
-        <laneSection s="400"><left>{left}{lane(len(left.split("<lane ")), widths=opening)}</left><right>{right}</right></laneSection>
-        </lanes></road>
-        </OpenDRIVE>
-        """,
+        length,
+        f'<geometry s="0" x="10" y="-20" hdg="0.3" length="{length}">'
+        '<spiral curvStart="0.0016667" curvEnd="-0.002"/></geometry>',
+        '<laneOffset s="0" a="0" b="0" c="0.0000375" d="-0.000000125"/><laneOffset s="200" a="0.5" b="0" c="0" d="0"/>'
+        f'<laneSection s="0"><left>{left}</left><right>{right}</right></laneSection>'
+        f'<laneSection s="400"><left>{left}{lane(len(left.split("<lane ")), widths=opening)}</left>'
+        f"<right>{right}</right></laneSection>",
     )
 
 

@@ -75,7 +75,7 @@ def test_a_turn_is_driven_no_faster_than_its_lane_lets_a_car_hold_and_only_there
     road_map = read_map(MAPS / "crossing.xodr")
     for name in ("left", "right"):
         route = pick_route(road_map, 1, 0.0, None, (name, 4))
-        ((first, last, speed),) = route.slow_stretches()
+        ((first, last, speed),) = route.slow_stretches
         begin, end = route.junction_span
         assert first <= begin + 1.0 and last >= end - 1.0  # the bend is the junction's
         # the lane's centre is 1.75 m right of the connecting road's reference line: a left turn's
@@ -148,7 +148,7 @@ def test_every_vehicle_driving_along_the_turn_goes_through_the_junction_no_faste
     plan = planner.first()
     assert planner.stats["least_action"] == 1.0
     begin, end = scenario.route.junction_span
-    ((first, last, speed),) = scenario.route.slow_stretches()
+    ((first, last, speed),) = scenario.route.slow_stretches
     for name, states in plan.states.items():
         along = [state.position + plan.origin for state in states]
         assert along[0] <= begin and along[-1] >= end, name

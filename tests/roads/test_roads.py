@@ -13,7 +13,7 @@ from pytest_roadlogic.roads.choice import pick_route
 from pytest_roadlogic.roads.opendrive_in import MapError, read_map
 from pytest_roadlogic.roads.reference_line import Geometry, ReferenceLine
 from pytest_roadlogic.roads.route import curve_speed
-from tests.roads.map_files import MAPS, recipe, write
+from tests.roads.map_files import MAPS, one_road_map, recipe, write
 
 pytest_plugins = ["pytester"]
 
@@ -231,18 +231,13 @@ def offset_map(path: Path) -> Path:
         lane.format(id=i, type=t, width=w)
         for i, t, w in ((-1, "border", 2.0), (-2, "driving", 3.5), (-3, "driving", 3.5), (-4, "driving", 3.5))
     )
-    return write(
+    return one_road_map(
         path,
-        f"""
-        <?xml version="1.0"?>
-        <OpenDRIVE><header/>
-        <road id="1" length="600" junction="-1"><planView>
-        <geometry s="0" x="0" y="0" hdg="0" length="600"><line/></geometry></planView>
-        <lanes><laneOffset s="0" a="0" b="0" c="0.0009" d="-0.000006"/><laneOffset s="100" a="3" b="0" c="0" d="0"/>
-        <laneSection s="0"><left><lane id="1" type="driving"><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane></left>
-        <right>{lanes}</right></laneSection></lanes></road>
-        </OpenDRIVE>
-        """,
+        600,
+        '<geometry s="0" x="0" y="0" hdg="0" length="600"><line/></geometry>',
+        '<laneOffset s="0" a="0" b="0" c="0.0009" d="-0.000006"/><laneOffset s="100" a="3" b="0" c="0" d="0"/>'
+        '<laneSection s="0"><left><lane id="1" type="driving"><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane></left>'
+        f"<right>{lanes}</right></laneSection>",
     )
 
 
