@@ -109,7 +109,7 @@ SCENARIO = """\
 """
 
 
-def test_check_refuses_a_turn_the_map_lacks_at_set_map_naming_what_it_has(tmp_path):
+def test_check_refuses_a_turn_the_map_lacks_at_the_line_asking_for_it_naming_what_it_has(tmp_path):
     from pytest_roadlogic.frontend import OscError
     from pytest_roadlogic.pipeline import load_scenario
 
@@ -119,7 +119,12 @@ def test_check_refuses_a_turn_the_map_lacks_at_set_map_naming_what_it_has(tmp_pa
     with pytest.raises(OscError) as refused:
         load_scenario(path)
     text = str(refused.value)
-    assert "turn.osc:3:" in text and "no U-turn at a junction" in text and "left from road 2 into road 1" in text
+    # at the line that asks for the turn (the map itself is read at set_map, line 3)
+    assert (
+        "turn.osc:4:10: error: the map" in text
+        and "no U-turn at a junction" in text
+        and "left from road 2 into road 1" in text
+    )
 
 
 def test_a_turn_without_a_map_and_a_junction_too_small_are_errors_at_their_lines(tmp_path):

@@ -124,12 +124,21 @@ class RoadLanes:
         length = (asks["path_length"][0] or 0.0) if "path_length" in asks else 0.0
         curve = asks["path_curve"][:3] if "path_curve" in asks else None
         turn = asks["turn"][:2] if "turn" in asks else None
-        try:
-            self.route = pick_route(read_map(path), needed, length, curve, turn)
-        except MapError as error:
-            where_in_map = f"{error.path}:{error.line}:{error.column}: " if error.line else f"{error.path}: "
-            self.error(at, f"the map{origin}: {where_in_map}{error.message}", error.hint or None)
+
+        def refused(where: SourceLocation, error: MapError) -> int:
+            in_map = f"{error.path}:{error.line}:{error.column}: " if error.line else f"{error.path}: "
+            self.error(where, f"the map{origin}: {in_map}{error.message}", error.hint or None)
             return needed
+
+        try:
+            road_map = read_map(path)
+        except MapError as error:
+            return refused(at, error)
+        try:
+            self.route = pick_route(road_map, needed, length, curve, turn)
+        except MapError as error:
+            # no route as asked: at the line that asks for a turn, when one does
+            return refused(asks["turn"][2] if turn is not None else at, error)
         lanes = self.route.lanes
         if most and lanes > most[0]:
             self.error(
