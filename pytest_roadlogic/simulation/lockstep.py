@@ -50,11 +50,11 @@ class _GoalSequence:
                 return
 
 
-def _road_around(refs: dict[str, Reference], lanes: Road, beyond: float = 60.0) -> Road:
-    """``lanes`` (a road of the plan's lanes) long enough for every reference and ``beyond`` metres more."""
+def _road_around(refs: dict[str, Reference], road: Road, beyond: float = 60.0) -> Road:
+    """``road`` (the plan's lanes) long enough for every reference and ``beyond`` metres more."""
     start = min(r.start_position for r in refs.values())
     end = max(r.s(r.end_time + TAIL) for r in refs.values())
-    return dataclasses.replace(lanes, x_start=math.floor(start - 30.0), x_end=math.ceil(float(end) + beyond))
+    return dataclasses.replace(road, x_start=math.floor(start - 30.0), x_end=math.ceil(float(end) + beyond))
 
 
 class _Lockstep:
