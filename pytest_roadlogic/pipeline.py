@@ -163,6 +163,10 @@ def _reactive(plan: Plan, guide: Guide, settings, seed: int, dut: str | None, un
     replan from a state, the grid's)."""
     if dut is None or not under_test.replan_period or not settings.replanning:
         return None
+    if plan.side_routes:
+        # a replan reads every vehicle on the scenario's one route: vehicles taking different ways
+        # through a junction are driven as planned (docs/junctions.md)
+        return None
     from .planning.fallbacks import settings_of
     from .reactive import ReactiveExecution, Replanner
 
@@ -190,7 +194,9 @@ def guided_planning(
     encoding that cannot plan on a map (the grid's) says so (``CannotPlanOnMap``) rather than plan
     a straight road the simulation would then drive on the map."""
     if scenario.route is not None:
-        settings = settings.on_route(scenario.route)  # CannotPlanOnMap from an encoding that cannot
+        settings = settings.on_route(
+            scenario.route, scenario.routes[1:]
+        )  # CannotPlanOnMap from an encoding that cannot
     if not values:
         return (lambda planner_settings: specification), settings, seed
     guides: dict[tuple, SymbolicAutomaton] = {}

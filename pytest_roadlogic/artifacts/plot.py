@@ -74,7 +74,7 @@ def _top_on_map(top, simulation: Simulation, x_min: float, x_max: float, run_ind
         top.set_xlim(xs_all.min() - 25.0, xs_all.max() + 25.0)
         top.set_ylim(ys_all.min() - 25.0, ys_all.max() + 25.0)
     top.set_xlabel("map x [m]")
-    top.set_ylabel(f"map y [m] ({road.route.name})")
+    top.set_ylabel(f"map y [m] ({road.route.turn or road.route.name})")
 
 
 def _junction_roads(top, route) -> None:

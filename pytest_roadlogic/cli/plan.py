@@ -31,7 +31,7 @@ def _plan(args: argparse.Namespace) -> int:
         settings = run_settings(args)
         planner_settings = settings_for(settings)
         if scenario.route is not None:  # as a run plans: on the map's route (CannotPlanOnMap from the grid)
-            planner_settings = planner_settings.on_route(scenario.route)
+            planner_settings = planner_settings.on_route(scenario.route, scenario.routes[1:])
         # as a run plans: the vehicle under test drives itself (planned as braking as a car can)
         dut = UnderTest.of(settings).vehicle(automaton.actors)
         if dut is not None:
@@ -56,6 +56,11 @@ def _plan(args: argparse.Namespace) -> int:
             f"plan {plan.index + 1} of scenario {scenario.name} (seed {plan.seed}): horizon {plan.horizon} steps of {plan.dt:g} s"
         )
         print(plan.table(functools.partial(scenario.registry.lane_number, lanes=plan.lanes)))
+        if plan.route is not None and plan.origin is not None:
+            # where the table's positions are: metres along each vehicle's route less its origin
+            print(f"  route: {plan.route.turn or plan.route.name}; position 0 at {plan.origin:.1f} m along it")
+            for vehicle, (route, origin) in plan.side_routes.items():
+                print(f"  {vehicle}'s route: {route.turn or route.name}; its position 0 at {origin:.1f} m along it")
         for step, transition in plan.transitions:
             print(f"  step {step}: {events[transition]}")
         needed = fallback_needed(plan, lambda _: automaton, planner_settings, seed)

@@ -74,7 +74,11 @@ def unasked_changes(plan: Plan, automaton: SymbolicAutomaton) -> list[UnaskedCha
     """Every lane change and speed change in ``plan`` that no construct of its vehicle asks for."""
     where = locations_by_step(plan, automaton)
     found: list[UnaskedChange] = []
-    turning = plan.route.crossers if plan.route is not None else frozenset()
+    # the vehicles that drive through a junction: each route's crossers (a vehicle of another
+    # route than the scenario's drives along its path through the junction)
+    turning = (plan.route.crossers if plan.route is not None else frozenset()) | {
+        v for v, (route, _) in plan.side_routes.items() if route.junction_span is not None
+    }
     for vehicle, states in plan.states.items():
         if vehicle in plan.stationary:
             continue

@@ -51,6 +51,10 @@ class Plan:
     # on a map's route: the metres along it of position 0 (asp/continuous/route.lp); None: the
     # straight road, or a plan that does not say
     origin: float | None = None
+    # vehicles that drive other routes of the map than ``route`` (different ways through a
+    # junction): vehicle -> (its route, the metres along it of its position 0); their positions
+    # are along their own routes
+    side_routes: dict[str, tuple[Route, float]] = field(default_factory=dict, compare=False, repr=False)
 
     @property
     def horizon(self) -> int:
@@ -85,6 +89,16 @@ class Plan:
             "stationary": list(self.stationary),
             **({"brisk": list(self.brisk)} if self.brisk else {}),
             **({"origin": self.origin} if self.origin is not None else {}),
+            **(
+                {
+                    "side_routes": {
+                        v: {"route": route.turn or route.name, "origin": origin}
+                        for v, (route, origin) in self.side_routes.items()
+                    }
+                }
+                if self.side_routes
+                else {}
+            ),
         }
 
     def to_json(self) -> str:

@@ -105,9 +105,10 @@ class PlannerSettings(Protocol):
         """The margins, with their units, for messages that blame them."""
         ...
 
-    def on_route(self, route) -> PlannerSettings:
-        """These settings for a scenario on a map's ``route`` (``roads.Route``); ``CannotPlanOnMap``
-        from an encoding that plans one straight road only."""
+    def on_route(self, route, others: tuple = ()) -> PlannerSettings:
+        """These settings for a scenario on a map's ``route`` (``roads.Route``), and on ``others``
+        (more routes of the map, each driven by its ``crossers``: vehicles that take other ways
+        through a junction); ``CannotPlanOnMap`` from an encoding that plans one straight road only."""
         ...
 
     def at_origin(self, origin: float) -> PlannerSettings:

@@ -10,9 +10,18 @@ from __future__ import annotations
 
 import numpy as np
 
+from .asks import TurnAsk
 from .chains import chained, chains
 from .directions import against, with_oncoming
-from .junctions import describe_junctions, junction_roads, junction_span, number_of_roads, turn_route, turns
+from .junctions import (
+    Turn,
+    describe_junctions,
+    junction_roads,
+    junction_span,
+    number_of_roads,
+    turn_route,
+    turns,
+)
 from .opendrive_in import MapError, MapRoad, RoadMap
 from .route import Route, driving_lanes, holding_speed, through_lanes
 
@@ -139,13 +148,11 @@ def _lane_width(road: MapRoad) -> float:
     return float(np.max(driving_lanes(widest)[1][0].width(within)))
 
 
-def pick_turn(road_map: RoadMap, lanes: int, length: float, turn: tuple[str | None, int | None]) -> Route:
-    """The route of a turn at one of ``road_map``'s junctions (the standard's
-    ``map.roads_follow_in_junction(direction:, number_of_roads:)``): the road in, the junction's
-    connecting road and the road out, with ``lanes`` driving lanes on the roads in and out and
-    ``length`` metres in all; of several, the first in the map's order. ``MapError`` naming the
-    map's junctions and the turns they offer when none fits."""
-    direction, roads = turn
+def fitting_turns(road_map: RoadMap, lanes: int, length: float, ask: TurnAsk) -> list[Turn]:
+    """The turns of ``road_map`` of the kind ``ask`` names (direction, roads at the junction) with
+    ``lanes`` driving lanes on the roads in and out and ``length`` metres in all, in the map's
+    order. ``MapError`` naming the map's junctions and the turns they offer when none fits."""
+    direction, roads = ask.direction, ask.roads
     asked_for = [
         t
         for t in turns(road_map)
@@ -178,15 +185,94 @@ def pick_turn(road_map: RoadMap, lanes: int, length: float, turn: tuple[str | No
             f"no {asked}{need} in the map: {describe_junctions(road_map)}",
             "ask for a turn the map has (roads_follow_in_junction's direction, number_of_roads), or give a map with one",
         )
-    chosen = offered[0]
-    road = turn_route(chosen)
+    return offered
+
+
+def _binds(ask: TurnAsk, turn: Turn) -> dict[str, str]:
+    """The values ``turn`` gives the fields ``ask`` names: a junction field its junction's id, a
+    road field the id of its road in or out."""
+    bound = {}
+    for name, value in (
+        (ask.junction, "j" + turn.junction),
+        (ask.in_road, turn.into.id),
+        (ask.out_road, turn.out_of.id),
+    ):
+        if name is not None:
+            if bound.get(name, value) != value:
+                return {name: ""}  # one field, two values: never consistent
+            bound[name] = value
+    return bound
+
+
+# combinations of turns tried for one whose routes meet before the first that agrees is taken
+MEETING_TRIES = 100
+
+
+def choose_turns(road_map: RoadMap, lanes: int, length: float, asks: tuple[TurnAsk, ...]) -> list[Turn]:
+    """One turn per ask whose junction and roads agree with the fields the asks share
+    (``junction:``, ``in_road:``, ``out_road:``). Of the combinations that agree, in the map's
+    order ask by ask, the first in which every two paths take different turns whose routes meet
+    (``conflicts``: two paths through one junction in one scenario are there to meet), else the
+    first. ``MapError`` when an ask has no turn of its kind (``fitting_turns``), or when no turns
+    of their kinds go together."""
+    from .conflicts import meetings_of
+
+    options = [fitting_turns(road_map, lanes, length, ask) for ask in asks]
+
+    def agreeing(k: int, chosen: list[Turn], bound: dict[str, str]):
+        if k == len(asks):
+            yield chosen
+            return
+        for turn in options[k]:
+            binding = _binds(asks[k], turn)
+            if all(bound.get(name, value) == value and value for name, value in binding.items()):
+                yield from agreeing(k + 1, chosen + [turn], {**bound, **binding})
+
+    def meet(chosen: list[Turn]) -> bool:
+        if len(set(map(id, chosen))) < len(chosen):
+            return False
+        routes = [turn_as_route(road_map, turn) for turn in chosen]
+        return all(
+            meetings_of(i, routes[i], j, routes[j]) for i in range(len(routes)) for j in range(i + 1, len(routes))
+        )
+
+    first = None
+    for tried, chosen in enumerate(agreeing(0, [], {})):
+        first = first or chosen
+        if tried >= MEETING_TRIES or meet(chosen):
+            return chosen if tried < MEETING_TRIES else first
+    if first is None:
+        raise MapError(
+            road_map.path,
+            "no turns of the map go together as the scenario asks ("
+            + "; ".join(ask.describe() for ask in asks)
+            + f"): {describe_junctions(road_map)}",
+            "name in roads_follow_in_junction only the junction and roads two turns must share, or give a map with such a junction",
+        )
+    return first
+
+
+def turn_as_route(road_map: RoadMap, chosen: Turn, crossers: frozenset[str] = frozenset()) -> Route:
+    """The route of the turn ``chosen``: its three roads as one (``junctions.turn_route``), as many
+    lanes as the roads in and out both have all along, the junction where it lies along it."""
     return Route(
         road_map.path,
-        road,
+        turn_route(chosen),
         min(through_lanes(chosen.into)[1], through_lanes(chosen.out_of)[1]),
         _lane_width(chosen.into),
         road_map.data,
         junction_span=junction_span(chosen),
         turn=f"{chosen.describe()} at junction {chosen.junction}",
+        crossers=crossers,
         junction_roads=junction_roads(road_map, chosen.junction),
     )
+
+
+def pick_turn(road_map: RoadMap, lanes: int, length: float, turn: tuple[str | None, int | None]) -> Route:
+    """The route of a turn at one of ``road_map``'s junctions (the standard's
+    ``map.roads_follow_in_junction(direction:, number_of_roads:)``): the road in, the junction's
+    connecting road and the road out, with ``lanes`` driving lanes on the roads in and out and
+    ``length`` metres in all; of several, the first in the map's order. ``MapError`` naming the
+    map's junctions and the turns they offer when none fits."""
+    direction, roads = turn
+    return turn_as_route(road_map, fitting_turns(road_map, lanes, length, TurnAsk(direction, roads))[0])

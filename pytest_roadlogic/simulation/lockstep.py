@@ -79,22 +79,35 @@ class _Lockstep:
         lanes = Road(plan.lanes) if route is None else Road(plan.lanes, lane_width=route.lane_width)
         self.refs = refs = references(plan, lanes)
         # a replan may lengthen the run: room for about ten more seconds at highway speed
-        road = _road_around(refs, lanes, 60.0 if react is None else 400.0)
+        beyond = 60.0 if react is None else 400.0
+        own = {v: r for v, r in refs.items() if v not in plan.side_routes}
+        road = _road_around(own or refs, lanes, beyond)
         if route is not None:  # on a map: where the plan placed itself on the route
             shift = plan.origin if plan.origin is not None else -road.x_start
             road = dataclasses.replace(road, route=route, route_shift=shift)
         self.road = road
+        # each vehicle's road: the scenario's, or for a vehicle of another route of the map (a
+        # different way through a junction) that route's, where the plan placed it
+        self.roads = {v: road for v in refs}
+        by_route: dict[tuple, list[str]] = {}
+        for vehicle, (side, origin) in plan.side_routes.items():
+            by_route.setdefault((id(side), origin), []).append(vehicle)
+        for vehicles in by_route.values():
+            side, origin = plan.side_routes[vehicles[0]]
+            around = _road_around({v: refs[v] for v in vehicles}, Road(plan.lanes, lane_width=side.lane_width), beyond)
+            side_road = dataclasses.replace(around, route=side, route_shift=origin)
+            self.roads.update(dict.fromkeys(vehicles, side_road))
         self.active: dict[str, Driver] = {}
         for vehicle, reference in refs.items():
-            if vehicle in plan.stationary or held(reference, road):
+            if vehicle in plan.stationary or held(reference, self.roads[vehicle]):
                 driver = StationaryDriver()
             else:
                 driver = complete((drivers(vehicle) if drivers else None) or default())
-            driver.start(vehicle, reference, road, dt)
+            driver.start(vehicle, reference, self.roads[vehicle], dt)
             self.active[vehicle] = driver
         self.steps = self.last_step()
         self.states = {
-            v: VehicleState(r.start_position, road.center_y(r.waypoints[0].lane), 0.0, r.start_speed, 0.0)
+            v: VehicleState(r.start_position, self.roads[v].center_y(r.waypoints[0].lane), 0.0, r.start_speed, 0.0)
             for v, r in refs.items()
         }
         self.predictions = {v: Trajectory.standing(s) for v, s in self.states.items()}
@@ -110,20 +123,25 @@ class _Lockstep:
         return int(round((max(r.end_time for r in self.refs.values()) + TAIL) / self.dt))
 
     def record(self, k: int) -> None:
-        """The states at step ``k``: their columns, the goals reached, the incidents."""
-        time, road, states = k * self.dt, self.road, self.states
+        """The states at step ``k``: their columns, the goals reached, the incidents (two vehicles
+        of different routes compared in the world)."""
+        time, roads, states = k * self.dt, self.roads, self.states
         for v, s in states.items():
             col = self.columns[v]
             col["x"][k], col["y"][k], col["heading"][k] = s.x, s.y, s.heading
-            col["speed"][k], col["acceleration"][k], col["lane"][k] = s.speed, s.acceleration, road.lane_at(s.y)
+            col["speed"][k], col["acceleration"][k], col["lane"][k] = s.speed, s.acceleration, roads[v].lane_at(s.y)
             if v in self.goals:
                 self.goals[v].update(time, s.x, int(col["lane"][k]))
         names = list(states)
         for i, a in enumerate(names):
-            if not road.on_road(corners(states[a])):
+            if not roads[a].on_road(corners(states[a])):
                 self.incidents.append(Incident(time, "off-road", (a,)))
             for b in names[i + 1 :]:
-                if boxes_overlap(states[a], states[b]):
+                if roads[a] is roads[b]:
+                    touching = boxes_overlap(states[a], states[b])
+                else:
+                    touching = boxes_overlap(_in_world(states[a], roads[a]), _in_world(states[b], roads[b]))
+                if touching:
                     self.incidents.append(Incident(time, "collision", (a, b)))
 
     def step(self, k: int) -> None:
@@ -133,7 +151,7 @@ class _Lockstep:
         retargeted = self.react(time, self.states, self.road, self.refs) if self.react is not None else None
         for v, reference in (retargeted or {}).items():
             self.refs[v] = reference
-            self.active[v].retarget(v, reference, self.road, self.dt)
+            self.active[v].retarget(v, reference, self.roads[v], self.dt)
             self.goals[v].retarget(reference.waypoints, time)
         if retargeted:
             self.steps = max(self.steps, self.last_step())
@@ -143,7 +161,8 @@ class _Lockstep:
                         col[name] = np.concatenate([values, np.zeros(self.steps + 1 - len(values))])
         chosen = {}
         for v, driver in self.active.items():
-            others = {o: p for o, p in self.predictions.items() if o != v}
+            # a driver sees the vehicles of its own route (road coordinates are a route's own)
+            others = {o: p for o, p in self.predictions.items() if o != v and self.roads[o] is self.roads[v]}
             chosen[v] = driver.plan(time, self.states[v], others)
         for v, trajectory in chosen.items():
             self.states[v] = trajectory.state(1)
@@ -156,7 +175,9 @@ class _Lockstep:
             columns[v]["lane"] = columns[v]["lane"].astype(int)
             if road.route is not None:
                 col = columns[v]
-                col["world_x"], col["world_y"], col["world_heading"] = road.world(col["x"], col["y"], col["heading"])
+                col["world_x"], col["world_y"], col["world_heading"] = self.roads[v].world(
+                    col["x"], col["y"], col["heading"]
+                )
         trace = Trace(np.round(np.arange(self.steps + 1) * self.dt, 6), columns, _merge(self.incidents))
         for sequence in self.goals.values():
             sequence.update(math.inf, math.nan, -1)  # windows still open at the end are misses
@@ -170,6 +191,12 @@ class _Lockstep:
             {v: g.records for v, g in self.goals.items()},
             list(self.react.replans) if self.react is not None else [],
         )
+
+
+def _in_world(state: VehicleState, road: Road) -> VehicleState:
+    """``state`` (road coordinates of ``road``) in the map's coordinates."""
+    x, y, heading = (float(v) for v in road.world(state.x, state.y, state.heading))
+    return dataclasses.replace(state, x=x, y=y, heading=heading)
 
 
 def drive_in_lockstep(

@@ -50,6 +50,10 @@ class CheckedScenario:
     # the road it runs on when it runs on a map (``roads.Route``: set_map or the map option); None:
     # the straight road of ``lanes`` lanes
     route: object = field(default=None, compare=False)
+    # with several routes (vehicles that take different ways through a junction): every route,
+    # ``route`` first (each route's ``crossers`` are the vehicles that drive it; a vehicle that
+    # names none drives ``route``); else ``(route,)`` on a map, () on the straight road
+    routes: tuple = field(default=(), compare=False)
 
     @property
     def name(self) -> str:

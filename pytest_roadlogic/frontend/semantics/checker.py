@@ -160,6 +160,7 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks):
         self.requested_lanes = lanes
         self.requested_map: Path | None = None  # the map option's file, which wins over a scenario's set_map
         self.route = None  # the route of the scenario being checked on its map (roads.Route), None: the straight road
+        self.routes: tuple = ()  # every route of it (CheckedScenario.routes)
         self.map_asked = None  # (the map file a scenario's set_map names, where) while it is checked
         self.route_asks: dict = {}  # path_length / path_curve of the scenario being checked (road_lanes)
         # The road of the scenario being checked, and why it has that many lanes (for error messages).
@@ -174,6 +175,8 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks):
         self.units: dict[str, tuple[str | None, float]] = UNITS  # what imported files are parsed with
         self.physical_types: dict[str, str | None] = dict(library.PHYSICAL_TYPES)
         self.roads: set[str] = set()  # the road fields of the scenario being checked
+        # its fields of the map's elements (``j: junction``, ``r1: road``): name -> type
+        self.map_elements: dict[str, str] = {}
         self.shadowed: set[tuple[str, str]] = set()  # (parameter, enum) already warned of, once each
 
     def error(self, location: SourceLocation, message: str, hint: str | None = None) -> None:
@@ -273,7 +276,7 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks):
             except OscError:
                 parameters = ()  # a scenario with errors is reported, never sampled: the checker said why
             scenarios.append(
-                CheckedScenario(checked, space, lanes, self.registry, self.sources, parameters, self.route)
+                CheckedScenario(checked, space, lanes, self.registry, self.sources, parameters, self.route, self.routes)
             )
         self.diagnostics = list(dict.fromkeys(self.diagnostics))
         self.diagnostics.sort(
@@ -400,6 +403,7 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks):
         actors: list[model.Actor] = []
         parameters: list[model.Field] = []
         roads: list[str] = []
+        self.map_elements = {}
         declared: dict[str, SourceLocation] = {}
         for item in (*globals_, *scenario.fields):
             item = self._aliased(item)
@@ -422,6 +426,8 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks):
                 parameters.append(item)
             elif kind == "road":
                 roads.append(item.name)
+            elif kind == "map_element":
+                self.map_elements[item.name] = item.type
         self.roads = set(roads)
         for implicit in library.IMPLICIT_VEHICLES:
             if implicit not in declared and _mentions(scenario, implicit):
@@ -736,6 +742,15 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks):
         if kind == "bool":
             if not (isinstance(value, model.Literal) and isinstance(value.value, bool)):
                 self.error(value.location, f"{parameter.name}: takes true or false")
+            return
+        if kind.startswith("map:"):
+            element = kind[4:]
+            if not isinstance(value, model.Name) or self.map_elements.get(value.name) != element:
+                self.error(
+                    value.location,
+                    f"{parameter.name}: takes a {element} of the map, a field of the scenario",
+                    f"declare one: {value.name if isinstance(value, model.Name) else 'x'}: {element}",
+                )
             return
         if kind == "road":
             if not isinstance(value, model.Name) or value.name not in self.roads:

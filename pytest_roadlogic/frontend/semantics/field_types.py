@@ -28,6 +28,14 @@ class FieldTyping:
                     "constrain it with path_min_driving_lanes(n) or path_max_lanes(n)",
                 )
             return "road"
+        if item.type in library.MAP_ELEMENT_TYPES:
+            if item.constraints or item.default is not None:
+                self.error(
+                    location,
+                    f"not supported: a value or keep() for a {item.type} of the map",
+                    "the tool picks it from the map where roads_follow_in_junction names it",
+                )
+            return "map_element"
         if self._actor_base(item.type) is not None:
             if self._driven_as_vehicle(item.type):
                 self.warning(

@@ -45,6 +45,10 @@ ROAD_TYPE = "Path"
 # the same, as the standard declares it (`map: map`, `map.roads_follow_in_junction(...)`)
 ROAD_TYPES = (ROAD_TYPE, "map")
 
+# the map's elements a scenario names as fields of its own (`j: junction`, `r1: road`): the tool
+# picks each from the map where roads_follow_in_junction names it (docs/junctions.md)
+MAP_ELEMENT_TYPES = ("junction", "road")
+
 NUMBER_TYPES = ("int", "uint", "float")
 # the physical types the pipeline models (length, time, speed, acceleration: metres and seconds),
 # as the standard library declares them (stdlib/osc/physical.osc); read on first use
@@ -199,16 +203,17 @@ ROAD_MODIFIERS: dict[str, Signature] = _signatures(
         required=(("min_radius", "max_radius"),),
         description="on a map: the route has a curve of a radius in min_radius..max_radius (to the side)",
     ),
-    # the standard's map.roads_follow_in_junction: the route turns at a junction of the map; the
-    # roads, lanes and routes it names as values of their own are not yet (docs/junctions.md)
+    # the standard's map.roads_follow_in_junction: the route turns at a junction of the map, at the
+    # junction and from and into the roads it names (fields of the scenario, shared by the turns of
+    # several paths); its lanes and routes as values of their own are not yet (docs/junctions.md)
     Signature(
         "roads_follow_in_junction",
         (
             Parameter("direction", "enum:junction_direction"),
             Parameter("number_of_roads", "uint"),
-            Parameter("junction", "road", supported=False),
-            Parameter("in_road", "road", supported=False),
-            Parameter("out_road", "road", supported=False),
+            Parameter("junction", "map:junction"),
+            Parameter("in_road", "map:road"),
+            Parameter("out_road", "map:road"),
             Parameter("clockwise_count", "uint", supported=False),
             Parameter("in_lane", "road", supported=False),
             Parameter("out_lane", "road", supported=False),

@@ -6,6 +6,7 @@ import dataclasses
 import math
 from pathlib import Path
 
+from ...roads.asks import TurnAsk
 from ...settings import STANDARD_DIALECT
 from .. import model
 from ..errors import SourceLocation
@@ -33,7 +34,8 @@ class RoadLanes:
         ``path_min_driving_lanes``, at least its highest lane number or lane change plus one, and at most
         its ``path_max_lanes``, so that a file states its road and runs the same from every entry point.
         """
-        self.route, self.map_asked, self.route_asks = None, None, {}
+        self.route, self.routes, self.map_asked, self.route_asks = None, (), None, {}
+        self.turn_asks: dict[str, tuple] = {}  # road field -> (roads.choice.TurnAsk, where)
         bounds = self._road_bounds(scenario, env, roads)
         least, most = bounds.get("path_min_driving_lanes"), bounds.get("path_max_lanes")
         if self.requested_map is not None:  # the map option wins over the file's set_map
@@ -47,9 +49,9 @@ class RoadLanes:
                 "path_curve() asks for a curve, but the scenario runs on the straight road",
                 'give it a map with one: set_map("file.xodr"), or --roadlogic-map FILE',
             )
-        if "turn" in self.route_asks:
+        if self.turn_asks:
             self.error(
-                self.route_asks["turn"][2],
+                next(iter(self.turn_asks.values()))[1],
                 "roads_follow_in_junction() asks for a junction, but the scenario runs on the straight road",
                 'give it a map with one: set_map("file.xodr"), or --roadlogic-map FILE',
             )
@@ -123,7 +125,9 @@ class RoadLanes:
         asks = self.route_asks
         length = (asks["path_length"][0] or 0.0) if "path_length" in asks else 0.0
         curve = asks["path_curve"][:3] if "path_curve" in asks else None
-        turn = asks["turn"][:2] if "turn" in asks else None
+        turn_asks = list(self.turn_asks.values())
+        turn = (turn_asks[0][0].direction, turn_asks[0][0].roads) if len(turn_asks) == 1 else None
+        turn_at = turn_asks[-1][1] if turn_asks else None
 
         def refused(where: SourceLocation, error: MapError) -> int:
             in_map = f"{error.path}:{error.line}:{error.column}: " if error.line else f"{error.path}: "
@@ -134,11 +138,24 @@ class RoadLanes:
             road_map = read_map(path)
         except MapError as error:
             return refused(at, error)
+        if len(turn_asks) > 1:
+            if curve is not None:
+                self.error(
+                    asks["path_curve"][3],
+                    "not supported: path_curve() in a scenario of several routes",
+                    "leave it out: the routes are the turns roads_follow_in_junction asks for",
+                )
+                return needed
+            try:
+                return self._routes_of_map(scenario, road_map, needed, length)
+            except MapError as error:
+                return refused(turn_at, error)
         try:
             self.route = pick_route(road_map, needed, length, curve, turn)
         except MapError as error:
             # no route as asked: at the line that asks for a turn, when one does
-            return refused(asks["turn"][2] if turn is not None else at, error)
+            return refused(turn_at if turn is not None else at, error)
+        self.routes = (self.route,)
         lanes = self.route.lanes
         if most and lanes > most[0]:
             self.error(
@@ -168,6 +185,90 @@ class RoadLanes:
             self._crossers(scenario, at)
         self.lanes, self.lanes_origin = lanes, f" (the route on {self.route.name})"
         return lanes
+
+    def _routes_of_map(self, scenario: model.Scenario, road_map, needed: int, length: float) -> int:
+        """The routes of a scenario whose paths turn at junctions of ``road_map`` (several
+        ``roads_follow_in_junction``, one per path): the turns chosen together
+        (``roads.choice.choose_turns``: the junction and roads they name agree), in the order the
+        paths ask for them, each driven by the vehicles whose drive goes ``along`` its path (the
+        first also by those that name none). ``MapError`` from the choice; errors where a vehicle
+        drives along two paths, along a path that does not turn, or is related to a vehicle on
+        another route."""
+        from ...roads.choice import choose_turns, turn_as_route
+
+        paths = list(self.turn_asks)
+        chosen = choose_turns(road_map, needed, length, tuple(ask for ask, _ in self.turn_asks.values()))
+        driven = self._paths_driven(scenario, paths)
+        routes = [
+            turn_as_route(road_map, turn, frozenset(v for v, p in driven.items() if p == path))
+            for path, turn in zip(paths, chosen)
+        ]
+        lanes = {route.lanes for route in routes}
+        if len(lanes) > 1:
+            self.error(
+                self.turn_asks[paths[-1]][1],
+                "not supported yet: routes with different numbers of driving lanes ("
+                + ", ".join(f"{path}: {route.lanes} on {route.turn}" for path, route in zip(paths, routes))
+                + ")",
+                "give a map whose roads at the junction have as many lanes each",
+            )
+        self.route, self.routes = routes[0], tuple(routes)
+        self._apart(scenario, {v: paths.index(p) for v, p in driven.items()})
+        self.lanes = routes[0].lanes
+        self.lanes_origin = f" (the routes on {routes[0].source.name})"
+        return self.lanes
+
+    def _paths_driven(self, scenario: model.Scenario, paths: list[str]) -> dict[str, str]:
+        """vehicle -> the path its drive goes ``along`` (each vehicle one path, a path that turns)."""
+        driven: dict[str, tuple[str, SourceLocation]] = {}
+        for behavior in scenario.behaviors:
+            for node in model.walk(behavior):
+                if not isinstance(node, model.Invocation):
+                    continue
+                for modifier in node.modifiers:
+                    if modifier.name != "along" or not modifier.arguments:
+                        continue
+                    value = modifier.arguments[0].value
+                    if not isinstance(value, model.Name) or value.name not in self.roads:
+                        continue  # reported where along() is checked
+                    if value.name not in paths:
+                        self.error(
+                            value.location,
+                            f"{value.name} does not turn at a junction, but the scenario's other paths do",
+                            f"give {value.name} its turn: {value.name}.roads_follow_in_junction(direction: ...)",
+                        )
+                    elif node.actor in driven and driven[node.actor][0] != value.name:
+                        self.error(
+                            modifier.location,
+                            f"{node.actor} drives along {driven[node.actor][0]} (line {driven[node.actor][1].line}): "
+                            f"one vehicle drives one route",
+                            f"drive it along {driven[node.actor][0]} here too",
+                        )
+                    else:
+                        driven.setdefault(node.actor, (value.name, modifier.location))
+        return {vehicle: path for vehicle, (path, _) in driven.items()}
+
+    def _apart(self, scenario: model.Scenario, route_of: dict[str, int]) -> None:
+        """An error wherever a construct of one vehicle names a vehicle on another route (a
+        position, lane or gap relative to it): road coordinates are a route's own. Vehicles that
+        name no path drive the first route."""
+        names = {actor.name for actor in scenario.actors}
+        for behavior in scenario.behaviors:
+            for node in model.walk(behavior):
+                if not isinstance(node, model.Invocation) or node.actor not in names:
+                    continue
+                own = route_of.get(node.actor, 0)
+                for argument in (*node.arguments, *(a for m in node.modifiers for a in m.arguments)):
+                    other = argument.value.name if isinstance(argument.value, model.Name) else None
+                    if other in names and other != node.actor and route_of.get(other, 0) != own:
+                        self.error(
+                            argument.value.location,
+                            f"{node.actor} and {other} drive different routes "
+                            f"({self.routes[own].turn}; {self.routes[route_of.get(other, 0)].turn}): "
+                            "a position, lane or gap between them has no meaning",
+                            "relate vehicles on one route; the planner orders vehicles of different routes "
+                            "through the places where their routes meet",
+                        )
 
     def _crossers(self, scenario: model.Scenario, at: SourceLocation) -> None:
         """On a route that turns at a junction: the vehicles whose drive goes ``along(path)`` drive
@@ -233,7 +334,15 @@ class RoadLanes:
                     argument.value.value if argument is not None and isinstance(argument.value, model.Literal) else ""
                 )
                 if isinstance(name, str) and name.lower().endswith(".xodr"):
-                    self.map_asked = (Path(modifier.location.path).parent / name, modifier.location)
+                    asked = Path(modifier.location.path).parent / name
+                    if self.map_asked is not None and self.map_asked[0] != asked:
+                        self.error(
+                            modifier.location,
+                            f"a second map: the scenario's map is {self.map_asked[0].name} (line {self.map_asked[1].line})",
+                            "a scenario runs on one map: set it once (its paths all take their turns in it)",
+                        )
+                        continue
+                    self.map_asked = (asked, modifier.location)
                     continue
                 hint = 'give an OpenDRIVE file (set_map("road.xodr"), relative to this file), or the road\'s lanes with path_min_driving_lanes(n)'
                 if self.registry.dialect == STANDARD_DIALECT:
@@ -270,15 +379,16 @@ class RoadLanes:
         return bounds
 
     def _turn_ask(self, modifier: model.Modifier, binding, env: dict, before: int) -> None:
-        """``roads_follow_in_junction``: the route turns at a junction, kept in ``self.route_asks``
-        as ("turn" -> (direction or None, number of roads or None, where))."""
+        """``roads_follow_in_junction``: the path it is applied to turns at a junction, kept in
+        ``self.turn_asks`` (path -> (``roads.choice.TurnAsk``, where)), in the order given."""
         if any(d.severity == "error" for d in self.diagnostics[before:]):
             return
-        if "turn" in self.route_asks:
+        path = modifier.actor or ""
+        if path in self.turn_asks:
             self.error(
                 modifier.location,
-                f"roads_follow_in_junction() is already given on line {self.route_asks['turn'][2].line}",
-                "the scenario's route turns at one junction: give it once",
+                f"roads_follow_in_junction() is already given on line {self.turn_asks[path][1].line}",
+                "a path turns at one junction: give it once, or give each vehicle's way a path of its own",
             )
             return
         direction = binding["direction"]
@@ -295,7 +405,13 @@ class RoadLanes:
                 )
                 return
             roads = int(value.low)
-        self.route_asks["turn"] = (name, roads, modifier.location)
+
+        def field(parameter: str) -> str | None:
+            given = binding[parameter]
+            return given.value.name if given is not None and isinstance(given.value, model.Name) else None
+
+        ask = TurnAsk(name, roads, field("junction"), field("in_road"), field("out_road"), path or "the path")
+        self.turn_asks[path] = (ask, modifier.location)
 
     def _route_ask(self, modifier: model.Modifier, binding, env: dict, before: int) -> None:
         """``path_length`` / ``path_curve``: what the route on a map must have, kept in

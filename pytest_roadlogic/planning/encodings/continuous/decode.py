@@ -54,4 +54,10 @@ def decode_plan(
         brisk=tuple(v for v in automaton.actors if v in brisk(automaton)),
         route=settings.route,
         origin=float(Fraction(str(values["origin"]).strip('"'))) if "origin" in values else None,
+        side_routes={
+            v: (side.route, float(Fraction(str(values.get(f"origin({k})", 0)).strip('"'))))
+            for k, side in enumerate(settings.side_routes, 1)
+            for v in automaton.actors
+            if v in side.vehicles
+        },
     )

@@ -75,15 +75,7 @@ def build_continuous_instance(
         f"lane_id(0..{automaton.lanes - 1}).",
         "lateral(-1;0;1).",
         f"lane_change_gap({s.lane_change_gap}).",
-        *([f"route_span({number(s.route_span[0])},{number(s.route_span[1])})."] if s.route_span else []),
-        *(f"lane_span({lane},{number(first)},{number(last)})." for lane, first, last in s.lane_spans),
-        *([f"origin_span({number(s.origin_span[0])},{number(s.origin_span[1])})."] if s.origin_span else []),
-        *(
-            f"slow_span({k},{number(first)},{number(last)},{number(speed)})."
-            for k, (first, last, speed) in enumerate(s.slow_spans)
-        ),
-        *([f"junction_span({number(s.junction_span[0])},{number(s.junction_span[1])})."] if s.junction_span else []),
-        *(f"crosses({atom(v)})." for v in vehicles if v in s.crossers),
+        *route_facts(s, vehicles, spacing(automaton, s)),
         "",
     ]
     return with_automaton(
@@ -94,6 +86,44 @@ def build_continuous_instance(
         lambda node, guard: node_facts(node, guard, s, automaton),
         lambda relax: rate_facts(automaton, s, relax),
     )
+
+
+def route_facts(s: ContinuousSettings, vehicles: tuple[str, ...], gap: float) -> list[str]:
+    """The facts of the map's routes (asp/continuous/route.lp): route 0 the settings' own, then
+    each of ``side_routes``, and where they meet (on a shared stretch, ``gap`` metres between the
+    cars of two routes, as between two of one lane); none on the straight road."""
+    if s.route_span is None:
+        return []
+    routes = [(0, s.route_span, s.lane_spans, s.slow_spans, s.junction_span)]
+    routes += [(k, r.route_span, r.lane_spans, r.slow_spans, r.junction_span) for k, r in enumerate(s.side_routes, 1)]
+    facts = [f"origin_span({number(s.origin_span[0])},{number(s.origin_span[1])})."] if s.origin_span else []
+    bend = 0
+    for k, span, lane_spans, slow_spans, junction in routes:
+        facts.append(f"route_span({k},{number(span[0])},{number(span[1])}).")
+        facts += [f"lane_span({k},{lane},{number(first)},{number(last)})." for lane, first, last in lane_spans]
+        for first, last, speed in slow_spans:
+            facts.append(f"slow_span({k},{bend},{number(first)},{number(last)},{number(speed)}).")
+            bend += 1
+        if junction is not None:
+            facts.append(f"junction_span({k},{number(junction[0])},{number(junction[1])}).")
+    crossers = set(s.crossers)
+    for k, side in enumerate(s.side_routes, 1):
+        driven = [v for v in vehicles if v in side.vehicles]
+        facts += [f"route_of({atom(v)},{k})." for v in driven]
+        if driven and driven[0] != vehicles[0]:
+            facts.append(f"route_first({atom(driven[0])}).")
+        crossers |= set(driven) if side.junction_span is not None else set()
+    facts += [f"crosses({atom(v)})." for v in vehicles if v in crossers]
+    for z, meeting in enumerate(s.meetings):
+        facts.append(f"meeting({z},{meeting.kind}).")
+        # a crossing widened by the clearance kept between the one through and the next
+        widen = s.meeting_clearance if meeting.kind == "crossing" else 0.0
+        for route, (first, last) in ((meeting.first, meeting.first_span), (meeting.second, meeting.second_span)):
+            facts.append(f"meeting_span({z},{route},{number(first - widen)},{number(last + widen)}).")
+        if meeting.kind == "shared":
+            facts.append(f"meeting_ahead({z},{meeting.first},{meeting.second},{number(gap + meeting.offset)}).")
+            facts.append(f"meeting_ahead({z},{meeting.second},{meeting.first},{number(gap - meeting.offset)}).")
+    return facts
 
 
 def first_speeds(automaton: SymbolicAutomaton, settings: ContinuousSettings) -> dict[str, float]:

@@ -12,6 +12,7 @@ from ....settings import CONTINUOUS_HORIZON, ROAD_SPEED
 from ...protocol import Limit
 
 if TYPE_CHECKING:
+    from ....roads.conflicts import Meeting
     from ....roads.route import Route
 
 # the vehicle limits a fallback plans without, when no plan exists within them: (field, relaxed
@@ -27,6 +28,33 @@ RELAXED_LIMITS = (
     ("closing_time", 0.0, "s", False),
     ("min_gap", 5.0, "m", False),
 )
+
+
+@dataclass(frozen=True)
+class SideRoute:
+    """A route of the map besides the scenario's first (asp/continuous/route.lp): the vehicles
+    that drive it, where along it they stay, where its lanes take a car, its sharp bends and its
+    junction, as ``ContinuousSettings`` has them for the first route."""
+
+    vehicles: frozenset[str]
+    route_span: tuple[float, float]
+    lane_spans: tuple[tuple[int, float, float], ...]
+    slow_spans: tuple[tuple[float, float, float], ...]
+    junction_span: tuple[float, float] | None
+    route: Route = field(compare=False, repr=False)
+
+    @classmethod
+    def of(cls, route: Route) -> SideRoute:
+        from ....roads.route import ROUTE_MARGIN
+
+        return cls(
+            route.crossers,
+            (ROUTE_MARGIN, route.length - ROUTE_MARGIN),
+            tuple((lane, first, last) for lane, (first, last) in sorted(route.spans().items())),
+            route.slow_stretches,
+            route.junction_span,
+            route,
+        )
 
 
 @dataclass(frozen=True)
@@ -101,6 +129,14 @@ class ContinuousSettings:
     junction_span: tuple[float, float] | None = None
     crossers: frozenset[str] = frozenset()
     route: Route | None = field(default=None, compare=False, repr=False)  # the map's route (on_route)
+    # more routes of the map (routes 1, 2, ... after ``route``, 0), each driven by its vehicles
+    # (vehicles that take other ways through a junction), and where any two routes meet
+    # (``roads.conflicts``): the planner orders the vehicles of two routes through each meeting
+    side_routes: tuple[SideRoute, ...] = ()
+    meetings: tuple[Meeting, ...] = ()
+    # m added along each route at both ends of a crossing of two routes: the first car through has
+    # left it by this much when the next enters (a motion planner lags its plan by a metre or two)
+    meeting_clearance: float = 2.0
     # why a limit has the value it has when not a car's own: (field, why), for the messages
     limit_reasons: tuple[tuple[str, str], ...] = ()
     max_horizon: int = CONTINUOUS_HORIZON  # steps
@@ -133,25 +169,27 @@ class ContinuousSettings:
     # the high one
     drift_speeds: tuple[float, float] = (2.0, 40.0)
 
-    def on_route(self, route) -> ContinuousSettings:
+    def on_route(self, route, others: tuple = ()) -> ContinuousSettings:
         """These settings for a scenario on a map's ``route`` (``roads.Route``): no vehicle faster
         than the route's sharpest curve lets a car hold (``roads.route.curve_speed``) and, in its
         sharp bends (a turn at a junction), than the bend lets it; each on the route and in a lane
         only where it is (``asp/continuous/route.lp``), the scenario starting in the curve it asks
         for, the vehicles that drive through the route's junction doing so, and a start speed the
         scenario leaves open at most the map's limit."""
+        from ....roads.conflicts import conflicts
         from ....roads.route import MAX_LATERAL_ACCELERATION, ROUTE_MARGIN, curve_speed
 
         low, high = self.road_speed
-        if route.speed_limit is not None:
-            low, high = min(low, route.speed_limit), min(high, route.speed_limit)
-        bend = curve_speed(route)
+        for limit in (r.speed_limit for r in (route, *others) if r.speed_limit is not None):
+            low, high = min(low, limit), min(high, limit)
+        tightest = min((route, *others), key=curve_speed)
+        bend = curve_speed(tightest)
         reasons = ()
         if bend < self.max_speed:
             reasons = (
                 (
                     "max_speed",
-                    f"the sharpest curve of {route.name}, radius {1 / route.gentle_curvature():.0f} m, at "
+                    f"the sharpest curve of {tightest.name}, radius {1 / tightest.gentle_curvature():.0f} m, at "
                     f"{MAX_LATERAL_ACCELERATION:g} m/s^2 of lateral acceleration",
                 ),
             )
@@ -167,6 +205,8 @@ class ContinuousSettings:
             junction_span=route.junction_span,
             crossers=route.crossers,
             route=route,
+            side_routes=tuple(SideRoute.of(other) for other in others),
+            meetings=conflicts((route, *others)) if others else (),
         )
 
     def resolution(self) -> dict[str | None, float]:

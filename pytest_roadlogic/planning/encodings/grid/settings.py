@@ -72,7 +72,7 @@ class GridSettings:
     def describe_margins(self) -> str:
         return f"speed_margin {self.speed_margin:g} m/s, position_margin {self.position_margin:g} m"
 
-    def on_route(self, route) -> GridSettings:
+    def on_route(self, route, others: tuple = ()) -> GridSettings:
         """Cannot: the grid plans one straight road of integer cells."""
         raise CannotPlanOnMap(
             f"the grid encoding plans on one straight road: {route.name} needs the continuous encoding "

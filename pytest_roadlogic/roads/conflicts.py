@@ -1,0 +1,135 @@
+"""Where two routes of one map meet (``conflicts``): the stretches of each on which a car of one
+could touch a car of the other, as the planner orders vehicles through them.
+
+Two cars touch when their boxes (``dimensions.CAR_LENGTH`` by ``CAR_WIDTH``, grown by ``MARGIN``
+on every side) overlap, each centred on one of its route's driving lanes and headed along it. A
+meeting is one stretch of each route where that can happen, of one of two kinds:
+
+- a **crossing** (two turns through a junction that cross, a turn across the oncoming lane): cars
+  are in it only while they pass; the planner lets one pass before the other enters;
+- a **shared** stretch (two routes that join in one lane, or leave one lane): the routes run
+  together, a metre of one being a metre of the other (``offset``: the first route's metres less
+  the second's at one place); the planner keeps one ahead of the other in it by a gap.
+
+Routes that only run side by side in lanes of their own (a road's two directions) never meet.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.spatial import cKDTree
+
+from ..dimensions import CAR_LENGTH, CAR_WIDTH
+from .route import Route
+
+MARGIN = 0.5  # m around each car: closer than this, two cars are in each other's way
+STEP = 0.5  # m along a route at which its lanes' centres are sampled
+SPLIT = 2.0  # m: samples further apart along a route than this belong to two meetings
+ALIGNED = np.radians(30.0)  # headings closer than this run together (a shared stretch)
+SHARED_LENGTH = 10.0  # m: a meeting of aligned lanes at least this long is a shared stretch
+
+
+@dataclass(frozen=True)
+class Meeting:
+    """Routes ``first`` and ``second`` (their indices in the scenario's routes) meet over
+    ``first_span`` metres along the first and ``second_span`` along the second; ``kind`` is
+    "crossing" or "shared"; on a shared stretch ``offset`` is the first route's metres less the
+    second's at one place (0 for a crossing)."""
+
+    first: int
+    second: int
+    first_span: tuple[float, float]
+    second_span: tuple[float, float]
+    kind: str
+    offset: float = 0.0
+
+    def describe(self) -> str:
+        what = "cross" if self.kind == "crossing" else "share a lane"
+        return (
+            f"routes {self.first + 1} and {self.second + 1} {what} from {self.first_span[0]:.0f} to "
+            f"{self.first_span[1]:.0f} m along route {self.first + 1}"
+        )
+
+
+def lane_centres(route: Route) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Every driving lane's centre of ``route`` sampled every ``STEP`` metres: (metres along the
+    route, world x, world y, heading), all lanes' samples one after the other."""
+    s = np.arange(0.0, route.length + STEP / 2, STEP)
+    along, xs, ys, headings = [], [], [], []
+    for lane in range(route.lanes):
+        x, y, heading = route.pose(s, np.full_like(s, route.width - (lane + 0.5) * route.lane_width))
+        along.append(s), xs.append(x), ys.append(y), headings.append(heading)
+    return np.concatenate(along), np.concatenate(xs), np.concatenate(ys), np.concatenate(headings)
+
+
+def boxes_touch(x1, y1, h1, x2, y2, h2, margin: float = MARGIN) -> np.ndarray:
+    """Whether car boxes centred at (x1, y1) headed h1 and at (x2, y2) headed h2 (arrays of one
+    shape) overlap, each grown by ``margin``: the separating-axis test, elementwise."""
+    half = np.array([CAR_LENGTH / 2 + margin, CAR_WIDTH / 2 + margin])
+    centre = np.stack([x2 - x1, y2 - y1], axis=-1)
+    axes1 = np.stack([np.stack([np.cos(h1), np.sin(h1)], -1), np.stack([-np.sin(h1), np.cos(h1)], -1)], -2)
+    axes2 = np.stack([np.stack([np.cos(h2), np.sin(h2)], -1), np.stack([-np.sin(h2), np.cos(h2)], -1)], -2)
+    touching = np.ones(np.shape(x1), dtype=bool)
+    for axes in (axes1, axes2):
+        for k in range(2):
+            axis = axes[..., k, :]
+            reach = (
+                half[0] * np.abs(np.sum(axes1[..., 0, :] * axis, -1))
+                + half[1] * np.abs(np.sum(axes1[..., 1, :] * axis, -1))
+                + half[0] * np.abs(np.sum(axes2[..., 0, :] * axis, -1))
+                + half[1] * np.abs(np.sum(axes2[..., 1, :] * axis, -1))
+            )
+            touching &= np.abs(np.sum(centre * axis, -1)) <= reach
+    return touching
+
+
+def _runs(values: np.ndarray) -> list[np.ndarray]:
+    """Indices of ``values`` grouped into runs whose sorted values lie within ``SPLIT`` of each other."""
+    order = np.argsort(values, kind="stable")
+    breaks = np.flatnonzero(np.diff(values[order]) > SPLIT) + 1
+    return np.split(order, breaks)
+
+
+def meetings_of(first: int, a: Route, second: int, b: Route) -> list[Meeting]:
+    """Where routes ``a`` (index ``first``) and ``b`` (index ``second``) meet, in order along ``a``."""
+    sa, xa, ya, ha = lane_centres(a)
+    sb, xb, yb, hb = lane_centres(b)
+    reach = float(np.hypot(CAR_LENGTH + 2 * MARGIN, CAR_WIDTH + 2 * MARGIN))
+    near = cKDTree(np.stack([xb, yb], -1)).query_ball_point(np.stack([xa, ya], -1), reach)
+    i = np.repeat(np.arange(len(sa)), [len(n) for n in near])
+    if not len(i):
+        return []
+    j = np.concatenate([np.asarray(n, dtype=int) for n in near])
+    touching = boxes_touch(xa[i], ya[i], ha[i], xb[j], yb[j], hb[j])
+    i, j = i[touching], j[touching]
+    found: list[Meeting] = []
+    if not len(i):
+        return found
+    for run in _runs(sa[i]):
+        for part in _runs(sb[j[run]]):
+            ia, jb = i[run][part], j[run][part]
+            turn = np.abs((ha[ia] - hb[jb] + np.pi) % (2 * np.pi) - np.pi)
+            span_a = (float(sa[ia].min()), float(sa[ia].max()))
+            span_b = (float(sb[jb].min()), float(sb[jb].max()))
+            aligned = turn < ALIGNED
+            if aligned.mean() > 0.5 and span_a[1] - span_a[0] >= SHARED_LENGTH:
+                # the places where the two lanes' centres coincide say how the metres correspond
+                gap = np.hypot(xa[ia] - xb[jb], ya[ia] - yb[jb])
+                closest = gap <= gap.min() + 0.5
+                offset = float(np.median(sa[ia][closest] - sb[jb][closest]))
+                found.append(Meeting(first, second, span_a, span_b, "shared", offset))
+            else:
+                found.append(Meeting(first, second, span_a, span_b, "crossing"))
+    return sorted(found, key=lambda m: m.first_span)
+
+
+def conflicts(routes: tuple[Route, ...]) -> tuple[Meeting, ...]:
+    """Every meeting of every two of ``routes`` (one map's), by route pair then along the first."""
+    return tuple(
+        meeting
+        for first in range(len(routes))
+        for second in range(first + 1, len(routes))
+        for meeting in meetings_of(first, routes[first], second, routes[second])
+    )
