@@ -229,7 +229,7 @@ def choose_turns(road_map: RoadMap, lanes: int, length: float, asks: tuple[TurnA
                 yield from agreeing(k + 1, chosen + [turn], {**bound, **binding})
 
     def meet(chosen: list[Turn]) -> bool:
-        if len(set(map(id, chosen))) < len(chosen):
+        if len({(t.junction, t.into.id, t.out_of.id) for t in chosen}) < len(chosen):
             return False
         routes = [turn_as_route(road_map, turn) for turn in chosen]
         return all(

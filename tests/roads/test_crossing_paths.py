@@ -1,0 +1,211 @@
+"""Vehicles taking different ways through one junction, from their definitions: where two routes
+meet is read from the cars' boxes in the world, the turns of several paths are chosen together
+as the fields they share say, the planner lets one car through a crossing before the other enters
+(checked here on the plan, independently of the encoding) and keeps a gap on a lane two routes
+share, and the simulation drives each car on its own route."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from pytest_roadlogic.roads.choice import TurnAsk, choose_turns, turn_as_route
+from pytest_roadlogic.roads.conflicts import boxes_touch, conflicts
+from pytest_roadlogic.roads.junctions import turns
+from pytest_roadlogic.roads.opendrive_in import MapError, read_map
+from tests.roads.map_files import write
+
+ROOT = Path(__file__).resolve().parents[2]
+SUITE = ROOT / "scenarios" / "junctions"
+MAPS = SUITE / "maps"
+CROSSING = MAPS / "crossing.xodr"
+
+
+def _turn(road_map, into: str, out_of: str):
+    return next(t for t in turns(road_map) if t.into.id == into and t.out_of.id == out_of)
+
+
+def test_two_boxes_touch_only_when_they_overlap_with_their_margin():
+    # side by side in lanes 3.5 m apart (a road's two directions): 1.7 m between them, never touching
+    assert not boxes_touch(np.array(0.0), np.array(0.0), np.array(0.0), np.array(0.0), np.array(3.5), np.array(np.pi))
+    # nose to tail 5 m apart: 0.5 m between bumpers, within the two half-metre margins
+    assert boxes_touch(np.array(0.0), np.array(0.0), np.array(0.0), np.array(5.0), np.array(0.0), np.array(0.0))
+    assert not boxes_touch(np.array(0.0), np.array(0.0), np.array(0.0), np.array(6.0), np.array(0.0), np.array(0.0))
+    # at right angles, one 3 m ahead of the other's centre: touching
+    assert boxes_touch(np.array(0.0), np.array(0.0), np.array(0.0), np.array(3.0), np.array(0.0), np.array(np.pi / 2))
+
+
+def test_a_left_turn_and_the_oncoming_way_straight_on_cross_once_inside_the_junction():
+    road_map = read_map(CROSSING)
+    left, oncoming = _turn(road_map, "2", "1"), _turn(road_map, "4", "2")
+    routes = (turn_as_route(road_map, left), turn_as_route(road_map, oncoming))
+    (meeting,) = conflicts(routes)
+    assert meeting.kind == "crossing"
+    for route, (first, last) in zip(routes, (meeting.first_span, meeting.second_span)):
+        begin, end = route.junction_span
+        assert begin - 5.0 <= first < last <= end + 5.0
+        assert last - first < 20.0  # a crossing is passed, not driven along
+
+
+def test_a_roads_two_directions_never_meet_and_two_ways_into_one_lane_share_it_to_the_end():
+    road_map = read_map(CROSSING)
+    straight_on, straight_back = _turn(road_map, "3", "1"), _turn(road_map, "1", "3")
+    assert not conflicts((turn_as_route(road_map, straight_on), turn_as_route(road_map, straight_back)))
+    # a right turn from road 1 and the way straight on from road 4 both end on road 2
+    right, straight = (
+        turn_as_route(road_map, _turn(road_map, "1", "2")),
+        turn_as_route(road_map, _turn(road_map, "4", "2")),
+    )
+    (meeting,) = conflicts((right, straight))
+    assert meeting.kind == "shared"
+    assert meeting.first_span[1] == pytest.approx(right.length, abs=1.0)
+    assert meeting.second_span[1] == pytest.approx(straight.length, abs=1.0)
+    # the same place of road 2 is this many metres further along the right turn's route
+    assert meeting.offset == pytest.approx(right.length - straight.length, abs=0.5)
+
+
+def test_turns_that_name_one_road_share_it_and_turns_that_cannot_agree_are_refused():
+    road_map = read_map(CROSSING)
+    left, oncoming = choose_turns(
+        road_map,
+        1,
+        200.0,
+        (
+            TurnAsk("left", None, "j", "south", None, "ego_path"),
+            TurnAsk("straight", None, "j", None, "south", "npc_path"),
+        ),
+    )
+    assert left.direction == "left" and oncoming.direction == "straight"
+    assert oncoming.out_of.id == left.into.id and oncoming.junction == left.junction
+    # two paths straight on through one junction, nothing shared: the ways that cross, not the
+    # same way twice nor the two directions of one road
+    first, second = choose_turns(road_map, 1, 200.0, (TurnAsk("straight"), TurnAsk("straight")))
+    routes = (turn_as_route(road_map, first), turn_as_route(road_map, second))
+    assert [m.kind for m in conflicts(routes)] == ["crossing"]
+    with pytest.raises(MapError, match="no turns of the map go together as the scenario asks"):
+        # a left turn into the road another turns left out of, both from that road: no such pair
+        choose_turns(
+            road_map, 1, 200.0, (TurnAsk("left", None, None, "r", None), TurnAsk("left", None, None, "r", "r"))
+        )
+
+
+SEVERAL = """scenario two_ways:
+    ego_path: Path
+    npc_path: Path
+    j: junction
+    south: road
+    ego_path.set_map("maps/crossing.xodr")
+    ego_path.roads_follow_in_junction(junction: j, in_road: south, direction: left)
+    npc_path.roads_follow_in_junction(junction: j, out_road: south, direction: straight)
+    ego: car
+    npc: car
+    do parallel(duration: [12s..18s]):
+        ego.drive() with:
+            along(ego_path)
+{extra}        npc.drive() with:
+            along({npc_path})
+"""
+
+
+def _copy_maps(folder: Path) -> None:
+    (folder / "maps").mkdir()
+    (folder / "maps" / "crossing.xodr").write_bytes(CROSSING.read_bytes())
+
+
+def test_each_vehicle_drives_the_route_of_the_path_it_goes_along(tmp_path):
+    from pytest_roadlogic.pipeline import load_scenario
+
+    _copy_maps(tmp_path)
+    scenario = load_scenario(write(tmp_path / "two.osc", SEVERAL.format(extra="", npc_path="npc_path")))
+    assert [r.crossers for r in scenario.routes] == [{"ego"}, {"npc"}]
+    assert scenario.route is scenario.routes[0]
+    assert scenario.routes[0].turn.startswith("left from road 2") and scenario.routes[1].turn.startswith("straight")
+
+
+@pytest.mark.parametrize(
+    "extra, npc_path, message",
+    [
+        (
+            "            position([10m..20m], ahead_of: npc, at: start)\n",
+            "npc_path",
+            r"two.osc:14:44: error: ego and npc drive different routes",
+        ),
+        (
+            "        ego.drive() with:\n            along(npc_path)\n",
+            "npc_path",
+            r"ego drives along ego_path \(line 13\)",
+        ),
+    ],
+    ids=["position relative to a car of another route", "along two paths"],
+)
+def test_vehicles_of_two_routes_are_never_related_by_position_and_a_vehicle_drives_one_route(
+    tmp_path, extra, npc_path, message
+):
+    from pytest_roadlogic.frontend import OscError
+    from pytest_roadlogic.pipeline import load_scenario
+
+    _copy_maps(tmp_path)
+    with pytest.raises(OscError, match=message):
+        load_scenario(write(tmp_path / "two.osc", SEVERAL.format(extra=extra, npc_path=npc_path)))
+
+
+def test_a_second_map_is_refused_at_its_set_map(tmp_path):
+    from pytest_roadlogic.frontend import OscError
+    from pytest_roadlogic.pipeline import load_scenario
+
+    _copy_maps(tmp_path)
+    (tmp_path / "maps" / "other.xodr").write_bytes(CROSSING.read_bytes())
+    text = SEVERAL.format(extra="", npc_path="npc_path").replace(
+        "    ego: car\n", '    npc_path.set_map("maps/other.xodr")\n    ego: car\n', 1
+    )
+    with pytest.raises(OscError, match=r"two.osc:9:\d+: error: a second map"):
+        load_scenario(write(tmp_path / "two.osc", text))
+
+
+def _inside(plan, vehicle: str, span: tuple[float, float]) -> list[bool]:
+    """Per step, whether ``vehicle``'s centre is inside ``span`` metres along its own route."""
+    origin = plan.side_routes[vehicle][1] if vehicle in plan.side_routes else plan.origin
+    return [span[0] < state.position + origin < span[1] for state in plan.states[vehicle]]
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3])
+def test_the_second_car_through_a_crossing_enters_it_only_after_the_first_has_left(seed):
+    from pytest_roadlogic.automaton import build_automaton
+    from pytest_roadlogic.pipeline import load_scenario
+    from pytest_roadlogic.planning import ContinuousPlanner, ContinuousSettings
+
+    scenario = load_scenario(SUITE / "left_turn_across_oncoming.osc")
+    settings = ContinuousSettings(time_limit=30.0).on_route(scenario.route, scenario.routes[1:])
+    plan = ContinuousPlanner(build_automaton(scenario), settings, seed).first()
+    (meeting,) = settings.meetings
+    ego = _inside(plan, "ego", meeting.first_span)
+    oncoming = _inside(plan, "oncoming", meeting.second_span)
+    assert not any(a and b for a, b in zip(ego, oncoming))
+    if any(ego) and any(oncoming):
+        first, second = (ego, oncoming) if ego.index(True) < oncoming.index(True) else (oncoming, ego)
+        last_in = max(k for k, inside in enumerate(first) if inside)
+        # the step before the second enters, the first is already out (positions only grow)
+        assert second.index(True) - 1 > last_in
+
+
+@pytest.mark.parametrize(
+    "name",
+    ["left_turn_across_oncoming", "straight_crossing_paths", "right_turn_into_traffic", "left_turn_into_path"],
+)
+def test_cars_taking_different_ways_through_the_junction_run_conformant_and_never_touch(name):
+    from pytest_roadlogic.pipeline import load_scenario, run_scenario
+    from pytest_roadlogic.simulation.geometry import CAR_LENGTH
+
+    scenario = load_scenario(SUITE / f"{name}.osc")
+    assert len(scenario.routes) == 2
+    outcome = run_scenario(scenario, seed=1)
+    assert outcome.verdict.accepted, outcome.verdict.explain()
+    assert not outcome.simulation.trace.incidents
+    columns = list(outcome.simulation.trace.actors.values())
+    for vehicle in columns:  # each in its own lane's centre, the turns included
+        assert np.abs(np.asarray(vehicle["y"]) - scenario.route.lane_width / 2).max() < 0.5
+    a, b = columns
+    apart = np.hypot(np.asarray(a["world_x"]) - b["world_x"], np.asarray(a["world_y"]) - b["world_y"])
+    assert apart.min() > CAR_LENGTH
