@@ -141,7 +141,11 @@ def run_instances(
             seconds["simulation"] += time.perf_counter() - start
             start = time.perf_counter()
             verdict = monitor(specification, simulation.trace)
-            report = judge(simulation.trace, dut, under_test.thresholds) if dut is not None else None
+            report = (
+                judge(simulation.trace, dut, under_test.thresholds, _apart(simulation, dut))
+                if dut is not None
+                else None
+            )
             seconds["monitoring"] += time.perf_counter() - start
             outcome = SimulatedInstance(
                 scenario, specification, plan, simulation, verdict, tries, seconds, instance, report
@@ -155,6 +159,12 @@ def run_instances(
             if limit is not None:
                 raise limit
         yield outcome
+
+
+def _apart(simulation, vehicle: str) -> frozenset[str]:
+    """The vehicles of ``simulation`` on another route of the map than ``vehicle``'s."""
+    own = simulation.road_of(vehicle)
+    return frozenset(v for v in simulation.trace.actors if simulation.road_of(v) is not own)
 
 
 def _reactive(plan: Plan, guide: Guide, settings, seed: int, dut: str | None, under_test: UnderTest | None):

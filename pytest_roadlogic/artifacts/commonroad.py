@@ -43,7 +43,7 @@ def commonroad_scenario(simulation: Simulation):
     trace = simulation.trace
     shape = RectObstacleShape(width=CAR_WIDTH, length=CAR_LENGTH)
     problems = PlanningProblemSet()
-    road, dt = simulation.road, simulation.dt
+    dt = simulation.dt
     x, y, heading = ("world_x", "world_y", "world_heading") if trace.on_map else ("x", "y", "heading")
     for index, (vehicle, columns) in enumerate(trace.actors.items()):
         states = [
@@ -71,6 +71,7 @@ def commonroad_scenario(simulation: Simulation):
         prediction = TrajectoryPrediction(Trajectory(1, states[1:]), shape)
         scenario.add_objects(DynamicObstacle(FIRST_OBSTACLE_ID + index, ObstacleType.CAR, shape, initial, prediction))
         start = initial
+        road = simulation.road_of(vehicle)
         for k, goal in enumerate(simulation.references[vehicle].waypoints):
             # on a map, in its coordinates, turned as the route is there (on the straight road: unchanged)
             gx, gy, along = (float(v) for v in road.world(goal.position, road.center_y(goal.lane)))

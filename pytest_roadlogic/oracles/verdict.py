@@ -101,13 +101,18 @@ class DutReport:
         }
 
 
-def judge(trace: Trace, vehicle: str, thresholds: Thresholds | None = None) -> DutReport:
-    """The oracles' verdict on ``vehicle`` (the vehicle under test) in ``trace``."""
+def judge(
+    trace: Trace, vehicle: str, thresholds: Thresholds | None = None, apart: frozenset[str] = frozenset()
+) -> DutReport:
+    """The oracles' verdict on ``vehicle`` (the vehicle under test) in ``trace``. ``apart``: the
+    vehicles of other routes of the map than its own (different ways through a junction), never
+    in its path by road coordinates (a route's own); a collision with one is judged in the map's."""
     thresholds = thresholds or Thresholds()
     collisions = tuple(
-        _collision(trace, vehicle, next(a for a in incident.actors if a != vehicle), incident.time)
+        _collision(trace, vehicle, other, incident.time, other in apart)
         for incident in trace.incidents
         if incident.kind == "collision" and vehicle in incident.actors
+        for other in [next(a for a in incident.actors if a != vehicle)]
     )
     off_road = next(
         (i.time for i in trace.incidents if i.kind == "off-road" and vehicle in i.actors),
@@ -116,7 +121,8 @@ def judge(trace: Trace, vehicle: str, thresholds: Thresholds | None = None) -> D
     # after another vehicle ran into it, what it does is no longer judged: the scenario went wrong
     hit = min((c.time for c in collisions if not c.caused), default=None)
     until = int(np.searchsorted(trace.times, hit - 1e-9)) if hit is not None else None
-    seen = Seen(trace, vehicle, gaps_ahead(trace, vehicle, thresholds.reaction_time, until), until)
+    gaps = {o: g for o, g in gaps_ahead(trace, vehicle, thresholds.reaction_time, until).items() if o not in apart}
+    seen = Seen(trace, vehicle, gaps, until)
     return DutReport(
         vehicle,
         thresholds,
@@ -126,12 +132,26 @@ def judge(trace: Trace, vehicle: str, thresholds: Thresholds | None = None) -> D
     )
 
 
-def _collision(trace: Trace, vehicle: str, other: str, time: float) -> Collision:
+def _collision(trace: Trace, vehicle: str, other: str, time: float, in_world: bool = False) -> Collision:
     """Who hit whom: by where ``other`` was relative to ``vehicle`` at the instant of contact (the
     boxes touch on the side along which they overlap least: front or back, else a flank), and, for a
-    contact on a flank, which of the two had moved across toward the other in the second before."""
+    contact on a flank, which of the two had moved across toward the other in the second before.
+    ``in_world``: ``other`` drives another route; where it was is read in the map's coordinates,
+    turned to ``vehicle``'s heading."""
     k = int(np.argmin(np.abs(trace.times - time)))
     me, them = trace.actors[vehicle], trace.actors[other]
+    if in_world:
+        ex, ey = float(them["world_x"][k] - me["world_x"][k]), float(them["world_y"][k] - me["world_y"][k])
+        heading = float(me["world_heading"][k])
+        dx = ex * np.cos(heading) + ey * np.sin(heading)
+        dy = -ex * np.sin(heading) + ey * np.cos(heading)
+        if CAR_LENGTH - abs(dx) <= CAR_WIDTH - abs(dy):
+            if dx > 0:
+                return Collision(time, other, f"{vehicle} ran into {other} ahead", True)
+            return Collision(time, other, f"{other} ran into {vehicle} from behind", False)
+        side = "left" if dy > 0 else "right"
+        # two ways crossing: the one that hit the other's flank hit it
+        return Collision(time, other, f"{other} ran into {vehicle} from its {side}", False)
     dx, dy = float(them["x"][k] - me["x"][k]), float(them["y"][k] - me["y"][k])
     if CAR_LENGTH - abs(dx) <= CAR_WIDTH - abs(dy):
         if dx > 0:

@@ -79,6 +79,13 @@ class Simulation:
     stationary: tuple[str, ...] = ()  # standing obstacles, not driven
     goals: dict[str, list[GoalRecord]] = field(default_factory=dict)  # per driven vehicle, in order
     replans: list[Replan] = field(default_factory=list)  # a reactive execution's, in order; none for a scripted run
+    # the road of each vehicle that drives another route of the map than ``road``'s (a different
+    # way through a junction): its trace's x and y are along that road
+    side_roads: dict[str, Road] = field(default_factory=dict)
+
+    def road_of(self, vehicle: str) -> Road:
+        """The road ``vehicle``'s trace coordinates are on."""
+        return self.side_roads.get(vehicle, self.road)
 
 
 class SimulationTimeout(RuntimeError):

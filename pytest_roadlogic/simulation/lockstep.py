@@ -190,6 +190,7 @@ class _Lockstep:
             tuple(self.plan.stationary),
             {v: g.records for v, g in self.goals.items()},
             list(self.react.replans) if self.react is not None else [],
+            {v: r for v, r in self.roads.items() if r is not road},
         )
 
 

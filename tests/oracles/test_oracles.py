@@ -254,3 +254,20 @@ def test_a_case_file_written_before_an_oracle_existed_replays_with_that_oracle_o
     assert judge(close, "dut", Thresholds.given(time_headway=0.5)).failed, "closing in within 0.32 s"
     off = judge(close, "dut", Thresholds.of(settings))
     assert not off.failed and off.values()["thresholds"]["min_time_headway"] is None
+
+
+def test_a_car_of_another_route_is_never_in_the_path_by_road_coordinates_and_its_hit_is_read_in_the_world():
+    # the npc drives another way through a junction: 6 m ahead along its own route, in its lane 0
+    # too, yet crossing the dut's way in the world from its right
+    n = 20
+    columns = {"dut": {"x": [10.0 * k * DT for k in range(n)]}, "npc": {"x": [6.0 + 10.0 * k * DT for k in range(n)]}}
+    trace = trace_of(columns, [Incident(1.0, "collision", ("dut", "npc"))])
+    for name, (wx, wy, heading) in {"dut": (0.0, 0.0, 0.0), "npc": (1.0, -1.5, math.pi / 2)}.items():
+        trace.actors[name]["world_x"] = np.full(n, wx)
+        trace.actors[name]["world_y"] = np.full(n, wy)
+        trace.actors[name]["world_heading"] = np.full(n, heading)
+    same_route = judge(trace, "dut")
+    assert same_route.measured["gap"].value == pytest.approx(6.0 - CAR_LENGTH)
+    apart = judge(trace, "dut", apart=frozenset({"npc"}))
+    assert apart.measured["gap"].value == math.inf
+    assert not apart.collisions[0].caused and apart.collisions[0].how == "npc ran into dut from its right"
