@@ -23,7 +23,7 @@ from .junctions import (
     turns,
 )
 from .opendrive_in import MapError, MapRoad, RoadMap
-from .route import Route, driving_lanes, holding_speed, through_lanes
+from .route import ROUTE_MARGIN, Route, driving_lanes, holding_speed, through_lanes
 
 # m/s a route's sharpest curve should let a car hold (90 kph): a longer route with a town's bend
 # (26 m, 26 kph) lost to a shorter one without
@@ -75,6 +75,9 @@ def curve_stretch(road: MapRoad, curve: tuple[float | None, float | None, str | 
 
 
 MIN_ROUTE_LENGTH = 200.0  # m of route a scenario that names no path_length is given at least
+# m of road a turn's road in and road out need each: the planner keeps every car ROUTE_MARGIN from
+# a route's ends, and a car driving through the junction approaches it and leaves it on them
+MIN_APPROACH = ROUTE_MARGIN + 20.0
 
 
 def pick_route(
@@ -158,7 +161,11 @@ def fitting_turns(road_map: RoadMap, lanes: int, length: float, ask: TurnAsk) ->
         for t in turns(road_map)
         if direction in (None, t.direction) and roads in (None, number_of_roads(road_map, t.junction))
     ]
-    offered = [t for t in asked_for if t.lanes >= lanes and t.length >= length]
+    offered = [
+        t
+        for t in asked_for
+        if t.lanes >= lanes and t.length >= length and min(t.into.length, t.out_of.length) >= MIN_APPROACH
+    ]
     if asked_for and not offered:
         # the map has the turn, but not with the lanes or the room the scenario needs: say so
         longest = max(t.length for t in asked_for)
@@ -169,7 +176,7 @@ def fitting_turns(road_map: RoadMap, lanes: int, length: float, ask: TurnAsk) ->
             f"({', '.join(t.describe() for t in asked_for[:6])}{', ...' if len(asked_for) > 6 else ''}) "
             f"{'has' if len(asked_for) == 1 else 'have'} at most {most} driving lane{'' if most == 1 else 's'} in and out "
             f"and {longest:.0f} m of road at most; the scenario needs "
-            f"{lanes} and {length:g} m",
+            f"{lanes} and {length:g} m, with at least {MIN_APPROACH:g} m of road in and out of the junction",
             "ask for less (the lanes it names, path_length), or give a map whose junction has longer roads",
         )
     if not offered:
@@ -217,6 +224,7 @@ def choose_turns(road_map: RoadMap, lanes: int, length: float, asks: tuple[TurnA
     of their kinds go together."""
     from .conflicts import meetings_of
 
+    length = length or MIN_ROUTE_LENGTH  # room to drive, as pick_route gives a single route
     options = [fitting_turns(road_map, lanes, length, ask) for ask in asks]
 
     def agreeing(k: int, chosen: list[Turn], bound: dict[str, str]):

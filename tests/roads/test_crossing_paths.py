@@ -209,3 +209,16 @@ def test_cars_taking_different_ways_through_the_junction_run_conformant_and_neve
     a, b = columns
     apart = np.hypot(np.asarray(a["world_x"]) - b["world_x"], np.asarray(a["world_y"]) - b["world_y"])
     assert apart.min() > CAR_LENGTH
+
+
+def test_a_turn_whose_road_in_or_out_is_too_short_to_approach_the_junction_on_is_not_offered(tmp_path):
+    from pytest_roadlogic.roads.choice import MIN_APPROACH, fitting_turns
+    from tests.roads.map_files import recipe
+
+    maps = recipe(MAPS)
+    maps.ARM = MIN_APPROACH - 10.0  # arms too short for a car kept clear of the route's ends to approach on
+    written = next(p for p in maps.write(tmp_path) if p.name == "crossing.xodr")
+    road_map = read_map(written)
+    assert all(t.length >= 100.0 for t in turns(road_map))
+    with pytest.raises(MapError, match=f"with at least {MIN_APPROACH:g} m of road in and out of the junction"):
+        fitting_turns(road_map, 1, 100.0, TurnAsk("left"))
