@@ -222,3 +222,29 @@ def test_a_turn_whose_road_in_or_out_is_too_short_to_approach_the_junction_on_is
     assert all(t.length >= 100.0 for t in turns(road_map))
     with pytest.raises(MapError, match=f"with at least {MIN_APPROACH:g} m of road in and out of the junction"):
         fitting_turns(road_map, 1, 100.0, TurnAsk("left"))
+
+
+def test_the_first_vehicle_declared_may_drive_another_route_than_the_first_path(tmp_path):
+    from pytest_roadlogic.pipeline import load_scenario, run_scenario
+
+    _copy_maps(tmp_path)
+    text = SEVERAL.format(extra="", npc_path="npc_path").replace(
+        "    ego: car\n    npc: car\n", "    npc: car\n    ego: car\n"
+    )
+    scenario = load_scenario(write(tmp_path / "two.osc", text))
+    assert scenario.scenario.actors[0].name == "npc" and scenario.routes[1].crossers == {"npc"}
+    outcome = run_scenario(scenario, seed=1)
+    assert outcome.verdict.accepted, outcome.verdict.explain()
+    begin, end = scenario.routes[1].junction_span
+    route, origin = outcome.plan.side_routes["npc"]
+    along = [state.position + origin for state in outcome.plan.states["npc"]]
+    assert route is scenario.routes[1] and along[0] <= begin and along[-1] >= end
+
+
+def test_a_path_no_vehicle_drives_along_is_a_warning_at_its_turn(tmp_path):
+    from pytest_roadlogic.frontend import check_file
+
+    _copy_maps(tmp_path)
+    checked = check_file(write(tmp_path / "two.osc", SEVERAL.format(extra="", npc_path="ego_path")))
+    (warning,) = [d for d in checked.diagnostics if d.severity == "warning"]
+    assert warning.location.line == 8 and "no vehicle drives along npc_path" in warning.message

@@ -212,6 +212,13 @@ class RoadLanes:
                 + ")",
                 "give a map whose roads at the junction have as many lanes each",
             )
+        for path, route in zip(paths, routes):
+            if not route.crossers and path != paths[0]:
+                self.warning(
+                    self.turn_asks[path][1],
+                    f"no vehicle drives along {path} ({route.turn})",
+                    f"add along({path}) to the drive of the vehicle that takes this way, or leave the path out",
+                )
         self.route, self.routes = routes[0], tuple(routes)
         self._apart(scenario, {v: paths.index(p) for v, p in driven.items()})
         self.lanes = routes[0].lanes

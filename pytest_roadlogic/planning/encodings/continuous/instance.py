@@ -107,12 +107,17 @@ def route_facts(s: ContinuousSettings, vehicles: tuple[str, ...], gap: float) ->
         if junction is not None:
             facts.append(f"junction_span({k},{number(junction[0])},{number(junction[1])}).")
     crossers = set(s.crossers)
+    on_side = set()
     for k, side in enumerate(s.side_routes, 1):
         driven = [v for v in vehicles if v in side.vehicles]
+        on_side |= set(driven)
         facts += [f"route_of({atom(v)},{k})." for v in driven]
         if driven and driven[0] != vehicles[0]:
-            facts.append(f"route_first({atom(driven[0])}).")
+            facts.append(f"route_first({atom(driven[0])}).")  # its position 0 is its route's origin
         crossers |= set(driven) if side.junction_span is not None else set()
+    first_on_route = next((v for v in vehicles if v not in on_side), None)
+    if on_side and first_on_route not in (None, vehicles[0]):
+        facts.append(f"route_first({atom(first_on_route)}).")  # route 0 pinned likewise
     facts += [f"crosses({atom(v)})." for v in vehicles if v in crossers]
     for z, meeting in enumerate(s.meetings):
         facts.append(f"meeting({z},{meeting.kind}).")
