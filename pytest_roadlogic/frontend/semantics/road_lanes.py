@@ -35,7 +35,7 @@ class RoadLanes:
         its ``path_max_lanes``, so that a file states its road and runs the same from every entry point.
         """
         self.route, self.routes, self.map_asked, self.route_asks = None, (), None, {}
-        self.turn_asks: dict[str, tuple] = {}  # road field -> (roads.choice.TurnAsk, where)
+        self.turn_asks: dict[str, tuple] = {}  # road field -> (roads.asks.TurnAsk, where)
         bounds = self._road_bounds(scenario, env, roads)
         least, most = bounds.get("path_min_driving_lanes"), bounds.get("path_max_lanes")
         if self.requested_map is not None:  # the map option wins over the file's set_map
@@ -387,7 +387,7 @@ class RoadLanes:
 
     def _turn_ask(self, modifier: model.Modifier, binding, env: dict, before: int) -> None:
         """``roads_follow_in_junction``: the path it is applied to turns at a junction, kept in
-        ``self.turn_asks`` (path -> (``roads.choice.TurnAsk``, where)), in the order given."""
+        ``self.turn_asks`` (path -> (``roads.asks.TurnAsk``, where)), in the order given."""
         if any(d.severity == "error" for d in self.diagnostics[before:]):
             return
         path = modifier.actor or ""
