@@ -234,5 +234,6 @@ def test_a_turn_the_map_has_but_too_short_for_the_scenario_is_refused_saying_how
     message = refused.value.message
     assert message.startswith("the map's 4 turns of the kind asked (left from road 2 into road 1,")
     assert message.endswith(
-        "have at most 1 driving lane in and out and 433 m of road at most; the scenario needs 1 and 1000 m"
+        "have at most 1 driving lane in and out and 433 m of road at most; the scenario needs 1 and 1000 m, "
+        "with at least 50 m of road in and out of the junction"
     )
