@@ -195,10 +195,11 @@ def fitting_turns(road_map: RoadMap, lanes: int, length: float, ask: TurnAsk) ->
     return offered
 
 
-def _binds(ask: TurnAsk, turn: Turn) -> dict[str, str]:
+def _binds(ask: TurnAsk, turn: Turn) -> dict[str, str] | None:
     """The values ``turn`` gives the fields ``ask`` names: a junction field its junction's id, a
-    road field the id of its road in or out."""
-    bound = {}
+    road field the id of its road in or out; None when it gives one field two values (an ask
+    whose in_road and out_road are one field, for a turn from one road into another)."""
+    bound: dict[str, str] = {}
     for name, value in (
         (ask.junction, "j" + turn.junction),
         (ask.in_road, turn.into.id),
@@ -206,7 +207,7 @@ def _binds(ask: TurnAsk, turn: Turn) -> dict[str, str]:
     ):
         if name is not None:
             if bound.get(name, value) != value:
-                return {name: ""}  # one field, two values: never consistent
+                return None
             bound[name] = value
     return bound
 
@@ -233,13 +234,19 @@ def choose_turns(road_map: RoadMap, lanes: int, length: float, asks: tuple[TurnA
             return
         for turn in options[k]:
             binding = _binds(asks[k], turn)
-            if all(bound.get(name, value) == value and value for name, value in binding.items()):
+            if binding is not None and all(bound.get(name, value) == value for name, value in binding.items()):
                 yield from agreeing(k + 1, chosen + [turn], {**bound, **binding})
 
+    routes_of: dict[tuple[str, str, str], Route] = {}  # one route per turn, however many combinations take it
+
     def meet(chosen: list[Turn]) -> bool:
-        if len({(t.junction, t.into.id, t.out_of.id) for t in chosen}) < len(chosen):
+        keys = [(t.junction, t.into.id, t.out_of.id) for t in chosen]
+        if len(set(keys)) < len(keys):
             return False
-        routes = [turn_as_route(road_map, turn) for turn in chosen]
+        for key, turn in zip(keys, chosen):
+            if key not in routes_of:
+                routes_of[key] = turn_as_route(road_map, turn)
+        routes = [routes_of[key] for key in keys]
         return all(
             meetings_of(i, routes[i], j, routes[j]) for i in range(len(routes)) for j in range(i + 1, len(routes))
         )

@@ -16,6 +16,7 @@ Routes that only run side by side in lanes of their own (a road's two directions
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 
 import numpy as np
@@ -125,8 +126,11 @@ def meetings_of(first: int, a: Route, second: int, b: Route) -> list[Meeting]:
     return sorted(found, key=lambda m: m.first_span)
 
 
+@functools.lru_cache(maxsize=32)
 def conflicts(routes: tuple[Route, ...]) -> tuple[Meeting, ...]:
-    """Every meeting of every two of ``routes`` (one map's), by route pair then along the first."""
+    """Every meeting of every two of ``routes`` (one map's), by route pair then along the first.
+    Kept for the routes last asked about: the planner's settings ask again for every sample of a
+    scenario (5 ms for two turns, against 7 us to look them up)."""
     return tuple(
         meeting
         for first in range(len(routes))

@@ -228,31 +228,24 @@ class RoadLanes:
     def _paths_driven(self, scenario: model.Scenario, paths: list[str]) -> dict[str, str]:
         """vehicle -> the path its drive goes ``along`` (each vehicle one path, a path that turns)."""
         driven: dict[str, tuple[str, SourceLocation]] = {}
-        for behavior in scenario.behaviors:
-            for node in model.walk(behavior):
-                if not isinstance(node, model.Invocation):
-                    continue
-                for modifier in node.modifiers:
-                    if modifier.name != "along" or not modifier.arguments:
-                        continue
-                    value = modifier.arguments[0].value
-                    if not isinstance(value, model.Name) or value.name not in self.roads:
-                        continue  # reported where along() is checked
-                    if value.name not in paths:
-                        self.error(
-                            value.location,
-                            f"{value.name} does not turn at a junction, but the scenario's other paths do",
-                            f"give {value.name} its turn: {value.name}.roads_follow_in_junction(direction: ...)",
-                        )
-                    elif node.actor in driven and driven[node.actor][0] != value.name:
-                        self.error(
-                            modifier.location,
-                            f"{node.actor} drives along {driven[node.actor][0]} (line {driven[node.actor][1].line}): "
-                            f"one vehicle drives one route",
-                            f"drive it along {driven[node.actor][0]} here too",
-                        )
-                    else:
-                        driven.setdefault(node.actor, (value.name, modifier.location))
+        for actor, modifier in _alongs(scenario):
+            value = modifier.arguments[0].value if modifier.arguments else None
+            if not isinstance(value, model.Name) or value.name not in self.roads:
+                continue  # reported where along() is checked
+            if value.name not in paths:
+                self.error(
+                    value.location,
+                    f"{value.name} does not turn at a junction, but the scenario's other paths do",
+                    f"give {value.name} its turn: {value.name}.roads_follow_in_junction(direction: ...)",
+                )
+            elif actor in driven and driven[actor][0] != value.name:
+                self.error(
+                    modifier.location,
+                    f"{actor} drives along {driven[actor][0]} (line {driven[actor][1].line}): one vehicle drives one route",
+                    f"drive it along {driven[actor][0]} here too",
+                )
+            else:
+                driven.setdefault(actor, (value.name, modifier.location))
         return {vehicle: path for vehicle, (path, _) in driven.items()}
 
     def _apart(self, scenario: model.Scenario, route_of: dict[str, int]) -> None:
@@ -280,11 +273,7 @@ class RoadLanes:
     def _crossers(self, scenario: model.Scenario, at: SourceLocation) -> None:
         """On a route that turns at a junction: the vehicles whose drive goes ``along(path)`` drive
         through it (kept in the route); a warning when none does."""
-        crossers = set()
-        for behavior in scenario.behaviors:
-            for node in model.walk(behavior):
-                if isinstance(node, model.Invocation) and any(m.name == "along" for m in node.modifiers):
-                    crossers.add(node.actor)
+        crossers = {actor for actor, _ in _alongs(scenario)}
         if not crossers:
             self.warning(
                 at,
@@ -472,3 +461,15 @@ class RoadLanes:
                         if lanes > needed:
                             needed, where = lanes, location
         return needed, where
+
+
+def _alongs(scenario: model.Scenario) -> list[tuple[str, model.Modifier]]:
+    """Every ``along(...)`` of the scenario's drives, with the actor whose drive it is, in order."""
+    return [
+        (node.actor, modifier)
+        for behavior in scenario.behaviors
+        for node in model.walk(behavior)
+        if isinstance(node, model.Invocation)
+        for modifier in node.modifiers
+        if modifier.name == "along"
+    ]

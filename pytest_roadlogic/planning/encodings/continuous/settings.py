@@ -31,10 +31,11 @@ RELAXED_LIMITS = (
 
 
 @dataclass(frozen=True)
-class SideRoute:
-    """A route of the map besides the scenario's first (asp/continuous/route.lp): the vehicles
-    that drive it, where along it they stay, where its lanes take a car, its sharp bends and its
-    junction, as ``ContinuousSettings`` has them for the first route."""
+class RouteFacts:
+    """What the planner reads of one route of the map (asp/continuous/route.lp): the vehicles
+    that drive through its junction (``Route.crossers``), where along it every vehicle stays,
+    where its lanes take a car, its sharp bends and its junction. ``ContinuousSettings`` holds the
+    first route's in fields of its own, the others' as ``side_routes``."""
 
     vehicles: frozenset[str]
     route_span: tuple[float, float]
@@ -44,7 +45,7 @@ class SideRoute:
     route: Route = field(compare=False, repr=False)
 
     @classmethod
-    def of(cls, route: Route) -> SideRoute:
+    def of(cls, route: Route) -> RouteFacts:
         from ....roads.route import ROUTE_MARGIN
 
         return cls(
@@ -132,7 +133,7 @@ class ContinuousSettings:
     # more routes of the map (routes 1, 2, ... after ``route``, 0), each driven by its vehicles
     # (vehicles that take other ways through a junction), and where any two routes meet
     # (``roads.conflicts``): the planner orders the vehicles of two routes through each meeting
-    side_routes: tuple[SideRoute, ...] = ()
+    side_routes: tuple[RouteFacts, ...] = ()
     meetings: tuple[Meeting, ...] = ()
     # m added along each route at both ends of a crossing of two routes: the first car through has
     # left it by this much when the next enters (a motion planner lags its plan by a metre or two)
@@ -177,7 +178,7 @@ class ContinuousSettings:
         for, the vehicles that drive through the route's junction doing so, and a start speed the
         scenario leaves open at most the map's limit."""
         from ....roads.conflicts import conflicts
-        from ....roads.route import MAX_LATERAL_ACCELERATION, ROUTE_MARGIN, curve_speed
+        from ....roads.route import MAX_LATERAL_ACCELERATION, curve_speed
 
         low, high = self.road_speed
         for limit in (r.speed_limit for r in (route, *others) if r.speed_limit is not None):
@@ -193,19 +194,20 @@ class ContinuousSettings:
                     f"{MAX_LATERAL_ACCELERATION:g} m/s^2 of lateral acceleration",
                 ),
             )
+        first = RouteFacts.of(route)
         return replace(
             self,
             road_speed=(low, high),
             max_speed=min(self.max_speed, bend),
             limit_reasons=reasons,
-            route_span=(ROUTE_MARGIN, route.length - ROUTE_MARGIN),
-            lane_spans=tuple((lane, first, last) for lane, (first, last) in sorted(route.spans().items())),
+            route_span=first.route_span,
+            lane_spans=first.lane_spans,
             origin_span=route.start_within,
-            slow_spans=route.slow_stretches,
-            junction_span=route.junction_span,
-            crossers=route.crossers,
+            slow_spans=first.slow_spans,
+            junction_span=first.junction_span,
+            crossers=first.vehicles,
             route=route,
-            side_routes=tuple(SideRoute.of(other) for other in others),
+            side_routes=tuple(RouteFacts.of(other) for other in others),
             meetings=conflicts((route, *others)) if others else (),
         )
 
