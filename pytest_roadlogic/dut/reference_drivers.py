@@ -17,9 +17,20 @@ stops takes. It brakes
 harder than b when it must, down to ``max_braking``. Its waypoints are read for its start lane
 and speed only.
 
-Three defective variants make failures to find: ``LateAcc`` sees the vehicle ahead 1.5 s late,
+On a map it also drives as its route asks: it slows for a sharp bend (a turn at a junction) to
+the speed the bend's lanes allow (``Route.slow_stretches``), and it gives way at a crossing: a car
+of another way that would be in the crossing (``CrossTraffic``) from less than ``crossing_gap``
+seconds after it would have left it, at its speed and accelerating as it can, makes it stop a
+metre short of the crossing until that car has passed (a gap-acceptance rule, as traffic
+engineering models a driver turning across or into a road); it does not give way once it could no
+longer stop short of the crossing. Where its way joins another's lane it gives way likewise (the
+car on the lane must not have to close in on it: ``merging_gap``), and follows a car of the other
+way that has joined its lane ahead of it.
+
+Four defective variants make failures to find: ``LateAcc`` sees the vehicle ahead 1.5 s late,
 ``WeakBrakingAcc`` never brakes harder than 3 m/s^2, ``SlowAcquisitionAcc`` sees a vehicle that
-enters its path only 2 s after it did.
+enters its path only 2 s after it did, ``NonYieldingAcc`` never gives way at a crossing or where
+its way joins another (it sees only the vehicles in its lane).
 
 Why our own and not a package: CommonRoad's IDM planner does not install beside commonroad-io 2026.1
 (pip cannot resolve it), and the model is ten lines; what a package would add (its own road
@@ -36,7 +47,7 @@ import numpy as np
 
 from ..dimensions import CAR_LENGTH, CAR_WIDTH
 from ..roads.road import Road
-from ..simulation.driver import DriverBase, Trajectory, VehicleState
+from ..simulation.driver import CrossTraffic, DriverBase, Trajectory, VehicleState
 from ..simulation.reference import Reference
 
 HORIZON = 3.0  # s of trajectory returned each cycle (what the others see as its prediction)
@@ -60,6 +71,10 @@ class AdaptiveCruiseControl(DriverBase):
     idm = IdmParameters()
     reaction_delay = 0.0  # s between seeing the vehicle ahead and acting on it
     max_braking = 8.0  # m/s^2: the hardest it brakes
+    yields = True  # whether it gives way to the cars of other ways (see the module)
+    crossing_gap = 2.0  # s it leaves between another car in a crossing and itself
+    merging_gap = 3.0  # s ahead of a car of the lane it joins, at the least, when it joins ahead
+    bend_braking = 1.0  # m/s^2 at which it brakes for a sharp bend ahead, or to stop at a crossing
 
     def start(self, vehicle: str, reference: Reference, road: Road, dt: float) -> None:
         self.vehicle, self.dt = vehicle, dt
@@ -67,15 +82,107 @@ class AdaptiveCruiseControl(DriverBase):
         self.set_speed = max(float(reference.waypoints[0].speed), 1.0)
         # what it saw each cycle: (time, gap, closing speed, acceleration ahead), read reaction_delay late
         self.seen: deque[tuple[float, float, float, float]] = deque()
+        # the sharp bends of its route, in its road's x: (first, last, the speed it takes them at)
+        route = road.route
+        self.bends = (
+            ()
+            if route is None
+            else tuple((a - road.route_shift, b - road.route_shift, v) for a, b, v in route.slow_stretches)
+        )
+        self.cross_traffic = ()
 
     def plan(self, time: float, state: VehicleState, others: dict[str, Trajectory]) -> Trajectory:
+        others = {**others, **self._joined(state)}
         self.seen.append((time, *self._ahead(state, others)))
         while len(self.seen) > 1 and self.seen[1][0] <= time - self.reaction_delay + 1e-9:
             self.seen.popleft()
         _, gap, closing, ahead_acceleration = self.seen[0]
-        acceleration = self.acceleration(state.speed, gap, closing, ahead_acceleration)
+        acceleration = min(
+            self.acceleration(state.speed, gap, closing, ahead_acceleration),
+            self._for_bends(state),
+            self._giving_way(state) if self.yields else math.inf,
+        )
         acceleration = max(-self.max_braking, min(self.idm.max_acceleration, acceleration))
         return self._trajectory(state, acceleration)
+
+    def _for_bends(self, state: VehicleState) -> float:
+        """The acceleration that takes it into the next sharp bend no faster than the bend allows,
+        braking evenly once that takes ``bend_braking`` (as a driver brakes for a corner: late, not
+        from afar), and holds it to that speed in the bend (inf: no bend ahead)."""
+        best = math.inf
+        for first, last, speed in self.bends:
+            if last < state.x:
+                continue
+            if first <= state.x:
+                best = min(best, (speed - state.speed) / 1.0)
+            elif state.speed > speed:
+                needed = (state.speed**2 - speed**2) / (2 * max(first - state.x, 0.5))
+                if needed >= self.bend_braking:
+                    best = min(best, -needed)
+        return best
+
+    def _clearing_time(self, state: VehicleState, distance: float) -> float:
+        """Seconds it takes to drive ``distance`` metres from ``state``, accelerating as it can
+        up to its set speed."""
+        a, v = self.idm.max_acceleration, state.speed
+        top = max(self.set_speed, v)
+        to_top = (top**2 - v**2) / (2 * a)
+        if distance <= to_top:
+            return (-v + math.sqrt(v * v + 2 * a * distance)) / a
+        return (top - v) / a + (distance - to_top) / top
+
+    def _giving_way(self, state: VehicleState) -> float:
+        """The acceleration that stops it a metre short of the first meeting where a car of
+        another way comes too soon (inf: none does, or it could no longer stop short)."""
+        front = state.x + CAR_LENGTH / 2
+        best = math.inf
+        for other in self.cross_traffic:
+            room = other.start - front - 1.0
+            if room < 0 or state.speed**2 > 2 * self.max_braking * room * 0.8:
+                continue  # in it, or too near to stop short: it goes on
+            if not self._comes_too_soon(state, other):
+                continue
+            if state.speed < 0.1:
+                best = min(best, 0.0)  # waiting at the crossing
+                continue
+            # as a driver stops at a line: on at its speed until stopping there takes bend_braking
+            needed = state.speed**2 / (2 * max(room, 0.1))
+            if needed >= self.bend_braking:
+                best = min(best, -needed)
+        return best
+
+    def _comes_too_soon(self, state: VehicleState, other: CrossTraffic) -> bool:
+        """Whether ``other`` would be in the meeting while it passes there, or less than the gap
+        after (a crossing: until its rear has left; a lane it joins: until it is a gap ahead)."""
+        speed = max(other.speed, 0.1)
+        leaves = (other.distance + other.length + CAR_LENGTH / 2) / speed
+        if leaves < 0:
+            return False  # gone past
+        arrives = (other.distance - CAR_LENGTH / 2) / speed
+        if other.kind == "crossing":
+            passed = self._clearing_time(state, other.end - state.x + CAR_LENGTH / 2)
+            return arrives < passed + self.crossing_gap
+        if other.distance <= 0:
+            return False  # in the lane it joins ahead of it: it follows that car (_joined)
+        joined = self._clearing_time(state, other.start - state.x + CAR_LENGTH)
+        return arrives < joined + self.merging_gap
+
+    def _joined(self, state: VehicleState) -> dict[str, Trajectory]:
+        """The cars of another way that have joined its lane ahead of it, as vehicles of its own
+        road (where they are along the lane both share)."""
+        found = {}
+        for other in self.cross_traffic:
+            if other.kind != "shared" or other.distance > 0:
+                continue
+            x = other.start - other.distance
+            found[other.vehicle] = Trajectory(
+                np.array([x]),
+                np.array([self.lane_y]),
+                np.array([0.0]),
+                np.array([other.speed]),
+                np.array([other.acceleration]),
+            )
+        return found
 
     def acceleration(self, speed: float, gap: float, closing: float, ahead_acceleration: float = 0.0) -> float:
         """The ACC model's acceleration at ``speed``, ``gap`` (inf: no one ahead) behind a vehicle
@@ -173,3 +280,10 @@ class SlowAcquisitionAcc(AdaptiveCruiseControl):
         if nearest is not None and time - self.since < self.acquisition_delay - 1e-9:
             others = {name: trajectory for name, trajectory in others.items() if name != nearest}
         return super().plan(time, state, others)
+
+
+class NonYieldingAcc(AdaptiveCruiseControl):
+    """A defective adaptive cruise control: it never gives way to a car of another way, at a
+    crossing or where its way joins another's lane (it brakes only for the car ahead in its lane)."""
+
+    yields = False

@@ -12,7 +12,11 @@ leader:
 - the **time to collision** is the gap over the speed at which the follower closes in, when it
   does (infinite otherwise);
 - the **time headway** is that gap over the follower's own speed, judged while it closes in;
-- the **deceleration** of a vehicle is minus its acceleration, when it brakes.
+- the **deceleration** of a vehicle is minus its acceleration, when it brakes;
+- the **post-encroachment time** with a vehicle of another way through a junction (one of the
+  ``apart``) is the least time between the two being at places where their boxes, grown by
+  ``CONFLICT_MARGIN``, overlap (read in the map's coordinates): how soon one came where the other
+  had been, or was to be. Two cars that touch have 0.
 
 Each oracle's measure (``registries.oracles.Oracle.measure``) reads one ``Seen`` and returns the
 ``Closest`` its oracle judges.
@@ -48,6 +52,7 @@ class Seen:
     vehicle: str
     gaps: dict[str, np.ndarray]
     until: int | None = None
+    apart: frozenset[str] = frozenset()  # the vehicles of other routes (other ways through a junction)
 
 
 def in_path(trace: Trace, follower: str, leader: str) -> np.ndarray:
@@ -122,6 +127,44 @@ def greatest_deceleration(seen: Seen) -> Closest:
         return Closest(0.0)
     k = int(np.argmax(deceleration))
     return Closest(max(0.0, float(deceleration[k])), float(seen.trace.times[k]))
+
+
+CONFLICT_MARGIN = 0.25  # m around each car's box where a post-encroachment time is measured
+
+
+def least_post_encroachment_time(seen: Seen) -> Closest:
+    """The least post-encroachment time of the vehicle under test with a vehicle of another way
+    through a junction (inf when none comes where it drives); its time is when the vehicle under
+    test was at the place."""
+    from ..roads.conflicts import boxes_touch
+
+    trace, me = seen.trace, seen.trace.actors[seen.vehicle]
+    stop = len(trace.times) if seen.until is None else seen.until
+    if not seen.apart or stop == 0 or "world_x" not in me:
+        return Closest(math.inf)
+    reach = float(np.hypot(CAR_LENGTH, CAR_WIDTH)) + 2 * CONFLICT_MARGIN
+    best = Closest(math.inf)
+    for other in sorted(seen.apart):
+        them = trace.actors[other]
+        # every pair of samples (mine, theirs) whose centres are near enough for the boxes to touch
+        dx = me["world_x"][:stop, None] - them["world_x"][None, :]
+        dy = me["world_y"][:stop, None] - them["world_y"][None, :]
+        i, j = np.nonzero(dx * dx + dy * dy <= reach * reach)
+        if not len(i):
+            continue
+        touching = boxes_touch(
+            me["world_x"][i], me["world_y"][i], me["world_heading"][i],
+            them["world_x"][j], them["world_y"][j], them["world_heading"][j],
+            CONFLICT_MARGIN,
+        )  # fmt: skip
+        if not touching.any():
+            continue
+        i, j = i[touching], j[touching]
+        apart_in_time = np.abs(trace.times[i] - trace.times[j])
+        k = int(np.argmin(apart_in_time))
+        if apart_in_time[k] < best.value:
+            best = Closest(float(apart_in_time[k]), float(trace.times[i[k]]), other)
+    return best
 
 
 def _least(trace: Trace, series: dict[str, np.ndarray]) -> Closest:

@@ -21,6 +21,7 @@ BUILT_IN = {
     "late-acc": "pytest_roadlogic.dut.reference_drivers:LateAcc",
     "weak-braking-acc": "pytest_roadlogic.dut.reference_drivers:WeakBrakingAcc",
     "slow-acquisition-acc": "pytest_roadlogic.dut.reference_drivers:SlowAcquisitionAcc",
+    "non-yielding-acc": "pytest_roadlogic.dut.reference_drivers:NonYieldingAcc",
 }
 
 

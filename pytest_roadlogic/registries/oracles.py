@@ -126,4 +126,20 @@ ORACLES = (
         "braked at {value:.2f} m/s^2 (threshold {threshold:g} m/s^2) at t={time:.1f} s",
     ),
 )
+ORACLES += (
+    Oracle(
+        "post_encroachment_time",
+        "post-encroachment time",
+        "least post-encroachment time",
+        "s",
+        LOWER,
+        "min-pet",
+        "min_pet",
+        1.0,
+        "seconds: a vehicle under test that drives where a car of another way through a junction drove, or will "
+        "drive, less than this apart in time (its post-encroachment time) fails (1: a serious conflict)",
+        "least_post_encroachment_time",
+        "post-encroachment time {value:.2f} s (threshold {threshold:g} s) with {other} at t={time:.1f} s",
+    ),
+)
 ORACLES_BY_NAME = {oracle.name: oracle for oracle in ORACLES}

@@ -12,6 +12,10 @@ meeting is one stretch of each route where that can happen, of one of two kinds:
   the second's at one place); the planner keeps one ahead of the other in it by a gap.
 
 Routes that only run side by side in lanes of their own (a road's two directions) never meet.
+
+Routes that meet are laid onto each other where they meet (``alignments``): a metre of one where
+the meeting begins is the same position as that of the other, so that a position relating cars of
+two routes says how much nearer to the meeting one is than the other.
 """
 
 from __future__ import annotations
@@ -137,3 +141,40 @@ def conflicts(routes: tuple[Route, ...]) -> tuple[Meeting, ...]:
         for second in range(first + 1, len(routes))
         for meeting in meetings_of(first, routes[first], second, routes[second])
     )
+
+
+@dataclass(frozen=True)
+class Alignment:
+    """Route ``route``'s positions laid onto route ``onto``'s at ``meeting``: a plan's positions on
+    the two are one when the routes' origins (the metres along each of position 0) differ by
+    ``offset``, route's less onto's. At a crossing the two ways' starts of the meeting are then the
+    same position, so a position relating cars of the two is their difference in distance to it;
+    on a shared lane the routes' metres are one along it (the meeting's ``offset``)."""
+
+    route: int
+    onto: int
+    offset: float
+    meeting: Meeting
+
+
+def alignments(routes: tuple[Route, ...]) -> tuple[Alignment, ...]:
+    """How ``routes`` (one map's; the first the scenario's) are laid onto each other: from the
+    first, each route that meets one already laid, at the first meeting of the two along the one
+    laid. A route that meets none keeps positions of its own (its first vehicle at its origin)."""
+    meetings = conflicts(routes)
+    laid, found = {0}, []
+    grew = True
+    while grew:
+        grew = False
+        for meeting in meetings:
+            ends = {meeting.first, meeting.second}
+            if len(ends & laid) != 1:
+                continue
+            onto = meeting.first if meeting.first in laid else meeting.second
+            route = meeting.second if onto == meeting.first else meeting.first
+            offset = meeting.offset if meeting.kind == "shared" else meeting.first_span[0] - meeting.second_span[0]
+            # the meeting's offset is its first route's metres less its second's
+            found.append(Alignment(route, onto, offset if route == meeting.first else -offset, meeting))
+            laid.add(route)
+            grew = True
+    return tuple(found)

@@ -5,6 +5,11 @@ trajectories, and returns a short trajectory; the lockstep loop (``lockstep.py``
 vehicle along it by one time step. ``Driver`` is the whole interface, so a user can plug in their
 own planner for the vehicle under test; the frenetix backend's ``FrenetixDriver``
 (``simulation/frenetix/``) drives every other vehicle.
+
+On a map whose routes meet (ways through a junction), a driver also sees, before it plans, the
+vehicles of other routes whose ways meet its own (``CrossTraffic``): where the meeting lies on its
+road and how far each of them has still to go to it along its own way, as a driver reads a
+crossing and the cars coming to it.
 """
 
 from __future__ import annotations
@@ -61,10 +66,29 @@ class Trajectory:
         return Trajectory(state.x * ones, state.y * ones, state.heading * ones, state.speed * ones, 0 * ones)
 
 
+@dataclass(frozen=True)
+class CrossTraffic:
+    """A vehicle of another route whose way meets this vehicle's: the meeting lies between
+    ``start`` and ``end`` on this vehicle's road (its x); ``kind`` is "crossing" (the ways cross:
+    the other is in it only while it passes) or "shared" (the ways join into one lane); the
+    other's centre has ``distance`` metres to go along its own way to where the meeting begins
+    there (negative once past that), ``length`` metres of its way are in the meeting, and it drives
+    at ``speed`` (m/s) accelerating at ``acceleration`` (m/s^2)."""
+
+    vehicle: str
+    kind: str
+    start: float
+    end: float
+    distance: float
+    length: float
+    speed: float
+    acceleration: float
+
+
 class Driver(Protocol):
     """What the lockstep loop calls of a driver (see the README for a custom driver). A driver
-    derived from ``DriverBase`` answers ``retarget`` and ``fallbacks`` by default; one that is not
-    is completed so (``complete``)."""
+    derived from ``DriverBase`` answers ``see``, ``retarget`` and ``fallbacks`` by default; one
+    that is not is completed so (``complete``)."""
 
     fallbacks: int  # steps it drove without a trajectory of its own (a fallback), for the report
 
@@ -72,16 +96,24 @@ class Driver(Protocol):
         """Called once before the simulation, with the vehicle's reference and the road."""
 
     def plan(self, time: float, state: VehicleState, others: dict[str, Trajectory]) -> Trajectory:
-        """Called every time step; returns a trajectory starting at ``state``."""
+        """Called every time step; returns a trajectory starting at ``state``. ``others``: the
+        vehicles of its own route, in its road's coordinates."""
+
+    def see(self, traffic: tuple[CrossTraffic, ...]) -> None:
+        """Called every time step before ``plan``, with the vehicles of other routes whose ways
+        meet its own ahead of it (none on one road)."""
 
     def retarget(self, vehicle: str, reference: Reference, road: Road, dt: float) -> None:
         """Follow ``reference`` from now on (a replan of the reactive execution)."""
 
 
 class DriverBase:
-    """A driver's defaults: a replan starts it again on the new reference, and it never falls back."""
+    """A driver's defaults: a replan starts it again on the new reference, it never falls back,
+    and it keeps the cross traffic it last saw in ``cross_traffic`` (a driver that plans along a
+    plan made with every route, as the scenario's own vehicles' do, needs no more)."""
 
     fallbacks: int = 0
+    cross_traffic: tuple[CrossTraffic, ...] = ()
 
     def start(self, vehicle: str, reference: Reference, road: Road, dt: float) -> None:
         raise NotImplementedError
@@ -89,12 +121,16 @@ class DriverBase:
     def plan(self, time: float, state: VehicleState, others: dict[str, Trajectory]) -> Trajectory:
         raise NotImplementedError
 
+    def see(self, traffic: tuple[CrossTraffic, ...]) -> None:
+        self.cross_traffic = traffic
+
     def retarget(self, vehicle: str, reference: Reference, road: Road, dt: float) -> None:
         self.start(vehicle, reference, road, dt)
 
 
 class _Completed(DriverBase):
-    """A user's driver with only ``start`` and ``plan``, given ``DriverBase``'s answers for the rest."""
+    """A user's driver with only ``start`` and ``plan``, given ``DriverBase``'s answers for the
+    rest (a driver that reads the cross traffic derives from ``DriverBase`` and overrides ``see``)."""
 
     def __init__(self, driver) -> None:
         self.driver = driver
@@ -108,7 +144,7 @@ class _Completed(DriverBase):
 
 def complete(driver) -> Driver:
     """``driver`` as the lockstep loop calls it: itself when it derives from ``DriverBase``, else
-    its ``start`` and ``plan`` with ``DriverBase``'s ``retarget`` and ``fallbacks``."""
+    its ``start`` and ``plan`` with ``DriverBase``'s answers for the rest."""
     return driver if isinstance(driver, DriverBase) else _Completed(driver)
 
 

@@ -15,9 +15,10 @@ from collections.abc import Callable
 
 import numpy as np
 
+from ..dimensions import CAR_LENGTH
 from ..planning.plan import Plan
 from ..roads.road import Road
-from .driver import Driver, StationaryDriver, Trajectory, VehicleState, complete
+from .driver import CrossTraffic, Driver, StationaryDriver, Trajectory, VehicleState, complete
 from .geometry import boxes_overlap, corners
 from .interface import DriverFactory, GoalRecord, Reaction, Simulation, SimulationLimits, SimulationTimeout
 from .reference import TAIL, Reference, Waypoint, references
@@ -117,6 +118,7 @@ class _Lockstep:
         }
         self.incidents: list[Incident] = []
         self.goals = {v: _GoalSequence(r.waypoints) for v, r in refs.items() if v not in plan.stationary}
+        self.crossings = _crossings(self.roads)
 
     def last_step(self) -> int:
         """The run lasts as long as the longest reference, and ``TAIL`` after."""
@@ -161,12 +163,28 @@ class _Lockstep:
                         col[name] = np.concatenate([values, np.zeros(self.steps + 1 - len(values))])
         chosen = {}
         for v, driver in self.active.items():
-            # a driver sees the vehicles of its own route (road coordinates are a route's own)
+            # a driver sees the vehicles of its own route (road coordinates are a route's own), and
+            # those of other routes as they come to where their ways meet its own
             others = {o: p for o, p in self.predictions.items() if o != v and self.roads[o] is self.roads[v]}
+            if v in self.crossings:
+                driver.see(self.cross_traffic(v))
             chosen[v] = driver.plan(time, self.states[v], others)
         for v, trajectory in chosen.items():
             self.states[v] = trajectory.state(1)
             self.predictions[v] = trajectory.shifted()
+
+    def cross_traffic(self, vehicle: str) -> tuple[CrossTraffic, ...]:
+        """The vehicles of other routes whose ways meet ``vehicle``'s ahead of it, each with the
+        meeting and how far it has to go to it; a vehicle past a meeting is no longer in it."""
+        own = self.states[vehicle]
+        seen = []
+        for other, start, end, other_start, length, kind in self.crossings[vehicle]:
+            state = self.states[other]
+            distance = other_start - state.x
+            if end < own.x - CAR_LENGTH or distance < -(length + CAR_LENGTH):
+                continue
+            seen.append(CrossTraffic(other, kind, start, end, distance, length, state.speed, state.acceleration))
+        return tuple(seen)
 
     def simulation(self) -> Simulation:
         """The run's ``Simulation``: its trace (world coordinates too on a map), goals and replans."""
@@ -192,6 +210,24 @@ class _Lockstep:
             list(self.react.replans) if self.react is not None else [],
             {v: r for v, r in self.roads.items() if r is not road},
         )
+
+
+def _crossings(roads: dict[str, Road]) -> dict[str, list[tuple[str, float, float, float, float, str]]]:
+    """Per vehicle on a map whose route meets another vehicle's: (that vehicle, where the meeting
+    begins and ends on this one's road, where it begins on that one's road, its length there, its
+    kind) for each meeting of the two routes (``roads.conflicts``)."""
+    from ..roads.conflicts import conflicts
+
+    found: dict[str, list] = {}
+    for v, road in roads.items():
+        for o, other in roads.items():
+            if other is road or road.route is None or other.route is None:
+                continue
+            for meeting in conflicts((road.route, other.route)):
+                (a, b), (c, d) = meeting.first_span, meeting.second_span
+                shift, other_shift = road.route_shift, other.route_shift
+                found.setdefault(v, []).append((o, a - shift, b - shift, c - other_shift, d - c, meeting.kind))
+    return found
 
 
 def _in_world(state: VehicleState, road: Road) -> VehicleState:

@@ -128,9 +128,9 @@ def test_each_vehicle_drives_the_route_of_the_path_it_goes_along(tmp_path):
     "extra, npc_path, message",
     [
         (
-            "            position([10m..20m], ahead_of: npc, at: start)\n",
+            "            lane(same_as: npc)\n",
             "npc_path",
-            r"two.osc:14:44: error: ego and npc drive different routes",
+            r"two.osc:14:27: error: ego and npc drive different routes .*: a lane or gap between them has no meaning",
         ),
         (
             "        ego.drive() with:\n            along(npc_path)\n",
@@ -138,9 +138,9 @@ def test_each_vehicle_drives_the_route_of_the_path_it_goes_along(tmp_path):
             r"ego drives along ego_path \(line 13\)",
         ),
     ],
-    ids=["position relative to a car of another route", "along two paths"],
+    ids=["lane relative to a car of another route", "along two paths"],
 )
-def test_vehicles_of_two_routes_are_never_related_by_position_and_a_vehicle_drives_one_route(
+def test_vehicles_of_two_routes_are_never_related_by_lane_and_a_vehicle_drives_one_route(
     tmp_path, extra, npc_path, message
 ):
     from pytest_roadlogic.frontend import OscError
@@ -168,6 +168,27 @@ def _inside(plan, vehicle: str, span: tuple[float, float]) -> list[bool]:
     """Per step, whether ``vehicle``'s centre is inside ``span`` metres along its own route."""
     origin = plan.side_routes[vehicle][1] if vehicle in plan.side_routes else plan.origin
     return [span[0] < state.position + origin < span[1] for state in plan.states[vehicle]]
+
+
+@pytest.mark.parametrize("seed", [1, 2])
+def test_a_position_between_cars_of_two_routes_is_how_much_nearer_one_is_to_where_the_routes_meet(tmp_path, seed):
+    from pytest_roadlogic.automaton import build_automaton
+    from pytest_roadlogic.pipeline import load_scenario
+    from pytest_roadlogic.planning import ContinuousPlanner, ContinuousSettings
+
+    _copy_maps(tmp_path)
+    extra = "            position([10m..20m], ahead_of: npc, at: start)\n"
+    scenario = load_scenario(write(tmp_path / "two.osc", SEVERAL.format(extra=extra, npc_path="npc_path")))
+    settings = ContinuousSettings(time_limit=30.0).on_route(scenario.route, scenario.routes[1:])
+    plan = ContinuousPlanner(build_automaton(scenario), settings, seed).first()
+    (meeting,) = settings.meetings
+    (_, npc_origin) = plan.side_routes["npc"]
+    to_meeting = {
+        "ego": meeting.first_span[0] - (plan.states["ego"][0].position + plan.origin),
+        "npc": meeting.second_span[0] - (plan.states["npc"][0].position + npc_origin),
+    }
+    # ego is 10-20 m (and the position's 1 m of tolerance) nearer to the crossing than npc
+    assert 9.0 - 1e-6 <= to_meeting["npc"] - to_meeting["ego"] <= 21.0 + 1e-6
 
 
 @pytest.mark.parametrize("seed", [1, 2, 3])

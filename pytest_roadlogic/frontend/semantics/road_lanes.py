@@ -249,26 +249,40 @@ class RoadLanes:
         return {vehicle: path for vehicle, (path, _) in driven.items()}
 
     def _apart(self, scenario: model.Scenario, route_of: dict[str, int]) -> None:
-        """An error wherever a construct of one vehicle names a vehicle on another route (a
-        position, lane or gap relative to it): road coordinates are a route's own. Vehicles that
-        name no path drive the first route."""
+        """An error wherever a construct of one vehicle names a vehicle on another route, but a
+        ``position()`` between two routes laid onto each other where they meet
+        (``roads.conflicts.alignments``): there a position is the distance to the meeting, and
+        "15 m ahead of" is "15 m nearer to it". Lanes and gaps are a route's own. Vehicles that name
+        no path drive the first route."""
+        from ...roads.conflicts import alignments
+
         names = {actor.name for actor in scenario.actors}
+        laid = {frozenset((a.route, a.onto)) for a in alignments(self.routes)}
         for behavior in scenario.behaviors:
             for node in model.walk(behavior):
                 if not isinstance(node, model.Invocation) or node.actor not in names:
                     continue
                 own = route_of.get(node.actor, 0)
-                for argument in (*node.arguments, *(a for m in node.modifiers for a in m.arguments)):
+                named = [(None, a) for a in node.arguments] + [(m.name, a) for m in node.modifiers for a in m.arguments]
+                for modifier, argument in named:
                     other = argument.value.name if isinstance(argument.value, model.Name) else None
-                    if other in names and other != node.actor and route_of.get(other, 0) != own:
-                        self.error(
-                            argument.value.location,
-                            f"{node.actor} and {other} drive different routes "
-                            f"({self.routes[own].turn}; {self.routes[route_of.get(other, 0)].turn}): "
-                            "a position, lane or gap between them has no meaning",
-                            "relate vehicles on one route; the planner orders vehicles of different routes "
-                            "through the places where their routes meet",
-                        )
+                    if other not in names or other == node.actor or route_of.get(other, 0) == own:
+                        continue
+                    pair = frozenset((own, route_of.get(other, 0)))
+                    if modifier == "position" and pair in laid:
+                        continue
+                    why = (
+                        "a lane or gap between them has no meaning"
+                        if pair in laid
+                        else "their routes do not meet, so a position, lane or gap between them has no meaning"
+                    )
+                    self.error(
+                        argument.value.location,
+                        f"{node.actor} and {other} drive different routes "
+                        f"({self.routes[own].turn}; {self.routes[route_of.get(other, 0)].turn}): {why}",
+                        "relate vehicles on one route, or vehicles of two routes that meet with position(): "
+                        "the distance to where their routes meet",
+                    )
 
     def _crossers(self, scenario: model.Scenario, at: SourceLocation) -> None:
         """On a route that turns at a junction: the vehicles whose drive goes ``along(path)`` drive

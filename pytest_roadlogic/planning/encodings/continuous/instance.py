@@ -107,18 +107,22 @@ def route_facts(s: ContinuousSettings, vehicles: tuple[str, ...], gap: float) ->
         if junction is not None:
             facts.append(f"junction_span({k},{number(junction[0])},{number(junction[1])}).")
     crossers = set(s.crossers)
-    on_side = set()
+    route_of = dict.fromkeys(vehicles, 0)
     for k, side in enumerate(s.side_routes, 1):
         driven = [v for v in vehicles if v in side.vehicles]
-        on_side |= set(driven)
+        route_of.update(dict.fromkeys(driven, k))
         facts += [f"route_of({atom(v)},{k})." for v in driven]
-        if driven and driven[0] != vehicles[0]:
-            facts.append(f"route_first({atom(driven[0])}).")  # its position 0 is its route's origin
         crossers |= set(driven) if side.junction_span is not None else set()
-    first_on_route = next((v for v in vehicles if v not in on_side), None)
-    if on_side and first_on_route not in (None, vehicles[0]):
-        facts.append(f"route_first({atom(first_on_route)}).")  # route 0 pinned likewise
     facts += [f"crosses({atom(v)})." for v in vehicles if v in crossers]
+    # routes laid onto each other share one position 0 (the first vehicle's start, dynamics.lp);
+    # of every other group of routes, its first vehicle's start is position 0 of its own
+    laid = {0, *(a.route for a in s.alignments)}
+    facts += [f"aligned({a.route},{a.onto},{number(a.offset)})." for a in s.alignments]
+    groups = [laid, *({k} for k in range(1, len(s.side_routes) + 1) if k not in laid)]
+    for group in groups:
+        first = next((v for v in vehicles if route_of[v] in group), None)
+        if first not in (None, vehicles[0]):
+            facts.append(f"route_first({atom(first)}).")
     for z, meeting in enumerate(s.meetings):
         facts.append(f"meeting({z},{meeting.kind}).")
         # a crossing widened by the clearance kept between the one through and the next

@@ -12,7 +12,7 @@ from ....settings import CONTINUOUS_HORIZON, ROAD_SPEED
 from ...protocol import Limit
 
 if TYPE_CHECKING:
-    from ....roads.conflicts import Meeting
+    from ....roads.conflicts import Alignment, Meeting
     from ....roads.route import Route
 
 # the vehicle limits a fallback plans without, when no plan exists within them: (field, relaxed
@@ -135,6 +135,8 @@ class ContinuousSettings:
     # (``roads.conflicts``): the planner orders the vehicles of two routes through each meeting
     side_routes: tuple[RouteFacts, ...] = ()
     meetings: tuple[Meeting, ...] = ()
+    # how the routes' positions are laid onto each other where they meet (``roads.conflicts``)
+    alignments: tuple[Alignment, ...] = ()
     # m added along each route at both ends of a crossing of two routes: the first car through has
     # left it by this much when the next enters (a motion planner lags its plan by a metre or two)
     meeting_clearance: float = 2.0
@@ -177,7 +179,7 @@ class ContinuousSettings:
         only where it is (``asp/continuous/route.lp``), the scenario starting in the curve it asks
         for, the vehicles that drive through the route's junction doing so, and a start speed the
         scenario leaves open at most the map's limit."""
-        from ....roads.conflicts import conflicts
+        from ....roads.conflicts import alignments, conflicts
         from ....roads.route import MAX_LATERAL_ACCELERATION, curve_speed
 
         low, high = self.road_speed
@@ -209,6 +211,7 @@ class ContinuousSettings:
             route=route,
             side_routes=tuple(RouteFacts.of(other) for other in others),
             meetings=conflicts((route, *others)) if others else (),
+            alignments=alignments((route, *others)) if others else (),
         )
 
     def resolution(self) -> dict[str | None, float]:
