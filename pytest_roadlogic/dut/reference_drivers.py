@@ -239,7 +239,9 @@ class AdaptiveCruiseControl(DriverBase):
         y = self.lane_y + (state.y - self.lane_y) * np.exp(-t / 0.5)
         heading = np.arctan2(np.gradient(y, self.dt), np.maximum(speed, 0.1))
         heading[0] = state.heading
-        applied = np.where(speed > 0, acceleration, 0.0)
+        # what the speeds do over each step: a car that stops within a step brakes only as hard as
+        # stopping takes (a -8 m/s^2 command at 0.01 m/s is no 8 m/s^2 stop)
+        applied = np.append(np.diff(speed) / self.dt, acceleration if speed[-1] > 0 else 0.0)
         return Trajectory(x, y, heading, speed, applied)
 
 

@@ -269,3 +269,59 @@ def test_a_path_no_vehicle_drives_along_is_a_warning_at_its_turn(tmp_path):
     checked = check_file(write(tmp_path / "two.osc", SEVERAL.format(extra="", npc_path="ego_path")))
     (warning,) = [d for d in checked.diagnostics if d.severity == "warning"]
     assert warning.location.line == 8 and "no vehicle drives along npc_path" in warning.message
+
+
+def test_routes_that_meet_are_laid_onto_each_other_where_the_meeting_begins_or_along_the_lane_they_share():
+    from pytest_roadlogic.roads.conflicts import alignments
+
+    road_map = read_map(CROSSING)
+    left, oncoming = (
+        turn_as_route(road_map, _turn(road_map, "2", "1")),
+        turn_as_route(road_map, _turn(road_map, "4", "2")),
+    )
+    (meeting,) = conflicts((left, oncoming))
+    (laid,) = alignments((left, oncoming))
+    assert (laid.route, laid.onto) == (1, 0)
+    # origins differing by the offset: the meeting's start is the same position on both
+    assert meeting.first_span[0] - 0.0 == pytest.approx(meeting.second_span[0] - laid.offset)
+    right, straight = (
+        turn_as_route(road_map, _turn(road_map, "1", "2")),
+        turn_as_route(road_map, _turn(road_map, "4", "2")),
+    )
+    (shared,) = conflicts((right, straight))
+    (laid,) = alignments((right, straight))
+    # along a shared lane a metre of one is a metre of the other: the offset is the meeting's, reversed
+    assert laid.offset == pytest.approx(-shared.offset)
+    # a road's two directions never meet: nothing is laid
+    assert (
+        alignments(
+            (turn_as_route(road_map, _turn(road_map, "3", "1")), turn_as_route(road_map, _turn(road_map, "1", "3")))
+        )
+        == ()
+    )
+
+
+def test_a_driver_sees_a_car_of_another_way_with_how_far_it_has_still_to_go_to_the_crossing():
+    from pytest_roadlogic.dut.reference_drivers import AdaptiveCruiseControl
+    from pytest_roadlogic.pipeline import load_scenario, run_scenario
+
+    seen = []
+
+    class Watching(AdaptiveCruiseControl):
+        def see(self, traffic):
+            super().see(traffic)
+            seen.append(traffic)
+
+    scenario = load_scenario(SUITE / "left_turn_across_oncoming.osc")
+    instance = run_scenario(scenario, seed=1, drivers=lambda vehicle: Watching() if vehicle == "ego" else None)
+    plan = instance.plan
+    (meeting,) = conflicts(scenario.routes)
+    (_, origin) = plan.side_routes["oncoming"]
+    (first,) = seen[0]
+    assert first.vehicle == "oncoming" and first.kind == "crossing"
+    assert first.start == pytest.approx(meeting.first_span[0] - plan.origin)
+    assert first.distance == pytest.approx(
+        meeting.second_span[0] - (plan.states["oncoming"][0].position + origin), abs=0.01
+    )
+    # once the oncoming car has gone through, it is no longer seen
+    assert not seen[-1]
