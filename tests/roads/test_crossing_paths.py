@@ -325,3 +325,31 @@ def test_a_driver_sees_a_car_of_another_way_with_how_far_it_has_still_to_go_to_t
     )
     # once the oncoming car has gone through, it is no longer seen
     assert not seen[-1]
+
+
+def test_a_position_between_cars_of_two_ways_that_never_meet_is_refused_at_its_argument(tmp_path):
+    from pytest_roadlogic.frontend import OscError
+    from pytest_roadlogic.pipeline import load_scenario
+
+    _copy_maps(tmp_path)
+    text = """scenario both_ways:
+    ego_path: Path
+    npc_path: Path
+    j: junction
+    south: road
+    ego_path.set_map("maps/crossing.xodr")
+    ego_path.roads_follow_in_junction(junction: j, in_road: south, direction: straight)
+    npc_path.roads_follow_in_junction(junction: j, out_road: south, direction: straight)
+    ego: car
+    npc: car
+    do parallel(duration: [12s..18s]):
+        ego.drive() with:
+            along(ego_path)
+            position([10m..20m], ahead_of: npc, at: start)
+        npc.drive() with:
+            along(npc_path)
+"""
+    with pytest.raises(
+        OscError, match=r"both.osc:14:44: error: ego and npc drive different routes .*their routes do not meet"
+    ):
+        load_scenario(write(tmp_path / "both.osc", text))

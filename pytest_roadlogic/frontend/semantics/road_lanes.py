@@ -254,10 +254,11 @@ class RoadLanes:
         (``roads.conflicts.alignments``): there a position is the distance to the meeting, and
         "15 m ahead of" is "15 m nearer to it". Lanes and gaps are a route's own. Vehicles that name
         no path drive the first route."""
-        from ...roads.conflicts import alignments
+        from ...roads.conflicts import alignments, conflicts
 
         names = {actor.name for actor in scenario.actors}
         laid = {frozenset((a.route, a.onto)) for a in alignments(self.routes)}
+        meet = {frozenset((m.first, m.second)) for m in conflicts(self.routes)}
         for behavior in scenario.behaviors:
             for node in model.walk(behavior):
                 if not isinstance(node, model.Invocation) or node.actor not in names:
@@ -271,11 +272,15 @@ class RoadLanes:
                     pair = frozenset((own, route_of.get(other, 0)))
                     if modifier == "position" and pair in laid:
                         continue
-                    why = (
-                        "a lane or gap between them has no meaning"
-                        if pair in laid
-                        else "their routes do not meet, so a position, lane or gap between them has no meaning"
-                    )
+                    if pair in laid:
+                        why = "a lane or gap between them has no meaning"
+                    elif pair in meet:
+                        why = (
+                            "their routes are laid onto each other through a third route, not where they "
+                            "meet, so a position, lane or gap between them has no meaning"
+                        )
+                    else:
+                        why = "their routes do not meet, so a position, lane or gap between them has no meaning"
                     self.error(
                         argument.value.location,
                         f"{node.actor} and {other} drive different routes "
