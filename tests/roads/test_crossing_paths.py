@@ -332,24 +332,10 @@ def test_a_position_between_cars_of_two_ways_that_never_meet_is_refused_at_its_a
     from pytest_roadlogic.pipeline import load_scenario
 
     _copy_maps(tmp_path)
-    text = """scenario both_ways:
-    ego_path: Path
-    npc_path: Path
-    j: junction
-    south: road
-    ego_path.set_map("maps/crossing.xodr")
-    ego_path.roads_follow_in_junction(junction: j, in_road: south, direction: straight)
-    npc_path.roads_follow_in_junction(junction: j, out_road: south, direction: straight)
-    ego: car
-    npc: car
-    do parallel(duration: [12s..18s]):
-        ego.drive() with:
-            along(ego_path)
-            position([10m..20m], ahead_of: npc, at: start)
-        npc.drive() with:
-            along(npc_path)
-"""
-    with pytest.raises(
-        OscError, match=r"both.osc:14:44: error: ego and npc drive different routes .*their routes do not meet"
-    ):
-        load_scenario(write(tmp_path / "both.osc", text))
+    extra = "            position([10m..20m], ahead_of: npc, at: start)\n"
+    # straight over and straight back: a road's two directions
+    text = SEVERAL.format(extra=extra, npc_path="npc_path").replace(
+        "south, direction: left", "south, direction: straight"
+    )
+    with pytest.raises(OscError, match=r"two.osc:14:44: error: ego and npc drive different routes .*do not meet"):
+        load_scenario(write(tmp_path / "two.osc", text))
