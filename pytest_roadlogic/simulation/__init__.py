@@ -9,6 +9,7 @@ without importing numpy, the planner's data or a backend.
 from importlib import import_module
 
 _HOMES = {
+    "CrossTraffic": "driver",
     "Driver": "driver",
     "DriverBase": "driver",
     "Trajectory": "driver",
