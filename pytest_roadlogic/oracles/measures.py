@@ -16,7 +16,7 @@ leader:
 - the **post-encroachment time** with a vehicle of another way through a junction (one of the
   ``apart``) is the least time between the two being at places where their boxes, grown by
   ``CONFLICT_MARGIN``, overlap (read in the map's coordinates): how soon one came where the other
-  had been, or was to be. Two cars that touch have 0.
+  was before, or was to be. Two cars that touch have 0.
 
 Each oracle's measure (``registries.oracles.Oracle.measure``) reads one ``Seen`` and returns the
 ``Closest`` its oracle judges.
