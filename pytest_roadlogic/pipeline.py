@@ -204,9 +204,8 @@ def guided_planning(
     encoding that cannot plan on a map (the grid's) says so (``CannotPlanOnMap``) rather than plan
     a straight road the simulation would then drive on the map."""
     if scenario.route is not None:
-        settings = settings.on_route(
-            scenario.route, scenario.routes[1:]
-        )  # CannotPlanOnMap from an encoding that cannot
+        # CannotPlanOnMap from an encoding that cannot
+        settings = settings.on_route(scenario.route, scenario.routes[1:])
     if not values:
         return (lambda planner_settings: specification), settings, seed
     guides: dict[tuple, SymbolicAutomaton] = {}

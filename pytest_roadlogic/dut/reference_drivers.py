@@ -89,7 +89,6 @@ class AdaptiveCruiseControl(DriverBase):
             if route is None
             else tuple((a - road.route_shift, b - road.route_shift, v) for a, b, v in route.slow_stretches)
         )
-        self.cross_traffic = ()
 
     def plan(self, time: float, state: VehicleState, others: dict[str, Trajectory]) -> Trajectory:
         others = {**others, **self._joined(state)}

@@ -136,30 +136,19 @@ def least_post_encroachment_time(seen: Seen) -> Closest:
     """The least post-encroachment time of the vehicle under test with a vehicle of another way
     through a junction (inf when none comes where it drives); its time is when the vehicle under
     test was at the place."""
-    from ..roads.conflicts import boxes_touch
+    from ..roads.conflicts import touching_pairs
 
     trace, me = seen.trace, seen.trace.actors[seen.vehicle]
     stop = len(trace.times) if seen.until is None else seen.until
     if not seen.apart or stop == 0 or "world_x" not in me:
         return Closest(math.inf)
-    reach = float(np.hypot(CAR_LENGTH, CAR_WIDTH)) + 2 * CONFLICT_MARGIN
+    mine = (me["world_x"][:stop], me["world_y"][:stop], me["world_heading"][:stop])
     best = Closest(math.inf)
     for other in sorted(seen.apart):
         them = trace.actors[other]
-        # every pair of samples (mine, theirs) whose centres are near enough for the boxes to touch
-        dx = me["world_x"][:stop, None] - them["world_x"][None, :]
-        dy = me["world_y"][:stop, None] - them["world_y"][None, :]
-        i, j = np.nonzero(dx * dx + dy * dy <= reach * reach)
+        i, j = touching_pairs(mine, (them["world_x"], them["world_y"], them["world_heading"]), CONFLICT_MARGIN)
         if not len(i):
             continue
-        touching = boxes_touch(
-            me["world_x"][i], me["world_y"][i], me["world_heading"][i],
-            them["world_x"][j], them["world_y"][j], them["world_heading"][j],
-            CONFLICT_MARGIN,
-        )  # fmt: skip
-        if not touching.any():
-            continue
-        i, j = i[touching], j[touching]
         apart_in_time = np.abs(trace.times[i] - trace.times[j])
         k = int(np.argmin(apart_in_time))
         if apart_in_time[k] < best.value:

@@ -145,19 +145,16 @@ def _collision(trace: Trace, vehicle: str, other: str, time: float, in_world: bo
         heading = float(me["world_heading"][k])
         dx = ex * np.cos(heading) + ey * np.sin(heading)
         dy = -ex * np.sin(heading) + ey * np.cos(heading)
-        if CAR_LENGTH - abs(dx) <= CAR_WIDTH - abs(dy):
-            if dx > 0:
-                return Collision(time, other, f"{vehicle} ran into {other} ahead", True)
-            return Collision(time, other, f"{other} ran into {vehicle} from behind", False)
-        side = "left" if dy > 0 else "right"
-        # two ways crossing: the one that hit the other's flank hit it
-        return Collision(time, other, f"{other} ran into {vehicle} from its {side}", False)
-    dx, dy = float(them["x"][k] - me["x"][k]), float(them["y"][k] - me["y"][k])
+    else:
+        dx, dy = float(them["x"][k] - me["x"][k]), float(them["y"][k] - me["y"][k])
     if CAR_LENGTH - abs(dx) <= CAR_WIDTH - abs(dy):
         if dx > 0:
             return Collision(time, other, f"{vehicle} ran into {other} ahead", True)
         return Collision(time, other, f"{other} ran into {vehicle} from behind", False)
     side = "left" if dy > 0 else "right"
+    if in_world:
+        # two ways crossing: the one that hit the other's flank hit it
+        return Collision(time, other, f"{other} ran into {vehicle} from its {side}", False)
     before = max(0, k - int(round(1.0 / max(float(trace.times[1] - trace.times[0]), 1e-9)))) if len(trace) > 1 else k
     # how far each moved across toward the other in the last second
     mine = (me["y"][k] - me["y"][before]) * np.sign(dy)

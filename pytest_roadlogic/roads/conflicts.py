@@ -90,6 +90,22 @@ def boxes_touch(x1, y1, h1, x2, y2, h2, margin: float = MARGIN) -> np.ndarray:
     return touching
 
 
+def touching_pairs(a, b, margin: float = MARGIN) -> tuple[np.ndarray, np.ndarray]:
+    """The index pairs (i, j), in order of i then j, of car poses ``a`` and ``b`` (each a tuple of
+    world x, y and heading arrays) whose boxes, grown by ``margin``, overlap: the pairs whose
+    centres are near enough (a KD-tree), then the separating-axis test (``boxes_touch``)."""
+    (xa, ya, ha), (xb, yb, hb) = a, b
+    # two boxes overlap only if their centres are within the sum of their half-diagonals
+    reach = float(np.hypot(CAR_LENGTH + 2 * margin, CAR_WIDTH + 2 * margin))
+    near = cKDTree(np.stack([xb, yb], -1)).query_ball_point(np.stack([xa, ya], -1), reach, return_sorted=True)
+    i = np.repeat(np.arange(len(xa)), [len(n) for n in near])
+    if not len(i):
+        return i, i
+    j = np.concatenate([np.asarray(n, dtype=int) for n in near])
+    touching = boxes_touch(xa[i], ya[i], ha[i], xb[j], yb[j], hb[j], margin)
+    return i[touching], j[touching]
+
+
 def _runs(values: np.ndarray) -> list[np.ndarray]:
     """Indices of ``values`` grouped into runs whose sorted values lie within ``SPLIT`` of each other."""
     order = np.argsort(values, kind="stable")
@@ -101,14 +117,7 @@ def meetings_of(first: int, a: Route, second: int, b: Route) -> list[Meeting]:
     """Where routes ``a`` (index ``first``) and ``b`` (index ``second``) meet, in order along ``a``."""
     sa, xa, ya, ha = lane_centres(a)
     sb, xb, yb, hb = lane_centres(b)
-    reach = float(np.hypot(CAR_LENGTH + 2 * MARGIN, CAR_WIDTH + 2 * MARGIN))
-    near = cKDTree(np.stack([xb, yb], -1)).query_ball_point(np.stack([xa, ya], -1), reach)
-    i = np.repeat(np.arange(len(sa)), [len(n) for n in near])
-    if not len(i):
-        return []
-    j = np.concatenate([np.asarray(n, dtype=int) for n in near])
-    touching = boxes_touch(xa[i], ya[i], ha[i], xb[j], yb[j], hb[j])
-    i, j = i[touching], j[touching]
+    i, j = touching_pairs((xa, ya, ha), (xb, yb, hb))
     found: list[Meeting] = []
     if not len(i):
         return found
