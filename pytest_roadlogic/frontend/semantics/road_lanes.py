@@ -267,9 +267,10 @@ class RoadLanes:
                 named = [(None, a) for a in node.arguments] + [(m.name, a) for m in node.modifiers for a in m.arguments]
                 for modifier, argument in named:
                     other = argument.value.name if isinstance(argument.value, model.Name) else None
-                    if other not in names or other == node.actor or route_of.get(other, 0) == own:
+                    theirs = route_of.get(other, 0)
+                    if other not in names or other == node.actor or theirs == own:
                         continue
-                    pair = frozenset((own, route_of.get(other, 0)))
+                    pair = frozenset((own, theirs))
                     if modifier == "position" and pair in laid:
                         continue
                     if pair in laid:
@@ -284,7 +285,7 @@ class RoadLanes:
                     self.error(
                         argument.value.location,
                         f"{node.actor} and {other} drive different routes "
-                        f"({self.routes[own].turn}; {self.routes[route_of.get(other, 0)].turn}): {why}",
+                        f"({self.routes[own].turn}; {self.routes[theirs].turn}): {why}",
                         "relate vehicles on one route, or vehicles of two routes that meet with position(): "
                         "the distance to where their routes meet",
                     )
@@ -406,8 +407,11 @@ class RoadLanes:
                 "a path turns at one junction: give it once, or give each vehicle's way a path of its own",
             )
             return
-        direction = binding["direction"]
-        name = direction.value.name if direction is not None and isinstance(direction.value, model.Name) else None
+
+        def field(parameter: str) -> str | None:
+            given = binding[parameter]
+            return given.value.name if given is not None and isinstance(given.value, model.Name) else None
+
         roads = None
         argument = binding["number_of_roads"]
         if argument is not None:
@@ -420,12 +424,9 @@ class RoadLanes:
                 )
                 return
             roads = int(value.low)
-
-        def field(parameter: str) -> str | None:
-            given = binding[parameter]
-            return given.value.name if given is not None and isinstance(given.value, model.Name) else None
-
-        ask = TurnAsk(name, roads, field("junction"), field("in_road"), field("out_road"), path or "the path")
+        ask = TurnAsk(
+            field("direction"), roads, field("junction"), field("in_road"), field("out_road"), path or "the path"
+        )
         self.turn_asks[path] = (ask, modifier.location)
 
     def _route_ask(self, modifier: model.Modifier, binding, env: dict, before: int) -> None:
