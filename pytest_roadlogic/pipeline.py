@@ -22,7 +22,7 @@ from .monitor import Verdict, monitor
 from .oracles import DutReport, judge
 from .planning import Plan, PlannerSettings, settings_for
 from .planning.fallbacks import Guide, planned, tool_limit
-from .sampling import guided, sample_seed
+from .sampling import guided, on_ways, sample_seed
 from .settings import DEFAULT_SIM_TIMEOUT, RunSettings
 from .simulation import DriverFactory, Simulation, SimulationLimits, Simulator
 
@@ -117,6 +117,7 @@ def run_instances(
     simulator = simulator or default_simulator()
     limits = SimulationLimits(time_limit=simulation_time_limit)
     start = time.perf_counter()
+    scenario = on_ways(scenario, values or {})  # its instances report the ways they take
     specification = build_automaton(scenario)
     dut = under_test.vehicle(specification.actors) if under_test is not None else None
     if dut is not None:
@@ -203,6 +204,7 @@ def guided_planning(
     On a map, the settings are the encoding's for the scenario's route (``on_route``); an
     encoding that cannot plan on a map (the grid's) says so (``CannotPlanOnMap``) rather than plan
     a straight road the simulation would then drive on the map."""
+    scenario = on_ways(scenario, values or {})  # the ways through the map the sample takes
     if scenario.route is not None:
         # CannotPlanOnMap from an encoding that cannot
         settings = settings.on_route(scenario.route, scenario.routes[1:])

@@ -31,7 +31,7 @@ from typing import Any
 from .frontend import model
 from .frontend.errors import SourceLocation
 from .frontend.semantics.checked import CheckedScenario
-from .frontend.semantics.logical import UNIT, LogicalParameter
+from .frontend.semantics.logical import UNIT, WAY, LogicalParameter
 from .frontend.semantics.parameters import MIRRORED, ParameterSpace
 from .frontend.semantics.values import EvaluationError, Interval, evaluate
 
@@ -93,6 +93,11 @@ def strategy(checked: CheckedScenario, shard: Shard | None = None):
     def samples(draw):
         values: Values = {}
         for parameter in parameters:
+            if parameter.kind == WAY:
+                # only the ways that go with those drawn for the paths before it: the choice is
+                # made by construction, never filtered
+                values[parameter.name] = draw(st.sampled_from(checked.ways.options(parameter.name, values)))
+                continue
             if parameter.choices:
                 values[parameter.name] = draw(st.sampled_from(parameter.choices))
                 continue
@@ -169,6 +174,8 @@ def guided(
     for name, value in values.items():
         parameter = by_name[name]
         value = checked_value(parameter, value)
+        if parameter.kind == WAY:
+            continue  # the route, not a constraint: on_ways
         if parameter.choices or parameter.integer:
             band: Any = value
         else:
@@ -192,6 +199,26 @@ def guided(
             checked, scenario=dataclasses.replace(scenario, behavior=_narrow(scenario.behavior, narrowed))
         )
     return checked, declared
+
+
+def on_ways(checked: CheckedScenario, values: Values) -> CheckedScenario:
+    """``checked`` on the routes of the ways through the map that ``values`` name for its paths
+    (a way parameter's value, ``frontend.semantics.logical.way_parameters``); a path not named
+    takes the first way that goes with the others. ``UnknownParameter`` when a value is no way of
+    its path, or the ways named do not go together."""
+    by_name = {p.name: p for p in checked.parameters}
+    given = {name: value for name, value in values.items() if name in by_name and by_name[name].kind == WAY}
+    if not given:
+        return checked
+    from .roads.ways import WaysError
+
+    for name, value in given.items():
+        checked_value(by_name[name], value)
+    try:
+        routes = checked.ways.routes(given)
+    except WaysError as error:
+        raise UnknownParameter(str(error)) from None
+    return dataclasses.replace(checked, route=routes[0], routes=routes)
 
 
 def _band(parameter: LogicalParameter, value: float, cell: float, margin: float) -> tuple[float, float]:

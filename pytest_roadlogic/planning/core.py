@@ -27,15 +27,13 @@ from pathlib import Path
 import clingo
 from clingo.ast import ProgramBuilder, parse_string
 
+from ..asp_dir import ASP_DIR
 from ..logic.automaton import SymbolicAutomaton
 from . import diagnosis
 from .errors import HorizonTooShort, NoPlanError, PlanningTimeout, PlanningTooLarge
 from .plan import Plan
 from .window import DurationWindow, shortest_run
 
-ASP_DIR = Path(__file__).resolve().parent.parent / "asp"
-if not ASP_DIR.is_dir():  # running from a source checkout: asp/ sits at the top level
-    ASP_DIR = Path(__file__).resolve().parents[2] / "asp"
 # the run of the automaton, shared by every encoding (the window's solver reads it alone)
 AUTOMATON = ASP_DIR / "automaton.lp"
 # a random start's vehicle keeps its lane unless the scenario needs a change (both encodings)

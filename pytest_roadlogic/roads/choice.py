@@ -85,20 +85,16 @@ def pick_route(
     lanes: int,
     length: float = 0.0,
     curve: tuple[float | None, float | None, str | None] | None = None,
-    turn: tuple[str | None, int | None] | None = None,
 ) -> Route:
     """The route of ``road_map`` a scenario of ``lanes`` lanes and ``length`` metres fits on: the
     longest road outside junctions with at least that many driving lanes (those beyond the lanes
     that run its whole length begin or end on it: the planner keeps a car in such a lane only
     where it is), at least that long, and with a ``curve`` (min radius, max radius, side; the
-    standard's ``path_curve``) when one is asked for; with a ``turn`` (direction, number of roads
-    at the junction; None: any), the route of a turn at a junction (``pick_turn``). ``MapError``
-    saying why no road fits, road by road."""
+    standard's ``path_curve``) when one is asked for (a route that turns at a junction is one of
+    ``ways.choose_ways``). ``MapError`` saying why no road fits, road by road."""
     # a scenario that names no path_length still needs room to drive: a route too short for it
     # would be reported as a scenario without a plan, blaming the scenario for the map
     length = length or MIN_ROUTE_LENGTH
-    if turn is not None:
-        return pick_turn(road_map, lanes, length, turn)
     ways = [
         way
         for road in road_map.roads.values()
@@ -195,78 +191,6 @@ def fitting_turns(road_map: RoadMap, lanes: int, length: float, ask: TurnAsk) ->
     return offered
 
 
-def _binds(ask: TurnAsk, turn: Turn) -> dict[str, str] | None:
-    """The values ``turn`` gives the fields ``ask`` names: a junction field its junction's id, a
-    road field the id of its road in or out; None when it gives one field two values (an ask
-    whose in_road and out_road are one field, for a turn from one road into another)."""
-    bound: dict[str, str] = {}
-    for name, value in (
-        (ask.junction, "j" + turn.junction),
-        (ask.in_road, turn.into.id),
-        (ask.out_road, turn.out_of.id),
-    ):
-        if name is not None:
-            if bound.get(name, value) != value:
-                return None
-            bound[name] = value
-    return bound
-
-
-# combinations of turns tried for one whose routes meet before the first that agrees is taken
-MEETING_TRIES = 100
-
-
-def choose_turns(road_map: RoadMap, lanes: int, length: float, asks: tuple[TurnAsk, ...]) -> list[Turn]:
-    """One turn per ask whose junction and roads agree with the fields the asks share
-    (``junction:``, ``in_road:``, ``out_road:``). Of the combinations that agree, in the map's
-    order ask by ask, the first in which every two paths take different turns whose routes meet
-    (``conflicts``: two paths through one junction in one scenario are there to meet), else the
-    first. ``MapError`` when an ask has no turn of its kind (``fitting_turns``), or when no turns
-    of their kinds go together."""
-    from .conflicts import meetings_of
-
-    length = length or MIN_ROUTE_LENGTH  # room to drive, as pick_route gives a single route
-    options = [fitting_turns(road_map, lanes, length, ask) for ask in asks]
-
-    def agreeing(k: int, chosen: list[Turn], bound: dict[str, str]):
-        if k == len(asks):
-            yield chosen
-            return
-        for turn in options[k]:
-            binding = _binds(asks[k], turn)
-            if binding is not None and all(bound.get(name, value) == value for name, value in binding.items()):
-                yield from agreeing(k + 1, chosen + [turn], {**bound, **binding})
-
-    routes_of: dict[tuple[str, str, str], Route] = {}  # one route per turn, however many combinations take it
-
-    def meet(chosen: list[Turn]) -> bool:
-        keys = [(t.junction, t.into.id, t.out_of.id) for t in chosen]
-        if len(set(keys)) < len(keys):
-            return False
-        for key, turn in zip(keys, chosen):
-            if key not in routes_of:
-                routes_of[key] = turn_as_route(road_map, turn)
-        routes = [routes_of[key] for key in keys]
-        return all(
-            meetings_of(i, routes[i], j, routes[j]) for i in range(len(routes)) for j in range(i + 1, len(routes))
-        )
-
-    first = None
-    for tried, chosen in enumerate(agreeing(0, [], {})):
-        first = first or chosen
-        if tried >= MEETING_TRIES or meet(chosen):
-            return chosen if tried < MEETING_TRIES else first
-    if first is None:
-        raise MapError(
-            road_map.path,
-            "no turns of the map go together as the scenario asks ("
-            + "; ".join(ask.describe() for ask in asks)
-            + f"): {describe_junctions(road_map)}",
-            "name in roads_follow_in_junction only the junction and roads two turns must share, or give a map with such a junction",
-        )
-    return first
-
-
 def turn_as_route(road_map: RoadMap, chosen: Turn, crossers: frozenset[str] = frozenset()) -> Route:
     """The route of the turn ``chosen``: its three roads as one (``junctions.turn_route``), as many
     lanes as the roads in and out both have all along, the junction where it lies along it."""
@@ -281,13 +205,3 @@ def turn_as_route(road_map: RoadMap, chosen: Turn, crossers: frozenset[str] = fr
         crossers=crossers,
         junction_roads=junction_roads(road_map, chosen.junction),
     )
-
-
-def pick_turn(road_map: RoadMap, lanes: int, length: float, turn: tuple[str | None, int | None]) -> Route:
-    """The route of a turn at one of ``road_map``'s junctions (the standard's
-    ``map.roads_follow_in_junction(direction:, number_of_roads:)``): the road in, the junction's
-    connecting road and the road out, with ``lanes`` driving lanes on the roads in and out and
-    ``length`` metres in all; of several, the first in the map's order. ``MapError`` naming the
-    map's junctions and the turns they offer when none fits."""
-    direction, roads = turn
-    return turn_as_route(road_map, fitting_turns(road_map, lanes, length, TurnAsk(direction, roads))[0])

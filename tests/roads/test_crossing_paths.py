@@ -11,10 +11,12 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from pytest_roadlogic.roads.choice import TurnAsk, choose_turns, turn_as_route
+from pytest_roadlogic.roads.asks import TurnAsk
+from pytest_roadlogic.roads.choice import turn_as_route
 from pytest_roadlogic.roads.conflicts import boxes_touch, conflicts
 from pytest_roadlogic.roads.junctions import turns
 from pytest_roadlogic.roads.opendrive_in import MapError, read_map
+from pytest_roadlogic.roads.ways import choose_ways
 from tests.roads.map_files import write
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -68,7 +70,8 @@ def test_a_roads_two_directions_never_meet_and_two_ways_into_one_lane_share_it_t
 
 def test_turns_that_name_one_road_share_it_and_turns_that_cannot_agree_are_refused():
     road_map = read_map(CROSSING)
-    left, oncoming = choose_turns(
+    none = (frozenset(), frozenset())
+    ways = choose_ways(
         road_map,
         1,
         200.0,
@@ -76,18 +79,26 @@ def test_turns_that_name_one_road_share_it_and_turns_that_cannot_agree_are_refus
             TurnAsk("left", None, "j", "south", None, "ego_path"),
             TurnAsk("straight", None, "j", None, "south", "npc_path"),
         ),
+        none,
     )
-    assert left.direction == "left" and oncoming.direction == "straight"
-    assert oncoming.out_of.id == left.into.id and oncoming.junction == left.junction
+    # each of the crossing's four left turns, with the one way straight on that comes out of the
+    # road it comes in on
+    assert len(ways.combinations) == 4
+    for combination in ways.combinations:
+        left, oncoming = (ways.turns[t] for t in combination)
+        assert left.direction == "left" and oncoming.direction == "straight"
+        assert oncoming.out_of.id == left.into.id and oncoming.junction == left.junction
     # two paths straight on through one junction, nothing shared: the ways that cross, not the
     # same way twice nor the two directions of one road
-    first, second = choose_turns(road_map, 1, 200.0, (TurnAsk("straight"), TurnAsk("straight")))
-    routes = (turn_as_route(road_map, first), turn_as_route(road_map, second))
-    assert [m.kind for m in conflicts(routes)] == ["crossing"]
+    ways = choose_ways(road_map, 1, 200.0, (TurnAsk("straight"), TurnAsk("straight")), none)
+    assert len(ways.combinations) == 8  # each of the 4 ways with each of the 2 that cross it
+    for combination in ways.combinations:
+        routes = ways.routes(dict(zip(ways.paths, (ways.labels[t] for t in combination))))
+        assert [m.kind for m in conflicts(routes)] == ["crossing"]
     with pytest.raises(MapError, match="no turns of the map go together as the scenario asks"):
         # a left turn into the road another turns left out of, both from that road: no such pair
-        choose_turns(
-            road_map, 1, 200.0, (TurnAsk("left", None, None, "r", None), TurnAsk("left", None, None, "r", "r"))
+        choose_ways(
+            road_map, 1, 200.0, (TurnAsk("left", None, None, "r", None), TurnAsk("left", None, None, "r", "r")), none
         )
 
 

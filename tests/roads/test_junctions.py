@@ -10,16 +10,22 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from pytest_roadlogic.roads.choice import pick_route
+from pytest_roadlogic.roads.asks import TurnAsk
 from pytest_roadlogic.roads.junctions import direction, turns
 from pytest_roadlogic.roads.opendrive_in import MapError, read_map
 from pytest_roadlogic.roads.route import MAX_LATERAL_ACCELERATION
+from pytest_roadlogic.roads.ways import choose_ways
 from tests.roads.map_files import recipe, write
 from tests.roads.test_roads import same_document
 
 ROOT = Path(__file__).resolve().parents[2]
 SUITE = ROOT / "scenarios" / "junctions"
 MAPS = SUITE / "maps"
+
+
+def the_turn(road_map, lanes, length, direction, roads):
+    """The route of the first turn of the kind asked, as a scenario with one path runs it."""
+    return choose_ways(road_map, lanes, length, (TurnAsk(direction, roads),), (frozenset(),)).routes()[0]
 
 
 def test_the_committed_junction_maps_are_what_their_recipe_writes(tmp_path):
@@ -61,7 +67,7 @@ def test_a_four_way_crossing_offers_every_turn_from_every_arm_each_turning_as_it
 
 
 def test_a_turns_route_runs_on_without_a_gap_through_the_junction_in_its_lane():
-    route = pick_route(read_map(MAPS / "crossing.xodr"), 1, 0.0, None, ("left", 4))
+    route = the_turn(read_map(MAPS / "crossing.xodr"), 1, 0.0, "left", 4)
     first, last = route.junction_span
     s = np.arange(0.0, route.length, 0.5)
     x, y, _ = route.pose(s, np.full(len(s), route.width / 2))  # the lane's centre
@@ -74,7 +80,7 @@ def test_a_turns_route_runs_on_without_a_gap_through_the_junction_in_its_lane():
 def test_a_turn_is_driven_no_faster_than_its_lane_lets_a_car_hold_and_only_there():
     road_map = read_map(MAPS / "crossing.xodr")
     for name in ("left", "right"):
-        route = pick_route(road_map, 1, 0.0, None, (name, 4))
+        route = the_turn(road_map, 1, 0.0, name, 4)
         ((first, last, speed),) = route.slow_stretches
         begin, end = route.junction_span
         assert first <= begin + 1.0 and last >= end - 1.0  # the bend is the junction's
@@ -89,12 +95,12 @@ def test_a_turn_is_driven_no_faster_than_its_lane_lets_a_car_hold_and_only_there
 def test_a_turn_the_map_lacks_is_refused_with_the_junctions_and_their_turns():
     road_map = read_map(MAPS / "t_junction.xodr")
     with pytest.raises(MapError) as refused:
-        pick_route(road_map, 1, 0.0, None, ("left", 4))
+        the_turn(road_map, 1, 0.0, "left", 4)
     message = refused.value.message
     assert message.startswith("no left turn at a junction of 4 roads in the map: junction 100 ('t-junction'), 3 roads:")
     assert "right from road 1 into road 2" in message and "straight from road 3 into road 1" in message
     with pytest.raises(MapError, match="no U-turn at a junction"):
-        pick_route(road_map, 1, 0.0, None, ("uturn", None))
+        the_turn(road_map, 1, 0.0, "uturn", None)
 
 
 SCENARIO = """\
@@ -188,7 +194,7 @@ def test_the_plot_of_a_turn_draws_every_road_of_its_junction():
 
     from pytest_roadlogic.artifacts.plot import _junction_roads
 
-    route = pick_route(read_map(MAPS / "crossing.xodr"), 1, 0.0, None, ("right", 4))
+    route = the_turn(read_map(MAPS / "crossing.xodr"), 1, 0.0, "right", 4)
     figure, axes = plt.subplots()
     try:
         _junction_roads(axes, route)
@@ -230,7 +236,7 @@ def test_a_car_where_the_simulators_frame_has_no_projection_stands_as_a_fallback
 
 def test_a_turn_the_map_has_but_too_short_for_the_scenario_is_refused_saying_how_long_it_is():
     with pytest.raises(MapError) as refused:
-        pick_route(read_map(MAPS / "crossing.xodr"), 1, 1000.0, None, ("left", 4))
+        the_turn(read_map(MAPS / "crossing.xodr"), 1, 1000.0, "left", 4)
     message = refused.value.message
     assert message.startswith("the map's 4 turns of the kind asked (left from road 2 into road 1,")
     assert message.endswith(

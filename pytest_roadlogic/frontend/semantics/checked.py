@@ -54,6 +54,9 @@ class CheckedScenario:
     # ``route`` first (each route's ``crossers`` are the vehicles that drive it; a vehicle that
     # names none drives ``route``); else ``(route,)`` on a map, () on the straight road
     routes: tuple = field(default=(), compare=False)
+    # the ways its paths may take through the map together (``roads.ways.Ways``), when they turn
+    # at junctions: ``routes`` are the first; a sample may name others (``sampling.guided``)
+    ways: object = field(default=None, compare=False)
 
     @property
     def name(self) -> str:

@@ -32,7 +32,7 @@ from .field_types import FieldTyping
 from .imports import ImportLoading
 from .inheritance import inherited
 from .invocation import RECURSION, called_scenarios, expand_calls, substitute_names
-from .logical import logical_parameters_of
+from .logical import logical_parameters_of, way_parameters
 from .parameters import ParameterSpace, parameter_space
 from .physical import declared_physics, parse_with_declared_units
 from .road_lanes import DEFAULT_LANES, RoadLanes
@@ -161,6 +161,8 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks):
         self.requested_map: Path | None = None  # the map option's file, which wins over a scenario's set_map
         self.route = None  # the route of the scenario being checked on its map (roads.Route), None: the straight road
         self.routes: tuple = ()  # every route of it (CheckedScenario.routes)
+        self.ways = None  # the ways its paths may take through the map (CheckedScenario.ways)
+        self.turn_asks: dict = {}  # its roads_follow_in_junction asks (road_lanes)
         self.map_asked = None  # (the map file a scenario's set_map names, where) while it is checked
         self.route_asks: dict = {}  # path_length / path_curve of the scenario being checked (road_lanes)
         # The road of the scenario being checked, and why it has that many lanes (for error messages).
@@ -272,11 +274,15 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks):
             scenario = self._string_constants(scenario, globals_)
             checked, space, lanes = self._scenario(scenario, globals_)
             try:
-                parameters = logical_parameters_of(checked, space, self.registry)
+                parameters = logical_parameters_of(checked, space, self.registry) + way_parameters(
+                    self.ways, {path: where for path, (_, where) in self.turn_asks.items()}
+                )
             except OscError:
                 parameters = ()  # a scenario with errors is reported, never sampled: the checker said why
             scenarios.append(
-                CheckedScenario(checked, space, lanes, self.registry, self.sources, parameters, self.route, self.routes)
+                CheckedScenario(
+                    checked, space, lanes, self.registry, self.sources, parameters, self.route, self.routes, self.ways
+                )
             )
         self.diagnostics = list(dict.fromkeys(self.diagnostics))
         self.diagnostics.sort(

@@ -109,6 +109,23 @@ def logical_parameters_of(scenario: model.Scenario, space: ParameterSpace, regis
     return tuple(found)
 
 
+WAY = "way through the map"
+
+
+def way_parameters(ways, asked_at: dict[str, SourceLocation]) -> tuple[LogicalParameter, ...]:
+    """A parameter per path of ``ways`` (``roads.ways.Ways``; None: the scenario's paths do not
+    turn) that may take more than one way through the map, named after the path and placed at
+    the ``roads_follow_in_junction`` that ``asked_at`` says asks for its turn: its choices are the
+    ways' labels in the map's order, the first what a run takes when nothing is sampled."""
+    if ways is None:
+        return ()
+    return tuple(
+        LogicalParameter(path, asked_at[path], choices=choices, kind=WAY, places=(asked_at[path],))
+        for path in ways.paths
+        if len(choices := ways.choices(path)) > 1
+    )
+
+
 def _inline_ranges(behavior, registry):
     """(name, Range, resolution or None, kind, places) for every range written in the behavior,
     named after where it stands; its places are the range, its argument and the node it is an

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import dataclasses
 import math
 from pathlib import Path
 
@@ -35,6 +34,7 @@ class RoadLanes:
         its ``path_max_lanes``, so that a file states its road and runs the same from every entry point.
         """
         self.route, self.routes, self.map_asked, self.route_asks = None, (), None, {}
+        self.ways = None  # the ways its paths may take through the map (roads.ways.Ways), when they turn
         self.turn_asks: dict[str, tuple] = {}  # road field -> (roads.asks.TurnAsk, where)
         bounds = self._road_bounds(scenario, env, roads)
         least, most = bounds.get("path_min_driving_lanes"), bounds.get("path_max_lanes")
@@ -126,7 +126,6 @@ class RoadLanes:
         length = (asks["path_length"][0] or 0.0) if "path_length" in asks else 0.0
         curve = asks["path_curve"][:3] if "path_curve" in asks else None
         turn_asks = list(self.turn_asks.values())
-        turn = (turn_asks[0][0].direction, turn_asks[0][0].roads) if len(turn_asks) == 1 else None
         turn_at = turn_asks[-1][1] if turn_asks else None
 
         def refused(where: SourceLocation, error: MapError) -> int:
@@ -138,24 +137,24 @@ class RoadLanes:
             road_map = read_map(path)
         except MapError as error:
             return refused(at, error)
-        if len(turn_asks) > 1:
+        if turn_asks:
             if curve is not None:
                 self.error(
                     asks["path_curve"][3],
-                    "not supported: path_curve() in a scenario of several routes",
-                    "leave it out: the routes are the turns roads_follow_in_junction asks for",
+                    "not supported: path_curve() on a route that turns at a junction",
+                    "leave it out: the route is the turn roads_follow_in_junction asks for",
                 )
                 return needed
             try:
-                return self._routes_of_map(scenario, road_map, needed, length)
+                self._routes_of_map(scenario, road_map, needed, length, at)
             except MapError as error:
                 return refused(turn_at, error)
-        try:
-            self.route = pick_route(road_map, needed, length, curve, turn)
-        except MapError as error:
-            # no route as asked: at the line that asks for a turn, when one does
-            return refused(turn_at if turn is not None else at, error)
-        self.routes = (self.route,)
+        else:
+            try:
+                self.route = pick_route(road_map, needed, length, curve)
+            except MapError as error:
+                return refused(at, error)
+            self.routes = (self.route,)
         lanes = self.route.lanes
         if most and lanes > most[0]:
             self.error(
@@ -181,28 +180,46 @@ class RoadLanes:
                 f"{'lane' if oncoming == 1 else 'lanes'} (a car there drives on the other direction's side of the road)",
                 "give a map with a road of that many lanes one way, unless the scenario passes in the oncoming lane",
             )
-        if self.route.junction_span is not None:
-            self._crossers(scenario, at)
-        self.lanes, self.lanes_origin = lanes, f" (the route on {self.route.name})"
+        self.lanes = lanes
+        self.lanes_origin = (
+            f" (the route on {self.route.name})"
+            if len(self.routes) == 1
+            else f" (the routes on {self.route.source.name})"
+        )
         return lanes
 
-    def _routes_of_map(self, scenario: model.Scenario, road_map, needed: int, length: float) -> int:
-        """The routes of a scenario whose paths turn at junctions of ``road_map`` (several
-        ``roads_follow_in_junction``, one per path): the turns chosen together
-        (``roads.choice.choose_turns``: the junction and roads they name agree), in the order the
-        paths ask for them, each driven by the vehicles whose drive goes ``along`` its path (the
-        first also by those that name none). ``MapError`` from the choice; errors where a vehicle
-        drives along two paths, along a path that does not turn, or is related to a vehicle on
-        another route."""
-        from ...roads.choice import choose_turns, turn_as_route
+    def _routes_of_map(
+        self, scenario: model.Scenario, road_map, needed: int, length: float, at: SourceLocation
+    ) -> None:
+        """The routes of a scenario whose paths turn at junctions of ``road_map``
+        (``roads_follow_in_junction``, one per path), in ``self.route``/``self.routes``: of the ways
+        the paths may take together (``roads.ways.choose_ways``, kept in ``self.ways``: a logical
+        parameter per path that may take several), the first in the map's order. Each route is
+        driven by the vehicles whose drive goes ``along`` its path; with one path, by every vehicle
+        that goes ``along`` a path; with several, the first also by those that name none.
+        ``MapError`` from the choice; errors where a vehicle drives along two paths, along a path
+        that does not turn while others do, or is related to a vehicle on another route."""
+        from ...roads.ways import choose_ways
 
         paths = list(self.turn_asks)
-        chosen = choose_turns(road_map, needed, length, tuple(ask for ask, _ in self.turn_asks.values()))
-        driven = self._paths_driven(scenario, paths)
-        routes = [
-            turn_as_route(road_map, turn, frozenset(v for v, p in driven.items() if p == path))
-            for path, turn in zip(paths, chosen)
-        ]
+        if len(paths) == 1:
+            crossers = (frozenset(actor for actor, _ in _alongs(scenario)),)
+            driven = {}
+        else:
+            driven = self._paths_driven(scenario, paths)
+            crossers = tuple(frozenset(v for v, p in driven.items() if p == path) for path in paths)
+        asks = tuple(ask for ask, _ in self.turn_asks.values())
+        self.ways = choose_ways(road_map, needed, length, asks, crossers)
+        routes = self.ways.routes()
+        self.route, self.routes = routes[0], routes
+        if len(paths) == 1:
+            if not crossers[0]:
+                self.warning(
+                    at,
+                    f"the route turns ({self.route.turn}), but no vehicle drives along it through the junction",
+                    "add along(path) to the drive of each vehicle that takes the turn",
+                )
+            return
         lanes = {route.lanes for route in routes}
         if len(lanes) > 1:
             self.error(
@@ -219,11 +236,7 @@ class RoadLanes:
                     f"no vehicle drives along {path} ({route.turn})",
                     f"add along({path}) to the drive of the vehicle that takes this way, or leave the path out",
                 )
-        self.route, self.routes = routes[0], tuple(routes)
         self._apart(scenario, {v: paths.index(p) for v, p in driven.items()})
-        self.lanes = routes[0].lanes
-        self.lanes_origin = f" (the routes on {routes[0].source.name})"
-        return self.lanes
 
     def _paths_driven(self, scenario: model.Scenario, paths: list[str]) -> dict[str, str]:
         """vehicle -> the path its drive goes ``along`` (each vehicle one path, a path that turns)."""
@@ -289,18 +302,6 @@ class RoadLanes:
                         "relate vehicles on one route, or vehicles of two routes that meet with position(): "
                         "the distance to where their routes meet",
                     )
-
-    def _crossers(self, scenario: model.Scenario, at: SourceLocation) -> None:
-        """On a route that turns at a junction: the vehicles whose drive goes ``along(path)`` drive
-        through it (kept in the route); a warning when none does."""
-        crossers = {actor for actor, _ in _alongs(scenario)}
-        if not crossers:
-            self.warning(
-                at,
-                f"the route turns ({self.route.turn}), but no vehicle drives along it through the junction",
-                "add along(path) to the drive of each vehicle that takes the turn",
-            )
-        self.route = dataclasses.replace(self.route, crossers=frozenset(crossers))
 
     def _road_bounds(
         self, scenario: model.Scenario, env: dict, roads: list[str]
@@ -425,7 +426,7 @@ class RoadLanes:
                 return
             roads = int(value.low)
         ask = TurnAsk(
-            field("direction"), roads, field("junction"), field("in_road"), field("out_road"), path or "the path"
+            field("direction"), roads, field("junction"), field("in_road"), field("out_road"), path or "path"
         )
         self.turn_asks[path] = (ask, modifier.location)
 

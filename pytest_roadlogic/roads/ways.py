@@ -1,0 +1,194 @@
+"""The ways a scenario's paths may take through its map together (``Ways``), found by the
+answer-set solver (``asp/map/ways.lp``) from the standard's ``map.roads_follow_in_junction()``.
+
+Each path asks for a turn of some kind (direction, roads at the junction) and may name fields of
+the scenario as its junction, its road in and its road out: two paths that name one field take
+the same junction or road. Which turns satisfy that is a constraint problem over the map's graph;
+every answer is a way the scenario may run, and the choice among them is a logical parameter of
+the scenario, one per path (``Ways.choices``): sampled, shrunk to the first in the map's order,
+written into the case file by its label ("left from road 2 into road 1 at junction 100") and
+replayed.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from dataclasses import dataclass, field
+
+import clingo
+
+from ..asp_dir import ASP_DIR
+from .asks import TurnAsk
+from .choice import MIN_ROUTE_LENGTH, fitting_turns, turn_as_route
+from .junctions import Turn, describe_junctions, turns
+from .opendrive_in import MapError, RoadMap
+from .route import Route, through_lanes
+
+ENCODING = ASP_DIR / "map" / "ways.lp"
+# answers enumerated at most: a map of many junctions and a scenario that names nothing could
+# have more; the first in the map's order are kept
+MAX_WAYS = 5000
+
+
+class WaysError(ValueError):
+    """Ways of paths that do not go together, or a way a path cannot take (a case file, --values)."""
+
+
+def _key(turn: Turn) -> tuple[str, str, str, str]:
+    return (turn.junction, turn.into.id, turn.inside.id, turn.out_of.id)
+
+
+@dataclass(frozen=True)
+class Ways:
+    """The ways ``paths`` may take together in ``road_map``: ``combinations`` holds, per answer, the
+    index in ``turns`` (the map's turns that fit some path, in the map's order) of each path's
+    turn, in the map's order; the first is the one a scenario runs when nothing is sampled.
+    ``crossers``: per path, the vehicles that drive it."""
+
+    road_map: RoadMap
+    paths: tuple[str, ...]
+    turns: tuple[Turn, ...]
+    labels: tuple[str, ...]  # one per turn, as reports, case files and --values name it
+    combinations: tuple[tuple[int, ...], ...]
+    crossers: tuple[frozenset[str], ...]
+    _built: dict = field(default_factory=dict, compare=False, hash=False, repr=False)
+
+    def choices(self, path: str) -> tuple[str, ...]:
+        """The ways ``path`` takes in some answer, in the map's order."""
+        k = self.paths.index(path)
+        return tuple(self.labels[t] for t in sorted({c[k] for c in self.combinations}))
+
+    def options(self, path: str, drawn: dict[str, str]) -> tuple[str, ...]:
+        """The ways ``path`` may take together with the ways ``drawn`` for other paths."""
+        k = self.paths.index(path)
+        return tuple(self.labels[t] for t in sorted({c[k] for c in self._agreeing(drawn)}))
+
+    def chosen(self, given: dict[str, str]) -> tuple[int, ...]:
+        """The first answer (in the map's order) whose ways are those ``given`` (path -> label; a
+        path not given: any); ``WaysError`` when the ways given do not go together."""
+        for combination in self._agreeing(given):
+            return combination
+        named = ", ".join(f"{path} = {label!r}" for path, label in given.items())
+        raise WaysError(
+            f"{named}: no ways of the map go together so; "
+            + "; ".join(f"{path} takes one of: {', '.join(self.choices(path))}" for path in self.paths)
+        )
+
+    def routes(self, given: dict[str, str] | None = None) -> tuple[Route, ...]:
+        """The routes of the first answer with the ways ``given``, one per path (built once each)."""
+        return tuple(self._route(k, t) for k, t in enumerate(self.chosen(given or {})))
+
+    def _agreeing(self, given: dict[str, str]) -> Iterable[tuple[int, ...]]:
+        wanted = {self.paths.index(path): label for path, label in given.items() if path in self.paths}
+        return (c for c in self.combinations if all(self.labels[c[k]] == label for k, label in wanted.items()))
+
+    def _route(self, k: int, turn: int) -> Route:
+        if (k, turn) not in self._built:
+            self._built[k, turn] = turn_as_route(self.road_map, self.turns[turn], self.crossers[k])
+        return self._built[k, turn]
+
+
+def choose_ways(
+    road_map: RoadMap,
+    lanes: int,
+    length: float,
+    asks: tuple[TurnAsk, ...],
+    crossers: tuple[frozenset[str], ...],
+) -> Ways:
+    """Every way ``asks``' paths may take together in ``road_map`` (``asp/map/ways.lp``): a turn per
+    ask of the kind it names with ``lanes`` driving lanes and ``length`` metres in all
+    (``choice.fitting_turns``), the junction and roads agreeing with the fields the asks share,
+    and, where some choice allows it, every two paths on different turns whose ways meet; else
+    only the first answer that agrees. Answers whose routes' lanes differ from the first's are
+    left out (a scenario has one lane count). ``MapError`` when an ask has no turn of its kind, or
+    no turns of their kinds go together."""
+    length = length or MIN_ROUTE_LENGTH  # room to drive, as pick_route gives a single route
+    fitting = [{_key(t) for t in fitting_turns(road_map, lanes, length, ask)} for ask in asks]
+    offered = [t for t in turns(road_map) if any(_key(t) in keys for keys in fitting)]
+    facts = [f"path({k})." for k in range(len(asks))]
+    for index, turn in enumerate(offered):
+        facts.append(
+            f'at({index},"{turn.junction}"). into({index},"{turn.into.id}"). out_of({index},"{turn.out_of.id}").'
+        )
+        facts += [f"fits({k},{index})." for k, keys in enumerate(fitting) if _key(turn) in keys]
+    for k, ask in enumerate(asks):
+        for kind, name in (("junction", ask.junction), ("in_road", ask.in_road), ("out_road", ask.out_road)):
+            if name is not None:
+                facts.append(f'names({k},"{name}",{kind}).')
+    partial = Ways(road_map, tuple(a.path for a in asks), tuple(offered), (), (), crossers)
+    facts += [f"meets({t},{u})." for t, u in _meeting(partial, asks, fitting)]
+    answers = _solve(facts, together=True) or _solve(facts, together=False)[:1]
+    if not answers:
+        raise MapError(
+            road_map.path,
+            "no turns of the map go together as the scenario asks ("
+            + "; ".join(ask.describe() for ask in asks)
+            + f"): {describe_junctions(road_map)}",
+            "name in roads_follow_in_junction only the junction and roads two turns must share, or give a map with such a junction",
+        )
+    lanes_of = [min(through_lanes(t.into)[1], through_lanes(t.out_of)[1]) for t in offered]
+    answers = [a for a in answers if [lanes_of[t] for t in a] == [lanes_of[t] for t in answers[0]]]
+    return Ways(road_map, partial.paths, partial.turns, _labels(offered), tuple(answers), crossers, partial._built)
+
+
+def _meeting(ways: Ways, asks: tuple[TurnAsk, ...], fitting: list[set]) -> list[tuple[int, int]]:
+    """The pairs of ``ways.turns`` (t < u) that two different paths could take together (each fits
+    its path, and they agree on the fields both paths name) and whose ways meet."""
+    from .conflicts import meetings_of
+
+    keys = [_key(t) for t in ways.turns]
+    found: set[tuple[int, int]] = set()
+    tried: set[tuple[int, int]] = set()
+    for p in range(len(asks)):
+        for q in range(p + 1, len(asks)):
+            for t, key_t in enumerate(keys):
+                if key_t not in fitting[p]:
+                    continue
+                for u, key_u in enumerate(keys):
+                    pair = (min(t, u), max(t, u))
+                    if u == t or key_u not in fitting[q] or pair in tried:
+                        continue
+                    if not _agree(asks[p], ways.turns[t], asks[q], ways.turns[u]):
+                        continue
+                    tried.add(pair)
+                    if meetings_of(0, ways._route(p, t), 1, ways._route(q, u)):
+                        found.add(pair)
+    return sorted(found)
+
+
+def _fields(ask: TurnAsk, turn: Turn) -> dict[str, tuple[str, str]]:
+    """The values ``turn`` gives the fields ``ask`` names."""
+    given = (
+        (ask.junction, ("junction", turn.junction)),
+        (ask.in_road, ("road", turn.into.id)),
+        (ask.out_road, ("road", turn.out_of.id)),
+    )
+    return {name: value for name, value in given if name is not None}
+
+
+def _agree(ask: TurnAsk, turn: Turn, other_ask: TurnAsk, other: Turn) -> bool:
+    mine, theirs = _fields(ask, turn), _fields(other_ask, other)
+    return all(theirs.get(name, value) == value for name, value in mine.items())
+
+
+def _solve(facts: list[str], together: bool) -> list[tuple[int, ...]]:
+    """The answers of ``asp/map/ways.lp`` on ``facts`` (each path's turn index), in the map's order."""
+    control = clingo.Control([str(MAX_WAYS), "--warn=none"])
+    control.load(str(ENCODING))
+    control.add("base", [], "\n".join(facts))
+    control.ground([("base", [])])
+    control.assign_external(clingo.Function("together"), together)
+    answers = []
+    with control.solve(yield_=True) as handle:
+        for model in handle:
+            ways = sorted((a.arguments[0].number, a.arguments[1].number) for a in model.symbols(shown=True))
+            answers.append(tuple(t for _, t in ways))
+    return sorted(answers)
+
+
+def _labels(offered: list[Turn]) -> tuple[str, ...]:
+    """Each turn's label: what it is and where, with its connecting road where two are alike."""
+    plain = [f"{t.describe()} at junction {t.junction}" for t in offered]
+    return tuple(
+        label if plain.count(label) == 1 else f"{label} via road {t.inside.id}" for label, t in zip(plain, offered)
+    )
