@@ -51,7 +51,8 @@ class Ways:
     labels: tuple[str, ...]  # one per turn, as reports, case files and --values name it
     combinations: tuple[tuple[int, ...], ...]
     crossers: tuple[frozenset[str], ...]
-    _built: dict = field(default_factory=dict, compare=False, hash=False, repr=False)
+    # (path index, turn index) -> its route, built when first asked for (``route_of``)
+    built: dict = field(default_factory=dict, compare=False, hash=False, repr=False)
 
     def choices(self, path: str) -> tuple[str, ...]:
         """The ways ``path`` takes in some answer, in the map's order."""
@@ -68,24 +69,36 @@ class Ways:
         path not given: any); ``WaysError`` when the ways given do not go together."""
         for combination in self._agreeing(given):
             return combination
-        named = ", ".join(f"{path} = {label!r}" for path, label in given.items())
-        raise WaysError(
-            f"{named}: no ways of the map go together so; "
-            + "; ".join(f"{path} takes one of: {', '.join(self.choices(path))}" for path in self.paths)
-        )
+        # the first path, in the scenario's order, whose way does not go with those before it
+        before: dict[str, str] = {}
+        for path in self.paths:
+            if path not in given:
+                continue
+            options = self.options(path, before)
+            if given[path] not in options:
+                unknown = given[path] not in self.choices(path)
+                why = (
+                    "is no way it may take"
+                    if unknown or not before
+                    else f"does not go with {', '.join(f'{p} = {v!r}' for p, v in before.items())}"
+                )
+                raise WaysError(f"{path} = {given[path]!r} {why}; it may take: {', '.join(options)}")
+            before[path] = given[path]
+        raise WaysError(f"no ways of the map go together as {given!r} name them")
 
     def routes(self, given: dict[str, str] | None = None) -> tuple[Route, ...]:
         """The routes of the first answer with the ways ``given``, one per path (built once each)."""
-        return tuple(self._route(k, t) for k, t in enumerate(self.chosen(given or {})))
+        return tuple(self.route_of(k, t) for k, t in enumerate(self.chosen(given or {})))
 
     def _agreeing(self, given: dict[str, str]) -> Iterable[tuple[int, ...]]:
         wanted = {self.paths.index(path): label for path, label in given.items() if path in self.paths}
         return (c for c in self.combinations if all(self.labels[c[k]] == label for k, label in wanted.items()))
 
-    def _route(self, k: int, turn: int) -> Route:
-        if (k, turn) not in self._built:
-            self._built[k, turn] = turn_as_route(self.road_map, self.turns[turn], self.crossers[k])
-        return self._built[k, turn]
+    def route_of(self, k: int, turn: int) -> Route:
+        """The route of path ``k`` (driven by its ``crossers``) along ``turns[turn]``."""
+        if (k, turn) not in self.built:
+            self.built[k, turn] = turn_as_route(self.road_map, self.turns[turn], self.crossers[k])
+        return self.built[k, turn]
 
 
 def choose_ways(
@@ -128,7 +141,7 @@ def choose_ways(
         )
     lanes_of = [min(through_lanes(t.into)[1], through_lanes(t.out_of)[1]) for t in offered]
     answers = [a for a in answers if [lanes_of[t] for t in a] == [lanes_of[t] for t in answers[0]]]
-    return Ways(road_map, partial.paths, partial.turns, _labels(offered), tuple(answers), crossers, partial._built)
+    return Ways(road_map, partial.paths, partial.turns, _labels(offered), tuple(answers), crossers, partial.built)
 
 
 def _meeting(ways: Ways, asks: tuple[TurnAsk, ...], fitting: list[set]) -> list[tuple[int, int]]:
@@ -151,7 +164,7 @@ def _meeting(ways: Ways, asks: tuple[TurnAsk, ...], fitting: list[set]) -> list[
                     if not _agree(asks[p], ways.turns[t], asks[q], ways.turns[u]):
                         continue
                     tried.add(pair)
-                    if meetings_of(0, ways._route(p, t), 1, ways._route(q, u)):
+                    if meetings_of(0, ways.route_of(p, t), 1, ways.route_of(q, u)):
                         found.add(pair)
     return sorted(found)
 

@@ -425,9 +425,7 @@ class RoadLanes:
                 )
                 return
             roads = int(value.low)
-        ask = TurnAsk(
-            field("direction"), roads, field("junction"), field("in_road"), field("out_road"), path or "path"
-        )
+        ask = TurnAsk(field("direction"), roads, field("junction"), field("in_road"), field("out_road"), path or "path")
         self.turn_asks[path] = (ask, modifier.location)
 
     def _route_ask(self, modifier: model.Modifier, binding, env: dict, before: int) -> None:

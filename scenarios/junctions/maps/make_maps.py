@@ -8,6 +8,9 @@ scenariogeneration builds (clothoid-arc-clothoid turns, both directions of trave
   road 1 from the west); every turn from every arm (left, straight on, right).
 - ``t_junction.xodr``: a T-junction: a through road (roads 1 and 3, west and east) and a side road
   from the south (road 2); every turn.
+- ``town.xodr``: the two in one street: the crossing (junction 100, roads 1 to 4 as above) and,
+  road 3 on from its east, the T-junction (junction 200: road 3 from its west, road 5 from the
+  south, road 6 from the east), so that a scenario may leave the junction to the solver.
 
 A turn's radius is about 14 m at the lanes' centres (a car holds it at 19-20 kph at 2 m/s^2 of
 lateral acceleration). The files are committed; run this to write them anew (``tests/roads``
@@ -44,22 +47,27 @@ def _arm(road_id: int) -> xodr.Road:
     return road
 
 
-def _junction(name: str, angles: list[float]) -> xodr.OpenDrive:
-    """Arms at ``angles`` (radians, counter-clockwise from the west) around one junction, each
-    arm's end (its successor) at the junction, every pair of arms connected both ways."""
-    creator = xodr.CommonJunctionCreator(100, name)
-    arms = []
-    for number, angle in enumerate(angles, start=1):
-        arm = _arm(number)
-        creator.add_incoming_road_circular_geometry(arm, JUNCTION_RADIUS, angle, "successor")
-        arms.append(arm)
-    for first in range(1, len(angles) + 1):
-        for second in range(first + 1, len(angles) + 1):
+def _creator(junction: int, name: str, arms: dict[int, tuple[xodr.Road, float, str]]) -> xodr.CommonJunctionCreator:
+    """Junction ``junction`` with its ``arms`` (road id -> the road, its angle in radians
+    counter-clockwise from the west, the road's end at the junction: ``successor`` or
+    ``predecessor``), every pair of arms connected both ways; its connecting roads numbered from
+    the junction's id."""
+    creator = xodr.CommonJunctionCreator(junction, name, startnum=junction)
+    for road, angle, end in arms.values():
+        creator.add_incoming_road_circular_geometry(road, JUNCTION_RADIUS, angle, end)
+    ids = sorted(arms)
+    for k, first in enumerate(ids):
+        for second in ids[k + 1 :]:
             creator.add_connection(first, second)
+    return creator
+
+
+def _opendrive(name: str, roads: list[xodr.Road], creators: list[xodr.CommonJunctionCreator]) -> xodr.OpenDrive:
     opendrive = xodr.OpenDrive(f"pytest-roadlogic {name}")
-    for arm in arms:
-        opendrive.add_road(arm)
-    opendrive.add_junction_creator(creator)
+    for road in roads:
+        opendrive.add_road(road)
+    for creator in creators:
+        opendrive.add_junction_creator(creator)
     # the connecting roads the creator builds have no elevation record; ASAM's checker requires one
     for road in opendrive.roads.values():
         if not road.elevationprofile.elevations:
@@ -68,11 +76,30 @@ def _junction(name: str, angles: list[float]) -> xodr.OpenDrive:
     return opendrive
 
 
+def _junction(name: str, angles: list[float]) -> xodr.OpenDrive:
+    """Arms at ``angles`` (radians, counter-clockwise from the west) around one junction, each
+    arm's end (its successor) at the junction."""
+    arms = {number: (_arm(number), angle, "successor") for number, angle in enumerate(angles, start=1)}
+    return _opendrive(name, [road for road, _, _ in arms.values()], [_creator(100, name, arms)])
+
+
+def _town() -> xodr.OpenDrive:
+    """The crossing and the T-junction one street apart: road 3 leaves the T-junction westwards
+    (its start there) and ends at the crossing."""
+    roads = {number: _arm(number) for number in range(1, 7)}
+    west, south, east, north = 0.0, math.pi / 2, math.pi, 3 * math.pi / 2
+    crossing = {n: (roads[n], angle, "successor") for n, angle in ((1, west), (2, south), (3, east), (4, north))}
+    tee = {3: (roads[3], west, "predecessor"), 5: (roads[5], south, "successor"), 6: (roads[6], east, "successor")}
+    creators = [_creator(100, "crossing", crossing), _creator(200, "t-junction", tee)]
+    return _opendrive("town", list(roads.values()), creators)
+
+
 def maps() -> dict[str, xodr.OpenDrive]:
     """Every map by file name."""
     return {
         "crossing.xodr": _junction("crossing", [0.0, math.pi / 2, math.pi, 3 * math.pi / 2]),
         "t_junction.xodr": _junction("t-junction", [0.0, math.pi / 2, math.pi]),
+        "town.xodr": _town(),
     }
 
 

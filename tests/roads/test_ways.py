@@ -1,0 +1,138 @@
+"""The ways a scenario's paths take through its map, from the standard's roads_follow_in_junction():
+the solver's answers are exactly the turns that agree on the fields the paths share and whose
+ways meet; each path's way is a logical parameter, drawn only among the ways that go with those
+drawn before it, shrunk to the first in the map's order, refused with the ways it may take, and
+driven by a run as the sample names it."""
+
+from __future__ import annotations
+
+import itertools
+from pathlib import Path
+
+import numpy as np
+import pytest
+from hypothesis import HealthCheck, find, given, settings
+from hypothesis import strategies as st
+
+from pytest_roadlogic.frontend import load_file
+from pytest_roadlogic.frontend.semantics.logical import WAY
+from pytest_roadlogic.roads.asks import TurnAsk
+from pytest_roadlogic.roads.choice import fitting_turns, turn_as_route
+from pytest_roadlogic.roads.conflicts import meetings_of
+from pytest_roadlogic.roads.opendrive_in import read_map
+from pytest_roadlogic.roads.ways import choose_ways
+from pytest_roadlogic.runner import Runner, replay
+from pytest_roadlogic.sampling import UnknownParameter, on_ways, strategy
+from pytest_roadlogic.settings import RunSettings
+
+ROOT = Path(__file__).resolve().parents[2]
+TOWN = ROOT / "scenarios" / "junctions" / "maps" / "town.xodr"
+TOWN_SCENARIO = ROOT / "scenarios" / "junctions" / "turn_at_a_junction_of_the_town.osc"
+
+
+@pytest.fixture(scope="module")
+def town():
+    return load_file(TOWN_SCENARIO).scenario_to_run(None)
+
+
+def test_the_solver_answers_every_pair_of_turns_at_one_junction_whose_ways_meet_and_no_other():
+    road_map = read_map(TOWN)
+    asks = (TurnAsk(junction="j", path="a"), TurnAsk(junction="j", path="b"))
+    ways = choose_ways(road_map, 1, 200.0, asks, (frozenset(), frozenset()))
+    # brute force, from the definition: two different turns of one junction whose routes meet
+    offered = fitting_turns(road_map, 1, 200.0, TurnAsk())
+    routes = {id(t): turn_as_route(road_map, t) for t in offered}
+    expected = {
+        (first.describe(), first.junction, second.describe(), second.junction)
+        for first, second in itertools.permutations(offered, 2)
+        if first.junction == second.junction and meetings_of(0, routes[id(first)], 1, routes[id(second)])
+    }
+    answered = {
+        (ways.turns[a].describe(), ways.turns[a].junction, ways.turns[b].describe(), ways.turns[b].junction)
+        for a, b in ways.combinations
+    }
+    assert answered == expected
+    assert {junction for _, junction, _, _ in answered} == {"100", "200"}  # the town's two junctions
+    assert list(ways.combinations) == sorted(ways.combinations)  # in the map's order, the first the default
+
+
+def test_a_path_that_may_take_several_ways_is_a_logical_parameter_at_its_roads_follow_in_junction(town):
+    ways = {p.name: p for p in town.parameters if p.kind == WAY}
+    assert set(ways) == {"ego_path", "other_path"}
+    assert ways["ego_path"].location.line == 11 and ways["other_path"].location.line == 12
+    assert len(ways["ego_path"].choices) == 18  # every turn of the town's two junctions
+    # unsampled, a run takes the first answer
+    assert town.route.turn == "left from road 2 into road 1 at junction 100"
+
+
+@settings(max_examples=60, deadline=None, suppress_health_check=list(HealthCheck))
+@given(data=st.data())
+def test_every_sample_takes_ways_that_go_together(town, data):
+    values = data.draw(strategy(town))
+    chosen = town.ways.chosen({path: values[path] for path in town.ways.paths})
+    assert [town.ways.labels[t] for t in chosen] == [values[path] for path in town.ways.paths]
+
+
+def test_a_failing_way_shrinks_to_the_first_way_of_the_map_that_still_fails(town):
+    # "fails at the T-junction": the simplest such sample is its first turn with the first that meets it
+    values = find(
+        strategy(town),
+        lambda v: v["ego_path"].endswith("junction 200"),
+        settings=settings(database=None, max_examples=500, suppress_health_check=list(HealthCheck)),
+    )
+    assert values["ego_path"] == "left from road 5 into road 3 at junction 200"
+    assert values["other_path"] == "straight from road 6 into road 3 at junction 200"
+
+
+def test_a_sample_runs_on_the_routes_of_the_ways_it_names_and_a_way_that_does_not_fit_is_refused(town):
+    on_t = on_ways(
+        town,
+        {
+            "ego_path": "straight from road 3 into road 6 at junction 200",
+            "other_path": "left from road 6 into road 5 at junction 200",
+        },
+    )
+    assert [r.turn for r in on_t.routes] == [
+        "straight from road 3 into road 6 at junction 200",
+        "left from road 6 into road 5 at junction 200",
+    ]
+    assert on_t.routes[0].crossers == frozenset({"ego"}) and on_t.routes[1].crossers == frozenset({"other"})
+    # one path named: the other takes the first way that goes with it
+    assert on_ways(town, {"ego_path": "right from road 5 into road 6 at junction 200"}).routes[1].turn == (
+        "left from road 5 into road 3 at junction 200"
+    )
+    with pytest.raises(UnknownParameter, match="ego_path = 'a U-turn' is not one of"):
+        on_ways(town, {"ego_path": "a U-turn"})
+    with pytest.raises(
+        UnknownParameter,
+        match=r"other_path = 'left from road 2 into road 1 at junction 100' does not go with ego_path = "
+        r"'straight from road 3 into road 6 at junction 200'; it may take: left from road 5 into road 3 at junction 200,",
+    ):
+        on_ways(
+            town,
+            {
+                "ego_path": "straight from road 3 into road 6 at junction 200",
+                "other_path": "left from road 2 into road 1 at junction 100",
+            },
+        )
+
+
+def test_a_case_on_ways_the_sample_names_is_driven_there_and_replays_exactly(town, tmp_path):
+    values = {
+        "ego_path": "straight from road 3 into road 6 at junction 200",
+        "other_path": "left from road 6 into road 5 at junction 200",
+        "parallel.duration": 15.0,
+        "other.drive.speed.speed": 7.0,
+    }
+    runner = Runner(town, RunSettings(seed=1))
+    result = runner.run_case(runner.case(strategy="refined", values=values))
+    assert result.kind == "accepted"
+    road = result.run.simulation.road_of("other")
+    assert road.route.turn == "left from road 6 into road 5 at junction 200"
+    # the way is written into the case file by its label, and read back
+    again = replay(type(result.case).load(result.case.save(tmp_path / "case.json")))
+    assert again.case.values == values
+    first, second = result.run.simulation.trace, again.run.simulation.trace
+    assert set(first.actors) == set(second.actors) and np.array_equal(first.times, second.times)
+    for actor, signals in first.actors.items():
+        assert all(np.array_equal(values, second.actors[actor][name]) for name, values in signals.items())
