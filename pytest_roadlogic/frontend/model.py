@@ -201,6 +201,8 @@ class Modifier:
     arguments: tuple[Argument, ...]
     location: SourceLocation
     actor: str | None = None  # ``v1.lane(...)`` names the actor explicitly
+    # ``my_mod: map.roads_follow_in_junction(...)``: the name its results are read by (``my_mod.resulting_route``)
+    label: str | None = None
 
     def argument(self, name: str) -> Argument | None:
         return argument_named(self.arguments, name)

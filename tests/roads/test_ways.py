@@ -58,9 +58,9 @@ def test_the_solver_answers_every_pair_of_turns_at_one_junction_whose_ways_meet_
 
 def test_a_path_that_may_take_several_ways_is_a_logical_parameter_at_its_roads_follow_in_junction(town):
     ways = {p.name: p for p in town.parameters if p.kind == WAY}
-    assert set(ways) == {"ego_path", "other_path"}
-    assert ways["ego_path"].location.line == 11 and ways["other_path"].location.line == 12
-    assert len(ways["ego_path"].choices) == 18  # every turn of the town's two junctions
+    assert set(ways) == {"ego_way", "other_way"}
+    assert ways["ego_way"].location.line == 11 and ways["other_way"].location.line == 12
+    assert len(ways["ego_way"].choices) == 18  # every turn of the town's two junctions
     # unsampled, a run takes the first answer
     assert town.route.turn == "left from road 2 into road 1 at junction 100"
 
@@ -77,19 +77,19 @@ def test_a_failing_way_shrinks_to_the_first_way_of_the_map_that_still_fails(town
     # "fails at the T-junction": the simplest such sample is its first turn with the first that meets it
     values = find(
         strategy(town),
-        lambda v: v["ego_path"].endswith("junction 200"),
+        lambda v: v["ego_way"].endswith("junction 200"),
         settings=settings(database=None, max_examples=500, suppress_health_check=list(HealthCheck)),
     )
-    assert values["ego_path"] == "left from road 5 into road 3 at junction 200"
-    assert values["other_path"] == "straight from road 6 into road 3 at junction 200"
+    assert values["ego_way"] == "left from road 5 into road 3 at junction 200"
+    assert values["other_way"] == "straight from road 6 into road 3 at junction 200"
 
 
 def test_a_sample_runs_on_the_routes_of_the_ways_it_names_and_a_way_that_does_not_fit_is_refused(town):
     on_t = on_ways(
         town,
         {
-            "ego_path": "straight from road 3 into road 6 at junction 200",
-            "other_path": "left from road 6 into road 5 at junction 200",
+            "ego_way": "straight from road 3 into road 6 at junction 200",
+            "other_way": "left from road 6 into road 5 at junction 200",
         },
     )
     assert [r.turn for r in on_t.routes] == [
@@ -98,29 +98,29 @@ def test_a_sample_runs_on_the_routes_of_the_ways_it_names_and_a_way_that_does_no
     ]
     assert on_t.routes[0].crossers == frozenset({"ego"}) and on_t.routes[1].crossers == frozenset({"other"})
     # one path named: the other takes the first way that goes with it
-    assert on_ways(town, {"ego_path": "right from road 5 into road 6 at junction 200"}).routes[1].turn == (
+    assert on_ways(town, {"ego_way": "right from road 5 into road 6 at junction 200"}).routes[1].turn == (
         "left from road 5 into road 3 at junction 200"
     )
-    with pytest.raises(UnknownParameter, match="ego_path = 'a U-turn' is not one of"):
-        on_ways(town, {"ego_path": "a U-turn"})
+    with pytest.raises(UnknownParameter, match="ego_way = 'a U-turn' is not one of"):
+        on_ways(town, {"ego_way": "a U-turn"})
     with pytest.raises(
         UnknownParameter,
-        match=r"other_path = 'left from road 2 into road 1 at junction 100' does not go with ego_path = "
+        match=r"other_way = 'left from road 2 into road 1 at junction 100' does not go with ego_way = "
         r"'straight from road 3 into road 6 at junction 200'; it may take: left from road 5 into road 3 at junction 200,",
     ):
         on_ways(
             town,
             {
-                "ego_path": "straight from road 3 into road 6 at junction 200",
-                "other_path": "left from road 2 into road 1 at junction 100",
+                "ego_way": "straight from road 3 into road 6 at junction 200",
+                "other_way": "left from road 2 into road 1 at junction 100",
             },
         )
 
 
 def test_a_case_on_ways_the_sample_names_is_driven_there_and_replays_exactly(town, tmp_path):
     values = {
-        "ego_path": "straight from road 3 into road 6 at junction 200",
-        "other_path": "left from road 6 into road 5 at junction 200",
+        "ego_way": "straight from road 3 into road 6 at junction 200",
+        "other_way": "left from road 6 into road 5 at junction 200",
         "parallel.duration": 15.0,
         "other.drive.speed.speed": 7.0,
     }
@@ -136,3 +136,75 @@ def test_a_case_on_ways_the_sample_names_is_driven_there_and_replays_exactly(tow
     assert set(first.actors) == set(second.actors) and np.array_equal(first.times, second.times)
     for actor, signals in first.actors.items():
         assert all(np.array_equal(values, second.actors[actor][name]) for name, values in signals.items())
+
+
+AS_THE_STANDARD_WRITES_IT = """scenario left_turn_across_oncoming:
+    map: map
+    crossing: junction
+    approach: road
+    map.set_map("crossing.xodr")
+    ego_turn: map.roads_follow_in_junction(junction: crossing, in_road: approach, direction: left)
+    oncoming_way: map.roads_follow_in_junction(junction: crossing, out_road: approach, direction: straight)
+    ego: car
+    oncoming: car
+    do parallel(duration: [14s..20s]):
+        ego.drive() with:
+            along(ego_turn.resulting_route)
+        oncoming.drive() with:
+            along(oncoming_way.resulting_route)
+            speed([30kph..50kph])
+"""
+
+
+def _standard_file(folder: Path, text: str) -> Path:
+    (folder / "crossing.xodr").write_bytes((TOWN.parent / "crossing.xodr").read_bytes())
+    path = folder / "turns.osc"
+    path.write_text(text)
+    return path
+
+
+def test_a_labelled_roads_follow_in_junction_is_a_way_its_resulting_route_is_driven_along(tmp_path):
+    checked = load_file(_standard_file(tmp_path, AS_THE_STANDARD_WRITES_IT)).scenario_to_run(None)
+    assert checked.ways.paths == ("ego_turn", "oncoming_way")
+    assert [r.crossers for r in checked.routes] == [{"ego"}, {"oncoming"}]
+    ego, oncoming = (ways.turns[t] for ways in (checked.ways,) for t in ways.combinations[0])
+    # the oncoming way leaves the junction on the road the left turn comes in on, as the fields say
+    assert ego.direction == "left" and oncoming.direction == "straight" and oncoming.out_of.id == ego.into.id
+    assert {p.name for p in checked.parameters if p.kind == WAY} == {"ego_turn", "oncoming_way"}
+
+
+@pytest.mark.parametrize(
+    "change, message",
+    [
+        (
+            ("    map.set_map", "    lanes_asked: map.path_min_driving_lanes(1)\n    map.set_map"),
+            r"turns.osc:5:22: error: not supported: a label on path_min_driving_lanes\(\)",
+        ),
+        (
+            ("along(ego_turn.resulting_route)", "along(ego_turn.junction_route)"),
+            r"turns.osc:12:19: error: not supported: ego_turn.junction_route: a vehicle drives along "
+            r"ego_turn.resulting_route",
+        ),
+        (
+            ("            speed([30kph", "            fast: speed([30kph"),
+            r"turns.osc:15:19: error: not supported: a label on speed\(\) in a with: block",
+        ),
+        (
+            ("ego_turn: map.roads", "approach: map.roads"),
+            r"turns.osc:6:\d+: error: approach is already a field of the scenario",
+        ),
+    ],
+    ids=[
+        "a label on another map modifier",
+        "a route the tool does not read",
+        "a label in a with block",
+        "a label that is a field",
+    ],
+)
+def test_a_label_the_tool_cannot_read_is_refused_at_its_line(tmp_path, change, message):
+    from pytest_roadlogic.frontend import OscError
+    from pytest_roadlogic.pipeline import load_scenario
+
+    text = AS_THE_STANDARD_WRITES_IT.replace(*change)
+    with pytest.raises(OscError, match=message):
+        load_scenario(_standard_file(tmp_path, text))

@@ -177,6 +177,9 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks):
         self.units: dict[str, tuple[str | None, float]] = UNITS  # what imported files are parsed with
         self.physical_types: dict[str, str | None] = dict(library.PHYSICAL_TYPES)
         self.roads: set[str] = set()  # the road fields of the scenario being checked
+        # the labels of its map modifiers (``my_turn: map.roads_follow_in_junction(...)``): each a
+        # path, driven as ``along(my_turn.resulting_route)``
+        self.turn_labels: set[str] = set()
         # its fields of the map's elements (``j: junction``, ``r1: road``): name -> type
         self.map_elements: dict[str, str] = {}
         self.shadowed: set[tuple[str, str]] = set()  # (parameter, enum) already warned of, once each
@@ -435,6 +438,9 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks):
             elif kind == "map_element":
                 self.map_elements[item.name] = item.type
         self.roads = set(roads)
+        self.turn_labels = {
+            m.label for m in scenario.modifiers if m.label is not None and m.name == "roads_follow_in_junction"
+        }
         for implicit in library.IMPLICIT_VEHICLES:
             if implicit not in declared and _mentions(scenario, implicit):
                 actors.append(model.Actor(implicit, "vehicle", scenario.location, "vehicle"))
@@ -617,6 +623,13 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks):
                         "declare it as a car if it should move",
                     )
         for modifier in node.modifiers:
+            if modifier.label is not None:
+                self.error(
+                    modifier.location,
+                    f"not supported: a label on {modifier.name}() in a with: block",
+                    "leave the label out; a label names a map modifier's results: "
+                    "my_turn: map.roads_follow_in_junction(...), then along(my_turn.resulting_route)",
+                )
             if modifier.actor is not None and modifier.actor != actor:
                 self.error(
                     modifier.location,
@@ -759,12 +772,22 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks):
                 )
             return
         if kind == "road":
-            if not isinstance(value, model.Name) or value.name not in self.roads:
+            if isinstance(value, model.Name) and self._route_named(value.name) is not None:
+                return
+            owner = value.name.split(".")[0] if isinstance(value, model.Name) else ""
+            if owner in self.turn_labels:
                 self.error(
                     value.location,
-                    f"{parameter.name}: takes the scenario's road",
-                    f"declare one: path: {library.ROAD_TYPE}",
+                    f"not supported: {value.name}: a vehicle drives along {owner}.resulting_route "
+                    "(the road in, the way through the junction and the road out)",
+                    f"drive along({owner}.resulting_route)",
                 )
+                return
+            self.error(
+                value.location,
+                f"{parameter.name}: takes the scenario's road",
+                f"declare one: path: {library.ROAD_TYPE}",
+            )
             return
         if kind.startswith("enum:"):
             enum = kind[5:]

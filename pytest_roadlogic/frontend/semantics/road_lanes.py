@@ -238,27 +238,37 @@ class RoadLanes:
                 )
         self._apart(scenario, {v: paths.index(p) for v, p in driven.items()})
 
+    def _route_named(self, name: str) -> str | None:
+        """The path a vehicle drives ``along(name)``: a road field, or the route a labelled
+        ``roads_follow_in_junction`` results in (``my_turn.resulting_route``: the path
+        ``my_turn``); None when ``name`` is neither."""
+        if name in self.roads:
+            return name
+        label, _, member = name.partition(".")
+        return label if member == "resulting_route" and label in self.turn_labels else None
+
     def _paths_driven(self, scenario: model.Scenario, paths: list[str]) -> dict[str, str]:
         """vehicle -> the path its drive goes ``along`` (each vehicle one path, a path that turns)."""
         driven: dict[str, tuple[str, SourceLocation]] = {}
         for actor, modifier in _alongs(scenario):
             value = modifier.arguments[0].value if modifier.arguments else None
-            if not isinstance(value, model.Name) or value.name not in self.roads:
+            path = self._route_named(value.name) if isinstance(value, model.Name) else None
+            if path is None:
                 continue  # reported where along() is checked
-            if value.name not in paths:
+            if path not in paths:
                 self.error(
                     value.location,
-                    f"{value.name} does not turn at a junction, but the scenario's other paths do",
-                    f"give {value.name} its turn: {value.name}.roads_follow_in_junction(direction: ...)",
+                    f"{path} does not turn at a junction, but the scenario's other paths do",
+                    f"give {path} its turn: {path}.roads_follow_in_junction(direction: ...)",
                 )
-            elif actor in driven and driven[actor][0] != value.name:
+            elif actor in driven and driven[actor][0] != path:
                 self.error(
                     modifier.location,
                     f"{actor} drives along {driven[actor][0]} (line {driven[actor][1].line}): one vehicle drives one route",
                     f"drive it along {driven[actor][0]} here too",
                 )
             else:
-                driven.setdefault(actor, (value.name, modifier.location))
+                driven.setdefault(actor, (path, modifier.location))
         return {vehicle: path for vehicle, (path, _) in driven.items()}
 
     def _apart(self, scenario: model.Scenario, route_of: dict[str, int]) -> None:
@@ -308,7 +318,23 @@ class RoadLanes:
     ) -> dict[str, tuple[int, SourceLocation]]:
         """The lane bounds the scenario's road modifiers state, by modifier name; other scenario-wide modifiers are refused."""
         bounds: dict[str, tuple[int, SourceLocation]] = {}
+        fields = {f.name for f in scenario.fields}
         for modifier in scenario.modifiers:
+            if modifier.label is not None and modifier.name != "roads_follow_in_junction":
+                self.error(
+                    modifier.location,
+                    f"not supported: a label on {modifier.name}()",
+                    "leave the label out; the tool reads a label on map.roads_follow_in_junction(...), "
+                    "whose resulting_route a vehicle drives along",
+                )
+                continue
+            if modifier.label is not None and modifier.label in fields:
+                self.error(
+                    modifier.location,
+                    f"{modifier.label} is already a field of the scenario",
+                    "give the modifier a label of its own",
+                )
+                continue
             on_road = modifier.actor in roads or (modifier.actor is None and modifier.name in library.ROAD_MODIFIERS)
             if not on_road:
                 if modifier.name == "set_position" and modifier.actor is not None and scenario.actor(modifier.actor):
@@ -400,7 +426,7 @@ class RoadLanes:
         ``self.turn_asks`` (path -> (``roads.asks.TurnAsk``, where)), in the order given."""
         if any(d.severity == "error" for d in self.diagnostics[before:]):
             return
-        path = modifier.actor or ""
+        path = modifier.label or modifier.actor or ""
         if path in self.turn_asks:
             self.error(
                 modifier.location,

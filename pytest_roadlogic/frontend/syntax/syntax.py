@@ -554,6 +554,7 @@ class _Builder:
             self.arguments(ctx.argumentList()),
             self.loc(ctx.target.identifier()[-1]),
             actor=".".join(names[:-1]) or None,
+            label=self.name(ctx.label) if ctx.label is not None else None,
         )
 
     def arguments(self, ctx: P.ArgumentListContext | None) -> tuple[model.Argument, ...]:

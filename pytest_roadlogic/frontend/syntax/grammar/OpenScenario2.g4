@@ -242,8 +242,10 @@ behaviorWithMember
     | untilDirective
     ;
 
+// `lane(same_as: v2)`; labelled as the standard names a map modifier's results:
+// `my_mod: map.roads_follow_in_junction(direction: right)`, then `my_mod.resulting_route`
 modifierInvocation
-    : target=dottedName LPAREN argumentList? RPAREN NEWLINE
+    : (label=identifier COLON)? target=dottedName LPAREN argumentList? RPAREN NEWLINE
     ;
 
 untilDirective
