@@ -132,12 +132,17 @@ def judge(
     )
 
 
+# m/s below which a vehicle stands (waiting to give way)
+STANDING = 0.5
+
+
 def _collision(trace: Trace, vehicle: str, other: str, time: float, in_world: bool = False) -> Collision:
     """Who hit whom: by where ``other`` was relative to ``vehicle`` at the instant of contact (the
     boxes touch on the side along which they overlap least: front or back, else a flank), and, for a
     contact on a flank, which of the two had moved across toward the other in the second before.
     ``in_world``: ``other`` drives another route; where it was is read in the map's coordinates,
-    turned to ``vehicle``'s heading."""
+    turned to ``vehicle``'s heading, and a contact on a flank is ``vehicle``'s failure to give way
+    unless it stood."""
     k = int(np.argmin(np.abs(trace.times - time)))
     me, them = trace.actors[vehicle], trace.actors[other]
     if in_world:
@@ -153,8 +158,12 @@ def _collision(trace: Trace, vehicle: str, other: str, time: float, in_world: bo
         return Collision(time, other, f"{other} ran into {vehicle} from behind", False)
     side = "left" if dy > 0 else "right"
     if in_world:
-        # two ways crossing: the one that hit the other's flank hit it
-        return Collision(time, other, f"{other} ran into {vehicle} from its {side}", False)
+        # two ways crossing at a junction without signs or signals: the vehicle under test gives
+        # way to the car whose way crosses its own (the gap-acceptance rule its reference drivers
+        # keep), so a contact on a flank is its failure to, unless it stood waiting
+        if abs(float(me["speed"][k])) < STANDING:
+            return Collision(time, other, f"{other} ran into {vehicle} standing, from its {side}", False)
+        return Collision(time, other, f"{vehicle} did not give way to {other}, which came from its {side}", True)
     before = max(0, k - int(round(1.0 / max(float(trace.times[1] - trace.times[0]), 1e-9)))) if len(trace) > 1 else k
     # how far each moved across toward the other in the last second
     mine = (me["y"][k] - me["y"][before]) * np.sign(dy)

@@ -256,11 +256,14 @@ def test_a_case_file_written_before_an_oracle_existed_replays_with_that_oracle_o
     assert not off.failed and off.values()["thresholds"]["min_time_headway"] is None
 
 
-def test_a_car_of_another_route_is_never_in_the_path_by_road_coordinates_and_its_hit_is_read_in_the_world():
+def test_a_car_of_another_route_is_never_in_the_path_by_road_coordinates_and_a_crossing_hit_is_the_dut_not_giving_way():
     # the npc drives another way through a junction: 6 m ahead along its own route, in its lane 0
     # too, yet crossing the dut's way in the world from its right
     n = 20
-    columns = {"dut": {"x": [10.0 * k * DT for k in range(n)]}, "npc": {"x": [6.0 + 10.0 * k * DT for k in range(n)]}}
+    columns = {
+        "dut": {"x": [10.0 * k * DT for k in range(n)], "speed": [10.0] * n},
+        "npc": {"x": [6.0 + 10.0 * k * DT for k in range(n)], "speed": [10.0] * n},
+    }
     trace = trace_of(columns, [Incident(1.0, "collision", ("dut", "npc"))])
     for name, (wx, wy, heading) in {"dut": (0.0, 0.0, 0.0), "npc": (1.0, -1.5, math.pi / 2)}.items():
         trace.actors[name]["world_x"] = np.full(n, wx)
@@ -270,4 +273,10 @@ def test_a_car_of_another_route_is_never_in_the_path_by_road_coordinates_and_its
     assert same_route.measured["gap"].value == pytest.approx(6.0 - CAR_LENGTH)
     apart = judge(trace, "dut", apart=frozenset({"npc"}))
     assert apart.measured["gap"].value == math.inf
-    assert not apart.collisions[0].caused and apart.collisions[0].how == "npc ran into dut from its right"
+    # at a junction the vehicle under test gives way to a car crossing its way: moving, it did not
+    (collision,) = apart.collisions
+    assert collision.caused and collision.how == "dut did not give way to npc, which came from its right"
+    # standing short of the crossing, waiting, it was run into
+    trace.actors["dut"]["speed"] = np.zeros(n)
+    (collision,) = judge(trace, "dut", apart=frozenset({"npc"})).collisions
+    assert not collision.caused and collision.how == "npc ran into dut standing, from its right"
