@@ -355,7 +355,7 @@ def _result(case: Case, outcome: SimulatedInstance) -> CaseResult:
     elif word == NOT_EXERCISED and report.hit_by_others:
         why = f"another vehicle ran into {report.vehicle}: " + "; ".join(str(c) for c in report.hit_by_others)
     elif word in (NON_CONFORMANT, NOT_EXERCISED):
-        why = outcome.verdict.explain()
+        why = "\n".join(filter(None, (outcome.verdict.explain(), outcome.simulation.unfollowed())))
     else:
         why = ""
     return CaseResult(case, word, outcome, why, seconds)

@@ -257,6 +257,8 @@ def show(result, out: Path, level: str = "all", drivers: dict[str, str] | None =
     for stage, seconds in result.seconds.items():
         print(f"  {stage:<12} {seconds:7.3f} s")
     print(outcome.verdict.explain())
+    if not outcome.verdict.accepted and (unfollowed := outcome.simulation.unfollowed()):
+        print(f"  {unfollowed}")
     print_unasked(outcome.plan, outcome.automaton, outcome.scenario.registry)
     if outcome.dut is not None:
         print(oracle_line(outcome.dut, len(outcome.simulation.replans)))

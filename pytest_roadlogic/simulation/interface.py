@@ -67,6 +67,11 @@ class GoalRecord:
     reached_at: float | None
 
 
+# the share of a run's steps a vehicle driven without a trajectory of its own makes the run the
+# simulator's failure more than the scenario's (Simulation.unfollowed)
+UNFOLLOWED = 0.25
+
+
 @dataclass
 class Simulation:
     """What a run produced: the trace, the road, and each vehicle's reference (for plots)."""
@@ -82,6 +87,25 @@ class Simulation:
     # the road of each vehicle that drives another route of the map than ``road``'s (a different
     # way through a junction): its trace's x and y are along that road
     side_roads: dict[str, Road] = field(default_factory=dict)
+
+    def unfollowed(self) -> str:
+        """A sentence naming the vehicles the simulator drove without a trajectory of their own
+        (``fallbacks``: held where they were, or on the least bad of unsafe candidates) for at
+        least ``UNFOLLOWED`` of the run's steps; "" when none. Why: a rejection of such a run says
+        more of the simulator than of the scenario, and the report must say so."""
+        steps = max(len(self.trace.times), 1)
+        named = [
+            f"{vehicle} in {count} of {steps} steps"
+            for vehicle, count in self.fallbacks.items()
+            if count >= UNFOLLOWED * steps
+        ]
+        if not named:
+            return ""
+        return (
+            f"the simulator found no trajectory of its own for {' and '.join(named)}, so this run says more of "
+            "the simulator than of the scenario; another backend may drive it (--roadlogic-simulator kinematic, "
+            "or --simulator kinematic on the command line)"
+        )
 
     def road_of(self, vehicle: str) -> Road:
         """The road ``vehicle``'s trace coordinates are on."""

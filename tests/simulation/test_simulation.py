@@ -152,3 +152,17 @@ def test_a_car_not_braking_briskly_follows_its_plan_through_the_last_step():
     reference, positions = braking_to_a_stop(brisk=False)
     assert reference.v([3.5])[0] > 0.5, "the plan's gentle last step, as planned"
     assert reference.s([4.0])[0] == pytest.approx(positions[4])
+
+
+def test_a_run_whose_vehicle_the_simulator_could_not_drive_for_a_quarter_of_it_says_so(simulation):
+    import dataclasses
+
+    _, sim = simulation
+    steps = len(sim.trace.times)
+    assert sim.unfollowed() == ""  # the overtake is driven all along
+    quarter = -(-steps // 4)
+    held = dataclasses.replace(sim, fallbacks={"ego": quarter, "npc": quarter - 1})
+    assert held.unfollowed().startswith(
+        f"the simulator found no trajectory of its own for ego in {quarter} of {steps} steps,"
+    )
+    assert "npc" not in held.unfollowed() and "--roadlogic-simulator kinematic" in held.unfollowed()
