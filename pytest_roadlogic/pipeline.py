@@ -142,6 +142,9 @@ def run_instances(
             seconds["simulation"] += time.perf_counter() - start
             start = time.perf_counter()
             verdict = monitor(specification, simulation.trace)
+            if missed := simulation.turns_not_taken():
+                # along(path) on a route that turns: the car drives through the junction
+                verdict = dataclasses.replace(verdict, accepted=False, incidents=verdict.incidents + missed)
             report = (
                 judge(simulation.trace, dut, under_test.thresholds, _apart(simulation, dut))
                 if dut is not None

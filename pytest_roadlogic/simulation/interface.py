@@ -19,7 +19,7 @@ from ..planning.plan import Plan
 from ..roads.road import Road
 from .driver import Driver, VehicleState
 from .reference import Reference, Waypoint
-from .trace import Trace
+from .trace import Incident, Trace
 
 # vehicle name -> the driver that should drive it, or None for the backend's own
 DriverFactory = Callable[[str], "Driver | None"]
@@ -67,6 +67,9 @@ class GoalRecord:
     reached_at: float | None
 
 
+# m a car's centre may lie inside the junction at the start, or short of its end at the end, of a
+# run in which it takes its turn (the tracking error of a simulated car at the plan's ends)
+TURN_TOLERANCE = 2.0
 # the share of a run's steps a vehicle driven without a trajectory of its own makes the run the
 # simulator's failure more than the scenario's (Simulation.unfollowed)
 UNFOLLOWED = 0.25
@@ -87,6 +90,26 @@ class Simulation:
     # the road of each vehicle that drives another route of the map than ``road``'s (a different
     # way through a junction): its trace's x and y are along that road
     side_roads: dict[str, Road] = field(default_factory=dict)
+
+    def turns_not_taken(self) -> list[Incident]:
+        """An incident for each vehicle that drives along a route turning at a junction (its
+        ``crossers``: ``along(path)``) and did not drive through the junction in the run: its
+        centre short of the junction's first metre at the start and past its last at the end, as
+        the planner plans it (within ``TURN_TOLERANCE``). Why: the monitor reads the scenario's
+        guards, which are positions relative to other cars; whether a car took its turn is a fact
+        of its route, checked here on the trace."""
+        missed = []
+        end = float(self.trace.times[-1]) if len(self.trace.times) else 0.0
+        for vehicle, columns in self.trace.actors.items():
+            road = self.road_of(vehicle)
+            route = road.route
+            if route is None or route.junction_span is None or vehicle not in route.crossers:
+                continue
+            first, last = route.junction_span
+            x = columns["x"] + road.route_shift
+            if x[0] > first + TURN_TOLERANCE or x[-1] < last - TURN_TOLERANCE:
+                missed.append(Incident(end, f"turn not taken ({route.turn})", (vehicle,)))
+        return missed
 
     def unfollowed(self) -> str:
         """A sentence naming the vehicles the simulator drove without a trajectory of their own

@@ -6,6 +6,7 @@ driven by a run as the sample names it."""
 
 from __future__ import annotations
 
+import dataclasses
 import itertools
 from pathlib import Path
 
@@ -129,6 +130,20 @@ def test_a_case_on_ways_the_sample_names_is_driven_there_and_replays_exactly(tow
     assert result.kind == "accepted"
     road = result.run.simulation.road_of("other")
     assert road.route.turn == "left from road 6 into road 5 at junction 200"
+    # each car drove through the junction; one held short of it would not have taken its turn
+    simulation = result.run.simulation
+    assert simulation.turns_not_taken() == []
+    held = {
+        **simulation.trace.actors["other"],
+        "x": np.full(len(simulation.trace.times), simulation.trace.actors["other"]["x"][0]),
+    }
+    short = dataclasses.replace(
+        simulation, trace=dataclasses.replace(simulation.trace, actors={**simulation.trace.actors, "other": held})
+    )
+    (missed,) = short.turns_not_taken()
+    assert (
+        missed.actors == ("other",) and missed.kind == "turn not taken (left from road 6 into road 5 at junction 200)"
+    )
     # the way is written into the case file by its label, and read back
     again = replay(type(result.case).load(result.case.save(tmp_path / "case.json")))
     assert again.case.values == values
