@@ -17,6 +17,7 @@ from typing import Any
 from .automaton import build_automaton
 from .case import Case
 from .frontend import CheckedScenario
+from .frontend.semantics.logical import WAY
 from .outcomes import CANNOT_INSTANTIATE
 from .pipeline import guided_planning
 from .planning import PlannerSettings, settings_for
@@ -75,24 +76,29 @@ class Blame:
         alone has no plan within them even with the other fallbacks; without one, the sample is a
         combination no car can drive and is set aside like any other (follow_then_overtake's long
         passes from far behind to close ahead)."""
-        values = case.values
+        # a way through the map is never to blame: the file asks for a junction of the map, and a
+        # way of it on which the scenario has no plan is no defect of the file; its samples are set
+        # aside, as combinations are
+        ways = {p.name for p in self.scenario.parameters if p.kind == WAY}
+        values = {name: value for name, value in case.values.items() if name not in ways}
         if self._plannable is None:  # once per runner: one planning of the scenario as written
             self._plannable = has_plan(self.scenario, {}, self.settings.seed, settings_for(self.settings, False))
         if not self._plannable:
             result.at_no_values = True  # no value is to blame: none has a plan (infeasible_order)
             return result
         # a single value is the sample: it has no plan alone
-        candidates = list(values) if len(values) == 1 else self.without_plan_alone(values, fallbacks=False, first=False)
-        if values and not candidates:
+        alone = len(case.values) == 1
+        candidates = list(values) if alone else self.without_plan_alone(values, fallbacks=False, first=False)
+        if (values or ways) and not candidates:
             return result
         result = rerun(case)
         if result.kind == CANNOT_INSTANTIATE and values:
-            alone = (
+            blamed = (
                 candidates
-                if len(values) == 1
+                if alone
                 else self.without_plan_alone({n: values[n] for n in candidates}, beyond_limits=False)
             )
-            result.culprit = next(iter(alone), None)
+            result.culprit = next(iter(blamed), None)
         return result
 
     def without_plan_alone(
