@@ -142,7 +142,7 @@ def run_instances(
             seconds["simulation"] += time.perf_counter() - start
             start = time.perf_counter()
             verdict = monitor(specification, simulation.trace)
-            if missed := simulation.turns_not_taken():
+            if missed := simulation.turns_not_taken(frozenset({dut}) if dut is not None else frozenset()):
                 # along(path) on a route that turns: the car drives through the junction
                 verdict = dataclasses.replace(verdict, accepted=False, incidents=verdict.incidents + missed)
             report = (

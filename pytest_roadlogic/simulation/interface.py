@@ -91,16 +91,20 @@ class Simulation:
     # way through a junction): its trace's x and y are along that road
     side_roads: dict[str, Road] = field(default_factory=dict)
 
-    def turns_not_taken(self) -> list[Incident]:
+    def turns_not_taken(self, drives_itself: frozenset[str] = frozenset()) -> list[Incident]:
         """An incident for each vehicle that drives along a route turning at a junction (its
         ``crossers``: ``along(path)``) and did not drive through the junction in the run: its
         centre short of the junction's first metre at the start and past its last at the end, as
-        the planner plans it (within ``TURN_TOLERANCE``). Why: the monitor reads the scenario's
-        guards, which are positions relative to other cars; whether a car took its turn is a fact
-        of its route, checked here on the trace."""
+        the planner plans it (within ``TURN_TOLERANCE``). The vehicles that ``drives_itself``
+        names (a vehicle under test) are not asked: where they are at the end is their driver's
+        (one that gave way may still be in the turn), which the oracles judge. Why: the monitor
+        reads the scenario's guards, which are positions relative to other cars; whether a car
+        took its turn is a fact of its route, checked here on the trace."""
         missed = []
         end = float(self.trace.times[-1]) if len(self.trace.times) else 0.0
         for vehicle, columns in self.trace.actors.items():
+            if vehicle in drives_itself:
+                continue
             road = self.road_of(vehicle)
             route = road.route
             if route is None or route.junction_span is None or vehicle not in route.crossers:
