@@ -79,8 +79,11 @@ class Blame:
         # a way through the map is never to blame: the file asks for a junction of the map, and a
         # way of it on which the scenario has no plan is no defect of the file; its samples are set
         # aside, as combinations are
+        # a value is tried alone on the map's first ways and on the sample's own: one with no plan
+        # on either is taken to have none on any way (trying every way is the map's size in plans)
         ways = {p.name for p in self.scenario.parameters if p.kind == WAY}
         values = {name: value for name, value in case.values.items() if name not in ways}
+        taken = {name: value for name, value in case.values.items() if name in ways}
         if self._plannable is None:  # once per runner: one planning of the scenario as written
             self._plannable = has_plan(self.scenario, {}, self.settings.seed, settings_for(self.settings, False))
         if not self._plannable:
@@ -88,7 +91,9 @@ class Blame:
             return result
         # a single value is the sample: it has no plan alone
         alone = len(case.values) == 1
-        candidates = list(values) if alone else self.without_plan_alone(values, fallbacks=False, first=False)
+        candidates = (
+            list(values) if alone else self.without_plan_alone(values, fallbacks=False, first=False, ways=taken)
+        )
         if (values or ways) and not candidates:
             return result
         result = rerun(case)
@@ -96,24 +101,35 @@ class Blame:
             blamed = (
                 candidates
                 if alone
-                else self.without_plan_alone({n: values[n] for n in candidates}, beyond_limits=False)
+                else self.without_plan_alone({n: values[n] for n in candidates}, beyond_limits=False, ways=taken)
             )
             result.culprit = next(iter(blamed), None)
         return result
 
     def without_plan_alone(
-        self, values: dict[str, Any], fallbacks: bool = True, first: bool = True, beyond_limits: bool = True
+        self,
+        values: dict[str, Any],
+        fallbacks: bool = True,
+        first: bool = True,
+        beyond_limits: bool = True,
+        ways: dict[str, Any] | None = None,
     ) -> list[str]:
         """The sampled parameters whose value alone, the others left to their ranges, has no plan
         (only the first unless ``first`` is false; with ``fallbacks``, or within the planner's
         margins and limits; without ``beyond_limits``, none beyond a real car's limits); empty
         when each has one (then only the combination has none). Planning alone, one parameter at
-        a time, in the order of the report."""
+        a time, in the order of the report. With ``ways`` (the ways through the map a sample
+        took), a value has no plan alone when it has none on the map's first ways nor on those."""
         settings = settings_for(self.settings, False)
         found = []
         for name, value in values.items():
-            if not has_plan(self.scenario, {name: value}, self.settings.seed, settings, fallbacks, beyond_limits):
-                found.append(name)
-                if first:
-                    break
+            if has_plan(self.scenario, {name: value}, self.settings.seed, settings, fallbacks, beyond_limits):
+                continue
+            if ways and has_plan(
+                self.scenario, {name: value, **ways}, self.settings.seed, settings, fallbacks, beyond_limits
+            ):
+                continue
+            found.append(name)
+            if first:
+                break
         return found
