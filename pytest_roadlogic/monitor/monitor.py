@@ -45,17 +45,18 @@ class GuardMiss:
 
     def describe(self) -> str:
         values = ", ".join(f"{k} = {v:.2f}" for k, v in self.values.items())
+        values = f" where {values}" if values else ""
         where = "".join(f"\n    declared at {loc}" for loc in self.locations)
         if self.timing:
             return (
                 f"stuck in {self.source}: the guard to {self.target} ({self.events}) held, but not in time:\n"
                 f"    {self.guard}\n"
-                f"    {self.timing}; the guard held at t = {self.time:.1f} s (robustness {self.robustness:+.2f}) where {values}{where}"
+                f"    {self.timing}; the guard held at t = {self.time:.1f} s (robustness {self.robustness:+.2f}){values}{where}"
             )
         return (
             f"stuck in {self.source}: the guard to {self.target} ({self.events}) never held:\n"
             f"    {self.guard}\n"
-            f"    closest at t = {self.time:.1f} s (robustness {self.robustness:+.2f}) where {values}{where}"
+            f"    closest at t = {self.time:.1f} s (robustness {self.robustness:+.2f}){values}{where}"
         )
 
 
