@@ -177,9 +177,10 @@ def _reactive(plan: Plan, guide: Guide, settings, seed: int, dut: str | None, un
     replan from a state, the grid's)."""
     if dut is None or not under_test.replan_period or not settings.replanning:
         return None
-    if plan.side_routes:
-        # a replan reads every vehicle on the scenario's one route: vehicles taking different ways
-        # through a junction are driven as planned (docs/junctions.md)
+    if plan.side_routes and not _laid_together(plan):
+        # a replan keeps the routes where the simulation has them through route 0's origin and the
+        # routes laid onto it; a route laid onto none has an origin of its own, which a replan
+        # would move under its cars: its vehicles are driven as planned (docs/junctions.md)
         return None
     from .planning.fallbacks import settings_of
     from .reactive import ReactiveExecution, Replanner
@@ -190,6 +191,14 @@ def _reactive(plan: Plan, guide: Guide, settings, seed: int, dut: str | None, un
         # plan's, from the same place on the route
         planned_with = planned_with.at_origin(plan.origin)
     return ReactiveExecution(Replanner(guide(planned_with), planned_with, seed, dut), plan, under_test.replan_period)
+
+
+def _laid_together(plan: Plan) -> bool:
+    """Whether every route of ``plan`` is laid onto the first where they meet (``roads.conflicts.alignments``)."""
+    from .roads.conflicts import alignments
+
+    routes = (plan.route, *dict.fromkeys(route for route, _ in plan.side_routes.values()))
+    return {a.route for a in alignments(routes)} == set(range(1, len(routes)))
 
 
 def guided_planning(

@@ -43,8 +43,10 @@ class ReactiveExecution:
         plan = self.plan
         dt = plan.dt
         at_step = time / dt
+        # each vehicle's lane is read on its own road (vehicles on different ways through a junction)
+        roads = {vehicle: driven[vehicle].road if vehicle in driven else road for vehicle in states}
         if abs(at_step - round(at_step)) < 1e-6:
-            self.seen[int(round(at_step))] = _observed(states, road, 0.0)
+            self.seen[int(round(at_step))] = _observed(states, roads, 0.0)
         if time < self.next_time - 1e-6:
             return None
         while self.next_time < time + 1e-6:
@@ -53,7 +55,7 @@ class ReactiveExecution:
         # not at the start (the plan starts where the vehicles are), not once the plan has ended
         if step == 0 or step >= plan.horizon:
             return None
-        observed = self.seen[step] if step * dt - time < 1e-6 else _observed(states, road, step * dt - time)
+        observed = self.seen[step] if step * dt - time < 1e-6 else _observed(states, roads, step * dt - time)
         replan = self.replanner.replan(plan, step, observed, self.seen, time)
         self.replans.append(replan)
         if replan.plan is None:
@@ -67,10 +69,11 @@ class ReactiveExecution:
         }
 
 
-def _observed(states: dict[str, VehicleState], road: Road, ahead: float) -> dict[str, PlanState]:
-    """Every vehicle's state as a plan states it, ``ahead`` seconds on: along the road at its speed
-    and acceleration (never reversing), across it at its lateral speed (a vehicle halfway through
-    a lane change is in the lane it is heading for once its centre has crossed the line)."""
+def _observed(states: dict[str, VehicleState], roads: dict[str, Road], ahead: float) -> dict[str, PlanState]:
+    """Every vehicle's state as a plan states it, ``ahead`` seconds on: along its road (``roads``)
+    at its speed and acceleration (never reversing), across it at its lateral speed (a vehicle
+    halfway through a lane change is in the lane it is heading for once its centre has crossed the
+    line)."""
     observed = {}
     for vehicle, s in states.items():
         speed = s.speed + s.acceleration * ahead
@@ -79,7 +82,7 @@ def _observed(states: dict[str, VehicleState], road: Road, ahead: float) -> dict
         else:  # it stops on the way
             speed, distance = 0.0, s.speed * s.speed / (-2 * s.acceleration)
         across = s.y + s.speed * math.sin(s.heading) * ahead
-        observed[vehicle] = PlanState(s.x + distance * math.cos(s.heading), road.lane_at(across), speed)
+        observed[vehicle] = PlanState(s.x + distance * math.cos(s.heading), roads[vehicle].lane_at(across), speed)
     return observed
 
 

@@ -228,13 +228,13 @@ def test_a_state_predicted_to_the_next_step_stops_rather_than_reverses_and_cross
 
     road = Road(3)
     braking = VehicleState(0.0, road.center_y(1), 0.0, 10.0, -20.0)
-    assert _observed({"car": braking}, road, 0.9)["car"] == PlanState(pytest.approx(2.5), 1, 0.0)
+    assert _observed({"car": braking}, {"car": road}, 0.9)["car"] == PlanState(pytest.approx(2.5), 1, 0.0)
     # 0.3 m short of the line to lane 0 (left: larger y), drifting left at 1 m/s
     line = road.center_y(1) + road.lane_width / 2
     heading = math.asin(1.0 / 20.0)
     drifting = VehicleState(0.0, line - 0.3, heading, 20.0, 0.0)
-    assert _observed({"car": drifting}, road, 0.0)["car"].lane == 1
-    assert _observed({"car": drifting}, road, 0.5)["car"].lane == 0
+    assert _observed({"car": drifting}, {"car": road}, 0.0)["car"].lane == 1
+    assert _observed({"car": drifting}, {"car": road}, 0.5)["car"].lane == 0
 
 
 def test_an_observed_state_is_held_to_the_scenario_as_written_not_to_the_plans_margin_inside_it():
