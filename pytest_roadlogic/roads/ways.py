@@ -119,15 +119,20 @@ def choose_ways(
     fitting = [{_key(t) for t in fitting_turns(road_map, lanes, length, ask)} for ask in asks]
     offered = [t for t in turns(road_map) if any(_key(t) in keys for keys in fitting)]
     facts = [f"path({k})." for k in range(len(asks))]
+    # the map's junctions and roads by number: their ids are the map's text, never the program's
+    junction = {j: n for n, j in enumerate(dict.fromkeys(t.junction for t in offered))}
+    road = {r: n for n, r in enumerate(dict.fromkeys(r.id for t in offered for r in (t.into, t.out_of)))}
     for index, turn in enumerate(offered):
         facts.append(
-            f'at({index},"{turn.junction}"). into({index},"{turn.into.id}"). out_of({index},"{turn.out_of.id}").'
+            f"at({index},{junction[turn.junction]}). into({index},{road[turn.into.id]}). "
+            f"out_of({index},{road[turn.out_of.id]})."
         )
         facts += [f"fits({k},{index})." for k, keys in enumerate(fitting) if _key(turn) in keys]
+    fields: dict[str, int] = {}  # the scenario's fields by number, as the map's ids
     for k, ask in enumerate(asks):
         for kind, name in (("junction", ask.junction), ("in_road", ask.in_road), ("out_road", ask.out_road)):
             if name is not None:
-                facts.append(f'names({k},"{name}",{kind}).')
+                facts.append(f"names({k},{fields.setdefault(name, len(fields))},{kind}).")
     partial = Ways(road_map, tuple(a.path for a in asks), tuple(offered), (), (), crossers)
     facts += [f"meets({t},{u})." for t, u in _meeting(partial, asks, fitting)]
     answers = _solve(facts, together=True) or _solve(facts, together=False)[:1]
