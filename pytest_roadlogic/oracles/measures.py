@@ -53,6 +53,8 @@ class Seen:
     gaps: dict[str, np.ndarray]
     until: int | None = None
     apart: frozenset[str] = frozenset()  # the vehicles of other routes (other ways through a junction)
+    # seconds from the run's start before which it could not yet act (Thresholds.reaction_time)
+    reaction: float = 0.0
 
 
 def in_path(trace: Trace, follower: str, leader: str) -> np.ndarray:
@@ -135,7 +137,8 @@ CONFLICT_MARGIN = 0.25  # m around each car's box where a post-encroachment time
 def least_post_encroachment_time(seen: Seen) -> Closest:
     """The least post-encroachment time of the vehicle under test with a vehicle of another way
     through a junction (inf when none comes where it drives); its time is when the vehicle under
-    test was at the place."""
+    test was at the place. An encroachment over before ``seen.reaction`` (the second of the two
+    cars there earlier than that) is the start the scenario gave it, not its driving."""
     from ..roads.conflicts import touching_pairs
 
     trace, me = seen.trace, seen.trace.actors[seen.vehicle]
@@ -147,6 +150,10 @@ def least_post_encroachment_time(seen: Seen) -> Closest:
     for other in sorted(seen.apart):
         them = trace.actors[other]
         i, j = touching_pairs(mine, (them["world_x"], them["world_y"], them["world_heading"]), CONFLICT_MARGIN)
+        if not len(i):
+            continue
+        later = np.maximum(trace.times[i], trace.times[j]) >= seen.reaction - 1e-9
+        i, j = i[later], j[later]
         if not len(i):
             continue
         apart_in_time = np.abs(trace.times[i] - trace.times[j])

@@ -122,7 +122,7 @@ def judge(
     hit = min((c.time for c in collisions if not c.caused), default=None)
     until = int(np.searchsorted(trace.times, hit - 1e-9)) if hit is not None else None
     gaps = {o: g for o, g in gaps_ahead(trace, vehicle, thresholds.reaction_time, until).items() if o not in apart}
-    seen = Seen(trace, vehicle, gaps, until, apart)
+    seen = Seen(trace, vehicle, gaps, until, apart, thresholds.reaction_time)
     return DutReport(
         vehicle,
         thresholds,

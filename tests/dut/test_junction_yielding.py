@@ -93,7 +93,7 @@ def _crossing_trace(offset: float, speed: float = 10.0):
 
 
 @pytest.mark.parametrize("offset", [1.0, 1.5, 3.0])
-def test_the_post_encroachment_time_of_two_cars_crossing_at_right_angles_is_their_offset_less_the_time_to_pass(
+def test_the_post_encroachment_time_of_two_cars_crossing_at_right_angles_is_their_offset_less_the_time_to_pass_once_it_can_act(
     offset,
 ):
     from pytest_roadlogic.oracles.measures import CONFLICT_MARGIN, Seen, least_post_encroachment_time
@@ -106,6 +106,10 @@ def test_the_post_encroachment_time_of_two_cars_crossing_at_right_angles_is_thei
     assert closest.other == "b"
     # a car of its own route is never judged so (its gap and headway are)
     assert least_post_encroachment_time(Seen(trace, "a", {}, None, frozenset())).value == math.inf
+    # one over before the vehicle under test could act (the cars meet about 5 s in) is the start
+    # the scenario gave it, not its driving
+    assert least_post_encroachment_time(Seen(trace, "a", {}, None, frozenset({"b"}), 1.0)) == closest
+    assert least_post_encroachment_time(Seen(trace, "a", {}, None, frozenset({"b"}), 9.0)).value == math.inf
 
 
 @pytest.mark.parametrize("path", YIELD, ids=lambda p: p.stem)
