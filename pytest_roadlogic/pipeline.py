@@ -190,7 +190,9 @@ def _reactive(plan: Plan, guide: Guide, settings, seed: int, dut: str | None, un
         # on a map the scenario stays where the simulation has it: a replan's positions are the
         # plan's, from the same place on the route
         planned_with = planned_with.at_origin(plan.origin)
-    return ReactiveExecution(Replanner(guide(planned_with), planned_with, seed, dut), plan, under_test.replan_period)
+    replanner = Replanner(guide(planned_with), planned_with, seed, dut)
+    # vehicles on other ways through a junction meet the vehicle under test only where the ways do
+    return ReactiveExecution(replanner, plan, under_test.replan_period, on_course_only=bool(plan.side_routes))
 
 
 def _laid_together(plan: Plan) -> bool:

@@ -29,13 +29,33 @@ class ReactiveExecution:
     replan changes what they aim for at once). The states at the planning steps are kept, for the
     run of the automaton so far (``Replanner``)."""
 
-    def __init__(self, replanner: Replanner, plan: Plan, period: float) -> None:
+    def __init__(self, replanner: Replanner, plan: Plan, period: float, on_course_only: bool = False) -> None:
         self.replanner = replanner
         self.plan = plan
         self.period = period
+        # replan only once the vehicle under test has left the course the plan being driven has
+        # for it (``_on_course``): where the others meet it only where their ways cross (a
+        # junction), that plan stands until then; on one road the others follow and cut in
+        # around it all along, and every period replans
+        self.on_course_only = on_course_only
         self.next_time = period
         self.seen: dict[int, dict[str, PlanState]] = {}  # planning step -> vehicle -> state there
         self.replans: list[Replan] = []
+
+    def _on_course(self, state: VehicleState | None, time: float) -> bool:
+        """Whether the vehicle under test (``state`` at ``time``) drives as the plan being driven
+        has it: within ``ON_COURSE_POSITION`` and ``ON_COURSE_SPEED`` of its planned position and
+        speed there (read between the plan's steps as a straight line)."""
+        plan, dut = self.plan, self.replanner.dut
+        if state is None or dut not in plan.states:
+            return False
+        at = time / plan.dt
+        k = min(int(at), plan.horizon - 1)
+        share = min(max(at - k, 0.0), 1.0)
+        here, there = plan.at(dut, k), plan.at(dut, k + 1)
+        position = here.position + (there.position - here.position) * share
+        speed = here.speed + (there.speed - here.speed) * share
+        return abs(state.x - position) <= ON_COURSE_POSITION and abs(state.speed - speed) <= ON_COURSE_SPEED
 
     def __call__(
         self, time: float, states: dict[str, VehicleState], road: Road, driven: dict[str, Reference]
@@ -55,6 +75,8 @@ class ReactiveExecution:
         # not at the start (the plan starts where the vehicles are), not once the plan has ended
         if step == 0 or step >= plan.horizon:
             return None
+        if self.on_course_only and self._on_course(states.get(self.replanner.dut), time):
+            return None
         observed = self.seen[step] if step * dt - time < 1e-6 else _observed(states, roads, step * dt - time)
         replan = self.replanner.replan(plan, step, observed, self.seen, time)
         self.replans.append(replan)
@@ -67,6 +89,12 @@ class ReactiveExecution:
             for vehicle in plan.vehicles
             if vehicle != self.replanner.dut and vehicle not in plan.stationary
         }
+
+
+# how near the vehicle under test must be to where the plan being driven has it, along its road
+# and in speed, for that plan to stand (ReactiveExecution.on_course_only)
+ON_COURSE_POSITION = 0.5  # m
+ON_COURSE_SPEED = 0.3  # m/s
 
 
 def _observed(states: dict[str, VehicleState], roads: dict[str, Road], ahead: float) -> dict[str, PlanState]:

@@ -252,3 +252,27 @@ def test_an_observed_state_is_held_to_the_scenario_as_written_not_to_the_plans_m
     assert replan.plan is not None, replan.why
     assert replan.plan.states["target"][2].speed == pytest.approx(14.3, abs=1e-3)
     assert replan.predicted, "found with the vehicle under test predicted, the first way a replan tries"
+
+
+def test_at_a_junction_a_replan_comes_only_once_the_vehicle_under_test_has_left_its_planned_course():
+    from pytest_roadlogic.planning.plan import PlanState
+    from pytest_roadlogic.roads.road import Road
+    from pytest_roadlogic.simulation.driver import VehicleState
+
+    replanner = RecordingReplanner()
+    # planned at 10 m/s for 3 s
+    states = {"dut.car": [PlanState(10.0 * k, 1, 10.0) for k in range(4)]}
+    plan = SimpleNamespace(
+        dt=1.0, horizon=3, vehicles=("dut.car",), stationary=(), states=states, at=lambda v, k: states[v][k]
+    )
+    execution = ReactiveExecution(replanner, plan, 0.25, on_course_only=True)
+    road = Road(3)
+    for k in range(15):  # on course, 0.1 m and 0.1 m/s off at most
+        state = VehicleState(10.0 * k * 0.1 + 0.1, road.center_y(1), 0.0, 10.1, 0.0)
+        execution(round(k * 0.1, 6), {"dut.car": state}, road, {})
+    assert replanner.asked == []
+    # it brakes: 1 m/s slower than planned, and the next period replans
+    for k in range(15, 20):
+        state = VehicleState(10.0 * k * 0.1 - 0.2, road.center_y(1), 0.0, 9.0, -2.0)
+        execution(round(k * 0.1, 6), {"dut.car": state}, road, {})
+    assert [at for at, *_ in replanner.asked] == [1.5, 1.8]
