@@ -107,12 +107,15 @@ def choose_ways(
     length: float,
     asks: tuple[TurnAsk, ...],
     crossers: tuple[frozenset[str], ...],
+    overlaps: tuple[tuple[int, int, str], ...] = (),
 ) -> Ways:
     """Every way ``asks``' paths may take together in ``road_map`` (``asp/map/ways.lp``): a turn per
     ask of the kind it names with ``lanes`` driving lanes and ``length`` metres in all
     (``choice.fitting_turns``), the junction and roads agreeing with the fields the asks share,
     and, where some choice allows it, every two paths on different turns whose ways meet; else
-    only the first answer that agrees. Answers whose routes' lanes differ from the first's are
+    only the first answer that agrees; ``overlaps`` (path, path, kind: the standard's
+    ``map.routes_overlap``): the two paths' ways share the road in (``start``), the road out
+    (``end``), or are one (``equal``). Answers whose routes' lanes differ from the first's are
     left out (a scenario has one lane count). ``MapError`` when an ask has no turn of its kind, or
     no turns of their kinds go together."""
     length = length or MIN_ROUTE_LENGTH  # room to drive, as pick_route gives a single route
@@ -133,6 +136,7 @@ def choose_ways(
         for kind, name in (("junction", ask.junction), ("in_road", ask.in_road), ("out_road", ask.out_road)):
             if name is not None:
                 facts.append(f"names({k},{fields.setdefault(name, len(fields))},{kind}).")
+    facts += [f"overlaps({p},{q},{kind})." for p, q, kind in overlaps]
     partial = Ways(road_map, tuple(a.path for a in asks), tuple(offered), (), (), crossers)
     facts += [f"meets({t},{u})." for t, u in _meeting(partial, asks, fitting)]
     answers = _solve(facts, together=True) or _solve(facts, together=False)[:1]

@@ -238,3 +238,54 @@ def test_a_way_on_which_the_scenario_has_no_plan_is_set_aside_never_blamed(tmp_p
     assert set_aside and all(not r.case.values["other_way"].startswith("straight") for r in set_aside)
     assert all(r.culprit is None for r in ran + set_aside)
     assert all(r.outcome == "conformant" for r in ran)
+
+
+MERGING = """scenario right_turn_merging_into_traffic:
+    map: map
+    map.set_map("crossing.xodr")
+    ego_turn: map.roads_follow_in_junction(direction: right)
+    traffic_way: map.roads_follow_in_junction(direction: straight)
+    map.routes_overlap(route1: ego_turn.resulting_route, route2: traffic_way.resulting_route, overlap_kind: end)
+    ego: car
+    traffic: car
+    do parallel(duration: [14s..20s]):
+        ego.drive() with:
+            along(ego_turn.resulting_route)
+        traffic.drive() with:
+            along(traffic_way.resulting_route)
+"""
+
+
+@pytest.mark.parametrize("kind, same", [("end", "out_of"), ("start", "into")])
+def test_routes_overlap_keeps_exactly_the_ways_that_share_the_road_in_or_out(tmp_path, kind, same):
+    text = MERGING.replace("overlap_kind: end", f"overlap_kind: {kind}")
+    ways = load_file(_standard_file(tmp_path, text)).scenario_to_run(None).ways
+    pairs = [(ways.turns[a], ways.turns[b]) for a, b in ways.combinations]
+    # brute force: every right turn with every way straight on that shares that road with it
+    road_map = read_map(TOWN.parent / "crossing.xodr")
+    expected = {
+        (r.describe(), s.describe())
+        for r in fitting_turns(road_map, 1, 200.0, TurnAsk("right"))
+        for s in fitting_turns(road_map, 1, 200.0, TurnAsk("straight"))
+        if getattr(r, same).id == getattr(s, same).id
+    }
+    assert {(r.describe(), s.describe()) for r, s in pairs} == expected and len(expected) == 4
+
+
+@pytest.mark.parametrize(
+    "change, message",
+    [
+        (("overlap_kind: end", "overlap_kind: inside"), r"turns.osc:6:\d+: error: not supported: overlap_kind inside"),
+        (
+            ("route2: traffic_way.resulting_route", "route2: ego_turn.resulting_route"),
+            r"turns.osc:6:\d+: error: routes_overlap\(\) relates the routes of two different paths",
+        ),
+    ],
+    ids=["inside", "one path twice"],
+)
+def test_a_routes_overlap_the_tool_cannot_read_is_refused_at_its_line(tmp_path, change, message):
+    from pytest_roadlogic.frontend import OscError
+    from pytest_roadlogic.pipeline import load_scenario
+
+    with pytest.raises(OscError, match=message):
+        load_scenario(_standard_file(tmp_path, MERGING.replace(*change)))

@@ -222,6 +222,18 @@ ROAD_MODIFIERS: dict[str, Signature] = _signatures(
         ),
         description="on a map: the route turns at a junction (direction: straight, left, right, uturn)",
     ),
+    # the standard's map.routes_overlap, between the routes of two paths that turn at junctions:
+    # their ways share the road in (start), the road out (end), or are one (equal)
+    Signature(
+        "routes_overlap",
+        (
+            Parameter("route1", "road"),
+            Parameter("route2", "road"),
+            Parameter("overlap_kind", "enum:route_overlap_kind"),
+        ),
+        required=(("route1",), ("route2",), ("overlap_kind",)),
+        description="on a map: two turning routes share their road in (start), their road out (end), or are one (equal)",
+    ),
     # an OpenDRIVE file: the scenario's map; a name (CARLA's towns): a warning, the straight road stands in
     Signature(
         "set_map",

@@ -36,6 +36,7 @@ class RoadLanes:
         self.route, self.routes, self.map_asked, self.route_asks = None, (), None, {}
         self.ways = None  # the ways its paths may take through the map (roads.ways.Ways), when they turn
         self.turn_asks: dict[str, tuple] = {}  # road field -> (roads.asks.TurnAsk, where)
+        self.overlap_asks: list[tuple] = []  # (path, path, overlap kind, where) of routes_overlap
         bounds = self._road_bounds(scenario, env, roads)
         least, most = bounds.get("path_min_driving_lanes"), bounds.get("path_max_lanes")
         if self.requested_map is not None:  # the map option wins over the file's set_map
@@ -49,10 +50,12 @@ class RoadLanes:
                 "path_curve() asks for a curve, but the scenario runs on the straight road",
                 'give it a map with one: set_map("file.xodr"), or --roadlogic-map FILE',
             )
-        if self.turn_asks:
+        if self.turn_asks or self.overlap_asks:
+            where = next(iter(self.turn_asks.values()))[1] if self.turn_asks else self.overlap_asks[0][3]
+            what = "roads_follow_in_junction()" if self.turn_asks else "routes_overlap()"
             self.error(
-                next(iter(self.turn_asks.values()))[1],
-                "roads_follow_in_junction() asks for a junction, but the scenario runs on the straight road",
+                where,
+                f"{what} asks for a junction, but the scenario runs on the straight road",
                 'give it a map with one: set_map("file.xodr"), or --roadlogic-map FILE',
             )
         if least and most and least[0] > most[0]:
@@ -137,6 +140,14 @@ class RoadLanes:
             road_map = read_map(path)
         except MapError as error:
             return refused(at, error)
+        if self.overlap_asks and len(turn_asks) < 2:
+            self.error(
+                self.overlap_asks[0][3],
+                "routes_overlap() relates the routes of two paths that turn at a junction, but the scenario has "
+                f"{len(turn_asks) or 'no'} such path{'' if len(turn_asks) == 1 else 's'}",
+                "give each way its own path with roads_follow_in_junction(...), or leave routes_overlap() out",
+            )
+            return needed
         if turn_asks:
             if curve is not None:
                 self.error(
@@ -209,7 +220,18 @@ class RoadLanes:
             driven = self._paths_driven(scenario, paths)
             crossers = tuple(frozenset(v for v, p in driven.items() if p == path) for path in paths)
         asks = tuple(ask for ask, _ in self.turn_asks.values())
-        self.ways = choose_ways(road_map, needed, length, asks, crossers)
+        overlaps = []
+        for first, second, kind, where in self.overlap_asks:
+            if first not in paths or second not in paths or first == second:
+                self.error(
+                    where,
+                    "routes_overlap() relates the routes of two different paths that turn at a junction "
+                    f"({', '.join(paths)})",
+                    "name two of them: routes_overlap(route1: a.resulting_route, route2: b.resulting_route, overlap_kind: end)",
+                )
+                continue
+            overlaps.append((paths.index(first), paths.index(second), kind))
+        self.ways = choose_ways(road_map, needed, length, asks, crossers, tuple(overlaps))
         routes = self.ways.routes()
         self.route, self.routes = routes[0], routes
         if len(paths) == 1:
@@ -400,6 +422,9 @@ class RoadLanes:
             if modifier.name == "roads_follow_in_junction":
                 self._turn_ask(modifier, binding, env, before)
                 continue
+            if modifier.name == "routes_overlap":
+                self._overlap_ask(modifier, binding, before)
+                continue
             argument = binding["lanes"]
             if argument is None or any(d.severity == "error" for d in self.diagnostics[before:]):
                 continue
@@ -453,6 +478,24 @@ class RoadLanes:
             roads = int(value.low)
         ask = TurnAsk(field("direction"), roads, field("junction"), field("in_road"), field("out_road"), path or "path")
         self.turn_asks[path] = (ask, modifier.location)
+
+    def _overlap_ask(self, modifier: model.Modifier, binding, before: int) -> None:
+        """``routes_overlap``: the routes of two paths share their road in, their road out, or are
+        one, kept in ``self.overlap_asks`` (path, path, kind, where); checked against the paths
+        that turn once they are all read (``_routes_of_map``)."""
+        if any(d.severity == "error" for d in self.diagnostics[before:]):
+            return
+        first, second = (self._route_named(binding[name].value.name) for name in ("route1", "route2"))
+        kind = binding["overlap_kind"].value.name
+        if kind == "inside":
+            self.error(
+                binding["overlap_kind"].value.location,
+                "not supported: overlap_kind inside: each turn's route runs from its road in to its road out, "
+                "so neither lies inside the other",
+                "use start (the same road in), end (the same road out) or equal (one way)",
+            )
+            return
+        self.overlap_asks.append((first, second, kind, modifier.location))
 
     def _route_ask(self, modifier: model.Modifier, binding, env: dict, before: int) -> None:
         """``path_length`` / ``path_curve``: what the route on a map must have, kept in
