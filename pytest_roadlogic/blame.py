@@ -76,11 +76,11 @@ class Blame:
         alone has no plan within them even with the other fallbacks; without one, the sample is a
         combination no car can drive and is set aside like any other (follow_then_overtake's long
         passes from far behind to close ahead)."""
-        # a way through the map is never to blame: the file asks for a junction of the map, and a
+        # A way through the map is never to blame: the file asks for a junction of the map, and a
         # way of it on which the scenario has no plan is no defect of the file; its samples are set
-        # aside, as combinations are
-        # a value is tried alone on the map's first ways and on the sample's own: one with no plan
-        # on either is taken to have none on any way (trying every way is the map's size in plans)
+        # aside, as combinations are. The other values are tried alone on the map's first ways and
+        # on the sample's own: one with no plan on either is taken to have none on any way (trying
+        # every way is the map's size in plans).
         ways = {p.name for p in self.scenario.parameters if p.kind == WAY}
         values = {name: value for name, value in case.values.items() if name not in ways}
         taken = {name: value for name, value in case.values.items() if name in ways}

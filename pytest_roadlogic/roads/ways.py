@@ -56,8 +56,7 @@ class Ways:
 
     def choices(self, path: str) -> tuple[str, ...]:
         """The ways ``path`` takes in some answer, in the map's order."""
-        k = self.paths.index(path)
-        return tuple(self.labels[t] for t in sorted({c[k] for c in self.combinations}))
+        return self.options(path, {})
 
     def options(self, path: str, drawn: dict[str, str]) -> tuple[str, ...]:
         """The ways ``path`` may take together with the ways ``drawn`` for other paths."""
