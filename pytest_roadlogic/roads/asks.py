@@ -27,3 +27,27 @@ class TurnAsk:
         bound = [f"{name} {value}" for name, value in (("in from", self.in_road), ("out into", self.out_road)) if value]
         at = f" at junction {self.junction}" if self.junction else ""
         return f"{self.path}: {kind}{at}" + (f" ({', '.join(bound)})" if bound else "")
+
+
+# the standard's map relations between the routes of two paths, by the name the tool gives each
+ROUTE_RELATIONS = ("overlap", "opposite", "sequence")
+
+
+@dataclass(frozen=True)
+class RouteRelation:
+    """One of the standard's map relations between the routes of two turning paths (``first`` and
+    ``second``: indices of their ``TurnAsk``s, in the scenario's order):
+
+    - ``overlap`` (``map.routes_overlap``): they share the road in (``kind`` ``start``), the road
+      out (``end``), either (``any``), or are one way (``equal``);
+    - ``opposite`` (``map.routes_are_opposite``): some road both drive, in opposite directions;
+    - ``sequence`` (``map.routes_are_in_sequence``): the second comes in on the road the first
+      leaves on, at the junction at that road's other end.
+
+    ``road``: the scenario's road field that road is (``containing_road:``, ``road:``), or None."""
+
+    relation: str
+    first: int
+    second: int
+    kind: str | None = None
+    road: str | None = None

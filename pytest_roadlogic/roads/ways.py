@@ -18,7 +18,7 @@ from dataclasses import dataclass, field
 import clingo
 
 from ..asp_dir import ASP_DIR
-from .asks import TurnAsk
+from .asks import RouteRelation, TurnAsk
 from .choice import MIN_ROUTE_LENGTH, fitting_turns, turn_as_route
 from .junctions import Turn, describe_junctions, turns
 from .opendrive_in import MapError, RoadMap
@@ -106,15 +106,14 @@ def choose_ways(
     length: float,
     asks: tuple[TurnAsk, ...],
     crossers: tuple[frozenset[str], ...],
-    overlaps: tuple[tuple[int, int, str], ...] = (),
+    relations: tuple[RouteRelation, ...] = (),
 ) -> Ways:
     """Every way ``asks``' paths may take together in ``road_map`` (``asp/map/ways.lp``): a turn per
     ask of the kind it names with ``lanes`` driving lanes and ``length`` metres in all
     (``choice.fitting_turns``), the junction and roads agreeing with the fields the asks share,
     and, where some choice allows it, every two paths on different turns whose ways meet; else
-    only the first answer that agrees; ``overlaps`` (path, path, kind: the standard's
-    ``map.routes_overlap``): the two paths' ways share the road in (``start``), the road out
-    (``end``), or are one (``equal``). Answers whose routes' lanes differ from the first's are
+    only the first answer that agrees (two paths in sequence are not there to meet); and the
+    standard's map ``relations`` between the paths' routes. Answers whose routes' lanes differ from the first's are
     left out (a scenario has one lane count). ``MapError`` when an ask has no turn of its kind, or
     no turns of their kinds go together."""
     length = length or MIN_ROUTE_LENGTH  # room to drive, as pick_route gives a single route
@@ -135,7 +134,13 @@ def choose_ways(
         for kind, name in (("junction", ask.junction), ("in_road", ask.in_road), ("out_road", ask.out_road)):
             if name is not None:
                 facts.append(f"names({k},{fields.setdefault(name, len(fields))},{kind}).")
-    facts += [f"overlaps({p},{q},{kind})." for p, q, kind in overlaps]
+    for r in relations:
+        if r.relation == "overlap":
+            facts.append(f"overlaps({r.first},{r.second},{r.kind}).")
+        else:
+            facts.append(f"relation({r.first},{r.second},{r.relation}).")
+        if r.road is not None:
+            facts.append(f"on_road({r.first},{r.second},{r.relation},{fields.setdefault(r.road, len(fields))}).")
     partial = Ways(road_map, tuple(a.path for a in asks), tuple(offered), (), (), crossers)
     facts += [f"meets({t},{u})." for t, u in _meeting(partial, asks, fitting)]
     answers = _solve(facts, together=True) or _solve(facts, together=False)[:1]
@@ -194,7 +199,8 @@ def _agree(ask: TurnAsk, turn: Turn, other_ask: TurnAsk, other: Turn) -> bool:
 
 def _solve(facts: list[str], together: bool) -> list[tuple[int, ...]]:
     """The answers of ``asp/map/ways.lp`` on ``facts`` (each path's turn index), in the map's order."""
-    control = clingo.Control([str(MAX_WAYS), "--warn=none"])
+    # projected on the ways: a road field named only by a relation may be any road it holds on
+    control = clingo.Control([str(MAX_WAYS), "--project", "--warn=none"])
     control.load(str(ENCODING))
     control.add("base", [], "\n".join(facts))
     control.ground([("base", [])])

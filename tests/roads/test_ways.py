@@ -256,7 +256,7 @@ MERGING = """scenario right_turn_merging_into_traffic:
 """
 
 
-@pytest.mark.parametrize("kind, same", [("end", "out_of"), ("start", "into")])
+@pytest.mark.parametrize("kind, same", [("end", ("out_of",)), ("start", ("into",)), ("any", ("into", "out_of"))])
 def test_routes_overlap_keeps_exactly_the_ways_that_share_the_road_in_or_out(tmp_path, kind, same):
     text = MERGING.replace("overlap_kind: end", f"overlap_kind: {kind}")
     ways = load_file(_standard_file(tmp_path, text)).scenario_to_run(None).ways
@@ -267,9 +267,130 @@ def test_routes_overlap_keeps_exactly_the_ways_that_share_the_road_in_or_out(tmp
         (r.describe(), s.describe())
         for r in fitting_turns(road_map, 1, 200.0, TurnAsk("right"))
         for s in fitting_turns(road_map, 1, 200.0, TurnAsk("straight"))
-        if getattr(r, same).id == getattr(s, same).id
+        if any(getattr(r, road).id == getattr(s, road).id for road in same)
     }
-    assert {(r.describe(), s.describe()) for r, s in pairs} == expected and len(expected) == 4
+    assert {(r.describe(), s.describe()) for r, s in pairs} == expected and len(expected) == 4 * len(same)
+
+
+def _driven(turn) -> set[tuple[str, bool]]:
+    """The roads a turn's route drives, each with whether it drives it against its reference line."""
+    return {(road.id, road.against) for road in (turn.into, turn.out_of)}
+
+
+def _town_file(folder: Path, text: str) -> Path:
+    (folder / "town.xodr").write_bytes(TOWN.read_bytes())
+    path = folder / "turns.osc"
+    path.write_text(text)
+    return path
+
+
+OPPOSITE = """scenario left_turn_across_oncoming:
+    map: map
+    approach: road
+    map.set_map("town.xodr")
+    ego_turn: map.roads_follow_in_junction(direction: left)
+    oncoming_way: map.roads_follow_in_junction(direction: straight)
+    map.routes_are_opposite(route1: ego_turn.resulting_route, route2: oncoming_way.resulting_route)
+    ego: car
+    oncoming: car
+    do parallel(duration: [14s..20s]):
+        ego.drive() with:
+            along(ego_turn.resulting_route)
+        oncoming.drive() with:
+            along(oncoming_way.resulting_route)
+"""
+
+
+@pytest.mark.parametrize("bound", [False, True], ids=["any road", "the ego's road in"])
+def test_routes_are_opposite_keeps_exactly_the_ways_that_drive_a_road_in_opposite_directions(tmp_path, bound):
+    text = OPPOSITE
+    if bound:  # the road both drive is the one the left turn comes in on: the oncoming car's way out
+        text = text.replace("(direction: left)", "(direction: left, in_road: approach)").replace(
+            "oncoming_way.resulting_route)\n", "oncoming_way.resulting_route, containing_road: approach)\n", 1
+        )
+    ways = load_file(_town_file(tmp_path, text)).scenario_to_run(None).ways
+    answered = {(ways.turns[a].describe(), ways.turns[b].describe()) for a, b in ways.combinations}
+    # brute force, from the definition: a road both routes drive, against its reference line in one
+    # and along it in the other; of those, the pairs whose ways meet (two paths are there to meet)
+    road_map = read_map(TOWN)
+    lefts = fitting_turns(road_map, 1, 200.0, TurnAsk("left"))
+    straights = fitting_turns(road_map, 1, 200.0, TurnAsk("straight"))
+    expected = set()
+    for left, straight in itertools.product(lefts, straights):
+        shared = {road: against for road, against in _driven(left)} if not bound else {left.into.id: left.into.against}
+        if not any(shared.get(road) == (not against) for road, against in _driven(straight)):
+            continue
+        if meetings_of(0, turn_as_route(road_map, left), 1, turn_as_route(road_map, straight)):
+            expected.add((left.describe(), straight.describe()))
+    assert answered == expected and expected
+    if bound:  # the oncoming way: from the road opposite, out on the road the left turn comes in on
+        assert all(left.split()[3] == straight.split()[-1] for left, straight in answered)
+
+
+SEQUENCE = """scenario one_junction_after_the_other:
+    map: map
+    between: road
+    map.set_map("town.xodr")
+    first_turn: map.roads_follow_in_junction()
+    next_turn: map.roads_follow_in_junction()
+    map.routes_are_in_sequence(preceding: first_turn.resulting_route, succeeding: next_turn.resulting_route, road: between)
+    ego: car
+    lead: car
+    do parallel(duration: [14s..20s]):
+        ego.drive() with:
+            along(first_turn.resulting_route)
+        lead.drive() with:
+            along(next_turn.resulting_route)
+"""
+
+
+def test_routes_are_in_sequence_keeps_exactly_the_ways_that_come_in_on_the_road_the_first_leaves_on(tmp_path):
+    ways = load_file(_town_file(tmp_path, SEQUENCE)).scenario_to_run(None).ways
+    answered = {(ways.turns[a].describe(), ways.turns[b].describe()) for a, b in ways.combinations}
+    # brute force: the second route drives on along the road the first leaves on, the same way
+    # (paths in sequence pass different junctions: they are not asked to meet)
+    offered = fitting_turns(read_map(TOWN), 1, 200.0, TurnAsk())
+    expected = {
+        (first.describe(), second.describe())
+        for first, second in itertools.product(offered, offered)
+        if (first.out_of.id, first.out_of.against) == (second.into.id, second.into.against)
+    }
+    assert answered == expected and len(expected) == 12  # through road 3, either way along it
+    assert {first.split()[-1] for first, _ in answered} == {"3"}
+
+
+@pytest.mark.parametrize(
+    "text, change, message",
+    [
+        (
+            OPPOSITE,
+            ("oncoming_way.resulting_route)\n", "oncoming_way.resulting_route, lateral_overlap: always)\n"),
+            r"turns.osc:7:\d+: error: not supported: lateral_overlap always",
+        ),
+        (
+            OPPOSITE,
+            ("route2: oncoming_way.resulting_route", "route2: ego_turn.resulting_route"),
+            r"turns.osc:7:\d+: error: routes_are_opposite\(\) relates the routes of two different paths",
+        ),
+        (
+            SEQUENCE,
+            ("road: between", "road: first_turn"),
+            r"turns.osc:7:\d+: error: road: takes a road of the map, a field of the scenario",
+        ),
+        (
+            SEQUENCE,
+            ('    map.set_map("town.xodr")\n', ""),
+            r"turns.osc:\d+:\d+: error: roads_follow_in_junction\(\) asks for a junction, but the scenario runs on the straight road",
+        ),
+    ],
+    ids=["lateral overlap", "one path twice", "road not a road", "no map"],
+)
+def test_a_relation_between_routes_the_tool_cannot_read_is_refused_at_its_line(tmp_path, text, change, message):
+    from pytest_roadlogic.frontend import OscError
+    from pytest_roadlogic.pipeline import load_scenario
+
+    with pytest.raises(OscError, match=message):
+        load_scenario(_town_file(tmp_path, text.replace(*change)))
 
 
 @pytest.mark.parametrize(

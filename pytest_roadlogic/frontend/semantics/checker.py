@@ -163,7 +163,7 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks):
         self.routes: tuple = ()  # every route of it (CheckedScenario.routes)
         self.ways = None  # the ways its paths may take through the map (CheckedScenario.ways)
         self.turn_asks: dict = {}  # its roads_follow_in_junction asks (road_lanes)
-        self.overlap_asks: list = []  # its routes_overlap asks (road_lanes)
+        self.relation_asks: list = []  # its map relations between routes (road_lanes)
         self.map_asked = None  # (the map file a scenario's set_map names, where) while it is checked
         self.route_asks: dict = {}  # path_length / path_curve of the scenario being checked (road_lanes)
         # The road of the scenario being checked, and why it has that many lanes (for error messages).

@@ -222,8 +222,8 @@ ROAD_MODIFIERS: dict[str, Signature] = _signatures(
         ),
         description="on a map: the route turns at a junction (direction: straight, left, right, uturn)",
     ),
-    # the standard's map.routes_overlap, between the routes of two paths that turn at junctions:
-    # their ways share the road in (start), the road out (end), or are one (equal)
+    # the standard's map relations between the routes of two paths that turn at junctions
+    # (roads.asks.RouteRelation): map.routes_overlap, map.routes_are_opposite, map.routes_are_in_sequence
     Signature(
         "routes_overlap",
         (
@@ -232,7 +232,28 @@ ROAD_MODIFIERS: dict[str, Signature] = _signatures(
             Parameter("overlap_kind", "enum:route_overlap_kind"),
         ),
         required=(("route1",), ("route2",), ("overlap_kind",)),
-        description="on a map: two turning routes share their road in (start), their road out (end), or are one (equal)",
+        description="on a map: two turning routes share their road in (start), their road out (end), either (any), or are one (equal)",
+    ),
+    Signature(
+        "routes_are_opposite",
+        (
+            Parameter("route1", "road"),
+            Parameter("route2", "road"),
+            Parameter("containing_road", "map:road"),
+            Parameter("lateral_overlap", "enum:lateral_overlap_kind"),
+        ),
+        required=(("route1",), ("route2",)),
+        description="on a map: two turning routes drive a road (containing_road) in opposite directions",
+    ),
+    Signature(
+        "routes_are_in_sequence",
+        (
+            Parameter("preceding", "road"),
+            Parameter("succeeding", "road"),
+            Parameter("road", "map:road"),
+        ),
+        required=(("preceding",), ("succeeding",)),
+        description="on a map: the succeeding turning route comes in on the road (road) the preceding one leaves on",
     ),
     # an OpenDRIVE file: the scenario's map; a name (CARLA's towns): a warning, the straight road stands in
     Signature(

@@ -5,7 +5,7 @@ from __future__ import annotations
 import math
 from pathlib import Path
 
-from ...roads.asks import TurnAsk
+from ...roads.asks import RouteRelation, TurnAsk
 from ...settings import STANDARD_DIALECT
 from .. import model
 from ..errors import SourceLocation
@@ -36,7 +36,8 @@ class RoadLanes:
         self.route, self.routes, self.map_asked, self.route_asks = None, (), None, {}
         self.ways = None  # the ways its paths may take through the map (roads.ways.Ways), when they turn
         self.turn_asks: dict[str, tuple] = {}  # road field -> (roads.asks.TurnAsk, where)
-        self.overlap_asks: list[tuple] = []  # (path, path, overlap kind, where) of routes_overlap
+        # the map relations between routes it asks for: (modifier, relation, path, path, kind, road field, where)
+        self.relation_asks: list[tuple] = []
         bounds = self._road_bounds(scenario, env, roads)
         least, most = bounds.get("path_min_driving_lanes"), bounds.get("path_max_lanes")
         if self.requested_map is not None:  # the map option wins over the file's set_map
@@ -50,9 +51,9 @@ class RoadLanes:
                 "path_curve() asks for a curve, but the scenario runs on the straight road",
                 'give it a map with one: set_map("file.xodr"), or --roadlogic-map FILE',
             )
-        if self.turn_asks or self.overlap_asks:
-            where = next(iter(self.turn_asks.values()))[1] if self.turn_asks else self.overlap_asks[0][3]
-            what = "roads_follow_in_junction()" if self.turn_asks else "routes_overlap()"
+        if self.turn_asks or self.relation_asks:
+            where = next(iter(self.turn_asks.values()))[1] if self.turn_asks else self.relation_asks[0][-1]
+            what = "roads_follow_in_junction()" if self.turn_asks else f"{self.relation_asks[0][0]}()"
             self.error(
                 where,
                 f"{what} asks for a junction, but the scenario runs on the straight road",
@@ -140,12 +141,13 @@ class RoadLanes:
             road_map = read_map(path)
         except MapError as error:
             return refused(at, error)
-        if self.overlap_asks and len(turn_asks) < 2:
+        if self.relation_asks and len(turn_asks) < 2:
+            name = self.relation_asks[0][0]
             self.error(
-                self.overlap_asks[0][3],
-                "routes_overlap() relates the routes of two paths that turn at a junction, but the scenario has "
+                self.relation_asks[0][-1],
+                f"{name}() relates the routes of two paths that turn at a junction, but the scenario has "
                 f"{len(turn_asks) or 'no'} such path{'' if len(turn_asks) == 1 else 's'}",
-                "give each way its own path with roads_follow_in_junction(...), or leave routes_overlap() out",
+                f"give each way its own path with roads_follow_in_junction(...), or leave {name}() out",
             )
             return needed
         if turn_asks:
@@ -220,18 +222,17 @@ class RoadLanes:
             driven = self._paths_driven(scenario, paths)
             crossers = tuple(frozenset(v for v, p in driven.items() if p == path) for path in paths)
         asks = tuple(ask for ask, _ in self.turn_asks.values())
-        overlaps = []
-        for first, second, kind, where in self.overlap_asks:
+        relations = []
+        for name, relation, first, second, kind, road, where in self.relation_asks:
             if first not in paths or second not in paths or first == second:
                 self.error(
                     where,
-                    "routes_overlap() relates the routes of two different paths that turn at a junction "
-                    f"({', '.join(paths)})",
-                    "name two of them: routes_overlap(route1: a.resulting_route, route2: b.resulting_route, overlap_kind: end)",
+                    f"{name}() relates the routes of two different paths that turn at a junction ({', '.join(paths)})",
+                    f"name two of them: {name}({_RELATION_EXAMPLE[relation]})",
                 )
                 continue
-            overlaps.append((paths.index(first), paths.index(second), kind))
-        self.ways = choose_ways(road_map, needed, length, asks, crossers, tuple(overlaps))
+            relations.append(RouteRelation(relation, paths.index(first), paths.index(second), kind, road))
+        self.ways = choose_ways(road_map, needed, length, asks, crossers, tuple(relations))
         routes = self.ways.routes()
         self.route, self.routes = routes[0], routes
         if len(paths) == 1:
@@ -422,8 +423,8 @@ class RoadLanes:
             if modifier.name == "roads_follow_in_junction":
                 self._turn_ask(modifier, binding, env, before)
                 continue
-            if modifier.name == "routes_overlap":
-                self._overlap_ask(modifier, binding, before)
+            if modifier.name in _RELATIONS:
+                self._relation_ask(modifier, binding, before)
                 continue
             argument = binding["lanes"]
             if argument is None or any(d.severity == "error" for d in self.diagnostics[before:]):
@@ -479,23 +480,40 @@ class RoadLanes:
         ask = TurnAsk(field("direction"), roads, field("junction"), field("in_road"), field("out_road"), path or "path")
         self.turn_asks[path] = (ask, modifier.location)
 
-    def _overlap_ask(self, modifier: model.Modifier, binding, before: int) -> None:
-        """``routes_overlap``: the routes of two paths share their road in, their road out, or are
-        one, kept in ``self.overlap_asks`` (path, path, kind, where); checked against the paths
-        that turn once they are all read (``_routes_of_map``)."""
+    def _relation_ask(self, modifier: model.Modifier, binding, before: int) -> None:
+        """One of the standard's map relations between the routes of two paths (``routes_overlap``,
+        ``routes_are_opposite``, ``routes_are_in_sequence``), kept in ``self.relation_asks``;
+        checked against the paths that turn once they are all read (``_routes_of_map``)."""
         if any(d.severity == "error" for d in self.diagnostics[before:]):
             return
-        first, second = (self._route_named(binding[name].value.name) for name in ("route1", "route2"))
-        kind = binding["overlap_kind"].value.name
-        if kind == "inside":
+        relation, (first_name, second_name), road_name = _RELATIONS[modifier.name]
+        first, second = (self._route_named(binding[name].value.name) for name in (first_name, second_name))
+        kind = None
+        if relation == "overlap":
+            kind = binding["overlap_kind"].value.name
+            if kind in ("inside", "other"):
+                why = (
+                    "each turn's route runs from its road in to its road out, so neither lies inside the other"
+                    if kind == "inside"
+                    else "the tool reads the overlaps the standard names"
+                )
+                self.error(
+                    binding["overlap_kind"].value.location,
+                    f"not supported: overlap_kind {kind}: {why}",
+                    "use start (the same road in), end (the same road out), any (either) or equal (one way)",
+                )
+                return
+        lateral = binding["lateral_overlap"] if relation == "opposite" else None
+        if lateral is not None and lateral.value.name != "never":
             self.error(
-                binding["overlap_kind"].value.location,
-                "not supported: overlap_kind inside: each turn's route runs from its road in to its road out, "
-                "so neither lies inside the other",
-                "use start (the same road in), end (the same road out) or equal (one way)",
+                lateral.value.location,
+                f"not supported: lateral_overlap {lateral.value.name}: the tool reads the lanes of a map's "
+                "roads one way each, so two routes the opposite way never share a lane",
+                "leave lateral_overlap out, or give never",
             )
             return
-        self.overlap_asks.append((first, second, kind, modifier.location))
+        road = binding[road_name].value.name if road_name and binding[road_name] is not None else None
+        self.relation_asks.append((modifier.name, relation, first, second, kind, road, modifier.location))
 
     def _route_ask(self, modifier: model.Modifier, binding, env: dict, before: int) -> None:
         """``path_length`` / ``path_curve``: what the route on a map must have, kept in
@@ -561,3 +579,17 @@ def _alongs(scenario: model.Scenario) -> list[tuple[str, model.Modifier]]:
         for modifier in node.modifiers
         if modifier.name == "along"
     ]
+
+
+# the standard's map relations between two routes: modifier -> (the tool's name for the relation,
+# its two route parameters, its road parameter or None)
+_RELATIONS = {
+    "routes_overlap": ("overlap", ("route1", "route2"), None),
+    "routes_are_opposite": ("opposite", ("route1", "route2"), "containing_road"),
+    "routes_are_in_sequence": ("sequence", ("preceding", "succeeding"), "road"),
+}
+_RELATION_EXAMPLE = {
+    "overlap": "route1: a.resulting_route, route2: b.resulting_route, overlap_kind: end",
+    "opposite": "route1: a.resulting_route, route2: b.resulting_route",
+    "sequence": "preceding: a.resulting_route, succeeding: b.resulting_route",
+}
