@@ -309,6 +309,29 @@ class SymbolicAutomaton:
             frontier = nxt
         return depth
 
+    def names_ahead(self, location_id: int, actor: str) -> bool:
+        """Whether anything a run may still meet from ``location_id`` on names ``actor``: the
+        invariant of a location it may reach (this one included), the guard of a transition it
+        may take, a rate of a phase such a transition ends. Why: where nothing ahead names the
+        vehicle under test, what the other vehicles must still do does not depend on it."""
+        reached, frontier = {location_id}, [location_id]
+        while frontier:
+            location = frontier.pop()
+            if any(actor in atom.term.actors for atom in self.locations[location].invariant.atoms()):
+                return True
+            for transition in self.outgoing(location):
+                if any(actor in atom.term.actors for atom in transition.guard.atoms()):
+                    return True
+                rates = (
+                    rate for phase in transition.ends if phase in self.timings for rate in self.timings[phase].rates
+                )
+                if any(rate.actor == actor for rate in rates):
+                    return True
+                if transition.target not in reached:
+                    reached.add(transition.target)
+                    frontier.append(transition.target)
+        return False
+
     def describe(self) -> str:
         lines = [f"locations: {', '.join(loc.name for loc in self.locations)}"]
         for loc in self.locations:

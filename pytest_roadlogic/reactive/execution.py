@@ -12,6 +12,7 @@ with why: from here the scenario cannot go on (the vehicle under test made it im
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 
 from ..planning.plan import Plan, PlanState
 from ..roads.road import Road
@@ -34,10 +35,12 @@ class ReactiveExecution:
         self.plan = plan
         self.period = period
         # replan only once the vehicle under test has left the course the plan being driven has
-        # for it (``_on_course``): where the others meet it only where their ways cross (a
-        # junction), that plan stands until then; on one road the others follow and cut in
-        # around it all along, and every period replans
+        # for it (``_on_course``), and only while what the others must still do depends on it
+        # (``_settled``): where the others meet it only where their ways cross (a junction), that
+        # plan stands until then; on one road the others follow and cut in around it all along,
+        # and every period replans
         self.on_course_only = on_course_only
+        self.meetings: dict[tuple[int, int], list] = {}  # (id of a route, id of another) -> where they meet
         self.next_time = period
         self.seen: dict[int, dict[str, PlanState]] = {}  # planning step -> vehicle -> state there
         self.replans: list[Replan] = []
@@ -57,8 +60,49 @@ class ReactiveExecution:
         speed = here.speed + (there.speed - here.speed) * share
         return abs(state.x - position) <= ON_COURSE_POSITION and abs(state.speed - speed) <= ON_COURSE_SPEED
 
+    def _settled(self, states: dict[str, VehicleState], roads: Mapping[str, Road], step: int) -> bool:
+        """Whether nothing the other vehicles must still do from ``step`` on depends on the vehicle
+        under test: nothing ahead in the automaton names it (``SymbolicAutomaton.names_ahead``, from
+        where the plan being driven is before ``step``), and its way and every other vehicle's meet
+        nowhere either has still to pass: they cross (a lane they share never settles, nor does a
+        vehicle on its own way, which keeps its distance to it) and one of the two is past the
+        crossing by ``PASSED``. The plan being driven then stands as it is."""
+        dut = self.replanner.dut
+        mine = roads.get(dut)
+        if dut not in states or mine is None or mine.route is None:
+            return False
+        automaton = self.replanner.automaton
+        taken = [transition for k, transition in self.plan.transitions if k < step]
+        location = automaton.transitions[taken[-1]].target if taken else automaton.initial
+        if automaton.names_ahead(location, dut):
+            return False
+        from ..roads.conflicts import meetings_of
+
+        for vehicle, state in states.items():
+            theirs = roads[vehicle]
+            if vehicle == dut or vehicle in self.plan.stationary:
+                continue
+            if theirs.route is None or theirs.route is mine.route:
+                return False
+            key = (id(mine.route), id(theirs.route))
+            if key not in self.meetings:
+                self.meetings[key] = meetings_of(0, mine.route, 1, theirs.route)
+            for meeting in self.meetings[key]:
+                if meeting.kind != "crossing":
+                    return False
+                dut_past = states[dut].x + mine.route_shift > meeting.first_span[1] + PASSED
+                other_past = state.x + theirs.route_shift > meeting.second_span[1] + PASSED
+                if not (dut_past or other_past):
+                    return False
+        return True
+
     def __call__(
-        self, time: float, states: dict[str, VehicleState], road: Road, driven: dict[str, Reference]
+        self,
+        time: float,
+        states: dict[str, VehicleState],
+        road: Road,
+        driven: dict[str, Reference],
+        placed: Mapping[str, Road],
     ) -> dict[str, Reference] | None:
         plan = self.plan
         dt = plan.dt
@@ -75,7 +119,9 @@ class ReactiveExecution:
         # not at the start (the plan starts where the vehicles are), not once the plan has ended
         if step == 0 or step >= plan.horizon:
             return None
-        if self.on_course_only and self._on_course(states.get(self.replanner.dut), time):
+        if self.on_course_only and (
+            self._on_course(states.get(self.replanner.dut), time) or self._settled(states, placed, step)
+        ):
             return None
         observed = self.seen[step] if step * dt - time < 1e-6 else _observed(states, roads, step * dt - time)
         replan = self.replanner.replan(plan, step, observed, self.seen, time)
@@ -95,6 +141,9 @@ class ReactiveExecution:
 # and in speed, for that plan to stand (ReactiveExecution.on_course_only)
 ON_COURSE_POSITION = 0.5  # m
 ON_COURSE_SPEED = 0.3  # m/s
+# how far past a crossing of two ways a vehicle's centre is once it has left it (the crossing is
+# where two cars' boxes grown by half a metre overlap; the planner widens it by as much)
+PASSED = 2.0  # m
 
 
 def _observed(states: dict[str, VehicleState], roads: dict[str, Road], ahead: float) -> dict[str, PlanState]:

@@ -47,6 +47,10 @@ MODES = (
     _Mode(True, False, False),
     _Mode(False, False, False),
 )
+# the modes that ask least of a replan, one for each run so far: a plan of any other mode is a
+# plan of one of these (the vehicle under test predicted is one way it may drive; a plan of the
+# old length is a plan of some length)
+WIDEST = frozenset(m for m in MODES if not m.predicted and not m.full_length)
 
 
 class Replanner:
@@ -70,6 +74,7 @@ class Replanner:
         # prediction carries the tracking's wobble a step ahead)
         self.failed: dict[tuple[int, bool], set[_Mode]] = {}
         self.why: dict[int, str] = {}
+        self.stuck = False  # whether the last replan found no plan
 
     def replan(
         self,
@@ -84,20 +89,21 @@ class Replanner:
         ``seen``: the vehicles' states at the steps before (step -> vehicle -> state), every one of
         them, for the monitor's run; without them, or when no run goes through them, the run so far
         is ``plan``'s."""
-        from ..planning import NoPlanError, planner_for
+        from ..planning import NoPlanError, PlanningTimeout, planner_for
 
         started = time.perf_counter()
         at = step * plan.dt if at is None else at
         why = self.why.get(step, "")
         complete = seen is not None and all(k in seen for k in range(step))
         failed = self.failed.setdefault((step, abs(at - step * plan.dt) > 1e-6), set())
-        for mode in sorted(MODES, key=lambda m: (not m.full_length, not m.seen, m.predicted != self.predicting)):
-            if (mode.seen and not complete) or mode in failed:
-                continue
-            left = REPLAN_TIME_LIMIT - (time.perf_counter() - started)
-            if left <= 0.05:
-                why = why or f"no plan within the replanning time limit ({REPLAN_TIME_LIMIT:g} s)"
-                break
+        found_by: dict[_Mode, Plan] = {}
+
+        def attempt(mode: _Mode) -> Plan | None:
+            """The plan ``mode`` finds (None: none), remembered; ``failed`` keeps a mode without one,
+            ``proved`` one that has none at all (not one that ran out of time)."""
+            nonlocal why
+            if mode in found_by:
+                return found_by[mode]
             settings = dataclasses.replace(self.settings, time_limit=min(self.settings.time_limit, left))
             planner = planner_for(self.automaton, settings, self.seed)
             past = Past(
@@ -113,11 +119,40 @@ class Replanner:
             except NoPlanError as error:
                 why = self.why[step] = str(error)
                 failed.add(mode)
+                if not isinstance(error, PlanningTimeout):
+                    proved.add(mode)
+                return None
+            if found is None:
+                failed.add(mode)
+            else:
+                found_by[mode] = found
+            return found
+
+        order = sorted(MODES, key=lambda m: (not m.full_length, not m.seen, m.predicted != self.predicting))
+        proved: set[_Mode] = set()
+        if self.stuck:
+            # the last replan found no plan: most likely none exists from here either, which the
+            # widest modes alone prove (every other mode asks more of the same plan); when one of
+            # them finds a plan, the order still decides which plan is taken
+            widest = [m for m in order if m in WIDEST and not (m.seen and not complete) and m not in failed]
+            for mode in widest:
+                left = REPLAN_TIME_LIMIT - (time.perf_counter() - started)
+                if left <= 0.05 or attempt(mode) is not None:
+                    break
+            if widest and proved >= set(widest):
+                failed.update(MODES)
+        for mode in order:
+            if (mode.seen and not complete) or mode in failed:
                 continue
+            left = REPLAN_TIME_LIMIT - (time.perf_counter() - started)
+            if left <= 0.05:
+                why = why or f"no plan within the replanning time limit ({REPLAN_TIME_LIMIT:g} s)"
+                break
+            found = attempt(mode)
             if found is not None:
-                self.predicting = mode.predicted
+                self.predicting, self.stuck = mode.predicted, False
                 return Replan(at, time.perf_counter() - started, found, mode.predicted, seen=mode.seen)
-            failed.add(mode)
+        self.stuck = True
         return Replan(
             at,
             time.perf_counter() - started,

@@ -11,7 +11,7 @@ another (a co-simulation with CARLA or esmini, a vehicle-in-the-loop rig) is sel
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Protocol, runtime_checkable
 
@@ -55,8 +55,17 @@ class Reaction(Protocol):
     replans: list[Replan]
 
     def __call__(
-        self, time: float, states: dict[str, VehicleState], road: Road, driven: dict[str, Reference]
-    ) -> dict[str, Reference] | None: ...
+        self,
+        time: float,
+        states: dict[str, VehicleState],
+        road: Road,
+        driven: dict[str, Reference],
+        placed: Mapping[str, Road],
+    ) -> dict[str, Reference] | None:
+        """New references from ``time`` on for some vehicles, or None. ``states``: every vehicle's
+        now; ``road``: the scenario's road, whose lanes references follow; ``driven``: each
+        vehicle's reference being driven; ``placed``: each vehicle's road in the simulation (its
+        route of the map and where the plan lies on it)."""
 
 
 @dataclass(frozen=True)

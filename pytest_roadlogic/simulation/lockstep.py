@@ -150,7 +150,7 @@ class _Lockstep:
         """Drive every vehicle from step ``k - 1`` to ``k``: the reaction's new references first
         (their drivers ``retarget``), then every driver plans from the same snapshot."""
         time = (k - 1) * self.dt
-        retargeted = self.react(time, self.states, self.road, self.refs) if self.react is not None else None
+        retargeted = self.react(time, self.states, self.road, self.refs, self.roads) if self.react is not None else None
         for v, reference in (retargeted or {}).items():
             self.refs[v] = reference
             self.active[v].retarget(v, reference, self.roads[v], self.dt)

@@ -208,7 +208,7 @@ def test_replans_come_every_period_several_times_a_second_each_from_the_next_pla
     road = Road(3)
     for k in range(40):  # the lockstep asks at every simulation step of 0.1 s
         state = VehicleState(10.0 * k * 0.1, road.center_y(1), 0.0, 10.0, 0.0)
-        assert execution(round(k * 0.1, 6), {"dut.car": state}, road, {}) is None
+        assert execution(round(k * 0.1, 6), {"dut.car": state}, road, {}, {"dut.car": road}) is None
     # every 0.25 s, at the first simulation step not before it; none once the plan has ended (t >= 2)
     assert [at for at, *_ in replanner.asked] == [0.3, 0.5, 0.8, 1.0, 1.3, 1.5, 1.8, 2.0]
     assert [step for _, step, *_ in replanner.asked] == [1, 1, 1, 1, 2, 2, 2, 2]
@@ -269,10 +269,135 @@ def test_at_a_junction_a_replan_comes_only_once_the_vehicle_under_test_has_left_
     road = Road(3)
     for k in range(15):  # on course, 0.1 m and 0.1 m/s off at most
         state = VehicleState(10.0 * k * 0.1 + 0.1, road.center_y(1), 0.0, 10.1, 0.0)
-        execution(round(k * 0.1, 6), {"dut.car": state}, road, {})
+        execution(round(k * 0.1, 6), {"dut.car": state}, road, {}, {"dut.car": road})
     assert replanner.asked == []
     # it brakes: 1 m/s slower than planned, and the next period replans
     for k in range(15, 20):
         state = VehicleState(10.0 * k * 0.1 - 0.2, road.center_y(1), 0.0, 9.0, -2.0)
-        execution(round(k * 0.1, 6), {"dut.car": state}, road, {})
+        execution(round(k * 0.1, 6), {"dut.car": state}, road, {}, {"dut.car": road})
     assert [at for at, *_ in replanner.asked] == [1.5, 1.8]
+
+
+def _modes_with_plans():
+    """Every set of replanning modes that could have plans: with a mode, every mode that asks less
+    of the same run so far (the vehicle under test free rather than predicted, any length rather
+    than the old one's) has one too."""
+    import itertools
+
+    from pytest_roadlogic.reactive.replanner import MODES
+
+    def asks_less(wider, narrower):
+        return (
+            wider.seen == narrower.seen
+            and (not wider.predicted or narrower.predicted)
+            and (not wider.full_length or narrower.full_length)
+        )
+
+    for chosen in itertools.product((False, True), repeat=len(MODES)):
+        having = {m for m, c in zip(MODES, chosen) if c}
+        if all(w in having for m in having for w in MODES if asks_less(w, m)):
+            yield having
+
+
+@pytest.mark.parametrize("having", list(_modes_with_plans()), ids=lambda h: f"{len(h)} modes")
+def test_a_replan_after_one_without_a_plan_takes_the_plan_it_would_have_taken_and_proves_none_with_two_searches(
+    monkeypatch, having
+):
+    import pytest_roadlogic.planning as planning
+    from pytest_roadlogic.planning import NoPlanError
+    from pytest_roadlogic.reactive.replanner import MODES
+
+    tried = []
+
+    class Planner:
+        def replan(self, past, shortest):
+            mode = next(
+                m
+                for m in MODES
+                if m.seen == (past.seen is not None)
+                and m.predicted == past.predicted
+                and m.full_length == (shortest == plan.horizon)
+            )
+            tried.append(mode)
+            if mode not in having:
+                raise NoPlanError("none")
+            return SimpleNamespace(mode=mode)
+
+    monkeypatch.setattr(planning, "planner_for", lambda automaton, settings, seed: Planner())
+    plan = SimpleNamespace(dt=1.0, horizon=6, transitions=[])
+    seen = {k: {} for k in range(3)}
+    settings = SimpleNamespace(time_limit=10.0)
+    monkeypatch.setattr("dataclasses.replace", lambda obj, **changes: obj)
+    taken = {}
+    for stuck in (False, True):
+        replanner = Replanner(None, settings, 1, "dut.car")
+        replanner.stuck = stuck
+        tried.clear()
+        found = replanner.replan(plan, 3, {}, seen)
+        taken[stuck] = found.plan.mode if found.plan is not None else None
+        if not having and stuck:
+            assert len(tried) == 2  # the two widest modes prove that none has a plan
+    assert taken[True] == taken[False]
+    assert (taken[False] is None) == (not having)
+
+
+def test_only_the_constraints_a_run_may_still_meet_name_a_vehicle_as_ahead_of_it():
+    scenario = load_scenario(ROOT / "scenarios" / "junctions" / "yield_left_turn_across_oncoming.osc")
+    automaton = build_automaton(scenario)
+    # the oncoming car is placed relative to the vehicle under test at the start, and is held to
+    # its own speed all along; nothing after the start names the vehicle under test
+    ahead = {loc.name: automaton.names_ahead(loc.id, "dut.car") for loc in automaton.locations}
+    assert ahead == {
+        "init": True,
+        "dut.car.drive | oncoming.drive": False,
+        "dut.car.drive | oncoming.drive#2": False,
+        "fin": False,
+    }
+    assert [automaton.names_ahead(loc.id, "oncoming") for loc in automaton.locations] == [True, True, True, False]
+
+
+def test_at_a_junction_replans_stop_once_a_car_whose_way_crosses_the_vehicle_under_tests_has_passed_the_crossing():
+    import dataclasses
+
+    from pytest_roadlogic.roads.asks import TurnAsk
+    from pytest_roadlogic.roads.conflicts import meetings_of
+    from pytest_roadlogic.roads.opendrive_in import read_map
+    from pytest_roadlogic.roads.road import Road
+    from pytest_roadlogic.roads.ways import choose_ways
+    from pytest_roadlogic.simulation.driver import VehicleState
+
+    road_map = read_map(ROOT / "scenarios" / "junctions" / "maps" / "crossing.xodr")
+    asks = (TurnAsk("left", junction="j", in_road="r"), TurnAsk("straight", junction="j", out_road="r"))
+    turn, oncoming = choose_ways(road_map, 1, 200.0, asks, (frozenset({"dut.car"}), frozenset({"oncoming"}))).routes()
+    (crossing,) = meetings_of(0, turn, 1, oncoming)
+    roads = {
+        "dut.car": dataclasses.replace(Road(1), route=turn),
+        "oncoming": dataclasses.replace(Road(1), route=oncoming),
+    }
+    replanner = RecordingReplanner()
+    replanner.automaton = build_automaton(
+        load_scenario(ROOT / "scenarios" / "junctions" / "yield_left_turn_across_oncoming.osc")
+    )
+    # planned at 10 m/s; the vehicle under test waits before the crossing (off its course)
+    states = {"dut.car": [PlanState(10.0 * k, 1, 10.0) for k in range(30)]}
+    plan = SimpleNamespace(
+        dt=1.0,
+        horizon=29,
+        vehicles=("dut.car", "oncoming"),
+        stationary=(),
+        states=states,
+        at=lambda v, k: states[v][k],
+        transitions=[(0, 0)],
+    )
+    execution = ReactiveExecution(replanner, plan, 1.0, on_course_only=True)
+    waiting = VehicleState(crossing.first_span[0] - 10.0, 0.0, 0.0, 0.0, 0.0)
+
+    def asked_with_the_oncoming_car_at(metres: float, k: int) -> bool:
+        before = len(replanner.asked)
+        state = VehicleState(metres, 0.0, 0.0, 8.0, 0.0)
+        execution(float(k), {"dut.car": waiting, "oncoming": state}, Road(1), {}, roads)
+        return len(replanner.asked) > before
+
+    assert asked_with_the_oncoming_car_at(crossing.second_span[0] - 5.0, 1)  # still to come
+    assert asked_with_the_oncoming_car_at(crossing.second_span[1], 2)  # in it
+    assert not asked_with_the_oncoming_car_at(crossing.second_span[1] + 3.0, 3)  # past it: the plan stands
