@@ -42,11 +42,22 @@ class GuardMiss:
     locations: tuple[SourceLocation, ...] = ()
     # when the guard did hold but a phase's duration did not allow the transition there: why
     timing: str = ""
+    # when the guard did hold but a vehicle of the phase had stopped before it did: which, from when
+    progress: str = ""
 
     def describe(self) -> str:
         values = ", ".join(f"{k} = {v:.2f}" for k, v in self.values.items())
         values = f" where {values}" if values else ""
         where = "".join(f"\n    declared at {loc}" for loc in self.locations)
+        if self.progress:
+            held = f"held at t = {self.time:.1f} s (robustness {self.robustness:+.2f}){values}"
+            return (
+                f"stuck in {self.source}: {self.progress} (a vehicle in a drive makes forward progress while "
+                f"its phase runs), so no run stayed there until it could take the guard to {self.target} "
+                f"({self.events}):\n"
+                f"    {self.guard}\n"
+                f"    {self.timing + '; the guard ' if self.timing else ''}{held}{where}"
+            )
         if self.timing:
             return (
                 f"stuck in {self.source}: the guard to {self.target} ({self.events}) held, but not in time:\n"
@@ -394,6 +405,21 @@ class _RunSearch:
                     if next_key not in target or candidate > target[next_key][0]:
                         target[next_key] = (candidate, run + ((k, transition.id),))
 
+    def _stood_still(self, location: int, entered: int, held: float) -> str:
+        """The vehicle of ``location``'s drive phases that first stood still after the run entered
+        it (sample ``entered``) and by ``held`` seconds, and from when: "" when every one of them
+        moved on at every sample up to then."""
+        stops = [
+            (k, actor)
+            for actor in self.drivers[location]
+            for k in range(entered, len(self.progress[actor]))
+            if not self.progress[actor][k] and self.times[k] <= held + 1e-9
+        ]
+        if not stops:
+            return ""
+        k, actor = min(stops)
+        return f"{actor} stood still from t = {self.times[k]:.1f} s"
+
     def verdict(self) -> Verdict:
         """Accepted when a run ends in the final location with every guard met and the trace had no
         incident; else the location the best run got furthest to and the closest miss there."""
@@ -410,10 +436,15 @@ class _RunSearch:
         miss = None
         if self.best_final < 0:
             miss = _closest_miss(automaton, furthest, self.first_met[furthest] or 0, self.guard_margin, trace, times)
+            # a guard that held where the run could have taken it but for a vehicle that had stopped
+            stopped_short = miss is not None and miss.robustness >= 0
             if self.rate_miss is not None and (miss is None or miss.robustness >= 0):
                 miss = _rate_miss(automaton, self.rate_miss, self.columns, times)
+                stopped_short = False
             if furthest in self.timing_miss and (miss is None or miss.robustness >= 0):
                 miss = _timing_miss(automaton, self.timing_miss[furthest], trace, times)
+                *_, phase, seconds = self.timing_miss[furthest]
+                stopped_short = seconds < automaton.timings[phase].low
             elif furthest in self.overrun and miss is not None and miss.robustness >= 0 and not miss.timing:
                 k, phase, seconds = self.overrun[furthest]
                 timing = automaton.timings[phase]
@@ -422,6 +453,13 @@ class _RunSearch:
                     timing=f"{timing} but had lasted {seconds:.1f} s by t = {times[k - 1]:.1f} s, before the guard held",
                     locations=tuple(dict.fromkeys([*miss.locations, *([timing.source] if timing.source else [])])),
                 )
+                stopped_short = False
+            if stopped_short:
+                # the guard held, too soon or at a time the run could have taken it: a vehicle of the
+                # phase that had stopped making progress by then is why no run stayed there for it
+                still = self._stood_still(furthest, self.first_met[furthest] or 0, miss.time)
+                if still:
+                    miss = dataclasses.replace(miss, progress=still)
         return Verdict(
             accepted,
             float(self.best_final),

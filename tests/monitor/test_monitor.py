@@ -143,3 +143,43 @@ def test_a_guard_that_held_out_of_time_is_explained_by_the_duration_not_as_never
     explanation = verdict.explain()
     assert "never held" not in explanation and "held, but not in time" in explanation, explanation
     assert why in explanation, explanation
+
+
+STANDING = (
+    "scenario s:\n  v1: car\n  v2: car\n  do parallel(duration: [4s..6s]):\n    v1.drive()\n"
+    "    v2.drive() with:\n      speed([10mps..12mps])\n"
+)
+
+
+def _two_cars(v1_x):
+    n = len(v1_x)
+
+    def columns(x, speed):
+        return {
+            "x": np.asarray(x, float),
+            "y": np.zeros(n),
+            "heading": np.zeros(n),
+            "speed": np.full(n, speed),
+            "acceleration": np.zeros(n),
+            "lane": np.ones(n, int),
+        }
+
+    return Trace(np.arange(n) * DT, {"v1": columns(v1_x, 10.0), "v2": columns(np.arange(n) * 5.5, 11.0)})
+
+
+@pytest.mark.parametrize(
+    "v1_x, stood",
+    [([0.0] * 20, "v1 stood still from t = 0.0 s"), ([min(5.0 * k, 30.0) for k in range(20)], "from t = 3.0 s")],
+    ids=["never moved", "stopped before the phase could end"],
+)
+def test_a_run_stuck_because_a_vehicle_stood_still_says_so_not_that_a_guard_that_held_never_did(v1_x, stood):
+    from pytest_roadlogic.automaton import build_automaton
+    from pytest_roadlogic.frontend import check_text
+
+    automaton = build_automaton(check_text(STANDING).scenarios[0])
+    verdict = monitor(automaton, _two_cars(v1_x))
+    assert not verdict.accepted
+    assert stood in verdict.explain() and "makes forward progress" in verdict.explain()
+    assert "never held" not in verdict.explain()
+    # both moving on, the same guard and duration: accepted
+    assert monitor(automaton, _two_cars([5.0 * k for k in range(20)])).accepted
