@@ -12,7 +12,7 @@ import pytest
 
 from pytest_roadlogic.artifacts.commonroad import commonroad_scenario
 from pytest_roadlogic.automaton import build_automaton
-from pytest_roadlogic.frontend import check_text
+from pytest_roadlogic.frontend import check_file, check_text
 from pytest_roadlogic.pipeline import run_scenario
 
 PAIR = "scenario s:\n    a: car\n    b: car\n"
@@ -70,6 +70,19 @@ def side_by_side(a_lane: str, b_lane: str = "lane(1, at: all)", head: str = PAIR
             4,
             id="the bare form without a Path field",
         ),
+        pytest.param(
+            side_by_side("lane(2, at: all)", head=PAIR + "    map: map\n    map.number_of_lanes(map, 5)\n"),
+            5,
+            id="the standard's number_of_lanes above the default",
+        ),
+        pytest.param(
+            side_by_side(
+                "lane(1, at: all)",
+                head=PAIR + "    map: map\n    map.number_of_lanes(map, 2, driving, directionality: uni_direction)\n",
+            ),
+            2,
+            id="number_of_lanes below the default, counting driving lanes one way",
+        ),
     ],
 )
 def test_the_road_is_as_wide_as_the_scenario_needs(text, expected):
@@ -91,6 +104,32 @@ def test_a_lanes_option_that_contradicts_the_scenario_names_the_declaration():
 def test_a_lane_beyond_path_max_lanes_names_the_bound():
     text = side_by_side("lane(3, at: all)", head=PAIR + "    road: Path\n    road.path_max_lanes(2)\n")
     assert errors_of(text) == ["8:18: lane 3 is outside the road's 2 lanes (path_max_lanes(2) on line 5)"]
+
+
+@pytest.mark.parametrize(
+    "road, message",
+    [
+        ("map.number_of_lanes(map, 2)", "8:18: lane 3 is outside the road's 2 lanes (number_of_lanes(2) on line 5)"),
+        (
+            "map.number_of_lanes(map, 3, pedestrian)",
+            "5:33: not supported: lane_type pedestrian: the tool counts a road's driving lanes one way",
+        ),
+        (
+            "map.number_of_lanes(map, 3, directionality: bi_direction)",
+            "5:49: not supported: directionality bi_direction: the tool counts a road's driving lanes one way",
+        ),
+        (
+            "map.number_of_lanes(map, 3)\n    map.path_max_lanes(4)",
+            "6:9: path_max_lanes() is already given on line 5",
+        ),
+    ],
+    ids=["a lane beyond it", "another lane type", "both directions", "a second bound"],
+)
+def test_number_of_lanes_fixes_the_roads_lanes_and_a_count_the_tool_cannot_make_is_refused_at_its_argument(
+    road, message
+):
+    text = side_by_side("lane(3, at: all)", head=PAIR + f"    map: map\n    {road}\n")
+    assert errors_of(text) == [message]
 
 
 def test_each_scenario_of_a_file_has_its_own_road():
@@ -162,3 +201,22 @@ def test_the_plugin_takes_the_road_from_the_file_unless_the_lanes_option_is_give
     narrow = collect("--roadlogic-lanes", "3")
     assert narrow.returncode != 0
     assert "lane 5 is outside the road's 3 lanes (set by the lanes option)" in narrow.stdout
+
+
+@pytest.mark.parametrize("lanes, error", [(3, None), (2, "has 3 driving lanes, more than number_of_lanes(2)")])
+def test_number_of_lanes_on_a_map_takes_a_road_with_as_many_lanes_or_says_the_map_has_none(tmp_path, lanes, error):
+    from pathlib import Path
+
+    maps = Path(__file__).resolve().parents[2] / "scenarios" / "roads" / "maps"
+    (tmp_path / "curved_highway.xodr").write_bytes((maps / "curved_highway.xodr").read_bytes())
+    text = (
+        'scenario s:\n    map: map\n    map.set_map("curved_highway.xodr")\n'
+        f"    map.number_of_lanes(map, {lanes})\n    ego: car\n    do ego.drive(duration: 5s)\n"
+    )
+    (tmp_path / "t.osc").write_text(text)
+    checked = check_file(tmp_path / "t.osc")
+    if error is None:
+        assert not checked.errors, checked.report()
+        assert checked.scenarios[0].lanes == lanes
+    else:
+        assert [d.message for d in checked.errors] == [f"the route on road 1 of curved_highway.xodr {error}"]

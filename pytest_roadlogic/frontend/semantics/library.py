@@ -191,6 +191,20 @@ ROAD_MODIFIERS: dict[str, Signature] = _signatures(
         required=(("lanes",),),
         description="the road has at most this many lanes",
     ),
+    # the standard's map.number_of_lanes on the scenario's road (or a turning path's route): its
+    # driving lanes one way, as path_min_driving_lanes and path_max_lanes together
+    Signature(
+        "number_of_lanes",
+        (
+            Parameter("route", "road", positional=True),
+            Parameter("num_of_lanes", "uint", positional=True),
+            Parameter("lane_type", "enum:lane_type", positional=True),
+            Parameter("lane_use", "enum:lane_use", supported=False),
+            Parameter("directionality", "enum:directionality"),
+        ),
+        required=(("route",), ("num_of_lanes",)),
+        description="the road has this many driving lanes one way (lane_type: driving, directionality: uni_direction)",
+    ),
     Signature(
         "path_length",
         (Parameter("min_length", "length"), Parameter("max_length", "length")),

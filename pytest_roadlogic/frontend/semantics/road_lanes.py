@@ -68,7 +68,7 @@ class RoadLanes:
         if self.requested_lanes is not None:
             lanes = self.requested_lanes
             self.lanes_origin = " (set by the lanes option)"
-            for name, (value, location) in bounds.items():
+            for name, (value, location, *_) in bounds.items():
                 if (name == "path_min_driving_lanes" and lanes < value) or (name == "path_max_lanes" and lanes > value):
                     bound = "at least" if name == "path_min_driving_lanes" else "at most"
                     self.error(
@@ -90,7 +90,7 @@ class RoadLanes:
             self.lanes_origin = ""
             if most and lanes > most[0]:
                 lanes = most[0]
-                self.lanes_origin = f" (path_max_lanes({lanes}) on line {most[1].line})"
+                self.lanes_origin = f" ({_written(most, 'path_max_lanes')}({lanes}) on line {most[1].line})"
             if lanes > MAX_LANES:
                 # the one error for it: the road keeps the lanes asked for, so the lane checks stay quiet
                 self.error(
@@ -172,8 +172,8 @@ class RoadLanes:
         if most and lanes > most[0]:
             self.error(
                 most[1],
-                f"the route on {self.route.name} has {lanes} driving lanes, more than path_max_lanes({most[0]})",
-                "leave out path_max_lanes, or give a map whose road has that many lanes",
+                f"the route on {self.route.name} has {lanes} driving lanes, more than {_written(most, 'path_max_lanes')}({most[0]})",
+                f"leave out {_written(most, 'path_max_lanes')}, or give a map whose road has that many lanes",
             )
         if self.requested_lanes is not None and self.requested_lanes != lanes:
             self.error(
@@ -426,6 +426,9 @@ class RoadLanes:
             if modifier.name in _RELATIONS:
                 self._relation_ask(modifier, binding, before)
                 continue
+            if modifier.name == "number_of_lanes":
+                self._number_of_lanes(modifier, binding, env, before, bounds)
+                continue
             argument = binding["lanes"]
             if argument is None or any(d.severity == "error" for d in self.diagnostics[before:]):
                 continue
@@ -446,6 +449,38 @@ class RoadLanes:
             else:
                 bounds[modifier.name] = (int(value.low), modifier.location)
         return bounds
+
+    def _number_of_lanes(self, modifier: model.Modifier, binding, env: dict, before: int, bounds: dict) -> None:
+        """``number_of_lanes(route, n)``: the road has ``n`` driving lanes one way, kept in ``bounds``
+        as ``path_min_driving_lanes`` and ``path_max_lanes`` both (so a road of the map is picked
+        and judged as with those); the lanes it counts are a road's driving lanes, one way."""
+        if any(d.severity == "error" for d in self.diagnostics[before:]):
+            return
+        for name, counted in (("lane_type", "driving"), ("directionality", "uni_direction")):
+            given = binding[name]
+            if given is not None and given.value.name != counted:
+                self.error(
+                    given.value.location,
+                    f"not supported: {name} {given.value.name}: the tool counts a road's driving lanes one way",
+                    f"give {name}: {counted}, or leave it out",
+                )
+                return
+        argument = binding["num_of_lanes"]
+        value = evaluate(argument.value, env)
+        if not (isinstance(value, Interval) and value.is_point and float(value.low).is_integer() and value.low >= 1):
+            self.error(argument.value.location, "num_of_lanes takes one whole number of lanes from 1 up, e.g. 3")
+            return
+        lanes = int(value.low)
+        for name in ("path_min_driving_lanes", "path_max_lanes"):
+            if name in bounds and bounds[name][0] != lanes:
+                self.error(
+                    modifier.location,
+                    f"number_of_lanes({lanes}) contradicts {name}({bounds[name][0]}) on line {bounds[name][1].line}",
+                    "give the road's lanes once",
+                )
+                return
+        for name in ("path_min_driving_lanes", "path_max_lanes"):
+            bounds[name] = (lanes, modifier.location, "number_of_lanes")
 
     def _turn_ask(self, modifier: model.Modifier, binding, env: dict, before: int) -> None:
         """``roads_follow_in_junction``: the path it is applied to turns at a junction, kept in
@@ -593,3 +628,8 @@ _RELATION_EXAMPLE = {
     "opposite": "route1: a.resulting_route, route2: b.resulting_route",
     "sequence": "preceding: a.resulting_route, succeeding: b.resulting_route",
 }
+
+
+def _written(bound: tuple, name: str) -> str:
+    """The modifier a lane bound was written with: ``name``, or the one that gave it (number_of_lanes)."""
+    return bound[2] if len(bound) > 2 else name
