@@ -29,6 +29,8 @@ OUTCOMES = (*CONFORMANCE_OUTCOMES, *DUT_OUTCOMES)
 # what a case that ends so says about the item: none of these fail it alone (an item whose cases were
 # mostly not exercised fails as a whole: ``mostly_not_exercised``)
 FINE = (CONFORMANT, PASSED, NOT_EXERCISED)
+# the cases whose scenario happened, which coverage counts (one with no plan, or not accepted, exercised nothing)
+HAPPENED = (CONFORMANT, PASSED, DUT_FAILED)
 STAGES = ("automaton", "planning", "simulation", "monitoring", "artifacts")
 # the kinds of failure a report names (``runner.CaseResult.kind``): the scenario cannot be
 # instantiated at the values, a limit of the tool binds there, or the simulation was not accepted

@@ -50,6 +50,7 @@ EXTRA_OPTIONS = (
     ("artifacts", "directory for the artifacts of failing cases", DEFAULT_ARTIFACTS),
     ("replay", "run only the case in this case.json (written for a failure), with this session's drivers", ""),
     ("allow-read", f"folders outside the rootdir that .osc imports may read from, separated by {os.pathsep!r}", ""),
+    ("coverage", "write what the session covered of the scenarios' cover()/record() items to this JSON file", ""),
 )
 
 
@@ -284,6 +285,7 @@ class ScenarioItem(pytest.Item):
         self.not_exercised = None  # the last case that was not exercised (a runner.CaseResult)
         self.unasked_cases = 0  # cases whose plan needed changes nothing asks for
         self.unasked_said: list[str] = []  # the last such plan's changes, as a user reads them
+        self.coverage = None  # what the cases covered of its cover/record items (evaluation.coverage)
 
     # ---------------------------------------------------------------- running
 
@@ -293,6 +295,12 @@ class ScenarioItem(pytest.Item):
 
         settings = self.settings
         self.user_properties += [("strategy", settings.strategy), ("seed", settings.seed)]
+        if self.scenario.coverage:
+            from .evaluation.coverage import ScenarioCoverage
+
+            self.coverage = ScenarioCoverage.of(
+                f"{self.nodeid.split('::')[0]}::{self.scenario.name}", self.scenario.coverage
+            )
         if self.shard.count > 1:
             self.user_properties.append(("shard", f"{self.shard.index + 1}/{self.shard.count}"))
         self.drivers = self._drivers()
@@ -359,10 +367,23 @@ class ScenarioItem(pytest.Item):
             self.user_properties += [(f"seconds_{stage}", round(self.tally.seconds[stage], 3)) for stage in STAGES]
             self.user_properties += _oracle_properties(self.dut_reports)
             self.user_properties.append(("unasked", self.unasked_cases))
+            if self.coverage is not None:
+                self._prove_unreachable()
+                self.user_properties.append(("coverage", json.dumps(self.coverage.to_json())))
             if self.unasked_said:
                 self.user_properties.append(("unasked_changes", "; ".join(self.unasked_said[:MAX_UNASKED_SAID])))
         if missing is not None:
             pytest.fail(f"roadlogic: --roadlogic-dut: {missing}", pytrace=False)
+
+    def _prove_unreachable(self) -> None:
+        """Mark the cover buckets no case hit that no case can reach (``evaluation.reach``), with why."""
+        from .evaluation.reach import unreachable
+
+        for item in self.scenario.coverage:
+            tally = self.coverage.items[item.name]
+            missed = [label for label, hits in tally.buckets.items() if hits == 0]
+            if missed:
+                tally.unreachable.update(unreachable(self.scenario, item, missed, self.settings, self.settings.seed))
 
     def _drivers(self):
         from .simulation.named_drivers import RecordingDrivers
@@ -377,6 +398,8 @@ class ScenarioItem(pytest.Item):
     def _count(self, result) -> None:
         """Count a case; a failed one ends the item (and, refined, starts the shrinking)."""
         self.tally.add(result.outcome, result.seconds)
+        if self.coverage is not None:
+            self.coverage.add(self.scenario.coverage, result.case.values, result.outcome)
         if result.run is not None and result.run.dut is not None:
             self.dut_reports.append(result.run.dut)
         if result.run is not None:
@@ -632,6 +655,7 @@ class SessionSummary:
         self.items = 0
         self.counts: dict[str, float] = {}
         self.test_points: list = []  # dut.catalogue.TestPoint of each item with a vehicle under test
+        self.coverage: list = []  # evaluation.coverage.ScenarioCoverage of each item with cover/record items
 
     @pytest.hookimpl
     def pytest_runtest_logreport(self, report) -> None:
@@ -646,14 +670,19 @@ class SessionSummary:
         point = point_from(report.nodeid, properties, report.passed, "" if report.passed else str(report.longrepr))
         if point is not None:
             self.test_points.append(point)
+        if "coverage" in properties:
+            from .evaluation.coverage import ScenarioCoverage
+
+            self.coverage.append(ScenarioCoverage.from_json(json.loads(properties["coverage"])))
         for name, value in properties.items():
             if isinstance(value, (int, float)) and not isinstance(value, bool) and name != "seed":
                 self.counts[name] = self.counts.get(name, 0) + value
 
     @pytest.hookimpl
-    def pytest_terminal_summary(self, terminalreporter) -> None:
+    def pytest_terminal_summary(self, terminalreporter, config) -> None:
         if not self.items:
             return
+        self._coverage_summary(terminalreporter, config)
         c = self.counts
         outcomes = ", ".join(f"{c.get(key(o), 0)} {o}" for o in OUTCOMES)
         seconds = ", ".join(f"{stage} {c.get(f'seconds_{stage}', 0):.1f} s" for stage in STAGES)
@@ -681,6 +710,28 @@ class SessionSummary:
             for line in text_table(self.test_points):
                 terminalreporter.write_line(line)
             terminalreporter.write_line(grade(self.test_points))
+
+    def _coverage_summary(self, terminalreporter, config) -> None:
+        """The cover/record items' report, merged over items and workers; written to the
+        ``--roadlogic-coverage`` file when one is named (a file that cannot be written is said, not raised)."""
+        if not self.coverage:
+            return
+        from .evaluation.coverage import merged, text_lines, write_json
+
+        coverages = merged(self.coverage)
+        terminalreporter.write_sep("-", "roadlogic coverage")
+        for line in text_lines(coverages):
+            terminalreporter.write_line(line)
+        path = _text(config, "coverage")
+        if path:
+            try:
+                write_json(coverages, Path(path))
+            except OSError as error:
+                terminalreporter.write_line(
+                    f"roadlogic: --roadlogic-coverage {path}: cannot write it ({error.strerror})"
+                )
+            else:
+                terminalreporter.write_line(f"coverage written to {path}")
 
     @pytest.hookimpl(optionalhook=True)
     def pytest_html_results_summary(self, prefix, summary, postfix) -> None:

@@ -201,6 +201,21 @@ def guided(
     return checked, declared
 
 
+def within(checked: CheckedScenario, name: str, low: float, high: float) -> tuple[CheckedScenario, dict[str, object]]:
+    """``checked`` with the numeric logical parameter ``name`` narrowed to ``[low, high]`` (within
+    its own range), as ``guided`` narrows a sample to its band: the scenario with its inline range
+    narrowed, or the declared parameter's range for ``build_automaton(values=...)``. Why: a
+    question about a part of a parameter's range (a coverage bucket) is a planning problem with
+    the range narrowed to that part."""
+    parameter = next(p for p in checked.parameters if p.name == name)
+    band = (max(low, parameter.low), min(high, parameter.high))
+    if parameter.declared:
+        return checked, {name: Interval(band[0], band[1], parameter.dimension)}
+    scenario = checked.scenario
+    narrowed = _narrow(scenario.behavior, {parameter.location: band})
+    return dataclasses.replace(checked, scenario=dataclasses.replace(scenario, behavior=narrowed)), {}
+
+
 def on_ways(checked: CheckedScenario, values: Values) -> CheckedScenario:
     """``checked`` on the routes of the ways through the map that ``values`` name for its paths
     (a way parameter's value, ``frontend.semantics.logical.way_parameters``); a path not named

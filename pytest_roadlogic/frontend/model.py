@@ -301,6 +301,17 @@ class Actor:
 
 
 @dataclass(frozen=True)
+class Coverage:
+    """A ``cover(...)`` or ``record(...)`` member (``kind``), its arguments as written; a field's
+    own (in its ``with:``) names the field (``field``) when it gives no name."""
+
+    kind: str
+    arguments: tuple[Argument, ...]
+    location: SourceLocation
+    field: str | None = None
+
+
+@dataclass(frozen=True)
 class Scenario:
     """A ``scenario`` (or ``action``) declaration.
 
@@ -325,6 +336,8 @@ class Scenario:
     path: str | None = None
     # Modifiers applied to the whole scenario (``path.path_min_driving_lanes(4)``): only road ones are accepted.
     modifiers: tuple[Modifier, ...] = ()
+    # its cover(...) and record(...) members, and those of its fields
+    coverage: tuple[Coverage, ...] = ()
 
     def actor(self, name: str) -> Actor | None:
         for actor in self.actors:

@@ -52,12 +52,21 @@ CASES = [
     ),
     ("on", HEAD + "    on @x:\n        emit y\n", "4:5: error: not supported: on"),
     ("call", HEAD + "    do call log()\n", "4:8: error: not supported: call"),
-    ("cover", HEAD + "    cover(a)\n", "4:5: warning: cover() is read and ignored"),
-    ("record", HEAD + "    record(a)\n", "4:5: warning: record() is read and ignored"),
+    (
+        "cover",
+        HEAD + "    cover(a)\n",
+        "4:11: warning: cover(a): a is no logical parameter of the scenario (a value it leaves open, sampled per case); the item is not collected",
+    ),
+    (
+        "record",
+        HEAD + "    record(a, expression: a.speed)\n",
+        "4:27: warning: not supported yet: record() of a value the run takes; the tool collects the scenario's "
+        "logical parameters, sampled once per case; the item is not collected",
+    ),
     (
         "cover_in_actor_declaration",
         "actor robot inherits car:\n    cover(speed)\n" + HEAD,
-        "2:5: warning: cover() is read and ignored",
+        "2:5: warning: cover() in a type declaration is read and ignored",
     ),
     ("export", "export s\n" + HEAD, "1:1: error: not supported: export"),
     ("export_namespace_wildcard", "export mine::*\n" + HEAD, "1:1: error: not supported: export"),

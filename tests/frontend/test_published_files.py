@@ -123,16 +123,21 @@ def test_set_map_and_an_anchor_read_a_global_string_as_its_value(tmp_path):
     assert all("p(npc) - p(ego)" in str(t.guard) for t in start), "the position holds at the start"
 
 
-def test_cover_and_record_inside_a_fields_with_are_read_and_ignored_with_a_warning():
+def test_cover_and_record_inside_a_fields_with_are_items_of_that_field():
     text = (
         "scenario s:\n    ego: car\n    v: speed with:\n        keep(it in [20mps..30mps])\n"
-        "        cover(v, expression: it)\n        record(v)\n    do ego.drive() with:\n        speed(v)\n"
+        "        cover(v_band, expression: it, unit: kph, every: 9)\n        record(v)\n    do ego.drive() with:\n        speed(v)\n"
     )
     checked = check_text(text, "s.osc")
     assert not checked.errors, checked.report()
-    assert _lines(checked, "warning") == [
-        "s.osc:5:9: cover() is read and ignored",
-        "s.osc:6:9: record() is read and ignored",
+    assert _lines(checked, "warning") == []
+    items = {item.name: item for item in checked.scenarios[0].coverage}
+    assert {name: item.parameter for name, item in items.items()} == {"v_band": "v", "v": "v"}
+    assert [b.label for b in items["v_band"].buckets] == [
+        "[72..81) kph",
+        "[81..90) kph",
+        "[90..99) kph",
+        "[99..108] kph",
     ]
 
 

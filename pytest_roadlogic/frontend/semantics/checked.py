@@ -57,6 +57,8 @@ class CheckedScenario:
     # the ways its paths may take through the map together (``roads.ways.Ways``), when they turn
     # at junctions: ``routes`` are the first; a sample may name others (``sampling.guided``)
     ways: object = field(default=None, compare=False)
+    # its cover(...) and record(...) items (``semantics.coverage.CoverItem``), checked
+    coverage: tuple = field(default=(), compare=False)
 
     @property
     def name(self) -> str:

@@ -26,6 +26,7 @@ from ..syntax.units import SPEED, TIME
 from . import library
 from .builtin_events import with_builtin_events
 from .checked import CheckedFile, CheckedScenario, Registry
+from .coverage import coverage_items
 from .dialects import registry as dialect_registry
 from .events import EventChecks
 from .field_types import FieldTyping
@@ -283,9 +284,19 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks):
                 )
             except OscError:
                 parameters = ()  # a scenario with errors is reported, never sampled: the checker said why
+            coverage = coverage_items(checked, parameters, self.warning)
             scenarios.append(
                 CheckedScenario(
-                    checked, space, lanes, self.registry, self.sources, parameters, self.route, self.routes, self.ways
+                    checked,
+                    space,
+                    lanes,
+                    self.registry,
+                    self.sources,
+                    parameters,
+                    self.route,
+                    self.routes,
+                    self.ways,
+                    coverage,
                 )
             )
         self.diagnostics = list(dict.fromkeys(self.diagnostics))

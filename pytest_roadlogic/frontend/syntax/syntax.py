@@ -145,6 +145,8 @@ class _Builder:
         self.unmodelled = unmodelled
         self.ignored: list[model.Unsupported] = []  # read and ignored where found, reported with the file
         self.diagnostics: list[Diagnostic] = []
+        # cover/record in a field's with:, by field, until its scenario takes them
+        self.field_coverage: dict[str, list[model.Coverage]] = {}
 
     def error(self, location: SourceLocation, message: str, hint: str | None = None) -> None:
         self.diagnostics.append(Diagnostic(location, message, hint))
@@ -352,6 +354,7 @@ class _Builder:
         behaviors: list[model.Behavior] = []
         unsupported: list[model.Unsupported] = []
         modifiers: list[model.Modifier] = []
+        coverage: list[model.Coverage] = []
         for member in members:
             item = member.getChild(0)
             if isinstance(item, P.FieldDeclarationContext):
@@ -382,7 +385,7 @@ class _Builder:
                     )
                 )
             elif isinstance(item, P.CoverageDeclarationContext):
-                unsupported.append(self.coverage(item))
+                coverage.append(self.coverage(item))
             elif isinstance(item, P.OnDirectiveContext):
                 unsupported.append(
                     model.Unsupported("on", self.loc(item), "express the reaction as a serial phase instead")
@@ -404,6 +407,7 @@ class _Builder:
             unsupported=tuple(unsupported),
             path=self.path,
             modifiers=tuple(modifiers),
+            coverage=tuple(coverage) + tuple(c for f in fields for c in self.field_coverage.pop(f.name, ())),
         )
 
     def type_declaration(self, ctx) -> tuple[model.TypeDeclaration, tuple[model.Unsupported, ...]]:
@@ -412,23 +416,30 @@ class _Builder:
         body = self.scenario_body(name, None, self.loc(ctx.identifier()), ctx.structMember(), "type")
         parent = self.name(ctx.inheritance().parent.name) if ctx.inheritance() is not None else None
         kind = "actor" if isinstance(ctx, P.ActorDeclarationContext) else "struct"
-        refused = body.unsupported + tuple(
-            model.Unsupported(
-                "a modifier in a type declaration", m.location, "put it in the with: block of an invocation"
+        refused = (
+            body.unsupported
+            + tuple(
+                model.Unsupported(
+                    "a modifier in a type declaration", m.location, "put it in the with: block of an invocation"
+                )
+                for m in body.modifiers
             )
-            for m in body.modifiers
+            + tuple(
+                model.Unsupported(
+                    f"{c.kind}() in a type declaration",
+                    c.location,
+                    f"not collected: write {c.kind}(...) in the scenario, on one of its parameters",
+                    severity="warning",
+                )
+                for c in body.coverage
+            )
         )
         return model.TypeDeclaration(kind, name, parent, body.fields, body.constraints, body.location), refused
 
-    def coverage(self, ctx: P.CoverageDeclarationContext) -> model.Unsupported:
-        """``cover(...)``/``record(...)``: coverage the tool does not collect; it changes nothing the
-        tool plans or checks, so it is read with a warning."""
-        return model.Unsupported(
-            f"{ctx.getChild(0).getText()}()",
-            self.loc(ctx),
-            "coverage is not collected: the sampled values are in each case's report (case.json)",
-            severity="warning",
-        )
+    def coverage(self, ctx: P.CoverageDeclarationContext, field: str | None = None) -> model.Coverage:
+        """``cover(...)``/``record(...)``, its arguments as written (the checker reads them:
+        ``semantics.coverage``); in a field's ``with:``, ``field`` names the field."""
+        return model.Coverage(ctx.getChild(0).getText(), self.arguments(ctx.argumentList()), self.loc(ctx), field)
 
     def fields(self, ctx: P.FieldDeclarationContext) -> list[model.Field]:
         declarator = ctx.typeDeclarator()
@@ -444,7 +455,7 @@ class _Builder:
                     constraints.append(self.keep(item, subject=name))
                 elif isinstance(item, P.CoverageDeclarationContext):
                     if ident is ctx.identifier()[0]:
-                        self.ignored.append(self.coverage(item))
+                        self.field_coverage.setdefault(name, []).append(self.coverage(item, name))
                 else:
                     constraints.append(self.remove_default(item))
             result.append(

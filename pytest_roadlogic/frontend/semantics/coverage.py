@@ -1,0 +1,334 @@
+"""The standard's ``cover(...)`` and ``record(...)`` members, read and checked (``coverage_items``).
+
+An item names what it collects (``name``, or ``expression:``): here one of the scenario's logical
+parameters, whose value a case samples and keeps whatever event the item names. A ``cover`` item
+slices that value into buckets: ``range:`` and ``every:`` in the item's ``unit:``, or
+``buckets:`` boundaries, or by default the parameter's own range in five (one bucket per choice of
+an enum, a bool, a way through the map, or a whole number of at most ``MAX_VALUE_BUCKETS`` values).
+``ignore:`` and ``illegal:`` are conditions on the item's value. What a run then counts per bucket
+is ``evaluation.coverage``'s.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+from .. import model
+from ..errors import SourceLocation
+from ..syntax.standard_library import UNITS
+from ..syntax.units import SI_UNIT
+from .logical import LogicalParameter
+from .values import EvaluationError, Interval, evaluate
+
+# a whole-number parameter of at most this many values has a bucket per value
+MAX_VALUE_BUCKETS = 20
+DEFAULT_BUCKETS = 5
+# arguments read, and those refused for now with why
+READ = (
+    "name",
+    "expression",
+    "unit",
+    "range",
+    "every",
+    "buckets",
+    "text",
+    "event",
+    "target",
+    "ignore",
+    "illegal",
+    "disable",
+)
+REFUSED = {
+    "items": "a cross of cover items (items:) is not collected yet",
+    "override": "an override of an item (override:) is not read yet: change the item itself",
+}
+
+
+@dataclass(frozen=True)
+class Bucket:
+    """One bucket of a cover item: ``[low, high)`` in SI (``closed``: ``[low, high]``, the last of a
+    range), or one ``choice``; ``label`` as reports name it, in the item's unit."""
+
+    label: str
+    low: float = 0.0
+    high: float = 0.0
+    closed: bool = False
+    choice: Any = None
+
+    def holds(self, value: Any) -> bool:
+        if self.choice is not None:
+            return value == self.choice
+        if not isinstance(value, (int, float)) or isinstance(value, bool):
+            return False
+        return self.low - 1e-9 <= value < self.high - 1e-9 or (self.closed and abs(value - self.high) <= 1e-9)
+
+
+@dataclass(frozen=True)
+class CoverItem:
+    """A checked ``cover`` or ``record`` (``kind``) of the logical parameter ``parameter``: its
+    value's ``unit`` (as written, "" for SI) and ``factor`` (SI per unit), its ``buckets`` (a cover),
+    how many samples each must have (``target``), and the conditions under which a value is left
+    out (``ignore``) or is a malfunction (``illegal``)."""
+
+    kind: str
+    name: str
+    parameter: str
+    location: SourceLocation
+    unit: str = ""
+    factor: float = 1.0
+    buckets: tuple[Bucket, ...] = ()
+    text: str = ""
+    target: int = 1
+    ignore: model.Expression | None = None
+    illegal: model.Expression | None = None
+    dimension: str | None = None
+
+    def shown(self, value: Any) -> str:
+        """``value`` (SI) as a report names it, in the item's unit."""
+        if isinstance(value, bool) or not isinstance(value, (int, float)):
+            return str(value)
+        unit = self.unit or SI_UNIT.get(self.dimension, "")
+        return f"{value / self.factor:.4g} {unit}".rstrip()
+
+    def ignored(self, value: Any) -> bool:
+        return self._condition(self.ignore, value)
+
+    def illegal_value(self, value: Any) -> bool:
+        return self._condition(self.illegal, value)
+
+    def _condition(self, expression: model.Expression | None, value: Any) -> bool:
+        if expression is None:
+            return False
+        if isinstance(value, (int, float)) and not isinstance(value, bool):
+            value = Interval(float(value), float(value), self.dimension)
+        return evaluate(expression, {self.name: value, self.parameter: value}) is True
+
+
+def coverage_items(
+    scenario: model.Scenario, parameters: tuple[LogicalParameter, ...], warning
+) -> tuple[CoverItem, ...]:
+    """The scenario's cover and record items, checked against its logical ``parameters``. An item
+    the tool cannot collect is left out with a ``warning(location, message, hint)`` saying why:
+    coverage never changes what a scenario plans or checks, so it never stops one from running."""
+
+    def error(location: SourceLocation, message: str, hint: str | None = None) -> None:
+        warning(location, f"{message}; the item is not collected", hint)
+
+    by_name = {p.name: p for p in parameters}
+    items: list[CoverItem] = []
+    names: dict[str, SourceLocation] = {}
+    for coverage in scenario.coverage:
+        item = _item(coverage, by_name, error, warning)
+        if item is None:
+            continue
+        if item.name in names:
+            error(
+                coverage.location,
+                f"{coverage.kind}({item.name}) is already declared on line {names[item.name].line}",
+                "give each item its own name",
+            )
+            continue
+        names[item.name] = coverage.location
+        items.append(item)
+    return tuple(items)
+
+
+def _item(coverage: model.Coverage, by_name: dict[str, LogicalParameter], error, warning) -> CoverItem | None:
+    kind = coverage.kind
+    given: dict[str, model.Argument] = {}
+    for position, argument in enumerate(coverage.arguments):
+        name = argument.name or ("name" if position == 0 else None)
+        if name is None:
+            error(
+                argument.location, f"{kind}() takes its name first, then named arguments", f"e.g. {kind}(gap, unit: m)"
+            )
+            return None
+        if name in REFUSED:
+            error(argument.location, f"not supported: {REFUSED[name]}", f"leave {name}: out")
+            return None
+        if name not in READ:
+            error(argument.location, f"{kind}() has no argument {name!r}", f"it takes: {', '.join(READ)}")
+            return None
+        given[name] = argument
+    if "name" not in given and coverage.field is None:
+        error(coverage.location, f"{kind}() needs a name", f"e.g. {kind}(gap, unit: m)")
+        return None
+    name_value = given["name"].value if "name" in given else model.Name(coverage.field, coverage.location)
+    if not isinstance(name_value, model.Name) or name_value.enum is not None:
+        error(given["name"].location, f"{kind}(): a name is an identifier", f"e.g. {kind}(gap, unit: m)")
+        return None
+    name = name_value.name
+    disable = given.get("disable")
+    if disable is not None:
+        if not (isinstance(disable.value, model.Literal) and isinstance(disable.value.value, bool)):
+            error(disable.value.location, "disable: takes true or false")
+            return None
+        if disable.value.value:
+            return None
+    expression = given["expression"].value if "expression" in given else name_value
+    if coverage.field is not None and isinstance(expression, model.Name) and expression.name == "it":
+        expression = model.Name(coverage.field, expression.location)  # in a field's with:, it is the field
+    known = ", ".join(by_name) or "none"
+    if not isinstance(expression, model.Name) or expression.enum is not None or "." in expression.name:
+        error(
+            expression.location,
+            f"not supported yet: {kind}() of a value the run takes; the tool collects the scenario's "
+            "logical parameters, sampled once per case",
+            f"name one of them: {known}",
+        )
+        return None
+    parameter = by_name.get(expression.name)
+    if parameter is None:
+        error(
+            expression.location,
+            f"{kind}({name}): {expression.name} is no logical parameter of the scenario (a value it leaves "
+            "open, sampled per case)",
+            f"its logical parameters: {known}",
+        )
+        return None
+    unit, factor = _unit(given.get("unit"), parameter, kind, error)
+    if factor is None:
+        return None
+    if "event" in given:
+        event = given["event"].value
+        if not isinstance(event, model.Name):
+            error(given["event"].location, "event: takes the name of an event, e.g. event: end")
+            return None
+    text = ""
+    if "text" in given:
+        value = given["text"].value
+        if not (isinstance(value, model.Literal) and isinstance(value.value, str)):
+            error(value.location, 'text: takes a string, e.g. text: "gap at the cut-in"')
+            return None
+        text = value.value
+    target = 1
+    if "target" in given:
+        value = _number(given["target"].value)
+        if value is None or value < 1 or not float(value).is_integer():
+            error(given["target"].value.location, "target: takes a whole number from 1 up")
+            return None
+        if kind == "record":
+            warning(given["target"].location, "target: has no meaning for record(); it is left out")
+        target = int(value)
+    buckets: tuple[Bucket, ...] = ()
+    if kind == "cover":
+        buckets = _buckets(given, parameter, unit, factor, error)
+        if buckets is None:
+            return None
+    for condition in ("ignore", "illegal"):
+        if condition in given:
+            probe = Interval(parameter.low, parameter.low, parameter.dimension) if not parameter.choices else None
+            try:
+                evaluate(given[condition].value, {name: probe, expression.name: probe} if probe else {})
+            except EvaluationError as problem:
+                error(problem.location, problem.message, problem.hint)
+                return None
+    return CoverItem(
+        kind,
+        name,
+        parameter.name,
+        coverage.location,
+        unit,
+        factor,
+        buckets,
+        text,
+        target,
+        given["ignore"].value if "ignore" in given else None,
+        given["illegal"].value if "illegal" in given else None,
+        parameter.dimension,
+    )
+
+
+def _unit(argument: model.Argument | None, parameter: LogicalParameter, kind: str, error) -> tuple[str, float | None]:
+    """The item's unit as written and its factor to SI; (unit, None) after an error."""
+    if argument is None:
+        return "", 1.0
+    value = argument.value
+    if not isinstance(value, model.Name) or value.name not in UNITS:
+        error(value.location, f"unit: takes a unit, e.g. unit: {SI_UNIT.get(parameter.dimension) or 'kph'}")
+        return "", None
+    dimension, factor = UNITS[value.name][:2]
+    if parameter.choices or dimension != parameter.dimension:
+        of = f"a {parameter.dimension}" if parameter.dimension else "a number without a unit"
+        error(
+            value.location,
+            f"{kind}(): unit {value.name} is a unit of {dimension}, but {parameter.name} is {of}",
+            f"give a unit of {parameter.dimension}" if parameter.dimension else "leave unit: out",
+        )
+        return "", None
+    return value.name, factor
+
+
+def _number(value: model.Expression) -> float | None:
+    if isinstance(value, model.Quantity) and value.dimension is None:
+        return value.value
+    return None
+
+
+def _in_si(value: model.Expression, factor: float, dimension: str | None) -> float | None:
+    """A bound written in the item's unit (a plain number) or with its own unit, in SI."""
+    if isinstance(value, model.Quantity):
+        if value.dimension is None:
+            return value.value * factor
+        if value.dimension == dimension:
+            return value.value
+    return None
+
+
+def _buckets(given: dict, parameter: LogicalParameter, unit: str, factor: float, error) -> tuple[Bucket, ...] | None:
+    if parameter.choices:
+        for name in ("range", "every", "buckets"):
+            if name in given:
+                error(given[name].location, f"{name}: slices a number; {parameter.name} takes one of its values")
+                return None
+        return tuple(Bucket(str(c).lower() if isinstance(c, bool) else str(c), choice=c) for c in parameter.choices)
+    if "buckets" in given and ("range" in given or "every" in given):
+        error(given["buckets"].location, "buckets: is given with range: or every:", "give one or the other")
+        return None
+    shown = unit or SI_UNIT.get(parameter.dimension, "")
+
+    def label(low: float, high: float, closed: bool) -> str:
+        return f"[{low / factor:.4g}..{high / factor:.4g}{']' if closed else ')'} {shown}".rstrip()
+
+    if "buckets" in given:
+        value = given["buckets"].value
+        bounds = [_in_si(item, factor, parameter.dimension) for item in getattr(value, "items", ())]
+        if len(bounds) < 2 or None in bounds or any(b < a for a, b in zip(bounds, bounds[1:])):
+            error(
+                value.location,
+                "buckets: takes a list of at least two boundaries, each no less than the one before",
+                "e.g. buckets: [1, 2, 6.5, 10]",
+            )
+            return None
+        pairs = list(zip(bounds, bounds[1:]))
+        last = len(pairs) - 1
+        return tuple(Bucket(label(a, b, k == last), a, b, k == last) for k, (a, b) in enumerate(pairs))
+    low, high = parameter.low, parameter.high
+    if "range" in given:
+        value = given["range"].value
+        if not isinstance(value, model.Range):
+            error(value.location, "range: takes a range, e.g. range: [10..130]")
+            return None
+        low, high = _in_si(value.low, factor, parameter.dimension), _in_si(value.high, factor, parameter.dimension)
+        if low is None or high is None or high <= low:
+            error(
+                value.location,
+                f"range: takes a range of {parameter.dimension or 'numbers'} whose low end is below its high end",
+            )
+            return None
+    if parameter.integer and "every" not in given and high - low + 1 <= MAX_VALUE_BUCKETS:
+        return tuple(Bucket(f"{v:g}", choice=float(v)) for v in range(int(low), int(high) + 1))
+    if "every" in given:
+        every = _in_si(given["every"].value, factor, parameter.dimension)
+        if every is None or every <= 0:
+            error(given["every"].value.location, "every: takes a positive width, in the item's unit, e.g. every: 5")
+            return None
+    else:
+        every = (high - low) / DEFAULT_BUCKETS
+    count = max(1, math.ceil((high - low) / every - 1e-9))
+    edges = [low + k * every for k in range(count)] + [high]
+    return tuple(
+        Bucket(label(a, b, k == count - 1), a, b, k == count - 1) for k, (a, b) in enumerate(zip(edges, edges[1:]))
+    )

@@ -1,0 +1,168 @@
+"""Coverage as the standard writes it: a cover item's buckets are the slices its arguments name, a
+run counts each case whose scenario happened in the bucket its value falls in, and a bucket no
+case hit is called unreachable only with a proof: outside the parameter's range, or no plan."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from pytest_roadlogic.evaluation.coverage import ScenarioCoverage, merged, read_json, text_lines, write_json
+from pytest_roadlogic.evaluation.reach import unreachable
+from pytest_roadlogic.frontend import check_text
+from pytest_roadlogic.outcomes import CONFORMANT, NO_PLAN
+from pytest_roadlogic.runner import Runner
+from pytest_roadlogic.settings import RunSettings
+
+pytest_plugins = ["pytester"]
+
+HEAD = "scenario s:\n    ego: car\n    npc: car\n"
+BODY = (
+    "    do parallel(duration: 5s):\n        ego.drive() with:\n            speed(20mps)\n"
+    "        npc.drive() with:\n            position(gap, behind: ego, at: start)\n"
+    "            position(10m, ahead_of: ego, at: end)\n            speed([10mps..30mps])\n"
+)
+GAP = "    gap: length with:\n        keep(it in [10m..100m])\n"
+
+
+def items_of(text: str):
+    checked = check_text(text, "s.osc")
+    assert not checked.errors, checked.report()
+    return checked.scenarios[0]
+
+
+@pytest.mark.parametrize(
+    "cover, labels",
+    [
+        ("cover(gap, unit: m, range: [0..120], every: 40)", ["[0..40) m", "[40..80) m", "[80..120] m"]),
+        ("cover(gap, unit: cm, range: [0..6000], every: 2500)", ["[0..2500) cm", "[2500..5000) cm", "[5000..6000] cm"]),
+        ("cover(gap, unit: m, buckets: [10, 20, 65.5, 100])", ["[10..20) m", "[20..65.5) m", "[65.5..100] m"]),
+        ("cover(gap)", ["[10..28) m", "[28..46) m", "[46..64) m", "[64..82) m", "[82..100] m"]),
+    ],
+    ids=["range and every", "another unit", "boundaries", "the parameter's range in five"],
+)
+def test_a_cover_items_buckets_are_the_slices_its_arguments_name(cover, labels):
+    scenario = items_of(HEAD + GAP + f"    {cover}\n" + BODY)
+    (item,) = scenario.coverage
+    assert [b.label for b in item.buckets] == labels
+    # every value of the range falls in exactly one bucket, the range's end in the last
+    for value in (10.0, 39.999, 40.0, 64.0, 99.9, 100.0):
+        assert sum(b.holds(value) for b in item.buckets) <= 1
+
+
+def test_a_bool_and_a_small_whole_number_have_a_bucket_per_value():
+    text = (
+        HEAD
+        + GAP
+        + "    left: bool\n    lane_k: uint with:\n        keep(it in [1..3])\n"
+        + "    cover(left)\n    cover(lane_k)\n"
+        + BODY.replace("speed(20mps)", "speed(20mps)\n            lane(lane_k)")
+    )
+    buckets = {item.name: [b.label for b in item.buckets] for item in items_of(text).coverage}
+    assert buckets == {"left": ["false", "true"], "lane_k": ["1", "2", "3"]}
+
+
+@pytest.mark.parametrize(
+    "cover, message",
+    [
+        ("cover(gap, unit: kph)", "unit kph is a unit of speed, but gap is a length"),
+        ("cover(gap, unit: m, range: [0..10], buckets: [1, 2])", "buckets: is given with range: or every:"),
+        ("cover(speed_of_ego, expression: ego.speed)", "not supported yet: cover() of a value the run takes"),
+        ("cover(gap, items: [a, b])", "not supported: a cross of cover items (items:) is not collected yet"),
+        ("cover(nothing)", "nothing is no logical parameter of the scenario"),
+    ],
+    ids=["a unit of another kind", "buckets and a range", "a value of the run", "a cross", "an unknown name"],
+)
+def test_an_item_the_tool_cannot_collect_is_a_located_warning_and_the_scenario_still_runs(cover, message):
+    checked = check_text(HEAD + GAP + f"    {cover}\n" + BODY, "s.osc")
+    assert not checked.errors
+    (warning,) = [d for d in checked.diagnostics if "not collected" in d.message]
+    assert message in warning.message and warning.location.line == 6
+    assert checked.scenarios[0].coverage == ()
+
+
+CATCH_UP = HEAD + GAP + "    cover(gap, unit: m, range: [0..120], every: 20)\n" + BODY
+
+
+def test_a_run_counts_each_case_whose_scenario_happened_in_the_bucket_of_its_value():
+    scenario = items_of(CATCH_UP)
+    results = []
+    Runner(scenario, RunSettings(seed=3)).refined(results.append, count=12, search=False)
+    coverage = ScenarioCoverage.of("s.osc::s", scenario.coverage)
+    for result in results:
+        coverage.add(scenario.coverage, result.case.values, result.outcome)
+    (item,) = scenario.coverage
+    happened = [r.case.values["gap"] for r in results if r.outcome == CONFORMANT]
+    assert any(r.outcome == NO_PLAN for r in results), "some gaps cannot be caught up: not counted"
+    expected = {b.label: sum(b.holds(v) for v in happened) for b in item.buckets}
+    assert coverage.items["gap"].buckets == expected and coverage.cases == len(happened)
+
+
+def test_a_bucket_is_unreachable_only_outside_the_range_or_where_the_planner_proves_no_plan():
+    scenario = items_of(CATCH_UP)
+    (item,) = scenario.coverage
+    labels = [b.label for b in item.buckets]
+    found = unreachable(scenario, item, labels, RunSettings(), 1)
+    # the npc gains at most 10 m/s on the ego for 5 s and must end 10 m ahead: 40 m of gap at most
+    assert set(found) == {"[60..80) m", "[80..100) m", "[100..120] m"}
+    assert all("cannot hold at the same time" in why and "parameter gap" in why for why in found.values())
+    # brute force from the definition: some value of a bucket (every 4 m of it within the range)
+    # has a plan exactly where the bucket is not claimed unreachable
+    runner = Runner(scenario, RunSettings(seed=1))
+    for bucket in item.buckets:
+        values = [v for v in range(int(bucket.low), int(bucket.high) + 1, 4) if 10 <= v <= 100 and bucket.holds(v)]
+        planned = any(
+            runner.run_case(runner.case(strategy="refined", values={"gap": float(v)})).outcome != NO_PLAN
+            for v in values
+        )
+        assert planned == (bucket.label not in found), (bucket.label, values)
+    # below the parameter's range: said so, without planning
+    low = check_text(CATCH_UP.replace("[10m..100m]", "[25m..35m]"), "s.osc").scenarios[0]
+    outside = unreachable(low, low.coverage[0], ["[0..20) m"], RunSettings(), 1)
+    assert outside == {"[0..20) m": "outside the range of gap, 25 m to 35 m (s.osc:4)"}
+
+
+def test_tallies_travel_as_json_and_merge_per_scenario(tmp_path):
+    scenario = items_of(CATCH_UP)
+    first, second = (ScenarioCoverage.of("s.osc::s", scenario.coverage) for _ in range(2))
+    first.add(scenario.coverage, {"gap": 15.0}, CONFORMANT)
+    second.add(scenario.coverage, {"gap": 15.0}, CONFORMANT)
+    second.add(scenario.coverage, {"gap": 35.0}, CONFORMANT)
+    second.items["gap"].unreachable["[60..80) m"] = "no plan"
+    (both,) = merged([ScenarioCoverage.from_json(json.loads(json.dumps(c.to_json()))) for c in (first, second)])
+    assert (
+        both.cases == 3 and both.items["gap"].buckets["[0..20) m"] == 2 and both.items["gap"].buckets["[20..40) m"] == 1
+    )
+    write_json([both], tmp_path / "c.json")
+    assert read_json(tmp_path / "c.json") == [both]
+    assert "    [60..80) m               unreachable: no plan" in text_lines([both])
+    (tmp_path / "bad.json").write_text("{}")
+    with pytest.raises(ValueError, match="not a coverage file"):
+        read_json(tmp_path / "bad.json")
+
+
+def test_pytest_reports_coverage_merged_over_workers_and_writes_it_for_a_ci(pytester):
+    pytester.makefile(".osc", catch_up=CATCH_UP.replace("scenario s:", "scenario catch_up:"))
+    pytester.makefile(".osc", second=CATCH_UP.replace("scenario s:", "scenario second:").replace("seed", "seed"))
+    result = pytester.runpytest_subprocess(
+        "-p", "no:cacheprovider", "-n", "2", "--roadlogic-examples", "4", "--roadlogic-coverage", "out/cov.json"
+    )
+    text = result.stdout.str()
+    assert "roadlogic coverage" in text and "catch_up.osc::catch_up" in text and "second.osc::second" in text
+    assert "unreachable: no plan exists" in text
+    written = read_json(pytester.path / "out" / "cov.json")
+    assert [c.scenario for c in written] == ["catch_up.osc::catch_up", "second.osc::second"]
+    # a file that cannot be written is said, never raised
+    (pytester.path / "blocked").write_text("a file, not a folder")
+    result = pytester.runpytest_subprocess(
+        "-p",
+        "no:cacheprovider",
+        "--roadlogic-examples",
+        "2",
+        "--roadlogic-coverage",
+        "blocked/cov.json",
+        "catch_up.osc",
+    )
+    assert "--roadlogic-coverage blocked/cov.json: cannot write it" in result.stdout.str()
+    assert "Traceback" not in result.stdout.str() + result.stderr.str()
