@@ -14,6 +14,7 @@ from dataclasses import asdict, dataclass, field
 from pathlib import Path
 from typing import Any
 
+from ..frontend.semantics.coverage import CROSS
 from ..outcomes import HAPPENED
 
 FORMAT = 1  # the JSON file's format, written into it
@@ -33,6 +34,7 @@ class ItemCoverage:
     ignored: int = 0
     illegal: list[str] = field(default_factory=list)
     recorded: list[str] = field(default_factory=list)
+    crossed: list[str] = field(default_factory=list)  # a cross's items
     # buckets no case can reach, with why (``coverage.reach``): label -> the reason
     unreachable: dict[str, str] = field(default_factory=dict)
 
@@ -61,7 +63,13 @@ class ScenarioCoverage:
             0,
             {
                 item.name: ItemCoverage(
-                    item.name, item.kind, item.parameter, item.text, item.target, {b.label: 0 for b in item.buckets}
+                    item.name,
+                    item.kind,
+                    item.parameter,
+                    item.text,
+                    item.target,
+                    {b.label: 0 for b in item.buckets},
+                    crossed=list(item.crossed),
                 )
                 for item in items
             },
@@ -72,8 +80,9 @@ class ScenarioCoverage:
         if outcome not in HAPPENED:
             return
         counted = False
+        landed: dict[str, str] = {}  # cover item -> the bucket this case fell in
         for item in items:
-            if item.parameter not in values:
+            if item.crossed or item.parameter not in values:
                 continue
             counted = True
             value = values[item.parameter]
@@ -91,6 +100,14 @@ class ScenarioCoverage:
                 tally.outside += 1
             else:
                 tally.buckets[bucket.label] += 1
+                landed[item.name] = bucket.label
+        for item in items:
+            if item.crossed and counted:
+                tally = self.items[item.name]
+                if all(name in landed for name in item.crossed):
+                    tally.buckets[CROSS.join(landed[name] for name in item.crossed)] += 1
+                else:
+                    tally.outside += 1
         self.cases += counted
 
     def to_json(self) -> dict:
@@ -112,7 +129,8 @@ def merged(coverages: Iterable[ScenarioCoverage]) -> list[ScenarioCoverage]:
         into.cases += coverage.cases
         for name, item in coverage.items.items():
             mine = into.items.setdefault(
-                name, ItemCoverage(item.name, item.kind, item.parameter, item.text, item.target)
+                name,
+                ItemCoverage(item.name, item.kind, item.parameter, item.text, item.target, crossed=list(item.crossed)),
             )
             for label, hits in item.buckets.items():
                 mine.buckets[label] = mine.buckets.get(label, 0) + hits
@@ -137,9 +155,8 @@ def text_lines(coverages: list[ScenarioCoverage]) -> list[str]:
                 lines.append(f"  record {item.name} of {item.parameter}{about}: {len(item.recorded)} values: {shown}")
                 continue
             target = f", target {item.target}" if item.target > 1 else ""
-            lines.append(
-                f"  cover {item.name} of {item.parameter}{about}: {item.covered} of {item.reachable} buckets{target}"
-            )
+            of = item.parameter or "the cross of " + " and ".join(item.crossed)
+            lines.append(f"  cover {item.name} of {of}{about}: {item.covered} of {item.reachable} buckets{target}")
             for label, hits in item.buckets.items():
                 why = item.unreachable.get(label)
                 mark = f"unreachable: {why}" if why else ("not hit" if hits == 0 else str(hits))

@@ -13,25 +13,35 @@ from __future__ import annotations
 from pathlib import Path
 
 from ..frontend.semantics.checked import CheckedScenario
-from ..frontend.semantics.coverage import Bucket, CoverItem
+from ..frontend.semantics.coverage import CROSS, Bucket, CoverItem
 
 
 def unreachable(checked: CheckedScenario, item: CoverItem, labels: list[str], settings, seed: int) -> dict[str, str]:
     """Of ``item``'s buckets named in ``labels`` (those no case hit), the ones no case can reach,
-    each with why: outside the parameter's range, or the planner's proof that no plan exists there
-    (``settings``: the run's ``RunSettings``, ``seed``: its seed)."""
-    parameter = next(p for p in checked.parameters if p.name == item.parameter)
+    each with why: outside a parameter's range, or the planner's proof that no plan exists with
+    the parameter (a cross: each of its items' parameters) in the bucket (``settings``: the run's
+    ``RunSettings``, ``seed``: its seed)."""
+    items = {i.name: i for i in checked.coverage}
+    parts = [items[name] for name in item.crossed] if item.crossed else [item]
     found = {}
     for bucket in item.buckets:
         if bucket.label not in labels:
             continue
-        why = _outside(parameter, bucket, item) or _no_plan(checked, item, bucket, settings, seed)
+        names = bucket.label.split(CROSS) if item.crossed else [bucket.label]
+        held = [(part, next(b for b in part.buckets if b.label == name)) for part, name in zip(parts, names)]
+        why = next(filter(None, (_outside(checked, part, b) for part, b in held)), "")
+        why = why or _no_plan(checked, held, settings, seed)
         if why:
             found[bucket.label] = why
     return found
 
 
-def _outside(parameter, bucket: Bucket, item: CoverItem) -> str:
+def _parameter(checked: CheckedScenario, item: CoverItem):
+    return next(p for p in checked.parameters if p.name == item.parameter)
+
+
+def _outside(checked: CheckedScenario, item: CoverItem, bucket: Bucket) -> str:
+    parameter = _parameter(checked, item)
     if bucket.choice is not None:
         if parameter.choices or parameter.low <= bucket.choice <= parameter.high:
             return ""
@@ -45,23 +55,27 @@ def _outside(parameter, bucket: Bucket, item: CoverItem) -> str:
     )
 
 
-def _no_plan(checked: CheckedScenario, item: CoverItem, bucket: Bucket, settings, seed: int) -> str:
-    """The planner's proof that no plan exists with the parameter in ``bucket``, as its message
-    says it ("" when a plan exists, or none was proved absent)."""
+def _no_plan(checked: CheckedScenario, held: list[tuple[CoverItem, Bucket]], settings, seed: int) -> str:
+    """The planner's proof that no plan exists with each parameter in its bucket (``held``), as
+    its message says it ("" when a plan exists, or none was proved absent)."""
     from ..automaton import build_automaton
     from ..frontend.semantics.logical import WAY
     from ..planning import HorizonTooShort, NoPlanError, PlanningTimeout, settings_for
     from ..planning.fallbacks import planned
     from ..sampling import UnknownParameter, guided, on_ways, within
 
-    parameter = next(p for p in checked.parameters if p.name == item.parameter)
+    narrowed, declared = checked, {}
     try:
-        if parameter.kind == WAY:
-            narrowed, declared = on_ways(checked, {item.parameter: bucket.choice}), {}
-        elif bucket.choice is not None:
-            narrowed, declared = guided(checked, {item.parameter: bucket.choice}, {}, {})
-        else:
-            narrowed, declared = within(checked, item.parameter, bucket.low, bucket.high)
+        for item, bucket in held:
+            parameter = _parameter(checked, item)
+            if parameter.kind == WAY:
+                narrowed = on_ways(narrowed, {item.parameter: bucket.choice})
+            elif bucket.choice is not None:
+                narrowed, more = guided(narrowed, {item.parameter: bucket.choice}, {}, {})
+                declared.update(more)
+            else:
+                narrowed, more = within(narrowed, item.parameter, bucket.low, bucket.high)
+                declared.update(more)
     except UnknownParameter as error:  # the value breaks a keep() of the scenario, or the ways do not go together
         return str(error)
     planner_settings = settings_for(settings)

@@ -69,7 +69,7 @@ def test_a_bool_and_a_small_whole_number_have_a_bucket_per_value():
         ("cover(gap, unit: kph)", "unit kph is a unit of speed, but gap is a length"),
         ("cover(gap, unit: m, range: [0..10], buckets: [1, 2])", "buckets: is given with range: or every:"),
         ("cover(speed_of_ego, expression: ego.speed)", "not supported yet: cover() of a value the run takes"),
-        ("cover(gap, items: [a, b])", "not supported: a cross of cover items (items:) is not collected yet"),
+        ("cover(gap_by_a, items: [gap, a])", "gap is no cover item declared before this cross"),
         ("cover(nothing)", "nothing is no logical parameter of the scenario"),
     ],
     ids=["a unit of another kind", "buckets and a range", "a value of the run", "a cross", "an unknown name"],
@@ -166,3 +166,38 @@ def test_pytest_reports_coverage_merged_over_workers_and_writes_it_for_a_ci(pyte
     )
     assert "--roadlogic-coverage blocked/cov.json: cannot write it" in result.stdout.str()
     assert "Traceback" not in result.stdout.str() + result.stderr.str()
+
+
+def test_a_cross_counts_each_combination_and_proves_a_combination_unreachable_by_planning_both_held():
+    from pathlib import Path
+
+    from pytest_roadlogic.frontend import load_file
+
+    path = Path(__file__).resolve().parents[2] / "scenarios" / "coverage" / "catch_up_from_behind.osc"
+    scenario = load_file(path).scenario_to_run(None)
+    cross = next(item for item in scenario.coverage if item.crossed)
+    assert cross.crossed == ("gap", "top") and len(cross.buckets) == 6
+    results = []
+    Runner(scenario, RunSettings(seed=2)).refined(results.append, count=10, search=False)
+    coverage = ScenarioCoverage.of("catch_up", scenario.coverage)
+    for result in results:
+        coverage.add(scenario.coverage, result.case.values, result.outcome)
+    items = {i.name: i for i in scenario.coverage}
+    expected = {b.label: 0 for b in cross.buckets}
+    for result in results:
+        if result.outcome == CONFORMANT:
+            gap = next(b for b in items["gap"].buckets if b.holds(result.case.values["gap"]))
+            top = next(b for b in items["top"].buckets if b.holds(result.case.values["top_speed"]))
+            expected[f"{gap.label} x {top.label}"] += 1
+    assert coverage.items["gap_by_top"].buckets == expected
+    found = unreachable(scenario, cross, [b.label for b in cross.buckets], RunSettings(), 1)
+    assert set(found) == {"[80..120] m x [25..35) mps"}
+    # brute force: every pair of values on a grid of the combination has no plan there, and one of
+    # the combination next to it (the same gaps, the faster top speeds) has one
+    runner = Runner(scenario, RunSettings(seed=1))
+
+    def outcome(gap: float, top: float) -> str:
+        return runner.run_case(runner.case(strategy="refined", values={"gap": gap, "top_speed": top})).outcome
+
+    assert all(outcome(gap, top) == NO_PLAN for gap in (80.0, 90.0, 100.0) for top in (25.0, 30.0, 34.9))
+    assert any(outcome(gap, top) != NO_PLAN for gap in (80.0, 85.0) for top in (38.0, 40.0))

@@ -40,10 +40,8 @@ READ = (
     "illegal",
     "disable",
 )
-REFUSED = {
-    "items": "a cross of cover items (items:) is not collected yet",
-    "override": "an override of an item (override:) is not read yet: change the item itself",
-}
+REFUSED = {"override": "an override of an item (override:) is not read yet: change the item itself"}
+CROSS = " x "  # between the buckets of a cross's items, in its buckets' labels
 
 
 @dataclass(frozen=True)
@@ -84,6 +82,8 @@ class CoverItem:
     ignore: model.Expression | None = None
     illegal: model.Expression | None = None
     dimension: str | None = None
+    # a cross (``items:``): the items it crosses, each bucket one bucket of each (``parameter`` is "")
+    crossed: tuple[str, ...] = ()
 
     def shown(self, value: Any) -> str:
         """``value`` (SI) as a report names it, in the item's unit."""
@@ -120,7 +120,10 @@ def coverage_items(
     items: list[CoverItem] = []
     names: dict[str, SourceLocation] = {}
     for coverage in scenario.coverage:
-        item = _item(coverage, by_name, error, warning)
+        if any(argument.name == "items" for argument in coverage.arguments):
+            item = _cross(coverage, {i.name: i for i in items}, error)
+        else:
+            item = _item(coverage, by_name, error, warning)
         if item is None:
             continue
         if item.name in names:
@@ -331,4 +334,54 @@ def _buckets(given: dict, parameter: LogicalParameter, unit: str, factor: float,
     edges = [low + k * every for k in range(count)] + [high]
     return tuple(
         Bucket(label(a, b, k == count - 1), a, b, k == count - 1) for k, (a, b) in enumerate(zip(edges, edges[1:]))
+    )
+
+
+def _cross(coverage: model.Coverage, declared: dict[str, CoverItem], error) -> CoverItem | None:
+    """``cover(name, items: [a, b, ...])``: the Cartesian product of cover items declared before it
+    (every combination of their buckets is a bucket); ``text:`` and ``target:`` as for any item."""
+    given = {argument.name or ("name" if k == 0 else ""): argument for k, argument in enumerate(coverage.arguments)}
+    other = sorted(set(given) - {"name", "items", "text", "target", "event"})
+    if other:
+        error(given[other[0]].location, f"a cross takes name, items:, text:, target: and event:, not {other[0]}:")
+        return None
+    name = given.get("name")
+    if name is None or not isinstance(name.value, model.Name):
+        error(coverage.location, "a cross needs a name", "e.g. cover(gap_by_speed, items: [gap, speed])")
+        return None
+    listed = given["items"].value
+    names = [i.name if isinstance(i, model.Name) else None for i in getattr(listed, "items", ())]
+    if len(names) < 2 or None in names:
+        error(listed.location, "items: takes a list of two or more cover items", "e.g. items: [gap, speed]")
+        return None
+    for item_name, item in zip(names, listed.items):
+        if item_name not in declared or declared[item_name].kind != "cover" or declared[item_name].crossed:
+            error(
+                item.location,
+                f"{item_name} is no cover item declared before this cross",
+                f"cover items so far: {', '.join(n for n, i in declared.items() if i.kind == 'cover' and not i.crossed) or 'none'}",
+            )
+            return None
+    if coverage.kind == "record":
+        error(
+            coverage.location,
+            "a cross of record items is not collected yet",
+            "cross cover items: cover(name, items: [...])",
+        )
+        return None
+    parts = [declared[n] for n in names]
+    buckets = [()]
+    for part in parts:
+        buckets = [(*combination, bucket) for combination in buckets for bucket in part.buckets]
+    text = given["text"].value.value if "text" in given and isinstance(given["text"].value, model.Literal) else ""
+    target = int(_number(given["target"].value) or 1) if "target" in given else 1
+    return CoverItem(
+        "cover",
+        name.value.name,
+        "",
+        coverage.location,
+        buckets=tuple(Bucket(CROSS.join(b.label for b in combination)) for combination in buckets),
+        text=text,
+        target=target,
+        crossed=tuple(names),
     )

@@ -407,7 +407,12 @@ class _Builder:
             unsupported=tuple(unsupported),
             path=self.path,
             modifiers=tuple(modifiers),
-            coverage=tuple(coverage) + tuple(c for f in fields for c in self.field_coverage.pop(f.name, ())),
+            coverage=tuple(
+                sorted(
+                    [*coverage, *(c for f in fields for c in self.field_coverage.pop(f.name, ()))],
+                    key=lambda c: (c.location.line, c.location.column),
+                )
+            ),
         )
 
     def type_declaration(self, ctx) -> tuple[model.TypeDeclaration, tuple[model.Unsupported, ...]]:
