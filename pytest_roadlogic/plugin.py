@@ -380,10 +380,16 @@ class ScenarioItem(pytest.Item):
         from .evaluation.reach import unreachable
 
         for item in self.scenario.coverage:
+            if item.crossed and not self._parameters_only(item):
+                continue  # a cross with a value of the run: its combinations are not asked of the planner
             tally = self.coverage.items[item.name]
             missed = [label for label, hits in tally.buckets.items() if hits == 0]
             if missed:
                 tally.unreachable.update(unreachable(self.scenario, item, missed, self.settings, self.settings.seed))
+
+    def _parameters_only(self, cross) -> bool:
+        items = {i.name: i for i in self.scenario.coverage}
+        return all(items[name].observed is None for name in cross.crossed)
 
     def _drivers(self):
         from .simulation.named_drivers import RecordingDrivers
@@ -399,7 +405,7 @@ class ScenarioItem(pytest.Item):
         """Count a case; a failed one ends the item (and, refined, starts the shrinking)."""
         self.tally.add(result.outcome, result.seconds)
         if self.coverage is not None:
-            self.coverage.add(self.scenario.coverage, result.case.values, result.outcome)
+            self.coverage.add(self.scenario.coverage, result.case.values, result.outcome, result.run)
         if result.run is not None and result.run.dut is not None:
             self.dut_reports.append(result.run.dut)
         if result.run is not None:

@@ -14,6 +14,8 @@ from dataclasses import asdict, dataclass, field
 from pathlib import Path
 from typing import Any
 
+import numpy as np
+
 from ..frontend.semantics.coverage import CROSS
 from ..outcomes import HAPPENED
 
@@ -75,17 +77,25 @@ class ScenarioCoverage:
             },
         )
 
-    def add(self, items: Iterable, values: dict[str, Any], outcome: str) -> None:
-        """Count one case's sampled ``values`` (parameter -> SI value) if its scenario happened."""
+    def add(self, items: Iterable, values: dict[str, Any], outcome: str, run=None) -> None:
+        """Count one case if its scenario happened: its sampled ``values`` (parameter -> SI value),
+        and the values its ``run`` (``pipeline.SimulatedInstance``) took at the items' events."""
         if outcome not in HAPPENED:
             return
         counted = False
         landed: dict[str, str] = {}  # cover item -> the bucket this case fell in
         for item in items:
-            if item.crossed or item.parameter not in values:
+            if item.crossed:
+                continue
+            if item.observed is not None:
+                value = _observed(item, run)
+                if value is None:
+                    continue
+            elif item.parameter in values:
+                value = values[item.parameter]
+            else:
                 continue
             counted = True
-            value = values[item.parameter]
             tally = self.items[item.name]
             if item.ignored(value):
                 tally.ignored += 1
@@ -116,6 +126,31 @@ class ScenarioCoverage:
     @classmethod
     def from_json(cls, data: dict) -> ScenarioCoverage:
         return cls(data["scenario"], data["cases"], {k: ItemCoverage(**v) for k, v in data["items"].items()})
+
+
+def _observed(item, run) -> float | None:
+    """The value ``item`` reads in ``run`` at its event: the trace's first sample at or after the
+    time the monitor's run met it (None without a run, or a run that did not meet it)."""
+    if run is None:
+        return None
+    automaton, verdict, trace = run.automaton, run.verdict, run.simulation.trace
+    label, end = item.event
+    if not verdict.run or not len(trace.times):
+        return None
+    if not label:
+        time = verdict.run[0][0] if end == "start" else verdict.run[-1][0]
+    else:
+        phases = [k for k, timing in automaton.timings.items() if timing.name == label]
+        marks = {
+            t.label for t in automaton.transitions if any(k in (t.starts if end == "start" else t.ends) for k in phases)
+        }
+        times = [time for time, events in verdict.run if events in marks]
+        if not times:
+            return None
+        time = times[0]
+    index = min(int(np.searchsorted(trace.times, time - 1e-9)), len(trace.times) - 1)
+    state = {actor: {column: float(values[index]) for column, values in c.items()} for actor, c in trace.actors.items()}
+    return item.value_of(state)
 
 
 def merged(coverages: Iterable[ScenarioCoverage]) -> list[ScenarioCoverage]:
@@ -152,10 +187,13 @@ def text_lines(coverages: list[ScenarioCoverage]) -> list[str]:
             about = f" ({item.text})" if item.text else ""
             if item.kind == "record":
                 shown = ", ".join(item.recorded[:8]) + (" ..." if len(item.recorded) > 8 else "")
-                lines.append(f"  record {item.name} of {item.parameter}{about}: {len(item.recorded)} values: {shown}")
+                of = item.parameter or "a value of the run"
+                lines.append(f"  record {item.name} of {of}{about}: {len(item.recorded)} values: {shown}")
                 continue
             target = f", target {item.target}" if item.target > 1 else ""
-            of = item.parameter or "the cross of " + " and ".join(item.crossed)
+            of = item.parameter or (
+                "the cross of " + " and ".join(item.crossed) if item.crossed else "a value of the run"
+            )
             lines.append(f"  cover {item.name} of {of}{about}: {item.covered} of {item.reachable} buckets{target}")
             for label, hits in item.buckets.items():
                 why = item.unreachable.get(label)

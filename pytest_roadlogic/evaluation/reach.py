@@ -27,6 +27,11 @@ def unreachable(checked: CheckedScenario, item: CoverItem, labels: list[str], se
     for bucket in item.buckets:
         if bucket.label not in labels:
             continue
+        if item.observed is not None:
+            why = _no_plan_observed(checked, item, bucket, settings, seed)
+            if why:
+                found[bucket.label] = why
+            continue
         names = bucket.label.split(CROSS) if item.crossed else [bucket.label]
         held = [(part, next(b for b in part.buckets if b.label == name)) for part, name in zip(parts, names)]
         why = next(filter(None, (_outside(checked, part, b) for part, b in held)), "")
@@ -34,6 +39,75 @@ def unreachable(checked: CheckedScenario, item: CoverItem, labels: list[str], se
         if why:
             found[bucket.label] = why
     return found
+
+
+def _observed_term(expression):
+    """The guard term (``logic.guards.Term``) of a value of the run an item reads: a vehicle's
+    position or speed, or the difference of two vehicles'; None for any other."""
+    from ..frontend import model
+    from ..logic.guards import POSITION, SPEED, Term
+
+    quantities = {"position": POSITION, "speed": SPEED}
+
+    def split(name: model.Name) -> tuple[str, str | None]:
+        actor, _, quantity = name.name.rpartition(".")
+        return actor, quantities.get(quantity)
+
+    if isinstance(expression, model.Name):
+        actor, quantity = split(expression)
+        return Term(quantity, actor) if quantity else None
+    if (
+        isinstance(expression, model.Binary)
+        and expression.operator == "-"
+        and isinstance(expression.left, model.Name)
+        and isinstance(expression.right, model.Name)
+    ):
+        (actor, quantity), (reference, other) = split(expression.left), split(expression.right)
+        return Term(quantity, actor, reference) if quantity and quantity == other else None
+    return None
+
+
+def _no_plan_observed(checked: CheckedScenario, item: CoverItem, bucket: Bucket, settings, seed: int) -> str:
+    """The planner's proof that no plan puts the value ``item`` reads in ``bucket`` at its event:
+    the bucket is one more bound of the guards of the transitions at that event ("" when a plan
+    exists, none was proved absent, or the value is not one a guard can state)."""
+    import dataclasses
+
+    from ..automaton import build_automaton
+    from ..logic.guards import Bound, conjunction
+    from ..planning import HorizonTooShort, NoPlanError, PlanningTimeout, settings_for
+    from ..planning.fallbacks import planned
+
+    term = _observed_term(item.observed)
+    if term is None:
+        return ""
+    automaton = build_automaton(checked)
+    label, end = item.event
+    if not label:
+        at = {
+            t.id
+            for t in automaton.transitions
+            if (t.target == automaton.final if end == "end" else t.source == automaton.initial)
+        }
+    else:
+        phases = {k for k, timing in automaton.timings.items() if timing.name == label}
+        at = {t.id for t in automaton.transitions if phases & (t.starts if end == "start" else t.ends)}
+    if not at:
+        return ""
+    bound = Bound(term, bucket.low, bucket.high, item.location)
+    automaton.transitions = [
+        dataclasses.replace(t, guard=conjunction([t.guard, bound])) if t.id in at else t for t in automaton.transitions
+    ]
+    planner_settings = settings_for(settings)
+    if checked.route is not None:
+        planner_settings = planner_settings.on_route(checked.route, checked.routes[1:])
+    try:
+        next(planned(lambda _: automaton, planner_settings, seed, 1))
+    except (PlanningTimeout, HorizonTooShort):
+        return ""
+    except NoPlanError as error:
+        return " ".join(str(error).split())
+    return ""
 
 
 def _parameter(checked: CheckedScenario, item: CoverItem):

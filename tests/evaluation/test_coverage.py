@@ -68,11 +68,22 @@ def test_a_bool_and_a_small_whole_number_have_a_bucket_per_value():
     [
         ("cover(gap, unit: kph)", "unit kph is a unit of speed, but gap is a length"),
         ("cover(gap, unit: m, range: [0..10], buckets: [1, 2])", "buckets: is given with range: or every:"),
-        ("cover(speed_of_ego, expression: ego.speed)", "not supported yet: cover() of a value the run takes"),
+        (
+            "cover(speed_of_ego, expression: ego.speed)",
+            "cover(speed_of_ego) of a value the run takes needs its buckets",
+        ),
+        ("cover(ttc, expression: ego.time_to_collision(npc))", "not supported yet: cover() of this value of the run"),
         ("cover(gap_by_a, items: [gap, a])", "gap is no cover item declared before this cross"),
         ("cover(nothing)", "nothing is no logical parameter of the scenario"),
     ],
-    ids=["a unit of another kind", "buckets and a range", "a value of the run", "a cross", "an unknown name"],
+    ids=[
+        "a unit of another kind",
+        "buckets and a range",
+        "a run value without buckets",
+        "a method of the run",
+        "a cross",
+        "an unknown name",
+    ],
 )
 def test_an_item_the_tool_cannot_collect_is_a_located_warning_and_the_scenario_still_runs(cover, message):
     checked = check_text(HEAD + GAP + f"    {cover}\n" + BODY, "s.osc")
@@ -201,3 +212,41 @@ def test_a_cross_counts_each_combination_and_proves_a_combination_unreachable_by
 
     assert all(outcome(gap, top) == NO_PLAN for gap in (80.0, 90.0, 100.0) for top in (25.0, 30.0, 34.9))
     assert any(outcome(gap, top) != NO_PLAN for gap in (80.0, 85.0) for top in (38.0, 40.0))
+
+
+def test_a_value_of_the_run_is_read_at_its_event_and_a_bucket_the_scenario_rules_out_there_is_unreachable():
+    from pathlib import Path
+
+    import numpy as np
+
+    from pytest_roadlogic.frontend import load_file
+
+    path = Path(__file__).resolve().parents[2] / "scenarios" / "coverage" / "cut_in_gap_at_the_cut_in.osc"
+    scenario = load_file(path).scenario_to_run(None)
+    items = {item.name: item for item in scenario.coverage}
+    gap = items["gap_at_cut_in"]
+    assert gap.observed is not None and gap.event == ("cut_in", "end")
+    results = []
+    Runner(scenario, RunSettings(seed=1)).refined(results.append, count=4, search=False)
+    coverage = ScenarioCoverage.of("cut_in", scenario.coverage)
+    for result in results:
+        coverage.add(scenario.coverage, result.case.values, result.outcome, result.run)
+    # from the definition: the gap between the cars' centres at the first sample at or after the
+    # time the monitor's run ended the cut_in phase (the transition that ends it, by its events)
+    expected = {b.label: 0 for b in gap.buckets}
+    for result in results:
+        assert result.outcome == CONFORMANT
+        automaton, trace = result.run.automaton, result.run.simulation.trace
+        ends = {t.label for t in automaton.transitions for k in t.ends if automaton.timings[k].name == "cut_in"}
+        time = next(t for t, events in result.run.verdict.run if events in ends)
+        k = int(np.searchsorted(trace.times, time - 1e-9))
+        value = trace.actors["npc"]["x"][k] - trace.actors["ego"]["x"][k]
+        expected[next(b.label for b in gap.buckets if b.holds(value))] += 1
+    assert coverage.items["gap_at_cut_in"].buckets == expected
+    assert len(coverage.items["npc_speed_at_cut_in"].recorded) == 4
+    # the scenario asks for a gap of 10-25 m when the cut-in ends: every bucket outside that is
+    # unreachable, and none inside it is
+    found = unreachable(scenario, gap, [b.label for b in gap.buckets], RunSettings(), 1)
+    outside = {b.label for b in gap.buckets if b.high <= 10.0 or b.low >= 25.0}
+    assert set(found) == outside
+    assert all("cannot hold at the same time" in why for why in found.values())

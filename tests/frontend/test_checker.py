@@ -59,9 +59,9 @@ CASES = [
     ),
     (
         "record",
-        HEAD + "    record(a, expression: a.speed)\n",
-        "4:27: warning: not supported yet: record() of a value the run takes; the tool collects the scenario's "
-        "logical parameters, sampled once per case; the item is not collected",
+        HEAD + "    record(a, expression: a.space_gap(b))\n",
+        "4:27: warning: not supported yet: record() of this value of the run; the tool collects the scenario's "
+        "logical parameters, and vehicles' speeds, accelerations and positions at an event; the item is not collected",
     ),
     (
         "cover_in_actor_declaration",

@@ -12,13 +12,14 @@ is ``evaluation.coverage``'s.
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
 from .. import model
 from ..errors import SourceLocation
 from ..syntax.standard_library import UNITS
-from ..syntax.units import SI_UNIT
+from ..syntax.units import ACCELERATION, LENGTH, SI_UNIT, SPEED
 from .logical import LogicalParameter
 from .values import EvaluationError, Interval, evaluate
 
@@ -42,6 +43,12 @@ READ = (
 )
 REFUSED = {"override": "an override of an item (override:) is not read yet: change the item itself"}
 CROSS = " x "  # between the buckets of a cross's items, in its buckets' labels
+# what an item may read of a vehicle in the run: the quantity -> (the trace's column, its dimension)
+TRACE_QUANTITIES = {
+    "speed": ("speed", SPEED),
+    "acceleration": ("acceleration", ACCELERATION),
+    "position": ("x", LENGTH),
+}
 
 
 @dataclass(frozen=True)
@@ -84,6 +91,16 @@ class CoverItem:
     dimension: str | None = None
     # a cross (``items:``): the items it crosses, each bucket one bucket of each (``parameter`` is "")
     crossed: tuple[str, ...] = ()
+    # a value the run takes (``parameter`` is ""): vehicles' speeds, accelerations and positions
+    # along the road, added and subtracted (``TRACE_QUANTITIES``), read at ``event``: (phase label
+    # or "" for the scenario, "start" or "end")
+    observed: model.Expression | None = None
+    event: tuple[str, str] = ("", "end")
+
+    def value_of(self, state: Mapping[str, Mapping[str, float]]) -> float:
+        """The ``observed`` expression's value (SI) where ``state`` gives each vehicle's trace
+        columns at the event."""
+        return _observed_value(self.observed, state)
 
     def shown(self, value: Any) -> str:
         """``value`` (SI) as a report names it, in the item's unit."""
@@ -123,7 +140,7 @@ def coverage_items(
         if any(argument.name == "items" for argument in coverage.arguments):
             item = _cross(coverage, {i.name: i for i in items}, error)
         else:
-            item = _item(coverage, by_name, error, warning)
+            item = _item(coverage, by_name, scenario, error, warning)
         if item is None:
             continue
         if item.name in names:
@@ -138,7 +155,9 @@ def coverage_items(
     return tuple(items)
 
 
-def _item(coverage: model.Coverage, by_name: dict[str, LogicalParameter], error, warning) -> CoverItem | None:
+def _item(
+    coverage: model.Coverage, by_name: dict[str, LogicalParameter], scenario: model.Scenario, error, warning
+) -> CoverItem | None:
     kind = coverage.kind
     given: dict[str, model.Argument] = {}
     for position, argument in enumerate(coverage.arguments):
@@ -173,13 +192,16 @@ def _item(coverage: model.Coverage, by_name: dict[str, LogicalParameter], error,
     expression = given["expression"].value if "expression" in given else name_value
     if coverage.field is not None and isinstance(expression, model.Name) and expression.name == "it":
         expression = model.Name(coverage.field, expression.location)  # in a field's with:, it is the field
+    observed = _observed_dimension(expression, {a.name for a in scenario.actors})
+    if observed is not None:
+        return _observed_item(coverage, given, name, expression, observed, scenario, error)
     known = ", ".join(by_name) or "none"
     if not isinstance(expression, model.Name) or expression.enum is not None or "." in expression.name:
         error(
             expression.location,
-            f"not supported yet: {kind}() of a value the run takes; the tool collects the scenario's "
-            "logical parameters, sampled once per case",
-            f"name one of them: {known}",
+            f"not supported yet: {kind}() of this value of the run; the tool collects the scenario's "
+            "logical parameters, and vehicles' speeds, accelerations and positions at an event",
+            f"name a logical parameter ({known}), or e.g. expression: npc.position - ego.position, event: end",
         )
         return None
     parameter = by_name.get(expression.name)
@@ -384,4 +406,110 @@ def _cross(coverage: model.Coverage, declared: dict[str, CoverItem], error) -> C
         text=text,
         target=target,
         crossed=tuple(names),
+    )
+
+
+def _observed_value(expression: model.Expression, state: Mapping[str, Mapping[str, float]]) -> float:
+    if isinstance(expression, model.Quantity):
+        return expression.value
+    if isinstance(expression, model.Name):
+        actor, _, quantity = expression.name.rpartition(".")
+        return float(state[actor][TRACE_QUANTITIES[quantity][0]])
+    left, right = _observed_value(expression.left, state), _observed_value(expression.right, state)
+    return left + right if expression.operator == "+" else left - right
+
+
+def _observed_dimension(expression: model.Expression, actors: set[str]) -> str | None:
+    """The dimension of a value the run takes (``TRACE_QUANTITIES`` of actors, added and
+    subtracted, with constants of the same kind); None when ``expression`` is not one."""
+    if isinstance(expression, model.Name) and expression.enum is None:
+        actor, _, quantity = expression.name.rpartition(".")
+        return TRACE_QUANTITIES[quantity][1] if actor in actors and quantity in TRACE_QUANTITIES else None
+    if isinstance(expression, model.Binary) and expression.operator in ("+", "-"):
+        sides = [_observed_dimension(side, actors) for side in (expression.left, expression.right)]
+        constants = [side.dimension for side in (expression.left, expression.right) if isinstance(side, model.Quantity)]
+        known = [d for d in sides if d is not None]
+        if known and len(known) + len(constants) == 2 and len(set(known + constants)) == 1:
+            return known[0]
+    return None
+
+
+def _phase_labels(node: Any) -> set[str]:
+    """Every label of a phase in a behaviour (an invocation's or a composition's)."""
+    found = set()
+    if getattr(node, "label", None):
+        found.add(node.label)
+    for child in getattr(node, "children", ()) or ():
+        found |= _phase_labels(child)
+    return found
+
+
+def _event(argument: model.Argument | None, scenario: model.Scenario, error) -> tuple[str, str] | None:
+    """Where an item on a value of the run reads it: (phase label, "start" or "end"); ("", "end")
+    the scenario's end, the standard's default. A name is "start" or "end" (the scenario's), a
+    phase's ``label.start``/``label.end``, or an event of the scenario defined as one."""
+    if argument is None:
+        return ("", "end")
+    value = argument.value
+    name = value.name if isinstance(value, model.Name) else None
+    for event in scenario.events:
+        if event.name == name and isinstance(event.specification, model.EventReference):
+            name = event.specification.name
+    labels = _phase_labels(scenario.behavior)
+    if name in ("start", "end"):
+        return ("", name)
+    if name is not None:
+        label, _, end = name.rpartition(".")
+        if label in labels and end in ("start", "end"):
+            return (label, end)
+    error(
+        value.location,
+        "event: takes start or end (the scenario's), a phase's label.start or label.end, or an event "
+        "of the scenario defined as one (event e is @label.end)",
+        f"the scenario's phases: {', '.join(sorted(labels)) or 'none labelled'}",
+    )
+    return None
+
+
+def _observed_item(
+    coverage: model.Coverage, given: dict, name: str, expression, dimension: str, scenario: model.Scenario, error
+) -> CoverItem | None:
+    """An item on a value the run takes at an event: its buckets are the ones ``range:``/``every:``
+    or ``buckets:`` name (the run gives no range of its own)."""
+    event = _event(given.get("event"), scenario, error)
+    if event is None:
+        return None
+    probe = LogicalParameter(name, coverage.location, dimension, 0.0, 0.0)
+    unit, factor = _unit(given.get("unit"), probe, coverage.kind, error)
+    if factor is None:
+        return None
+    buckets: tuple[Bucket, ...] = ()
+    if coverage.kind == "cover":
+        if "range" not in given and "buckets" not in given:
+            error(
+                coverage.location,
+                f"cover({name}) of a value the run takes needs its buckets: range: and every:, or buckets:",
+                f"e.g. cover({name}, expression: ..., unit: {unit or SI_UNIT[dimension]}, range: [0..50], every: 10)",
+            )
+            return None
+        buckets = _buckets(given, probe, unit, factor, error)
+        if buckets is None:
+            return None
+    text = given["text"].value.value if "text" in given and isinstance(given["text"].value, model.Literal) else ""
+    target = int(_number(given["target"].value) or 1) if "target" in given else 1
+    return CoverItem(
+        coverage.kind,
+        name,
+        "",
+        coverage.location,
+        unit,
+        factor,
+        buckets,
+        text,
+        target,
+        given["ignore"].value if "ignore" in given else None,
+        given["illegal"].value if "illegal" in given else None,
+        dimension,
+        observed=expression,
+        event=event,
     )
