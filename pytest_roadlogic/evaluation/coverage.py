@@ -198,7 +198,7 @@ def text_lines(coverages: list[ScenarioCoverage]) -> list[str]:
             for label, hits in item.buckets.items():
                 why = item.unreachable.get(label)
                 mark = f"unreachable: {why}" if why else ("not hit" if hits == 0 else str(hits))
-                lines.append(f"    {label:<24} {mark}")
+                lines.append(f"    {label:<24}  {mark}")
             extra = [
                 f"{item.outside} outside the buckets" if item.outside else "",
                 f"{item.ignored} ignored" if item.ignored else "",

@@ -147,7 +147,7 @@ def test_tallies_travel_as_json_and_merge_per_scenario(tmp_path):
     )
     write_json([both], tmp_path / "c.json")
     assert read_json(tmp_path / "c.json") == [both]
-    assert "    [60..80) m               unreachable: no plan" in text_lines([both])
+    assert "    [60..80) m                unreachable: no plan" in text_lines([both])
     (tmp_path / "bad.json").write_text("{}")
     with pytest.raises(ValueError, match="not a coverage file"):
         read_json(tmp_path / "bad.json")
