@@ -75,8 +75,6 @@ def _no_plan_observed(checked: CheckedScenario, item: CoverItem, bucket: Bucket,
 
     from ..automaton import build_automaton
     from ..logic.guards import Bound, conjunction
-    from ..planning import HorizonTooShort, NoPlanError, PlanningTimeout, settings_for
-    from ..planning.fallbacks import planned
 
     term = _observed_term(item.observed)
     if term is None:
@@ -98,16 +96,7 @@ def _no_plan_observed(checked: CheckedScenario, item: CoverItem, bucket: Bucket,
     automaton.transitions = [
         dataclasses.replace(t, guard=conjunction([t.guard, bound])) if t.id in at else t for t in automaton.transitions
     ]
-    planner_settings = settings_for(settings)
-    if checked.route is not None:
-        planner_settings = planner_settings.on_route(checked.route, checked.routes[1:])
-    try:
-        next(planned(lambda _: automaton, planner_settings, seed, 1))
-    except (PlanningTimeout, HorizonTooShort):
-        return ""
-    except NoPlanError as error:
-        return " ".join(str(error).split())
-    return ""
+    return _proof(checked, automaton, settings, seed)
 
 
 def _parameter(checked: CheckedScenario, item: CoverItem):
@@ -134,8 +123,6 @@ def _no_plan(checked: CheckedScenario, held: list[tuple[CoverItem, Bucket]], set
     its message says it ("" when a plan exists, or none was proved absent)."""
     from ..automaton import build_automaton
     from ..frontend.semantics.logical import WAY
-    from ..planning import HorizonTooShort, NoPlanError, PlanningTimeout, settings_for
-    from ..planning.fallbacks import planned
     from ..sampling import UnknownParameter, guided, on_ways, within
 
     narrowed, declared = checked, {}
@@ -152,10 +139,19 @@ def _no_plan(checked: CheckedScenario, held: list[tuple[CoverItem, Bucket]], set
                 declared.update(more)
     except UnknownParameter as error:  # the value breaks a keep() of the scenario, or the ways do not go together
         return str(error)
+    return _proof(narrowed, build_automaton(narrowed, values=declared), settings, seed)
+
+
+def _proof(checked: CheckedScenario, automaton, settings, seed: int) -> str:
+    """The planner's proof that ``automaton`` (``checked`` asked more of) has no plan, as its
+    message says it: "" when it has one, or when the planner ran out of time or a limit of the
+    tool binds (no proof)."""
+    from ..planning import HorizonTooShort, NoPlanError, PlanningTimeout, settings_for
+    from ..planning.fallbacks import planned
+
     planner_settings = settings_for(settings)
-    if narrowed.route is not None:
-        planner_settings = planner_settings.on_route(narrowed.route, narrowed.routes[1:])
-    automaton = build_automaton(narrowed, values=declared)
+    if checked.route is not None:
+        planner_settings = planner_settings.on_route(checked.route, checked.routes[1:])
     try:
         next(planned(lambda _: automaton, planner_settings, seed, 1))
     except (PlanningTimeout, HorizonTooShort):

@@ -11,6 +11,7 @@ is ``evaluation.coverage``'s.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass
@@ -250,20 +251,7 @@ def _item(
             except EvaluationError as problem:
                 error(problem.location, problem.message, problem.hint)
                 return None
-    return CoverItem(
-        kind,
-        name,
-        parameter.name,
-        coverage.location,
-        unit,
-        factor,
-        buckets,
-        text,
-        target,
-        given["ignore"].value if "ignore" in given else None,
-        given["illegal"].value if "illegal" in given else None,
-        parameter.dimension,
-    )
+    return _built(coverage, given, name, parameter.name, unit, factor, buckets, text, target, parameter.dimension)
 
 
 def _unit(argument: model.Argument | None, parameter: LogicalParameter, kind: str, error) -> tuple[str, float | None]:
@@ -497,19 +485,24 @@ def _observed_item(
             return None
     text = given["text"].value.value if "text" in given and isinstance(given["text"].value, model.Literal) else ""
     target = int(_number(given["target"].value) or 1) if "target" in given else 1
+    built = _built(coverage, given, name, "", unit, factor, buckets, text, target, dimension)
+    return dataclasses.replace(built, observed=expression, event=event)
+
+
+def _built(coverage, given, name, parameter, unit, factor, buckets, text, target, dimension) -> CoverItem:
+    """The item, its ``ignore:`` and ``illegal:`` conditions as written."""
+    ignore, illegal = (given[c].value if c in given else None for c in ("ignore", "illegal"))
     return CoverItem(
         coverage.kind,
         name,
-        "",
+        parameter,
         coverage.location,
         unit,
         factor,
         buckets,
         text,
         target,
-        given["ignore"].value if "ignore" in given else None,
-        given["illegal"].value if "illegal" in given else None,
+        ignore,
+        illegal,
         dimension,
-        observed=expression,
-        event=event,
     )
