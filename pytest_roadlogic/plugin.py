@@ -29,6 +29,7 @@ import pytest
 from .dut import NoSuchVehicle
 from .outcomes import (
     DUT_FAILED,
+    NO_PLAN,
     NOT_EXERCISED,
     OUTCOMES,
     STAGES,
@@ -51,6 +52,11 @@ EXTRA_OPTIONS = (
     ("replay", "run only the case in this case.json (written for a failure), with this session's drivers", ""),
     ("allow-read", f"folders outside the rootdir that .osc imports may read from, separated by {os.pathsep!r}", ""),
     ("coverage", "write what the session covered of the scenarios' cover()/record() items to this JSON file", ""),
+    (
+        "coverage-closure",
+        "after an item's samples, one case for each cover bucket no case hit and no proof rules out: yes or no",
+        "no",
+    ),
 )
 
 
@@ -80,6 +86,9 @@ def pytest_configure(config: pytest.Config) -> None:
     config.addinivalue_line("markers", "roadlogic: a scenario collected from an .osc file")
     config.addinivalue_line("markers", "slow: a long scenario or suite; deselect with -m 'not slow'")
     config.stash[SETTINGS] = _settings(config)  # a bad option value stops the session here, once
+    closure = _text(config, "coverage-closure")
+    if closure not in (None, "", "yes", "no"):
+        raise pytest.UsageError(f"roadlogic: --roadlogic-coverage-closure {closure!r}: give yes or no")
     from .artifacts.files import NotAnArtifactFolder, check_writable
 
     # a folder named by the user is tried for writing; the default only for what stands in its way, so
@@ -286,6 +295,7 @@ class ScenarioItem(pytest.Item):
         self.unasked_cases = 0  # cases whose plan needed changes nothing asks for
         self.unasked_said: list[str] = []  # the last such plan's changes, as a user reads them
         self.coverage = None  # what the cases covered of its cover/record items (evaluation.coverage)
+        self.proofs_asked: set[tuple[str, str]] = set()  # (cover item, bucket) asked of the planner
 
     # ---------------------------------------------------------------- running
 
@@ -343,6 +353,8 @@ class ScenarioItem(pytest.Item):
                         sampling_seed=sampling_seed,
                         shard=self.shard,
                     )
+                if self.coverage is not None and _text(self.config, "coverage-closure") == "yes":
+                    self._close_coverage(runner)
             self._fail_if_mostly_not_exercised()
         except ScenarioFailed as failure:
             self._report_failure(runner, failure.result, failure.summary)
@@ -376,16 +388,43 @@ class ScenarioItem(pytest.Item):
             pytest.fail(f"roadlogic: --roadlogic-dut: {missing}", pytrace=False)
 
     def _prove_unreachable(self) -> None:
-        """Mark the cover buckets no case hit that no case can reach (``evaluation.reach``), with why."""
+        """Mark the cover buckets no case hit that no case can reach (``evaluation.reach``), with
+        why; each bucket is asked once."""
         from .evaluation.reach import unreachable
 
         for item in self.scenario.coverage:
             if item.crossed and not self._parameters_only(item):
                 continue  # a cross with a value of the run: its combinations are not asked of the planner
             tally = self.coverage.items[item.name]
-            missed = [label for label, hits in tally.buckets.items() if hits == 0]
+            missed = [
+                label
+                for label, hits in tally.buckets.items()
+                if hits == 0 and (item.name, label) not in self.proofs_asked
+            ]
+            self.proofs_asked.update((item.name, label) for label in missed)
             if missed:
                 tally.unreachable.update(unreachable(self.scenario, item, missed, self.settings, self.settings.seed))
+
+    def _close_coverage(self, runner) -> None:
+        """Coverage closure (``--roadlogic-coverage-closure yes``): the buckets no sample hit are
+        first proved unreachable where they are, then each other one is asked for by one case with
+        its parameters inside it (``evaluation.closure``), run and counted as any sample is."""
+        from .evaluation.closure import closing_values
+
+        self._prove_unreachable()
+        cases = 0
+        for _, _, tries in closing_values(self.scenario, self.coverage):
+            for values in tries:
+                result = runner.run_case(runner.case(strategy=REFINED, values=values))
+                if result.outcome == NO_PLAN:
+                    # the bucket has plans (no proof rules it out), not at these values: the next
+                    # try, as a sample without a plan is set aside
+                    self.tally.aside(result.seconds)
+                    continue
+                cases += 1
+                self._count(result)
+                break
+        self.user_properties.append(("closure_cases", cases))
 
     def _parameters_only(self, cross) -> bool:
         items = {i.name: i for i in self.scenario.coverage}
@@ -472,7 +511,6 @@ class ScenarioItem(pytest.Item):
         from .case import installed_versions
         from .confinement import unique_name
         from .frontend.semantics.logical import describe_values
-        from .outcomes import NO_PLAN
 
         if result.outcome == NO_PLAN:
             result = runner.explained(result)  # the search did not ask why; ask for the reported case
@@ -728,6 +766,10 @@ class SessionSummary:
         terminalreporter.write_sep("-", "roadlogic coverage")
         for line in text_lines(coverages):
             terminalreporter.write_line(line)
+        if self.counts.get("closure_cases"):
+            terminalreporter.write_line(
+                f"closure: {self.counts['closure_cases']} cases asked for buckets the samples had not hit"
+            )
         path = _text(config, "coverage")
         if path:
             try:

@@ -250,3 +250,43 @@ def test_a_value_of_the_run_is_read_at_its_event_and_a_bucket_the_scenario_rules
     outside = {b.label for b in gap.buckets if b.high <= 10.0 or b.low >= 25.0}
     assert set(found) == outside
     assert all("cannot hold at the same time" in why for why in found.values())
+
+
+def test_closure_asks_one_case_inside_each_bucket_not_hit_nor_ruled_out():
+    from pytest_roadlogic.evaluation.closure import closing_values
+
+    scenario = items_of(CATCH_UP)
+    coverage = ScenarioCoverage.of("s", scenario.coverage)
+    coverage.add(scenario.coverage, {"gap": 15.0}, CONFORMANT)
+    coverage.items["gap"].unreachable["[60..80) m"] = "no plan"
+    asked = {label: tries for _, label, tries in closing_values(scenario, coverage)}
+    # [0..20) is hit; [60..80) is ruled out; the others are tried from their middle (within 10-100 m)
+    assert set(asked) == {"[20..40) m", "[40..60) m", "[80..100) m", "[100..120] m"}
+    assert [t["gap"] for t in asked["[20..40) m"]] == [30.0, 24.0, 36.0, 20.4, 39.6]
+    assert [t["gap"] for t in asked["[100..120] m"]] == [100.0]  # the range ends at its low edge
+    buckets = {b.label: b for b in scenario.coverage[0].buckets}
+    assert all(buckets[label].holds(t["gap"]) for label, tries in asked.items() for t in tries)
+
+
+def test_pytest_with_closure_covers_every_reachable_bucket_in_few_cases(pytester):
+    from pathlib import Path
+
+    source = Path(__file__).resolve().parents[2] / "scenarios" / "coverage" / "catch_up_from_behind.osc"
+    pytester.makefile(".osc", catch_up=source.read_text())
+    result = pytester.runpytest_subprocess(
+        "-p",
+        "no:cacheprovider",
+        "--roadlogic-examples",
+        "3",
+        "--roadlogic-coverage-closure",
+        "yes",
+        "--roadlogic-coverage",
+        "cov.json",
+    )
+    (coverage,) = read_json(pytester.path / "cov.json")
+    for item in coverage.items.values():
+        assert all(hits >= 1 or label in item.unreachable for label, hits in item.buckets.items()), item
+    assert "closure:" in result.stdout.str()
+    bad = pytester.runpytest_subprocess("-p", "no:cacheprovider", "--roadlogic-coverage-closure", "maybe")
+    assert "--roadlogic-coverage-closure 'maybe': give yes or no" in bad.stderr.str() + bad.stdout.str()
+    assert "Traceback" not in bad.stderr.str()
