@@ -158,6 +158,7 @@ def horizon(text: str) -> int:
 
 horizon_or_none = or_none(horizon)  # a horizon limit, or the encoding's own
 count = whole_number(0, "an instance count")
+processes = whole_number(1, "a number of processes")
 
 
 def one_of(choices: tuple[str, ...], what: str) -> Callable[[str], str]:

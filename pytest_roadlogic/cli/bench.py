@@ -9,6 +9,7 @@ from pathlib import Path
 
 from ..outcomes import CONFORMANT
 from ..settings import count as parse_count
+from ..settings import processes as parse_processes
 from .common import EXIT_ACCEPTED, EXIT_INPUT, EXIT_REJECTED, RUN_FLAGS, flag, run_settings, setting_flags
 
 
@@ -45,6 +46,13 @@ def add(commands) -> None:
         "conftest.py gives (default: scenarios/realistic/ when no paths are given)",
     )
     bench.add_argument("--no-realistic", action="store_true", help="run the paper's scenarios only")
+    bench.add_argument(
+        "--jobs",
+        type=flag(parse_processes),
+        default=1,
+        help="scenario-and-strategy runs at once, each in a process of its own (default 1: the instances' "
+        "seconds are measured alone); the results are the serial run's",
+    )
     setting_flags(bench, RUN_FLAGS)
     bench.add_argument(
         "--out", type=Path, default=Path("bench-report"), help="report directory (default bench-report/)"
@@ -169,7 +177,7 @@ def _bench_run(args: argparse.Namespace, settings):
         conformant += record.outcome == CONFORMANT
         bar.update(done, f"{record.scenario} {record.strategy}  {CONFORMANT} {conformant}")
 
-    results = run_benchmark(settings, args.out, progress, command=["roadlogic", *args.argv])
+    results = run_benchmark(settings, args.out, progress, command=["roadlogic", *args.argv], jobs=args.jobs)
     bar.close()
     for message in results.errors.values():
         print(message, file=sys.stderr)

@@ -167,12 +167,19 @@ Progress = Callable[[InstanceRecord, int, int], None]  # (record, done, total)
 
 
 def run_benchmark(
-    settings: BenchmarkSettings, out: Path, progress: Progress | None = None, command: list[str] | None = None
+    settings: BenchmarkSettings,
+    out: Path,
+    progress: Progress | None = None,
+    command: list[str] | None = None,
+    jobs: int = 1,
 ) -> BenchmarkResults:
     """Run every scenario with the base strategy, then with the refined one; save results as they come.
 
     ``results.json`` in ``out`` is rewritten after each scenario and strategy, so an interrupted run
-    keeps what it measured.
+    keeps what it measured. ``jobs``: how many scenario-and-strategy runs go at once, each in a
+    process of its own (``concurrent.futures``); each is fixed by the seed alone, so the results
+    are the serial run's, recorded in the same order (only the seconds differ, and run side by
+    side they share the cores).
     """
     out.mkdir(parents=True, exist_ok=True)
     started = time.perf_counter()
@@ -199,25 +206,58 @@ def run_benchmark(
         if progress is not None:
             progress(instance, done, total)
 
+    work = []  # (path, the file's settings, strategy), in the order the serial run takes them
     for paths, base, refined, run, dialects in suites:
         suite = dataclasses.replace(settings, base=base, refined=refined)
         for path in paths:
             dialect = dialects.get(str(path), run.dialect)
-            try:
-                scenario = load_scenario(path, dialect=dialect)
-            except OscError as error:
-                results.errors[path.stem] = error.report()
-                done += base + refined
-                continue
             file_settings = dataclasses.replace(suite, run=dataclasses.replace(run, dialect=dialect))
-            for strategy in STRATEGIES:
-                runner = _run_base if strategy == BASE else _run_refined
-                runner(scenario, path.stem, file_settings, out, record)
-                results.seconds = time.perf_counter() - started
-                results.save(out)
+            work += [(path, file_settings, strategy) for strategy in STRATEGIES]
+    for (path, file_settings, strategy), (records, error) in _each_done(work, out, jobs):
+        if error is not None:
+            results.errors[path.stem] = error
+            done += file_settings.count(strategy)
+            continue
+        for instance in records:
+            record(instance)
+        results.seconds = time.perf_counter() - started
+        results.save(out)
     results.seconds = time.perf_counter() - started
     results.save(out)
     return results
+
+
+def _each_done(work: list, out: Path, jobs: int):
+    """(job, its outcome) for each job of ``work`` in its order, ``jobs`` of them at once."""
+    if jobs <= 1:
+        for job in work:
+            yield job, _bench_job(*job, out)
+        return
+    import multiprocessing
+    from concurrent.futures import ProcessPoolExecutor
+
+    # spawned, not forked: a fork of a process whose threads hold locks (a solver's, a test
+    # runner's) can hang in the child
+    with ProcessPoolExecutor(max_workers=jobs, mp_context=multiprocessing.get_context("spawn")) as pool:
+        # the largest first, so that no process is left with a long one at the end
+        largest = sorted(range(len(work)), key=lambda k: -work[k][1].count(work[k][2]))
+        futures = {k: pool.submit(_bench_job, *work[k], out) for k in largest}
+        for k, job in enumerate(work):
+            yield job, futures[k].result()
+
+
+def _bench_job(
+    path: Path, settings: BenchmarkSettings, strategy: str, out: Path
+) -> tuple[list[InstanceRecord], str | None]:
+    """One scenario with one strategy: its instances' records, or the file's error report."""
+    try:
+        scenario = load_scenario(path, dialect=settings.run.dialect)
+    except OscError as error:
+        return [], error.report()
+    records: list[InstanceRecord] = []
+    runner = _run_base if strategy == BASE else _run_refined
+    runner(scenario, path.stem, settings, out, records.append)
+    return records, None
 
 
 def _run_base(

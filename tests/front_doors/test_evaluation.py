@@ -312,3 +312,23 @@ def test_the_full_run_conforms(full_run):
 @pytest.mark.bench
 def test_the_full_run_is_more_diverse_with_the_refined_strategy(full_run):
     assert "met: refined mean similarity below base" in full_run, full_run
+
+
+def test_a_bench_in_two_processes_records_what_the_serial_run_records_in_its_order(tmp_path):
+    from pytest_roadlogic.evaluation import BenchmarkSettings, run_benchmark
+    from pytest_roadlogic.settings import RunSettings
+
+    paths = (ROOT / "scenarios" / "overtake.osc", ROOT / "scenarios" / "follow.osc", ROOT / "tests" / "nothing.osc")
+    settings = BenchmarkSettings(paths, base=1, refined=2, run=RunSettings(seed=3), artifacts=False)
+
+    def recorded(jobs: int):
+        results = run_benchmark(settings, tmp_path / f"jobs{jobs}", jobs=jobs)
+        return [
+            {k: v for k, v in record.to_json().items() if k not in ("seconds", "artifacts")}
+            for record in results.instances
+        ], results.errors
+
+    serial, parallel = recorded(1), recorded(2)
+    assert parallel == serial
+    assert [r["scenario"] for r in serial[0]] == ["overtake"] * 3 + ["follow"] * 3
+    assert list(serial[1]) == ["nothing"]  # a file that cannot be read is reported, the others run
