@@ -13,7 +13,7 @@ import itertools
 from typing import Any
 
 from ..frontend.semantics.checked import CheckedScenario
-from ..frontend.semantics.coverage import CROSS, Bucket, CoverItem
+from ..frontend.semantics.coverage import Bucket, CoverItem, held
 from .coverage import ScenarioCoverage
 
 # where in a bucket (a share of its width, within the parameter's range) the values a closure
@@ -41,19 +41,18 @@ def closing_values(checked: CheckedScenario, coverage: ScenarioCoverage) -> list
         for bucket in item.buckets:
             if tally.buckets.get(bucket.label, 0) >= item.target or bucket.label in tally.unreachable:
                 continue
-            names = bucket.label.split(CROSS) if item.crossed else [bucket.label]
-            held = [(part, next(b for b in part.buckets if b.label == name)) for part, name in zip(parts, names)]
-            if len(held) == 1:
+            holds = held(item, bucket, items)
+            if len(holds) == 1:
                 combinations = [(share,) for share in SHARES]
             else:
                 combinations = sorted(
-                    itertools.product(CROSS_SHARES, repeat=len(held)), key=lambda c: sum(abs(x - 0.5) > 0 for x in c)
+                    itertools.product(CROSS_SHARES, repeat=len(holds)), key=lambda c: sum(abs(x - 0.5) > 0 for x in c)
                 )
             tries = []
             for shares in combinations:
                 values = {
                     part.parameter: _inside(parameters[part.parameter], b, share)
-                    for (part, b), share in zip(held, shares)
+                    for (part, b), share in zip(holds, shares)
                 }
                 if values not in tries:
                     tries.append(values)

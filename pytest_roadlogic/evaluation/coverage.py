@@ -140,10 +140,7 @@ def _observed(item, run) -> float | None:
     if not label:
         time = verdict.run[0][0] if end == "start" else verdict.run[-1][0]
     else:
-        phases = [k for k, timing in automaton.timings.items() if timing.name == label]
-        marks = {
-            t.label for t in automaton.transitions if any(k in (t.starts if end == "start" else t.ends) for k in phases)
-        }
+        marks = {t.label for t in automaton.transitions_at(label, end)}
         times = [time for time, events in verdict.run if events in marks]
         if not times:
             return None

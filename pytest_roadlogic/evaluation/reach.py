@@ -13,7 +13,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from ..frontend.semantics.checked import CheckedScenario
-from ..frontend.semantics.coverage import CROSS, Bucket, CoverItem
+from ..frontend.semantics.coverage import Bucket, CoverItem, held
 
 
 def unreachable(checked: CheckedScenario, item: CoverItem, labels: list[str], settings, seed: int) -> dict[str, str]:
@@ -22,7 +22,6 @@ def unreachable(checked: CheckedScenario, item: CoverItem, labels: list[str], se
     the parameter (a cross: each of its items' parameters) in the bucket (``settings``: the run's
     ``RunSettings``, ``seed``: its seed)."""
     items = {i.name: i for i in checked.coverage}
-    parts = [items[name] for name in item.crossed] if item.crossed else [item]
     found = {}
     for bucket in item.buckets:
         if bucket.label not in labels:
@@ -32,10 +31,9 @@ def unreachable(checked: CheckedScenario, item: CoverItem, labels: list[str], se
             if why:
                 found[bucket.label] = why
             continue
-        names = bucket.label.split(CROSS) if item.crossed else [bucket.label]
-        held = [(part, next(b for b in part.buckets if b.label == name)) for part, name in zip(parts, names)]
-        why = next(filter(None, (_outside(checked, part, b) for part, b in held)), "")
-        why = why or _no_plan(checked, held, settings, seed)
+        holds = held(item, bucket, items)
+        why = next(filter(None, (_outside(checked, part, b) for part, b in holds)), "")
+        why = why or _no_plan(checked, holds, settings, seed)
         if why:
             found[bucket.label] = why
     return found
@@ -80,16 +78,7 @@ def _no_plan_observed(checked: CheckedScenario, item: CoverItem, bucket: Bucket,
     if term is None:
         return ""
     automaton = build_automaton(checked)
-    label, end = item.event
-    if not label:
-        at = {
-            t.id
-            for t in automaton.transitions
-            if (t.target == automaton.final if end == "end" else t.source == automaton.initial)
-        }
-    else:
-        phases = {k for k, timing in automaton.timings.items() if timing.name == label}
-        at = {t.id for t in automaton.transitions if phases & (t.starts if end == "start" else t.ends)}
+    at = {t.id for t in automaton.transitions_at(*item.event)}
     if not at:
         return ""
     bound = Bound(term, bucket.low, bucket.high, item.location)

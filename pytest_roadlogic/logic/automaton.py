@@ -309,6 +309,16 @@ class SymbolicAutomaton:
             frontier = nxt
         return depth
 
+    def transitions_at(self, phase: str, end: str) -> list[Transition]:
+        """The transitions that start (``end`` "start") or end ("end") the timed phase labelled
+        ``phase``; "" the scenario's own: those out of the initial location, or into the final one."""
+        if not phase:
+            if end == "start":
+                return self.outgoing(self.initial)
+            return [t for t in self.transitions if t.target == self.final]
+        phases = {k for k, timing in self.timings.items() if timing.name == phase}
+        return [t for t in self.transitions if phases & (t.starts if end == "start" else t.ends)]
+
     def names_ahead(self, location_id: int, actor: str) -> bool:
         """Whether anything a run may still meet from ``location_id`` on names ``actor``: the
         invariant of a location it may reach (this one included), the guard of a transition it

@@ -506,3 +506,14 @@ def _built(coverage, given, name, parameter, unit, factor, buckets, text, target
         illegal,
         dimension,
     )
+
+
+def held(item: CoverItem, bucket: Bucket, items: Mapping[str, CoverItem]) -> list[tuple[CoverItem, Bucket]]:
+    """Each item ``bucket`` of ``item`` holds a value of, with the bucket it holds it in: the item
+    itself, or for a cross each of its items (``items``: the scenario's, by name)."""
+    if not item.crossed:
+        return [(item, bucket)]
+    parts = [items[name] for name in item.crossed]
+    return [
+        (part, next(b for b in part.buckets if b.label == name)) for part, name in zip(parts, bucket.label.split(CROSS))
+    ]
