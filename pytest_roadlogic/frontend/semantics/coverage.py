@@ -307,7 +307,10 @@ def _buckets(given: dict, parameter: LogicalParameter, unit: str, factor: float,
 
     if "buckets" in given:
         value = given["buckets"].value
-        bounds = [_in_si(item, factor, parameter.dimension) for item in getattr(value, "items", ())]
+        bounds = [
+            _in_si(item, factor, parameter.dimension)
+            for item in (value.items if isinstance(value, model.ListValue) else ())
+        ]
         if len(bounds) < 2 or None in bounds or any(b < a for a, b in zip(bounds, bounds[1:])):
             error(
                 value.location,
@@ -360,7 +363,10 @@ def _cross(coverage: model.Coverage, declared: dict[str, CoverItem], error) -> C
         error(coverage.location, "a cross needs a name", "e.g. cover(gap_by_speed, items: [gap, speed])")
         return None
     listed = given["items"].value
-    names = [i.name if isinstance(i, model.Name) else None for i in getattr(listed, "items", ())]
+    names = [
+        i.name if isinstance(i, model.Name) else None
+        for i in (listed.items if isinstance(listed, model.ListValue) else ())
+    ]
     if len(names) < 2 or None in names:
         error(listed.location, "items: takes a list of two or more cover items", "e.g. items: [gap, speed]")
         return None
@@ -422,14 +428,9 @@ def _observed_dimension(expression: model.Expression, actors: set[str]) -> str |
     return None
 
 
-def _phase_labels(node: Any) -> set[str]:
+def _phase_labels(behavior: model.Behavior | None) -> set[str]:
     """Every label of a phase in a behaviour (an invocation's or a composition's)."""
-    found = set()
-    if getattr(node, "label", None):
-        found.add(node.label)
-    for child in getattr(node, "children", ()) or ():
-        found |= _phase_labels(child)
-    return found
+    return {node.label for node in model.walk(behavior) if node.label} if behavior is not None else set()
 
 
 def _event(argument: model.Argument | None, scenario: model.Scenario, error) -> tuple[str, str] | None:
