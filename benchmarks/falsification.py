@@ -3,7 +3,7 @@ the scenario happens around a good one.
 
     python benchmarks/falsification.py [--scenario benchmarks/scenarios/rear_braking_rare.osc]
         [--max-braking 5 | --delay SECONDS | --defective NAME] [--seeds 10] [--budget 200]
-        [--searches random,cross-entropy,hypothesis] [--replan-period 0] [--jobs 2]
+        [--searches random,cross-entropy,hypothesis] [--replan-period 0] [--jobs 2 | --ray ADDRESS]
         [--samples 0] [--periods 0.25,1,0]
 
 Prints two tables:
@@ -31,7 +31,6 @@ import argparse
 import statistics
 import sys
 import time
-from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -41,6 +40,7 @@ from hypothesis import HealthCheck, Phase, given, settings  # noqa: E402
 from hypothesis import seed as seeded  # noqa: E402
 
 from pytest_roadlogic.dut import UnderTest  # noqa: E402
+from pytest_roadlogic.executors import executor  # noqa: E402
 from pytest_roadlogic.outcomes import DUT_FAILED  # noqa: E402
 from pytest_roadlogic.pipeline import load_scenario, run_instances  # noqa: E402
 from pytest_roadlogic.planning import NoPlanError  # noqa: E402
@@ -143,6 +143,9 @@ def main() -> None:
     parser.add_argument("--budget", type=int, default=200, help="samples per seed before giving up")
     parser.add_argument("--replan-period", type=float, default=0.0)
     parser.add_argument("--jobs", type=int, default=2, help="processes running seeds side by side")
+    parser.add_argument(
+        "--ray", default=None, help="run the seeds' searches on this Ray cluster instead (docs/cluster.md)"
+    )
     parser.add_argument("--samples", type=int, default=0, help="samples for the share that happened (0: none)")
     parser.add_argument(
         "--periods", default="0.25,1,0", help="replanning periods (s) of the share that happened; 0: open loop"
@@ -165,8 +168,9 @@ def main() -> None:
             for seed in range(args.seeds)
             for search in searches  # interleaved, so that each search meets the same load
         ]
-        with ProcessPoolExecutor(max_workers=args.jobs) as pool:
-            results = list(pool.map(first_failure, *zip(*tasks)))
+        # each search learns from its own samples only: the seeds' searches are independent jobs
+        with executor(args.jobs, args.ray) as chosen:
+            results = list(chosen.results([(first_failure, task) for task in tasks]))
         by_search = {search: [r for t, r in zip(tasks, results) if t[1] == search] for search in searches}
         print(
             f"{'search':<14} {'simulations to the first failure: median':>41} {'quartiles':>13} {'range':>11} "

@@ -212,15 +212,17 @@ class Runner:
             if not search and done >= count:
                 return
             done += 1
-            case = self.case(strategy=REFINED, values=values)
-            result = self.run_case(case, explain=False, fallbacks=discard)
-            if search:
+            if search and discard:
+                result = self.run_case(self.case(strategy=REFINED, values=values), explain=False, fallbacks=True)
                 _events(result)
-            if search and discard and result.outcome == NO_PLAN:
-                discarded(result)
-                hypothesis.reject()  # as assume(False): the sample does not count, and too many trip the health check
+                if result.outcome == NO_PLAN:
+                    discarded(result)
+                    hypothesis.reject()  # as assume(False): the sample does not count, and too many trip the health check
+            else:
+                result = self.sample(values)
+                if search:
+                    _events(result)
             if result.kind == CANNOT_INSTANTIATE:
-                result = self.blame.blamed(case, result, lambda again: self.run_case(again, explain=False))
                 if search:
                     hypothesis.event(
                         "no plan",
@@ -230,10 +232,7 @@ class Runner:
                         if result.culprit
                         else "only the values together have none (set aside)",
                     )
-                if values and result.kind == CANNOT_INSTANTIATE and result.culprit is None and not result.at_no_values:
-                    # each value has concrete scenarios, only not together: a combination outside
-                    # the logical scenario, drawn by independent sampling and set aside as
-                    # rejection sampling sets one aside (the README's rule)
+                if set_aside_sample(result):
                     done -= 1
                     set_aside(result)
                     hypothesis.reject()
@@ -290,6 +289,18 @@ class Runner:
         with drawing:
             hypothesis.seed(seed)(chosen(hypothesis.given(strategy(self.scenario, shard))(example)))()
 
+    def sample(self, values: dict[str, Any]) -> CaseResult:
+        """One sample of the refined strategy, as the search and the bench run it (a sample
+        without a plan is discarded before this where ``no_plan`` says discard): run without its
+        explanation; without a plan because its constraints clash, blamed on the value that alone
+        has none (``CaseResult.culprit``), if one does (``set_aside_sample`` says whether to set
+        it aside)."""
+        case = self.case(strategy=REFINED, values=values)
+        result = self.run_case(case, explain=False, fallbacks=self.settings.no_plan == DISCARD)
+        if result.kind == CANNOT_INSTANTIATE:
+            result = self.blame.blamed(case, result, lambda again: self.run_case(again, explain=False))
+        return result
+
     def explained(self, result: CaseResult) -> CaseResult:
         """A case without a plan, run again to say why: the constraints that cannot hold together
         (the pipeline has already tried thinner margins and relaxed vehicle limits, and names
@@ -319,6 +330,19 @@ class Runner:
             fallbacks=fallbacks,
             under_test=UnderTest.of(self.settings),
         )
+
+
+def set_aside_sample(result: CaseResult) -> bool:
+    """Whether a sample is set aside rather than counted: each of its values has concrete
+    scenarios, only not together (no plan, and no value alone to blame): a combination outside the
+    logical scenario, drawn by independent sampling and set aside as rejection sampling sets one
+    aside (the README's rule)."""
+    return (
+        bool(result.case.values)
+        and result.kind == CANNOT_INSTANTIATE
+        and result.culprit is None
+        and not result.at_no_values
+    )
 
 
 def replay(

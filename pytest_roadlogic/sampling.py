@@ -115,6 +115,35 @@ def strategy(checked: CheckedScenario, shard: Shard | None = None):
     return samples() if shard is None or shard.count == 1 else samples().filter(shard.holds)
 
 
+def drawn(checked: CheckedScenario, count: int, seed: int | str) -> list[Values]:
+    """``count`` samples of ``checked``'s logical parameters drawn by Hypothesis from ``seed``, as
+    the bench's refined strategy draws them (the default profile, generation only, no database),
+    without running them: a campaign hands them to its executor's workers."""
+    import hypothesis
+    from hypothesis import HealthCheck, Phase
+
+    found: list[Values] = []
+    if count < 1:
+        return found
+
+    def collect(values: Values) -> None:
+        if len(found) < count:
+            found.append(values)
+
+    chosen = hypothesis.settings(
+        hypothesis.settings.get_profile("default"),
+        max_examples=count,
+        database=None,
+        deadline=None,
+        derandomize=False,
+        phases=[Phase.generate],
+        print_blob=False,
+        suppress_health_check=list(HealthCheck),
+    )
+    hypothesis.seed(seed)(chosen(hypothesis.given(strategy(checked))(collect)))()
+    return found
+
+
 def _bounded_by_relations(parameter: LogicalParameter, space: ParameterSpace, drawn: Values) -> tuple[float, float]:
     """The parameter's range, narrowed by every relation that bounds it by parameters already drawn."""
     low, high = parameter.low, parameter.high

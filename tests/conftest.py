@@ -42,3 +42,18 @@ def _a_home_folder_beside_pytesters(request):
     with pytest.MonkeyPatch.context() as patch:
         patch.setenv("HOME", str(home))
         yield
+
+
+@pytest.fixture(scope="module")
+def two_node_ray_cluster():
+    """A Ray cluster of two nodes of one CPU each, on this machine, for one module's tests (its
+    daemons take CPU while they run: stopped after the module); its address."""
+    from ray.cluster_utils import Cluster
+
+    cluster = Cluster(initialize_head=True, head_node_args={"num_cpus": 1, "include_dashboard": False})
+    try:
+        cluster.add_node(num_cpus=1)
+        cluster.wait_for_nodes()
+        yield cluster.address
+    finally:
+        cluster.shutdown()

@@ -53,6 +53,14 @@ def add(commands) -> None:
         help="scenario-and-strategy runs at once, each in a process of its own (default 1: the instances' "
         "seconds are measured alone); the results are the serial run's",
     )
+    bench.add_argument(
+        "--ray",
+        default=None,
+        metavar="ADDRESS",
+        help="run the scenario-and-strategy runs on a Ray cluster (the [ray] extra): its head's HOST:PORT, 'auto' "
+        "on one of its nodes, or 'local' for one of this machine's CPUs; the results are the serial run's "
+        "(docs/cluster.md)",
+    )
     setting_flags(bench, RUN_FLAGS)
     bench.add_argument(
         "--out", type=Path, default=Path("bench-report"), help="report directory (default bench-report/)"
@@ -96,6 +104,8 @@ def _bench(args: argparse.Namespace) -> int:
         if _bench_out_refused(args):
             return EXIT_INPUT
         results = _bench_run(args, settings)
+        if isinstance(results, int):
+            return results
     table = summaries(results)
     report = write_report(results, args.out, table)
     met, lines = targets_met(results, table)
@@ -154,7 +164,20 @@ def _bench_settings(args: argparse.Namespace):
 
 
 def _bench_run(args: argparse.Namespace, settings):
-    """Run the bench's suites with a progress bar on stderr; the results."""
+    """Run the bench's suites with a progress bar on stderr, on the executor ``--jobs`` or ``--ray``
+    asks for; the results, or the exit code after saying why the executor cannot run."""
+    from ..executors import ExecutorError, executor
+
+    try:
+        with executor(args.jobs, args.ray) as chosen:
+            return _bench_on(args, settings, chosen)
+    except ExecutorError as error:
+        print(f"roadlogic bench: --{'ray' if args.ray is not None else 'jobs'}: {error}", file=sys.stderr)
+        return EXIT_INPUT
+
+
+def _bench_on(args: argparse.Namespace, settings, executor):
+    """Run the bench's suites on ``executor``; the results."""
     from ..evaluation import run_benchmark
 
     total = len(settings.paths) * (settings.base + settings.refined)
@@ -164,7 +187,7 @@ def _bench_run(args: argparse.Namespace, settings):
         also = f"; {len(realistic.paths)} realistic, {realistic.base} base and {realistic.refined} refined each"
     print(
         f"{len(settings.paths)} scenarios, {settings.base} base and {settings.refined} refined instances each{also} "
-        f"({total} in all), seed {settings.run.seed}",
+        f"({total} in all), seed {settings.run.seed}; {executor.describe()}",
         file=sys.stderr,
     )
     from ..progress import ProgressBar
@@ -177,7 +200,7 @@ def _bench_run(args: argparse.Namespace, settings):
         conformant += record.outcome == CONFORMANT
         bar.update(done, f"{record.scenario} {record.strategy}  {CONFORMANT} {conformant}")
 
-    results = run_benchmark(settings, args.out, progress, command=["roadlogic", *args.argv], jobs=args.jobs)
+    results = run_benchmark(settings, args.out, progress, command=["roadlogic", *args.argv], executor=executor)
     bar.close()
     for message in results.errors.values():
         print(message, file=sys.stderr)

@@ -26,14 +26,15 @@ from ..artifacts.files import write_text
 from ..artifacts.writer import write_artifacts
 from ..case import VERSIONED, installed_versions
 from ..confinement import unique_name
+from ..executors import Executor, SerialExecutor
 from ..frontend import OscError
 from ..frontend.semantics.logical import describe_values
 from ..outcomes import NO_PLAN, STAGES
-from ..pipeline import load_scenario
-from ..runner import CaseResult, Runner
+from ..runner import CaseResult, Runner, set_aside_sample
 from ..settings import BASE, REFINED, RunSettings
 from .fidelity import unasked_changes
 from .occupancy import Occupancy
+from .scenario_source import ScenarioSource
 
 STRATEGIES = (BASE, REFINED)  # the order the bench runs them in
 RESULTS_FILE = "results.json"
@@ -171,23 +172,27 @@ def run_benchmark(
     out: Path,
     progress: Progress | None = None,
     command: list[str] | None = None,
-    jobs: int = 1,
+    executor: Executor | None = None,
 ) -> BenchmarkResults:
     """Run every scenario with the base strategy, then with the refined one; save results as they come.
 
-    ``results.json`` in ``out`` is rewritten after each scenario and strategy, so an interrupted run
-    keeps what it measured. ``jobs``: how many scenario-and-strategy runs go at once, each in a
-    process of its own (``concurrent.futures``); each is fixed by the seed alone, so the results
-    are the serial run's, recorded in the same order (only the seconds differ, and run side by
-    side they share the cores).
+    ``executor`` (default: serial, in this process) runs the jobs: each scenario's base strategy
+    (the planner's plans come one after another), and each sample of the refined strategy alone.
+    The samples are drawn up front from the seed (``sampling.drawn``), so every job is fixed by
+    its arguments and the seed: the results are the serial run's, recorded in its order, whatever
+    ran them (only the seconds differ, and run side by side the jobs share the cores). A sample
+    set aside (``runner.set_aside_sample``) is not an instance: more samples are drawn for those,
+    from the seed and the round, until the count is reached or the draws run dry.
+    ``results.json`` in ``out`` is rewritten as records come, so an interrupted run keeps what it
+    measured.
     """
+    executor = executor or SerialExecutor()
     out.mkdir(parents=True, exist_ok=True)
     started = time.perf_counter()
     settings_record = {**settings.record(), "command": command}
-    suites = settings.suites()
     results = BenchmarkResults(
         settings_record,
-        environment(),
+        {**environment(), "executor": executor.describe()},
         [p.stem for p in settings.paths],
         realistic=[p.stem for p in settings.realistic.paths] if settings.realistic is not None else [],
     )
@@ -196,68 +201,177 @@ def run_benchmark(
         raise ValueError(
             f"a realistic scenario has the name of one of the paper's: {', '.join(sorted(clashing))}; rename its file"
         )
-    total = sum(len(paths) * (base + refined) for paths, base, refined, _, _ in suites)
+    runs = _runs(settings)
+    total = sum(run.count for run in runs)
     done = 0
+    saved = 0.0
 
     def record(instance: InstanceRecord) -> None:
         nonlocal done
         done += 1
-        results.instances.append(instance)
         if progress is not None:
             progress(instance, done, total)
 
-    work = []  # (path, the file's settings, strategy), in the order the serial run takes them
-    for paths, base, refined, run, dialects in suites:
+    def unreadable(run: _Run) -> None:
+        nonlocal done
+        if run.error is not None and id(run) not in failed:
+            failed.add(id(run))
+            done += run.count  # none of its instances will come
+
+    failed: set[int] = set()
+
+    def save(now: bool = False) -> None:
+        nonlocal saved
+        if now or time.perf_counter() - saved > SAVE_EVERY:
+            results.instances = [r for run in runs for r in run.kept()]
+            results.errors = {run.source.path.stem: run.error for run in runs if run.error is not None}
+            results.seconds = time.perf_counter() - started
+            results.save(out)
+            saved = time.perf_counter()
+
+    base = [run for run in runs if run.strategy == BASE]
+    drawing = [run for run in runs if run.strategy == REFINED and run.count > 0]
+    for round_ in range(DRAW_ROUNDS):
+        draws = executor.results([(_drawn_job, run.draw_job(round_)) for run in drawing])
+        for run, (values, error) in zip(drawing, draws, strict=True):
+            run.add_draws(values, error)
+            unreadable(run)
+        # the base strategy's jobs go with the first round's samples, the largest first
+        calls = [(run, None, (_bench_job, (run.source, run.settings, out)), run.count) for run in base]
+        calls += [(run, k, (_sample_job, run.sample_job(k, out)), 1) for run in drawing for k in run.to_run()]
+        answers = executor.results([call for _, _, call, _ in calls], [size for _, _, _, size in calls])
+        for (run, number, _, _), answer in zip(calls, answers, strict=True):
+            for instance in run.answered(number, answer):
+                record(instance)
+            unreadable(run)
+            save()
+        base = []
+        drawing = [run for run in drawing if run.wants_more()]
+        if not drawing:
+            break
+    save(now=True)
+    return results
+
+
+SAVE_EVERY = 2.0  # seconds between rewrites of results.json while records come
+DRAW_ROUNDS = 10  # draws of a refined run: the first, then one per round of samples set aside
+
+
+@dataclass
+class _Run:
+    """One scenario with one strategy in a bench: what its jobs need, and what they answered."""
+
+    source: ScenarioSource
+    settings: BenchmarkSettings
+    strategy: str
+    records: dict[int, InstanceRecord | None] = field(default_factory=dict)  # draw -> record (None: set aside)
+    draws: list[dict[str, Any]] = field(default_factory=list)  # the refined samples, in draw order
+    error: str | None = None
+    dry: bool = False  # the last draw found no sample not drawn before
+
+    @property
+    def count(self) -> int:
+        return self.settings.count(self.strategy)
+
+    def draw_job(self, round_: int) -> tuple:
+        missing = self.count - len(self.kept())
+        # the first draw is the one a plain Hypothesis run of the seed makes; each next one, for
+        # the samples set aside, is seeded by the round too
+        seed = self.settings.run.seed if round_ == 0 else f"{self.settings.run.seed}-{round_}"
+        return self.source, missing, seed
+
+    def add_draws(self, values: list[dict[str, Any]] | None, error: str | None) -> None:
+        if error is not None:
+            self.error = error
+            return
+        new = [v for v in values or [] if v not in self.draws]
+        self.dry = not new
+        self.draws += new
+
+    def to_run(self) -> list[int]:
+        return [k for k in range(len(self.draws)) if k not in self.records] if self.error is None else []
+
+    def sample_job(self, number: int, out: Path) -> tuple:
+        return self.source, self.settings, self.draws[number], number, out
+
+    def answered(self, number: int | None, answer) -> list[InstanceRecord]:
+        """Take a job's answer (``number``: the sample's draw, None for the base strategy's job);
+        the records it adds."""
+        found, error = answer
+        if error is not None:
+            self.error = error
+            return []
+        if number is None:
+            self.records = dict(enumerate(found))
+            return found
+        self.records[number] = found
+        return [found] if found is not None else []
+
+    def kept(self) -> list[InstanceRecord]:
+        """The records so far in the serial run's order, refined ones numbered past those set
+        aside, at most the run's count."""
+        if self.strategy == BASE:
+            return [self.records[k] for k in sorted(self.records)]
+        kept = []
+        for number in sorted(self.records):
+            found = self.records[number]
+            if found is not None and len(kept) < self.count:
+                kept.append(dataclasses.replace(found, index=len(kept)))
+        return kept
+
+    def wants_more(self) -> bool:
+        return self.error is None and not self.dry and len(self.kept()) < self.count
+
+
+def _runs(settings: BenchmarkSettings) -> list[_Run]:
+    """Every scenario with each strategy, in the order the serial run takes them."""
+    runs = []
+    for paths, base, refined, run, dialects in settings.suites():
         suite = dataclasses.replace(settings, base=base, refined=refined)
         for path in paths:
             dialect = dialects.get(str(path), run.dialect)
             file_settings = dataclasses.replace(suite, run=dataclasses.replace(run, dialect=dialect))
-            work += [(path, file_settings, strategy) for strategy in STRATEGIES]
-    for (path, file_settings, strategy), (records, error) in _each_done(work, out, jobs):
-        if error is not None:
-            results.errors[path.stem] = error
-            done += file_settings.count(strategy)
-            continue
-        for instance in records:
-            record(instance)
-        results.seconds = time.perf_counter() - started
-        results.save(out)
-    results.seconds = time.perf_counter() - started
-    results.save(out)
-    return results
+            source = ScenarioSource(Path(path), dialect=dialect)
+            runs += [_Run(source, file_settings, strategy) for strategy in STRATEGIES]
+    return runs
 
 
-def _each_done(work: list, out: Path, jobs: int):
-    """(job, its outcome) for each job of ``work`` in its order, ``jobs`` of them at once."""
-    if jobs <= 1:
-        for job in work:
-            yield job, _bench_job(*job, out)
-        return
-    import multiprocessing
-    from concurrent.futures import ProcessPoolExecutor
-
-    # spawned, not forked: a fork of a process whose threads hold locks (a solver's, a test
-    # runner's) can hang in the child
-    with ProcessPoolExecutor(max_workers=jobs, mp_context=multiprocessing.get_context("spawn")) as pool:
-        # the largest first, so that no process is left with a long one at the end
-        largest = sorted(range(len(work)), key=lambda k: -work[k][1].count(work[k][2]))
-        futures = {k: pool.submit(_bench_job, *work[k], out) for k in largest}
-        for k, job in enumerate(work):
-            yield job, futures[k].result()
+# ------------------------------------------------------------------ the jobs (run in a worker)
 
 
 def _bench_job(
-    path: Path, settings: BenchmarkSettings, strategy: str, out: Path
+    source: ScenarioSource, settings: BenchmarkSettings, out: Path
 ) -> tuple[list[InstanceRecord], str | None]:
-    """One scenario with one strategy: its instances' records, or the file's error report."""
+    """One scenario's base strategy: its instances' records, or the file's error report."""
     try:
-        scenario = load_scenario(path, dialect=settings.run.dialect)
+        scenario = source.load()
     except OscError as error:
         return [], error.report()
     records: list[InstanceRecord] = []
-    runner = _run_base if strategy == BASE else _run_refined
-    runner(scenario, path.stem, settings, out, records.append)
+    _run_base(scenario, source.path.stem, settings, out, records.append)
     return records, None
+
+
+def _drawn_job(source: ScenarioSource, count: int, seed: int | str) -> tuple[list[dict[str, Any]], str | None]:
+    """``count`` samples of a scenario drawn from ``seed``, or the file's error report."""
+    from ..sampling import drawn
+
+    try:
+        return drawn(source.load(), count, seed), None
+    except OscError as error:
+        return [], error.report()
+
+
+def _sample_job(
+    source: ScenarioSource, settings: BenchmarkSettings, values: dict[str, Any], number: int, out: Path
+) -> tuple[InstanceRecord | None, str | None]:
+    """One sample of the refined strategy (``number``: its draw), planned, simulated and monitored
+    once (with retries): its record, None when it is set aside."""
+    runner = source.runner(settings.run)
+    result = runner.sample(values)
+    if set_aside_sample(result):
+        return None, None
+    return _record(result, source.path.stem, REFINED, number, settings, out, runner.scenario.parameters), None
 
 
 def _run_base(
@@ -278,22 +392,6 @@ def _run_base(
         index += 1
     for k in range(index, settings.base):
         record(InstanceRecord(name, BASE, k, ending, message=message))
-
-
-def _run_refined(
-    scenario, name: str, settings: BenchmarkSettings, out: Path, record: Callable[[InstanceRecord], None]
-) -> None:
-    """N samples of the logical parameters, drawn by Hypothesis from the run's seed as the pytest
-    plugin draws them, each planned, simulated and monitored once (with retries)."""
-    runner = Runner(scenario, settings.run, explain=False)
-    index = 0
-
-    def sample(result: CaseResult) -> None:
-        nonlocal index
-        record(_record(result, name, REFINED, index, settings, out, scenario.parameters))
-        index += 1
-
-    runner.refined(sample, settings.refined, search=False)
 
 
 def _record(

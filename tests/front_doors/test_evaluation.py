@@ -314,21 +314,72 @@ def test_the_full_run_is_more_diverse_with_the_refined_strategy(full_run):
     assert "met: refined mean similarity below base" in full_run, full_run
 
 
-def test_a_bench_in_two_processes_records_what_the_serial_run_records_in_its_order(tmp_path):
+@pytest.mark.parametrize("where", ["two processes", "a two-node Ray cluster"])
+def test_a_bench_elsewhere_records_what_the_serial_run_records_in_its_order(where, tmp_path, request):
     from pytest_roadlogic.evaluation import BenchmarkSettings, run_benchmark
+    from pytest_roadlogic.executors import executor
     from pytest_roadlogic.settings import RunSettings
 
     paths = (ROOT / "scenarios" / "overtake.osc", ROOT / "scenarios" / "follow.osc", ROOT / "tests" / "nothing.osc")
     settings = BenchmarkSettings(paths, base=1, refined=2, run=RunSettings(seed=3), artifacts=False)
 
-    def recorded(jobs: int):
-        results = run_benchmark(settings, tmp_path / f"jobs{jobs}", jobs=jobs)
+    def recorded(chosen):
+        with chosen:
+            results = run_benchmark(settings, tmp_path / chosen.name, executor=chosen)
         return [
             {k: v for k, v in record.to_json().items() if k not in ("seconds", "artifacts")}
             for record in results.instances
         ], results.errors
 
-    serial, parallel = recorded(1), recorded(2)
-    assert parallel == serial
+    if where == "two processes":
+        elsewhere = executor(jobs=2)
+    else:
+        elsewhere = executor(ray=request.getfixturevalue("two_node_ray_cluster"))
+    serial = recorded(executor())
+    assert recorded(elsewhere) == serial
     assert [r["scenario"] for r in serial[0]] == ["overtake"] * 3 + ["follow"] * 3
     assert list(serial[1]) == ["nothing"]  # a file that cannot be read is reported, the others run
+
+
+def test_a_ray_cluster_runs_jobs_on_each_of_its_nodes(two_node_ray_cluster):
+    from pytest_roadlogic.executors import executor
+
+    with executor(ray=two_node_ray_cluster) as cluster:
+        assert cluster.workers() == 2
+        assert "2 nodes" in cluster.describe()
+        nodes = list(cluster.results([(_node_of_a_slow_job, (k,)) for k in range(4)]))
+    assert [k for k, _ in nodes] == [0, 1, 2, 3]  # in the order of the jobs
+    assert len({node for _, node in nodes}) == 2
+
+
+def _node_of_a_slow_job(k: int) -> tuple[int, str]:
+    import time
+
+    import ray
+
+    time.sleep(0.5)  # long enough that the second node takes a job while the first holds one
+    return k, ray.get_runtime_context().get_node_id()
+
+
+def test_a_ray_address_nothing_answers_at_is_refused_with_what_to_give(tmp_path):
+    result = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "pytest_roadlogic.cli",
+            "bench",
+            str(ROOT / "scenarios" / "follow.osc"),
+            "--quick",
+            "--out",
+            str(tmp_path / "out"),
+            "--ray",
+            "127.0.0.1:1",
+        ],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    assert result.returncode == 2, result.stderr
+    assert "roadlogic bench: --ray: no Ray cluster answers at '127.0.0.1:1'" in result.stderr
+    assert "ray start --head" in result.stderr
+    assert "Traceback" not in result.stderr
