@@ -38,6 +38,9 @@ class Case:
     # are the simulator's own): a replay builds the same ones or refuses (simulation/named_drivers.py)
     drivers: dict[str, str] = field(default_factory=dict)
     versions: dict[str, str] = field(default_factory=dict)  # of the packages a run depends on, when written
+    # what the case recorded (the scenario's record() items, as reports show them): information for
+    # its reader, not part of what a replay runs
+    recorded: dict[str, str] = field(default_factory=dict)
 
     @classmethod
     def of(
@@ -111,7 +114,7 @@ class Case:
     def to_json(self) -> str:
         """The case file: its identity, and each run setting a case records (``Option.in_case``)
         under its key, as a number or as the text its option reads back."""
-        data = {name: getattr(self, name) for name in IDENTITY}
+        data = {name: getattr(self, name) for name in IDENTITY if name != "recorded" or self.recorded}
         for option in CASE_OPTIONS:
             value = getattr(self.settings, option.field)
             data[option.key] = value if value is None or option.kind is not str else option.text(value)
@@ -164,7 +167,7 @@ CASE_OPTIONS = tuple(option for option in OPTIONS if option.in_case)
 REPLAY_OPTIONS = tuple(
     option for option in CASE_OPTIONS if option.name not in ("seed", "strategy", "plan-timeout", "sim-timeout")
 )
-IDENTITY = ("path", "scenario", "values", "instance", "drivers", "versions")
+IDENTITY = ("path", "scenario", "values", "instance", "drivers", "versions", "recorded")
 # sizes past anything the tool writes: a case file is read whole before it is checked, and its
 # strings go into messages
 MAX_CASE_BYTES = 1_000_000
@@ -221,7 +224,7 @@ def _check_kinds(data: dict[str, Any]) -> dict[str, Any]:
         )
     ):
         raise TypeError(f"values must map at most {MAX_ENTRIES} parameter names to numbers, names or booleans")
-    for name in ("drivers", "versions"):
+    for name in ("drivers", "versions", "recorded"):
         given = data.get(name, {})
         if (
             not isinstance(given, dict)

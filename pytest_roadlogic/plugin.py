@@ -382,6 +382,12 @@ class ScenarioItem(pytest.Item):
             if self.coverage is not None:
                 self._prove_unreachable()
                 self.user_properties.append(("coverage", json.dumps(self.coverage.to_json())))
+                # each record() item's values over the item's cases, in the order they ran
+                self.user_properties += [
+                    (f"record_{name}", ", ".join(tally.recorded))
+                    for name, tally in self.coverage.items.items()
+                    if tally.kind == "record"
+                ]
             if self.unasked_said:
                 self.user_properties.append(("unasked_changes", "; ".join(self.unasked_said[:MAX_UNASKED_SAID])))
         if missing is not None:
@@ -510,6 +516,7 @@ class ScenarioItem(pytest.Item):
         from .artifacts.writer import write_artifacts
         from .case import installed_versions
         from .confinement import unique_name
+        from .evaluation.coverage import recorded_values
         from .frontend.semantics.logical import describe_values
 
         if result.outcome == NO_PLAN:
@@ -519,6 +526,7 @@ class ScenarioItem(pytest.Item):
             path=self._relative(result.case.path),
             drivers=dict(self.drivers.names),
             versions=installed_versions(),
+            recorded=recorded_values(self.scenario.coverage, result.case.values, result.run),
         )
         result = replace(result, case=case)
         why = result.message  # for a clash, the report with the constraints at their lines (runner._failure)
@@ -526,7 +534,7 @@ class ScenarioItem(pytest.Item):
         paths: dict[str, Path] = {}
         if result.run is not None:
             started = time.perf_counter()
-            paths = write_artifacts(result.run, directory)
+            paths = write_artifacts(result.run, directory, recorded=case.recorded)
             self.tally.seconds["artifacts"] += time.perf_counter() - started
         paths["case"] = case.save(directory / "case.json")
         where = "at" if case.strategy == REFINED else f"at instance {case.instance} of"
@@ -545,6 +553,8 @@ class ScenarioItem(pytest.Item):
                 )
         else:
             lines.append("  (no logical parameters: the planner chose every value)")
+        if case.recorded:
+            lines.append("recorded: " + "; ".join(f"{name} {value}" for name, value in case.recorded.items()))
         if result.outcome == DUT_FAILED:
             lines.append(f"the vehicle under test failed after {result.run.tries} plans tried: {why}")
         elif result.run is not None:

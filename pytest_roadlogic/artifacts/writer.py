@@ -25,11 +25,16 @@ ARTIFACT_NAMES = re.compile(
 
 
 def write_artifacts(
-    outcome: SimulatedInstance, directory: str | Path, animation: bool = True, level: str = "all"
+    outcome: SimulatedInstance,
+    directory: str | Path,
+    animation: bool = True,
+    level: str = "all",
+    recorded: dict[str, str] | None = None,
 ) -> dict[str, Path]:
     """The artifacts of a run at ``level`` (``settings.ARTIFACT_LEVELS``): with ``essential``, the
     plan, the trace and the verdict; with ``all``, every one, the GIF (seconds to render) only when
-    ``animation`` is set."""
+    ``animation`` is set. ``recorded``: what the case recorded (``evaluation.coverage.recorded_values``),
+    written into the verdict."""
     if level == "none":
         return {}
     directory = Path(directory)
@@ -62,6 +67,8 @@ def write_artifacts(
             if outcome.simulation.road.route is not None
             else {}
         ),
+        # the scenario's record() items, each as the coverage report shows its value
+        **({"recorded": recorded} if recorded else {}),
         # did the vehicle under test fail: every oracle's value, failed or not (oracles.DutReport)
         **({"vehicle_under_test": outcome.dut.values()} if outcome.dut is not None else {}),
         # the reactive execution's replans: when, how long each took, whether it found a plan and why

@@ -239,8 +239,11 @@ def show(result, out: Path, level: str = "all", drivers: dict[str, str] | None =
     the scenario is inside the project, so that ``roadlogic replay out/case.json`` runs it again with
     ``drivers``) and print its stages, verdict and files; the exit code of ``run``. A case without
     a simulation prints why on stderr (the constraints that clash, at their places)."""
+    from dataclasses import replace
+
     from ..artifacts.files import replaced_directory
     from ..artifacts.writer import ARTIFACT_NAMES, write_artifacts
+    from ..evaluation.coverage import recorded_values
     from ..planning import UnsatisfiableScenario
 
     case = result.case
@@ -260,6 +263,9 @@ def show(result, out: Path, level: str = "all", drivers: dict[str, str] | None =
     if not outcome.verdict.accepted and (unfollowed := outcome.simulation.unfollowed()):
         print(f"  {unfollowed}")
     print_unasked(outcome.plan, outcome.automaton, outcome.scenario.registry)
+    recorded = recorded_values(outcome.scenario.coverage, case.values, outcome)
+    if recorded:
+        print("  recorded: " + "; ".join(f"{name} {value}" for name, value in recorded.items()))
     if outcome.dut is not None:
         print(oracle_line(outcome.dut, len(outcome.simulation.replans)))
         if result.message:
@@ -268,8 +274,8 @@ def show(result, out: Path, level: str = "all", drivers: dict[str, str] | None =
         sys.stdout.flush()
         started = time.perf_counter()
         with replaced_directory(out, ARTIFACT_NAMES) as staging:  # the folder gets the new set whole, or keeps the old
-            written = write_artifacts(outcome, staging, level=level)
-            case_file = write_case_file(result.case, drivers or {}, staging / "case.json")
+            written = write_artifacts(outcome, staging, level=level, recorded=recorded)
+            case_file = write_case_file(replace(case, recorded=recorded), drivers or {}, staging / "case.json")
             paths = {kind: out / path.name for kind, path in {**written, **case_file}.items()}
         result.seconds["artifacts"] = time.perf_counter() - started
         print(f"  {'artifacts':<12} {result.seconds['artifacts']:7.3f} s")

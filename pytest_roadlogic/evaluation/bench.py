@@ -32,6 +32,7 @@ from ..frontend.semantics.logical import describe_values
 from ..outcomes import NO_PLAN, STAGES
 from ..runner import CaseResult, Runner, set_aside_sample
 from ..settings import BASE, REFINED, RunSettings
+from .coverage import recorded_values
 from .fidelity import unasked_changes
 from .occupancy import Occupancy
 from .scenario_source import ScenarioSource
@@ -422,7 +423,8 @@ def _record(
     if settings.artifacts:
         started = time.perf_counter()
         relative = Path("instances") / unique_name(name) / f"{strategy}-{index + 1:03d}"
-        write_artifacts(outcome, out / relative, animation=False)
+        recorded = recorded_values(outcome.scenario.coverage, values or {}, outcome)
+        write_artifacts(outcome, out / relative, animation=False, recorded=recorded)
         seconds["artifacts"] = time.perf_counter() - started
         directory = relative.as_posix()
     verdict = outcome.verdict

@@ -87,13 +87,8 @@ class ScenarioCoverage:
         for item in items:
             if item.crossed:
                 continue
-            if item.observed is not None:
-                value = _observed(item, run)
-                if value is None:
-                    continue
-            elif item.parameter in values:
-                value = values[item.parameter]
-            else:
+            value = _value(item, values, run)
+            if value is None:
                 continue
             counted = True
             tally = self.items[item.name]
@@ -126,6 +121,29 @@ class ScenarioCoverage:
     @classmethod
     def from_json(cls, data: dict) -> ScenarioCoverage:
         return cls(data["scenario"], data["cases"], {k: ItemCoverage(**v) for k, v in data["items"].items()})
+
+
+def recorded_values(items: Iterable, values: dict[str, Any], run=None) -> dict[str, str]:
+    """What one case records (its case file, verdict.json, the CLI's report): each ``record``
+    item's value in it, as the report shows it (in the item's unit), by the item's name: a
+    logical parameter's sampled value, or the value the run took at the item's event. An item
+    without a value in this case (a base case's parameter, an event the run did not meet) is left
+    out."""
+    found = {}
+    for item in items:
+        if item.kind == "record" and not item.crossed:
+            value = _value(item, values, run)
+            if value is not None:
+                found[item.name] = item.shown(value)
+    return found
+
+
+def _value(item, values: dict[str, Any], run) -> Any:
+    """The value ``item`` reads in one case: its parameter's sampled value, or the run's at its
+    event (``_observed``); None without one."""
+    if item.observed is not None:
+        return _observed(item, run)
+    return values.get(item.parameter)
 
 
 def _observed(item, run) -> float | None:

@@ -5,6 +5,9 @@ case hit is called unreachable only with a proof: outside the parameter's range,
 from __future__ import annotations
 
 import json
+import subprocess
+import sys
+from xml.etree import ElementTree
 
 import pytest
 
@@ -14,6 +17,7 @@ from pytest_roadlogic.frontend import check_text
 from pytest_roadlogic.outcomes import CONFORMANT, NO_PLAN
 from pytest_roadlogic.runner import Runner
 from pytest_roadlogic.settings import RunSettings
+from tests.conftest import ROOT
 
 pytest_plugins = ["pytester"]
 
@@ -290,3 +294,54 @@ def test_pytest_with_closure_covers_every_reachable_bucket_in_few_cases(pytester
     bad = pytester.runpytest_subprocess("-p", "no:cacheprovider", "--roadlogic-coverage-closure", "maybe")
     assert "--roadlogic-coverage-closure 'maybe': give yes or no" in bad.stderr.str() + bad.stdout.str()
     assert "Traceback" not in bad.stderr.str()
+
+
+RECORDED = ROOT / "scenarios" / "coverage" / "cut_in_gap_at_the_cut_in.osc"
+
+
+def test_a_case_keeps_what_it_records_in_the_cli_report_the_verdict_and_the_case_file_which_replays(tmp_path):
+    out = tmp_path / "out"
+    run = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "pytest_roadlogic.cli",
+            "run",
+            str(RECORDED),
+            "--out",
+            str(out),
+            "--artifacts",
+            "essential",
+        ],
+        capture_output=True,
+        text=True,
+        cwd=ROOT,
+        timeout=600,
+    )
+    assert run.returncode == 0, run.stdout + run.stderr
+    line = next(line for line in run.stdout.splitlines() if line.strip().startswith("recorded:"))
+    verdict = json.loads((out / "verdict.json").read_text())
+    case = json.loads((out / "case.json").read_text())
+    (value,) = verdict["recorded"].values()
+    assert verdict["recorded"] == case["recorded"] and list(verdict["recorded"]) == ["npc_speed_at_cut_in"]
+    assert line.strip() == f"recorded: npc_speed_at_cut_in {value}" and value.endswith(" kph")
+    # the npc is the faster car: what it records lies above the ego's sampled speed range's bottom
+    assert float(value.split()[0]) > 80
+    replay = subprocess.run(
+        [sys.executable, "-m", "pytest_roadlogic.cli", "replay", str(out / "case.json"), "--artifacts", "none"],
+        capture_output=True,
+        text=True,
+        cwd=ROOT,
+        timeout=600,
+    )
+    assert replay.returncode == 0, replay.stderr
+    assert f"recorded: npc_speed_at_cut_in {value}" in replay.stdout
+
+
+def test_junit_lists_each_record_items_values_over_the_items_cases(pytester):
+    pytester.makefile(".osc", cut_in=RECORDED.read_text())
+    result = pytester.runpytest_subprocess("-p", "no:cacheprovider", "--roadlogic-examples", "3", "--junitxml", "j.xml")
+    assert "Traceback" not in result.stdout.str()
+    properties = {p.get("name"): p.get("value") for p in ElementTree.parse(pytester.path / "j.xml").iter("property")}
+    values = properties["record_npc_speed_at_cut_in"].split(", ")
+    assert 1 <= len(values) <= 3 and all(v.endswith(" kph") for v in values)
