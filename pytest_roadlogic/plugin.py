@@ -53,6 +53,12 @@ EXTRA_OPTIONS = (
     ("allow-read", f"folders outside the rootdir that .osc imports may read from, separated by {os.pathsep!r}", ""),
     ("coverage", "write what the session covered of the scenarios' cover()/record() items to this JSON file", ""),
     (
+        "coverage-db",
+        "add what the session covered to this JSON file of earlier runs' coverage (made when missing), and report "
+        "the sum; closure asks only buckets no run has hit",
+        "",
+    ),
+    (
         "coverage-closure",
         "after an item's samples, one case for each cover bucket no case hit and no proof rules out: yes or no",
         "no",
@@ -307,9 +313,12 @@ class ScenarioItem(pytest.Item):
         self.user_properties += [("strategy", settings.strategy), ("seed", settings.seed)]
         if self.scenario.coverage:
             from .evaluation.coverage import ScenarioCoverage
+            from .evaluation.coverage_db import fingerprint
 
             self.coverage = ScenarioCoverage.of(
-                f"{self.nodeid.split('::')[0]}::{self.scenario.name}", self.scenario.coverage
+                f"{self.nodeid.split('::')[0]}::{self.scenario.name}",
+                self.scenario.coverage,
+                fingerprint(self.scenario),
             )
         if self.shard.count > 1:
             self.user_properties.append(("shard", f"{self.shard.index + 1}/{self.shard.count}"))
@@ -416,10 +425,16 @@ class ScenarioItem(pytest.Item):
         first proved unreachable where they are, then each other one is asked for by one case with
         its parameters inside it (``evaluation.closure``), run and counted as any sample is."""
         from .evaluation.closure import closing_values
+        from .evaluation.coverage import merged
+        from .evaluation.coverage_db import earlier
 
         self._prove_unreachable()
         cases = 0
-        for _, _, tries in closing_values(self.scenario, self.coverage):
+        database = _text(self.config, "coverage-db")
+        before = earlier(Path(database), self.coverage) if database else None
+        # a bucket an earlier run of the database hit is not asked again
+        covered = merged([before, self.coverage])[0] if before is not None else self.coverage
+        for _, _, tries in closing_values(self.scenario, covered):
             for values in tries:
                 result = runner.run_case(runner.case(strategy=REFINED, values=values))
                 if result.outcome == NO_PLAN:
@@ -771,6 +786,7 @@ class SessionSummary:
         if not self.coverage:
             return
         from .evaluation.coverage import merged, text_lines, write_json
+        from .evaluation.coverage_db import database_lines
 
         coverages = merged(self.coverage)
         terminalreporter.write_sep("-", "roadlogic coverage")
@@ -790,6 +806,10 @@ class SessionSummary:
                 )
             else:
                 terminalreporter.write_line(f"coverage written to {path}")
+        database = _text(config, "coverage-db")
+        if database:
+            for line in database_lines(Path(database), coverages, "--roadlogic-coverage-db"):
+                terminalreporter.write_line(line)
 
     @pytest.hookimpl(optionalhook=True)
     def pytest_html_results_summary(self, prefix, summary, postfix) -> None:

@@ -43,6 +43,14 @@ def add(commands) -> None:
     )
     cover.add_argument("--coverage", type=Path, default=None, metavar="PATH", help="write the tally to this JSON file")
     cover.add_argument(
+        "--coverage-db",
+        type=Path,
+        default=None,
+        metavar="PATH",
+        help="add the tally to this JSON file of earlier runs' (made when missing) and report the sum; --closure "
+        "asks only buckets no run has hit",
+    )
+    cover.add_argument(
         "--jobs", type=flag(parse_processes), default=1, help="cases at once, each in a process of its own (default 1)"
     )
     cover.add_argument(
@@ -108,7 +116,7 @@ def _campaign(args: argparse.Namespace, source, chosen):
         bar[0].update(done, stage)
 
     try:
-        return cover(source, settings, args.samples, args.closure, chosen, progress)
+        return cover(source, settings, args.samples, args.closure, chosen, progress, args.coverage_db)
     finally:
         if bar[0] is not None:
             bar[0].close()
@@ -137,5 +145,16 @@ def _report(args: argparse.Namespace, checked, campaign) -> int:
             print(f"roadlogic cover: --coverage {args.coverage}: cannot write it ({error.strerror})", file=sys.stderr)
             return EXIT_INPUT
         print(f"coverage written to {args.coverage}")
-    every = all(closed(item, campaign.coverage) for item in checked.coverage if item.kind == "cover")
+    coverage = campaign.coverage
+    if args.coverage_db is not None:
+        from ..evaluation.coverage_db import database_lines, read
+
+        lines = database_lines(args.coverage_db, [campaign.coverage], "--coverage-db")
+        if lines[0].startswith("roadlogic:"):
+            print(lines[0].replace("roadlogic:", "roadlogic cover:", 1), file=sys.stderr)
+            return EXIT_INPUT
+        print("\n".join(lines))
+        coverage = next(c for c in read(args.coverage_db) if c.scenario == coverage.scenario)
+    # closed over every run the database holds, when it is given
+    every = all(closed(item, coverage) for item in checked.coverage if item.kind == "cover")
     return EXIT_ACCEPTED if every else EXIT_REJECTED

@@ -56,9 +56,12 @@ class ScenarioCoverage:
     scenario: str
     cases: int = 0
     items: dict[str, ItemCoverage] = field(default_factory=dict)
+    # of the file the cases ran on (``coverage_db.fingerprint``): a database adds up only the
+    # tallies of one file
+    fingerprint: str = ""
 
     @classmethod
-    def of(cls, scenario: str, items: Iterable) -> ScenarioCoverage:
+    def of(cls, scenario: str, items: Iterable, fingerprint: str = "") -> ScenarioCoverage:
         """An empty tally of ``items`` (``semantics.coverage.CoverItem``)."""
         return cls(
             scenario,
@@ -75,6 +78,7 @@ class ScenarioCoverage:
                 )
                 for item in items
             },
+            fingerprint,
         )
 
     def add(self, items: Iterable, values: dict[str, Any], outcome: str, run=None) -> None:
@@ -120,7 +124,12 @@ class ScenarioCoverage:
 
     @classmethod
     def from_json(cls, data: dict) -> ScenarioCoverage:
-        return cls(data["scenario"], data["cases"], {k: ItemCoverage(**v) for k, v in data["items"].items()})
+        return cls(
+            data["scenario"],
+            data["cases"],
+            {k: ItemCoverage(**v) for k, v in data["items"].items()},
+            data.get("fingerprint", ""),
+        )
 
 
 def recorded_values(items: Iterable, values: dict[str, Any], run=None) -> dict[str, str]:

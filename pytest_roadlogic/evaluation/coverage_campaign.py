@@ -16,6 +16,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import Any
 
 from ..executors import Executor, SerialExecutor
@@ -24,6 +25,7 @@ from ..outcomes import NO_PLAN
 from ..settings import DISCARD, REFINED, RunSettings
 from .closure import closing_values
 from .coverage import ScenarioCoverage, merged
+from .coverage_db import earlier, fingerprint
 from .reach import unreachable
 from .scenario_source import ScenarioSource
 
@@ -54,17 +56,19 @@ def cover(
     closure: bool = False,
     executor: Executor | None = None,
     progress: Progress | None = None,
+    database: Path | None = None,
 ) -> CampaignCoverage:
     """``samples`` samples of ``source``'s scenario drawn from ``settings.seed``, each run as a
     job; the buckets none hit proved unreachable where the planner proves it; with ``closure``,
-    a case asked for each bucket still open. The tally is the serial run's on any executor."""
+    a case asked for each bucket still open (open in the coverage ``database`` of earlier runs
+    too, when one is given: ``coverage_db``). The tally is the serial run's on any executor."""
     from ..sampling import drawn
 
     executor = executor or SerialExecutor()
     progress = progress or (lambda stage, done, of: None)
     checked = source.load()
     label = f"{source.path}::{checked.name}"
-    campaign = CampaignCoverage(ScenarioCoverage.of(label, checked.coverage))
+    campaign = CampaignCoverage(ScenarioCoverage.of(label, checked.coverage, fingerprint(checked)))
     values = drawn(checked, samples, settings.seed)
     jobs = [(source, settings, v) for v in values]
     for done, (outcome, tally) in enumerate(executor.results([(covered_case, job) for job in jobs]), 1):
@@ -75,7 +79,8 @@ def cover(
         progress("samples", done, len(jobs))
     _prove(checked, source, settings, campaign, executor)
     if closure:
-        asked = closing_values(checked, campaign.coverage)
+        before = earlier(database, campaign.coverage)
+        asked = closing_values(checked, merged([before, campaign.coverage])[0] if before else campaign.coverage)
         jobs = [(source, settings, tries) for _, _, tries in asked]
         for done, (ran, set_aside, outcome, tally) in enumerate(
             executor.results([(closing_case, job) for job in jobs]), 1

@@ -345,3 +345,46 @@ def test_junit_lists_each_record_items_values_over_the_items_cases(pytester):
     properties = {p.get("name"): p.get("value") for p in ElementTree.parse(pytester.path / "j.xml").iter("property")}
     values = properties["record_npc_speed_at_cut_in"].split(", ")
     assert 1 <= len(values) <= 3 and all(v.endswith(" kph") for v in values)
+
+
+def test_a_coverage_database_adds_each_runs_tally_and_drops_one_counted_on_a_changed_file(tmp_path):
+    from pytest_roadlogic.evaluation.coverage_db import database_lines, read
+
+    scenario = items_of(CATCH_UP)
+    database = tmp_path / "db.json"
+    first, second = (ScenarioCoverage.of("s.osc::s", scenario.coverage, "abc") for _ in range(2))
+    first.add(scenario.coverage, {"gap": 15.0}, CONFORMANT)
+    second.add(scenario.coverage, {"gap": 55.0}, CONFORMANT)
+    database_lines(database, [first], "--db")
+    lines = database_lines(database, [second], "--db")
+    (both,) = read(database)
+    assert (
+        both.cases == 2 and both.items["gap"].buckets["[0..20) m"] == 1 and both.items["gap"].buckets["[40..60) m"] == 1
+    )
+    assert any("s.osc::s: 2 cases" in line for line in lines)
+    edited = ScenarioCoverage.of("s.osc::s", scenario.coverage, "def")  # the file changed
+    edited.add(scenario.coverage, {"gap": 95.0}, CONFORMANT)
+    lines = database_lines(database, [edited], "--db")
+    (after,) = read(database)
+    assert after.cases == 1 and after.fingerprint == "def"
+    assert "s.osc::s: its file changed since the earlier runs; their counts were dropped" in lines
+    # a file that is not a database is neither read nor overwritten
+    (tmp_path / "notes.json").write_text("my notes")
+    (line,) = database_lines(tmp_path / "notes.json", [edited], "--db")
+    assert line.startswith("roadlogic: --db ") and "not overwritten" in line
+    assert (tmp_path / "notes.json").read_text() == "my notes"
+
+
+def test_pytest_with_a_coverage_database_asks_closure_only_for_buckets_no_earlier_run_hit(pytester):
+    pytester.makefile(".osc", catch_up=(ROOT / "scenarios" / "coverage" / "catch_up_from_behind.osc").read_text())
+    run = ("-p", "no:cacheprovider", "--roadlogic-coverage-closure", "yes", "--roadlogic-coverage-db", "db.json")
+    first = pytester.runpytest_subprocess(*run, "--roadlogic-examples", "3")
+    asked = [line for line in first.stdout.lines if line.startswith("closure: ")]
+    assert asked, first.stdout.str()
+    second = pytester.runpytest_subprocess(*run, "--roadlogic-examples", "1", "--hypothesis-seed", "9")
+    text = second.stdout.str()
+    assert "coverage database db.json: this run added to the earlier runs'" in text
+    # every reachable bucket was closed by the first session: the second asks none
+    assert not [line for line in second.stdout.lines if line.startswith("closure: ")], text
+    (both,) = read_json(pytester.path / "db.json")
+    assert both.cases >= 4
