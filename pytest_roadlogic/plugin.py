@@ -813,8 +813,14 @@ class SessionSummary:
 
     @pytest.hookimpl(optionalhook=True)
     def pytest_html_results_summary(self, prefix, summary, postfix) -> None:
-        """With pytest-html, the vehicle under test's test points and grade head the report."""
+        """With pytest-html, the vehicle under test's test points and grade head the report, and
+        the coverage picture follows them."""
         if self.test_points:
             from .dut.catalogue import html_table
 
             prefix.append(html_table(self.test_points))
+        if self.coverage:
+            from .evaluation.coverage import merged
+            from .evaluation.coverage_html import html_summary
+
+            prefix.append(html_summary(merged(self.coverage)))

@@ -388,3 +388,22 @@ def test_pytest_with_a_coverage_database_asks_closure_only_for_buckets_no_earlie
     assert not [line for line in second.stdout.lines if line.startswith("closure: ")], text
     (both,) = read_json(pytester.path / "db.json")
     assert both.cases >= 4
+
+
+def test_the_html_report_draws_each_item_as_bars_a_cross_as_a_grid_and_escapes_the_scenarios_text(pytester):
+    source = (ROOT / "scenarios" / "coverage" / "catch_up_from_behind.osc").read_text()
+    hostile = source.replace('"how far behind the other car starts"', '"<script>alert(1)</script>"')
+    assert hostile != source
+    pytester.makefile(".osc", catch_up=hostile)
+    pytester.runpytest_subprocess(
+        "-p", "no:cacheprovider", "--roadlogic-examples", "3", "--html", "report.html", "--self-contained-html"
+    )
+    page = (pytester.path / "report.html").read_text()
+    section = page[page.index('<div class="roadlogic-coverage">') :]
+    assert "<script>alert(1)</script>" not in section and "&lt;script&gt;alert(1)&lt;/script&gt;" in section
+    assert section.count('<table class="roadlogic-coverage-bars">') == 2  # gap and top
+    grid = section[section.index('<table class="roadlogic-coverage-grid">') :]
+    grid = grid[: grid.index("</table>")]
+    # rows the gap's three buckets, columns the top speed's two; the combination no car can reach greyed
+    assert grid.count("<tr><th>[") == 3 and grid.count("<th>[25..35) mps</th>") == 1
+    assert 'background:#bdbdbd" title="unreachable: no plan exists' in grid
