@@ -28,7 +28,7 @@ from pytest_roadlogic.frontend import OscError, load_file  # noqa: E402
 from pytest_roadlogic.monitor import monitor  # noqa: E402
 from pytest_roadlogic.pipeline import guided_planning  # noqa: E402
 from pytest_roadlogic.planning import NoPlanError, planner_for, settings_for  # noqa: E402
-from pytest_roadlogic.sampling import strategy  # noqa: E402
+from pytest_roadlogic.sampling import drawn  # noqa: E402
 from pytest_roadlogic.settings import RunSettings  # noqa: E402
 from pytest_roadlogic.simulation import SimulationLimits  # noqa: E402
 from pytest_roadlogic.simulation.backends import simulator  # noqa: E402
@@ -37,26 +37,7 @@ from pytest_roadlogic.simulation.frenetix.driver import FrenetixDriver  # noqa: 
 
 def samples(scenario, count: int, seed: int) -> list[dict]:
     """``count`` samples drawn as ``Runner.refined(search=False)`` draws them."""
-    import hypothesis
-    from hypothesis import HealthCheck, Phase
-
-    drawn: list[dict] = []
-
-    def keep(values: dict) -> None:
-        if len(drawn) < count:
-            drawn.append(values)
-
-    chosen = hypothesis.settings(
-        hypothesis.settings.get_profile("default"),
-        max_examples=count,
-        database=None,
-        deadline=None,
-        derandomize=False,
-        phases=[Phase.generate],
-        suppress_health_check=list(HealthCheck),
-    )
-    hypothesis.seed(seed)(chosen(hypothesis.given(strategy(scenario))(keep)))()
-    return drawn
+    return drawn(scenario, count, seed)
 
 
 def plans(scenario, values: list[dict], seed: int):

@@ -172,6 +172,7 @@ class Runner:
         set_aside: Callable[[CaseResult], None] = lambda result: None,
         sampling_seed: int | str | None = None,
         shard: Shard | None = None,
+        keep_examples: bool = True,
     ) -> None:
         """``count`` (default: ``settings.examples``) samples drawn by Hypothesis, each run and handed to ``each``.
 
@@ -192,7 +193,9 @@ class Runner:
         Without ``search``, a plain sample, as the bench draws it: the default profile (a CI
         profile's derandomize would override the seed), generation only, no database; the same seed
         draws the same samples everywhere. ``sampling_seed`` (pytest's ``--hypothesis-seed``) draws the
-        samples instead of ``settings.seed``, which still fixes solving and simulation. Each sample's
+        samples instead of ``settings.seed``, which still fixes solving and simulation.
+        ``keep_examples=False``: a search without the example database (it neither replays nor
+        saves a failure: a campaign's searches are fixed by their seeds alone). Each sample's
         outcome, tries and kind of failure are Hypothesis events (``--hypothesis-show-statistics``).
         """
         if count is not None and count < 1:
@@ -200,7 +203,7 @@ class Runner:
         import hypothesis
         from hypothesis import HealthCheck, Phase
 
-        from .sampling import strategy
+        from .sampling import plain_draw, strategy
 
         shard = shard or Shard()
         count = shard.examples(self.settings.examples if count is None else count)
@@ -249,6 +252,8 @@ class Runner:
             example._hypothesis_internal_add_digest = key  # type: ignore[attr-defined]
         if search:
             profile = hypothesis.settings()
+            if not keep_examples:
+                profile = hypothesis.settings(profile, database=None)
             chosen = hypothesis.settings(
                 # one failure per item: the report is about its shrunk case, whatever kind it is
                 profile,
@@ -268,16 +273,7 @@ class Runner:
                 ],
             )
         else:
-            chosen = hypothesis.settings(
-                hypothesis.settings.get_profile("default"),
-                max_examples=count,
-                database=None,
-                deadline=None,
-                derandomize=False,
-                phases=[Phase.generate],
-                print_blob=False,
-                suppress_health_check=list(HealthCheck),
-            )
+            chosen = plain_draw(count)
         seed = self.settings.seed if sampling_seed is None else sampling_seed
         drawing = contextlib.nullcontext()
         if search and self.settings.search != HYPOTHESIS_SEARCH:

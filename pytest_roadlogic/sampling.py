@@ -120,7 +120,6 @@ def drawn(checked: CheckedScenario, count: int, seed: int | str) -> list[Values]
     the bench's refined strategy draws them (the default profile, generation only, no database),
     without running them: a campaign hands them to its executor's workers."""
     import hypothesis
-    from hypothesis import HealthCheck, Phase
 
     found: list[Values] = []
     if count < 1:
@@ -130,7 +129,18 @@ def drawn(checked: CheckedScenario, count: int, seed: int | str) -> list[Values]
         if len(found) < count:
             found.append(values)
 
-    chosen = hypothesis.settings(
+    hypothesis.seed(seed)(plain_draw(count)(hypothesis.given(strategy(checked))(collect)))()
+    return found
+
+
+def plain_draw(count: int):
+    """Hypothesis's settings for ``count`` plain samples, the same from the same seed everywhere:
+    the default profile (a CI profile's derandomize would override the seed), generation only,
+    no database, no health check (a sample is no test)."""
+    import hypothesis
+    from hypothesis import HealthCheck, Phase
+
+    return hypothesis.settings(
         hypothesis.settings.get_profile("default"),
         max_examples=count,
         database=None,
@@ -140,8 +150,6 @@ def drawn(checked: CheckedScenario, count: int, seed: int | str) -> list[Values]
         print_blob=False,
         suppress_health_check=list(HealthCheck),
     )
-    hypothesis.seed(seed)(chosen(hypothesis.given(strategy(checked))(collect)))()
-    return found
 
 
 def _bounded_by_relations(parameter: LogicalParameter, space: ParameterSpace, drawn: Values) -> tuple[float, float]:

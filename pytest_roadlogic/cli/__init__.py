@@ -1,5 +1,5 @@
 """The ``roadlogic`` command: one module per subcommand (``run``, ``check``, ``automaton``, ``plan``,
-``replay``, ``bench``, ``cover``), each with its flags (``add``) and its action; ``common`` holds what they share.
+``replay``, ``bench``, ``cover``, ``falsify``), each with its flags (``add``) and its action; ``common`` holds what they share.
 
     roadlogic run FILE.osc [--scenario NAME] [--seed S] [--out DIR] [--lanes N] [--tries N] [--instances N | --values JSON]
                   [--encoding continuous|grid] [--horizon N] [--plan-timeout S] [--sim-timeout S] [--simulator NAME]
@@ -9,6 +9,7 @@
     roadlogic replay CASE.json [--out DIR]
     roadlogic replay FILE.osc [--scenario NAME] [--seed S] [--values JSON | --strategy base --instance K] [--out DIR]
     roadlogic cover FILE.osc [--samples N] [--closure] [--coverage FILE.json] [--jobs N | --ray ADDRESS]
+    roadlogic falsify FILE.osc [--searches K] [--budget N] [--search cross-entropy] [--jobs N | --ray ADDRESS]
 
 Exit codes of ``run``: 0 the simulation was accepted; 1 it was rejected (or no plan exists);
 2 the input is unusable (a file that does not parse or check, a bad option).
@@ -17,6 +18,7 @@ Exit codes of ``automaton``: 0 written; 2 the input is unusable.
 Exit codes of ``plan``: 0 at least one plan; 1 no plan exists; 2 the input is unusable.
 Exit codes of ``replay``: as ``run``.
 Exit codes of ``cover``: 0 every bucket hit or proved unreachable; 1 some bucket open; 2 the input is unusable.
+Exit codes of ``falsify``: 0 no search found a failure; 1 one did; 2 the input is unusable.
 """
 
 from __future__ import annotations
@@ -28,7 +30,7 @@ import sys
 
 # Light imports only: `roadlogic --help` and argument errors must not load the pipeline; each
 # command imports the stages it uses when it runs.
-from . import automaton, bench, check, cover, plan, replay, run
+from . import automaton, bench, check, cover, falsify, plan, replay, run
 from .common import EXIT_ACCEPTED, EXIT_INPUT, EXIT_REJECTED
 
 __all__ = ["EXIT_ACCEPTED", "EXIT_INPUT", "EXIT_REJECTED", "main"]
@@ -39,7 +41,7 @@ def main(argv: list[str] | None = None) -> int:
         prog="roadlogic", description="Concrete, monitored simulations from OpenSCENARIO DSL scenarios."
     )
     commands = parser.add_subparsers(dest="command", required=True)
-    for command in (run, replay, check, automaton, plan, bench, cover):
+    for command in (run, replay, check, automaton, plan, bench, cover, falsify):
         command.add(commands)
     args = parser.parse_args(argv)
     args.argv = list(sys.argv[1:] if argv is None else argv)

@@ -144,10 +144,12 @@ def read_roots(args: argparse.Namespace, named: Path):
     return ReadRoots.around(named, extra=getattr(args, "allow_read", []))
 
 
-def load_scenario(args: argparse.Namespace):
-    from ..pipeline import load_scenario
+def scenario_source(args: argparse.Namespace):
+    """Where the scenario a command names is (``evaluation.scenario_source.ScenarioSource``): its
+    file, name, lanes, dialect, the folders it may read, and its map."""
+    from ..evaluation.scenario_source import ScenarioSource
 
-    return load_scenario(
+    return ScenarioSource(
         args.file,
         args.scenario,
         args.setting_lanes,
@@ -155,6 +157,10 @@ def load_scenario(args: argparse.Namespace):
         read_roots(args, args.file),
         args.setting_map,
     )
+
+
+def load_scenario(args: argparse.Namespace):
+    return scenario_source(args).load()
 
 
 def load_automaton(args: argparse.Namespace):

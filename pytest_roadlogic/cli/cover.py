@@ -19,10 +19,10 @@ from .common import (
     EXIT_REJECTED,
     RUN_FLAGS,
     flag,
-    read_roots,
     reporting_input_errors,
     run_settings,
     scenario_command,
+    scenario_source,
     setting_flags,
 )
 
@@ -64,17 +64,9 @@ def add(commands) -> None:
 
 
 def _cover(args: argparse.Namespace) -> int:
-    from ..evaluation.coverage_campaign import ScenarioSource
     from ..executors import ExecutorError, executor
 
-    source = ScenarioSource(
-        args.file,
-        args.scenario,
-        args.setting_lanes,
-        args.setting_dialect,
-        read_roots(args, args.file),
-        args.setting_map,
-    )
+    source = scenario_source(args)
     checked = reporting_input_errors(args, source.load)
     if isinstance(checked, int):
         return checked

@@ -39,6 +39,30 @@ def unreachable(checked: CheckedScenario, item: CoverItem, labels: list[str], se
     return found
 
 
+OPEN_END = 1e-3  # how much less an open end of a bucket is widened (metres, m/s)
+
+
+def _observed_bounds(expression, low: float, high: float):
+    """(guard term, low, high) that hold exactly when the value an item reads lies in [low, high]:
+    a vehicle's position or speed, the difference of two vehicles', or ``a.space_gap(b)`` (their
+    centres' distance, shifted by a car's length where the gap is not zero); None for any other."""
+    from ..dimensions import CAR_LENGTH
+    from ..frontend.semantics.coverage import space_gap_actors
+    from ..logic.guards import POSITION, Term
+
+    pair = space_gap_actors(expression)
+    if pair is not None:
+        reference, other = pair
+        # the gap is 0 while the centres are less than a car's length apart
+        return (
+            Term(POSITION, other, reference),
+            low + CAR_LENGTH if low > 0 else low - CAR_LENGTH,
+            high - CAR_LENGTH if high < 0 else high + CAR_LENGTH,
+        )
+    term = _observed_term(expression)
+    return (term, low, high) if term is not None else None
+
+
 def _observed_term(expression):
     """The guard term (``logic.guards.Term``) of a value of the run an item reads: a vehicle's
     position or speed, or the difference of two vehicles'; None for any other."""
@@ -72,16 +96,25 @@ def _no_plan_observed(checked: CheckedScenario, item: CoverItem, bucket: Bucket,
     import dataclasses
 
     from ..automaton import build_automaton
-    from ..logic.guards import Bound, conjunction
+    from ..logic.guards import POSITION, Bound, conjunction
+    from ..planning import settings_for
 
-    term = _observed_term(item.observed)
-    if term is None:
+    bounds = _observed_bounds(item.observed, bucket.low, bucket.high)
+    if bounds is None:
         return ""
     automaton = build_automaton(checked)
     at = {t.id for t in automaton.transitions_at(*item.event)}
     if not at:
         return ""
-    bound = Bound(term, bucket.low, bucket.high, item.location)
+    term, low, high = bounds
+    # the planner plans inside every range by its margin, this bound's and the scenario's own
+    # alike: widened by twice the thinnest margin it falls back to, the bucket loses no value a
+    # run could take at the edge of a range the scenario gives, so "no plan" stays a proof; an
+    # open end (the bucket's high, but for the last) by a hair less, so that a range the
+    # scenario starts at that end proves the bucket below it out of reach
+    thinnest = settings_for(settings).thinned() or settings_for(settings)
+    margin = 2 * (thinnest.position_margin if term.quantity == POSITION else thinnest.speed_margin)
+    bound = Bound(term, low - margin, high + margin - (0 if bucket.closed else OPEN_END), item.location)
     automaton.transitions = [
         dataclasses.replace(t, guard=conjunction([t.guard, bound])) if t.id in at else t for t in automaton.transitions
     ]

@@ -72,10 +72,9 @@ class RayExecutor:
             function, arguments = calls[k]
             # spread over the nodes: Ray's default packs the tasks queued at once onto the node
             # that submits them until it is busy, and the others finish early
-            task = tasks.setdefault(
-                function, ray.remote(num_cpus=1, max_retries=0, scheduling_strategy="SPREAD")(function)
-            )
-            references[k] = task.remote(*arguments)
+            if function not in tasks:
+                tasks[function] = ray.remote(num_cpus=1, max_retries=0, scheduling_strategy="SPREAD")(function)
+            references[k] = tasks[function].remote(*arguments)
         self._pending = list(references.values())
         for k in range(len(calls)):
             yield ray.get(references[k])

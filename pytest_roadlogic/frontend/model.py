@@ -312,6 +312,18 @@ class Coverage:
 
 
 @dataclass(frozen=True)
+class SampledVariable:
+    """``var name: type = sample(expression, @event)``: a value the run takes when ``event``
+    happens, read by the scenario's ``cover(...)``/``record(...)`` items."""
+
+    name: str
+    type: str | None
+    expression: Expression
+    event: EventSpecification
+    location: SourceLocation
+
+
+@dataclass(frozen=True)
 class Scenario:
     """A ``scenario`` (or ``action``) declaration.
 
@@ -338,6 +350,7 @@ class Scenario:
     modifiers: tuple[Modifier, ...] = ()
     # its cover(...) and record(...) members, and those of its fields
     coverage: tuple[Coverage, ...] = ()
+    samples: tuple[SampledVariable, ...] = ()  # its var ... = sample(...) members
 
     def actor(self, name: str) -> Actor | None:
         for actor in self.actors:

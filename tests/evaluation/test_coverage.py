@@ -9,6 +9,7 @@ import subprocess
 import sys
 from xml.etree import ElementTree
 
+import numpy as np
 import pytest
 
 from pytest_roadlogic.evaluation.coverage import ScenarioCoverage, merged, read_json, text_lines, write_json
@@ -248,10 +249,10 @@ def test_a_value_of_the_run_is_read_at_its_event_and_a_bucket_the_scenario_rules
         expected[next(b.label for b in gap.buckets if b.holds(value))] += 1
     assert coverage.items["gap_at_cut_in"].buckets == expected
     assert len(coverage.items["npc_speed_at_cut_in"].recorded) == 4
-    # the scenario asks for a gap of 10-25 m when the cut-in ends: every bucket outside that is
-    # unreachable, and none inside it is
+    # the scenario asks for a gap of 10-25 m when the cut-in ends: every bucket wholly outside
+    # that is unreachable, and none that holds a gap it allows ([25..30) holds 25 m itself)
     found = unreachable(scenario, gap, [b.label for b in gap.buckets], RunSettings(), 1)
-    outside = {b.label for b in gap.buckets if b.high <= 10.0 or b.low >= 25.0}
+    outside = {b.label for b in gap.buckets if b.high <= 10.0 or b.low > 25.0}
     assert set(found) == outside
     assert all("cannot hold at the same time" in why for why in found.values())
 
@@ -407,3 +408,46 @@ def test_the_html_report_draws_each_item_as_bars_a_cross_as_a_grid_and_escapes_t
     # rows the gap's three buckets, columns the top speed's two; the combination no car can reach greyed
     assert grid.count("<tr><th>[") == 3 and grid.count("<th>[25..35) mps</th>") == 1
     assert 'background:#bdbdbd" title="unreachable: no plan exists' in grid
+
+
+SAMPLED = """scenario s:
+    ego: car
+    npc: car
+    var gap_at_end: length = sample(ego.space_gap(npc), @pass)
+    cover(gap_at_end, expression: gap_at_end > 50cm, unit: m, range: [-20..40], every: 10)
+    do serial:
+        pass: parallel(duration: 5s):
+            ego.drive() with:
+                speed(20mps)
+            npc.drive() with:
+                position(20m, behind: ego, at: start)
+                position([10m..15m], ahead_of: ego, at: end)
+"""
+
+
+def test_a_var_sampled_at_a_phase_is_the_gap_between_bumpers_at_its_end_and_the_gaps_ruled_out_are_proved():
+    checked = check_text(SAMPLED, "s.osc")
+    assert not checked.errors, checked.report()
+    # as public files write it: expression: compares the var beside range: and every:
+    (warned,) = [d for d in checked.diagnostics if "expression: compares gap_at_end" in d.message]
+    assert warned.location.line == 5
+    scenario = checked.scenarios[0]
+    (item,) = scenario.coverage
+    assert item.event == ("pass", "end")  # @pass: the phase's end
+    result = Runner(scenario, RunSettings(seed=2)).run_case(
+        Runner(scenario, RunSettings(seed=2)).case(strategy="base", instance=0)
+    )
+    assert result.outcome == CONFORMANT, result.message
+    coverage = ScenarioCoverage.of("s", scenario.coverage)
+    coverage.add(scenario.coverage, {}, result.outcome, result.run)
+    trace = result.run.simulation.trace
+    end = max(t for t, _ in result.run.verdict.run)
+    k = int(np.searchsorted(trace.times, end - 1e-9))
+    centres = trace.actors["npc"]["x"][k] - trace.actors["ego"]["x"][k]
+    (hit,) = [label for label, hits in coverage.items["gap_at_end"].buckets.items() if hits]
+    gap = centres - 4.5
+    assert 5.5 - 0.5 <= gap <= 10.5 + 0.5, gap
+    assert hit == ("[0..10) m" if gap < 10 else "[10..20) m")
+    labels = list(coverage.items["gap_at_end"].buckets)
+    proved = unreachable(scenario, item, labels, RunSettings(seed=2), 2)
+    assert set(proved) == {"[-20..-10) m", "[-10..0) m", "[20..30) m", "[30..40] m"}, proved

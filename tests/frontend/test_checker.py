@@ -59,9 +59,10 @@ CASES = [
     ),
     (
         "record",
-        HEAD + "    record(a, expression: a.space_gap(b))\n",
+        HEAD + "    record(a, expression: a.heading_to(b))\n",
         "4:27: warning: not supported yet: record() of this value of the run; the tool collects the scenario's "
-        "logical parameters, and vehicles' speeds, accelerations and positions at an event; the item is not collected",
+        "logical parameters, and vehicles' speeds, accelerations, positions and gaps (a.space_gap(b)) at an event; "
+        "the item is not collected",
     ),
     (
         "cover_in_actor_declaration",

@@ -927,4 +927,7 @@ def _extend(scenario: model.Scenario, extra: model.Scenario) -> model.Scenario:
         if scenario.behavior is not None
         else (extra.behaviors[0] if extra.behaviors else None),
         unsupported=scenario.unsupported + extra.unsupported,
+        modifiers=scenario.modifiers + extra.modifiers,
+        coverage=scenario.coverage + extra.coverage,
+        samples=scenario.samples + extra.samples,
     )

@@ -17,6 +17,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
+from ...dimensions import CAR_LENGTH
 from .. import model
 from ..errors import SourceLocation
 from ..syntax.standard_library import UNITS
@@ -193,15 +194,35 @@ def _item(
     expression = given["expression"].value if "expression" in given else name_value
     if coverage.field is not None and isinstance(expression, model.Name) and expression.name == "it":
         expression = model.Name(coverage.field, expression.location)  # in a field's with:, it is the field
+    sampled = _sampled(expression, name_value, scenario, kind, warning)
+    if sampled is not None:
+        if not isinstance(sampled.event, model.EventReference):
+            error(sampled.event.location, "sample() reads its value when an event happens: give @event, e.g. @slow.end")
+            return None
+        expression = sampled.expression
+        given = {
+            **given,
+            "event": model.Argument(
+                "event", model.Name(sampled.event.name, sampled.event.location), sampled.event.location
+            ),
+        }
     observed = _observed_dimension(expression, {a.name for a in scenario.actors})
     if observed is not None:
         return _observed_item(coverage, given, name, expression, observed, scenario, error)
+    if sampled is not None:
+        error(
+            sampled.expression.location,
+            f"not supported yet: sample() of this value; the tool reads vehicles' {', '.join(TRACE_QUANTITIES)}, "
+            "their sums and differences, and a.space_gap(b)",
+            "e.g. var gap: length = sample(ego.space_gap(npc), @cut_in.end)",
+        )
+        return None
     known = ", ".join(by_name) or "none"
     if not isinstance(expression, model.Name) or expression.enum is not None or "." in expression.name:
         error(
             expression.location,
             f"not supported yet: {kind}() of this value of the run; the tool collects the scenario's "
-            "logical parameters, and vehicles' speeds, accelerations and positions at an event",
+            "logical parameters, and vehicles' speeds, accelerations, positions and gaps (a.space_gap(b)) at an event",
             f"name a logical parameter ({known}), or e.g. expression: npc.position - ego.position, event: end",
         )
         return None
@@ -403,9 +424,57 @@ def _cross(coverage: model.Coverage, declared: dict[str, CoverItem], error) -> C
     )
 
 
+def _sampled(expression, name_value, scenario: model.Scenario, kind: str, warning) -> model.SampledVariable | None:
+    """The ``var ... = sample(...)`` an item reads: the one its expression names, or, where its
+    ``expression:`` compares the item's own sampled variable with a constant (``expression: gap >
+    50cm`` beside ``range:`` and ``every:``, as public files write it), that variable, said in a
+    warning: the buckets slice the value, not the comparison."""
+    samples = {v.name: v for v in scenario.samples}
+    if isinstance(expression, model.Name) and expression.name in samples:
+        return samples[expression.name]
+    own = samples.get(name_value.name) if isinstance(name_value, model.Name) else None
+    if (
+        own is not None
+        and isinstance(expression, model.Binary)
+        and expression.operator in ("<", "<=", ">", ">=", "==", "!=")
+        and any(isinstance(side, model.Name) and side.name == own.name for side in (expression.left, expression.right))
+    ):
+        warning(
+            expression.location,
+            f"{kind}({own.name}): expression: compares {own.name}; the item slices {own.name} itself into the "
+            "buckets range: and every: name",
+            f"leave expression: out, or cover the comparison alone: {kind}(name, expression: ...) without range:",
+        )
+        return own
+    return None
+
+
+def space_gap(behind_or_ahead: float) -> float:
+    """The gap between two cars' bumpers, from the distance between their centres along the
+    road (signed: positive when the other car is ahead); 0 while they overlap."""
+    gap = max(0.0, abs(behind_or_ahead) - CAR_LENGTH)
+    return math.copysign(gap, behind_or_ahead)
+
+
+def space_gap_actors(expression) -> tuple[str, str] | None:
+    """(a, b) of ``a.space_gap(b)``; None for any other expression."""
+    if (
+        isinstance(expression, model.Call)
+        and expression.function.endswith(".space_gap")
+        and len(expression.arguments) == 1
+        and isinstance(expression.arguments[0].value, model.Name)
+    ):
+        return expression.function.rpartition(".")[0], expression.arguments[0].value.name
+    return None
+
+
 def _observed_value(expression: model.Expression, state: Mapping[str, Mapping[str, float]]) -> float:
     if isinstance(expression, model.Quantity):
         return expression.value
+    pair = space_gap_actors(expression)
+    if pair is not None:
+        reference, other = pair
+        return space_gap(float(state[other]["x"]) - float(state[reference]["x"]))
     if isinstance(expression, model.Name):
         actor, _, quantity = expression.name.rpartition(".")
         return float(state[actor][TRACE_QUANTITIES[quantity][0]])
@@ -419,6 +488,9 @@ def _observed_dimension(expression: model.Expression, actors: set[str]) -> str |
     if isinstance(expression, model.Name) and expression.enum is None:
         actor, _, quantity = expression.name.rpartition(".")
         return TRACE_QUANTITIES[quantity][1] if actor in actors and quantity in TRACE_QUANTITIES else None
+    pair = space_gap_actors(expression)
+    if pair is not None:
+        return LENGTH if set(pair) <= actors and pair[0] != pair[1] else None
     if isinstance(expression, model.Binary) and expression.operator in ("+", "-"):
         sides = [_observed_dimension(side, actors) for side in (expression.left, expression.right)]
         constants = [side.dimension for side in (expression.left, expression.right) if isinstance(side, model.Quantity)]
@@ -451,6 +523,8 @@ def _event(argument: model.Argument | None, scenario: model.Scenario, error) -> 
         label, _, end = name.rpartition(".")
         if label in labels and end in ("start", "end"):
             return (label, end)
+        if name in labels:
+            return (name, "end")  # a phase's label alone: the phase's end, when its outcome is known
     error(
         value.location,
         "event: takes start or end (the scenario's), a phase's label.start or label.end, or an event "

@@ -84,4 +84,6 @@ def _merged(parent: model.Scenario, child: model.Scenario) -> tuple[model.Scenar
         behavior=behaviors[0] if behaviors else None,
         unsupported=parent.unsupported + child.unsupported,
         modifiers=parent.modifiers + child.modifiers,
+        coverage=parent.coverage + child.coverage,
+        samples=parent.samples + child.samples,
     ), problems

@@ -355,6 +355,7 @@ class _Builder:
         unsupported: list[model.Unsupported] = []
         modifiers: list[model.Modifier] = []
         coverage: list[model.Coverage] = []
+        samples: list[model.SampledVariable] = []
         for member in members:
             item = member.getChild(0)
             if isinstance(item, P.FieldDeclarationContext):
@@ -378,10 +379,15 @@ class _Builder:
                     )
             elif isinstance(item, P.DoDirectiveContext):
                 behaviors.append(self.do_member(item.doMember()))
+            elif isinstance(item, P.VariableDeclarationContext) and item.sampleExpression() is not None:
+                samples.extend(self.sampled(item))
             elif isinstance(item, P.VariableDeclarationContext):
                 unsupported.append(
                     model.Unsupported(
-                        "var", self.loc(item), "use a parameter with a range: `x: length with: keep(it in [a..b]m)`"
+                        "var",
+                        self.loc(item),
+                        "use a parameter with a range: `x: length with: keep(it in [a..b]m)`; a var is read only as "
+                        "`var x: length = sample(expression, @event)` for cover() and record()",
                     )
                 )
             elif isinstance(item, P.CoverageDeclarationContext):
@@ -413,6 +419,7 @@ class _Builder:
                     key=lambda c: (c.location.line, c.location.column),
                 )
             ),
+            samples=tuple(samples),
         )
 
     def type_declaration(self, ctx) -> tuple[model.TypeDeclaration, tuple[model.Unsupported, ...]]:
@@ -440,6 +447,20 @@ class _Builder:
             )
         )
         return model.TypeDeclaration(kind, name, parent, body.fields, body.constraints, body.location), refused
+
+    def sampled(self, ctx: P.VariableDeclarationContext) -> list[model.SampledVariable]:
+        """``var a, b: type = sample(expression, @event)``: one sampled variable per name."""
+        sample = ctx.sampleExpression()
+        expression = self.expression(sample.expression(0))
+        event = self.event_specification(sample.eventSpecification())
+        declared = ctx.typeDeclarator()
+        type_name = (
+            self.name(declared.identifier()) if declared is not None and declared.identifier() is not None else None
+        )
+        return [
+            model.SampledVariable(self.name(ident), type_name, expression, event, self.loc(ident))
+            for ident in ctx.identifier()
+        ]
 
     def coverage(self, ctx: P.CoverageDeclarationContext, field: str | None = None) -> model.Coverage:
         """``cover(...)``/``record(...)``, its arguments as written (the checker reads them:
