@@ -9,8 +9,17 @@ from pathlib import Path
 
 from ..outcomes import CONFORMANT
 from ..settings import count as parse_count
-from ..settings import processes as parse_processes
-from .common import EXIT_ACCEPTED, EXIT_INPUT, EXIT_REJECTED, RUN_FLAGS, flag, run_settings, setting_flags
+from .common import (
+    EXIT_ACCEPTED,
+    EXIT_INPUT,
+    EXIT_REJECTED,
+    RUN_FLAGS,
+    executor_flags,
+    executor_refused,
+    flag,
+    run_settings,
+    setting_flags,
+)
 
 
 def add(commands) -> None:
@@ -46,21 +55,7 @@ def add(commands) -> None:
         "conftest.py gives (default: scenarios/realistic/ when no paths are given)",
     )
     bench.add_argument("--no-realistic", action="store_true", help="run the paper's scenarios only")
-    bench.add_argument(
-        "--jobs",
-        type=flag(parse_processes),
-        default=1,
-        help="scenario-and-strategy runs at once, each in a process of its own (default 1: the instances' "
-        "seconds are measured alone); the results are the serial run's",
-    )
-    bench.add_argument(
-        "--ray",
-        default=None,
-        metavar="ADDRESS",
-        help="run the scenario-and-strategy runs on a Ray cluster (the [ray] extra): its head's HOST:PORT, 'auto' "
-        "on one of its nodes, or 'local' for one of this machine's CPUs; the results are the serial run's "
-        "(docs/cluster.md)",
-    )
+    executor_flags(bench, "scenarios' base strategies and refined samples")
     setting_flags(bench, RUN_FLAGS)
     bench.add_argument(
         "--out", type=Path, default=Path("bench-report"), help="report directory (default bench-report/)"
@@ -172,8 +167,7 @@ def _bench_run(args: argparse.Namespace, settings):
         with executor(args.jobs, args.ray) as chosen:
             return _bench_on(args, settings, chosen)
     except ExecutorError as error:
-        print(f"roadlogic bench: --{'ray' if args.ray is not None else 'jobs'}: {error}", file=sys.stderr)
-        return EXIT_INPUT
+        return executor_refused(args, error)
 
 
 def _bench_on(args: argparse.Namespace, settings, executor):

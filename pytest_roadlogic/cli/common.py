@@ -144,6 +144,32 @@ def read_roots(args: argparse.Namespace, named: Path):
     return ReadRoots.around(named, extra=getattr(args, "allow_read", []))
 
 
+def executor_flags(command: argparse.ArgumentParser, what: str) -> None:
+    """``--jobs`` and ``--ray``: where a campaign's independent jobs (``what``) run."""
+    from ..settings import processes
+
+    command.add_argument(
+        "--jobs",
+        type=flag(processes),
+        default=1,
+        help=f"{what} at once, each in a process of its own (default 1: in this process, each one's seconds "
+        "measured alone); the results are the serial run's",
+    )
+    command.add_argument(
+        "--ray",
+        default=None,
+        metavar="ADDRESS",
+        help=f"run the {what} on a Ray cluster (the [ray] extra): its head's HOST:PORT, 'auto' on one of its "
+        "nodes, or 'local' for this machine's CPUs; the results are the serial run's (docs/cluster.md)",
+    )
+
+
+def executor_refused(args: argparse.Namespace, error: Exception) -> int:
+    """Say why the executor ``--jobs``/``--ray`` asks for cannot run; the exit code."""
+    print(f"roadlogic {args.command}: --{'ray' if args.ray is not None else 'jobs'}: {error}", file=sys.stderr)
+    return EXIT_INPUT
+
+
 def scenario_source(args: argparse.Namespace):
     """Where the scenario a command names is (``evaluation.scenario_source.ScenarioSource``): its
     file, name, lanes, dialect, the folders it may read, and its map."""

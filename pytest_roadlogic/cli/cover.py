@@ -12,12 +12,13 @@ import sys
 from pathlib import Path
 
 from ..settings import count as parse_count
-from ..settings import processes as parse_processes
 from .common import (
     EXIT_ACCEPTED,
     EXIT_INPUT,
     EXIT_REJECTED,
     RUN_FLAGS,
+    executor_flags,
+    executor_refused,
     flag,
     reporting_input_errors,
     run_settings,
@@ -50,16 +51,7 @@ def add(commands) -> None:
         help="add the tally to this JSON file of earlier runs' (made when missing) and report the sum; --closure "
         "asks only buckets no run has hit",
     )
-    cover.add_argument(
-        "--jobs", type=flag(parse_processes), default=1, help="cases at once, each in a process of its own (default 1)"
-    )
-    cover.add_argument(
-        "--ray",
-        default=None,
-        metavar="ADDRESS",
-        help="run the cases on a Ray cluster (the [ray] extra): its head's HOST:PORT, 'auto' on one of its nodes, "
-        "or 'local' (docs/cluster.md)",
-    )
+    executor_flags(cover, "samples, proofs and closure cases")
     cover.set_defaults(action=_cover)
 
 
@@ -81,8 +73,7 @@ def _cover(args: argparse.Namespace) -> int:
         with executor(args.jobs, args.ray) as chosen:
             campaign = reporting_input_errors(args, lambda: _campaign(args, source, chosen))
     except ExecutorError as error:
-        print(f"roadlogic cover: --{'ray' if args.ray is not None else 'jobs'}: {error}", file=sys.stderr)
-        return EXIT_INPUT
+        return executor_refused(args, error)
     if isinstance(campaign, int):
         return campaign
     return _report(args, checked, campaign)

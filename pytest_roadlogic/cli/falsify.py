@@ -12,12 +12,13 @@ import json
 import sys
 
 from ..settings import count as parse_count
-from ..settings import processes as parse_processes
 from .common import (
     EXIT_ACCEPTED,
     EXIT_INPUT,
     EXIT_REJECTED,
     RUN_FLAGS,
+    executor_flags,
+    executor_refused,
     flag,
     reporting_input_errors,
     run_settings,
@@ -39,16 +40,7 @@ def add(commands) -> None:
     falsify.add_argument(
         "--budget", type=flag(parse_count), default=50, help="samples per search before it gives up (default 50)"
     )
-    falsify.add_argument(
-        "--jobs", type=flag(parse_processes), default=1, help="searches at once, each in a process of its own"
-    )
-    falsify.add_argument(
-        "--ray",
-        default=None,
-        metavar="ADDRESS",
-        help="run the searches on a Ray cluster (the [ray] extra): its head's HOST:PORT, 'auto', or 'local' "
-        "(docs/cluster.md)",
-    )
+    executor_flags(falsify, "searches")
     falsify.set_defaults(action=_falsify)
 
 
@@ -72,8 +64,7 @@ def _falsify(args: argparse.Namespace) -> int:
             )
             outcomes = reporting_input_errors(args, lambda: _searches(args, source, settings, chosen))
     except ExecutorError as error:
-        print(f"roadlogic falsify: --{'ray' if args.ray is not None else 'jobs'}: {error}", file=sys.stderr)
-        return EXIT_INPUT
+        return executor_refused(args, error)
     if isinstance(outcomes, int):
         return outcomes
     return _report(outcomes, args.budget)
