@@ -451,3 +451,10 @@ def test_a_var_sampled_at_a_phase_is_the_gap_between_bumpers_at_its_end_and_the_
     labels = list(coverage.items["gap_at_end"].buckets)
     proved = unreachable(scenario, item, labels, RunSettings(seed=2), 2)
     assert set(proved) == {"[-20..-10) m", "[-10..0) m", "[20..30) m", "[30..40] m"}, proved
+
+
+def test_a_sampled_var_declared_of_another_kind_than_its_value_is_a_located_warning_and_not_collected():
+    checked = check_text(SAMPLED.replace("var gap_at_end: length", "var gap_at_end: speed"), "s.osc")
+    (said,) = [d for d in checked.diagnostics if "samples a length, not a speed" in d.message]
+    assert (said.location.line, said.severity) == (4, "warning") and "the item is not collected" in said.message
+    assert checked.scenarios[0].coverage == ()

@@ -22,6 +22,7 @@ from .. import model
 from ..errors import SourceLocation
 from ..syntax.standard_library import UNITS
 from ..syntax.units import ACCELERATION, LENGTH, SI_UNIT, SPEED
+from .library import PHYSICAL_TYPES
 from .logical import LogicalParameter
 from .values import EvaluationError, Interval, evaluate
 
@@ -207,6 +208,14 @@ def _item(
             ),
         }
     observed = _observed_dimension(expression, {a.name for a in scenario.actors})
+    declared = PHYSICAL_TYPES.get(sampled.type) if sampled is not None and sampled.type else None
+    if observed is not None and declared is not None and declared != observed:
+        error(
+            sampled.location,
+            f"var {sampled.name}: {sampled.type} samples a {observed}, not a {declared}",
+            f"declare it as var {sampled.name}: {observed} = sample(...)",
+        )
+        return None
     if observed is not None:
         return _observed_item(coverage, given, name, expression, observed, scenario, error)
     if sampled is not None:
