@@ -12,8 +12,10 @@ __all__ = ["Call", "Executor", "ExecutorError", "Job", "ProcessExecutor", "Seria
 
 
 def executor(jobs: int = 1, ray: str | None = None) -> Executor:
-    """The executor a campaign's options ask for: ``ray`` (a cluster address, or ``local``) over
-    ``jobs`` (processes of this machine; 1: serial, in this process)."""
+    """The executor a campaign's options ask for: ``ray`` (a cluster address, or ``local``), or
+    ``jobs`` processes of this machine (1: serial, in this process); ``ExecutorError`` for both."""
+    if ray is not None and jobs > 1:
+        raise ExecutorError("--jobs runs the jobs on this machine's processes, --ray on a cluster's: give one of them")
     if ray is not None:
         from .ray_cluster import RayExecutor
 

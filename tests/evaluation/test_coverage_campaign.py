@@ -72,3 +72,11 @@ def test_roadlogic_cover_says_a_scenario_without_cover_items_has_nothing_to_cove
     assert result.returncode == 2
     assert "has no cover() or record() item; nothing to cover" in result.stderr
     assert "Traceback" not in result.stderr
+
+
+def test_roadlogic_cover_refuses_both_a_process_pool_and_a_cluster():
+    result = run_cover(str(CATCH_UP), "--jobs", "2", "--ray", "local")
+    assert result.returncode == 2
+    assert "roadlogic cover: --ray: --jobs runs the jobs on this machine's processes, --ray on a cluster's" in (
+        result.stderr
+    )
