@@ -275,17 +275,26 @@ class _Run:
         return self.settings.count(self.strategy)
 
     def draw_job(self, round_: int) -> tuple:
-        missing = self.count - len(self.kept())
         # the first draw is the one a plain Hypothesis run of the seed makes; each next one, for
-        # the samples set aside, is seeded by the round too
-        seed = self.settings.run.seed if round_ == 0 else f"{self.settings.run.seed}-{round_}"
-        return self.source, missing, seed
+        # the samples set aside, is seeded by the round too, and draws as many more as there are
+        # samples so far: a draw starts at the simplest sample (each range's low end), which the
+        # first draw has, and may repeat others
+        missing = self.count - len(self.kept())
+        if round_ == 0:
+            return self.source, missing, self.settings.run.seed
+        return self.source, missing + len(self.draws), f"{self.settings.run.seed}-{round_}"
 
     def add_draws(self, values: list[dict[str, Any]] | None, error: str | None) -> None:
+        """Take the samples of a draw not drawn before, as many as the run still misses."""
         if error is not None:
             self.error = error
             return
-        new = [v for v in values or [] if v not in self.draws]
+        missing = self.count - len(self.kept())
+        new = []
+        for v in values or []:
+            if v not in self.draws and v not in new:
+                new.append(v)
+        new = new[:missing]
         self.dry = not new
         self.draws += new
 

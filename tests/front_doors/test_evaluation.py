@@ -383,3 +383,44 @@ def test_a_ray_address_nothing_answers_at_is_refused_with_what_to_give(tmp_path)
     assert "roadlogic bench: --ray: no Ray cluster answers at '127.0.0.1:1'" in result.stderr
     assert "ray start --head" in result.stderr
     assert "Traceback" not in result.stderr
+
+
+SET_ASIDE_FIRST = """scenario widen:
+    ego: car
+    npc: car
+    start_gap: length with:
+        keep(it in [5m..60m])
+    npc_speed: speed with:
+        keep(it in [10mps..30mps])
+    do parallel(duration: 3s):
+        ego.drive() with:
+            speed(20mps)
+        npc.drive() with:
+            position(start_gap, ahead_of: ego, at: start)
+            position([25m..40m], ahead_of: ego, at: end)
+            speed(npc_speed, at: start)
+"""
+
+
+def test_a_bench_replaces_a_sample_set_aside_with_a_new_draw_the_same_on_any_executor(tmp_path):
+    from pytest_roadlogic.evaluation import BenchmarkSettings, run_benchmark
+    from pytest_roadlogic.executors import executor
+    from pytest_roadlogic.settings import RunSettings
+
+    path = tmp_path / "widen.osc"
+    path.write_text(SET_ASIDE_FIRST)
+    settings = BenchmarkSettings((path,), base=0, refined=3, run=RunSettings(seed=1), artifacts=False)
+
+    def recorded(chosen):
+        with chosen:
+            results = run_benchmark(settings, tmp_path / chosen.name, executor=chosen)
+        return [(r.index, r.outcome, r.values) for r in results.instances]
+
+    serial = recorded(executor())
+    # the first draw starts at the simplest sample, 5 m ahead at 10 m/s against the ego's 20,
+    # 25 m ahead or more 3 s later: each value alone has plans, not the two together, so it is
+    # set aside and a new draw takes its place
+    assert [index for index, _, _ in serial] == [0, 1, 2]
+    assert {"start_gap": 5.0, "npc_speed": 10.0} not in [values for _, _, values in serial]
+    assert len({json.dumps(values, sort_keys=True) for _, _, values in serial}) == 3
+    assert recorded(executor(jobs=2)) == serial
