@@ -405,26 +405,20 @@ class ScenarioItem(pytest.Item):
     def _prove_unreachable(self) -> None:
         """Mark the cover buckets no case hit that no case can reach (``evaluation.reach``), with
         why; each bucket is asked once."""
-        from .evaluation.reach import unreachable
+        from .evaluation.reach import open_questions, unreachable
 
-        for item in self.scenario.coverage:
-            if item.crossed and not self._parameters_only(item):
-                continue  # a cross with a value of the run: its combinations are not asked of the planner
-            tally = self.coverage.items[item.name]
-            missed = [
-                label
-                for label, hits in tally.buckets.items()
-                if hits == 0 and (item.name, label) not in self.proofs_asked
-            ]
+        for item, missed in open_questions(self.scenario, self.coverage):
+            missed = [label for label in missed if (item.name, label) not in self.proofs_asked]
             self.proofs_asked.update((item.name, label) for label in missed)
             if missed:
+                tally = self.coverage.items[item.name]
                 tally.unreachable.update(unreachable(self.scenario, item, missed, self.settings, self.settings.seed))
 
     def _close_coverage(self, runner) -> None:
         """Coverage closure (``--roadlogic-coverage-closure yes``): the buckets no sample hit are
         first proved unreachable where they are, then each other one is asked for by one case with
         its parameters inside it (``evaluation.closure``), run and counted as any sample is."""
-        from .evaluation.closure import closing_values
+        from .evaluation.closure import closing_values, first_with_plan
         from .evaluation.coverage import merged
         from .evaluation.coverage_db import earlier
 
@@ -435,21 +429,15 @@ class ScenarioItem(pytest.Item):
         # a bucket an earlier run of the database hit is not asked again
         covered = merged([before, self.coverage])[0] if before is not None else self.coverage
         for _, _, tries in closing_values(self.scenario, covered):
-            for values in tries:
-                result = runner.run_case(runner.case(strategy=REFINED, values=values))
-                if result.outcome == NO_PLAN:
-                    # the bucket has plans (no proof rules it out), not at these values: the next
-                    # try, as a sample without a plan is set aside
-                    self.tally.aside(result.seconds)
-                    continue
+            result, aside = first_with_plan(
+                tries, lambda values: runner.run_case(runner.case(strategy=REFINED, values=values))
+            )
+            for without_plan in aside:
+                self.tally.aside(without_plan.seconds)
+            if result is not None:
                 cases += 1
                 self._count(result)
-                break
         self.user_properties.append(("closure_cases", cases))
-
-    def _parameters_only(self, cross) -> bool:
-        items = {i.name: i for i in self.scenario.coverage}
-        return all(items[name].observed is None for name in cross.crossed)
 
     def _drivers(self):
         from .simulation.named_drivers import RecordingDrivers
@@ -808,7 +796,7 @@ class SessionSummary:
                 terminalreporter.write_line(f"coverage written to {path}")
         database = _text(config, "coverage-db")
         if database:
-            for line in database_lines(Path(database), coverages, "--roadlogic-coverage-db"):
+            for line in database_lines(Path(database), coverages, "--roadlogic-coverage-db")[0]:
                 terminalreporter.write_line(line)
 
     @pytest.hookimpl(optionalhook=True)

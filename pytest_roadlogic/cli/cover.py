@@ -130,14 +130,14 @@ def _report(args: argparse.Namespace, checked, campaign) -> int:
         print(f"coverage written to {args.coverage}")
     coverage = campaign.coverage
     if args.coverage_db is not None:
-        from ..evaluation.coverage_db import database_lines, read
+        from ..evaluation.coverage_db import database_lines
 
-        lines = database_lines(args.coverage_db, [campaign.coverage], "--coverage-db")
-        if lines[0].startswith("roadlogic:"):
+        lines, summed = database_lines(args.coverage_db, [campaign.coverage], "--coverage-db")
+        if summed is None:
             print(lines[0].replace("roadlogic:", "roadlogic cover:", 1), file=sys.stderr)
             return EXIT_INPUT
         print("\n".join(lines))
-        coverage = next(c for c in read(args.coverage_db) if c.scenario == coverage.scenario)
+        (coverage,) = summed
     # closed over every run the database holds, when it is given
     every = all(closed(item, coverage) for item in checked.coverage if item.kind == "cover")
     return EXIT_ACCEPTED if every else EXIT_REJECTED

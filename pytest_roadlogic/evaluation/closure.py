@@ -10,10 +10,12 @@ Values the run takes at an event are the run's, not the sample's: their buckets 
 from __future__ import annotations
 
 import itertools
+from collections.abc import Callable
 from typing import Any
 
 from ..frontend.semantics.checked import CheckedScenario
 from ..frontend.semantics.coverage import Bucket, CoverItem, held
+from ..outcomes import NO_PLAN
 from .coverage import ScenarioCoverage
 
 # where in a bucket (a share of its width, within the parameter's range) the values a closure
@@ -72,3 +74,17 @@ def closed(item: CoverItem, coverage: ScenarioCoverage) -> bool:
     """Whether every bucket of ``item`` is hit its target times or proved unreachable."""
     tally = coverage.items[item.name]
     return all(hits >= item.target or label in tally.unreachable for label, hits in tally.buckets.items())
+
+
+def first_with_plan(tries: list[dict[str, Any]], run: Callable[[dict[str, Any]], Any]) -> tuple[Any, list[Any]]:
+    """One bucket's closure case: ``run`` (values -> ``runner.CaseResult``) on its tries in order
+    until one has a plan; (that result, None when none has, and the results before it, each
+    without a plan: set aside as a sample without a plan is). The bucket has plans (no proof
+    rules it out), only not at every value tried."""
+    aside = []
+    for values in tries:
+        result = run(values)
+        if result.outcome != NO_PLAN:
+            return result, aside
+        aside.append(result)
+    return None, aside

@@ -23,10 +23,10 @@ from ..executors import Executor, SerialExecutor
 from ..frontend.semantics.checked import CheckedScenario
 from ..outcomes import NO_PLAN
 from ..settings import DISCARD, REFINED, RunSettings
-from .closure import closing_values
+from .closure import closing_values, first_with_plan
 from .coverage import ScenarioCoverage, merged
 from .coverage_db import earlier, fingerprint
-from .reach import unreachable
+from .reach import open_questions, unreachable
 from .scenario_source import ScenarioSource
 
 
@@ -102,20 +102,9 @@ def _prove(
     checked: CheckedScenario, source: ScenarioSource, settings: RunSettings, campaign: CampaignCoverage, executor
 ) -> None:
     """Mark the buckets no case hit that the planner proves no case can reach (one job per item)."""
-    jobs = []
-    for item in checked.coverage:
-        tally = campaign.coverage.items[item.name]
-        missed = [label for label, hits in tally.buckets.items() if hits == 0]
-        if item.kind == "cover" and missed and not (item.crossed and _observed_cross(checked, item)):
-            jobs.append((source, settings, item.name, missed))
+    jobs = [(source, settings, item.name, missed) for item, missed in open_questions(checked, campaign.coverage)]
     for (_, _, name, _), found in zip(jobs, executor.results([(proved_unreachable, job) for job in jobs]), strict=True):
         campaign.coverage.items[name].unreachable.update(found)
-
-
-def _observed_cross(checked: CheckedScenario, cross) -> bool:
-    """A cross with a value of the run: its combinations are not asked of the planner."""
-    items = {i.name: i for i in checked.coverage}
-    return any(items[name].observed is not None for name in cross.crossed)
 
 
 # ------------------------------------------------------------------ the jobs (run in a worker)
@@ -138,12 +127,11 @@ def closing_case(
     tries set aside without a plan, the case's outcome, what it covered)."""
     checked = source.load()
     tally = ScenarioCoverage.of(f"{source.path}::{checked.name}", checked.coverage)
-    for aside, values in enumerate(tries):
-        result = _run(source, settings, values, fallbacks=True)
-        if result.outcome != NO_PLAN:
-            tally.add(checked.coverage, values, result.outcome, result.run)
-            return True, aside, result.outcome, tally
-    return False, len(tries), NO_PLAN, tally
+    result, aside = first_with_plan(tries, lambda values: _run(source, settings, values, fallbacks=True))
+    if result is None:
+        return False, len(aside), NO_PLAN, tally
+    tally.add(checked.coverage, result.case.values, result.outcome, result.run)
+    return True, len(aside), result.outcome, tally
 
 
 def proved_unreachable(source: ScenarioSource, settings: RunSettings, name: str, labels: list[str]) -> dict[str, str]:

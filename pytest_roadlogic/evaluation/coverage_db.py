@@ -79,24 +79,23 @@ def write(path: Path, coverages: list[ScenarioCoverage]) -> None:
             os.unlink(staging)
 
 
-def database_lines(path: Path, now: list[ScenarioCoverage], option: str) -> list[str]:
-    """Add this run's tallies (``now``) to the database at ``path`` and write it back; the lines
-    that report it: the sum over runs of this run's scenarios, what was dropped, or why the file
-    was neither read nor written (``option`` names the flag in those messages)."""
+def database_lines(
+    path: Path, now: list[ScenarioCoverage], option: str
+) -> tuple[list[str], list[ScenarioCoverage] | None]:
+    """Add this run's tallies (``now``) to the database at ``path`` and write it back: the lines
+    that report it (the sum over runs of this run's scenarios, what was dropped) and the
+    database's tallies after; or the line saying why the file was neither read nor written
+    (``option`` names the flag in it) and None."""
     try:
         before = read(path)
     except ValueError as error:
         return [
             f"roadlogic: {option} {path}: {error}; not added to, not overwritten: give a file it wrote or a new one"
-        ]
+        ], None
     after, dropped = combined(before, now)
     try:
         write(path, after)
     except OSError as error:
-        return [f"roadlogic: {option} {path}: cannot write it ({error.strerror or error})"]
-    ours = {c.scenario for c in now}
-    return [
-        f"coverage database {path}: this run added to the earlier runs'",
-        *dropped,
-        *text_lines([c for c in after if c.scenario in ours]),
-    ]
+        return [f"roadlogic: {option} {path}: cannot write it ({error.strerror or error})"], None
+    ours = [c for c in after if c.scenario in {c.scenario for c in now}]
+    return [f"coverage database {path}: this run added to the earlier runs'", *dropped, *text_lines(ours)], ours

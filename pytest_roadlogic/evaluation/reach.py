@@ -16,6 +16,21 @@ from ..frontend.semantics.checked import CheckedScenario
 from ..frontend.semantics.coverage import Bucket, CoverItem, held
 
 
+def open_questions(checked: CheckedScenario, coverage) -> list[tuple[CoverItem, list[str]]]:
+    """Each cover item of ``checked`` with the labels of its buckets no case of ``coverage``
+    (``coverage.ScenarioCoverage``) hit: what ``unreachable`` may be asked. A cross with a value
+    of the run is left out: its combinations are not asked of the planner."""
+    items = {i.name: i for i in checked.coverage}
+    questions = []
+    for item in checked.coverage:
+        if item.crossed and any(items[name].observed is not None for name in item.crossed):
+            continue
+        missed = [label for label, hits in coverage.items[item.name].buckets.items() if hits == 0]
+        if item.kind == "cover" and missed:
+            questions.append((item, missed))
+    return questions
+
+
 def unreachable(checked: CheckedScenario, item: CoverItem, labels: list[str], settings, seed: int) -> dict[str, str]:
     """Of ``item``'s buckets named in ``labels`` (those no case hit), the ones no case can reach,
     each with why: outside a parameter's range, or the planner's proof that no plan exists with

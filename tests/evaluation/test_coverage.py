@@ -357,7 +357,7 @@ def test_a_coverage_database_adds_each_runs_tally_and_drops_one_counted_on_a_cha
     first.add(scenario.coverage, {"gap": 15.0}, CONFORMANT)
     second.add(scenario.coverage, {"gap": 55.0}, CONFORMANT)
     database_lines(database, [first], "--db")
-    lines = database_lines(database, [second], "--db")
+    lines, _ = database_lines(database, [second], "--db")
     (both,) = read(database)
     assert (
         both.cases == 2 and both.items["gap"].buckets["[0..20) m"] == 1 and both.items["gap"].buckets["[40..60) m"] == 1
@@ -365,13 +365,13 @@ def test_a_coverage_database_adds_each_runs_tally_and_drops_one_counted_on_a_cha
     assert any("s.osc::s: 2 cases" in line for line in lines)
     edited = ScenarioCoverage.of("s.osc::s", scenario.coverage, "def")  # the file changed
     edited.add(scenario.coverage, {"gap": 95.0}, CONFORMANT)
-    lines = database_lines(database, [edited], "--db")
+    lines, _ = database_lines(database, [edited], "--db")
     (after,) = read(database)
     assert after.cases == 1 and after.fingerprint == "def"
     assert "s.osc::s: its file changed since the earlier runs; their counts were dropped" in lines
     # a file that is not a database is neither read nor overwritten
     (tmp_path / "notes.json").write_text("my notes")
-    (line,) = database_lines(tmp_path / "notes.json", [edited], "--db")
+    (line,), _ = database_lines(tmp_path / "notes.json", [edited], "--db")
     assert line.startswith("roadlogic: --db ") and "not overwritten" in line
     assert (tmp_path / "notes.json").read_text() == "my notes"
 
