@@ -10,20 +10,20 @@ from pytest_roadlogic.simulation.trace import Incident
 DT = 0.5
 
 
-def make_trace(v1_x, v1_lane, v2_x, v2_lane):
+def make_trace(v1_x, v1_lane, v2_x, v2_lane, speeds=(10.0, 10.0)):
     n = len(v1_x)
 
-    def columns(x, lane):
+    def columns(x, lane, speed):
         return {
             "x": np.array(x, float),
             "y": np.zeros(n),
             "heading": np.zeros(n),
-            "speed": np.full(n, 10.0),
+            "speed": np.full(n, speed),
             "acceleration": np.zeros(n),
             "lane": np.array(lane, int),
         }
 
-    return Trace(np.arange(n) * DT, {"v1": columns(v1_x, v1_lane), "v2": columns(v2_x, v2_lane)})
+    return Trace(np.arange(n) * DT, {"v1": columns(v1_x, v1_lane, speeds[0]), "v2": columns(v2_x, v2_lane, speeds[1])})
 
 
 def overtake_trace():
@@ -153,18 +153,7 @@ STANDING = (
 
 def _two_cars(v1_x):
     n = len(v1_x)
-
-    def columns(x, speed):
-        return {
-            "x": np.asarray(x, float),
-            "y": np.zeros(n),
-            "heading": np.zeros(n),
-            "speed": np.full(n, speed),
-            "acceleration": np.zeros(n),
-            "lane": np.ones(n, int),
-        }
-
-    return Trace(np.arange(n) * DT, {"v1": columns(v1_x, 10.0), "v2": columns(np.arange(n) * 5.5, 11.0)})
+    return make_trace(v1_x, [1] * n, np.arange(n) * 5.5, [1] * n, speeds=(10.0, 11.0))
 
 
 @pytest.mark.parametrize(
