@@ -375,6 +375,7 @@ class TypeDeclaration:
     fields: tuple[Field, ...]
     constraints: tuple[Keep | RemoveDefault, ...]
     location: SourceLocation
+    methods: tuple[Method, ...] = ()
 
 
 @dataclass(frozen=True)

@@ -82,7 +82,16 @@ CASES = [
         "4:8: error: not supported: the namespace qualifier in '::car'",
     ),
     ("var", HEAD + "    var x: length = 1m\n", "4:5: error: not supported: var"),
-    ("external", HEAD + "    def f() -> length is external cpp.f()\n", "4:9: error: not supported: external methods"),
+    (
+        "external",
+        HEAD + "    def f() -> length is external cpp.f()\n",
+        "4:9: warning: an external method is read and ignored",
+    ),
+    (
+        "external_call",
+        HEAD + "    def f() -> length is external cpp.f()\n    g: length = f()\n",
+        "5:17: error: not supported: a call of the external method 'f'",
+    ),
     (
         "modifier_decl",
         "modifier my_mod of car:\n    x: length\n" + HEAD,
@@ -356,9 +365,9 @@ CASES = [
         "1:1: error: extend names an unknown scenario 'nothing'",
     ),
     (
-        "method_parameters",
-        HEAD + "    def f(x: length) -> length is x\n",
-        "4:9: error: not supported: methods with parameters",
+        "method_argument_unknown",
+        HEAD + "    def f(x: length) -> length is x\n    g: length = f(y: 2m)\n",
+        "5:19: error: method 'f' has no parameter 'y'",
     ),
     (
         "composition_argument",

@@ -214,6 +214,18 @@ def test_remove_default_restores_the_range():
     assert domains(text) == {"gap": "[5..15]m"}
 
 
+def test_a_value_naming_another_parameter_follows_it_unless_a_hard_keep_of_its_own_overrides_it():
+    text = PAIR + "    near: length with:\n        keep(it in [5..8]m)\n    far: length = near + 10m\n" + uses("far")
+    result = checked(text)
+    assert {n: d.describe() for n, d in result.scenarios[0].space.domains.items()} == {
+        "near": "[5..8]m",
+        "far": "[15..18]m",
+    }
+    assert len(result.scenarios[0].space.relations) == 1, "each sample meets far == near + 10m"
+    overridden = text.replace("far: length = near + 10m\n", "far: length = near + 10m with:\n        keep(it == 30m)\n")
+    assert domains(overridden) == {"near": "[5..8]m", "far": "30m"}
+
+
 def test_a_default_range():
     text = PAIR + "    gap: length with:\n        keep(default it in [5..8]m)\n" + uses("gap")
     assert domains(text) == {"gap": "[5..8]m"}
@@ -321,7 +333,11 @@ STANDARD_SYNTAX_REFUSED = [
     ("    var seen: speed\n", "not supported: var", 4),
     ("    var at_start: speed = 3mps\n", "not supported: var", 4),
     ("    on @go as g if a.speed > 3mps:\n        emit go\n    event go\n", "not supported: on", 4),
-    ("    def f(x: speed) -> speed is only external lib.f(x)\n", "not supported: external methods", 4),
+    (
+        "    def f(x: speed) -> speed is only external lib.f(x)\n    y: speed = f(x: 3mps)\n",
+        "not supported: a call of the external method 'f'",
+        5,
+    ),
     ("    x: float = .1e+7\n    keep(x > 0 ? 1 : 2)\n", "not supported: a conditional expression", 5),
 ]
 

@@ -34,6 +34,7 @@ from .imports import ImportLoading
 from .inheritance import inherited
 from .invocation import RECURSION, called_scenarios, expand_calls, substitute_names
 from .logical import logical_parameters_of, way_parameters
+from .methods import Methods, inline_methods, inline_scenario
 from .parameters import ParameterSpace, parameter_space
 from .physical import declared_physics, parse_with_declared_units
 from .road_lanes import DEFAULT_LANES, RoadLanes
@@ -175,6 +176,8 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks):
         self.files: dict[str, model.OscFile] = {}
         self.enums: dict[str, tuple[str, ...]] = dict(library.ENUMS)
         self.types: dict[str, model.TypeDeclaration] = {}
+        # method calls refused where they stand: their value is unknown, and said to be once
+        self.refused_calls: set[SourceLocation] = set()
         self.scenarios: dict[str, model.Scenario] = {}
         self.units: dict[str, tuple[str | None, float]] = UNITS  # what imported files are parsed with
         self.physical_types: dict[str, str | None] = dict(library.PHYSICAL_TYPES)
@@ -212,6 +215,10 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks):
         self.diagnostics.extend(physics.problems)
         self.physical_types = physics.types
         globals_ = tuple(g for f in self.files.values() for g in f.globals) + main.globals
+        inlined = inline_methods(globals_, Methods.declared(self.types, (), globals_))
+        globals_ = inlined.node
+        self.refused_calls |= inlined.refused
+        self.diagnostics.extend(inlined.problems)
         for misplaced in main.misplaced_imports:
             self.error(misplaced.location, "an import after a declaration", "put every import at the top of the file")
         for item in main.unsupported:
@@ -238,8 +245,12 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks):
             callable_[name], problems = inherited(scenario, extended)
             # a callee's @L.end refers to its own label L, which the call renames: mark it first
             callable_[name] = with_builtin_events(callable_[name])
+            methods = Methods.declared(self.types, callable_[name].methods, (*globals_, *callable_[name].fields))
+            inlined = inline_scenario(callable_[name], methods)
+            callable_[name] = inlined.node
+            self.refused_calls |= inlined.refused
             if scenario.path == main.path:
-                self.diagnostics.extend(problems)
+                self.diagnostics.extend(problems + inlined.problems)
         is_action = lambda name: self.registry.action(name) is not None  # noqa: E731
         # a scenario another one of this file calls is checked (and run) as part of its callers
         calls = {name: called_scenarios(s, callable_, is_action) for name, s in callable_.items()}
@@ -470,7 +481,7 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks):
                 self._actor_attributes(constraint.location, ", ".join(sorted(owners)))
             else:
                 constraints.append(constraint)
-        space, diagnostics = parameter_space(tuple(parameters), tuple(constraints), self.enums)
+        space, diagnostics = parameter_space(tuple(parameters), tuple(constraints), self.enums, self.refused_calls)
         self.diagnostics.extend(diagnostics)
         checked = replace(scenario, actors=tuple(actors), parameters=tuple(parameters))
         env = self._environment(checked, space)
@@ -487,13 +498,6 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks):
         for event in scenario.events:
             if event.specification is not None:
                 self._event_specification(event.specification, checked, env, event.location, waits=True)
-        for method in scenario.methods:
-            if method.parameters:
-                self.error(
-                    method.location,
-                    "not supported: methods with parameters",
-                    "write the value as an expression where it is used",
-                )
         labels: dict[str, SourceLocation] = {}
         used_actors: set[str] = set()
         used_names: set[str] = set()
@@ -510,8 +514,9 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks):
                     else:
                         labels[label] = node.location
                 self._behavior(node, checked, env, used_actors, used_names)
+        valueless = {p.name for p in parameters if p.default is not None and p.default.location in self.refused_calls}
         for name, domain in space.domains.items():
-            if name in used_names and not domain.bounded:
+            if name in used_names and not domain.bounded and name not in valueless:
                 self.error(
                     domain.location,
                     f"parameter {name!r} has no range or value",

@@ -1,7 +1,9 @@
 """From parameter fields and ``keep`` constraints to the domains that sampling draws from.
 
 OS2's rules, as this module applies them:
-- ``x: T = v`` is ``keep(default x == v)``; a ``default`` constraint is soft.
+- ``x: T = v`` is ``keep(default x == v)``; a ``default`` constraint is soft. A ``v`` that names
+  other parameters (``fast: speed = base + 2mps``) is the relation ``x == v``, held unless a hard
+  ``==`` or ``in`` of ``x``'s own overrides it.
 - A hard ``keep(x == v)`` or ``keep(x in [a..b])`` on the same parameter overrides its default;
   ``remove_default(x)`` drops it. A default that contradicts the hard bounds is ignored, with a warning.
 - Hard constraints on one parameter (``==``, ``in``, ``<``, ``<=``, ``>``, ``>=``, joined by ``and``)
@@ -115,17 +117,25 @@ def parameter_space(
     parameters: tuple[model.Field, ...],
     constraints: tuple[model.Keep | model.RemoveDefault, ...],
     enums: dict[str, tuple[str, ...]] | None = None,
+    refused_calls: set[SourceLocation] = frozenset(),
 ) -> tuple[ParameterSpace, list[Diagnostic]]:
-    """Resolve parameter fields and the constraints on them; diagnostics are errors and warnings."""
-    resolver = _Resolver(parameters, {**library.ENUMS, **(enums or {})})
+    """Resolve parameter fields and the constraints on them; diagnostics are errors and warnings.
+    ``refused_calls``: where calls stand that were refused already (a value is not asked of them)."""
+    resolver = _Resolver(parameters, {**library.ENUMS, **(enums or {})}, refused_calls)
     return resolver.resolve(constraints), resolver.diagnostics
 
 
 class _Resolver:
     """The state of one resolution: what is known of each parameter as constraints are read."""
 
-    def __init__(self, parameters: tuple[model.Field, ...], enums: dict[str, tuple[str, ...]]) -> None:
+    def __init__(
+        self,
+        parameters: tuple[model.Field, ...],
+        enums: dict[str, tuple[str, ...]],
+        refused_calls: set[SourceLocation] = frozenset(),
+    ) -> None:
         self.parameters = parameters
+        self.refused_calls = refused_calls
         self.enums = enums
         self.by_name = {p.name: p for p in parameters}
         self.hard: dict[str, Interval] = {}  # numeric parameters: the intersection of hard bounds
@@ -154,11 +164,16 @@ class _Resolver:
         self.diagnostics.append(Diagnostic(location, message, hint, severity))
 
     def resolve(self, constraints: tuple[model.Keep | model.RemoveDefault, ...]) -> ParameterSpace:
+        related: list[model.Field] = []  # ``fast: speed = base + 2mps``: the value follows ``base``
         for parameter in self.parameters:
-            if parameter.default is not None:
-                value = self.value_for(parameter, parameter.default)
-                if value is not None:
-                    self.defaults[parameter.name] = (value, parameter.default.location)
+            if parameter.default is None:
+                continue
+            if parameter.name in self.hard and {n.name for n in names_in(parameter.default)} & set(self.by_name):
+                related.append(parameter)
+                continue
+            value = self.value_for(parameter, parameter.default)
+            if value is not None:
+                self.defaults[parameter.name] = (value, parameter.default.location)
         for constraint in [c for p in self.parameters for c in p.constraints] + list(constraints):
             if isinstance(constraint, model.RemoveDefault):
                 target = constraint.target
@@ -169,6 +184,13 @@ class _Resolver:
                 continue
             for atom in _conjuncts(constraint.expression):
                 self.apply_atom(atom, constraint)
+        for parameter in related:
+            # a value computed from other parameters holds unless a keep(== or in) of its own overrides it,
+            # as a default does; it is a relation every sample meets
+            if parameter.name not in self.overridden:
+                location = parameter.default.location
+                atom = model.Binary("==", model.Name(parameter.name, parameter.location), parameter.default, location)
+                self.apply_atom(atom, model.Keep(atom, "hard", location))
         self.apply_computed()
         space = ParameterSpace({p.name: self.domain(p) for p in self.parameters}, tuple(self.relations))
         for relation in space.relations:
@@ -375,6 +397,15 @@ class _Resolver:
                 self.add_error(error.location, error.message, error.hint)
                 return None
             dimension = library.PHYSICAL_TYPES.get(parameter.type)
+            if isinstance(value, model.Call):
+                if value.location in self.refused_calls:
+                    return None
+                self.add_error(
+                    expression.location,
+                    f"{value.function}(...) has no value the tool can compute for {parameter.name!r}",
+                    "write the value as an expression, or as a method `def name(...) -> type is expression ...`",
+                )
+                return None
             if not isinstance(value, Interval) or value.dimension != dimension:
                 got = describe(value.dimension) if isinstance(value, Interval) else "a name"
                 self.add_error(

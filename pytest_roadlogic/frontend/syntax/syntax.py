@@ -372,9 +372,11 @@ class _Builder:
                 if method.external:
                     unsupported.append(
                         model.Unsupported(
-                            "external methods",
+                            "an external method",
                             method.location,
-                            "write the method as `def name() -> type is expression`",
+                            "this tool runs no code a scenario names, so a call of it is refused; "
+                            "write the method as `def name(...) -> type is expression ...`",
+                            severity="warning",
                         )
                     )
             elif isinstance(item, P.DoDirectiveContext):
@@ -446,7 +448,10 @@ class _Builder:
                 for c in body.coverage
             )
         )
-        return model.TypeDeclaration(kind, name, parent, body.fields, body.constraints, body.location), refused
+        declaration = model.TypeDeclaration(
+            kind, name, parent, body.fields, body.constraints, body.location, body.methods
+        )
+        return declaration, refused
 
     def sampled(self, ctx: P.VariableDeclarationContext) -> list[model.SampledVariable]:
         """``var a, b: type = sample(expression, @event)``: one sampled variable per name."""
