@@ -206,6 +206,7 @@ def guided(
         raise UnknownParameter(
             f"no logical parameter named {', '.join(map(repr, unknown))}; the scenario has {', '.join(by_name) or 'none'}"
         )
+    values = _with_determined(checked, values)
     declared: dict[str, object] = {}
     narrowed: dict[SourceLocation, tuple[float, float]] = {}
     for name, value in values.items():
@@ -236,6 +237,25 @@ def guided(
             checked, scenario=dataclasses.replace(scenario, behavior=_narrow(scenario.behavior, narrowed))
         )
     return checked, declared
+
+
+def _with_determined(checked: CheckedScenario, values: Values) -> Values:
+    """``values`` with each parameter they leave out whose relations fix it to one value given them
+    (``far: length = near + 10m`` with ``near`` given), as the sampler draws it; why: the planner
+    reads a parameter's range, not the relations, so a value left out would be planned anywhere
+    in its range."""
+    values = dict(values)
+    changed = True
+    while changed:
+        changed = False
+        for parameter in checked.parameters:
+            if parameter.name in values or parameter.name not in checked.space.domains or parameter.choices:
+                continue
+            low, high = _bounded_by_relations(parameter, checked.space, values)
+            if low == high:
+                values[parameter.name] = int(low) if parameter.integer else low
+                changed = True
+    return values
 
 
 def within(checked: CheckedScenario, name: str, low: float, high: float) -> tuple[CheckedScenario, dict[str, object]]:

@@ -67,3 +67,33 @@ scenario headway:
     bounds = {(b.low, b.high) for t in automaton.transitions for b in t.guard.atoms() if b.term.quantity == HEADWAY}
     assert [(round(low, 9), round(high, 9)) for low, high in bounds] == [(1.9, 2.1)], bounds
     assert {(t.low, t.high) for t in automaton.timings.values()} == {(5.5, 6.5)}
+
+
+def test_values_given_in_part_fix_a_parameter_their_relations_determine_as_the_sampler_draws_it():
+    """``far: length = near + 10m`` with only ``near`` given (``roadlogic run --values``): ``far``
+    is 10 m more, not anywhere in its range; the planner reads ranges, not relations."""
+    from pytest_roadlogic.frontend.semantics.values import Interval
+    from pytest_roadlogic.planning import ContinuousSettings
+    from pytest_roadlogic.sampling import guided
+
+    checked = check_text(
+        """
+scenario spaced:
+    ego: car
+    npc: car
+    near: length with:
+        keep(it in [10m..20m])
+    far: length = near + 10m
+    do parallel(duration: 5s):
+        ego.drive()
+        npc.drive() with:
+            position(far, ahead_of: ego, at: start)
+""",
+        "spaced.osc",
+    )
+    checked.raise_for_errors()
+    checked = checked.scenario_to_run()
+    settings = ContinuousSettings()
+    _, declared = guided(checked, {"near": 12.0}, settings.resolution(), settings.margins())
+    assert isinstance(declared["far"], Interval) and declared["far"].low <= 22.0 <= declared["far"].high
+    assert declared["far"].high - declared["far"].low < 2.0, declared["far"]
