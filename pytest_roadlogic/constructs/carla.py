@@ -109,6 +109,29 @@ class CarlaChangeLane(ChangeLaneModifier):
     )
 
 
+class CarlaFollowTrajectory(Modifier):
+    """``follow_trajectory(input_file: f, control: c)``: CARLA's runner replays a recorded log, rows
+    of world x, y, z and time in one of its towns. Refused where it is written: a log fixes every
+    instant of the vehicle in a town's coordinates, which is no constraint to plan around on this
+    tool's roads, and the file is not the scenario's to read."""
+
+    signature = Signature(
+        "follow_trajectory",
+        (Parameter("input_file", "string"), Parameter("control", "string")),
+        description="replay a recorded log of world positions (CARLA)",
+    )
+
+    def check(self, binding: Binding, context: CheckContext) -> None:
+        context.error(
+            context.location,
+            "not supported: follow_trajectory() replays a recorded log in a CARLA town's world coordinates",
+            "say what the log shows with the drive's lane(), speed() and position(), or replay the log in CARLA",
+        )
+
+    def translate(self, use: Use, phase: Phase) -> None:
+        return None  # never reached: the checker refuses every use
+
+
 # CARLA's own constructs and arguments, as CARLA's runner reads them, not the standard's declarations
-CARLA_OWN = (CarlaDrive(), CarlaChangeSpeed(), CarlaChangeLane())
+CARLA_OWN = (CarlaDrive(), CarlaChangeSpeed(), CarlaChangeLane(), CarlaFollowTrajectory())
 CONSTRUCTS = (CarlaLane(), CarlaSpeed(), *CARLA_OWN)

@@ -92,3 +92,14 @@ def test_a_carla_speed_range_is_a_parameter_reported_as_held_at_the_end():
     assert kinds == {"standard": [], "carla": [("a.drive.speed.speed", "at: end")]}, (
         "a standard speed range is a bound; CARLA's is a target at the end"
     )
+
+
+def test_carlas_follow_trajectory_is_refused_where_it_is_written_and_its_log_is_never_read(tmp_path):
+    log = tmp_path / "ego_logs.csv"
+    log.write_text("secret,1,2,3\n")
+    text = (
+        f'scenario s:\n  a: car\n  do a.drive() with:\n    follow_trajectory(input_file: "{log}", control: "physics")\n'
+    )
+    report = check_text(text, "t.osc", dialect="carla").report()
+    assert "t.osc:4:5: error: not supported: follow_trajectory() replays a recorded log" in report, report
+    assert "secret" not in report
