@@ -212,3 +212,22 @@ def test_a_parallel_members_start_is_asked_once_not_again_at_every_junction_of_a
     assert planner.stats["least_action"] == 1.0, "planned with only asked changes"
     assert len({state.lane for state in plan.states["npc"]}) == 1, "the npc left its lane"
     assert len({state.lane for state in plan.states["ego"]}) == 2
+
+
+def test_beside_a_car_asked_to_drive_slowly_an_open_start_speed_is_held_not_braked_off_all_phase(tmp_path):
+    # written as CARLA's cut-in examples are: the ego at 20 kph, the npc asked only where it is at
+    # the phase's ends; a start-speed floor of 29 kph (the tool's "no crawl") had made the npc start
+    # faster than needed and brake through the whole 30 s phase, a change nothing asks for
+    text = (
+        "scenario slow_cut_in:\n    ego: car\n    npc: car\n"
+        "    do parallel(duration: 30s):\n"
+        "        ego.drive() with:\n            speed(20kph)\n            lane(1, at: start)\n"
+        "        npc.drive() with:\n"
+        "            lane(right_of: ego, at: start)\n"
+        "            position(5m, behind: ego, at: start)\n"
+        "            position(20m, ahead_of: ego, at: end)\n"
+    )
+    plan, _, _ = planned(tmp_path, text, dialect="carla")
+    speeds = [state.speed * 3.6 for state in plan.states["npc"]]
+    assert max(speeds) - min(speeds) < 1.0, [round(s, 1) for s in speeds]  # one speed, about 23 kph
+    assert 22.0 < speeds[0] < 25.0, speeds[0]

@@ -52,7 +52,7 @@ def build_continuous_instance(
         f"#const vmax = {number(s.max_speed)}.",
         f"#const v0min = {number(start_low)}.",
         f"#const v0max = {number(start_high)}.",
-        f"#const v0floor = {number(min(s.start_floor, start_low))}.",
+        f"#const v0floor = {number(start_floor(automaton, s))}.",
         f"#const gap = {number(spacing(automaton, s))}.",
         f"#const closing_time = {number(s.closing_time)}.",
         f"#const lane_change_speed = {number(s.lane_change_speed)}.",
@@ -162,6 +162,17 @@ def first_speeds(automaton: SymbolicAutomaton, settings: ContinuousSettings) -> 
         if low <= high and (math.isfinite(bound.low) or math.isfinite(bound.high)):
             found[term.actor] = round((low + high) / 2, 2)
     return found
+
+
+def start_floor(automaton: SymbolicAutomaton, settings: ContinuousSettings) -> float:
+    """The least speed (m/s) a vehicle whose start speed the scenario leaves open is strongly
+    preferred to start at: the settings' floor (a crawl the motion planner tracks badly), but no
+    more than the road's typical speed nor the slowest start speed the scenario asks of another
+    vehicle. Why the last: beside a car asked to drive at 20 kph (CARLA's cut-in examples), 20 kph
+    is no crawl, and a floor above it makes the other car start faster and brake all phase long to
+    keep its position at the phase's end, a change nothing asks for."""
+    asked = [speed for speed in first_speeds(automaton, settings).values() if speed > 0]
+    return min(settings.start_floor, settings.start_band()[0], *asked)
 
 
 def spacing(automaton: SymbolicAutomaton, settings: ContinuousSettings) -> float:
