@@ -24,6 +24,7 @@ false one says nothing.
 
 from __future__ import annotations
 
+import functools
 import math
 import re
 from collections import defaultdict
@@ -155,6 +156,37 @@ _PRINTED_BOUND = re.compile(r'^\(?(-)?"?(-?[0-9.]+(?:/[0-9]+)?)"?\)?$')
 _PRINTED_ATOM = re.compile(r"^&\w+\{(.*)\}(<=|>=|=)(.*)$")
 
 
+def _decimal(number: str) -> float:
+    """A printed number, ``"0.5"`` or ``"1/3"``, as a float (a fraction only where it is one: a
+    ``Fraction`` per coefficient was a tenth of reading a small scenario's rows)."""
+    if "/" in number:
+        return float(Fraction(number))
+    return float(number)
+
+
+@functools.lru_cache(maxsize=1 << 16)
+def _read_printed(text: str) -> tuple[tuple[tuple[str, float], ...], str, float] | None:
+    """An atom's printed form read as (variable printed, coefficient) pairs, its operator and its
+    bound; None when it is not in the form above. Cached: every sample's controls ground most of
+    the same rows."""
+    whole = _PRINTED_ATOM.match(text)
+    bound = whole and _PRINTED_BOUND.match(whole.group(3))
+    if not bound:
+        return None
+    elements = []
+    for element in whole.group(1).split(";"):
+        parsed = _PRINTED_ELEMENT.match(element)
+        if not parsed:
+            return None
+        sign, number, minus, variable = parsed.groups()
+        coefficient = _decimal(number) if number else 1.0
+        if bool(sign) != bool(minus):
+            coefficient = -coefficient
+        elements.append((variable, coefficient))
+    value = _decimal(bound.group(2))
+    return tuple(elements), whole.group(2), -value if bound.group(1) else value
+
+
 def _printed_row(text: str, program: LinearProgram) -> tuple[dict[int, float], str, float] | None:
     """The atom read from its printed form, or None when it is not in the form above.
 
@@ -162,22 +194,14 @@ def _printed_row(text: str, program: LinearProgram) -> tuple[dict[int, float], s
     share of a small scenario's first plan; one ``str(atom)`` and a regular expression read the
     same atom.
     """
-    whole = _PRINTED_ATOM.match(text)
-    bound = whole and _PRINTED_BOUND.match(whole.group(3))
-    if not bound:
+    read = _read_printed(text)
+    if read is None:
         return None
+    elements, operator, bound = read
     coefficients: dict[int, float] = defaultdict(float)
-    for element in whole.group(1).split(";"):
-        parsed = _PRINTED_ELEMENT.match(element)
-        if not parsed:
-            return None
-        sign, number, minus, variable = parsed.groups()
-        coefficient = float(Fraction(number)) if number else 1.0
-        if bool(sign) != bool(minus):
-            coefficient = -coefficient
+    for variable, coefficient in elements:
         coefficients[program.printed_variable(variable)] += coefficient
-    value = float(Fraction(bound.group(2)))
-    return coefficients, whole.group(2), -value if bound.group(1) else value
+    return coefficients, operator, bound
 
 
 def _row(atom: clingo.TheoryAtom, program: LinearProgram, text: str) -> Row:
