@@ -51,17 +51,20 @@ class KinematicDriver(DriverBase):
         ahead = self.reference.d(times + look / max(state.speed, 1.0))
         x, y, heading, v = state.x, state.y, state.heading, state.speed
         xs, ys, hs, vs, accs = [x], [y], [heading], [v], [state.acceleration]
+        # plain floats in the loop: a numpy scalar per term was most of a cycle's cost
+        s_ref, v_ref, ahead = s_ref.tolist(), v_ref.tolist(), ahead.tolist()
+        atan, atan2, cos, sin, tan = math.atan, math.atan2, math.cos, math.sin, math.tan
         for k in range(n - 1):
-            feedforward = (float(v_ref[k + 1]) - float(v_ref[k])) / dt
-            a = feedforward + SPEED_GAIN * (float(v_ref[k]) - v) + POSITION_GAIN * (float(s_ref[k]) - x)
+            feedforward = (v_ref[k + 1] - v_ref[k]) / dt
+            a = feedforward + SPEED_GAIN * (v_ref[k] - v) + POSITION_GAIN * (s_ref[k] - x)
             a = min(MAX_ACCELERATION, max(-MAX_DECELERATION, a))
-            wanted = math.atan2(float(ahead[k]) - y, look)
+            wanted = atan2(ahead[k] - y, look)
             yaw_rate = HEADING_GAIN * (wanted - heading)
-            steer = math.atan(yaw_rate * WHEELBASE / v) if v > 0.1 else 0.0
+            steer = atan(yaw_rate * WHEELBASE / v) if v > 0.1 else 0.0
             steer = min(MAX_STEER, max(-MAX_STEER, steer))
-            x += v * math.cos(heading) * dt
-            y += v * math.sin(heading) * dt
-            heading += v / WHEELBASE * math.tan(steer) * dt
+            x += v * cos(heading) * dt
+            y += v * sin(heading) * dt
+            heading += v / WHEELBASE * tan(steer) * dt
             v = max(0.0, v + a * dt)
             xs.append(x)
             ys.append(y)
