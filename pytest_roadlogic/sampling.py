@@ -206,12 +206,11 @@ def guided(
         raise UnknownParameter(
             f"no logical parameter named {', '.join(map(repr, unknown))}; the scenario has {', '.join(by_name) or 'none'}"
         )
-    values = _with_determined(checked, values)
+    values = _with_determined(checked, {name: checked_value(by_name[name], value) for name, value in values.items()})
     declared: dict[str, object] = {}
     narrowed: dict[SourceLocation, tuple[float, float]] = {}
     for name, value in values.items():
         parameter = by_name[name]
-        value = checked_value(parameter, value)
         if parameter.kind == WAY:
             continue  # the route, not a constraint: on_ways
         if parameter.choices or parameter.integer:

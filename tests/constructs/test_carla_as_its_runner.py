@@ -164,29 +164,3 @@ def test_at_start_is_the_at_value_even_where_a_string_parameter_is_named_start(t
     assert npc[0].lane == ego[0].lane + 1  # right of the leftmost lane, at the start only
     assert ego[0].position - npc[0].position == pytest.approx(15, abs=0.6)
     assert npc[-1].position - ego[-1].position == pytest.approx(20, abs=0.6)
-
-
-def test_a_change_licensed_for_a_phases_end_is_not_spread_into_it_for_the_next_phases_target(tmp_path):
-    # written as CARLA's keep_lane example is: the npc passes the ego (its position at the phase's
-    # end licenses a speed change there), then the next phase targets 30 kph. The smoothing had
-    # braked the npc through the last 10 s of the passing phase; it holds one speed there now and
-    # slows where the target is asked
-    text = (
-        "scenario pass_then_slow:\n    ego: car\n    npc: car\n"
-        "    do serial:\n"
-        "        get_ahead: parallel(duration: 15s):\n"
-        "            ego.drive() with:\n                speed(30kph)\n                lane(1, at: start)\n"
-        "            npc.drive() with:\n"
-        "                lane(right_of: ego, at: start)\n"
-        "                position(15m, behind: ego, at: start)\n"
-        "                position(20m, ahead_of: ego, at: end)\n"
-        "        slow: parallel(duration: 10s):\n"
-        "            ego.drive()\n"
-        "            npc.drive() with:\n                speed(30kph)\n"
-    )
-    plan, automaton, planner = first_plan(tmp_path, text)
-    passing = [state.speed / KPH for state in plan.states["npc"][:15]]
-    # no braking in the passing phase (its last step is the jerk limit's run-in to the next phase)
-    assert all(later >= earlier - 0.2 for earlier, later in zip(passing, passing[1:])), [round(v, 1) for v in passing]
-    after = [state.speed / KPH for state in plan.states["npc"][18:]]
-    assert all(abs(v - 30) <= HELD / KPH for v in after), [round(v, 1) for v in after]

@@ -70,7 +70,6 @@ def build_continuous_instance(
             for location in automaton.locations
             for actor, band in location.targets()
         ),
-        *(f"speed_band({location},{atom(vehicle)})." for location, vehicle in speed_bands(automaton)),
         f"#const comfort_up = {number(s.comfortable_acceleration * s.dt)}.",
         f"#const comfort_down = {number(s.comfortable_deceleration * s.dt)}.",
         f"lane_id(0..{automaton.lanes - 1}).",
@@ -162,33 +161,6 @@ def first_speeds(automaton: SymbolicAutomaton, settings: ContinuousSettings) -> 
         high = min(bound.high, settings.max_speed)
         if low <= high and (math.isfinite(bound.low) or math.isfinite(bound.high)):
             found[term.actor] = round((low + high) / 2, 2)
-    return found
-
-
-# m/s: a band of speeds narrower than this is one speed asked (a value within its tracking
-# tolerance), not a range the scenario leaves free
-SPEED_BAND = 2.0
-
-
-def speed_bands(automaton: SymbolicAutomaton) -> list[tuple[int, str]]:
-    """(location, vehicle) where the location's invariant holds the driving vehicle's own speed
-    within a band at least ``SPEED_BAND`` wide (``speed([20..30]kph)`` held throughout): there the
-    scenario leaves the speed free within bounds, and a change of it is no change made once
-    (``asp/continuous/dynamics.lp``: &steady) but the range's to use (a random start's drift)."""
-    found = []
-    for location in automaton.locations:
-        for vehicle in automaton.actors:
-            if vehicle in automaton.stationary:
-                continue
-            bounds = [
-                b
-                for b in required_bounds(location.invariant)
-                if b.term.quantity == SPEED and b.term.actor == vehicle and b.term.reference is None
-            ]
-            low = max((b.low for b in bounds), default=-math.inf)
-            high = min((b.high for b in bounds), default=math.inf)
-            if bounds and high - low >= SPEED_BAND:
-                found.append((location.id, vehicle))
     return found
 
 

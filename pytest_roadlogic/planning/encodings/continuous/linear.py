@@ -65,17 +65,7 @@ NUDGE_WEIGHT = 0.1
 # drawn rate (at 1, the weight of the acceleration itself, staying at zero would cost as much),
 # and less than a preference, so that it yields to every speed a scenario prefers
 DRIFT_WEIGHT = 2.0
-# a steady (``&steady``: an acceleration at a step where a vehicle's own construct licenses a
-# change over its phase, position(..., at: end) or speed(v, at: end), rather than drives toward a
-# speed) weighs three more: such a change is made once and where the phase asks it, not spread
-# over the phase before a later one (docs/decisions.md)
-STEADY_WEIGHT = 3.0
-WEIGHTS = {
-    "prefer": PREFERENCE_WEIGHT,
-    "nudge": NUDGE_WEIGHT,
-    "drift": DRIFT_WEIGHT,
-    "steady": STEADY_WEIGHT,
-}
+WEIGHTS = {"prefer": PREFERENCE_WEIGHT, "nudge": NUDGE_WEIGHT, "drift": DRIFT_WEIGHT}
 
 
 @dataclass
