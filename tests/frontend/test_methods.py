@@ -116,3 +116,18 @@ def test_a_call_on_a_line_of_its_own_is_checked_and_warned_as_changing_nothing()
     assert "t.osc:6:12: warning: the value of speeds.compute(...) is not used" in result.report()
     bad = report(SPEEDS + PAIR + "    speeds.compute(w: 2mps)\n    fast: speed = 10mps\n" + DO)
     assert "error: method 'compute' has no parameter 'w'" in bad, bad
+
+
+def test_an_actor_types_own_method_leaves_the_librarys_methods_of_its_vehicles_callable():
+    text = (
+        "actor sedan inherits car:\n    def twice(x: length) -> length is expression 2 * x\n"
+        "scenario top:\n    ego: sedan\n    npc: sedan\n"
+        "    gap: length = ego.twice(10m)\n"
+        "    do parallel(duration: 10s):\n"
+        "        ego.drive() with:\n            speed(20mps)\n"
+        "        npc.drive() with:\n            position(gap, ahead_of: ego, at: start)\n"
+        "    cover(space, expression: ego.space_gap(npc), unit: m)\n"
+    )
+    result = check_text(text, "t.osc")
+    assert "has no method" not in result.report(), result.report()
+    assert {n: d.describe() for n, d in result.scenarios[0].space.domains.items()}["gap"] == "20m"

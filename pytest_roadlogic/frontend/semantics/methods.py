@@ -40,6 +40,7 @@ class Methods:
     own: Mapping[str, model.Method]
     field_types: Mapping[str, str]
     type_fields: Mapping[str, tuple[str, ...]]
+    structs: frozenset[str] = frozenset()
 
     @classmethod
     def declared(
@@ -60,7 +61,8 @@ class Methods:
                 current = types.get(current.parent) if current.parent else None
             of_type[name] = {m.name: m for declared in reversed(chain) for m in declared.methods}
             type_fields[name] = tuple(f.name for declared in chain for f in declared.fields)
-        return cls(of_type, {m.name: m for m in own}, {f.name: f.type for f in fields}, type_fields)
+        structs = frozenset(name for name, declared in types.items() if declared.kind == "struct")
+        return cls(of_type, {m.name: m for m in own}, {f.name: f.type for f in fields}, type_fields, structs)
 
     def resolve(self, function: str) -> tuple[model.Method, str | None, str | None] | None:
         """The method ``function`` names, the type that declares it (None for the scenario's own)
@@ -81,12 +83,15 @@ class Methods:
         return None
 
     def unknown_method(self, function: str) -> tuple[str, tuple[str, ...]] | None:
-        """``(type, its methods)`` when ``function`` is ``T.m`` or ``x.m`` on a type that declares
-        methods but none named ``m``; None otherwise."""
+        """``(type, its methods)`` when ``function`` is ``T.m`` or ``x.m`` on a struct type that
+        declares methods but none named ``m``; None otherwise (an actor has the library's methods
+        too: ``ego.space_gap(npc)``)."""
         head, dot, rest = function.partition(".")
         if not dot or "." in rest:
             return None
         type_name = head if head in self.of_type else self.field_types.get(head)
+        if type_name not in self.structs:
+            return None
         methods = self.of_type.get(type_name or "", {})
         if methods and rest not in methods:
             return type_name, tuple(sorted(methods))
@@ -148,8 +153,10 @@ class _Inliner:
         return call
 
     def inline(self, node, stack: tuple[str, ...]):
+        """``node`` with its calls inlined; ``node`` itself where nothing in it changes."""
         if isinstance(node, tuple):
-            return tuple(self.inline(item, stack) for item in node)
+            items = tuple(self.inline(item, stack) for item in node)
+            return node if all(a is b for a, b in zip(items, node, strict=True)) else items
         if isinstance(node, model.Method) or not dataclasses.is_dataclass(node) or isinstance(node, type):
             return node  # a declaration's body is inlined where it is called, with its arguments
         if isinstance(node, model.Call):
@@ -164,8 +171,9 @@ class _Inliner:
         return dataclasses.replace(node, **changes) if changes else node
 
     def call(self, call: model.Call, stack: tuple[str, ...]):
-        arguments = tuple(dataclasses.replace(a, value=self.inline(a.value, stack)) for a in call.arguments)
-        call = dataclasses.replace(call, arguments=arguments)
+        arguments = self.inline(call.arguments, stack)
+        if arguments is not call.arguments:
+            call = dataclasses.replace(call, arguments=arguments)
         found = self.methods.resolve(call.function)
         if found is None:
             unknown = self.methods.unknown_method(call.function)
