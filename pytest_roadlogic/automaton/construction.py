@@ -29,7 +29,7 @@ from ..frontend import model
 from ..frontend.errors import error_at
 from ..frontend.semantics.checked import CheckedScenario
 from ..frontend.semantics.logical import names_by_place
-from ..logic.automaton import Location, PhaseBound, SymbolicAutomaton, Timing, Toward, Transition
+from ..logic.automaton import Ask, Location, PhaseBound, SymbolicAutomaton, Timing, Transition
 from ..logic.guards import LANE, TRUE, Guard, Not, conjunction
 from ..logic.phase import Variant
 from .translation import check_behavior_arguments, duration_interval, phase_guards
@@ -52,7 +52,7 @@ class _Edge:
     # (actor, "lane" | "speed"): what the phases this edge starts ask for already at their first
     # instant (the location before it must bring it about); only theirs, never what members of a
     # parallel staying put asked when they started
-    early: frozenset[tuple[str, str | Toward]] = frozenset()
+    early: frozenset[tuple[str, Ask]] = frozenset()
 
 
 def _simultaneous(source: Key, moves: list[_Edge], target: Key, deaf: frozenset[str] = frozenset()) -> _Edge:
@@ -87,7 +87,7 @@ class _Fragment:
     # locations whose phase ends at the first emission of these events (wait @e, until @e)
     listening: dict[Key, frozenset[str]] = field(default_factory=dict)
     # (actor, "lane" | "speed"): what the actors' own constructs ask of them here (Location.asks)
-    asks: dict[Key, frozenset[tuple[str, str | Toward]]] = field(default_factory=dict)
+    asks: dict[Key, frozenset[tuple[str, Ask]]] = field(default_factory=dict)
 
     def outgoing(self, key: Key) -> list[_Edge]:
         return [e for e in self.edges if e.source == key]
@@ -353,8 +353,8 @@ def _phase(
     labelled: bool,
     variant: Variant,
     drivers: frozenset[str],
-    asks: frozenset[tuple[str, str | Toward]],
-    early: frozenset[tuple[str, str | Toward]],
+    asks: frozenset[tuple[str, Ask]],
+    early: frozenset[tuple[str, Ask]],
 ) -> _Fragment:
     """``init --start--> phase --end--> fin`` for one phase (of an action, or a wait)."""
     i, s, f = ("i", uid), ("s", uid), ("f", uid)
@@ -453,7 +453,7 @@ def _parallel(children: list[_Fragment], location=None) -> _Fragment:
     drivers: dict[Key, frozenset[str]] = {}
     invariants: dict[Key, Guard] = {}
     listening: dict[Key, frozenset[str]] = {}
-    asks: dict[Key, frozenset[tuple[str, str | Toward]]] = {}
+    asks: dict[Key, frozenset[tuple[str, Ask]]] = {}
     for key in seen:
         parts = [c.names[k] for c, k in zip(children, key) if k in c.names]
         labelled = [n for n, is_labelled in parts if is_labelled]
@@ -478,7 +478,7 @@ def _one_of(children: list[_Fragment], uid: int) -> _Fragment:
     drivers: dict[Key, frozenset[str]] = {}
     invariants: dict[Key, Guard] = {}
     listening: dict[Key, frozenset[str]] = {}
-    asks: dict[Key, frozenset[tuple[str, str | Toward]]] = {}
+    asks: dict[Key, frozenset[tuple[str, Ask]]] = {}
     for child in children:
         rename = {child.initial: initial, child.final: final}
         for e in child.edges:

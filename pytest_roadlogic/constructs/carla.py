@@ -3,6 +3,8 @@
 - Lanes are numbered from the left: ``lane(1)`` is the leftmost lane (``from: right`` counts
   from the right). A third of the public CARLA files put one car in ``lane(1)`` and another
   ``right_of`` it, which has no plan under the standard's numbering.
+- ``position(d, ahead_of: x, at: end)`` is reached as CARLA's runner reaches it: the phase is
+  driven at one speed where it can be, not adjusted there for a later phase's target.
 - ``speed(v)`` without ``at:`` is the phase's target speed, as CARLA's runner sets it: from the
   phase's first instant the car drives toward it at a comfortable rate, never away from it nor
   past it, and holds it once reached; it is checked at the phase's end (``at: all`` written out
@@ -22,12 +24,13 @@ from __future__ import annotations
 from ..frontend.semantics.library import DURATION, Binding, Parameter, Signature
 from ..frontend.semantics.tolerances import SPEED_TOLERANCE, widened
 from ..frontend.syntax.units import SPEED
-from ..logic.automaton import SpeedGain
-from ..logic.phase import Phase, Toward
+from ..logic.automaton import SpeedGain, Steady, Toward
+from ..logic.phase import Phase
 from ..settings import CARLA_DIALECT
 from .base import ASKS_SPEED, CheckContext, Modifier, Use
 from .lanes import ChangeLaneModifier, Lane
 from .motion import Drive
+from .position import Position
 from .speed import RELATIONS, Speed
 
 DIALECT = CARLA_DIALECT
@@ -60,6 +63,17 @@ class CarlaSpeed(Speed):
             asked = use.range("speed", SPEED, "a speed such as 20mps")
             low, high = widened(*asked, SPEED_TOLERANCE)
             phase.asks.add(Toward(max(0.0, low), high, max(0.0, (asked[0] + asked[1]) / 2)))
+
+
+class CarlaPosition(Position):
+    """``position(d, ahead_of: x, at: end)``: where the phase's end asks the car to be, which
+    CARLA's runner reaches by driving the phase at one speed; the plan holds one speed there
+    (``Steady``) unless the end needs a change, and does not adjust it for a later phase."""
+
+    def translate(self, use: Use, phase: Phase) -> None:
+        super().translate(use, phase)
+        if self.anchor(use.binding) == "end":
+            phase.asks.add(Steady())
 
 
 class CarlaDrive(Drive):
@@ -134,4 +148,4 @@ class CarlaFollowTrajectory(Modifier):
 
 # CARLA's own constructs and arguments, as CARLA's runner reads them, not the standard's declarations
 CARLA_OWN = (CarlaDrive(), CarlaChangeSpeed(), CarlaChangeLane(), CarlaFollowTrajectory())
-CONSTRUCTS = (CarlaLane(), CarlaSpeed(), *CARLA_OWN)
+CONSTRUCTS = (CarlaLane(), CarlaSpeed(), CarlaPosition(), *CARLA_OWN)

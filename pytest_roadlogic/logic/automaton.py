@@ -28,6 +28,17 @@ class Toward:
 
 
 @dataclass(frozen=True)
+class Steady:
+    """A change of speed its actor's phase licenses only to be where the phase's end asks (CARLA's
+    ``position(..., at: end)``), which CARLA's runner drives at one speed over the phase: the plan
+    keeps the actor's speed there unless the end needs a change, and does not adjust it there for
+    a later phase (a strong preference of the smoothing program, never a reason for no plan)."""
+
+
+Ask = str | Toward | Steady  # what a phase asks an actor: "lane", "speed", a target, one speed held
+
+
+@dataclass(frozen=True)
 class Location:
     id: int
     name: str
@@ -39,7 +50,8 @@ class Location:
     # speed (a lane or change_lane modifier; a speed, position, change_speed ...). An actor
     # changes neither unless asked where it is (least action: docs/language.md, "Unasked").
     # (actor, Toward): a speed it drives toward here (CARLA's speed(v)): changes toward it only.
-    asks: frozenset[tuple[str, str | Toward]] = frozenset()
+    # (actor, Steady): one speed it holds here unless the phase's end needs a change (CARLA's position).
+    asks: frozenset[tuple[str, Ask]] = frozenset()
 
     def asked(self, actor: str, what: str) -> bool:
         return (actor, what) in self.asks
@@ -47,6 +59,10 @@ class Location:
     def toward(self, actor: str) -> Toward | None:
         """The speed band ``actor`` drives toward here, if it is asked one."""
         return next((what for who, what in self.asks if who == actor and isinstance(what, Toward)), None)
+
+    def steady(self) -> list[str]:
+        """Every actor asked here to hold one speed over the phase (``Steady``), in a fixed order."""
+        return sorted({who for who, what in self.asks if isinstance(what, Steady)})
 
     def targets(self) -> list[tuple[str, Toward]]:
         """Every (actor, speed band) driven toward here, in a fixed order."""

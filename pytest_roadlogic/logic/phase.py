@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from .automaton import PhaseBound, Toward
+from .automaton import Ask, PhaseBound
 from .guards import TRUE, Guard, conjunction
 
 
@@ -33,10 +33,11 @@ class Phase:
     drives: bool = True  # whether the actor must make forward progress in this phase
     # what the phase asks of its start and end together (they hold in every variant)
     rates: list[PhaseBound] = field(default_factory=list)
-    # what its constructs ask the actor to change: "lane", "speed" (Construct.asks), or a speed to
-    # drive toward (Toward); and what they ask for already at its first instant (speed(v)
-    # throughout, position(..., at: start)), which the phase before it must bring about
-    asks: set[str | Toward] = field(default_factory=set)
+    # what its constructs ask the actor to change: "lane", "speed" (Construct.asks), a speed to
+    # drive toward (Toward) or one speed held over the phase (Steady); and what they ask for
+    # already at its first instant (speed(v) throughout, position(..., at: start)), which the
+    # phase before it must bring about
+    asks: set[Ask] = field(default_factory=set)
     asks_at_start: set[str] = field(default_factory=set)
 
     def add(self, start: Guard = TRUE, end: Guard = TRUE, invariant: Guard = TRUE) -> None:

@@ -164,3 +164,30 @@ def test_at_start_is_the_at_value_even_where_a_string_parameter_is_named_start(t
     assert npc[0].lane == ego[0].lane + 1  # right of the leftmost lane, at the start only
     assert ego[0].position - npc[0].position == pytest.approx(15, abs=0.6)
     assert npc[-1].position - ego[-1].position == pytest.approx(20, abs=0.6)
+
+
+def test_a_position_asked_at_a_phases_end_is_reached_at_one_speed_and_the_next_target_where_it_is_asked(tmp_path):
+    # written as CARLA's keep_lane example is: the npc passes the ego (its position at the phase's
+    # end), then the next phase targets 30 kph. CARLA's runner drives the passing phase at one
+    # speed and brakes when the target is set; the smoothing had braked the npc through the last
+    # 10 s of the passing phase
+    text = (
+        "scenario pass_then_slow:\n    ego: car\n    npc: car\n"
+        "    do serial:\n"
+        "        get_ahead: parallel(duration: 15s):\n"
+        "            ego.drive() with:\n                speed(30kph)\n                lane(1, at: start)\n"
+        "            npc.drive() with:\n"
+        "                lane(right_of: ego, at: start)\n"
+        "                position(15m, behind: ego, at: start)\n"
+        "                position(20m, ahead_of: ego, at: end)\n"
+        "        slow: parallel(duration: 10s):\n"
+        "            ego.drive()\n"
+        "            npc.drive() with:\n                speed(30kph)\n"
+    )
+    plan, automaton, planner = first_plan(tmp_path, text)
+    # from the second step: the solver may hold the start's position guard a step longer, which
+    # pins the first step's speed to the ego's (docs/decisions.md)
+    passing = [state.speed / KPH for state in plan.states["npc"][2:15]]
+    assert max(passing) - min(passing) < 1.0, [round(v, 1) for v in passing]
+    after = [state.speed / KPH for state in plan.states["npc"][18:]]
+    assert all(abs(v - 30) <= HELD / KPH for v in after), [round(v, 1) for v in after]

@@ -70,6 +70,8 @@ def build_continuous_instance(
             for location in automaton.locations
             for actor, band in location.targets()
         ),
+        # CARLA's position(..., at: end): one speed held over the phase where it can be (dynamics.lp)
+        *(f"steady({location.id},{atom(actor)})." for location in automaton.locations for actor in location.steady()),
         f"#const comfort_up = {number(s.comfortable_acceleration * s.dt)}.",
         f"#const comfort_down = {number(s.comfortable_deceleration * s.dt)}.",
         f"lane_id(0..{automaton.lanes - 1}).",

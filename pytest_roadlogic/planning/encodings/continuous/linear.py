@@ -65,7 +65,16 @@ NUDGE_WEIGHT = 0.1
 # drawn rate (at 1, the weight of the acceleration itself, staying at zero would cost as much),
 # and less than a preference, so that it yields to every speed a scenario prefers
 DRIFT_WEIGHT = 2.0
-WEIGHTS = {"prefer": PREFERENCE_WEIGHT, "nudge": NUDGE_WEIGHT, "drift": DRIFT_WEIGHT}
+# a steady (``&steady``: an acceleration where CARLA's position(..., at: end) asks one speed held
+# over the phase) weighs far more than an acceleration and less than a preference: the phase's end
+# still gets what it needs, and the phase is not used to adjust the speed for a later one
+STEADY_WEIGHT = 30.0
+WEIGHTS = {
+    "prefer": PREFERENCE_WEIGHT,
+    "nudge": NUDGE_WEIGHT,
+    "drift": DRIFT_WEIGHT,
+    "steady": STEADY_WEIGHT,
+}
 
 
 @dataclass

@@ -52,7 +52,7 @@ BACKGROUND = (
 RANDOM_START = (KEEP_LANE, ASP_CONTINUOUS / "start.lp")  # loaded for a random start only, in this order
 # the soft rows clingo-lpx, which checks every row exactly, cannot weigh: a preference binds as a
 # row, a random start's nudges and drifts are left out
-SOFT = {"prefer": "sum", "nudge": None, "drift": None}
+SOFT = {"prefer": "sum", "nudge": None, "drift": None, "steady": None}
 # conflicts a random start's search at its drawn horizon may spend before the shortest horizon's
 # plans are taken instead: a count, not a time, so that every machine stops at the same point (the
 # grid's 50 000 are about 2 s there; each conflict here may cost a linear program)
