@@ -12,8 +12,8 @@
 - ``drive(path, adjust: b)``: CARLA's runner builds a drive from its modifiers and reads none of
   its arguments; ``adjust:`` (public CARLA examples give it) is read with one located warning.
 - ``change_speed(dv)`` and ``change_lane(lane_changes: k, side: s)`` are modifiers, as its runner
-  executes them: the first adds dv to the car's speed over the phase (its runner adds dv to the
-  target speed at the phase's start and holds the new one), the second moves k lanes to the side.
+  executes them: the first adds dv to the car's speed from the phase's start, reached soon and
+  held (its runner adds dv to the target speed there), the second moves k lanes to the side.
 
 Everything else is the standard's. The dialect is chosen by ``--dialect carla`` /
 ``roadlogic_dialect = carla`` or, per file, by a ``conftest.py`` (``pytest_roadlogic_dialect``).
@@ -96,8 +96,9 @@ class CarlaDrive(Drive):
 
 
 class CarlaChangeSpeed(Modifier):
-    """``change_speed(dv)`` on a drive: the speed gains dv over the phase (``SpeedGain``): CARLA's
-    runner sets the car's target speed to the one before plus dv at the phase's start."""
+    """``change_speed(dv)`` on a drive: the speed gains dv over the phase (``SpeedGain``), set as
+    the target at the phase's start and held (the planner's ``gain_target``): CARLA's runner sets
+    the car's target speed to the one before plus dv at the phase's start."""
 
     asks = ASKS_SPEED
     signature = Signature(

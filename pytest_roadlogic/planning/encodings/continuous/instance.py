@@ -261,6 +261,8 @@ def rate_facts(automaton: SymbolicAutomaton, settings: ContinuousSettings, relax
             if isinstance(rate, SpeedGain):  # a gain for every length of the phase
                 low, high = inset(rate.low, rate.high, automaton.planned_margin(rate, settings.speed_margin))
                 facts.append(f"mean_acceleration({r},{phase},{actor}).")
+                if math.isfinite(low) and math.isfinite(high):  # set as the target from the start
+                    facts.append(f"gain_target({r},{phase},{actor},{number((low + high) / 2)}).")
                 for length in range(shortest, longest + 1):
                     if math.isfinite(low):
                         facts.append(f"gain_at_least({r},{length},{number(low)}).")
