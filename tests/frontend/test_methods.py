@@ -131,3 +131,20 @@ def test_an_actor_types_own_method_leaves_the_librarys_methods_of_its_vehicles_c
     result = check_text(text, "t.osc")
     assert "has no method" not in result.report(), result.report()
     assert {n: d.describe() for n, d in result.scenarios[0].space.domains.items()}["gap"] == "20m"
+
+
+def test_methods_that_multiply_themselves_are_refused_quickly_not_expanded_without_end():
+    # each level uses the one below four times (4^16 terms), or nests its own calls in an argument
+    levels = [PAIR, "    def d0(x: length) -> length is expression x\n"]
+    levels += [
+        f"    def d{i}(x: length) -> length is expression d{i - 1}(x) + d{i - 1}(x) + d{i - 1}(x) + d{i - 1}(x)\n"
+        for i in range(1, 17)
+    ]
+    wide = "".join(levels) + "    gap: length = d16(1cm)\n"
+    nested = PAIR + "    def q(x: length) -> length is expression x + x + x + x\n"
+    nested += "    gap: length = " + "q(" * 16 + "1cm" + ")" * 16 + "\n"
+    tail = "    do parallel(duration: 5s):\n        ego.drive()\n        npc.drive() with:\n"
+    tail += "            position(gap, ahead_of: ego, at: start)\n"
+    wide_report, nested_report = report(wide + tail), report(nested + tail)
+    assert "error: methods call each other more than 16 deep here" in wide_report, wide_report[:500]
+    assert "expands to an expression of more than 10,000 terms" in nested_report, nested_report[:500]

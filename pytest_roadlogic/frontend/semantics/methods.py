@@ -29,6 +29,13 @@ from .invocation import substitute_names
 
 # methods inside methods: deeper than this is a method that calls itself
 MAX_DEPTH = 16
+# nodes of one call's expression once its methods are inlined: a method that uses its argument
+# several times, called within itself a few levels deep, grows without bound (4 uses, 16 levels:
+# 4^16 nodes), and every later stage walks the expression
+MAX_NODES = 10_000
+# calls inlined in one scenario: past this each further call is refused, so that a method that
+# calls another several times, a few levels deep, cannot make the inlining itself take forever
+MAX_CALLS = 10_000
 
 
 @dataclasses.dataclass(frozen=True)
@@ -106,6 +113,7 @@ class Inlined:
     node: object
     problems: list[Diagnostic] = dataclasses.field(default_factory=list)
     refused: set[SourceLocation] = dataclasses.field(default_factory=set)
+    calls: int = 0  # calls inlined so far (MAX_CALLS)
 
 
 def inline_methods(node, methods: Methods) -> Inlined:
@@ -148,8 +156,10 @@ class _Inliner:
     result: Inlined
 
     def refuse(self, call: model.Call, location: SourceLocation, message: str, hint: str) -> model.Call:
-        self.result.problems.append(Diagnostic(location, message, hint))
-        self.result.refused.add(call.location)
+        """``call`` left as it is, with the problem said once for its place."""
+        if call.location not in self.result.refused:
+            self.result.problems.append(Diagnostic(location, message, hint))
+            self.result.refused.add(call.location)
         return call
 
     def inline(self, node, stack: tuple[str, ...]):
@@ -171,6 +181,8 @@ class _Inliner:
         return dataclasses.replace(node, **changes) if changes else node
 
     def call(self, call: model.Call, stack: tuple[str, ...]):
+        if call.location in self.result.refused:
+            return call  # refused where it stands: said once, not again inside a body that uses it
         arguments = self.inline(call.arguments, stack)
         if arguments is not call.arguments:
             call = dataclasses.replace(call, arguments=arguments)
@@ -199,13 +211,28 @@ class _Inliner:
                 f"method {method.name!r} is declared `is undefined`: it has no value here",
                 f"give it a body on line {method.location.line}: `is expression ...`",
             )
+        self.result.calls += 1
+        if self.result.calls > MAX_CALLS:
+            return self.refuse(
+                call,
+                call.location,
+                f"more than {MAX_CALLS:,} method calls to inline in this scenario",
+                "write the value out, or call the methods fewer times within each other",
+            )
         key = f"{type_name or ''}.{method.name}"
-        if key in stack or len(stack) >= MAX_DEPTH:
+        if key in stack:
             return self.refuse(
                 call,
                 call.location,
                 f"method {method.name!r} calls itself",
                 "a method's value must not depend on itself; write the value out",
+            )
+        if len(stack) >= MAX_DEPTH:
+            return self.refuse(
+                call,
+                call.location,
+                f"methods call each other more than {MAX_DEPTH} deep here",
+                "write the value out, or call fewer methods within each other",
             )
         bound = self.bind(call, method)
         if bound is None:
@@ -213,7 +240,15 @@ class _Inliner:
         if receiver is not None:
             for name in self.methods.type_fields.get(type_name or "", ()):
                 bound.setdefault(name, model.Name(f"{receiver}.{name}", call.location))
-        return self.inline(substitute_names(method.body, bound), (*stack, key))
+        inlined = self.inline(substitute_names(method.body, bound), (*stack, key))
+        if tree_size(inlined) > MAX_NODES:
+            return self.refuse(
+                call,
+                call.location,
+                f"the call of method {method.name!r} expands to an expression of more than {MAX_NODES:,} terms",
+                "write the value out, or call the methods fewer times within each other",
+            )
+        return inlined
 
     def bind(self, call: model.Call, method: model.Method) -> dict[str, model.Expression] | None:
         """Each parameter's expression (its argument's, else its default); None after a problem."""
@@ -257,3 +292,21 @@ class _Inliner:
                 return None
             bound[parameter.name] = parameter.default
         return bound
+
+
+def tree_size(node, sizes: dict[int, int] | None = None) -> int:
+    """The nodes of ``node`` read as a tree (a shared subexpression counted each time it is used),
+    counted in time linear in the distinct nodes: inlining shares an argument wherever the body
+    uses it, so the tree may be exponentially larger than the objects that make it."""
+    sizes = {} if sizes is None else sizes
+    key = id(node)
+    if key in sizes:
+        return sizes[key]
+    if isinstance(node, tuple):
+        size = sum(tree_size(item, sizes) for item in node)
+    elif dataclasses.is_dataclass(node) and not isinstance(node, type):
+        size = 1 + sum(tree_size(getattr(node, field.name), sizes) for field in dataclasses.fields(node))
+    else:
+        size = 0
+    sizes[key] = size
+    return size
