@@ -15,8 +15,8 @@ from .common import (
     EXIT_REJECTED,
     RUN_FLAGS,
     executor_flags,
-    executor_refused,
     flag,
+    on_executor,
     run_settings,
     setting_flags,
 )
@@ -161,13 +161,7 @@ def _bench_settings(args: argparse.Namespace):
 def _bench_run(args: argparse.Namespace, settings):
     """Run the bench's suites with a progress bar on stderr, on the executor ``--jobs`` or ``--ray``
     asks for; the results, or the exit code after saying why the executor cannot run."""
-    from ..executors import ExecutorError, executor
-
-    try:
-        with executor(args.jobs, args.ray) as chosen:
-            return _bench_on(args, settings, chosen)
-    except ExecutorError as error:
-        return executor_refused(args, error)
+    return on_executor(args, lambda chosen: _bench_on(args, settings, chosen))
 
 
 def _bench_on(args: argparse.Namespace, settings, executor):

@@ -164,10 +164,17 @@ def executor_flags(command: argparse.ArgumentParser, what: str) -> None:
     )
 
 
-def executor_refused(args: argparse.Namespace, error: Exception) -> int:
-    """Say why the executor ``--jobs``/``--ray`` asks for cannot run; the exit code."""
-    print(f"roadlogic {args.command}: --{'ray' if args.ray is not None else 'jobs'}: {error}", file=sys.stderr)
-    return EXIT_INPUT
+def on_executor(args: argparse.Namespace, work):
+    """``work(executor)`` on the executor ``--jobs`` or ``--ray`` asks for, closed after; instead
+    the exit code, after saying why, when that executor cannot run."""
+    from ..executors import ExecutorError, executor
+
+    try:
+        with executor(args.jobs, args.ray) as chosen:
+            return work(chosen)
+    except ExecutorError as error:
+        print(f"roadlogic {args.command}: --{'ray' if args.ray is not None else 'jobs'}: {error}", file=sys.stderr)
+        return EXIT_INPUT
 
 
 def scenario_source(args: argparse.Namespace):

@@ -18,8 +18,8 @@ from .common import (
     EXIT_REJECTED,
     RUN_FLAGS,
     executor_flags,
-    executor_refused,
     flag,
+    on_executor,
     reporting_input_errors,
     run_settings,
     scenario_command,
@@ -56,8 +56,6 @@ def add(commands) -> None:
 
 
 def _cover(args: argparse.Namespace) -> int:
-    from ..executors import ExecutorError, executor
-
     source = scenario_source(args)
     checked = reporting_input_errors(args, source.load)
     if isinstance(checked, int):
@@ -69,11 +67,7 @@ def _cover(args: argparse.Namespace) -> int:
             file=sys.stderr,
         )
         return EXIT_INPUT
-    try:
-        with executor(args.jobs, args.ray) as chosen:
-            campaign = reporting_input_errors(args, lambda: _campaign(args, source, chosen))
-    except ExecutorError as error:
-        return executor_refused(args, error)
+    campaign = on_executor(args, lambda chosen: reporting_input_errors(args, lambda: _campaign(args, source, chosen)))
     if isinstance(campaign, int):
         return campaign
     return _report(args, checked, campaign)

@@ -18,8 +18,8 @@ from .common import (
     EXIT_REJECTED,
     RUN_FLAGS,
     executor_flags,
-    executor_refused,
     flag,
+    on_executor,
     reporting_input_errors,
     run_settings,
     scenario_command,
@@ -45,8 +45,6 @@ def add(commands) -> None:
 
 
 def _falsify(args: argparse.Namespace) -> int:
-    from ..executors import ExecutorError, executor
-
     if args.searches < 1 or args.budget < 1:
         print("roadlogic falsify: --searches and --budget need at least 1", file=sys.stderr)
         return EXIT_INPUT
@@ -55,16 +53,9 @@ def _falsify(args: argparse.Namespace) -> int:
     if isinstance(checked, int):
         return checked
     settings = run_settings(args)
-    try:
-        with executor(args.jobs, args.ray) as chosen:
-            print(
-                f"{args.file}: {args.searches} searches ({settings.search}) of up to {args.budget} samples, "
-                f"seed {settings.seed}; {chosen.describe()}",
-                file=sys.stderr,
-            )
-            outcomes = reporting_input_errors(args, lambda: _searches(args, source, settings, chosen))
-    except ExecutorError as error:
-        return executor_refused(args, error)
+    outcomes = on_executor(
+        args, lambda chosen: reporting_input_errors(args, lambda: _searches(args, source, settings, chosen))
+    )
     if isinstance(outcomes, int):
         return outcomes
     return _report(outcomes, args.budget)
@@ -74,6 +65,11 @@ def _searches(args: argparse.Namespace, source, settings, chosen):
     from ..evaluation.falsification_campaign import falsify
     from ..progress import ProgressBar
 
+    print(
+        f"{args.file}: {args.searches} searches ({settings.search}) of up to {args.budget} samples, "
+        f"seed {settings.seed}; {chosen.describe()}",
+        file=sys.stderr,
+    )
     bar = ProgressBar(args.searches)
     failures = 0
 
