@@ -40,6 +40,7 @@ def build_continuous_instance(
     s = settings
     vehicles = automaton.actors
     start_low, start_high = s.start_band()
+    first = first_speeds(automaton, s)
     base = [
         "% scenario instance, continuous encoding (generated)",
         f"#const dt = {number(s.dt)}.",
@@ -52,7 +53,7 @@ def build_continuous_instance(
         f"#const vmax = {number(s.max_speed)}.",
         f"#const v0min = {number(start_low)}.",
         f"#const v0max = {number(start_high)}.",
-        f"#const v0floor = {number(start_floor(automaton, s))}.",
+        f"#const v0floor = {number(start_floor(first, s))}.",
         f"#const gap = {number(spacing(automaton, s))}.",
         f"#const closing_time = {number(s.closing_time)}.",
         f"#const lane_change_speed = {number(s.lane_change_speed)}.",
@@ -63,7 +64,7 @@ def build_continuous_instance(
         *(f"may_stop({atom(v)})." for v in sorted(stopping(automaton, s))),
         *(f"brisk({atom(v)})." for v in sorted(brisk(automaton))),
         *([f"self_driven({atom(s.self_driven)})."] if s.self_driven in vehicles else []),
-        *(f"start_speed({atom(v)},{number(x)})." for v, x in sorted(first_speeds(automaton, s).items())),
+        *(f"start_speed({atom(v)},{number(x)})." for v, x in sorted(first.items())),
         # CARLA's speed(v): a band driven toward from a phase's start (asp/continuous/toward.lp)
         *(
             f"toward({location.id},{atom(actor)},{number(band.low)},{number(band.high)},{number(band.value)})."
@@ -166,14 +167,15 @@ def first_speeds(automaton: SymbolicAutomaton, settings: ContinuousSettings) -> 
     return found
 
 
-def start_floor(automaton: SymbolicAutomaton, settings: ContinuousSettings) -> float:
+def start_floor(first: dict[str, float], settings: ContinuousSettings) -> float:
     """The least speed (m/s) a vehicle whose start speed the scenario leaves open is strongly
-    preferred to start at: the settings' floor (a crawl the motion planner tracks badly), but no
+    preferred to start at, given ``first``, the start speeds the scenario asks (``first_speeds``):
+    the settings' floor (a crawl the motion planner tracks badly), but no
     more than the road's typical speed nor the slowest start speed the scenario asks of another
     vehicle. Why the last: beside a car asked to drive at 20 kph (CARLA's cut-in examples), 20 kph
     is no crawl, and a floor above it makes the other car start faster and brake all phase long to
     keep its position at the phase's end, a change nothing asks for."""
-    asked = [speed for speed in first_speeds(automaton, settings).values() if speed > 0]
+    asked = [speed for speed in first.values() if speed > 0]
     return min(settings.start_floor, settings.start_band()[0], *asked)
 
 
