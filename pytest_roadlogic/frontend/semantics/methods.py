@@ -71,6 +71,11 @@ class Methods:
         structs = frozenset(name for name, declared in types.items() if declared.kind == "struct")
         return cls(of_type, {m.name: m for m in own}, {f.name: f.type for f in fields}, type_fields, structs)
 
+    @property
+    def none(self) -> bool:
+        """Whether no type and not the scenario declare any method: then no call can name one."""
+        return not self.own and not any(self.of_type.values())
+
     def resolve(self, function: str) -> tuple[model.Method, str | None, str | None] | None:
         """The method ``function`` names, the type that declares it (None for the scenario's own)
         and the field it is called on (None when called on the type or the scenario)."""
@@ -120,7 +125,8 @@ def inline_methods(node, methods: Methods) -> Inlined:
     """``node`` (a model node or a tuple of them) with every call of an expression method replaced
     by the method's body bound to the call's arguments."""
     result = Inlined(node)
-    result.node = _Inliner(methods, result).inline(node, ())
+    if not methods.none:  # most files declare none: their trees are left as they are, unwalked
+        result.node = _Inliner(methods, result).inline(node, ())
     return result
 
 
@@ -129,6 +135,8 @@ def inline_scenario(scenario: model.Scenario, methods: Methods) -> Inlined:
     (CARLA's ``speeds.compute(x: 2, y: 3)`` on a line of its own) are checked as calls and dropped,
     with a warning: a pure method's value that nothing uses changes nothing."""
     result = inline_methods(scenario, methods)
+    if methods.none:
+        return result
     inliner = _Inliner(methods, result)
     kept = []
     for modifier in result.node.modifiers:
