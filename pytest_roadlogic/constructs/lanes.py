@@ -143,6 +143,11 @@ class _LaneChange:
 
     count: ClassVar[str] = "num_of_lanes"  # the argument that says how many lanes
 
+    def asked_at_start(self, binding: Binding) -> bool:
+        """A change of lanes is asked within its phase, from whichever lane the phase starts in:
+        the modifier asks no lane at the phase's first instant (no move in the phase before)."""
+        return False
+
     def check(self, binding: Binding, context: CheckContext) -> None:
         count = binding[self.count]
         if count is None:

@@ -294,9 +294,17 @@ class IncrementalPlanner:
         if deadline - time.monotonic() < PREPARATION_PER_GROUNDING * self._grounding.get(control, 0.0):
             raise PlanningTimeout(message)
 
-    def _next_model(self, control: clingo.Control, deadline: float, where: str, read, conflicts: int | None = None):
-        """What ``read(model, theory)`` makes of the next model; None when there is none, or none
-        within ``conflicts``. ``where`` ends the time limit's message."""
+    def _next_model(
+        self,
+        control: clingo.Control,
+        deadline: float,
+        where: str,
+        read,
+        conflicts: int | None = None,
+        assumptions: list[tuple[clingo.Symbol, bool]] = (),
+    ):
+        """What ``read(model, theory)`` makes of the next model (with ``assumptions`` held); None
+        when there is none, or none within ``conflicts``. ``where`` ends the time limit's message."""
         start = time.perf_counter()
         answer = None
         theory = self._theories[control]
@@ -305,7 +313,7 @@ class IncrementalPlanner:
         message = f"planning ran out of its time limit ({self.settings.time_limit:g} s){where}"
         self._time_to_prepare(control, deadline, message)
         unproven = False  # a model found whose cost a better one may still beat
-        with control.solve(yield_=True, async_=True) as handle:
+        with control.solve(assumptions=list(assumptions), yield_=True, async_=True) as handle:
             self.wait(handle, deadline, message)
             model = handle.model()
             while model is not None:
@@ -326,7 +334,7 @@ class IncrementalPlanner:
         if unproven:
             # the count of conflicts ran out while optimising: the search that found a model goes
             # on to the best one without it (a count, so every machine stops at the same model)
-            return self._next_model(control, deadline, where, read)
+            return self._next_model(control, deadline, where, read, assumptions=assumptions)
         return answer
 
     def _forbid(

@@ -73,7 +73,7 @@ def _children(guard: Guard) -> tuple[Guard, ...]:
     return ()
 
 
-def _bound_of(guard: Guard) -> Bound | None:
+def bound_of(guard: Guard) -> Bound | None:
     """The bound a guard node stands for: itself, or the one its negation sits on (negation normal form)."""
     bound = guard.part if isinstance(guard, Not) else guard
     return bound if isinstance(bound, Bound) else None
@@ -85,7 +85,7 @@ def relaxable_constraints(automaton: SymbolicAutomaton) -> list:
     found: dict = {}
     _, numbering = guard_nodes(automaton)
     for guard in numbering:
-        bound = _bound_of(guard)
+        bound = bound_of(guard)
         if bound is not None and bound.source is not None:
             found.setdefault(bound.source, bound)
     for timing in automaton.timings.values():
@@ -122,7 +122,7 @@ def guard_facts(automaton: SymbolicAutomaton, relax: dict, node_facts) -> list[s
     _, numbering = guard_nodes(automaton)
     facts = ["% guard nodes (asp/guards.lp)"]
     for guard, node in numbering.items():
-        bound = _bound_of(guard)
+        bound = bound_of(guard)
         facts.append(f"% node {node}: {guard}{origin(automaton, bound)}")
         if isinstance(guard, (And, Or)):
             facts.append(f"{'conjunction' if isinstance(guard, And) else 'disjunction'}({node}).")

@@ -189,9 +189,86 @@ def test_a_position_asked_at_a_phases_end_is_reached_at_one_speed_and_the_next_t
         "            npc.drive() with:\n                speed(30kph)\n"
     )
     plan, automaton, planner = first_plan(tmp_path, text)
-    # from the second step: the solver may hold the start's position guard a step longer, which
-    # pins the first step's speed to the ego's (docs/decisions.md)
-    passing = [state.speed / KPH for state in plan.states["npc"][2:15]]
+    # from the start: a guard the solver set where the run does not need it (the start's 15 m)
+    # is set aside, so the npc is not held at the ego's speed a step longer
+    passing = [state.speed / KPH for state in plan.states["npc"][:16]]
     assert max(passing) - min(passing) < 1.0, [round(v, 1) for v in passing]
     after = [state.speed / KPH for state in plan.states["npc"][18:]]
     assert all(abs(v - 30) <= HELD / KPH for v in after), [round(v, 1) for v in after]
+
+
+CUT_IN_AND_SLOW = """scenario cut_in_and_slow:
+    ego: car
+    npc: car
+    do serial:
+        get_ahead: parallel(duration: 30s):
+            ego.drive() with:
+                speed(30kph)
+                lane(1, at: start)
+            npc.drive() with:
+                lane(right_of: ego, at: start)
+                position(15m, behind: ego, at: start)
+                position(20m, ahead_of: ego, at: end)
+        change_lane: parallel(duration: 5s):
+            ego.drive()
+            npc.drive() with:
+                lane(same_as: ego, at: end)
+        slow: parallel(duration: 20s):
+            ego.drive()
+            npc.drive() with:
+                speed(10kph)
+"""
+
+
+def test_a_target_slower_than_the_car_is_braked_for_in_its_own_phase_not_in_the_phases_before(tmp_path):
+    # written as CARLA's cut-in examples are: the npc passes at one speed, cuts in, then slows to
+    # 10 kph. CARLA's runner sets the 10 kph target when the slow phase begins; the plan had the
+    # npc slow by 5-8 kph in the passing phase's last 2 s (a guess of the target's direction held
+    # its speed entering the slow phase at the target's band)
+    plan, _, _ = first_plan(tmp_path, CUT_IN_AND_SLOW)
+    slow_starts = [step for step, _ in plan.transitions][2]
+    before = [state.speed / KPH for state in plan.states["npc"][: slow_starts + 1]]
+    assert max(before) - min(before) < 1.0, [round(v, 1) for v in before]
+    after = [state.speed / KPH for state in plan.states["npc"][slow_starts + 4 :]]
+    assert all(abs(v - 10) <= HELD / KPH for v in after), [round(v, 1) for v in after]
+
+
+CHANGE_LANE_LEFT = """scenario change_lane_left:
+    ego: car
+    npc: car
+    do serial:
+        get_ahead: parallel(duration: 15s):
+            ego.drive() with:
+                speed(20kph)
+                lane(1, at: start)
+            npc.drive() with:
+                lane(right_of: ego, at: start)
+                position(15m, behind: ego, at: start)
+                position(20m, ahead_of: ego, at: end)
+        change: parallel(duration: 5s):
+            ego.drive()
+            npc.drive() with:
+                change_lane(lane_changes: [1..2], side: left)
+"""
+
+
+def test_change_lane_moves_only_in_its_own_phase_from_the_lane_the_phase_starts_in(tmp_path):
+    # as CARLA's change_lane example: the npc had moved two lanes right in the passing phase, to
+    # change one lane left in the next (the modifier had licensed a move into any starting lane)
+    plan, _, _ = first_plan(tmp_path, CHANGE_LANE_LEFT)
+    change_starts = [step for step, _ in plan.transitions][1]
+    npc, ego = plan.states["npc"], plan.states["ego"]
+    assert {state.lane for state in npc[: change_starts + 1]} == {ego[0].lane + 1}
+    assert npc[-1].lane == ego[0].lane
+
+
+def test_an_actor_field_whose_value_is_another_actor_is_that_actor_not_a_car_of_its_own(tmp_path):
+    # as CARLA's emit example writes it (other_car: Rubicon = npc): it had planned a third car
+    text = CUT_IN_AND_SLOW.replace("    npc: car\n", "    npc: car\n    other_car: car = npc\n").replace(
+        "            npc.drive() with:\n                speed(10kph)",
+        "            other_car.drive() with:\n                speed(10kph)",
+    )
+    assert "other_car.drive()" in text
+    plan, _, _ = first_plan(tmp_path, text)
+    assert sorted(plan.states) == ["ego", "npc"]
+    assert plan.states["npc"][-1].speed == pytest.approx(10 * KPH, abs=HELD)

@@ -70,7 +70,7 @@ def test_a_conflict_names_exactly_the_clashing_choices():
     conflict, solution = check_rows(program, [2, 3, 4])
     assert solution is None and conflict == [2, 3]
     conflict, solution = check_rows(program, [2, 4])
-    assert conflict is None and 5.0 - 1e-7 <= solution[x] <= 100 + 1e-7
+    assert conflict is None and 5.0 - 1e-7 <= solution.values[x] <= 100 + 1e-7
 
 
 def test_constraints_of_later_steps_join_those_of_earlier_ones():

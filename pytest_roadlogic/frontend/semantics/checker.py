@@ -32,7 +32,7 @@ from .events import EventChecks
 from .field_types import FieldTyping
 from .imports import ImportLoading
 from .inheritance import inherited
-from .invocation import RECURSION, called_scenarios, expand_calls, substitute_names
+from .invocation import RECURSION, called_scenarios, expand_calls, resolve_actor_aliases, substitute_names
 from .logical import logical_parameters_of, way_parameters
 from .methods import Methods, inline_methods, inline_scenario
 from .parameters import ParameterSpace, parameter_space
@@ -281,12 +281,12 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks):
                     "rename one of them",
                 )
             seen[scenario.name] = scenario
-            scenario, problems = expand_calls(
-                callable_[scenario.name], callable_, is_action, lambda f: self._field_kind(self._aliased(f)) == "actor"
-            )
+            is_actor = lambda f: self._field_kind(self._aliased(f)) == "actor"  # noqa: E731
+            scenario, problems = expand_calls(callable_[scenario.name], callable_, is_action, is_actor)
             self.diagnostics.extend(problems)
             if any(RECURSION in problem.message for problem in problems):
                 continue  # the call left in place would only be reported again as an unknown action
+            scenario = resolve_actor_aliases(scenario, is_actor)
             scenario = self._string_constants(scenario, globals_)
             checked, space, lanes = self._scenario(scenario, globals_)
             try:

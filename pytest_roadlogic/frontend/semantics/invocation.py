@@ -239,3 +239,44 @@ def _relabel(behavior, prefix: str):
             behavior, label=label, children=tuple(_relabel(c, prefix) for c in behavior.children)
         )
     return dataclasses.replace(behavior, label=label)
+
+
+def resolve_actor_aliases(scenario: model.Scenario, is_actor: Callable[[model.Field], bool]) -> model.Scenario:
+    """``scenario`` with every actor field whose value names another of its actors
+    (``other_car: Rubicon = npc``, as CARLA's emit example writes it) read as that actor: an
+    actor-typed field holds a reference to an actor, so the name is one more name of the same
+    vehicle, never a vehicle of its own. The field is dropped and its name replaced wherever the
+    scenario uses it (actions, modifiers, events, constraints)."""
+    actors = {f.name for f in scenario.fields if is_actor(f)}
+    aliases: dict[str, str] = {}
+    for field in scenario.fields:
+        if field.name in actors and isinstance(field.default, model.Name) and field.default.enum is None:
+            target = field.default.name
+            if target in actors and target != field.name:
+                aliases[field.name] = target
+    if not aliases:
+        return scenario
+
+    def resolved(name: str) -> str:
+        seen = {name}
+        while name in aliases and aliases[name] not in seen:
+            name = aliases[name]
+            seen.add(name)
+        return name
+
+    substitution = {
+        alias: model.Name(resolved(alias), field.location)
+        for field in scenario.fields
+        if (alias := field.name) in aliases
+    }
+    behaviors = tuple(substitute_names(b, substitution) for b in scenario.behaviors)
+    return dataclasses.replace(
+        scenario,
+        fields=tuple(f for f in scenario.fields if f.name not in aliases),
+        constraints=substitute_names(scenario.constraints, substitution),
+        events=substitute_names(scenario.events, substitution),
+        modifiers=substitute_names(scenario.modifiers, substitution),
+        coverage=substitute_names(scenario.coverage, substitution),
+        behaviors=behaviors,
+        behavior=behaviors[0] if behaviors else None,
+    )

@@ -66,9 +66,10 @@ NUDGE_WEIGHT = 0.1
 # and less than a preference, so that it yields to every speed a scenario prefers
 DRIFT_WEIGHT = 2.0
 # a steady (``&steady``: an acceleration where CARLA's position(..., at: end) asks one speed held
-# over the phase) weighs far more than an acceleration and less than a preference: the phase's end
-# still gets what it needs, and the phase is not used to adjust the speed for a later one
-STEADY_WEIGHT = 30.0
+# over the phase) weighs ten preferences: changing speed there for a later phase's target costs
+# more than missing that target for the ten steps a comfortable change to it may take, so the
+# phase is not used to adjust the speed for a later one (its own end, a hard row, still holds)
+STEADY_WEIGHT = 1000.0
 WEIGHTS = {
     "prefer": PREFERENCE_WEIGHT,
     "nudge": NUDGE_WEIGHT,
@@ -239,7 +240,7 @@ class LazyLinearPropagator:
     def __init__(self) -> None:
         self.program = LinearProgram()
         self.seen: set[tuple[int, str]] = set()
-        self.solution: dict[int, np.ndarray] = {}
+        self.solution: dict[int, Smoothed] = {}  # per solver thread: its last model's
 
     def init(self, init: clingo.PropagateInit) -> None:
         # called on every solve of a multi-shot control, with the theory atoms grounded since the
@@ -273,9 +274,9 @@ class LazyLinearPropagator:
         on = [literal for literal in self.program.switched if control.assignment.is_true(literal)]
         # a preference's literal is its own (its body's), not always one that switches a constraint
         preferring = [literal for literal in self.program.preferred if literal and control.assignment.is_true(literal)]
-        conflict, solution = check_rows(self.program, on, preferring)
+        conflict, smoothed = check_rows(self.program, on, preferring)
         if conflict is None:
-            self.solution[control.thread_id] = solution
+            self.solution[control.thread_id] = smoothed
             return
         if not control.add_nogood(conflict, lock=True):
             return
@@ -466,9 +467,18 @@ def _elastic_conflict(program: LinearProgram, on: list[int]) -> list[int] | None
     return conflict or sorted(set(on))
 
 
+@dataclass
+class Smoothed:
+    """A feasible program's smoothest solution (``smooth``): the variables' values, and its cost
+    (the absolute accelerations and their changes, and the weighted misses of the preferences)."""
+
+    values: np.ndarray
+    cost: float
+
+
 def check_rows(
     program: LinearProgram, on: list[int], preferring: list[int] | None = None
-) -> tuple[list[int] | None, np.ndarray | None]:
+) -> tuple[list[int] | None, Smoothed | None]:
     """(None, a smooth solution) when the constraints that always hold and those of the literals
     ``on`` can hold together, else (the literals of an infeasible part, None). The solution meets
     the preferences that always apply and those of the literals ``preferring`` (default: ``on``)."""
@@ -487,12 +497,12 @@ def check_rows(
         for literal in (0, *(on if preferring is None else preferring))
         for row in program.preferred.get(literal, ())
     ]
-    solution = smooth(program, rows, equalities, preferred)
-    if solution is None:
+    smoothed = smooth(program, rows, equalities, preferred)
+    if smoothed is None:
         # infeasible without any switched constraint to blame (the constraints that always hold
         # clash: an empty nogood), or a numerical failure: never a model without values
         return sorted(set(on)), None
-    return None, solution
+    return None, smoothed
 
 
 def _split(rows: list[Row]) -> list[Row]:
@@ -502,7 +512,7 @@ def _split(rows: list[Row]) -> list[Row]:
 
 def smooth(
     program: LinearProgram, inequalities, equalities, preferred: list[tuple[Row, float]] = ()
-) -> np.ndarray | None:
+) -> Smoothed | None:
     """A solution that minimises the absolute accelerations and their changes (variables named
     ``a(V,t)``) and what the preferences are missed by (``PREFERENCE_WEIGHT`` each), among all
     that meet the constraints."""
@@ -534,7 +544,7 @@ def smooth(
     result = solve_linear(
         cost, a_ub, np.concatenate([b, extra_b]), a_eq, eq_b, np.concatenate([np.full(n, -np.inf), np.zeros(slacks)])
     )
-    return result.x[:n] if result.optimal else None
+    return Smoothed(result.x[:n], result.cost) if result.optimal else None
 
 
 class LazyLinearTheory:
@@ -556,7 +566,12 @@ class LazyLinearTheory:
         pass
 
     def assignment(self, thread_id: int = 0):
-        solution = self.propagator.solution.get(thread_id)
-        if solution is None:
+        smoothed = self.propagator.solution.get(thread_id)
+        if smoothed is None:
             return []
-        return list(zip(self.propagator.program.symbols, solution.tolist()))
+        return list(zip(self.propagator.program.symbols, smoothed.values.tolist()))
+
+    def cost(self, thread_id: int = 0) -> float:
+        """What the smoothing of the thread's last model cost (``Smoothed.cost``)."""
+        smoothed = self.propagator.solution.get(thread_id)
+        return math.inf if smoothed is None else smoothed.cost

@@ -30,6 +30,7 @@ from ...errors import HorizonTooShort, NoPlanError, PlanningTimeout
 from ...plan import Plan
 from ...protocol import Past
 from .decode import decode_plan
+from .idle import GuardTree, idle_guards
 from .instance import build_continuous_instance, decimal
 from .linear import LazyLinearTheory, theory_program
 from .preferences import farthest, start_preferences
@@ -57,6 +58,10 @@ SOFT = {"prefer": "sum", "nudge": None, "drift": None, "steady": None}
 # plans are taken instead: a count, not a time, so that every machine stops at the same point (the
 # grid's 50 000 are about 2 s there; each conflict here may cost a linear program)
 STRETCH_CONFLICTS = 2_000
+# how near a target (m/s) a speed entering its phase is taken to lie on neither side of it
+SIDE = 1e-4
+# how many times a model's idle guards are set aside (a new model may hold others idle)
+IDLE_ROUNDS = 3
 
 
 def exact_rows(statement, add) -> None:
@@ -261,14 +266,77 @@ class ContinuousPlanner(IncrementalPlanner):
         self, control, deadline: float, where: str, conflicts: int | None = None
     ) -> tuple[list, dict[str, object]] | None:
         """(shown symbols, the linear program's values) of the next model; None when there is none,
-        or none within ``conflicts``."""
+        or none within ``conflicts``. The model's run and lanes as found, its values as the scenario
+        asks them (``_refined``)."""
 
-        def answer(model, theory) -> tuple[list, dict[str, object]]:
-            return list(model.symbols(shown=True)), {
-                str(key): value for key, value in theory.assignment(model.thread_id)
-            }
+        lazy = self.settings.theory != "lpx"
 
-        return self._next_model(control, deadline, f" {where}", answer, conflicts)
+        def answer(model, theory) -> tuple[list, dict[str, object], tuple]:
+            values = {str(key): value for key, value in theory.assignment(model.thread_id)}
+            cost = (*model.cost, theory.cost(model.thread_id) if lazy else 0.0)
+            return list(model.symbols(shown=True)), values, cost
+
+        found = self._next_model(control, deadline, f" {where}", answer, conflicts)
+        if found is not None and lazy:
+            found = self._refined(
+                control,
+                found,
+                lambda assumed: self._next_model(control, deadline, f" {where}", answer, conflicts, assumed),
+            )
+        return None if found is None else found[:2]
+
+    @functools.cached_property
+    def _guard_tree(self) -> GuardTree:
+        """The automaton's guard nodes as the instance numbers them (built once per planner)."""
+        return GuardTree(self.automaton)
+
+    def _refined(self, control, found: tuple, solve) -> tuple:
+        """``found`` (a model's symbols, values and costs), or the model of the same run and lanes
+        (its ``fire`` and ``lane`` atoms assumed; ``solve(assumptions)`` gives it) whose values
+        hold only what the scenario asks of them.
+
+        - Idle guards (``idle.py``: a bound the solver set where no transition or invariant
+          needs it) are assumed false: their rows held the vehicles to a place or speed nothing
+          asks there (a car placed 15 m behind another at the start held there a step longer,
+          then jumping to its speed).
+        - Which way a target speed (CARLA's ``speed(v)``, ``asp/continuous/toward.lp``) is
+          approached is the solver's choice at the phase's first step, made before the speeds are
+          known: rising needs the speed entering the phase at most the band's top, falling at least
+          its bottom. A wrong guess is met by the linear program bringing the entering speed to
+          the target before the phase begins: the phase before changes the vehicle's speed for
+          this one, which nothing there asks. Where the entering speed does not lie below the
+          target for a rising phase (above it for a falling one), the other way is tried and kept
+          when its model costs less: the solver's own costs first (the least unasked changes),
+          then the smoothing's."""
+        kept: list[tuple[clingo.Symbol, bool]] = [(s, True) for s in found[0] if s.name in ("fire", "lane")]
+        for _ in range(IDLE_ROUNDS):
+            idle = [(guard, False) for guard in idle_guards(self._guard_tree, found[0])]
+            if not idle:
+                break
+            kept += idle
+            tried = solve(kept)
+            if tried is None or tried[2] > found[2]:
+                break
+            found = tried
+        entries = sorted((s for s in found[0] if s.name == "toward_entry"), key=lambda s: s.arguments[3].number)
+        for entry in entries:
+            vehicle, way, target, step = entry.arguments
+            entering = found[1].get(f"v({vehicle},{step.number - 1})")
+            if entering is None:
+                continue
+            rising = way.name == "up"
+            below = float(entering) < float(target.string) - SIDE
+            above = float(entering) > float(target.string) + SIDE
+            if (rising and below) or (not rising and above):
+                continue
+            other = clingo.Function("falling" if rising else "rising", [vehicle, step])
+            tried = solve([*kept, (other, True)])
+            if tried is not None and tried[2] < found[2]:
+                found = tried
+                kept.append((other, True))
+            else:
+                kept.append((clingo.Function("rising" if rising else "falling", [vehicle, step]), True))
+        return found
 
     def _exclude(self, control, symbols, count: int, place: float | None = None) -> None:
         """Never these transition times and lanes together again; the next plan's driving vehicles
