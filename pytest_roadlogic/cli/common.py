@@ -266,11 +266,15 @@ def print_unasked(plan, automaton, registry, indent: str = "") -> None:
     from ..evaluation.fidelity import said_unasked
 
     said = said_unasked(plan, automaton, registry)
-    if said:
+    if not said:
+        return
+    if plan.stats.get("least_action", 1.0) == 0.0:  # planned allowing unasked changes: none did without
         print(
             f"{indent}no plan has every vehicle do only what it is asked; this one has the fewest changes nothing asks for:"
         )
-        print("\n".join(f"{indent}  {line}" for line in said))
+    else:
+        print(f"{indent}changes in this plan that nothing asks for:")
+    print("\n".join(f"{indent}  {line}" for line in said))
 
 
 def show(result, out: Path, level: str = "all", drivers: dict[str, str] | None = None) -> int:

@@ -12,7 +12,11 @@ size, but braking is asked by the standard's avoid_collisions (on by default) wh
 vehicle or an obstacle is ahead in a lane the vehicle occupies (one changing lane occupies both
 lanes in that step). A vehicle that drives through the junction of a route that turns (``along(path)``:
 ``Route.crossers``) is asked by the road to change speed: it slows for the turn and drives on after
-it. Where a vehicle starts (its lane and speed) is no change.
+it. Where a vehicle starts (its lane and speed) is no change. A phase that asks its vehicle to hold
+one speed (``Location.steady``: CARLA's ``position(..., at: end)``, which its runner reaches at
+one speed) does not ask a change made there for a later phase: a change after the phase's first
+step toward a speed the vehicle is asked to drive toward later in the run (and not here) is
+unasked, but for braking for the vehicle ahead.
 """
 
 from __future__ import annotations
@@ -88,7 +92,9 @@ def unasked_changes(plan: Plan, automaton: SymbolicAutomaton) -> list[UnaskedCha
             if after.lane != before.lane and not location.asked(vehicle, "lane"):
                 found.append(UnaskedChange(vehicle, step, "lane", before.lane, after.lane))
             acceleration = (after.speed - before.speed) / plan.dt
-            if abs(acceleration) <= SPEED_CHANGE or location.asked(vehicle, "speed") or vehicle in turning:
+            if abs(acceleration) <= SPEED_CHANGE or vehicle in turning:
+                continue
+            if location.asked(vehicle, "speed") and not _for_later(plan, automaton, where, vehicle, step):
                 continue
             band = location.toward(vehicle)
             if band is not None and _toward(before.speed, after.speed, band.low, band.high):
@@ -97,6 +103,22 @@ def unasked_changes(plan: Plan, automaton: SymbolicAutomaton) -> list[UnaskedCha
                 continue  # braking for the vehicle ahead: avoid_collisions asks it
             found.append(UnaskedChange(vehicle, step, "speed", before.speed, after.speed))
     return found
+
+
+def _for_later(plan: Plan, automaton: SymbolicAutomaton, where: list[int], vehicle: str, step: int) -> bool:
+    """Whether the speed change of ``vehicle`` during ``step`` is made, inside a phase that asks it
+    to hold one speed (``Location.steady``) and after that phase's first step, toward a speed it is
+    asked to drive toward only later in the run."""
+    here = automaton.location(where[step - 1])
+    if vehicle not in here.steady() or step < 2 or where[step - 2] != where[step - 1]:
+        return False
+    before, after = plan.at(vehicle, step - 1).speed, plan.at(vehicle, step).speed
+    for later in dict.fromkeys(where[step:]):
+        band = automaton.location(later).toward(vehicle)
+        if later != where[step - 1] and band is not None:
+            target = (band.low + band.high) / 2
+            return abs(after - target) < abs(before - target)
+    return False
 
 
 def said_unasked(plan: Plan, automaton: SymbolicAutomaton, registry) -> list[str]:
