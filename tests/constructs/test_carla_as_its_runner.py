@@ -10,7 +10,7 @@ import pytest
 from pytest_roadlogic.evaluation.fidelity import unasked_changes
 from pytest_roadlogic.frontend import check_text
 from pytest_roadlogic.planning import ContinuousSettings
-from tests.constructs.test_asked_per_instant import planned
+from tests.constructs.test_asked_per_instant import automaton_of, planned
 
 SETTINGS = ContinuousSettings()  # the planner's defaults: the comfortable rates read below
 KPH = 1 / 3.6
@@ -233,33 +233,19 @@ def test_a_target_slower_than_the_car_is_braked_for_in_its_own_phase_not_in_the_
     assert all(abs(v - 10) <= HELD / KPH for v in after), [round(v, 1) for v in after]
 
 
-CHANGE_LANE_LEFT = """scenario change_lane_left:
-    ego: car
-    npc: car
-    do serial:
-        get_ahead: parallel(duration: 15s):
-            ego.drive() with:
-                speed(20kph)
-                lane(1, at: start)
-            npc.drive() with:
-                lane(right_of: ego, at: start)
-                position(15m, behind: ego, at: start)
-                position(20m, ahead_of: ego, at: end)
-        change: parallel(duration: 5s):
-            ego.drive()
-            npc.drive() with:
-                change_lane(lane_changes: [1..2], side: left)
-"""
-
-
-def test_change_lane_moves_only_in_its_own_phase_from_the_lane_the_phase_starts_in(tmp_path):
-    # as CARLA's change_lane example: the npc had moved two lanes right in the passing phase, to
-    # change one lane left in the next (the modifier had licensed a move into any starting lane)
-    plan, _, _ = first_plan(tmp_path, CHANGE_LANE_LEFT)
-    change_starts = [step for step, _ in plan.transitions][1]
+def test_change_lane_asks_no_lane_in_the_phase_before_it_only_in_its_own(tmp_path):
+    # as CARLA's change_lane example: the modifier had asked the npc's lane at its phase's first
+    # instant, which licensed a move in the passing phase before it (one plan moved the npc two
+    # lanes right there, to change one lane left later)
+    automaton = automaton_of(tmp_path, CHANGE_MODIFIERS, dialect="carla")
+    passing = [location for location in automaton.locations if "npc" in location.steady()]
+    assert passing and not any(location.asked("npc", "lane") for location in passing)
+    assert any(location.asked("npc", "lane") for location in automaton.locations if location not in passing)
+    plan, _, _ = first_plan(tmp_path, CHANGE_MODIFIERS)
+    change_starts, slow_starts = [step for step, _ in plan.transitions][1:3]
     npc, ego = plan.states["npc"], plan.states["ego"]
     assert {state.lane for state in npc[: change_starts + 1]} == {ego[0].lane + 1}
-    assert npc[-1].lane == ego[0].lane
+    assert npc[slow_starts].lane == ego[0].lane
 
 
 def test_an_actor_field_whose_value_is_another_actor_is_that_actor_not_a_car_of_its_own(tmp_path):
