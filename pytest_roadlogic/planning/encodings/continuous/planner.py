@@ -296,9 +296,9 @@ class ContinuousPlanner(IncrementalPlanner):
         hold only what the scenario asks of them.
 
         - Idle guards (``idle.py``: a bound the solver set where no transition or invariant
-          needs it) are assumed false: their rows held the vehicles to a place or speed nothing
-          asks there (a car placed 15 m behind another at the start held there a step longer,
-          then jumping to its speed).
+          needs it) are assumed false in a plan from the start: their rows held the vehicles to a
+          place or speed nothing asks there (a car placed 15 m behind another at the start held
+          there a step longer, then jumping to its speed).
         - Which way a target speed (CARLA's ``speed(v)``, ``asp/continuous/toward.lp``) is
           approached is the solver's choice at the phase's first step, made before the speeds are
           known: rising needs the speed entering the phase at most the band's top, falling at least
@@ -309,7 +309,9 @@ class ContinuousPlanner(IncrementalPlanner):
           when its model costs less: the solver's own costs first (the least unasked changes),
           then the smoothing's."""
         kept: list[tuple[clingo.Symbol, bool]] = [(s, True) for s in found[0] if s.name in ("fire", "lane")]
-        for _ in range(IDLE_ROUNDS):
+        # a replan keeps the guards its model holds: it starts past the start's guards, and a
+        # second solve at every replan period of a reactive case costs more than it mends
+        for _ in range(0 if self.past else IDLE_ROUNDS):
             idle = [(guard, False) for guard in idle_guards(self._guard_tree, found[0])]
             if not idle:
                 break
