@@ -293,33 +293,44 @@ class ContinuousPlanner(IncrementalPlanner):
     def _refined(self, control, found: tuple, solve) -> tuple:
         """``found`` (a model's symbols, values and costs), or the model of the same run and lanes
         (its ``fire`` and ``lane`` atoms assumed; ``solve(assumptions)`` gives it) whose values
-        hold only what the scenario asks of them.
-
-        - Idle guards (``idle.py``: a bound the solver set where no transition or invariant
-          needs it) are assumed false in a plan from the start: their rows held the vehicles to a
-          place or speed nothing asks there (a car placed 15 m behind another at the start held
-          there a step longer, then jumping to its speed).
-        - Which way a target speed (CARLA's ``speed(v)``, ``asp/continuous/toward.lp``) is
-          approached is the solver's choice at the phase's first step, made before the speeds are
-          known: rising needs the speed entering the phase at most the band's top, falling at least
-          its bottom. A wrong guess is met by the linear program bringing the entering speed to
-          the target before the phase begins: the phase before changes the vehicle's speed for
-          this one, which nothing there asks. Where the entering speed does not lie below the
-          target for a rising phase (above it for a falling one), the other way is tried and kept
-          when its model costs less: the solver's own costs first (the least unasked changes),
-          then the smoothing's."""
+        hold only what the scenario asks of them: without idle guards (in a plan from the start),
+        then with each target speed approached from the side it lies on."""
         kept: list[tuple[clingo.Symbol, bool]] = [(s, True) for s in found[0] if s.name in ("fire", "lane")]
         # a replan keeps the guards its model holds: it starts past the start's guards, and a
         # second solve at every replan period of a reactive case costs more than it mends
-        for _ in range(0 if self.past else IDLE_ROUNDS):
+        if not self.past:
+            found, kept = self._without_idle_guards(found, kept, solve)
+        return self._directions_weighed(found, kept, solve)
+
+    def _without_idle_guards(self, found: tuple, kept: list, solve) -> tuple[tuple, list]:
+        """``found`` and its assumptions ``kept``, or the model with its idle guards (``idle.py``:
+        a bound the solver set where no transition or invariant needs it) assumed false and the
+        assumptions that give it, when it costs no more. Their rows held the vehicles to a place
+        or speed nothing asks there: a car placed 15 m behind another at the start held there a
+        step longer, then jumping to its speed. A new model may hold others idle: a few rounds."""
+        for _ in range(IDLE_ROUNDS):
             idle = [(guard, False) for guard in idle_guards(self._guard_tree, found[0])]
             if not idle:
                 break
-            kept += idle
-            tried = solve(kept)
+            tried = solve(kept + idle)
             if tried is None or tried[2] > found[2]:
                 break
-            found = tried
+            found, kept = tried, kept + idle
+        return found, kept
+
+    def _directions_weighed(self, found: tuple, kept: list, solve) -> tuple:
+        """``found``, or a cheaper model (``kept`` assumed) in which a target speed's phase starts
+        toward its band from the other side.
+
+        Which way a target speed (CARLA's ``speed(v)``, ``asp/continuous/toward.lp``) is approached
+        is the solver's choice at the phase's first step, made before the speeds are known: rising
+        needs the speed entering the phase at most the band's top, falling at least its bottom. A
+        wrong guess is met by the linear program bringing the entering speed to the target before
+        the phase begins: the phase before changes the vehicle's speed for this one, which nothing
+        there asks. Where the entering speed does not lie below the target for a rising phase
+        (above it for a falling one), the other way is tried and kept when its model costs less:
+        the solver's own costs first (the least unasked changes), then the smoothing's."""
+        kept = list(kept)
         entries = sorted((s for s in found[0] if s.name == "toward_entry"), key=lambda s: s.arguments[3].number)
         for entry in entries:
             vehicle, way, target, step = entry.arguments
