@@ -9,7 +9,7 @@ Names are read without importing anything; a driver is imported when a run build
 
 from __future__ import annotations
 
-from importlib import import_module, metadata
+from importlib import import_module
 
 from .entry_points import registered_names
 
@@ -41,6 +41,8 @@ def reference_driver(name: str = DEFAULT):
     if name in BUILT_IN:
         module, _, attribute = BUILT_IN[name].partition(":")
         return getattr(import_module(module), attribute)()
+    from importlib import metadata  # read when a package's driver is asked for: not at start-up
+
     for point in metadata.entry_points(group=ENTRY_POINT_GROUP):
         if point.name == name:
             try:

@@ -216,9 +216,11 @@ def _crossings(roads: dict[str, Road]) -> dict[str, list[tuple[str, float, float
     """Per vehicle on a map whose route meets another vehicle's: (that vehicle, where the meeting
     begins and ends on this one's road, where it begins on that one's road, its length there, its
     kind) for each meeting of the two routes (``roads.conflicts``)."""
+    found: dict[str, list] = {}
+    if len({id(road) for road in roads.values() if road.route is not None}) < 2:
+        return found  # one road or none on a map's routes: nothing meets (and no geometry to import)
     from ..roads.conflicts import conflicts
 
-    found: dict[str, list] = {}
     for v, road in roads.items():
         for o, other in roads.items():
             if other is road or road.route is None or other.route is None:
