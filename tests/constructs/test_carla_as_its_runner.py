@@ -258,3 +258,10 @@ def test_an_actor_field_whose_value_is_another_actor_is_that_actor_not_a_car_of_
     plan, _, _ = first_plan(tmp_path, text)
     assert sorted(plan.states) == ["ego", "npc"]
     assert plan.states["npc"][-1].speed == pytest.approx(10 * KPH, abs=HELD)
+
+
+def test_an_actor_field_names_only_an_actor_declared_before_it_so_two_naming_each_other_stay_one_car():
+    text = "scenario s:\n    a: car = b\n    b: car = a\n    do a.drive(duration: 5s)\n"
+    checked = check_text(text, "s.osc", dialect="carla")
+    checked.raise_for_errors()
+    assert [actor.name for actor in checked.scenarios[0].scenario.actors] == ["a"]

@@ -242,33 +242,25 @@ def _relabel(behavior, prefix: str):
 
 
 def resolve_actor_aliases(scenario: model.Scenario, is_actor: Callable[[model.Field], bool]) -> model.Scenario:
-    """``scenario`` with every actor field whose value names another of its actors
-    (``other_car: Rubicon = npc``, as CARLA's emit example writes it) read as that actor: an
+    """``scenario`` with every actor field whose value names another of its actors declared
+    before it (``other_car: Rubicon = npc``, as CARLA's emit example writes it) read as that actor: an
     actor-typed field holds a reference to an actor, so the name is one more name of the same
     vehicle, never a vehicle of its own. The field is dropped and its name replaced wherever the
     scenario uses it (actions, modifiers, events, constraints)."""
-    actors = {f.name for f in scenario.fields if is_actor(f)}
-    aliases: dict[str, str] = {}
+    aliases: dict[str, str] = {}  # alias -> the actor it names, declared before it
+    actors: set[str] = set()
     for field in scenario.fields:
-        if field.name in actors and isinstance(field.default, model.Name) and field.default.enum is None:
-            target = field.default.name
-            if target in actors and target != field.name:
-                aliases[field.name] = target
+        if not is_actor(field):
+            continue
+        value = field.default
+        if isinstance(value, model.Name) and value.enum is None and (value.name in actors or value.name in aliases):
+            aliases[field.name] = aliases.get(value.name, value.name)
+        else:
+            actors.add(field.name)
     if not aliases:
         return scenario
-
-    def resolved(name: str) -> str:
-        seen = {name}
-        while name in aliases and aliases[name] not in seen:
-            name = aliases[name]
-            seen.add(name)
-        return name
-
-    substitution = {
-        alias: model.Name(resolved(alias), field.location)
-        for field in scenario.fields
-        if (alias := field.name) in aliases
-    }
+    where = {field.name: field.location for field in scenario.fields}
+    substitution = {alias: model.Name(actor, where[alias]) for alias, actor in aliases.items()}
     behaviors = tuple(substitute_names(b, substitution) for b in scenario.behaviors)
     return dataclasses.replace(
         scenario,
