@@ -64,14 +64,7 @@ class UnaskedChange:
 
 def locations_by_step(plan: Plan, automaton: SymbolicAutomaton) -> list[int]:
     """The location the plan's run is in at each step (after the transitions of that step)."""
-    targets = {t.id: t.target for t in automaton.transitions}
-    fired = dict(plan.transitions)
-    location, result = automaton.initial, []
-    for step in range(plan.horizon + 1):
-        if step in fired:
-            location = targets[fired[step]]
-        result.append(location)
-    return result
+    return automaton.run_locations(dict(plan.transitions), plan.horizon)
 
 
 def unasked_changes(plan: Plan, automaton: SymbolicAutomaton) -> list[UnaskedChange]:

@@ -308,6 +308,17 @@ class SymbolicAutomaton:
     def location(self, location_id: int) -> Location:
         return self.locations[location_id]
 
+    def run_locations(self, fired: dict[int, int], horizon: int) -> list[int]:
+        """The location a run is in at each step 0..``horizon`` (after that step's transition),
+        given the transition it takes at each step it takes one (``fired``: step -> transition)."""
+        targets = {t.id: t.target for t in self.transitions}
+        location, result = self.initial, []
+        for step in range(horizon + 1):
+            if step in fired:
+                location = targets[fired[step]]
+            result.append(location)
+        return result
+
     def outgoing(self, location_id: int) -> list[Transition]:
         return [t for t in self.transitions if t.source == location_id]
 

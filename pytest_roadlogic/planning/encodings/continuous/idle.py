@@ -40,8 +40,7 @@ class GuardTree:
                 self.parts[node] = (isinstance(guard, And), tuple(numbering[p] for p in guard.parts))
             elif (bound := bound_of(guard)) is not None and bound.term.quantity != LANE:
                 self.chosen.add(node)
-        self.target = {t.id: t.target for t in automaton.transitions}
-        self.initial = automaton.initial
+        self.automaton = automaton
 
     def needed(
         self, fired: Iterable[tuple[int, int]], holding: set[tuple[int, int]], horizon: int
@@ -49,13 +48,9 @@ class GuardTree:
         """(node, step) pairs the run needs: the guard of each transition taken (``fired``:
         (transition, step)), the invariant of the location held at each step up to ``horizon``,
         and the parts that make them hold (of a disjunction, those ``holding``)."""
-        needed: set[tuple[int, int]] = set()
-        by_step = dict((step, transition) for transition, step in fired)
-        location = self.initial
-        for step in range(horizon + 1):
-            if step in by_step:
-                needed.add((self.transition_node[by_step[step]], step))
-                location = self.target[by_step[step]]
+        by_step = {step: transition for transition, step in fired}
+        needed = {(self.transition_node[transition], step) for step, transition in by_step.items()}
+        for step, location in enumerate(self.automaton.run_locations(by_step, horizon)):
             if location in self.invariant_node:
                 needed.add((self.invariant_node[location], step))
         pending = list(needed)
