@@ -28,6 +28,7 @@ from .builtin_events import with_builtin_events
 from .checked import CheckedFile, CheckedScenario, Registry
 from .coverage import coverage_items
 from .dialects import registry as dialect_registry
+from .environment import EnvironmentActions, environment_names, without_environment
 from .events import EventChecks
 from .field_types import FieldTyping
 from .imports import ImportLoading
@@ -146,9 +147,10 @@ def _reaches(start: str, goal: str, calls: dict[str, set[str]]) -> bool:
     return False
 
 
-class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks):
+class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks, EnvironmentActions):
     """Checks one file and its imports; its parts: loading imports (``imports``), typing fields
-    (``field_types``), the road's lanes (``road_lanes``), events (``events``)."""
+    (``field_types``), the road's lanes (``road_lanes``), events (``events``), the environment's
+    actions (``environment``)."""
 
     def __init__(
         self,
@@ -188,6 +190,7 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks):
         # its fields of the map's elements (``j: junction``, ``r1: road``): name -> type
         self.map_elements: dict[str, str] = {}
         self.shadowed: set[tuple[str, str]] = set()  # (parameter, enum) already warned of, once each
+        self.environments: frozenset[str] = frozenset()  # the names of the checked scenario's environment
 
     def error(self, location: SourceLocation, message: str, hint: str | None = None) -> None:
         self.diagnostics.append(Diagnostic(location, message, hint))
@@ -435,6 +438,7 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks):
         actors: list[model.Actor] = []
         parameters: list[model.Field] = []
         roads: list[str] = []
+        environments: list[str] = []
         self.map_elements = {}
         declared: dict[str, SourceLocation] = {}
         for item in (*globals_, *scenario.fields):
@@ -460,7 +464,10 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks):
                 roads.append(item.name)
             elif kind == "map_element":
                 self.map_elements[item.name] = item.type
+            elif kind == "environment":
+                environments.append(item.name)
         self.roads = set(roads)
+        self.environments = environment_names(environments, declared)
         self.turn_labels = {
             m.label for m in scenario.modifiers if m.label is not None and m.name == "roads_follow_in_junction"
         }
@@ -542,6 +549,15 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks):
                         f"actor {actor.name!r} takes no part in the behavior",
                         "give it an action, or remove it",
                     )
+        driven = without_environment(checked.behaviors, self.environments)
+        if driven != checked.behaviors:
+            if not driven and actors:
+                self.error(
+                    scenario.behaviors[0].location,
+                    "the behavior only sets the environment: no vehicle is driven",
+                    "give a vehicle an action (v1.drive())",
+                )
+            checked = replace(checked, behaviors=driven, behavior=driven[0] if driven else None)
         return checked, space, lanes
 
     # -------------------------------------------------------------- behavior
@@ -602,6 +618,9 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks):
 
     def _invocation(self, node: model.Invocation, scenario, env, used_actors, used_names) -> None:
         actor = node.actor
+        if actor in self.environments:
+            self._environment_action(node, scenario, env, used_actors, used_names)
+            return
         if actor is None:
             self.error(
                 node.location,

@@ -7,6 +7,7 @@ from dataclasses import replace
 from .. import model
 from ..syntax.standard_library import LazyTable
 from . import library
+from .environment import ENVIRONMENT_TYPE
 
 # the built-in physical type of each dimension, for a declared alias (velocity for speed)
 _BUILTIN_PHYSICAL = LazyTable(lambda _: {dimension: name for name, dimension in library.PHYSICAL_TYPES.items()})
@@ -36,6 +37,14 @@ class FieldTyping:
                     "the tool picks it from the map where roads_follow_in_junction names it",
                 )
             return "map_element"
+        if item.type == ENVIRONMENT_TYPE:
+            if item.constraints or item.default is not None:
+                self.warning(
+                    item.constraints[0].location if item.constraints else item.default.location,
+                    f"the fields of the environment {item.name!r} are read but not simulated",
+                    "the simulation has no weather, light or geodetic position",
+                )
+            return "environment"
         if self._actor_base(item.type) is not None:
             if self._driven_as_vehicle(item.type):
                 self.warning(

@@ -37,7 +37,7 @@ ABSTRACT_ACTOR_TYPES: Mapping[str, None] = LazyTable(
     )
 )
 # Standard actor types that cannot appear on a highway-only road.
-UNSUPPORTED_ACTOR_TYPES = ("person", "pedestrian", "animal", "cyclist", "bicycle", "traffic_light", "environment")
+UNSUPPORTED_ACTOR_TYPES = ("person", "pedestrian", "animal", "cyclist", "bicycle", "traffic_light")
 
 # The road a scenario runs on, in the dialect of public OS2 scenario runners: a field of this type,
 # constrained by modifiers applied to the whole scenario (`path: Path`, `path.path_min_driving_lanes(4)`).

@@ -1,0 +1,111 @@
+"""The environment actor (docs/language.md, "What is read"): the weather a scenario asks for is read,
+its arguments checked as the standard library declares them, each use warned about once where it
+is written, and the vehicles planned as if it were not written."""
+
+from __future__ import annotations
+
+import pytest
+
+from pytest_roadlogic.automaton import build_automaton
+from pytest_roadlogic.frontend import OscError, check_text
+from pytest_roadlogic.pipeline import load_scenario
+from pytest_roadlogic.planning import ContinuousPlanner, ContinuousSettings
+
+DRIVES = (
+    "        ego.drive() with:\n"
+    "            speed(50kph)\n"
+    "            lane(2)\n"
+    "        npc.drive() with:\n"
+    "            speed([40kph..60kph])\n"
+    "            lane(right_of: ego)\n"
+    "            position([15m..25m], ahead_of: ego, at: start)\n"
+)
+
+
+def scenario(weather: str, field: str = "    env: environment\n") -> str:
+    return f"scenario cruise:\n    ego: car\n    npc: car\n{field}    do parallel(duration: 8s):\n{weather}{DRIVES}"
+
+
+def first_plan(tmp_path, text: str):
+    path = tmp_path / "cruise.osc"
+    path.write_text(text)
+    return ContinuousPlanner(build_automaton(load_scenario(path)), ContinuousSettings(time_limit=30.0), 1).first()
+
+
+def warnings_of(text: str):
+    checked = check_text(text, "cruise.osc")
+    checked.raise_for_errors()
+    return [d for d in checked.diagnostics if d.severity == "warning"]
+
+
+def test_each_environment_action_is_read_with_one_warning_where_it_is_written():
+    text = scenario(
+        "        env.air(15celsius, 1013hPa, 0.6)\n"
+        "        env.rain(intensity: 5kph)\n"
+        "        env.wind(speed: 8mps, direction: 90deg)\n"
+        "        env.fog(visual_range: 150m)\n"
+    )
+    warnings = warnings_of(text)
+    assert [w.location.line for w in warnings] == [6, 7, 8, 9]
+    assert all("is read but not simulated" in w.message for w in warnings)
+
+
+def test_the_environment_the_standards_examples_name_without_declaring_it_is_the_scenarios():
+    warnings = warnings_of(scenario("        environment.snow(intensity: 2kph)\n", field=""))
+    assert [(w.location.line, w.location.column) for w in warnings] == [(5, 9)]
+    assert warnings[0].message.startswith("environment.snow() is read but not simulated")
+
+
+def test_the_vehicles_are_planned_as_if_the_weather_were_not_written(tmp_path):
+    with_weather = first_plan(tmp_path, scenario("        env.rain(intensity: 5kph)\n        env.fog(150m)\n"))
+    without = first_plan(tmp_path, scenario(""))
+    assert with_weather.states == without.states
+    assert with_weather.transitions == without.transitions
+
+
+def test_an_environment_action_in_a_serial_takes_no_time(tmp_path):
+    text = (
+        "scenario s:\n    ego: car\n    env: environment\n    do serial:\n"
+        "        env.rain(intensity: 5kph)\n        ego.drive(duration: 4s) with:\n            speed(30kph)\n"
+    )
+    path = tmp_path / "s.osc"
+    path.write_text(text)
+    automaton = build_automaton(load_scenario(path))
+    plan = ContinuousPlanner(automaton, ContinuousSettings(time_limit=30.0), 1).first()
+    assert plan.horizon * plan.dt == pytest.approx(4.0, abs=0.5)
+
+
+@pytest.mark.parametrize(
+    "weather, place, message",
+    [
+        ("env.rain(intensity: 5m)", (6, 29), "env.rain() expects a speed for intensity, got a length"),
+        ("env.fog(visual_range: 100m, depth: 3m)", (6, 37), "unknown argument 'depth' of env.fog()"),
+        ("env.air(15celsius, 1000hpa, 0.5, 3)", (6, 42), "too many positional arguments to env.air()"),
+    ],
+)
+def test_an_environment_actions_arguments_are_checked_as_the_library_declares_them(weather, place, message):
+    with pytest.raises(OscError) as refused:
+        check_text(scenario(f"        {weather}\n"), "cruise.osc").raise_for_errors()
+    assert f"cruise.osc:{place[0]}:{place[1]}: error: {message}" in str(refused.value)
+
+
+def test_a_modifier_on_an_environment_action_is_an_error_at_the_modifier():
+    text = scenario("        env.fog(visual_range: 100m) with:\n            speed(3kph)\n")
+    with pytest.raises(OscError) as refused:
+        check_text(text, "cruise.osc").raise_for_errors()
+    assert "cruise.osc:7:13: error: speed() on env.fog(): an environment action takes no modifiers" in str(
+        refused.value
+    )
+
+
+def test_an_environment_action_the_tool_does_not_know_is_read_with_a_warning_naming_the_ones_it_knows():
+    (warning,) = warnings_of(scenario("        env.clouds(density: 3)\n"))
+    assert "this tool does not know that environment action" in warning.message
+    assert "air, rain, snow, wind, fog" in warning.hint
+
+
+def test_a_behavior_that_only_sets_the_environment_is_an_error():
+    text = "scenario s:\n    ego: car\n    env: environment\n    do env.rain(intensity: 5kph)\n"
+    with pytest.raises(OscError) as refused:
+        check_text(text, "s.osc").raise_for_errors()
+    assert "the behavior only sets the environment: no vehicle is driven" in str(refused.value)
