@@ -291,3 +291,21 @@ def test_the_front_ends_syntax_never_imports_its_semantics():
         if re.match(r"\s*(from|import) \S*semantics\b", line)
     ]
     assert found == []
+
+
+def test_the_commands_help_loads_no_command_and_a_command_loads_only_itself():
+    # `roadlogic --help` and a mistyped command are answered before any command's flags (the option table) exist
+    code = (
+        "import sys, contextlib, io\n"
+        "from pytest_roadlogic.cli import main\n"
+        "with contextlib.redirect_stdout(io.StringIO()), contextlib.suppress(SystemExit):\n"
+        "    main(sys.argv[1:])\n"
+        "print(sorted(m for m in sys.modules if m.startswith('pytest_roadlogic.cli.') or m == 'pytest_roadlogic.settings'))\n"
+    )
+    loaded = {}
+    for argv in (["--help"], ["check", "--help"]):
+        done = subprocess.run([sys.executable, "-c", code, *argv], capture_output=True, text=True)
+        assert done.returncode == 0, done.stderr
+        loaded[argv[0]] = done.stdout.strip().splitlines()[-1]
+    assert loaded["--help"] == "['pytest_roadlogic.cli.commands']"
+    assert "pytest_roadlogic.cli.check" in loaded["check"] and "pytest_roadlogic.cli.run'" not in loaded["check"]

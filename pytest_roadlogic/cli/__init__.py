@@ -25,13 +25,13 @@ from __future__ import annotations
 
 import argparse
 import contextlib
+import importlib
 import os
 import sys
 
-# Light imports only: `roadlogic --help` and argument errors must not load the pipeline; each
-# command imports the stages it uses when it runs.
-from . import automaton, bench, check, cover, falsify, plan, replay, run
-from .common import EXIT_ACCEPTED, EXIT_INPUT, EXIT_REJECTED
+# Light imports only: `roadlogic --help` and argument errors load no command; the command asked
+# for adds its flags (cli.<name>), and imports the stages it uses when it runs.
+from .commands import EXIT_ACCEPTED, EXIT_INPUT, EXIT_REJECTED, SUMMARIES
 
 __all__ = ["EXIT_ACCEPTED", "EXIT_INPUT", "EXIT_REJECTED", "main"]
 
@@ -41,10 +41,15 @@ def main(argv: list[str] | None = None) -> int:
         prog="roadlogic", description="Concrete, monitored simulations from OpenSCENARIO DSL scenarios."
     )
     commands = parser.add_subparsers(dest="command", required=True)
-    for command in (run, replay, check, automaton, plan, bench, cover, falsify):
-        command.add(commands)
-    args = parser.parse_args(argv)
-    args.argv = list(sys.argv[1:] if argv is None else argv)
+    given = list(sys.argv[1:] if argv is None else argv)
+    asked = next((word for word in given if not word.startswith("-")), None)
+    for name, summary in SUMMARIES.items():
+        if name == asked:
+            importlib.import_module(f"{__name__}.{name}").add(commands)
+        else:
+            commands.add_parser(name, help=summary)
+    args = parser.parse_args(given)
+    args.argv = given
     command = args.action
     try:
         with contextlib.ExitStack() as args.held:  # what a command holds while it runs (its --out folder's claim)

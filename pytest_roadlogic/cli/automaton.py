@@ -6,14 +6,13 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
+from .commands import SUMMARIES
 from .common import load_automaton, reporting_input_errors, scenario_command
 
 
 def add(commands) -> None:
     """The ``automaton`` command's flags, and its action."""
-    automaton = scenario_command(
-        commands, "automaton", "write a scenario's symbolic automaton as Graphviz DOT (and PNG when dot is installed)"
-    )
+    automaton = scenario_command(commands, "automaton", SUMMARIES["automaton"])
     automaton.add_argument("--out", type=Path, default=None, help="the DOT file to write (default: <scenario>.dot)")
     automaton.set_defaults(action=_automaton)
 

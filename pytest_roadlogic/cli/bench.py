@@ -9,6 +9,7 @@ from pathlib import Path
 
 from ..outcomes import CONFORMANT
 from ..settings import count as parse_count
+from .commands import SUMMARIES
 from .common import (
     EXIT_ACCEPTED,
     EXIT_INPUT,
@@ -24,9 +25,7 @@ from .common import (
 
 def add(commands) -> None:
     """The ``bench`` command's flags, and its action."""
-    bench = commands.add_parser(
-        "bench", help="the paper's evaluation (RQ1 time and conformance, RQ2 diversity): results, plots and report.md"
-    )
+    bench = commands.add_parser("bench", help=SUMMARIES["bench"])
     bench.add_argument("paths", type=Path, nargs="*", default=None, help=".osc files or folders (default: scenarios/)")
     bench.add_argument(
         "--base",

@@ -8,12 +8,13 @@ import argparse
 import sys
 from pathlib import Path
 
+from .commands import SUMMARIES
 from .common import EXIT_INPUT, ROAD_FLAGS, allow_read, read_roots, setting_flags
 
 
 def add(commands) -> None:
     """The ``check`` command's flags, and its action."""
-    check = commands.add_parser("check", help="parse and check .osc files and folders; print every problem")
+    check = commands.add_parser("check", help=SUMMARIES["check"])
     check.add_argument("paths", type=Path, nargs="+", help=".osc files or folders (searched recursively)")
     check.add_argument(
         "--syntax-only", action="store_true", help="stop after parsing (for files written for other tools)"

@@ -20,7 +20,11 @@ from ..settings import (
     whole_number,
 )
 
-EXIT_ACCEPTED, EXIT_REJECTED, EXIT_INPUT = 0, 1, 2
+# the exit codes, shared by every command's action
+from .commands import EXIT_ACCEPTED as EXIT_ACCEPTED
+from .commands import EXIT_INPUT as EXIT_INPUT
+from .commands import EXIT_REJECTED as EXIT_REJECTED
+
 DRIVER_HELP = "drive VEHICLE with the class MODULE:CLASS (built without arguments; see pytest_roadlogic.simulation.Driver) instead of the simulator's own; repeat for several"
 
 ROAD_FLAGS = ("lanes", "dialect", "map")

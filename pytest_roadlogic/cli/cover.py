@@ -12,6 +12,7 @@ import sys
 from pathlib import Path
 
 from ..settings import count as parse_count
+from .commands import SUMMARIES
 from .common import (
     EXIT_ACCEPTED,
     EXIT_INPUT,
@@ -30,9 +31,7 @@ from .common import (
 
 def add(commands) -> None:
     """The ``cover`` command's flags, and its action."""
-    cover = scenario_command(
-        commands, "cover", "a coverage campaign: samples, proofs of unreachable buckets, closure; on a cluster too"
-    )
+    cover = scenario_command(commands, "cover", SUMMARIES["cover"])
     setting_flags(cover, RUN_FLAGS)
     cover.add_argument(
         "--samples", type=flag(parse_count), default=20, help="samples drawn from the seed and run (default 20)"

@@ -12,6 +12,7 @@ import json
 import sys
 
 from ..settings import count as parse_count
+from .commands import SUMMARIES
 from .common import (
     EXIT_ACCEPTED,
     EXIT_INPUT,
@@ -30,9 +31,7 @@ from .common import (
 
 def add(commands) -> None:
     """The ``falsify`` command's flags, and its action."""
-    falsify = scenario_command(
-        commands, "falsify", "search for a failing case from several seeds at once; on a cluster too"
-    )
+    falsify = scenario_command(commands, "falsify", SUMMARIES["falsify"])
     setting_flags(falsify, (*RUN_FLAGS, "search"))
     falsify.add_argument(
         "--searches", type=flag(parse_count), default=4, help="searches, each from its own seed (default 4)"

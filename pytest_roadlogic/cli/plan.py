@@ -9,12 +9,13 @@ import functools
 import itertools
 import time
 
+from .commands import SUMMARIES
 from .common import load_automaton, print_unasked, reporting_input_errors, run_settings, scenario_command, setting_flags
 
 
 def add(commands) -> None:
     """The ``plan`` command's flags, and its action."""
-    plan = scenario_command(commands, "plan", "solve a scenario's planning problem and print the plans as tables")
+    plan = scenario_command(commands, "plan", SUMMARIES["plan"])
     plan.add_argument("--plans", type=int, default=1, help="how many plans to enumerate (default 1)")
     setting_flags(plan, ("seed", "road-speed", "encoding", "horizon", "plan-timeout", "dut"))
     plan.add_argument("--show-asp", action="store_true", help="also print the generated instance program")

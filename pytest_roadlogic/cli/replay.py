@@ -12,6 +12,7 @@ from ..settings import (
     STRATEGIES,
 )
 from ..settings import count as parse_count
+from .commands import SUMMARIES
 from .common import (
     DRIVER_HELP,
     EXIT_INPUT,
@@ -34,9 +35,7 @@ from .common import (
 
 def add(commands) -> None:
     """The ``replay`` command's flags, and its action."""
-    replay = commands.add_parser(
-        "replay", help="run one case again exactly: from the case.json of a failure, or from a file and values"
-    )
+    replay = commands.add_parser("replay", help=SUMMARIES["replay"])
     replay.add_argument("case", type=Path, help="a case.json written for a failure, or an .osc file")
     replay.add_argument("--scenario", help="with an .osc file: the scenario (default: the first)")
     replay.add_argument(

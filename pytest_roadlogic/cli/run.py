@@ -13,6 +13,7 @@ from ..settings import (
     BASE,
     REFINED,
 )
+from .commands import SUMMARIES
 from .common import (
     DRIVER_HELP,
     EXIT_ACCEPTED,
@@ -37,7 +38,7 @@ from .common import (
 
 def add(commands) -> None:
     """The ``run`` command's flags, and its action."""
-    run = scenario_command(commands, "run", "plan, simulate and monitor one scenario; write the artifacts")
+    run = scenario_command(commands, "run", SUMMARIES["run"])
     setting_flags(run, RUN_FLAGS)
     run.add_argument("--out", type=Path, default=Path("out"), help="artifact directory (default out/)")
     artifacts_flag(run)
