@@ -109,3 +109,13 @@ def test_a_behavior_that_only_sets_the_environment_is_an_error():
     with pytest.raises(OscError) as refused:
         check_text(text, "s.osc").raise_for_errors()
     assert "the behavior only sets the environment: no vehicle is driven" in str(refused.value)
+
+
+def test_a_vehicles_action_on_the_environment_and_the_environments_on_a_vehicle_are_errors():
+    text = scenario("        env.drive()\n        ego.rain(intensity: 3kph)\n")
+    with pytest.raises(OscError) as refused:
+        check_text(text, "cruise.osc").raise_for_errors()
+    assert "cruise.osc:6:9: error: env.drive(): drive() is an action of a vehicle, and 'env' is the environment" in str(
+        refused.value
+    )
+    assert "cruise.osc:7:9: error: rain() is an action of the environment, not of a vehicle" in str(refused.value)

@@ -28,7 +28,7 @@ from .builtin_events import with_builtin_events
 from .checked import CheckedFile, CheckedScenario, Registry
 from .coverage import coverage_items
 from .dialects import registry as dialect_registry
-from .environment import EnvironmentActions, environment_names, without_environment
+from .environment import ENVIRONMENT_ACTIONS, EnvironmentActions, environment_names, without_environment
 from .events import EventChecks
 from .field_types import FieldTyping
 from .imports import ImportLoading
@@ -606,7 +606,13 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks, EnvironmentAc
     def _unprovided(self, location: SourceLocation, kind: str, name: str, declared: dict, provided) -> None:
         """An action or modifier the registry lacks: one the standard library declares is refused
         by name (the tool does not execute it), any other is unknown."""
-        if name in declared:
+        if kind == "action" and name in ENVIRONMENT_ACTIONS:
+            self.error(
+                location,
+                f"{name}() is an action of the environment, not of a vehicle",
+                f"write it as env.{name}(...) with a field env: environment",
+            )
+        elif name in declared:
             self.error(
                 location,
                 f"not supported: the standard's {kind} {name!r}",

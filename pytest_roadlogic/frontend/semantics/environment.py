@@ -48,7 +48,13 @@ class EnvironmentActions:
         """Check an action of the environment ``node.actor`` and warn that it is not simulated."""
         what = f"{node.actor}.{node.action}()"
         signature = ENVIRONMENT_ACTIONS.get(node.action)
-        if signature is None:
+        if self.registry.action(node.action) is not None:
+            self.error(
+                node.location,
+                f"{what}: {node.action}() is an action of a vehicle, and {node.actor!r} is the environment",
+                self._known("environment actions", list(ENVIRONMENT_ACTIONS)),
+            )
+        elif signature is None:
             self.warning(
                 node.location,
                 f"{what} is read but not simulated, its arguments unchecked: this tool does not know that environment action",
