@@ -13,23 +13,29 @@ The relaxation, per path of the automaton from its initial to its final location
 ``MAX_PATHS``; more, and it proves nothing): one instant per transition of the path, with its time
 and each actor's position and speed. It keeps only what every plan of every planner satisfies:
 instants in order; each transition's guard at its instant, its conjunction of bounds on positions
-and speeds (lanes, headways, distances travelled and disjunctions are dropped); each phase's
-duration; and between two instants each actor's travel within its speed envelope times the time
-between them (a plan's position advances by the mean of its speeds at consecutive steps, and every
-speed there lies in the location's invariant band or at the instants in their guards' bands,
-within 0..``max_speed``); a stationary object stays. Dropping constraints only adds solutions, so
-a relaxation with none on every path proves there is no plan. The group named is minimal on the
-paths (one constraint taken out at a time, kept out when the rest still fail on every path).
+and speeds (headways, distances travelled and disjunctions are dropped); each phase's duration;
+between two instants each actor's travel within its speed envelope times the time between them (a
+plan's position advances by the mean of its speeds at consecutive steps, and every speed there
+lies in the location's invariant band or at the instants in their guards' bands, within
+0..``max_speed``); a stationary object stays; and two vehicles an invariant keeps in one lane
+(``l(a) - l(b) = 0`` throughout consecutive locations) keep their order over those instants, for
+no plan passes one car through another in its lane: one linear program per choice of who is
+ahead in each such stretch (at most ``MAX_ORDERS`` of them; past that, the order is dropped).
+Dropping constraints only adds solutions, so a relaxation with none on every path proves there is
+no plan. The group named is minimal on the paths (one constraint taken out at a time, kept out
+when the rest still fail on every path).
 """
 
 from __future__ import annotations
 
+import itertools
 import math
 
 from ..logic.automaton import SymbolicAutomaton, Transition
-from ..logic.guards import POSITION, SPEED, Bound, required_bounds
+from ..logic.guards import LANE, POSITION, SPEED, Bound, required_bounds
 
 MAX_PATHS = 64  # an automaton with more paths to its end is left to the planner
+MAX_ORDERS = 64  # the most choices of who is ahead tried on one path (2 per stretch shared in a lane)
 
 
 def provably_unplannable(automaton: SymbolicAutomaton, max_speed: float) -> tuple | None:
@@ -76,6 +82,11 @@ def _linear(bound: Bound) -> bool:
     return bound.term.quantity in (POSITION, SPEED)
 
 
+def _one_lane(bound: Bound) -> bool:
+    """Whether ``bound`` keeps two vehicles in one lane (``l(a) - l(b) = 0``)."""
+    return bound.term.quantity == LANE and bound.term.reference is not None and bound.low == bound.high == 0
+
+
 class _PathRelaxation:
     """The linear program of one path, built for any subset of the scenario's constraints (``groups``:
     a bound or a duration with a source; bounds of one source go in or out together)."""
@@ -85,9 +96,10 @@ class _PathRelaxation:
         self.actors = list(automaton.actors)
         # per instant, the bounds of its transition's guard; per interval, its location's invariant
         self.at = [[b for b in required_bounds(t.guard) if _linear(b)] for t in path]
-        self.during = [
-            [b for b in required_bounds(automaton.location(t.target).invariant) if _linear(b)] for t in path[:-1]
-        ]
+        invariants = [required_bounds(automaton.location(t.target).invariant) for t in path[:-1]]
+        self.during = [[b for b in bounds if _linear(b)] for bounds in invariants]
+        # per interval, the invariant's bounds that keep two vehicles in one lane
+        self.one_lane = [[b for b in bounds if _one_lane(b)] for bounds in invariants]
         # the timed phases and the instants that start and end them on this path
         started: dict[int, int] = {}
         self.durations: list[tuple[int, int, object]] = []
@@ -100,7 +112,7 @@ class _PathRelaxation:
                     started[phase] = i
         # the scenario's constraints on this path by their place: one modifier's bounds go in or out together
         self.constraints: dict = {}
-        for bound in (b for bounds in (*self.at, *self.during) for b in bounds):
+        for bound in (b for bounds in (*self.at, *self.during, *self.one_lane) for b in bounds):
             if bound.source is not None:
                 self.constraints.setdefault(bound.source, bound)
         for _, _, timing in self.durations:
@@ -163,7 +175,31 @@ class _PathRelaxation:
         for start, end, timing in self.durations:
             if on(timing):
                 rows.append(({var("t", end): 1.0, var("t", start): -1.0}, timing.low, timing.high))
-        return _solvable(len(columns), lows, highs, rows)
+        stretches = self._stretches(on)
+        if not stretches or 2 ** len(stretches) > MAX_ORDERS:
+            return _solvable(len(columns), lows, highs, rows)
+        for ahead in itertools.product((1.0, -1.0), repeat=len(stretches)):
+            ordered = [
+                ({var("p", a, i): sign, var("p", b, i): -sign}, 0.0, math.inf)
+                for sign, (a, b, first, last) in zip(ahead, stretches, strict=True)
+                for i in range(first, last + 1)
+            ]
+            if _solvable(len(columns), lows, highs, rows + ordered):
+                return True
+        return False
+
+    def _stretches(self, on) -> list[tuple[str, str, int, int]]:
+        """Each pair of vehicles kept in one lane by the invariants (those that are on) of
+        consecutive intervals, with the first and last instant of that stretch."""
+        stretches: list[tuple[str, str, int, int]] = []
+        open_: dict[tuple[str, str], int] = {}  # pair -> the instant its stretch began
+        for i, bounds in enumerate([*self.one_lane, []]):
+            pairs = {tuple(sorted(b.term.actors)) for b in bounds if on(b)}
+            for pair in [p for p in open_ if p not in pairs]:
+                stretches.append((*pair, open_.pop(pair), i))
+            for pair in pairs:
+                open_.setdefault(pair, i)
+        return stretches
 
     def _speed_bands(self, bounds: list[Bound], on) -> dict[str, tuple[float, float]]:
         """Each actor's speed band from the absolute speed bounds among ``bounds`` that are on."""

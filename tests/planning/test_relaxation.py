@@ -58,3 +58,41 @@ def test_the_relaxation_never_refuses_a_gap_that_some_planner_plans(gap):
         except NoPlanError:
             plan = None
         assert plan is None, f"the relaxation refused lead_gap {gap:.1f} m, which {fallback} plans"
+
+
+SWAP = """scenario swap:
+    a: vehicle
+    b: vehicle
+    do parallel(duration: [5s..10s]):
+        a.drive() with:
+            lane(2)
+            position(distance: [20m..30m], ahead_of: b, at: start)
+        b.drive() with:
+            lane(same_as: a{throughout})
+            position(distance: [20m..30m], ahead_of: a, at: end)
+"""
+
+
+def relaxation_of(tmp_path, text: str):
+    path = tmp_path / "swap.osc"
+    path.write_text(text)
+    guide, settings, _ = guided(path, {})
+    return provably_unplannable(guide(settings.thinned()), FASTEST)
+
+
+def test_two_cars_kept_in_one_lane_that_must_swap_order_are_refused_naming_the_lane_and_the_two_places(tmp_path):
+    conflict = relaxation_of(tmp_path, SWAP.format(throughout=""))
+    assert conflict is not None
+    assert sorted((c.source.line, str(c)) for c in conflict) == [
+        (7, "20 <= p(a) - p(b) <= 30"),
+        (9, "l(b) = l(a)"),
+        (10, "20 <= p(b) - p(a) <= 30"),
+    ]
+
+
+def test_two_cars_in_one_lane_only_at_the_ends_may_pass_and_are_left_to_the_planner(tmp_path):
+    text = SWAP.format(throughout=", at: start)\n            lane(same_as: a, at: end")
+    assert relaxation_of(tmp_path, text) is None
+    path = tmp_path / "swap.osc"
+    guide, settings, seed = guided(path, {})
+    assert next(planned(guide, settings, seed, 1), None) is not None, "b passes a in the next lane"
