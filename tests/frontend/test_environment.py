@@ -119,3 +119,21 @@ def test_a_vehicles_action_on_the_environment_and_the_environments_on_a_vehicle_
         refused.value
     )
     assert "cruise.osc:7:9: error: rain() is an action of the environment, not of a vehicle" in str(refused.value)
+
+
+def test_a_labelled_environment_action_is_an_instant_whose_end_others_can_wait_for(tmp_path):
+    text = (
+        "scenario s:\n    ego: car\n    npc: car\n    env: environment\n    do parallel:\n        serial:\n"
+        "            ego.drive(duration: 3s) with:\n                speed(30kph)\n"
+        "            wet: env.rain(intensity: 3kph)\n            ego.drive(duration: 3s) with:\n"
+        "                speed(30kph)\n        serial:\n            wait @wet.end\n"
+        "            npc.drive(duration: 3s) with:\n                speed(30kph)\n"
+    )
+    path = tmp_path / "s.osc"
+    path.write_text(text)
+    automaton = build_automaton(load_scenario(path))
+    assert any("wet.end emitted" in t.label for t in automaton.transitions)
+    plan = ContinuousPlanner(automaton, ContinuousSettings(time_limit=30.0), 1).first()
+    labels = {t.id: t.label for t in automaton.transitions}
+    (step,) = [k for k, t in plan.transitions if "wet.end emitted" in labels[t]]
+    assert step * plan.dt == pytest.approx(3.0, abs=0.5), "the rain's instant is the first drive's end"

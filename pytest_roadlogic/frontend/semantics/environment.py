@@ -84,14 +84,17 @@ def environment_names(fields: Iterable[str], declared: Collection[str]) -> froze
 
 def without_environment(behaviors: tuple[model.Behavior, ...], names: frozenset[str]) -> tuple[model.Behavior, ...]:
     """``behaviors`` without the actions of the environment ``names``: a composition left with no
-    member goes too."""
-    kept = []
+    member goes too. A labelled one whose start or end the scenario waits for (``@wet.end``) leaves
+    those events where it stood: the serial that marks them (``builtin_events``) gives way to its
+    emits, which happen at that instant of its parent."""
+    kept: list[model.Behavior] = []
     for behavior in behaviors:
         if isinstance(behavior, model.Invocation) and behavior.actor in names:
             continue
         if isinstance(behavior, model.Composition):
             children = without_environment(behavior.children, names)
-            if not children:
+            if children != behavior.children and all(isinstance(c, model.Emit) for c in children):
+                kept.extend(children)
                 continue
             if children != behavior.children:
                 behavior = replace(behavior, children=children)
