@@ -30,7 +30,7 @@ sys.path.insert(0, str(ROOT))
 
 from pytest_roadlogic.pipeline import load_scenario, run_scenario  # noqa: E402
 from pytest_roadlogic.planning import NoPlanError, settings_for  # noqa: E402
-from pytest_roadlogic.sampling import STEP, logical_parameters  # noqa: E402
+from pytest_roadlogic.sampling import STEP, UnknownParameter, logical_parameters  # noqa: E402
 from pytest_roadlogic.settings import ENCODINGS, RunSettings  # noqa: E402
 
 
@@ -75,6 +75,9 @@ def main() -> int:
                     outcome = run_scenario(checked, seed=seed, settings=settings, values=values)
                 except NoPlanError as error:  # a midpoint sample may have none: its message is its print
                     print(f"{path.stem:<22} seed {seed} {strategy:<7} no plan {digest(str(error))}", flush=True)
+                    continue
+                except UnknownParameter as error:  # the first of each choice may not go together (a map's ways)
+                    print(f"{path.stem:<22} seed {seed} {strategy:<7} refused {digest(str(error))}", flush=True)
                     continue
                 verdict = "accepted" if outcome.verdict.accepted else "rejected"
                 print(
