@@ -185,10 +185,7 @@ class _Untimed:
             self.invariants[q] = series
         # moved[q, k]: every actor driving in q moved forward over (k, k+1]; the initial location
         # holds a fresh run at every sample
-        self.moved = np.ones((n_loc, max(self.samples - 1, 0)), dtype=bool)
-        for q, location in enumerate(automaton.locations):
-            for actor in location.drivers:
-                self.moved[q] &= np.asarray(margins.progress[actor], dtype=bool)
+        self.moved = margins.moved.copy()
         self.moved[automaton.initial] = True
 
     def bound(self) -> float:
@@ -236,7 +233,15 @@ class _Margins:
             for q in range(len(automaton.locations))
             if not automaton.location(q).invariant.is_true
         }
-        self.progress = {a: (np.diff(trace.actors[a]["x"]) > 0).tolist() for a in trace.names}
+        forward = {a: np.diff(trace.actors[a]["x"]) > 0 for a in trace.names}
+        self.progress = {a: moved.tolist() for a, moved in forward.items()}
+        # moved[q, k]: every actor driving in location q moved forward over (k, k+1] (as an array,
+        # and as lists for the searches' sample-by-sample reads)
+        self.moved = np.ones((len(automaton.locations), max(len(trace.times) - 1, 0)), dtype=bool)
+        for q, location in enumerate(automaton.locations):
+            for actor in location.drivers:
+                self.moved[q] &= forward[actor]
+        self.moved_lists = self.moved.tolist()
         self.columns = {
             column: {a: trace.actors[a][column].tolist() for a in trace.names} for column in _end_columns(automaton)
         }
@@ -290,6 +295,7 @@ class _RunSearch:
         self.invariant_locations = sorted(margins.invariant)
         self.guard_margin, self.invariant_margin = margins.guard, margins.invariant
         self.progress, self.columns = margins.progress, margins.columns
+        self.moved = margins.moved_lists
         # the bound over a phase's two ends that came closest to its range where all else held, for
         # the report: (margin, sample, location, rate)
         self.rate_miss: tuple[float, int, int, object] | None = None
@@ -348,7 +354,7 @@ class _RunSearch:
         for q in range(self.n_loc):
             if q == init or not self.states[q] or k == 0:
                 continue
-            if not all(self.progress[a][k - 1] for a in self.drivers[q]):
+            if not self.moved[q][k - 1]:
                 continue
             for key, entry in self.states[q].items():
                 over = next((p for p, start in key if not self.timings[p].admits_start(times[k] - times[start])), None)
