@@ -368,6 +368,8 @@ class _RunSearch:
     def _invariants(self, k: int, states: list[dict[Key, tuple[float, tuple]]]) -> None:
         """Each location's invariant at sample ``k``: its robustness bounds its runs', or ends them."""
         for q in self.invariant_locations:
+            if not states[q]:
+                continue
             margin = self.invariant_margin[q][k]
             if margin >= self.floor:
                 for key, (value, run) in states[q].items():
