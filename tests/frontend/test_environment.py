@@ -32,6 +32,13 @@ def first_plan(tmp_path, text: str):
     return ContinuousPlanner(build_automaton(load_scenario(path)), ContinuousSettings(time_limit=30.0), 1).first()
 
 
+def refusal(text: str, name: str = "cruise.osc") -> str:
+    """The report of ``text``'s errors (checked as file ``name``)."""
+    with pytest.raises(OscError) as refused:
+        check_text(text, name).raise_for_errors()
+    return str(refused.value)
+
+
 def warnings_of(text: str):
     checked = check_text(text, "cruise.osc")
     checked.raise_for_errors()
@@ -84,18 +91,13 @@ def test_an_environment_action_in_a_serial_takes_no_time(tmp_path):
     ],
 )
 def test_an_environment_actions_arguments_are_checked_as_the_library_declares_them(weather, place, message):
-    with pytest.raises(OscError) as refused:
-        check_text(scenario(f"        {weather}\n"), "cruise.osc").raise_for_errors()
-    assert f"cruise.osc:{place[0]}:{place[1]}: error: {message}" in str(refused.value)
+    assert f"cruise.osc:{place[0]}:{place[1]}: error: {message}" in refusal(scenario(f"        {weather}\n"))
 
 
 def test_a_modifier_on_an_environment_action_is_an_error_at_the_modifier():
     text = scenario("        env.fog(visual_range: 100m) with:\n            speed(3kph)\n")
-    with pytest.raises(OscError) as refused:
-        check_text(text, "cruise.osc").raise_for_errors()
-    assert "cruise.osc:7:13: error: speed() on env.fog(): an environment action takes no modifiers" in str(
-        refused.value
-    )
+    message = "cruise.osc:7:13: error: speed() on env.fog(): an environment action takes no modifiers"
+    assert message in refusal(text)
 
 
 def test_an_environment_action_the_tool_does_not_know_is_read_with_a_warning_naming_the_ones_it_knows():
@@ -106,19 +108,15 @@ def test_an_environment_action_the_tool_does_not_know_is_read_with_a_warning_nam
 
 def test_a_behavior_that_only_sets_the_environment_is_an_error():
     text = "scenario s:\n    ego: car\n    env: environment\n    do env.rain(intensity: 5kph)\n"
-    with pytest.raises(OscError) as refused:
-        check_text(text, "s.osc").raise_for_errors()
-    assert "the behavior only sets the environment: no vehicle is driven" in str(refused.value)
+    assert "the behavior only sets the environment: no vehicle is driven" in refusal(text, "s.osc")
 
 
 def test_a_vehicles_action_on_the_environment_and_the_environments_on_a_vehicle_are_errors():
-    text = scenario("        env.drive()\n        ego.rain(intensity: 3kph)\n")
-    with pytest.raises(OscError) as refused:
-        check_text(text, "cruise.osc").raise_for_errors()
-    assert "cruise.osc:6:9: error: env.drive(): drive() is an action of a vehicle, and 'env' is the environment" in str(
-        refused.value
+    report = refusal(scenario("        env.drive()\n        ego.rain(intensity: 3kph)\n"))
+    assert (
+        "cruise.osc:6:9: error: env.drive(): drive() is an action of a vehicle, and 'env' is the environment" in report
     )
-    assert "cruise.osc:7:9: error: rain() is an action of the environment, not of a vehicle" in str(refused.value)
+    assert "cruise.osc:7:9: error: rain() is an action of the environment, not of a vehicle" in report
 
 
 def test_a_labelled_environment_action_is_an_instant_whose_end_others_can_wait_for(tmp_path):
