@@ -135,3 +135,23 @@ def test_a_labelled_environment_action_is_an_instant_whose_end_others_can_wait_f
     labels = {t.id: t.label for t in automaton.transitions}
     (step,) = [k for k, t in plan.transitions if "wet.end emitted" in labels[t]]
     assert step * plan.dt == pytest.approx(3.0, abs=0.5), "the rain's instant is the first drive's end"
+
+
+def test_an_environment_action_given_a_duration_takes_that_time(tmp_path):
+    text = (
+        "scenario s:\n    ego: car\n    env: environment\n    do parallel:\n        serial:\n"
+        "            env.rain(intensity: 3kph, duration: 4s)\n            env.fog(200m)\n"
+        "        ego.drive(duration: 4s) with:\n            speed(30kph)\n"
+    )
+    path = tmp_path / "s.osc"
+    path.write_text(text)
+    automaton = build_automaton(load_scenario(path))
+    plan = ContinuousPlanner(automaton, ContinuousSettings(time_limit=30.0), 1).first()
+    assert plan.horizon * plan.dt == pytest.approx(4.0, abs=0.5)
+    waits = [t.label for t in automaton.transitions if "wait" in t.label]
+    assert waits, "the rain's 4 s are a phase of the run"
+
+
+def test_a_keep_or_an_until_on_an_environment_action_is_refused_with_the_duration_argument_as_the_way():
+    text = scenario("        env.rain(intensity: 3kph) with:\n            keep(it.duration == 2s)\n")
+    assert "cruise.osc:7:13: error: not supported: keep() on env.rain()" in refusal(text)

@@ -73,6 +73,18 @@ class EnvironmentActions:
                 f"{modifier.name}() on {what}: an environment action takes no modifiers",
                 "give its values as arguments",
             )
+        for constraint in node.constraints:
+            self.error(
+                constraint.location,
+                f"not supported: keep() on {what}",
+                "give it a duration: argument (an environment action takes no time without one)",
+            )
+        if node.until is not None:
+            self.error(
+                node.location,
+                f"not supported: until on {what}",
+                "give it a duration: argument (an environment action takes no time without one)",
+            )
 
 
 def environment_names(fields: Iterable[str], declared: Collection[str]) -> frozenset[str]:
@@ -83,13 +95,21 @@ def environment_names(fields: Iterable[str], declared: Collection[str]) -> froze
 
 
 def without_environment(behaviors: tuple[model.Behavior, ...], names: frozenset[str]) -> tuple[model.Behavior, ...]:
-    """``behaviors`` without the actions of the environment ``names``: a composition left with no
-    member goes too. A labelled one whose start or end the scenario waits for (``@wet.end``) leaves
+    """``behaviors`` without the actions of the environment ``names``, but for the time one given a
+    ``duration:`` takes (a wait of that long, under its label); a composition left with no member
+    goes too. A labelled one whose start or end the scenario waits for (``@wet.end``) leaves
     those events where it stood: the serial that marks them (``builtin_events``) gives way to its
     emits, which happen at that instant of its parent."""
     kept: list[model.Behavior] = []
     for behavior in behaviors:
         if isinstance(behavior, model.Invocation) and behavior.actor in names:
+            duration = behavior.argument("duration")
+            if duration is not None:
+                # given a duration, it lasts that long: a wait for it, under its label
+                elapsed = model.Call(
+                    "elapsed", (model.Argument(None, duration.value, duration.location),), duration.location
+                )
+                kept.append(model.Wait(elapsed, behavior.label, behavior.location))
             continue
         if isinstance(behavior, model.Composition):
             children = without_environment(behavior.children, names)
