@@ -155,3 +155,14 @@ def test_an_environment_action_given_a_duration_takes_that_time(tmp_path):
 def test_a_keep_or_an_until_on_an_environment_action_is_refused_with_the_duration_argument_as_the_way():
     text = scenario("        env.rain(intensity: 3kph) with:\n            keep(it.duration == 2s)\n")
     assert "cruise.osc:7:13: error: not supported: keep() on env.rain()" in refusal(text)
+
+
+def test_a_one_of_member_that_only_sets_the_environment_is_an_error_at_the_member():
+    text = (
+        "scenario s:\n    ego: car\n    env: environment\n    do serial:\n        one_of:\n"
+        "            env.fog(100m)\n            env.rain(intensity: 1kph, duration: 2s)\n"
+        "            ego.drive(duration: 3s)\n        ego.drive(duration: 3s)\n"
+    )
+    report = refusal(text, "s.osc")
+    assert "s.osc:6:13: error: this one_of member only sets the environment" in report
+    assert "s.osc:7:" not in report, "a member given a duration takes that time"

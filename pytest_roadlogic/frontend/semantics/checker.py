@@ -550,6 +550,16 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks, EnvironmentAc
                         "give it an action, or remove it",
                     )
         driven = without_environment(checked.behaviors, self.environments)
+        for behavior in checked.behaviors if driven != checked.behaviors else ():
+            for node in model.walk(behavior):
+                if isinstance(node, model.Composition) and node.operator == "one_of":
+                    for member in node.children:
+                        if not without_environment((member,), self.environments):
+                            self.error(
+                                member.location,
+                                "this one_of member only sets the environment: it takes no time and drives nothing",
+                                "give it a duration: argument, or a vehicle's action beside it",
+                            )
         if driven != checked.behaviors:
             if not driven and actors:
                 self.error(
