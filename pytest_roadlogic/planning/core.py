@@ -186,9 +186,14 @@ class IncrementalPlanner:
     def window(self, deadline: float, instance: str | None = None, assumptions: list | None = None) -> DurationWindow:
         """The horizons the durations allow, for this scenario's instance or the diagnosis's
         relaxable one (``instance`` with the ``assumptions`` it keeps). Only the scenario's own
-        instance has every duration in force, so only its window starts at the automaton's floor."""
+        instance has every duration in force, so only its window starts at the automaton's floor.
+        The scenario's own window is kept for the planner's later searches (the one that allows
+        unasked changes asks it the same questions), its deadline renewed."""
+        if instance is None and self._own_window is not None:
+            self._own_window.wait, self._own_window.deadline = self._waiter(deadline), deadline
+            return self._own_window
         floor = shortest_run(self.automaton, self.settings.dt) if instance is None else 0
-        return DurationWindow(
+        window = DurationWindow(
             AUTOMATON,
             instance or self.instance,
             self._waiter(deadline),
@@ -196,6 +201,11 @@ class IncrementalPlanner:
             floor,
             deadline,
         )
+        if instance is None:
+            self._own_window = window
+        return window
+
+    _own_window: DurationWindow | None = None
 
     def _waiter(self, deadline: float):
         """A window's wait: for a solve, until ``deadline``."""
