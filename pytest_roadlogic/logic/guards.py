@@ -107,8 +107,12 @@ class Guard:
     def robustness(self, snapshot: Snapshot) -> float:
         raise NotImplementedError
 
-    def robustness_series(self, columns: Mapping[str, Mapping[str, np.ndarray]]) -> np.ndarray:
-        """``robustness`` at every sample of a trace at once (``columns``: actor -> column -> array)."""
+    def robustness_series(
+        self, columns: Mapping[str, Mapping[str, np.ndarray]], memo: dict | None = None
+    ) -> np.ndarray:
+        """``robustness`` at every sample of a trace at once (``columns``: actor -> column -> array).
+        ``memo``: each bound's series, kept across the guards of one trace (an automaton's guards
+        share a few dozen bounds among thousands of uses)."""
         raise NotImplementedError
 
     def atoms(self) -> tuple[Bound, ...]:
@@ -144,7 +148,11 @@ class Bound(Guard):
         """How a message names this bound: the file's constraint for a variant, else the bound."""
         return self.written or str(self)
 
-    def robustness_series(self, columns) -> np.ndarray:
+    def robustness_series(self, columns, memo: dict | None = None) -> np.ndarray:
+        if memo is not None:
+            if self not in memo:
+                memo[self] = self.robustness_series(columns)
+            return memo[self]
         if self.term.quantity == HEADWAY:
             ahead, behind = columns[self.term.actor], columns[self.term.reference]
             ahead_x, behind_x, behind_speed = (
@@ -199,11 +207,11 @@ class And(Guard):
     def robustness(self, snapshot: Snapshot) -> float:
         return min((p.robustness(snapshot) for p in self.parts), default=math.inf)
 
-    def robustness_series(self, columns) -> np.ndarray:
+    def robustness_series(self, columns, memo: dict | None = None) -> np.ndarray:
         if not self.parts:
             length = len(next(iter(next(iter(columns.values())).values())))
             return np.full(length, math.inf)
-        return np.minimum.reduce([p.robustness_series(columns) for p in self.parts])
+        return np.minimum.reduce([p.robustness_series(columns, memo) for p in self.parts])
 
     def atoms(self) -> tuple[Bound, ...]:
         return tuple(a for p in self.parts for a in p.atoms())
@@ -226,11 +234,11 @@ class Or(Guard):
     def robustness(self, snapshot: Snapshot) -> float:
         return max((p.robustness(snapshot) for p in self.parts), default=-math.inf)
 
-    def robustness_series(self, columns) -> np.ndarray:
+    def robustness_series(self, columns, memo: dict | None = None) -> np.ndarray:
         if not self.parts:
             length = len(next(iter(next(iter(columns.values())).values())))
             return np.full(length, -math.inf)
-        return np.maximum.reduce([p.robustness_series(columns) for p in self.parts])
+        return np.maximum.reduce([p.robustness_series(columns, memo) for p in self.parts])
 
     def atoms(self) -> tuple[Bound, ...]:
         return tuple(a for p in self.parts for a in p.atoms())
@@ -249,8 +257,8 @@ class Not(Guard):
     def robustness(self, snapshot: Snapshot) -> float:
         return -self.part.robustness(snapshot)
 
-    def robustness_series(self, columns) -> np.ndarray:
-        return -self.part.robustness_series(columns)
+    def robustness_series(self, columns, memo: dict | None = None) -> np.ndarray:
+        return -self.part.robustness_series(columns, memo)
 
     def atoms(self) -> tuple[Bound, ...]:
         return self.part.atoms()

@@ -227,12 +227,12 @@ class _Margins:
     the columns the phases' two-end bounds read (speed for a mean acceleration, x for a distance)."""
 
     def __init__(self, automaton: SymbolicAutomaton, trace: Trace) -> None:
-        self.guard = {t.id: t.guard.robustness_series(trace.actors).tolist() for t in automaton.transitions}
-        self.invariant = {
-            q: automaton.location(q).invariant.robustness_series(trace.actors).tolist()
-            for q in range(len(automaton.locations))
-            if not automaton.location(q).invariant.is_true
-        }
+        memo: dict = {}  # each bound's series, shared by the guards and invariants that use it
+        guards = [t.guard.robustness_series(trace.actors, memo) for t in automaton.transitions]
+        self.guard = dict(zip([t.id for t in automaton.transitions], np.array(guards).tolist(), strict=True))
+        held = [q for q in range(len(automaton.locations)) if not automaton.location(q).invariant.is_true]
+        invariants = [automaton.location(q).invariant.robustness_series(trace.actors, memo) for q in held]
+        self.invariant = dict(zip(held, np.array(invariants).tolist(), strict=True))
         forward = {a: np.diff(trace.actors[a]["x"]) > 0 for a in trace.names}
         self.progress = {a: moved.tolist() for a, moved in forward.items()}
         # moved[q, k]: every actor driving in location q moved forward over (k, k+1] (as an array,
