@@ -26,10 +26,16 @@ def scenario(weather: str, field: str = "    env: environment\n") -> str:
     return f"scenario cruise:\n    ego: car\n    npc: car\n{field}    do parallel(duration: 8s):\n{weather}{DRIVES}"
 
 
-def first_plan(tmp_path, text: str):
-    path = tmp_path / "cruise.osc"
+def planned(tmp_path, text: str):
+    """The automaton of ``text`` written to a file, and its first plan at seed 1."""
+    path = tmp_path / "scenario.osc"
     path.write_text(text)
-    return ContinuousPlanner(build_automaton(load_scenario(path)), ContinuousSettings(time_limit=30.0), 1).first()
+    automaton = build_automaton(load_scenario(path))
+    return automaton, ContinuousPlanner(automaton, ContinuousSettings(time_limit=30.0), 1).first()
+
+
+def first_plan(tmp_path, text: str):
+    return planned(tmp_path, text)[1]
 
 
 def refusal(text: str, name: str = "cruise.osc") -> str:
@@ -75,10 +81,7 @@ def test_an_environment_action_in_a_serial_takes_no_time(tmp_path):
         "scenario s:\n    ego: car\n    env: environment\n    do serial:\n"
         "        env.rain(intensity: 5kph)\n        ego.drive(duration: 4s) with:\n            speed(30kph)\n"
     )
-    path = tmp_path / "s.osc"
-    path.write_text(text)
-    automaton = build_automaton(load_scenario(path))
-    plan = ContinuousPlanner(automaton, ContinuousSettings(time_limit=30.0), 1).first()
+    automaton, plan = planned(tmp_path, text)
     assert plan.horizon * plan.dt == pytest.approx(4.0, abs=0.5)
 
 
@@ -143,10 +146,7 @@ def test_an_environment_action_given_a_duration_takes_that_time(tmp_path):
         "            env.rain(intensity: 3kph, duration: 4s)\n            env.fog(200m)\n"
         "        ego.drive(duration: 4s) with:\n            speed(30kph)\n"
     )
-    path = tmp_path / "s.osc"
-    path.write_text(text)
-    automaton = build_automaton(load_scenario(path))
-    plan = ContinuousPlanner(automaton, ContinuousSettings(time_limit=30.0), 1).first()
+    automaton, plan = planned(tmp_path, text)
     assert plan.horizon * plan.dt == pytest.approx(4.0, abs=0.5)
     waits = [t.label for t in automaton.transitions if "wait" in t.label]
     assert waits, "the rain's 4 s are a phase of the run"
