@@ -130,11 +130,8 @@ def test_a_labelled_environment_action_is_an_instant_whose_end_others_can_wait_f
         "                speed(30kph)\n        serial:\n            wait @wet.end\n"
         "            npc.drive(duration: 3s) with:\n                speed(30kph)\n"
     )
-    path = tmp_path / "s.osc"
-    path.write_text(text)
-    automaton = build_automaton(load_scenario(path))
+    automaton, plan = planned(tmp_path, text)
     assert any("wet.end emitted" in t.label for t in automaton.transitions)
-    plan = ContinuousPlanner(automaton, ContinuousSettings(time_limit=30.0), 1).first()
     labels = {t.id: t.label for t in automaton.transitions}
     (step,) = [k for k, t in plan.transitions if "wet.end emitted" in labels[t]]
     assert step * plan.dt == pytest.approx(3.0, abs=0.5), "the rain's instant is the first drive's end"
