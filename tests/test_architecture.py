@@ -294,7 +294,7 @@ def test_the_front_ends_syntax_never_imports_its_semantics():
 
 
 def test_the_commands_help_loads_no_command_and_a_command_loads_only_itself():
-    # `roadlogic --help` and a mistyped command are answered before any command's flags (the option table) exist
+    # `roadlogic --help` is answered before any command's flags (the option table) exist
     code = (
         "import sys, contextlib, io\n"
         "from pytest_roadlogic.cli import main\n"

@@ -9,11 +9,8 @@ from pathlib import Path
 
 from ..outcomes import CONFORMANT
 from ..settings import count as parse_count
-from .commands import SUMMARIES
+from .commands import EXIT_ACCEPTED, EXIT_INPUT, EXIT_REJECTED, SUMMARIES
 from .common import (
-    EXIT_ACCEPTED,
-    EXIT_INPUT,
-    EXIT_REJECTED,
     RUN_FLAGS,
     executor_flags,
     flag,

@@ -8,8 +8,8 @@ import argparse
 import sys
 from pathlib import Path
 
-from .commands import SUMMARIES
-from .common import EXIT_INPUT, ROAD_FLAGS, allow_read, read_roots, setting_flags
+from .commands import EXIT_INPUT, SUMMARIES
+from .common import ROAD_FLAGS, allow_read, read_roots, setting_flags
 
 
 def add(commands) -> None:

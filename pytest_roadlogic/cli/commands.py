@@ -15,5 +15,5 @@ SUMMARIES = {
     "falsify": "search for a failing case from several seeds at once; on a cluster too",
 }
 
-# what each command exits with (the commands' common module names them for their actions)
+# what each command exits with
 EXIT_ACCEPTED, EXIT_REJECTED, EXIT_INPUT = 0, 1, 2

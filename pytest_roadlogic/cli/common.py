@@ -19,11 +19,7 @@ from ..settings import (
     RunSettings,
     whole_number,
 )
-
-# the exit codes, shared by every command's action
-from .commands import EXIT_ACCEPTED as EXIT_ACCEPTED
-from .commands import EXIT_INPUT as EXIT_INPUT
-from .commands import EXIT_REJECTED as EXIT_REJECTED
+from .commands import EXIT_ACCEPTED, EXIT_INPUT, EXIT_REJECTED
 
 DRIVER_HELP = "drive VEHICLE with the class MODULE:CLASS (built without arguments; see pytest_roadlogic.simulation.Driver) instead of the simulator's own; repeat for several"
 

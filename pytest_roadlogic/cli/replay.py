@@ -12,10 +12,9 @@ from ..settings import (
     STRATEGIES,
 )
 from ..settings import count as parse_count
-from .commands import SUMMARIES
+from .commands import EXIT_INPUT, SUMMARIES
 from .common import (
     DRIVER_HELP,
-    EXIT_INPUT,
     ROAD_FLAGS,
     RUN_FLAGS,
     allow_read,

@@ -13,12 +13,9 @@ from ..settings import (
     BASE,
     REFINED,
 )
-from .commands import SUMMARIES
+from .commands import EXIT_ACCEPTED, EXIT_INPUT, EXIT_REJECTED, SUMMARIES
 from .common import (
     DRIVER_HELP,
-    EXIT_ACCEPTED,
-    EXIT_INPUT,
-    EXIT_REJECTED,
     RUN_FLAGS,
     artifacts_flag,
     driver_factory,

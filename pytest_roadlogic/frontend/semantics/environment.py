@@ -113,10 +113,10 @@ def without_environment(behaviors: tuple[model.Behavior, ...], names: frozenset[
             continue
         if isinstance(behavior, model.Composition):
             children = without_environment(behavior.children, names)
-            if children != behavior.children and all(isinstance(c, model.Emit) for c in children):
-                kept.extend(children)
-                continue
             if children != behavior.children:
+                if all(isinstance(child, model.Emit) for child in children):
+                    kept.extend(children)  # none left, or only the events it marked
+                    continue
                 behavior = replace(behavior, children=children)
         kept.append(behavior)
     return tuple(kept)
