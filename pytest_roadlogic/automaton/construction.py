@@ -405,7 +405,7 @@ def _check_size(transitions: int, location, composition: str) -> None:
         raise error_at(
             location,
             f"this {composition}'s automaton grows past {MAX_TRANSITIONS:,} transitions: its members' choices multiply "
-            "(a variant per starting lane for keep_lane() and change_lane(), per speed band for keep_speed())",
+            "(a variant per starting lane for keep_lane() and change_lane())",
             hint="give the lanes the members start in (lane(k, at: start)), narrow the road (path_max_lanes), or split the parallel into phases",
         )
 

@@ -1,8 +1,8 @@
 """Speed: the ``speed()``, ``keep_speed()`` and ``acceleration()`` modifiers, the ``change_speed()``, ``assign_speed()`` and ``keep_speed()`` actions.
 
-``keep_speed`` refers to the speed the phase started with, which a guard cannot see: it becomes one
-variant per 1 m/s band from 0 to 40 m/s (the speed starts within half a band of the band's value
-and stays within a band of it, so it varies by 1.5 m/s at most).
+``keep_speed`` refers to the speed the phase started with, which a guard cannot see: it becomes a
+bound over the phase (``HeldSpeed``), the speed within ``KEEP_SPEED_BAND`` of its first value at
+every instant.
 """
 
 from __future__ import annotations
@@ -10,31 +10,26 @@ from __future__ import annotations
 import math
 
 from ..frontend import model
-from ..frontend.errors import SourceLocation, error_at
+from ..frontend.errors import error_at
 from ..frontend.semantics.library import AT, DURATION, Binding, Parameter, Signature
 from ..frontend.semantics.tolerances import ACCELERATION_TOLERANCE, SPEED_TOLERANCE, widened
 from ..frontend.semantics.values import EvaluationError, evaluate
 from ..frontend.syntax.units import ACCELERATION, SPEED
-from ..logic.automaton import MeanAcceleration, ShapedSpeedChange
+from ..logic.automaton import HeldSpeed, MeanAcceleration, ShapedSpeedChange
 from ..logic.guards import SPEED as SPEED_Q
 from ..logic.guards import Bound, Guard, Term
-from ..logic.phase import Phase, Variant
+from ..logic.phase import Phase
 from .base import ASKS_SPEED, Action, AnchoredModifier, CheckContext, Modifier, Use
 
-KEEP_SPEED_CENTRES = tuple(float(v) for v in range(0, 41))
-KEEP_SPEED_BAND = 1.0
+# m/s: how far a kept speed may stray from the phase's first speed, either way (a tracking
+# controller's wobble through a lane change)
+KEEP_SPEED_BAND = 1.5
 RELATIONS = ("faster_than", "slower_than", "same_as")
 
 
-def keep_speed_variants(actor: str, source: SourceLocation, written: str = "keep_speed()") -> list[Variant]:
-    text = f"{written}: v({actor}) held at its value at the phase's start"
-    return [
-        Variant(
-            start=Bound(Term(SPEED_Q, actor), max(0.0, c - KEEP_SPEED_BAND / 2), c + KEEP_SPEED_BAND / 2, source, text),
-            invariant=Bound(Term(SPEED_Q, actor), max(0.0, c - KEEP_SPEED_BAND), c + KEEP_SPEED_BAND, source, text),
-        )
-        for c in KEEP_SPEED_CENTRES
-    ]
+def held_speed(use: Use) -> HeldSpeed:
+    """keep_speed()'s bound over its phase: the actor's speed within ``KEEP_SPEED_BAND`` of the phase's first."""
+    return HeldSpeed(use.actor, 0.0, KEEP_SPEED_BAND, source=use.location)
 
 
 def refuse_negative_speed(binding: Binding, argument: str, context: CheckContext, relative: bool = False) -> None:
@@ -97,14 +92,14 @@ class KeepSpeedModifier(Modifier):
     signature = Signature("keep_speed", (), description="hold the speed from the phase's start")
 
     def translate(self, use: Use, phase: Phase) -> None:
-        phase.branch(keep_speed_variants(use.actor, use.location))
+        phase.rates.append(held_speed(use))
 
 
 class KeepSpeedAction(Action):
     signature = Signature("keep_speed", (DURATION,), description="hold the speed from the phase's start")
 
     def translate(self, use: Use, phase: Phase) -> None:
-        phase.branch(keep_speed_variants(use.actor, use.location))
+        phase.rates.append(held_speed(use))
 
 
 # a speed change's rate_profile (the standard's dynamics_shape since 2.0, rate_profile in 1.0) -> the

@@ -99,10 +99,12 @@ class PhaseBound:
         ``end`` of the actor's column ``series``: its end, unless the bound says otherwise."""
         return end
 
-    def margin(self, start: float, end: float, seconds: float) -> float:
-        """How far inside the range the value lies (in its unit, negative outside)."""
-        value = self.value(start, end, seconds)
-        return min(value - self.low, self.high - value)
+    def measured(self, series, times, begun: int, end: int) -> float:
+        """The bounded value of the phase that runs from sample ``begun`` to ``end`` of the actor's
+        column ``series`` (``times``: the samples' times, s): read from its two ends (``span``),
+        unless the bound reads the samples between them too."""
+        read = self.span(series, begun, end)
+        return self.value(series[begun], series[read], times[read] - times[begun])
 
     def __str__(self) -> str:
         over = f" over {self.phase}" if self.phase else ""
@@ -224,6 +226,35 @@ class Travelled(ChangeOverPhase):
     what: ClassVar[str] = "distance travelled"
     symbol: ClassVar[str] = "travelled"
     unit: ClassVar[str] = "m"
+
+
+@dataclass(frozen=True)
+class HeldSpeed(PhaseBound):
+    """``keep_speed()``: the actor's speed stays within ``high`` (m/s) of its value at the phase's
+    start, at every instant of the phase (``low`` is 0): the largest |v(t) - v(start)| over it.
+
+    Why a bound over the phase and not a guard: the speed it holds is the one the phase starts
+    with, which a guard cannot name; one row per step against the phase's first speed says it
+    exactly, where a choice among bands of starting speeds multiplied the automaton by their
+    number. The planner holds it on every step (``asp/continuous/rates.lp``; the grid holds the
+    speed exactly), the monitor reads every sample of the phase."""
+
+    column: ClassVar[str] = "speed"
+    construct: ClassVar[str] = "keep_speed()"
+    what: ClassVar[str] = "largest change of speed from the phase's start"
+    symbol: ClassVar[str] = "max |dv|"
+    unit: ClassVar[str] = "m/s"
+
+    def value(self, start: float, end: float, seconds: float) -> float:
+        return abs(end - start)
+
+    def measured(self, series, times, begun: int, end: int) -> float:
+        first = series[begun]
+        return max(abs(series[k] - first) for k in range(begun, end + 1))
+
+    def __str__(self) -> str:
+        over = f" over {self.phase}" if self.phase else ""
+        return f"keep_speed() of {self.actor}{over}: its speed within {self.high:g} {self.unit} of the phase's first"
 
 
 @dataclass(frozen=True)

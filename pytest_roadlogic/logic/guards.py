@@ -136,7 +136,7 @@ class Bound(Guard):
     high: float = math.inf
     source: SourceLocation | None = None
     # the file's constraint as written, when this bound is one of the variants that stand for it
-    # (keep_speed(): one band of starting speeds): a message names the constraint, not the variant
+    # (keep_lane(): one lane each): a message names the constraint, not the variant
     written: str | None = field(default=None, compare=False, repr=False)
 
     def holds(self, snapshot: Snapshot) -> bool:

@@ -515,9 +515,8 @@ def _advance(
         for rate in timing.rates:
             if seconds <= 0:
                 return None
-            series = columns[rate.column][rate.actor]
-            read = rate.span(series, begun, k)
-            rate_margin = rate.margin(series[begun], series[read], times[read] - times[begun])
+            value = rate.measured(columns[rate.column][rate.actor], times, begun, k)
+            rate_margin = min(value - rate.low, rate.high - value)
             margin = min(margin, rate_margin)
             if rate_margin < 0 and (missed is None or rate_margin < missed[0]):
                 missed = (rate_margin, (rate, begun))
@@ -529,8 +528,8 @@ def _rate_miss(automaton: SymbolicAutomaton, found: tuple, columns, times) -> Gu
     met, where it came closest (all else met up to there)."""
     margin, k, location, (rate, begun) = found
     series = columns[rate.column][rate.actor]
+    value = rate.measured(series, times, begun, k)
     k = rate.span(series, begun, k)
-    seconds = times[k] - times[begun]
     name = "v" if rate.column == "speed" else rate.column
     return GuardMiss(
         source=automaton.location(location).name,
@@ -540,7 +539,7 @@ def _rate_miss(automaton: SymbolicAutomaton, found: tuple, columns, times) -> Gu
         time=float(times[k]),
         robustness=float(margin),
         values={
-            f"{rate.symbol}({rate.actor})": float(rate.value(series[begun], series[k], seconds)),
+            f"{rate.symbol}({rate.actor})": float(value),
             f"{name}({rate.actor}) at start": float(series[begun]),
             f"{name}({rate.actor}) at end": float(series[k]),
         },

@@ -156,13 +156,13 @@ def test_roadlogic_automaton_of_a_bad_file_is_a_located_error_and_exit_2(tmp_pat
     assert f"{bad}:3:6: error: unknown action 'fly'" in capsys.readouterr().err
 
 
-def test_keep_speed_is_a_choice_of_one_metre_per_second_bands_held_throughout():
+def test_keep_speed_is_one_bound_over_its_phase_against_the_speed_it_starts_with():
     text = "scenario s:\n  a: car\n  do a.keep_speed()\n"
     a = build_automaton(check_text(text).scenarios[0])
-    starts = {str(t.guard) for t in a.outgoing(a.initial)}
-    assert "11.5 <= v(a) <= 12.5 and 11 <= v(a) <= 13" in starts and len(starts) == 41
-    band = [loc for loc in a.locations if str(loc.invariant) == "11 <= v(a) <= 13"]
-    assert len(band) == 1
+    assert len(a.outgoing(a.initial)) == 1, "one phase, not a choice of starting speeds"
+    (timing,) = a.timings.values()
+    assert [(type(r).__name__, r.actor, r.low, r.high) for r in timing.rates] == [("HeldSpeed", "a", 0.0, 1.5)]
+    assert "keep_speed() of a over a.keep_speed: its speed within 1.5 m/s of the phase's first" in a.describe()
 
 
 def test_durations_and_waits_become_timed_phases():

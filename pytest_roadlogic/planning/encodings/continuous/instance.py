@@ -13,6 +13,7 @@ from fractions import Fraction
 
 from ....logic.automaton import (
     SHAPE_PEAK_OVER_MEAN,
+    HeldSpeed,
     MeanAcceleration,
     ShapedSpeedChange,
     SpeedGain,
@@ -233,7 +234,9 @@ def rate_facts(automaton: SymbolicAutomaton, settings: ContinuousSettings, relax
     length D the phase may have (up to its upper bound, or to the horizon limit for a phase with
     none), ``gain_at_least(R,D,X)`` / ``gain_at_most(R,D,X)``, inset by ``speed_margin``. A
     distance travelled, ``travelled(R,P,V)`` with ``travelled_at_least(R,X)`` /
-    ``travelled_at_most(R,X)``, inset by ``position_margin``. A rate the diagnosis may relax:
+    ``travelled_at_most(R,X)``, inset by ``position_margin``. A kept speed (``HeldSpeed``),
+    ``held_speed(R,P,V)`` with ``held_within(R,X)``: the speed within X of the phase's first on
+    every step, inset by ``speed_margin``. A rate the diagnosis may relax:
     ``relaxable(rate(R),K)``."""
     facts = ["% rates over a phase's two ends (asp/continuous/rates.lp)"]
     rate_id = 0
@@ -270,6 +273,11 @@ def rate_facts(automaton: SymbolicAutomaton, settings: ContinuousSettings, relax
                         facts.append(f"gain_at_least({r},{length},{number(low)}).")
                     if math.isfinite(high):
                         facts.append(f"gain_at_most({r},{length},{number(high)}).")
+                continue
+            if isinstance(rate, HeldSpeed):
+                within = inset(-rate.high, rate.high, automaton.planned_margin(rate, settings.speed_margin))[1]
+                facts.append(f"held_speed({r},{phase},{actor}).")
+                facts.append(f"held_within({r},{number(within)}).")
                 continue
             if isinstance(rate, ShapedSpeedChange):
                 facts.extend(shape_facts(r, phase, actor, rate, settings, automaton, range(shortest, longest + 1)))

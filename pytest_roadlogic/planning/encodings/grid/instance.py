@@ -16,7 +16,7 @@ import math
 import random
 
 from ....frontend.errors import OscError, error_at
-from ....logic.automaton import SymbolicAutomaton
+from ....logic.automaton import HeldSpeed, SymbolicAutomaton
 from ....logic.guards import HEADWAY, POSITION, TRAVELED, Bound, Guard, Not
 from ...facts import actors_of, atom, bounds_text, inset, whole_outside, whole_range, with_automaton
 from .settings import GridSettings
@@ -28,7 +28,8 @@ def build_instance(automaton: SymbolicAutomaton, settings: GridSettings, relaxab
     With ``relaxable``, each constraint of ``relaxable_constraints`` (numbered in that order) is
     switched off by an external ``relaxed(K)``: a diagnosis asks which of them cannot hold together.
     """
-    rate = next((rate for timing in automaton.timings.values() for rate in timing.rates), None)
+    rates = [rate for timing in automaton.timings.values() for rate in timing.rates]
+    rate = next((rate for rate in rates if not isinstance(rate, HeldSpeed)), None)
     if rate is not None:
         why = (
             "the grid encoding's accelerations are -2, 0 and +2 cells per step^2"
@@ -81,7 +82,26 @@ def build_instance(automaton: SymbolicAutomaton, settings: GridSettings, relaxab
         settings.dt,
         relaxable,
         lambda node, guard: node_facts(node, guard, settings, automaton),
+        lambda relax: held_facts(automaton, relax),
     )
+
+
+def held_facts(automaton: SymbolicAutomaton, relax: dict) -> list[str]:
+    """Each kept speed (``HeldSpeed``, keep_speed()) as ``held_speed(R,P,V)`` (``asp/grid/rates.lp``:
+    no acceleration on any step of phase P, the speed exactly held, as the grid's speeds are whole
+    cells), with ``relaxable(rate(R),K)`` when the diagnosis may relax it."""
+    facts = ["% kept speeds (asp/grid/rates.lp)"]
+    held = (
+        (phase, rate)
+        for phase, timing in sorted(automaton.timings.items())
+        for rate in timing.rates
+        if isinstance(rate, HeldSpeed)
+    )
+    for r, (phase, rate) in enumerate(held):
+        facts.append(f"held_speed({r},{phase},{atom(rate.actor)}).  % {rate}")
+        if rate.source in relax:
+            facts.append(f"relaxable(rate({r}),{relax[rate.source]}).")
+    return facts
 
 
 def _runup_fact(cells_per_step: int, steps: int, settings: GridSettings) -> str:

@@ -34,6 +34,7 @@ BACKGROUND = (
     AUTOMATON,
     ASP_DIR / "guards.lp",
     ASP_GRID / "guards.lp",
+    ASP_GRID / "rates.lp",  # inert without keep_speed()
 )
 INITIAL = "initial.lp"  # the rules of the initial state, after the instance's facts (see control_for)
 PREFERENCES = (ASP_GRID / "preferences.lp", KEEP_LANE)  # loaded for a random start only, in this order
