@@ -306,7 +306,8 @@ def _atomic(
     invocation: model.Invocation, checked: CheckedScenario, counter, env: dict
 ) -> tuple[_Fragment, tuple[PhaseBound, ...]]:
     """The phase's fragment, and what it asks of its start and end together."""
-    phase = phase_guards(invocation, checked.registry, checked.lanes, env)
+    actors = tuple(a.name for a in checked.scenario.actors)
+    phase = phase_guards(invocation, checked.registry, checked.lanes, env, actors)
     labelled = invocation.label is not None
     name = invocation.label if labelled else _phase_name(invocation)
     drivers = frozenset([invocation.actor]) if phase.drives else frozenset()

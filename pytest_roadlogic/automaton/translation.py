@@ -22,8 +22,11 @@ from ..frontend.syntax.units import TIME
 from ..logic.phase import Phase
 
 
-def phase_guards(invocation: model.Invocation, registry: Registry, lanes: int, env: dict) -> Phase:
-    """The guards of one atomic phase; ``env`` gives the parameters' values or ranges."""
+def phase_guards(
+    invocation: model.Invocation, registry: Registry, lanes: int, env: dict, actors: tuple[str, ...] = ()
+) -> Phase:
+    """The guards of one atomic phase; ``env`` gives the parameters' values or ranges, ``actors``
+    the scenario's actors."""
     actor = _actor(invocation)
     action = registry.action(invocation.action)
     if action is None or not action.translated:
@@ -38,7 +41,7 @@ def phase_guards(invocation: model.Invocation, registry: Registry, lanes: int, e
             invocation.constraints[0].location, "not supported yet by the automaton: keep() on an invocation"
         )
     phase = Phase(actor, drives=action.moves)
-    action.apply(invocation, actor, lanes, env, phase)
+    action.apply(invocation, actor, lanes, env, phase, actors)
     for modifier in invocation.modifiers:
         construct = registry.modifier(modifier.name)
         if construct is None or not construct.translated:
@@ -47,7 +50,7 @@ def phase_guards(invocation: model.Invocation, registry: Registry, lanes: int, e
                 f"not supported yet by the automaton: modifier {modifier.name!r}",
                 hint=f"supported: {', '.join(registry.translated('modifier'))}",
             )
-        construct.apply(modifier, actor, lanes, env, phase)
+        construct.apply(modifier, actor, lanes, env, phase, actors)
     return phase
 
 

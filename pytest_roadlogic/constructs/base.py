@@ -60,6 +60,9 @@ class Use:
     actor: str  # the actor of the invocation
     lanes: int  # lanes of the road
     env: dict  # parameter values or ranges
+    # every actor of the scenario (a construct that reads the others: CARLA's target speed yields
+    # to a car ahead in its lane)
+    actors: tuple[str, ...] = ()
 
     @property
     def location(self) -> SourceLocation:
@@ -144,14 +147,23 @@ class Construct:
         """Add this use's guards to its phase."""
         raise NotImplementedError(f"{type(self).__name__} is translated = {self.translated} but has no translate()")
 
-    def apply(self, node: model.Invocation | model.Modifier, actor: str, lanes: int, env: dict, phase: Phase) -> None:
-        """Translate one use (its arguments bound to the signature) into ``phase``: what the automaton calls."""
+    def apply(
+        self,
+        node: model.Invocation | model.Modifier,
+        actor: str,
+        lanes: int,
+        env: dict,
+        phase: Phase,
+        actors: tuple[str, ...] = (),
+    ) -> None:
+        """Translate one use (its arguments bound to the signature) into ``phase``: what the automaton
+        calls (``actors``: every actor of the scenario)."""
         binding = bind(self.signature, node.arguments)
         if self.asked_within(binding):
             phase.asks |= self.asks
         if self.asked_at_start(binding):
             phase.asks_at_start |= self.asks
-        self.translate(Use(node, binding, actor, lanes, env), phase)
+        self.translate(Use(node, binding, actor, lanes, env, actors), phase)
 
     def asked_at_start(self, binding: Binding) -> bool:
         """Whether this use asks for its lane or speed already at its phase's first instant (so that

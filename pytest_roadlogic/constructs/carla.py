@@ -25,6 +25,8 @@ from ..frontend.semantics.library import DURATION, Binding, Parameter, Signature
 from ..frontend.semantics.tolerances import SPEED_TOLERANCE, widened
 from ..frontend.syntax.units import SPEED
 from ..logic.automaton import SpeedGain, Steady, Toward
+from ..logic.guards import LANE, POSITION, And, Bound, Guard, Or, Term
+from ..logic.guards import SPEED as SPEED_Q
 from ..logic.phase import Phase
 from ..settings import CARLA_DIALECT
 from .base import ASKS_SPEED, CheckContext, Modifier, Use
@@ -34,6 +36,10 @@ from .position import Position
 from .speed import RELATIONS, Speed
 
 DIALECT = CARLA_DIALECT
+# how far ahead a car a target speed yields to may be: this headway at the target's top speed, and
+# at least this many metres (centre to centre, as position() measures)
+FOLLOWING_HEADWAY = 3.0
+FOLLOWING_LEAST = 20.0
 CARLA_LANE_CONVENTION = "in CARLA's dialect lanes are numbered from 1 on the left (lane(1) is the leftmost); lane(k, from: right) counts from the right"
 
 
@@ -58,11 +64,37 @@ class CarlaSpeed(Speed):
         return not self.targets(binding) and super().asked_within(binding)
 
     def translate(self, use: Use, phase: Phase) -> None:
-        super().translate(use, phase)
-        if self.targets(use.binding):
-            asked = use.range("speed", SPEED, "a speed such as 20mps")
-            low, high = widened(*asked, SPEED_TOLERANCE)
-            phase.asks.add(Toward(max(0.0, low), high, max(0.0, (asked[0] + asked[1]) / 2)))
+        if not self.targets(use.binding):
+            super().translate(use, phase)
+            return
+        asked = use.range("speed", SPEED, "a speed such as 20mps")
+        low, high = widened(*asked, SPEED_TOLERANCE)
+        phase.asks.add(Toward(max(0.0, low), high, max(0.0, (asked[0] + asked[1]) / 2)))
+        phase.anchor(self.reached_or_following(use, max(0.0, low), high), "end")
+
+    @staticmethod
+    def reached_or_following(use: Use, low: float, high: float) -> Guard:
+        """The phase's end check of a target speed: the speed in its band, or below it with the
+        car behind another in its lane within ``FOLLOWING_HEADWAY`` at the target (at least
+        ``FOLLOWING_LEAST`` metres between their centres). Why: the standard's avoid_collisions
+        (on by default) outranks a target, as a driver's cruise control yields to the car ahead:
+        a car asked 40 kph behind a van at 30 kph follows the van, and is not placed where no van
+        can be ahead of it. Above the band is never yielding."""
+        reached = Bound(Term(SPEED_Q, use.actor), low, high, use.location)
+        below = Bound(Term(SPEED_Q, use.actor), 0.0, high, use.location)
+        within = max(FOLLOWING_LEAST, FOLLOWING_HEADWAY * high)
+        following = [
+            And(
+                (
+                    below,
+                    Bound(Term(LANE, other, use.actor), 0.0, 0.0, use.location),
+                    Bound(Term(POSITION, other, use.actor), 0.0, within, use.location),
+                )
+            )
+            for other in use.actors
+            if other != use.actor
+        ]
+        return Or((reached, *following)) if following else reached
 
 
 class CarlaPosition(Position):

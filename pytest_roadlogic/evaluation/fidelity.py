@@ -92,7 +92,7 @@ def unasked_changes(plan: Plan, automaton: SymbolicAutomaton) -> list[UnaskedCha
             band = location.toward(vehicle)
             if band is not None and _toward(before.speed, after.speed, band.low, band.high):
                 continue  # toward the speed it is asked to drive toward, not past it
-            if acceleration < 0 and (_follows(plan, vehicle, step - 1) or _follows(plan, vehicle, step)):
+            if acceleration < 0 and _brakes_for_ahead(plan, vehicle, step):
                 continue  # braking for the vehicle ahead: avoid_collisions asks it
             found.append(UnaskedChange(vehicle, step, "speed", before.speed, after.speed))
     return found
@@ -132,16 +132,27 @@ def _toward(before: float, after: float, low: float, high: float) -> bool:
     return False
 
 
-def _follows(plan: Plan, vehicle: str, step: int) -> bool:
-    """Whether another vehicle (or an obstacle) is ahead of ``vehicle`` in a lane they both occupy
-    at ``step``; a vehicle changing lane during the step occupies both lanes at its end (the lane
-    change is a move across the line, as the planner and the simulation have it)."""
-    mine = _occupied(plan, vehicle, step)
+def _brakes_for_ahead(plan: Plan, vehicle: str, step: int) -> bool:
+    """Whether, during ``step``, ``vehicle`` may brake for a vehicle (or an obstacle) ahead of it in
+    its lane: the lane it is in at the step's end, or at its start when it stays in that lane (a
+    car pulling out from behind another does not brake for it). The other vehicle occupies both
+    lanes in a step in which it changes lane (a move across the line, as the planner and the
+    simulation have it)."""
+    if _ahead_in_lane(plan, vehicle, step):
+        return True
+    stays = plan.at(vehicle, step).lane == plan.at(vehicle, step - 1).lane
+    return stays and bool(_ahead_in_lane(plan, vehicle, step - 1))
+
+
+def _ahead_in_lane(plan: Plan, vehicle: str, step: int) -> list[str]:
+    """The vehicles (and obstacles) ahead of ``vehicle`` at ``step`` in the lane it is in."""
+    lane = plan.at(vehicle, step).lane
     position = plan.at(vehicle, step).position
-    return any(
-        other != vehicle and _occupied(plan, other, step) & mine and plan.at(other, step).position > position
+    return [
+        other
         for other in plan.vehicles
-    )
+        if other != vehicle and lane in _occupied(plan, other, step) and plan.at(other, step).position > position
+    ]
 
 
 def _occupied(plan: Plan, vehicle: str, step: int) -> set[int]:

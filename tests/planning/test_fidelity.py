@@ -47,13 +47,7 @@ def _first_plans(path: Path):
 
 
 # files whose first plan is known to make a change nothing asks, and why (strict: fixed, it fails)
-KNOWN_UNFAITHFUL = {
-    "slow_cut_in.osc": (
-        "the hero's 40 kph target checked at the slow phase's end, behind a van at 30 kph that no plan "
-        "may close in on at the end: the van slows to 18 kph in its steady passing phase and cuts in "
-        "behind the hero instead of ahead"
-    ),
-}
+KNOWN_UNFAITHFUL: dict[str, str] = {}
 
 
 @pytest.mark.parametrize(
@@ -84,6 +78,7 @@ EXPECTED = {
     "tests/corpus/111_global_map_and_anchor.osc": ({"ego_vehicle"}, set(), {"ego_vehicle": 25.0}),
     "tests/corpus/112_overtake_ego_returns.osc": ({"ego"}, {"npc"}, {}),
     "tests/corpus/113_carla_targets_in_sequence.osc": (set(), set(), {"ego_vehicle": 10 / 3.6}),
+    "scenarios/realistic/carla_dialect/slow_cut_in.osc": ({"van"}, set(), {"hero": 60 / 3.6}),
 }
 
 

@@ -74,6 +74,7 @@ def build_continuous_instance(
         ),
         # CARLA's position(..., at: end): one speed held over the phase where it can be (dynamics.lp)
         *(f"steady({location.id},{atom(actor)})." for location in automaton.locations for actor in location.steady()),
+        *(f"steady_later({q},{atom(actor)},{number(x)})." for q, actor, x in later_targets(automaton)),
         f"#const comfort_up = {number(s.comfortable_acceleration * s.dt)}.",
         f"#const comfort_down = {number(s.comfortable_deceleration * s.dt)}.",
         f"lane_id(0..{automaton.lanes - 1}).",
@@ -90,6 +91,33 @@ def build_continuous_instance(
         lambda node, guard: node_facts(node, guard, s, automaton),
         lambda relax: rate_facts(automaton, s, relax),
     )
+
+
+def later_targets(automaton: SymbolicAutomaton) -> list[tuple[int, str, float]]:
+    """(Q, V, X) for each location Q where V holds one speed (``Steady``) and every run from Q
+    next drives V toward the target X (``Toward.value``): the speed the steady phase must not
+    change toward after its first step (``asp/continuous/toward.lp``). A location whose runs meet
+    different next targets, or none, has no fact."""
+    found = []
+    for location in automaton.locations:
+        for actor in location.steady():
+            values: set[float] = set()
+            seen, frontier = {location.id}, [t.target for t in automaton.outgoing(location.id)]
+            while frontier:
+                q = frontier.pop()
+                if q in seen:
+                    continue
+                seen.add(q)
+                band = automaton.location(q).toward(actor)
+                if band is not None:
+                    values.add(band.value)
+                elif q == automaton.final:
+                    values.add(math.nan)  # a run with no later target
+                else:
+                    frontier.extend(t.target for t in automaton.outgoing(q))
+            if len(values) == 1 and not math.isnan(x := values.pop()):
+                found.append((location.id, actor, x))
+    return found
 
 
 def route_facts(s: ContinuousSettings, vehicles: tuple[str, ...], gap: float) -> list[str]:

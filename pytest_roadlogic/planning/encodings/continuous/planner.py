@@ -300,7 +300,28 @@ class ContinuousPlanner(IncrementalPlanner):
         # second solve at every replan period of a reactive case costs more than it mends
         if not self.past:
             found, kept = self._without_idle_guards(found, kept, solve)
+        found, kept = self._sides_weighed(found, kept, solve)
         return self._directions_weighed(found, kept, solve)
+
+    def _sides_weighed(self, found: tuple, kept: list, solve) -> tuple[tuple, list]:
+        """``found`` and its assumptions ``kept``, each phase held at one speed before a later
+        target (``asp/continuous/toward.lp``'s ``held_phase/2``) driven on the side of that target
+        that costs less. Which side (above or below the later target) is the solver's choice, made
+        before any speed is known; a wrong guess holds the phase's speed on the far side of the
+        target, and the vehicles around it pay for that (a car asked to start at 20 kph starting at
+        11 kph so that the held one need not be faster)."""
+        kept = list(kept)
+        chosen = {(s.arguments[0], s.arguments[1]) for s in found[0] if s.name == "above_later"}
+        for phase in sorted((s for s in found[0] if s.name == "held_phase"), key=str):
+            side = clingo.Function("above_later", list(phase.arguments))
+            above = tuple(phase.arguments) in chosen
+            tried = solve([*kept, (side, not above)])
+            if tried is not None and tried[2] < found[2]:
+                found = tried
+                kept.append((side, not above))
+            else:
+                kept.append((side, above))
+        return found, kept
 
     def _without_idle_guards(self, found: tuple, kept: list, solve) -> tuple[tuple, list]:
         """``found`` and its assumptions ``kept``, or the model with its idle guards (``idle.py``:
