@@ -29,7 +29,7 @@ RELATIONS = ("faster_than", "slower_than", "same_as")
 
 def held_speed(use: Use) -> HeldSpeed:
     """keep_speed()'s bound over its phase: the actor's speed within ``KEEP_SPEED_BAND`` of the phase's first."""
-    return HeldSpeed(use.actor, 0.0, KEEP_SPEED_BAND, source=use.location)
+    return HeldSpeed(use.actor, -math.inf, KEEP_SPEED_BAND, source=use.location)
 
 
 def refuse_negative_speed(binding: Binding, argument: str, context: CheckContext, relative: bool = False) -> None:

@@ -231,7 +231,9 @@ class Travelled(ChangeOverPhase):
 @dataclass(frozen=True)
 class HeldSpeed(PhaseBound):
     """``keep_speed()``: the actor's speed stays within ``high`` (m/s) of its value at the phase's
-    start, at every instant of the phase (``low`` is 0): the largest |v(t) - v(start)| over it.
+    start, at every instant of the phase: the largest |v(t) - v(start)| over it is at most
+    ``high`` (``low`` is -inf: a speed held exactly is as far inside the bound as it can be, not at
+    its edge).
 
     Why a bound over the phase and not a guard: the speed it holds is the one the phase starts
     with, which a guard cannot name; one row per step against the phase's first speed says it

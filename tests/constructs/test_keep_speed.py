@@ -80,3 +80,10 @@ scenario s:
     automaton = build_automaton(check_text(text).scenarios[0])
     without = build_automaton(check_text(text.replace(" with:\n                keep_speed()", "")).scenarios[0])
     assert len(automaton.transitions) == len(without.transitions)
+
+
+def test_a_speed_held_exactly_is_well_inside_keep_speed_not_at_its_edge(automaton):
+    # |v - v(start)| is never below 0: a bound there read every held speed as robustness 0
+    trace = speed_trace(automaton, [(0, 20), (9, 20)])
+    verdict = monitor(automaton, trace)
+    assert verdict.accepted and verdict.robustness > 0.4, verdict.explain()
