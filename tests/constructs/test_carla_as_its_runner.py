@@ -347,3 +347,20 @@ def test_a_car_pulling_out_from_behind_another_does_not_brake_for_it_in_the_step
     out = next(k for k in range(1, len(ego)) if ego[k].lane != ego[k - 1].lane)
     assert ego[out].speed >= ego[out - 1].speed - 0.05, [round(s.speed / KPH) for s in ego]
     assert ego[-1].lane == npc[-1].lane and ego[-1].position > npc[-1].position, "the ego passed the npc"
+
+
+def test_a_phase_held_before_a_later_target_grounds_step_by_step_as_replans_do(tmp_path):
+    # the planner grounds one step at a time when a horizon has no plan and in every replan; the
+    # side of the later target a held phase keeps had been chosen anew at each step's grounding,
+    # which clingo refuses ("redefinition of atom"): a run with the hero under test stopped there
+    from pytest_roadlogic.planning import ContinuousPlanner
+
+    automaton = automaton_of(tmp_path, HERO_AND_VAN, dialect="carla")
+    planner = ContinuousPlanner(automaton, SETTINGS, 1)
+    assert "steady_later(" in planner.instance
+    control = planner.control_for(planner.instance)
+    planner.advance_to(control, 20)
+    for horizon in range(21, 24):
+        control.solve()  # no plan this short: the search grounds the next step, as a replan does
+        planner.advance(control, horizon)
+    assert control.solve().satisfiable
