@@ -132,7 +132,7 @@ class _Builder:
     def translate(self, behavior: model.Behavior) -> _Fragment:
         rates: tuple[PhaseBound, ...] = ()
         if isinstance(behavior, model.Invocation):
-            fragment, rates = _atomic(behavior, self.checked, self.counter, self.env)
+            fragment, rates = _atomic(behavior, self.checked, self.counter, self.env, self.actors)
             if behavior.until is not None:
                 fragment = self.end_on(
                     fragment,
@@ -303,10 +303,9 @@ def _phase_name(behavior: model.Behavior) -> str:
 
 
 def _atomic(
-    invocation: model.Invocation, checked: CheckedScenario, counter, env: dict
+    invocation: model.Invocation, checked: CheckedScenario, counter, env: dict, actors: tuple[str, ...]
 ) -> tuple[_Fragment, tuple[PhaseBound, ...]]:
-    """The phase's fragment, and what it asks of its start and end together."""
-    actors = tuple(a.name for a in checked.scenario.actors)
+    """The phase's fragment, and what it asks of its start and end together (``actors``: the scenario's)."""
     phase = phase_guards(invocation, checked.registry, checked.lanes, env, actors)
     labelled = invocation.label is not None
     name = invocation.label if labelled else _phase_name(invocation)

@@ -23,7 +23,7 @@ from ..logic.phase import Phase
 
 
 def phase_guards(
-    invocation: model.Invocation, registry: Registry, lanes: int, env: dict, actors: tuple[str, ...] = ()
+    invocation: model.Invocation, registry: Registry, lanes: int, env: dict, actors: tuple[str, ...]
 ) -> Phase:
     """The guards of one atomic phase; ``env`` gives the parameters' values or ranges, ``actors``
     the scenario's actors."""

@@ -62,7 +62,7 @@ class Use:
     env: dict  # parameter values or ranges
     # every actor of the scenario (a construct that reads the others: CARLA's target speed yields
     # to a car ahead in its lane)
-    actors: tuple[str, ...] = ()
+    actors: tuple[str, ...]
 
     @property
     def location(self) -> SourceLocation:
@@ -154,7 +154,7 @@ class Construct:
         lanes: int,
         env: dict,
         phase: Phase,
-        actors: tuple[str, ...] = (),
+        actors: tuple[str, ...],
     ) -> None:
         """Translate one use (its arguments bound to the signature) into ``phase``: what the automaton
         calls (``actors``: every actor of the scenario)."""

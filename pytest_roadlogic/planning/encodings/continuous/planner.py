@@ -315,12 +315,7 @@ class ContinuousPlanner(IncrementalPlanner):
         for phase in sorted((s for s in found[0] if s.name == "held_phase"), key=str):
             side = clingo.Function("above_later", list(phase.arguments))
             above = tuple(phase.arguments) in chosen
-            tried = solve([*kept, (side, not above)])
-            if tried is not None and tried[2] < found[2]:
-                found = tried
-                kept.append((side, not above))
-            else:
-                kept.append((side, above))
+            found, kept = _cheaper(found, kept, (side, above), (side, not above), solve)
         return found, kept
 
     def _without_idle_guards(self, found: tuple, kept: list, solve) -> tuple[tuple, list]:
@@ -363,13 +358,9 @@ class ContinuousPlanner(IncrementalPlanner):
             above = float(entering) > float(target.string) + SIDE
             if (rising and below) or (not rising and above):
                 continue
+            way = clingo.Function("rising" if rising else "falling", [vehicle, step])
             other = clingo.Function("falling" if rising else "rising", [vehicle, step])
-            tried = solve([*kept, (other, True)])
-            if tried is not None and tried[2] < found[2]:
-                found = tried
-                kept.append((other, True))
-            else:
-                kept.append((clingo.Function("rising" if rising else "falling", [vehicle, step]), True))
+            found, kept = _cheaper(found, kept, (way, True), (other, True), solve)
         return found
 
     def _exclude(self, control, symbols, count: int, place: float | None = None) -> None:
@@ -406,3 +397,13 @@ class ContinuousPlanner(IncrementalPlanner):
         place = farthest([0.0, *places], 0.0, 1.0)  # the first plan, unsteered, starts low
         places.append(place)
         return round(low + place * (high - low), 1)
+
+
+def _cheaper(found: tuple, kept: list, chosen: tuple, other: tuple, solve) -> tuple[tuple, list]:
+    """``found`` (a model's symbols, values and costs) or the model ``solve`` gives with ``other``
+    assumed beside ``kept`` instead of ``chosen`` (each ``(atom, truth)``: one choice of the
+    solver, either way), whichever costs less; and ``kept`` with the choice taken."""
+    tried = solve([*kept, other])
+    if tried is not None and tried[2] < found[2]:
+        return tried, [*kept, other]
+    return found, [*kept, chosen]

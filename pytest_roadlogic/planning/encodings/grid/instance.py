@@ -28,8 +28,10 @@ def build_instance(automaton: SymbolicAutomaton, settings: GridSettings, relaxab
     With ``relaxable``, each constraint of ``relaxable_constraints`` (numbered in that order) is
     switched off by an external ``relaxed(K)``: a diagnosis asks which of them cannot hold together.
     """
-    rates = [rate for timing in automaton.timings.values() for rate in timing.rates]
-    rate = next((rate for rate in rates if not isinstance(rate, HeldSpeed)), None)
+    rate = next(
+        (rate for timing in automaton.timings.values() for rate in timing.rates if not isinstance(rate, HeldSpeed)),
+        None,
+    )
     if rate is not None:
         why = (
             "the grid encoding's accelerations are -2, 0 and +2 cells per step^2"
