@@ -46,7 +46,11 @@ class Road:
         """Whether a box's ``corners`` lie between the road's edges (the right one moves where a
         map's lanes begin or end)."""
         ys = corners[:, 1]
-        return bool((ys >= self.right_edge(corners[:, 0]) - 0.05).all() and ys.max() <= self.width + 0.05)
+        if ys.max() > self.width + 0.05:
+            return False
+        if self.route is None:  # the straight road's right edge is y = 0 throughout
+            return bool(ys.min() >= -0.05)
+        return bool((ys >= self.right_edge(corners[:, 0]) - 0.05).all())
 
     def right_edge(self, x) -> np.ndarray:
         """``y`` of the right edge of the driving lanes at ``x`` (0 but where a map's lanes begin or end)."""

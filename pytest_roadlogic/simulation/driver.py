@@ -91,9 +91,16 @@ class Driver(Protocol):
     that is not is completed so (``complete``)."""
 
     fallbacks: int  # steps it drove without a trajectory of its own (a fallback), for the report
+    # whether ``plan`` reads the other vehicles' trajectories: while no other driver does, the
+    # loop needs only the next state of a driver's trajectory (``predicts``)
+    reads_others: bool
 
     def start(self, vehicle: str, reference: Reference, road: Road, dt: float) -> None:
         """Called once before the simulation, with the vehicle's reference and the road."""
+
+    def predicts(self, needed: bool) -> None:
+        """Called once before ``start``: whether another driver reads this one's trajectory past
+        its next state (as a prediction). Without, a driver may return its next state only."""
 
     def plan(self, time: float, state: VehicleState, others: dict[str, Trajectory]) -> Trajectory:
         """Called every time step; returns a trajectory starting at ``state``. ``others``: the
@@ -109,14 +116,19 @@ class Driver(Protocol):
 
 class DriverBase:
     """A driver's defaults: a replan starts it again on the new reference, it never falls back,
-    and it keeps the cross traffic it last saw in ``cross_traffic`` (a driver that plans along a
-    plan made with every route, as the scenario's own vehicles' do, needs no more)."""
+    it keeps the cross traffic it last saw in ``cross_traffic`` (a driver that plans along a
+    plan made with every route, as the scenario's own vehicles' do, needs no more), it reads the
+    others' trajectories, and its own are as long as it makes them."""
 
     fallbacks: int = 0
     cross_traffic: tuple[CrossTraffic, ...] = ()
+    reads_others: bool = True  # a user's driver may: its predictions are kept for it
 
     def start(self, vehicle: str, reference: Reference, road: Road, dt: float) -> None:
         raise NotImplementedError
+
+    def predicts(self, needed: bool) -> None:
+        """Its trajectories are as long as it makes them, read or not."""
 
     def plan(self, time: float, state: VehicleState, others: dict[str, Trajectory]) -> Trajectory:
         raise NotImplementedError
@@ -150,6 +162,8 @@ def complete(driver) -> Driver:
 
 class StationaryDriver(DriverBase):
     """Holds a stationary object where it stands: the plan's obstacles are not driven."""
+
+    reads_others = False
 
     def start(self, vehicle: str, reference: Reference, road: Road, dt: float) -> None:
         self.steps = max(1, int(round(3.0 / dt)))

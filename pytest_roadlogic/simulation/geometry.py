@@ -7,6 +7,8 @@ Positions are of the box's centre; ``corners`` and ``boxes_overlap`` read any ob
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from ..dimensions import CAR_LENGTH, CAR_WIDTH
@@ -16,7 +18,11 @@ WHEELBASE = 2.7  # m, for the kinematic checks of motion planners
 
 
 def boxes_overlap(a, b, margin: float = 0.0) -> bool:
-    """Separating-axis test of two oriented vehicle rectangles."""
+    """Separating-axis test of two oriented vehicle rectangles (two boxes further apart than
+    their circumscribed circles' radii together are apart without it)."""
+    reach = 2 * math.hypot(CAR_LENGTH / 2 + margin, CAR_WIDTH / 2 + margin)
+    if (a.x - b.x) ** 2 + (a.y - b.y) ** 2 > reach * reach:
+        return False
     ca, cb = corners(a, margin), corners(b, margin)
     for box in (ca, cb):
         for i in range(2):
@@ -29,8 +35,17 @@ def boxes_overlap(a, b, margin: float = 0.0) -> bool:
 
 
 def corners(state, margin: float = 0.0) -> np.ndarray:
-    """The box's four corners in road coordinates, grown by ``margin`` on every side."""
+    """The box's four corners in road coordinates, grown by ``margin`` on every side: front left,
+    rear left, rear right, front right."""
     half_l, half_w = CAR_LENGTH / 2 + margin, CAR_WIDTH / 2 + margin
-    c, s = np.cos(state.heading), np.sin(state.heading)
-    local = np.array([[half_l, half_w], [-half_l, half_w], [-half_l, -half_w], [half_l, -half_w]])
-    return local @ np.array([[c, s], [-s, c]]) + np.array([state.x, state.y])
+    c, s = math.cos(state.heading), math.sin(state.heading)
+    along_x, along_y, across_x, across_y = half_l * c, half_l * s, -half_w * s, half_w * c
+    x, y = state.x, state.y
+    return np.array(
+        [
+            [x + along_x + across_x, y + along_y + across_y],
+            [x - along_x + across_x, y - along_y + across_y],
+            [x - along_x - across_x, y - along_y - across_y],
+            [x + along_x - across_x, y + along_y - across_y],
+        ]
+    )

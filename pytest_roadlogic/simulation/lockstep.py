@@ -104,8 +104,11 @@ class _Lockstep:
                 driver = StationaryDriver()
             else:
                 driver = complete((drivers(vehicle) if drivers else None) or default())
-            driver.start(vehicle, reference, self.roads[vehicle], dt)
             self.active[vehicle] = driver
+        readers = {vehicle for vehicle, driver in self.active.items() if driver.reads_others}
+        for vehicle, driver in self.active.items():
+            driver.predicts(bool(readers - {vehicle}))
+            driver.start(vehicle, refs[vehicle], self.roads[vehicle], dt)
         self.steps = self.last_step()
         self.states = {
             v: VehicleState(r.start_position, self.roads[v].center_y(r.waypoints[0].lane), 0.0, r.start_speed, 0.0)
