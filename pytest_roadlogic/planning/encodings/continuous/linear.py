@@ -245,24 +245,26 @@ class LazyLinearPropagator:
     def init(self, init: clingo.PropagateInit) -> None:
         # called on every solve of a multi-shot control, with the theory atoms grounded since the
         # last one only (clingo drops a step's theory data after solving): the program grows
-        program = self.program
+        # each atom read with as few foreign calls as it takes: its printed form names its theory
+        # term (``&sum{...}<=b``), and the assignment is fetched once
+        program, assignment = self.program, init.assignment
         for atom in init.theory_atoms:
-            if atom.term.name not in ("sum", *WEIGHTS):
-                continue
             text = str(atom)
-            if (key := (atom.literal, text)) in self.seen:
+            name = text[1 : text.find("{")]
+            if name != "sum" and name not in WEIGHTS:
+                continue
+            atom_literal = atom.literal
+            if (key := (atom_literal, text)) in self.seen:
                 continue
             self.seen.add(key)
-            literal = init.solver_literal(atom.literal)
+            literal = init.solver_literal(atom_literal)
             row = _row(atom, program, text)
-            if atom.term.name in WEIGHTS:
-                if not init.assignment.is_false(literal):
-                    program.preferred[0 if init.assignment.is_true(literal) else literal].append(
-                        (row, WEIGHTS[atom.term.name])
-                    )
-            elif init.assignment.is_true(literal):
+            if name in WEIGHTS:
+                if not assignment.is_false(literal):
+                    program.preferred[0 if assignment.is_true(literal) else literal].append((row, WEIGHTS[name]))
+            elif assignment.is_true(literal):
                 program.always.append(row)
-            elif not init.assignment.is_false(literal):
+            elif not assignment.is_false(literal):
                 program.switched[literal].append(row)
         init.check_mode = clingo.PropagatorCheckMode.Total
 
