@@ -1,7 +1,7 @@
 """Ours beside Scenic, the peer measured side by side: seconds and simulations per valid concrete scenario.
 
     pip install -e ".[peers]"       # Scenic 3.1 (its Newtonian simulator)
-    python benchmarks/peers.py [--valid 20] [--seed 1] [--only overtake cut_in follow] [--simulator kinematic]
+    python benchmarks/peers.py [--valid 20] [--seed 1] [--only overtake cut_in follow close_follow] [--simulator kinematic]
 
 Each row is one logical scenario written twice, by us: an .osc file for ours and a Scenic program
 for Scenic (``benchmarks/peers/*.scenic``, driving with ``peers/scenic_support.py``), on the same
@@ -49,7 +49,8 @@ from pytest_roadlogic.simulation import SimulationTimeout  # noqa: E402
 PAIRS = {
     "overtake": (ROOT / "scenarios" / "overtake.osc", PEERS / "overtake.scenic"),
     "cut_in": (ROOT / "scenarios" / "realistic" / "cut_in.osc", PEERS / "cut_in.scenic"),
-    "follow": (ROOT / "benchmarks" / "scenarios" / "follow_close.osc", PEERS / "follow.scenic"),
+    "follow": (ROOT / "scenarios" / "follow.osc", PEERS / "follow.scenic"),
+    "close_follow": (ROOT / "benchmarks" / "scenarios" / "follow_close.osc", PEERS / "close_follow.scenic"),
 }
 STAGES = ("planning", "simulation", "monitoring")
 

@@ -1,6 +1,6 @@
-# The paper's follow with an end gap of 5-15 m (benchmarks/scenarios/follow_close.osc), as a Scenic
-# user writes it: the lead cruises at 30-45 kph, the tail starts 10-30 m behind it in its lane and
-# drives at a speed near the lead's; the run ends after 2-10 s, the tail 5-15 m behind the lead.
+# The paper's follow (scenarios/follow.osc), as a Scenic user writes it: the lead cruises at
+# 30-45 kph, the tail starts 10-30 m behind it in its lane and drives at a speed near the lead's;
+# the run ends after 2-10 s, the tail 10-30 m behind the lead.
 param map = localPath('road.xodr')
 model scenic.simulators.newtonian.driving_model
 from scenic_support import Progress, collided, controls, lane_y, lane_of
@@ -26,7 +26,7 @@ monitor Ends(lead, tail, progress, duration):
         progress.collision = progress.collision or collided(lead, tail)
         if simulation().currentTime * 0.1 >= duration:
             gap = lead.position.x - tail.position.x
-            progress.advance(5 <= gap <= 15 and lane_of(tail.position.y) == lane_of(lead.position.y))
+            progress.advance(10 <= gap <= 30 and lane_of(tail.position.y) == lane_of(lead.position.y))
             terminate
         wait
 require monitor Ends(lead, ego, progress, duration)

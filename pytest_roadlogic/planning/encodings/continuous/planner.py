@@ -176,12 +176,17 @@ class ContinuousPlanner(IncrementalPlanner):
             checked = window.floor > self.settings.max_horizon
             earliest = self._earliest(deadline, window) if checked else window.floor
             earliest = max(earliest, self.shortest)
-            control = self.control_for(self.instance)
-            self.advance_to(control, earliest)
+            control = None  # the shortest-first search's, grounded when first asked
             horizon = earliest
             # a random start's plans come from a search of their own at a drawn, longer horizon as
-            # long as it answers within STRETCH_CONFLICTS (as the grid planner's do: _plans)
+            # long as it answers within STRETCH_CONFLICTS (as the grid planner's do: _plans). The
+            # first is drawn from the durations' floor and tried before any shorter horizon is
+            # solved: where it answers, the shortest-first search is never grounded
             stretched = None  # (control, horizon)
+            target = self._stretch_target(earliest)
+            if target > earliest and window.open_at(target):
+                stretched = (self.control_for(self.instance), target)
+                self.advance_to(stretched[0], target)
             while limit is None or found < limit:
                 if stretched is not None:
                     answer = self._model(stretched[0], deadline, f"at horizon {stretched[1]}", STRETCH_CONFLICTS)
@@ -190,6 +195,9 @@ class ContinuousPlanner(IncrementalPlanner):
                         continue
                     source, plan_horizon = stretched
                 else:
+                    if control is None:
+                        control = self.control_for(self.instance)
+                        self.advance_to(control, horizon)
                     answer = self._model(control, deadline, f"at horizon {horizon}")
                     if answer is None and not checked:
                         checked, grounded = True, horizon
