@@ -255,3 +255,46 @@ def test_beside_a_car_asked_to_drive_slowly_an_open_start_speed_is_held_not_brak
     speeds = [state.speed * 3.6 for state in plan.states["npc"]]
     assert max(speeds) - min(speeds) < 1.0, [round(s, 1) for s in speeds]  # one speed, about 23 kph
     assert 22.0 < speeds[0] < 25.0, speeds[0]
+
+
+# a lead braking from 50 kph to a stop 30 m ahead of a car asked nothing in that phase: with no
+# vehicle under test to brake for itself, no plan keeps the follower to what it is asked, at any
+# horizon
+BRAKING_AHEAD_OF_A_CAR_ASKED_NOTHING = """scenario braking_ahead:
+    lead: car
+    follower: car
+
+    do serial:
+        follow: parallel(duration: 2s):
+            follower.drive() with:
+                lane(2, at: start)
+                speed(50kph, at: start)
+            lead.drive() with:
+                lane(same_as: follower, at: start)
+                position(distance: 30m, ahead_of: follower, at: start)
+                speed(50kph)
+        brake: parallel:
+            follower.drive()
+            lead.change_speed(target: 0kph, rate_profile: linear, rate_peak: 4mpss)
+        stand: parallel(duration: [3s..4s]):
+            follower.drive()
+            lead.drive() with:
+                speed(0kph)
+"""
+
+
+def test_a_search_for_only_asked_changes_gives_up_after_its_conflicts_and_the_fewest_unasked_changes_are_planned(
+    tmp_path,
+):
+    from pytest_roadlogic.planning import NoPlanError
+    from pytest_roadlogic.planning.encodings.continuous.planner import LEAST_ACTION_CONFLICTS
+
+    automaton = automaton_of(tmp_path, BRAKING_AHEAD_OF_A_CAR_ASKED_NOTHING)
+    asked_only = ContinuousPlanner(automaton, SETTINGS, 1)
+    asked_only.least_action, asked_only.least_change = True, False
+    with pytest.raises(NoPlanError, match=f"within {LEAST_ACTION_CONFLICTS} conflicts"):
+        next(asked_only._search(limit=1))
+    plan, _, planner = planned(tmp_path, BRAKING_AHEAD_OF_A_CAR_ASKED_NOTHING)
+    assert planner.stats["least_action"] == 0.0
+    changes = unasked_changes(plan, automaton)  # measured independently of the encoding
+    assert changes and len({change.vehicle for change in changes}) == 1, changes

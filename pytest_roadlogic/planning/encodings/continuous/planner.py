@@ -58,6 +58,12 @@ SOFT = {"prefer": "sum", "nudge": None, "drift": None, "steady": None}
 # plans are taken instead: a count, not a time, so that every machine stops at the same point (the
 # grid's 50 000 are about 2 s there; each conflict here may cost a linear program)
 STRETCH_CONFLICTS = 2_000
+# conflicts the shortest-first search in which every vehicle does only what it is asked may spend
+# proving horizons empty, all of them together, before the search that allows the fewest unasked
+# changes takes over: a vehicle under test run without one (a lead braking hard, the car behind
+# asked nothing) has no such plan at any horizon, and proving each of 115 empty took 30 s. The
+# searches that find such a plan spend a few hundred at most.
+LEAST_ACTION_CONFLICTS = 2_000
 # how near a target (m/s) a speed entering its phase is taken to lie on neither side of it
 SIDE = 1e-4
 # how many times a model's idle guards are set aside (a new model may hold others idle)
@@ -183,6 +189,9 @@ class ContinuousPlanner(IncrementalPlanner):
             # first is drawn from the durations' floor and tried before any shorter horizon is
             # solved: where it answers, the shortest-first search is never grounded
             stretched = None  # (control, horizon)
+            # the conflicts left to the shortest-first search (LEAST_ACTION_CONFLICTS): for the
+            # search that holds every vehicle to what it is asked, when another search follows it
+            budget = LEAST_ACTION_CONFLICTS if self.least_action and not self.least_change else None
             target = self._stretch_target(earliest)
             if target > earliest and window.open_at(target):
                 stretched = (self.control_for(self.instance), target)
@@ -198,7 +207,14 @@ class ContinuousPlanner(IncrementalPlanner):
                     if control is None:
                         control = self.control_for(self.instance)
                         self.advance_to(control, horizon)
-                    answer = self._model(control, deadline, f"at horizon {horizon}")
+                    answer = self._model(control, deadline, f"at horizon {horizon}", budget, refined_within=False)
+                    if answer is None and budget is not None:
+                        budget -= int(control.statistics["solving"]["solvers"]["conflicts"])
+                        if budget <= 0:
+                            raise NoPlanError(
+                                f"no plan in which every vehicle does only what it is asked within "
+                                f"{LEAST_ACTION_CONFLICTS} conflicts, at horizons up to {horizon}"
+                            )
                     if answer is None and not checked:
                         checked, grounded = True, horizon
                         earliest = horizon = max(horizon, self._earliest(deadline, window))
@@ -271,11 +287,11 @@ class ContinuousPlanner(IncrementalPlanner):
         return super()._stretch_target(shortest, cap if longest is None else min(longest, cap))
 
     def _model(
-        self, control, deadline: float, where: str, conflicts: int | None = None
+        self, control, deadline: float, where: str, conflicts: int | None = None, refined_within: bool = True
     ) -> tuple[list, dict[str, object]] | None:
         """(shown symbols, the linear program's values) of the next model; None when there is none,
         or none within ``conflicts``. The model's run and lanes as found, its values as the scenario
-        asks them (``_refined``)."""
+        asks them (``_refined``), within ``conflicts`` too unless not ``refined_within``."""
 
         lazy = self.settings.theory != "lpx"
 
@@ -289,7 +305,9 @@ class ContinuousPlanner(IncrementalPlanner):
             found = self._refined(
                 control,
                 found,
-                lambda assumed: self._next_model(control, deadline, f" {where}", answer, conflicts, assumed),
+                lambda assumed: self._next_model(
+                    control, deadline, f" {where}", answer, conflicts if refined_within else None, assumed
+                ),
             )
         return None if found is None else found[:2]
 
