@@ -60,7 +60,7 @@ SOFT = {"prefer": "sum", "nudge": None, "drift": None, "steady": None}
 STRETCH_CONFLICTS = 2_000
 # conflicts the shortest-first search in which every vehicle does only what it is asked may spend
 # proving horizons empty, all of them together, before the search that allows the fewest unasked
-# changes takes over: a vehicle under test run without one (a lead braking hard, the car behind
+# changes takes over (read after each horizon's solve, so the last may overrun it): a vehicle under test run without one (a lead braking hard, the car behind
 # asked nothing) has no such plan at any horizon, and proving each of 115 empty took 30 s. The
 # searches that find such a plan spend a few hundred at most.
 LEAST_ACTION_CONFLICTS = 2_000
@@ -207,7 +207,9 @@ class ContinuousPlanner(IncrementalPlanner):
                     if control is None:
                         control = self.control_for(self.instance)
                         self.advance_to(control, horizon)
-                    answer = self._model(control, deadline, f"at horizon {horizon}", budget, refined_within=False)
+                    # each solve unlimited (a solve limit set on the control changes its later
+                    # searches, hence the plans): the budget is read between them
+                    answer = self._model(control, deadline, f"at horizon {horizon}")
                     if answer is None and budget is not None:
                         budget -= int(control.statistics["solving"]["solvers"]["conflicts"])
                         if budget <= 0:
@@ -287,11 +289,11 @@ class ContinuousPlanner(IncrementalPlanner):
         return super()._stretch_target(shortest, cap if longest is None else min(longest, cap))
 
     def _model(
-        self, control, deadline: float, where: str, conflicts: int | None = None, refined_within: bool = True
+        self, control, deadline: float, where: str, conflicts: int | None = None
     ) -> tuple[list, dict[str, object]] | None:
         """(shown symbols, the linear program's values) of the next model; None when there is none,
         or none within ``conflicts``. The model's run and lanes as found, its values as the scenario
-        asks them (``_refined``), within ``conflicts`` too unless not ``refined_within``."""
+        asks them (``_refined``)."""
 
         lazy = self.settings.theory != "lpx"
 
@@ -305,9 +307,7 @@ class ContinuousPlanner(IncrementalPlanner):
             found = self._refined(
                 control,
                 found,
-                lambda assumed: self._next_model(
-                    control, deadline, f" {where}", answer, conflicts if refined_within else None, assumed
-                ),
+                lambda assumed: self._next_model(control, deadline, f" {where}", answer, conflicts, assumed),
             )
         return None if found is None else found[:2]
 
