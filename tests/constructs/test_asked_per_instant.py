@@ -13,6 +13,7 @@ from pytest_roadlogic.evaluation.fidelity import unasked_changes
 from pytest_roadlogic.frontend import OscError, check_text
 from pytest_roadlogic.pipeline import load_scenario
 from pytest_roadlogic.planning import ContinuousPlanner, ContinuousSettings
+from tests.planning.test_planning_continuous import check_continuous_plan
 
 SETTINGS = ContinuousSettings(time_limit=30.0)  # guards a hang only
 
@@ -283,18 +284,39 @@ BRAKING_AHEAD_OF_A_CAR_ASKED_NOTHING = """scenario braking_ahead:
 """
 
 
-def test_a_search_for_only_asked_changes_gives_up_after_its_conflicts_and_the_fewest_unasked_changes_are_planned(
+def test_a_car_asked_nothing_brakes_to_a_stop_behind_a_lead_that_stops_and_keeps_its_lane(tmp_path):
+    plan, automaton, planner = planned(tmp_path, BRAKING_AHEAD_OF_A_CAR_ASKED_NOTHING)
+    assert planner.stats["least_action"] == 1.0, "planned with only asked changes"
+    assert unasked_changes(plan, automaton) == []  # measured independently of the encoding
+    check_continuous_plan(plan, automaton, SETTINGS)
+    follower = plan.states["follower"]
+    assert len({state.lane for state in follower}) == 1, "the follower changed lane unasked"
+    assert follower[-1].speed < SETTINGS.min_speed, "queued behind the stopped lead"
+    speeds = [state.speed for state in follower]
+    assert all(later <= earlier + 1e-6 for earlier, later in zip(speeds, speeds[1:])), "it only brakes"
+
+
+# the follower's speed asked over the first phase: it brakes only once the lead does, too late
+# for its gentle braking to stop behind it
+BRAKING_HARD_AHEAD_OF_A_CAR_ASKED_NOTHING = (
+    BRAKING_AHEAD_OF_A_CAR_ASKED_NOTHING.replace("speed(50kph, at: start)", "speed(50kph)")
+    .replace("distance: 30m", "distance: 15m")
+    .replace("rate_peak: 4mpss", "rate_peak: 8mpss")
+)
+
+
+def test_a_search_for_only_asked_changes_gives_up_after_its_horizons_and_the_fewest_unasked_changes_are_planned(
     tmp_path,
 ):
     from pytest_roadlogic.planning import NoPlanError
-    from pytest_roadlogic.planning.encodings.continuous.planner import LEAST_ACTION_CONFLICTS
+    from pytest_roadlogic.planning.encodings.continuous.planner import LEAST_ACTION_HORIZONS
 
-    automaton = automaton_of(tmp_path, BRAKING_AHEAD_OF_A_CAR_ASKED_NOTHING)
+    automaton = automaton_of(tmp_path, BRAKING_HARD_AHEAD_OF_A_CAR_ASKED_NOTHING)
     asked_only = ContinuousPlanner(automaton, SETTINGS, 1)
     asked_only.least_action, asked_only.least_change = True, False
-    with pytest.raises(NoPlanError, match=f"within {LEAST_ACTION_CONFLICTS} conflicts"):
+    with pytest.raises(NoPlanError, match=f"and {LEAST_ACTION_HORIZONS} horizons"):
         next(asked_only._search(limit=1))
-    plan, _, planner = planned(tmp_path, BRAKING_AHEAD_OF_A_CAR_ASKED_NOTHING)
+    plan, _, planner = planned(tmp_path, BRAKING_HARD_AHEAD_OF_A_CAR_ASKED_NOTHING)
     assert planner.stats["least_action"] == 0.0
     changes = unasked_changes(plan, automaton)  # measured independently of the encoding
-    assert changes and len({change.vehicle for change in changes}) == 1, changes
+    assert [(change.vehicle, change.kind) for change in changes] == [("follower", "lane")], changes

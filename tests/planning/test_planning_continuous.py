@@ -18,6 +18,14 @@ ROOT = Path(__file__).resolve().parents[2]
 SETTINGS = ContinuousSettings()
 
 
+def behind_in_lane(plan, v, k) -> bool:
+    """Whether ``v`` has another vehicle ahead of it in its lane at step ``k``."""
+    me = plan.states[v][k]
+    return any(
+        plan.states[w][k].lane == me.lane and plan.states[w][k].position > me.position for w in plan.vehicles if w != v
+    )
+
+
 def check_continuous_plan(plan, automaton, settings=SETTINGS):
     dt = plan.dt
     may_stop = stopping(automaton, settings)
@@ -32,7 +40,10 @@ def check_continuous_plan(plan, automaton, settings=SETTINGS):
             first = (states[1].speed - states[0].speed) / dt
             assert abs(first) <= jerk + 1e-6, f"{v} starts with acceleration {first}: the simulation starts without one"
         for k, s in enumerate(states):
-            assert least - 1e-6 <= s.speed <= settings.max_speed + 1e-6, f"{v} speed {s.speed} at {k}"
+            # below the driving floor only queued: behind a vehicle in its lane, braking
+            queued = k and s.speed <= states[k - 1].speed + 1e-6 and behind_in_lane(plan, v, k)
+            floor = 0.0 if queued else least
+            assert floor - 1e-6 <= s.speed <= settings.max_speed + 1e-6, f"{v} speed {s.speed} at {k}"
             assert 0 <= s.lane < automaton.lanes
             if k:
                 p = states[k - 1]

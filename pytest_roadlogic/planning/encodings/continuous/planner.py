@@ -58,12 +58,15 @@ SOFT = {"prefer": "sum", "nudge": None, "drift": None, "steady": None}
 # plans are taken instead: a count, not a time, so that every machine stops at the same point (the
 # grid's 50 000 are about 2 s there; each conflict here may cost a linear program)
 STRETCH_CONFLICTS = 2_000
-# conflicts the shortest-first search in which every vehicle does only what it is asked may spend
+# what the shortest-first search in which every vehicle does only what it is asked may spend
 # proving horizons empty, all of them together, before the search that allows the fewest unasked
-# changes takes over (read after each horizon's solve, so the last may overrun it): a vehicle under test run without one (a lead braking hard, the car behind
-# asked nothing) has no such plan at any horizon, and proving each of 115 empty took 30 s. The
-# searches that find such a plan spend a few hundred at most.
+# changes takes over: conflicts (read after each horizon's solve, so the last may overrun them) and
+# horizons. A scenario with no such plan at any horizon (a car behind a lead braking harder than it
+# can brake, asked nothing) would otherwise prove every horizon up to the limit empty, each with
+# few conflicts. Counts, not times, so that every machine gives up at the same point; the searches
+# that find such a plan spend a few hundred conflicts and half a dozen horizons.
 LEAST_ACTION_CONFLICTS = 2_000
+LEAST_ACTION_HORIZONS = 12
 # how near a target (m/s) a speed entering its phase is taken to lie on neither side of it
 SIDE = 1e-4
 # how many times a model's idle guards are set aside (a new model may hold others idle)
@@ -192,6 +195,7 @@ class ContinuousPlanner(IncrementalPlanner):
             # the conflicts left to the shortest-first search (LEAST_ACTION_CONFLICTS): for the
             # search that holds every vehicle to what it is asked, when another search follows it
             budget = LEAST_ACTION_CONFLICTS if self.least_action and not self.least_change else None
+            empty = 0  # horizons the shortest-first search proved empty
             target = self._stretch_target(earliest)
             if target > earliest and window.open_at(target):
                 stretched = (self.control_for(self.instance), target)
@@ -212,10 +216,12 @@ class ContinuousPlanner(IncrementalPlanner):
                     answer = self._model(control, deadline, f"at horizon {horizon}")
                     if answer is None and budget is not None:
                         budget -= int(control.statistics["solving"]["solvers"]["conflicts"])
-                        if budget <= 0:
+                        empty += 1
+                        if budget <= 0 or empty >= LEAST_ACTION_HORIZONS:
                             raise NoPlanError(
                                 f"no plan in which every vehicle does only what it is asked within "
-                                f"{LEAST_ACTION_CONFLICTS} conflicts, at horizons up to {horizon}"
+                                f"{LEAST_ACTION_CONFLICTS} conflicts and {LEAST_ACTION_HORIZONS} horizons, "
+                                f"at horizons up to {horizon}"
                             )
                     if answer is None and not checked:
                         checked, grounded = True, horizon
