@@ -1,11 +1,12 @@
 """The test corpus as a user meets it: which files check, how long parse plus check takes, and which
 run end to end (plan, simulate, monitor: accepted) at one seed. Issue 18's acceptance table.
 
-    python benchmarks/corpus.py [--seed 1] [--check-only] [FILES...]
+    python benchmarks/corpus.py [--seed 1] [--check-only] [--dialect carla|standard] [FILES...]
 
 A file that uses set_map (written for CARLA's scenario runner) is read in CARLA's dialect, as its
-conftest or --dialect carla would; every other file in the standard's. A file with no scenario to
-run (a library) is listed as such.
+conftest or --dialect carla would; every other file in the standard's, unless --dialect names one
+for all (CARLA's examples without a map, run as its runner reads them). A file with no scenario to
+run (a library) is listed as such; one that does not parse, with its first syntax error.
 """
 
 from __future__ import annotations
@@ -34,6 +35,7 @@ def main() -> int:
     parser.add_argument("files", nargs="*", type=Path)
     parser.add_argument("--seed", type=int, default=1)
     parser.add_argument("--check-only", action="store_true")
+    parser.add_argument("--dialect", choices=("carla", "standard"), help="read every file in this dialect")
     args = parser.parse_args()
     files = args.files or sorted(CORPUS.glob("*.osc"))
     started = time.perf_counter()
@@ -41,9 +43,15 @@ def main() -> int:
     runs = accepted = 0
     print(f"{'file':34} {'dialect':8} {'check s':>8}  outcome")
     for path in files:
-        dialect = dialect_of(path)
+        dialect = args.dialect or dialect_of(path)
         t0 = time.perf_counter()
-        result = check_file(path, dialect=dialect)
+        try:
+            result = check_file(path, dialect=dialect)
+        except OscError as error:  # a syntax error: no tree to check
+            print(
+                f"{path.name:34} {dialect:8} {time.perf_counter() - t0:8.3f}  syntax: {len(error.diagnostics)} errors"
+            )
+            continue
         seconds = time.perf_counter() - t0
         slowest = max(slowest, (seconds, path.name))
         if result.errors:
