@@ -92,13 +92,16 @@ class Lane(AnchoredModifier):
         if relation is not None:
             keyword, other = relation
             if keyword == "same_as":
-                return Bound(Term(LANE, use.actor, other), 0, 0, use.location)
+                return Bound(Term(LANE, use.actor, other), 0, 0, use.location, f"{use.actor} in {other}'s lane")
             if keyword == "side_of":
                 keyword = "left_of" if use.name("side") in (None, "left") else "right_of"
             low, high = (1, 1) if use.argument("lane") is None else self._whole(use)
             # internally lane 0 is the leftmost: a lane left of x's has the smaller number
             first, last = (-high, -low) if keyword == "left_of" else (low, high)
-            return Bound(Term(LANE, use.actor, other), first, last, use.location)
+            side = "left" if keyword == "left_of" else "right"
+            count = "the lane" if high == 1 else (f"{low} lanes" if low == high else f"{low}..{high} lanes")
+            written = f"{use.actor} in {count} {side} of {other}'s"
+            return Bound(Term(LANE, use.actor, other), first, last, use.location, written)
         if use.argument("lane") is None:
             raise error_at(
                 use.location, "lane() needs a lane number or same_as:/left_of:/right_of:", hint=self.convention
@@ -106,7 +109,11 @@ class Lane(AnchoredModifier):
         low, high = self._whole(use)  # within the road: the checker's check() saw to it
         from_left = (use.name("from") or self.counted_from) == "left"
         first, last = (low - 1, high - 1) if from_left else (use.lanes - high, use.lanes - low)
-        return Bound(Term(LANE, use.actor), first, last, use.location)
+        # named in the file's numbering, not the planner's (lane 0 the leftmost)
+        written = f"{use.actor} in lane {low}" if low == high else f"{use.actor} in lanes {low}..{high}"
+        if use.name("from") is not None:
+            written += f" from the {use.name('from')}"
+        return Bound(Term(LANE, use.actor), first, last, use.location, written)
 
     def _whole(self, use: Use) -> tuple[int, int]:
         """The ``lane:`` argument's whole numbers (a lane, or lanes to the side of a reference)."""

@@ -22,6 +22,7 @@ which one instant does not have.
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
@@ -309,6 +310,40 @@ def _normalised(bound: Bound) -> tuple[tuple[str, str, str | None], float, float
     if term.offset:
         return (term.quantity, term.actor, term.reference, term.offset), bound.low, bound.high
     return (term.quantity, term.actor, term.reference), bound.low, bound.high
+
+
+def lanes_conflict(guard: Guard, lanes: int) -> tuple[Bound, ...] | None:
+    """The fewest lane bounds of a conjunction that no placement on a road of ``lanes`` lanes meets
+    together (a car in the rightmost lane and another right of it), or None. Only plain
+    conjunctions of up to ``LANE_ACTORS`` vehicles are examined: every placement is tried."""
+    parts = guard.parts if isinstance(guard, And) else (guard,)
+    if not all(isinstance(p, Bound) for p in parts):
+        return None
+    bounds = [p for p in parts if p.term.quantity == LANE]
+    actors = sorted({actor for bound in bounds for actor in bound.term.actors})
+    if not bounds or len(actors) > LANE_ACTORS:
+        return None
+    placements = [dict(zip(actors, lanes_of)) for lanes_of in itertools.product(range(lanes), repeat=len(actors))]
+
+    def placed(group: tuple[Bound, ...]) -> bool:
+        return any(all(_lane_holds(bound, at) for bound in group) for at in placements)
+
+    if placed(tuple(bounds)):
+        return None
+    for size in range(1, len(bounds) + 1):
+        for group in itertools.combinations(bounds, size):
+            if not placed(group):
+                return group
+    return None  # unreachable: the whole conjunction has no placement
+
+
+# vehicles whose lanes lanes_conflict places by trying every placement (lanes ** vehicles of them)
+LANE_ACTORS = 5
+
+
+def _lane_holds(bound: Bound, lanes: Mapping[str, int]) -> bool:
+    value = lanes[bound.term.actor] - (lanes[bound.term.reference] if bound.term.reference is not None else 0)
+    return bound.low <= value <= bound.high
 
 
 def contradiction(guard: Guard) -> tuple[Bound, Bound] | None:

@@ -16,18 +16,19 @@ import time
 import clingo
 
 from ..logic.automaton import SymbolicAutomaton, Timing
-from ..logic.guards import contradiction
+from ..logic.guards import contradiction, lanes_conflict
 from .errors import NoPlanError, PlanningTimeout, UnsatisfiableScenario, conflict_message
 from .facts import relaxable_constraints
 
 
 def check_satisfiable(automaton: SymbolicAutomaton) -> None:
-    """Raise ``UnsatisfiableScenario`` when every path to the end crosses a self-contradicting guard."""
+    """Raise ``UnsatisfiableScenario`` when every path to the end crosses a self-contradicting guard
+    (two bounds no state meets, or lanes no placement on the road's lanes meets)."""
     blocked = {}
     for transition in automaton.transitions:
-        pair = contradiction(transition.guard)
-        if pair is not None:
-            blocked[transition.id] = pair
+        group = contradiction(transition.guard) or lanes_conflict(transition.guard, automaton.lanes)
+        if group is not None:
+            blocked[transition.id] = group
     if not blocked:
         return
     reachable = {automaton.initial}

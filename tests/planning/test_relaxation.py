@@ -96,3 +96,45 @@ def test_two_cars_in_one_lane_only_at_the_ends_may_pass_and_are_left_to_the_plan
     path = tmp_path / "swap.osc"
     guide, settings, seed = guided(path, {})
     assert next(planned(guide, settings, seed, 1), None) is not None, "b passes a in the next lane"
+
+
+RIGHT_OF_THE_RIGHTMOST_LANE = """scenario right_of_the_rightmost:
+    ego: car
+    npc: car
+    do serial:
+        get_ahead: parallel(duration: 10s):
+            ego.drive() with:
+                speed(20kph)
+                lane(1, at: start)
+            npc.drive() with:
+                lane(right_of: ego, at: start)
+                position(5m, behind: ego, at: start)
+"""
+
+
+def test_a_car_placed_right_of_one_in_the_rightmost_lane_is_refused_before_any_search_naming_the_two_lanes_as_written(
+    tmp_path,
+):
+    path = tmp_path / "right_of.osc"
+    path.write_text(RIGHT_OF_THE_RIGHTMOST_LANE)
+    from pytest_roadlogic.planning.diagnosis import check_satisfiable
+
+    automaton = build_automaton(load_scenario(path))
+    with pytest.raises(UnsatisfiableScenario) as raised:
+        check_satisfiable(automaton)  # before any search: the placements on the road are tried
+    report = raised.value.report()
+    named = {line.split(": error:")[0] for line in report.splitlines() if ": error:" in line}
+    assert named == {f"{path}:8:17", f"{path}:10:17"}, report  # the two lanes, not the speed
+    assert "ego in lane 1 cannot hold together with npc in the lane right of ego's (line 10)" in report
+
+
+def test_lanes_that_some_placement_meets_are_left_to_the_planner():
+    from pytest_roadlogic.logic.guards import LANE, Bound, Term, conjunction, lanes_conflict
+
+    rightmost = Bound(Term(LANE, "ego"), 2, 2)
+    right_of = Bound(Term(LANE, "npc", "ego"), 1, 1)
+    left_of = Bound(Term(LANE, "npc", "ego"), -1, -1)
+    assert lanes_conflict(conjunction([rightmost, right_of]), 3) == (rightmost, right_of)
+    assert lanes_conflict(conjunction([rightmost, left_of]), 3) is None
+    assert lanes_conflict(conjunction([right_of, left_of]), 3) == (right_of, left_of)
+    assert lanes_conflict(right_of, 1) == (right_of,)  # no lane beside another on a one-lane road
