@@ -489,3 +489,25 @@ def test_a_conflict_with_a_phases_mean_acceleration_is_explained_naming_it_not_a
     with pytest.raises(NoPlanError) as caught:
         next(run_instances(scenario, 1, seed=1, values=values, max_tries=1))
     assert "mean acceleration of lead over lead.change_speed in -6..-3 m/s^2" in str(caught.value)
+
+
+def test_a_planner_grounds_the_encodings_extensions_only_for_a_scenario_that_uses_them(tmp_path):
+    from pytest_roadlogic.planning.encodings.continuous.planner import BACKGROUND, REPLAN, ROUTE, TOWARD
+
+    def files(text: str, dialect: str | None = None) -> tuple:
+        path = tmp_path / "scenario.osc"
+        path.write_text(text)
+        return ContinuousPlanner(build_automaton(load_scenario(path, dialect=dialect)), SETTINGS, 1).encoding_files()
+
+    drive = "scenario s:\n    car1: car\n    do car1.drive() with:\n        speed(20kph)\n"
+    assert files(drive) == BACKGROUND
+    # CARLA's speed(v): a target driven toward from the phase's start
+    assert files(drive, "carla") == (*BACKGROUND, TOWARD)
+    path = tmp_path / "scenario.osc"
+    planner = ContinuousPlanner(build_automaton(load_scenario(path)), SETTINGS, 1)
+    planner.past = "now(2)."  # a replan's past
+    assert planner.encoding_files() == (*BACKGROUND, REPLAN)
+    rural = ROOT / "scenarios" / "roads" / "overtake_rural.osc"
+    scenario = load_scenario(rural)
+    on_route = SETTINGS.on_route(scenario.route, scenario.routes[1:])
+    assert ContinuousPlanner(build_automaton(scenario), on_route, 1).encoding_files() == (*BACKGROUND, ROUTE)

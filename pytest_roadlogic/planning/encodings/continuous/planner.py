@@ -46,10 +46,12 @@ BACKGROUND = (
     ASP_CONTINUOUS / "rates.lp",
     ASP_CONTINUOUS / "steer.lp",
     LEAST_ACTION,
-    ASP_CONTINUOUS / "toward.lp",  # inert without a target speed (CARLA's speed(v))
-    ASP_CONTINUOUS / "replan.lp",  # inert without a replan's facts (reactive/replanner.py)
-    ASP_CONTINUOUS / "route.lp",  # inert without a map's route (roads/route.py)
 )
+# read only by the scenarios that use them (each is inert without its facts, and every file
+# grounded costs each ground call its statements)
+TOWARD = ASP_CONTINUOUS / "toward.lp"  # a target speed (CARLA's speed(v))
+REPLAN = ASP_CONTINUOUS / "replan.lp"  # a replan's facts (reactive/replanner.py)
+ROUTE = ASP_CONTINUOUS / "route.lp"  # a map's route (roads/route.py)
 RANDOM_START = (KEEP_LANE, ASP_CONTINUOUS / "start.lp")  # loaded for a random start only, in this order
 # the soft rows clingo-lpx, which checks every row exactly, cannot weigh: a preference binds as a
 # row, a random start's nudges and drifts are left out
@@ -118,6 +120,17 @@ class ContinuousPlanner(IncrementalPlanner):
     def widened(self):
         return None  # every start speed the settings allow is tried at once
 
+    def encoding_files(self) -> tuple:
+        """The encoding's files this planner grounds: ``BACKGROUND`` and those of the extensions
+        its scenario, settings and replan use, in one order for every control."""
+        toward = any(location.targets() for location in self.automaton.locations)
+        return (
+            *BACKGROUND,
+            *((TOWARD,) if toward else ()),
+            *((REPLAN,) if self.past else ()),
+            *((ROUTE,) if self.settings.route_span is not None else ()),
+        )
+
     def control_for(self, instance: str):
         control = self._new_control()
         own = "\n#program base.\n" + instance + "\n" + self.preferences
@@ -129,7 +142,7 @@ class ContinuousPlanner(IncrementalPlanner):
             self._theories[control] = theory
             with ProgramBuilder(control) as builder:
                 # the encoding is the same for every control: parsed once per process
-                for statement in parsed_encoding(BACKGROUND, with_theory=True):
+                for statement in parsed_encoding(self.encoding_files(), with_theory=True):
                     builder.add(statement)
                 parse_string(own, builder.add)
                 if self.settings.random_start:
@@ -138,7 +151,7 @@ class ContinuousPlanner(IncrementalPlanner):
             return control
         from clingolpx import ClingoLPXTheory
 
-        program = read_programs(*BACKGROUND) + own
+        program = read_programs(*self.encoding_files()) + own
         if self.settings.random_start:
             program += "\n" + read_programs(*RANDOM_START)
         theory = ClingoLPXTheory()
