@@ -8,6 +8,8 @@ together, with the groups that clash, each at its place in the file.
 
 from __future__ import annotations
 
+from ..logic.guards import LANE, Bound
+
 
 class NoPlanError(Exception):
     """No plan exists up to the horizon limit, or none was found within the time limit."""
@@ -141,9 +143,25 @@ class UnsatisfiableScenario(NoPlanError):
                     message = f"{self._alone(member)} cannot hold in any plan under the domain rules" + (
                         f" ({self.rules})" if self.rules else ""
                     )
-                hint = "the scenario can never be met; widen or remove one of them" if member is group[0] else None
+                hint = None
+                if member is group[0]:
+                    hint = "the scenario can never be met; widen or remove one of them"
+                    if any(_numbers_a_lane(other) for other in group):
+                        hint += f"; {LANE_NUMBERS}"
                 diagnostics.append(Diagnostic(member.source, message, hint))
         return OscError(diagnostics).report() if diagnostics else str(self)
+
+
+# a lane number's meaning depends on the dialect the file is read in: the hint for a clash of lanes
+LANE_NUMBERS = (
+    "lane numbers are read in the file's dialect: the standard's lane(1) is the rightmost lane, "
+    "CARLA's (--dialect carla) the leftmost"
+)
+
+
+def _numbers_a_lane(constraint) -> bool:
+    """Whether ``constraint`` places a vehicle in a lane by its number (``lane(1)``)."""
+    return isinstance(constraint, Bound) and constraint.term.quantity == LANE and constraint.term.reference is None
 
 
 def conflict_message(conflicts: list[tuple], parameters: dict | None = None) -> str:

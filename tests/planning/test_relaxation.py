@@ -126,6 +126,7 @@ def test_a_car_placed_right_of_one_in_the_rightmost_lane_is_refused_before_any_s
     named = {line.split(": error:")[0] for line in report.splitlines() if ": error:" in line}
     assert named == {f"{path}:8:17", f"{path}:10:17"}, report  # the two lanes, not the speed
     assert "ego in lane 1 cannot hold together with npc in the lane right of ego's (line 10)" in report
+    assert "the standard's lane(1) is the rightmost lane, CARLA's (--dialect carla) the leftmost" in report
 
 
 def test_lanes_that_some_placement_meets_are_left_to_the_planner():
