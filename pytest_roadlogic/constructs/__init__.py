@@ -7,7 +7,7 @@ makes one with more constructs. To add a construct: write its class (signature, 
 module here and its ``CONSTRUCTS`` in ``STANDARD``.
 """
 
-from . import carla, gaps, lanes, motion, pending, position, speed, unsimulated
+from . import carla, gaps, lanes, motion, position, speed, unsimulated
 from .base import Action, AnchoredModifier, CheckContext, Construct, Modifier, Registry, Use
 from .lanes import LANE_CONVENTION
 
@@ -19,7 +19,6 @@ STANDARD = Registry(
         *speed.CONSTRUCTS,
         *position.CONSTRUCTS,
         *gaps.CONSTRUCTS,
-        *pending.CONSTRUCTS,
         *unsimulated.CONSTRUCTS,
     )
 )

@@ -8,8 +8,10 @@ variant per starting lane: guards see only the current state, and the road is fi
 
 from __future__ import annotations
 
+import math
 from typing import ClassVar
 
+from ..dimensions import LANE_WIDTH
 from ..frontend.errors import SourceLocation, error_at
 from ..frontend.semantics.library import AT, DURATION, RATE, Binding, Parameter, Signature
 from ..logic.guards import LANE, Bound, Guard, Term
@@ -121,6 +123,54 @@ class Lane(AnchoredModifier):
         if value.dimension is not None or not float(value.low).is_integer() or not float(value.high).is_integer():
             raise error_at(use.argument("lane").location, "a lane number must be a whole number", hint=self.convention)
         return int(value.low), int(value.high)
+
+
+class Lateral(AnchoredModifier):
+    """``lateral(distance, side_of: x, side: left|right)`` (or ``left_of: x`` / ``right_of: x``): the
+    vehicle ``distance`` to the side of x, centre to centre. The planner places vehicles in lanes,
+    so a distance is read as the whole lanes it spans (``LANE_WIDTH`` each, within a quarter lane:
+    3.5 m is the next lane, 7 m the one beyond, 0 m x's own); one that is no whole number of lanes
+    is refused at its place. ``side`` defaults to left, as for ``lane(side_of: x)``."""
+
+    asks = ASKS_LANE
+    signature = Signature(
+        "lateral",
+        (
+            Parameter("distance", "length", positional=True),
+            Parameter("side_of", "actor"),
+            Parameter("side", "enum:side"),
+            Parameter("left_of", "actor"),
+            Parameter("right_of", "actor"),
+            AT,
+        ),
+        exclusive=(("side_of", "left_of", "right_of"),),
+        required=(("distance",), ("side_of", "left_of", "right_of")),
+        description="lateral distance to another vehicle, in whole lanes",
+    )
+
+    def guard(self, use: Use) -> Guard:
+        keyword, other = use.relation(("side_of", "left_of", "right_of"))
+        if keyword == "side_of":
+            keyword = "left_of" if use.name("side") in (None, "left") else "right_of"
+        distance = use.interval("distance")
+        tolerance = LANE_WIDTH / 4  # a car off its lane's centre by up to a quarter lane is in it
+        low = max(0, math.ceil((distance.low - tolerance) / LANE_WIDTH))
+        high = math.floor((distance.high + tolerance) / LANE_WIDTH)
+        if low > high or high >= use.lanes:
+            raise error_at(
+                use.argument("distance").location,
+                f"a lateral distance of {shown_metres(distance)} is no whole number of lanes ({LANE_WIDTH:g} m) on the road's {use.lanes} lanes",
+                "this tool places vehicles in lanes: give a multiple of the lane width, or use lane(k, side_of: x)",
+            )
+        side = "left" if keyword == "left_of" else "right"
+        written = f"{use.actor} {shown_metres(distance)} {side} of {other}"
+        first, last = (-high, -low) if keyword == "left_of" else (low, high)
+        return Bound(Term(LANE, use.actor, other), first, last, use.location, written)
+
+
+def shown_metres(distance) -> str:
+    """A lateral distance as a message names it: ``3.5 m`` or ``3..4 m``."""
+    return f"{distance.low:g} m" if distance.is_point else f"{distance.low:g}..{distance.high:g} m"
 
 
 class KeepLane(Modifier):
@@ -236,5 +286,5 @@ class ChangeLaneModifier(_LaneChange, Modifier):
     )
 
 
-CONSTRUCTS = (Lane(), KeepLane(), FollowLane(), ChangeLaneAction(), ChangeLaneModifier())
+CONSTRUCTS = (Lane(), Lateral(), KeepLane(), FollowLane(), ChangeLaneAction(), ChangeLaneModifier())
 __all__ = ["CONSTRUCTS", "LANE_CONVENTION", "keep_lane_variants"]

@@ -60,13 +60,25 @@ def test_absolute_lanes_count_from_the_right_by_default():
     assert (end.low, end.high) == (0, 0)
 
 
-def test_a_construct_the_automaton_cannot_translate_yet_is_a_located_error():
-    text = "scenario s:\n  a: car\n  b: car\n  do serial:\n    a.drive()\n    a.drive() with:\n      lateral(1m, side_of: b)\n"
+def test_a_lateral_distance_is_the_whole_lanes_it_spans_to_that_side_and_another_is_a_located_error():
+    def lateral(arguments: str):
+        text = f"scenario s:\n  a: car\n  b: car\n  do a.drive() with:\n    lateral({arguments}, at: start)\n"
+        checked = check_text(text, "d.osc")
+        assert not checked.errors, checked.report()
+        start, _ = [t.guard for t in build_automaton(checked.scenarios[0]).transitions]
+        return start.term.reference, start.low, start.high
+
+    # internally lane 0 is the leftmost: a lane to the left of b's has the smaller number
+    assert lateral("3.5m, side_of: b, side: right") == ("b", 1, 1)
+    assert lateral("3.5m, side_of: b") == ("b", -1, -1)  # side: left, as for lane(side_of: b)
+    assert lateral("7.2m, right_of: b") == ("b", 2, 2)
+    assert lateral("[3m..7m], left_of: b") == ("b", -2, -1)
+    assert lateral("0m, side_of: b") == ("b", 0, 0)  # beside b is b's lane
+    text = "scenario s:\n  a: car\n  b: car\n  do serial:\n    a.drive()\n    a.drive() with:\n      lateral(1.5m, side_of: b)\n"
     checked = check_text(text, "d.osc")
-    assert not checked.errors, checked.report()
     with pytest.raises(OscError) as caught:
         build_automaton(checked.scenarios[0])
-    assert "d.osc:7:7: error: not supported yet by the automaton: modifier 'lateral'" in str(caught.value)
+    assert "d.osc:7:15: error: a lateral distance of 1.5 m is no whole number of lanes (3.5 m)" in str(caught.value)
 
 
 def test_a_modifier_without_at_is_an_invariant_of_its_phase_and_holds_at_both_ends():

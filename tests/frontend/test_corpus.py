@@ -125,7 +125,7 @@ TIER_1 = {
     "event defined by a condition": r"^\s+event \w+ is \(",
     "wait for an event with a condition on another actor": r"wait @\w+ if \w+\.speed",
     "gap actions (tier 2)": r"\.keep_space_gap\((?s:.*)\.change_time_gap\(",
-    "lateral (tier 2)": r"^\s+lateral\(",
+    "lateral distance": r"^\s+lateral\(",
     "the environment's weather, read and set aside": r"^\s+environment\.air\((?s:.*)^\s+\w+\.rain\(",
     "scenario call with positional arguments": r"\.hold_lane_at\(\d",
 }
