@@ -9,6 +9,8 @@ import shlex
 import subprocess
 import sys
 
+import pytest
+
 from pytest_roadlogic.evaluation.falsification_campaign import falsify, search_seeds
 from pytest_roadlogic.evaluation.scenario_source import ScenarioSource
 from pytest_roadlogic.executors import executor
@@ -23,6 +25,7 @@ def test_the_searches_seeds_are_the_runs_own_then_ones_derived_from_it():
     assert search_seeds(7, 3) == [7, "7-search-1", "7-search-2"]
 
 
+@pytest.mark.slow  # about 100 s on two cores; the executors themselves are tested by the coverage campaign's
 def test_searches_on_two_processes_find_what_the_serial_run_finds_in_its_order():
     def outcomes(where):
         with where:
