@@ -95,15 +95,10 @@ class Lane(AnchoredModifier):
             keyword, other = relation
             if keyword == "same_as":
                 return Bound(Term(LANE, use.actor, other), 0, 0, use.location, f"{use.actor} in {other}'s lane")
-            if keyword == "side_of":
-                keyword = "left_of" if use.name("side") in (None, "left") else "right_of"
             low, high = (1, 1) if use.argument("lane") is None else self._whole(use)
-            # internally lane 0 is the leftmost: a lane left of x's has the smaller number
-            first, last = (-high, -low) if keyword == "left_of" else (low, high)
-            side = "left" if keyword == "left_of" else "right"
+            side = side_named(use, keyword)
             count = "the lane" if high == 1 else (f"{low} lanes" if low == high else f"{low}..{high} lanes")
-            written = f"{use.actor} in {count} {side} of {other}'s"
-            return Bound(Term(LANE, use.actor, other), first, last, use.location, written)
+            return lanes_to_the_side(use, other, side, low, high, f"{use.actor} in {count} {side} of {other}'s")
         if use.argument("lane") is None:
             raise error_at(
                 use.location, "lane() needs a lane number or same_as:/left_of:/right_of:", hint=self.convention
@@ -150,8 +145,6 @@ class Lateral(AnchoredModifier):
 
     def guard(self, use: Use) -> Guard:
         keyword, other = use.relation(("side_of", "left_of", "right_of"))
-        if keyword == "side_of":
-            keyword = "left_of" if use.name("side") in (None, "left") else "right_of"
         distance = use.interval("distance")
         tolerance = LANE_WIDTH / 4  # a car off its lane's centre by up to a quarter lane is in it
         low = max(0, math.ceil((distance.low - tolerance) / LANE_WIDTH))
@@ -162,10 +155,23 @@ class Lateral(AnchoredModifier):
                 f"a lateral distance of {shown_metres(distance)} is no whole number of lanes ({LANE_WIDTH:g} m) on the road's {use.lanes} lanes",
                 "this tool places vehicles in lanes: give a multiple of the lane width, or use lane(k, side_of: x)",
             )
-        side = "left" if keyword == "left_of" else "right"
-        written = f"{use.actor} {shown_metres(distance)} {side} of {other}"
-        first, last = (-high, -low) if keyword == "left_of" else (low, high)
-        return Bound(Term(LANE, use.actor, other), first, last, use.location, written)
+        side = side_named(use, keyword)
+        return lanes_to_the_side(use, other, side, low, high, f"{use.actor} {shown_metres(distance)} {side} of {other}")
+
+
+def side_named(use: Use, keyword: str) -> str:
+    """``left`` or ``right``: the side ``left_of:``/``right_of:`` names, or ``side:`` of
+    ``side_of:`` (default left)."""
+    if keyword == "side_of":
+        return "left" if use.name("side") in (None, "left") else "right"
+    return "left" if keyword == "left_of" else "right"
+
+
+def lanes_to_the_side(use: Use, other: str, side: str, low: int, high: int, written: str) -> Bound:
+    """The use's actor ``low..high`` lanes to ``side`` of ``other``'s lane. Internally lane 0 is
+    the leftmost: a lane left of x's has the smaller number."""
+    first, last = (-high, -low) if side == "left" else (low, high)
+    return Bound(Term(LANE, use.actor, other), first, last, use.location, written)
 
 
 def shown_metres(distance) -> str:

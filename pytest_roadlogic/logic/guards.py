@@ -323,9 +323,10 @@ def lanes_conflict(guard: Guard, lanes: int) -> tuple[Bound, ...] | None:
     actors = sorted({actor for bound in bounds for actor in bound.term.actors})
     if not bounds or len(actors) > LANE_ACTORS:
         return None
-    placements = [dict(zip(actors, lanes_of)) for lanes_of in itertools.product(range(lanes), repeat=len(actors))]
 
     def placed(group: tuple[Bound, ...]) -> bool:
+        # lazily, stopping at the first placement that fits
+        placements = (dict(zip(actors, at)) for at in itertools.product(range(lanes), repeat=len(actors)))
         return any(all(_lane_holds(bound, at) for bound in group) for at in placements)
 
     if placed(tuple(bounds)):
