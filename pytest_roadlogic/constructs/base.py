@@ -20,7 +20,7 @@ from typing import ClassVar, Protocol
 
 from ..frontend import model
 from ..frontend.errors import SourceLocation, error_at
-from ..frontend.semantics.library import Binding, Signature, bind
+from ..frontend.semantics.library import Binding, Signature, bind, with_movement_options
 from ..frontend.semantics.values import Interval, argument_interval, argument_range
 from ..logic.guards import Guard
 from ..logic.phase import Phase
@@ -187,9 +187,33 @@ class Action(Construct):
 
 
 class Modifier(Construct):
+    """A modifier. Every one takes the standard's common movement-modifier parameters
+    (``movement_mode:``, ``track:``, ``shape:``) beside its own: ``check_movement_options`` says
+    how they are read."""
+
     kind = "modifier"
     # where the modifier holds when ``at:`` is not given: the standard's all (a dialect may differ)
     default_anchor: ClassVar[str] = "all"
+
+    def __init_subclass__(cls, **kwargs) -> None:
+        super().__init_subclass__(**kwargs)
+        own = cls.__dict__.get("signature")
+        if own is not None:
+            cls.signature = with_movement_options(own)
+
+    def check_movement_options(self, binding: Binding, context: CheckContext) -> None:
+        """The standard's common movement-modifier arguments of a use, as the tool reads them:
+        ``movement_mode`` either way (every plan keeps to the vehicles' acceleration and jerk
+        limits, what ``monotonous`` asks), ``track: actual`` (the default: a vehicle meets its
+        reference where that one is), and ``track: projected`` read as actual, with a warning."""
+        track = binding["track"]
+        if track is not None and isinstance(track.value, model.Name) and track.value.name == "projected":
+            context.warning(
+                track.location,
+                "track: projected is read as actual: a vehicle meets where its reference is, "
+                "not where it was projected to be",
+                "leave track: out to silence this warning",
+            )
 
     def anchor(self, binding: Binding) -> str:
         """Where this use holds: its ``at:``, else the modifier's default (start, end or all)."""

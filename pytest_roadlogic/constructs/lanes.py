@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 from typing import ClassVar
 
-from ..dimensions import LANE_WIDTH
+from ..dimensions import CAR_WIDTH, LANE_WIDTH
 from ..frontend.errors import SourceLocation, error_at
 from ..frontend.semantics.library import AT, DURATION, RATE, Binding, Parameter, Signature
 from ..logic.guards import LANE, Bound, Guard, Term
@@ -32,7 +32,7 @@ def keep_lane_variants(actor: str, lanes: int, source: SourceLocation, written: 
 
 class Lane(AnchoredModifier):
     """``lane(k)``, ``lane([1..2])``, ``lane(k, from: left)``, ``lane(same_as:|left_of:|right_of: x)``,
-    ``lane(side_of: x, side: left)``. ``left_of: x`` is the lane next to x's on the left, and
+    ``lane(side_of: x, side: left)``; ``lane()`` is ``lane(1)``. ``left_of: x`` is the lane next to x's on the left, and
     ``lane(k, left_of: x)`` the k-th lane left of it: the standard's ``lane:`` argument counts the
     lanes to the side and defaults to 1 (CARLA's runner, too, takes the adjacent lane), not any lane on that side."""
 
@@ -53,8 +53,7 @@ class Lane(AnchoredModifier):
             AT,
         ),
         exclusive=(("lane", "same_as"), RELATIVE),
-        required=(("lane", *RELATIVE),),
-        description="lane occupancy, absolute or relative",
+        description="lane occupancy, absolute or relative (lane() is lane(1), the standard's default)",
     )
 
     def check(self, binding: Binding, context: CheckContext) -> None:
@@ -99,11 +98,9 @@ class Lane(AnchoredModifier):
             side = side_named(use, keyword)
             count = "the lane" if high == 1 else (f"{low} lanes" if low == high else f"{low}..{high} lanes")
             return lanes_to_the_side(use, other, side, low, high, f"{use.actor} in {count} {side} of {other}'s")
-        if use.argument("lane") is None:
-            raise error_at(
-                use.location, "lane() needs a lane number or same_as:/left_of:/right_of:", hint=self.convention
-            )
-        low, high = self._whole(use)  # within the road: the checker's check() saw to it
+        # lane() is lane(1): the standard's default lane (its domain model calls lane(), lane(1)
+        # and lane(lane: 1) the same)
+        low, high = (1, 1) if use.argument("lane") is None else self._whole(use)  # within the road: check() saw to it
         from_left = (use.name("from") or self.counted_from) == "left"
         first, last = (low - 1, high - 1) if from_left else (use.lanes - high, use.lanes - low)
         # named in the file's numbering, not the planner's (lane 0 the leftmost)
@@ -120,12 +117,25 @@ class Lane(AnchoredModifier):
         return int(value.low), int(value.high)
 
 
+# where on each vehicle's side a lateral() distance is measured from (its ``measure_by``): the
+# offset of the named side from the vehicle's centre, positive to the left, in vehicle widths
+_SIDE_OFFSET = {"left": 0.5, "center": 0.0, "right": -0.5}
+
+
 class Lateral(AnchoredModifier):
-    """``lateral(distance, side_of: x, side: left|right)`` (or ``left_of: x`` / ``right_of: x``): the
-    vehicle ``distance`` to the side of x, centre to centre. The planner places vehicles in lanes,
-    so a distance is read as the whole lanes it spans (``LANE_WIDTH`` each, within a quarter lane:
-    3.5 m is the next lane, 7 m the one beyond, 0 m x's own); one that is no whole number of lanes
-    is refused at its place. ``side`` defaults to left, as for ``lane(side_of: x)``."""
+    """``lateral(distance, side_of: x, side: left|right, measure_by: m)`` (or ``left_of: x`` /
+    ``right_of: x``): the vehicle ``distance`` to the side of x, measured between the sides
+    ``measure_by`` names (``center_to_center``, the default; ``right_to_left``: this vehicle's
+    right side to x's left side; ``closest``: the free space between the two). The planner places
+    vehicles in lanes, so the distance between centres it makes (vehicles are ``CAR_WIDTH`` wide)
+    is read as the whole lanes it spans (``LANE_WIDTH`` each, within a quarter lane: 3.5 m is the
+    next lane, 7 m the one beyond, 0 m x's own); one that is no whole number of lanes is refused
+    at its place. ``side`` defaults to left, as for ``lane(side_of: x)``.
+
+    Without a reference (the standard's Euro NCAP example: ``lateral(1m, measure_by:
+    left_to_left)``) the distance places the vehicle inside its own lane, from the lane's
+    markings; vehicles drive on their lane's centre line, so that is read with a warning, and a
+    distance that puts the vehicle across a marking is refused."""
 
     asks = ASKS_LANE
     signature = Signature(
@@ -136,27 +146,126 @@ class Lateral(AnchoredModifier):
             Parameter("side", "enum:side"),
             Parameter("left_of", "actor"),
             Parameter("right_of", "actor"),
+            Parameter("measure_by", "enum:lateral_measure_by"),
             AT,
         ),
         exclusive=(("side_of", "left_of", "right_of"),),
-        required=(("distance",), ("side_of", "left_of", "right_of")),
-        description="lateral distance to another vehicle, in whole lanes",
+        required=(("distance",),),
+        description="lateral distance to another vehicle (in whole lanes), or inside the own lane",
     )
+
+    def check(self, binding: Binding, context: CheckContext) -> None:
+        if _referenced(binding):
+            return
+        distance = context.evaluate(binding["distance"])
+        if distance is None or distance.dimension != "length":
+            return
+        measure = binding["measure_by"].value.name if binding["measure_by"] is not None else "center_to_center"
+        offsets = [_offset_in_lane(measure, value) for value in (distance.low, distance.high)]
+        place_in_lane(
+            context,
+            binding["distance"],
+            offsets,
+            f"lateral({shown_metres(distance)}, measure_by: {measure})",
+            "without side_of:, the distance is measured from the vehicle's own lane; give one that keeps it "
+            "in the lane, or name the vehicle it is measured from (side_of: x)",
+            inward_only=measure == "closest",
+        )
+
+    def asked_within(self, binding: Binding) -> bool:
+        """A place inside the own lane asks no lane (least action): only one beside another car does."""
+        return _referenced(binding) and super().asked_within(binding)
+
+    def asked_at_start(self, binding: Binding) -> bool:
+        return _referenced(binding) and super().asked_at_start(binding)
+
+    def translate(self, use: Use, phase: Phase) -> None:
+        if not _referenced(use.binding):
+            return None  # a place inside the own lane: warned at check
+        super().translate(use, phase)
 
     def guard(self, use: Use) -> Guard:
         keyword, other = use.relation(("side_of", "left_of", "right_of"))
+        side = side_named(use, keyword)
         distance = use.interval("distance")
+        measure = use.name("measure_by") or "center_to_center"
+        between = [_centre_distance(measure, side, value) for value in (distance.low, distance.high)]
         tolerance = LANE_WIDTH / 4  # a car off its lane's centre by up to a quarter lane is in it
-        low = max(0, math.ceil((distance.low - tolerance) / LANE_WIDTH))
-        high = math.floor((distance.high + tolerance) / LANE_WIDTH)
+        low = max(0, math.ceil((min(between) - tolerance) / LANE_WIDTH))
+        high = math.floor((max(between) + tolerance) / LANE_WIDTH)
         if low > high or high >= use.lanes:
+            measured = (
+                "" if measure == "center_to_center" else f", {min(between):g}..{max(between):g} m centre to centre"
+            )
             raise error_at(
                 use.argument("distance").location,
-                f"a lateral distance of {shown_metres(distance)} is no whole number of lanes ({LANE_WIDTH:g} m) on the road's {use.lanes} lanes",
+                f"a lateral distance of {shown_metres(distance)}{measured} is no whole number of lanes "
+                f"({LANE_WIDTH:g} m) on the road's {use.lanes} lanes",
                 "this tool places vehicles in lanes: give a multiple of the lane width, or use lane(k, side_of: x)",
             )
-        side = side_named(use, keyword)
-        return lanes_to_the_side(use, other, side, low, high, f"{use.actor} {shown_metres(distance)} {side} of {other}")
+        measured = "" if measure == "center_to_center" else f" ({measure})"
+        return lanes_to_the_side(
+            use, other, side, low, high, f"{use.actor} {shown_metres(distance)}{measured} {side} of {other}"
+        )
+
+
+def _referenced(binding: Binding) -> bool:
+    """Whether a lateral() use names the vehicle it is measured from."""
+    return any(binding[name] is not None for name in ("side_of", "left_of", "right_of"))
+
+
+def place_in_lane(
+    context: CheckContext, argument, offsets: list[float], written: str, hint: str, inward_only: bool = False
+) -> None:
+    """A use that places its vehicle inside its own lane, ``offsets`` (metres, positive to the
+    left) off the lane's centre line: vehicles drive on that line, so a place that keeps the
+    vehicle between its lane's markings is read with one warning, and one across a marking (or,
+    ``inward_only``, a negative offset) is refused at ``argument``."""
+    room = (LANE_WIDTH - CAR_WIDTH) / 2
+    if any(abs(offset) > room + 1e-9 or (inward_only and offset < 0) for offset in offsets):
+        context.error(
+            argument.value.location,
+            f"{written} puts the vehicle across its lane's marking ({CAR_WIDTH:g} m wide, in a lane of "
+            f"{LANE_WIDTH:g} m: at most {room:g} m off its centre)",
+            hint,
+        )
+        return
+    context.warning(
+        context.location,
+        f"{written} is read but not simulated: vehicles drive on their lane's centre line",
+        "the vehicle keeps its lane; remove it to silence this warning",
+    )
+
+
+def _sides(measure: str) -> tuple[float, float]:
+    """The offsets from centre (positive to the left, in metres) of the two sides ``measure`` names:
+    this vehicle's, then the reference's (``left_to_right``: this one's left, the other's right)."""
+    mine, _, theirs = measure.partition("_to_")
+    return _SIDE_OFFSET[mine] * CAR_WIDTH, _SIDE_OFFSET[theirs] * CAR_WIDTH
+
+
+def _centre_distance(measure: str, side: str, distance: float) -> float:
+    """The distance between centres of a vehicle ``distance`` to ``side`` of another, measured by
+    ``measure``: with the vehicle at lateral offset ``sign * d`` from the other (sign +1 to the
+    left), the measured sides lie ``sign * d + mine - theirs`` apart."""
+    if measure == "closest":
+        return distance + CAR_WIDTH  # the free space between two boxes side by side
+    sign = 1 if side == "left" else -1
+    mine, theirs = _sides(measure)
+    return distance - sign * (mine - theirs)
+
+
+def _offset_in_lane(measure: str, distance: float) -> float:
+    """The offset (positive to the left) from its lane's centre line of a vehicle whose side
+    ``measure`` names lies ``distance`` inside the lane's marking it names (``left_to_left``:
+    its left side that far right of the lane's left marking; ``closest``: its side nearer a
+    marking that far from it, negative when no side can be that far)."""
+    if measure == "closest":
+        return (LANE_WIDTH - CAR_WIDTH) / 2 - distance
+    mine, _, marking = measure.partition("_to_")
+    edge = {"left": LANE_WIDTH / 2, "center": 0.0, "right": -LANE_WIDTH / 2}[marking]
+    inward = -1 if marking == "left" else 1  # from the marking into the lane
+    return edge + inward * distance - _SIDE_OFFSET[mine] * CAR_WIDTH
 
 
 def side_named(use: Use, keyword: str) -> str:
@@ -191,9 +300,23 @@ class KeepLane(Modifier):
 class FollowLane(Action):
     """``follow_lane()``: drive on in the lane the phase starts in."""
 
-    signature = Signature(
-        "follow_lane", (DURATION, Parameter("offset", "length", supported=False)), description="stay in the lane"
-    )
+    signature = Signature("follow_lane", (DURATION, Parameter("offset", "length")), description="stay in the lane")
+
+    def check(self, binding: Binding, context: CheckContext) -> None:
+        """``offset:`` (the standard's: off the lane's centre line, inside the lane) is read with a
+        warning, as vehicles drive on the centre line (``place_in_lane``)."""
+        if binding["offset"] is None:
+            return
+        offset = context.evaluate(binding["offset"])
+        if offset is None or offset.dimension != "length":
+            return
+        place_in_lane(
+            context,
+            binding["offset"],
+            [offset.low, offset.high],
+            f"follow_lane(offset: {shown_metres(offset)})",
+            "offset: is measured from the lane's centre line; give one that keeps the vehicle in its lane",
+        )
 
     def translate(self, use: Use, phase: Phase) -> None:
         phase.branch(keep_lane_variants(use.actor, use.lanes, use.location, "follow_lane()"))

@@ -376,6 +376,8 @@ class TypeDeclaration:
     constraints: tuple[Keep | RemoveDefault, ...]
     location: SourceLocation
     methods: tuple[Method, ...] = ()
+    # ``inherits vehicle(vehicle_category == vehicle_category!car)``: the parent's condition
+    condition: Expression | None = None
 
 
 @dataclass(frozen=True)

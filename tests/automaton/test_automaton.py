@@ -60,6 +60,12 @@ def test_absolute_lanes_count_from_the_right_by_default():
     assert (end.low, end.high) == (0, 0)
 
 
+def test_lane_without_arguments_is_lane_1_as_the_standards_default():
+    text = "scenario s:\n  a: car\n  do a.drive() with:\n    lane(at: start)\n    lane(lane: 1, at: end)\n"
+    start, end = [t.guard for t in build_automaton(check_text(text).scenarios[0]).transitions]
+    assert (start.low, start.high) == (end.low, end.high) == (2, 2)
+
+
 def test_a_lateral_distance_is_the_whole_lanes_it_spans_to_that_side_and_another_is_a_located_error():
     def lateral(arguments: str):
         text = f"scenario s:\n  a: car\n  b: car\n  do a.drive() with:\n    lateral({arguments}, at: start)\n"
@@ -79,6 +85,61 @@ def test_a_lateral_distance_is_the_whole_lanes_it_spans_to_that_side_and_another
     with pytest.raises(OscError) as caught:
         build_automaton(checked.scenarios[0])
     assert "d.osc:7:15: error: a lateral distance of 1.5 m is no whole number of lanes (3.5 m)" in str(caught.value)
+
+
+def test_a_lateral_distance_measured_between_sides_is_read_between_centres_of_two_cars_1_8_m_wide():
+    def lateral(arguments: str):
+        text = f"scenario s:\n  a: car\n  b: car\n  do a.drive() with:\n    lateral({arguments}, at: start)\n"
+        checked = check_text(text, "d.osc")
+        assert not checked.errors, checked.report()
+        start, _ = [t.guard for t in build_automaton(checked.scenarios[0]).transitions]
+        return start.term.reference, start.low, start.high
+
+    # 1.7 m between a's right side and b's left side: centres 3.5 m apart, the next lane left
+    assert lateral("1.7m, side_of: b, side: left, measure_by: right_to_left") == ("b", -1, -1)
+    # the free space between the two boxes, to the right: the same
+    assert lateral("1.7m, right_of: b, measure_by: closest") == ("b", 1, 1)
+    # a's left side 1.7 m right of b's right side is a's right side 3.5 m from it: one lane right
+    assert lateral("1.7m, right_of: b, measure_by: left_to_right") == ("b", 1, 1)
+    # same sides measured: the distance between centres
+    assert lateral("7m, left_of: b, measure_by: left_to_left") == ("b", -2, -2)
+    assert lateral("3.5m, left_of: b, measure_by: center_to_center") == ("b", -1, -1)
+
+
+def test_a_lateral_distance_without_a_reference_is_a_place_in_the_own_lane_read_with_a_warning_or_refused():
+    def checked(arguments: str):
+        text = f"scenario s:\n  a: car\n  do a.drive() with:\n    lateral({arguments}, at: start)\n"
+        return check_text(text, "d.osc")
+
+    # the standard's Euro NCAP example: 1 m from the left marking to the car's left side
+    fits = checked("distance: 1m, measure_by: left_to_left")
+    assert not fits.errors
+    assert [w.message for w in fits.warnings] == [
+        "lateral(1 m, measure_by: left_to_left) is read but not simulated: vehicles drive on their lane's centre line"
+    ]
+    out = checked("distance: 2m, measure_by: left_to_left")
+    assert [(e.location.line, e.location.column, e.message) for e in out.errors] == [
+        (
+            4,
+            23,
+            "lateral(2 m, measure_by: left_to_left) puts the vehicle across its lane's marking "
+            "(1.8 m wide, in a lane of 3.5 m: at most 0.85 m off its centre)",
+        )
+    ]
+    assert not checked("0.5m, measure_by: closest").errors
+    assert checked("1m, measure_by: closest").errors  # no side of a centred car is 1 m from a marking
+    # the plan is as without it: no lane bound, and the car asked for no lane (least action)
+    a = build_automaton(fits.scenarios[0])
+    assert not any("l(a)" in str(t.guard) for t in a.transitions)
+    assert all(not location.asks for location in a.locations)
+
+
+def test_follow_lane_with_an_offset_inside_the_lane_is_read_with_a_warning_and_across_a_marking_refused():
+    def checked(offset: str):
+        return check_text(f"scenario s:\n  a: car\n  do a.follow_lane(offset: {offset})\n", "d.osc")
+
+    assert not checked("0.375m").errors and len(checked("0.375m").warnings) == 1
+    assert "puts the vehicle across its lane's marking" in checked("-1m").errors[0].message
 
 
 def test_a_modifier_without_at_is_an_invariant_of_its_phase_and_holds_at_both_ends():

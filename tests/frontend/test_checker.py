@@ -271,8 +271,13 @@ CASES = [
     ("road_unknown", HEAD + "    lanes.path_max_lanes(3)\n", "4:11: error: unknown road 'lanes'"),
     (
         "road_with_value",
+        HEAD + "    road: Path = 3\n",
+        "4:11: error: a road takes no value",
+    ),
+    (
+        "road_with_a_keep_of_no_lanes",
         HEAD + "    road: Path with:\n        keep(it == 3)\n",
-        "4:11: error: a road takes no value or keep()",
+        "5:9: error: not supported: this keep() of a road",
     ),
     (
         "from_with_relative",

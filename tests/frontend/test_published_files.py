@@ -313,3 +313,64 @@ def test_a_vehicle_the_scenario_names_no_speed_for_starts_in_the_road_speed_band
     assert 100 / 3.6 - 1e-6 <= plan.states["ego"][0].speed <= 120 / 3.6 + 1e-6
     case = Case.of("s.osc", "s", run)
     assert Case.load(case.save(tmp_path / "case.json")).settings.road_speed == run.road_speed
+
+
+@pytest.mark.parametrize(
+    "declaration, base",
+    [
+        ("actor car inherits vehicle(vehicle_category == vehicle_category!car)", "car"),
+        ("actor lorry inherits vehicle(vehicle_category == vehicle_category!truck)", "truck"),
+        ("actor sedan inherits vehicle(vehicle_category == car)", "car"),
+    ],
+)
+def test_a_vehicle_of_a_category_is_that_built_in_type_as_the_standards_examples_declare_a_car(declaration, base):
+    kind = declaration.split()[1]
+    checked = check_text(f"{declaration}\nscenario s:\n    a: {kind}\n    do a.drive(duration: 3s)\n", "t.osc")
+    assert not checked.errors, checked.report()
+    assert checked.scenarios[0].scenario.actors[0].base == base
+
+
+def test_another_condition_on_inheritance_is_refused_at_the_condition():
+    text = "actor fast inherits vehicle(is_electric == true)\nscenario s:\n    a: fast\n    do a.drive(duration: 3s)\n"
+    assert _lines(check_text(text, "t.osc"))[:1] == ["t.osc:1:29: not supported: conditional inheritance"]
+
+
+def test_a_distance_range_spanning_zero_puts_the_vehicle_beside_the_other_and_one_wholly_negative_is_refused():
+    def position(distance: str):
+        text = (
+            "scenario s:\n    a: car\n    b: car\n    do parallel(duration: 3s):\n        b.drive()\n"
+            f"        a.drive() with:\n            lane(left_of: b)\n            position({distance}, ahead_of: b)\n"
+        )
+        return check_text(text, "t.osc")
+
+    from pytest_roadlogic.automaton import build_automaton
+
+    beside = position("[-1m..1m]")
+    assert not beside.errors, beside.report()
+    guards = " and ".join(str(t.guard) for t in build_automaton(beside.scenarios[0]).transitions)
+    assert "-1 <= p(a) - p(b) <= 1" in guards
+    with pytest.raises(Exception, match="a distance must not be negative"):
+        build_automaton(position("[-3m..-1m]").scenarios[0])
+
+
+def test_a_parameter_bounded_on_one_side_only_says_which_bound_is_missing():
+    text = "scenario s:\n    a: car\n    t: time\n    keep(t >= 5min)\n    do a.drive(duration: t)\n"
+    assert _lines(check_text(text, "t.osc")) == [
+        "t.osc:3:5: parameter 't' is at least 300 s but has no upper bound: a sample needs both ends"
+    ]
+
+
+def test_the_standards_common_movement_modifier_parameters_are_read_and_projected_tracking_warned():
+    def checked(arguments: str):
+        text = (
+            "scenario s:\n    a: car\n    b: car\n    do parallel(duration: 3s):\n        a.drive()\n"
+            f"        b.drive() with:\n            position(10m, ahead_of: a, {arguments})\n"
+        )
+        return check_text(text, "t.osc")
+
+    quiet = checked("movement_mode: monotonous, track: actual")
+    assert not quiet.errors and not quiet.warnings, quiet.report()
+    projected = checked("track: projected")
+    assert [w.message.split(":")[0] for w in projected.warnings] == ["track"]
+    assert [e.message for e in checked("shape: s").errors] == ["not supported: argument 'shape' of position()"]
+    assert checked("movement_mode: wobbly").errors

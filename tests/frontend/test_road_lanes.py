@@ -220,3 +220,45 @@ def test_number_of_lanes_on_a_map_takes_a_road_with_as_many_lanes_or_says_the_ma
         assert checked.scenarios[0].lanes == lanes
     else:
         assert [d.message for d in checked.errors] == [f"the route on road 1 of curved_highway.xodr {error}"]
+
+
+@pytest.mark.parametrize(
+    "kept, lanes",
+    [
+        ("keep(it.min_lanes == 2)", 2),
+        ("keep(it.min_lanes >= 4)", 4),
+        ("keep(it.min_lanes > 4)", 5),
+        ("keep(it.max_lanes <= 2)", 2),
+        ("keep(2 == it.max_lanes)", 2),
+    ],
+)
+def test_a_route_or_road_with_its_lanes_kept_is_the_scenarios_road_as_the_standards_examples_write_it(kept, lanes):
+    for declared in ("route", "road"):
+        text = (
+            PAIR
+            + f"    r: {declared} with:\n        {kept}\n"
+            + "    do parallel(duration: 3s):\n        a.drive() with:\n            along(r)\n"
+            + "        b.drive() with:\n            along(route: r)\n"
+        )
+        assert lanes_of(text) == lanes, (declared, kept)
+
+
+def test_a_lane_beyond_a_kept_lane_count_names_the_keep_and_a_second_bound_is_refused():
+    head = PAIR + "    r: route with:\n        keep(it.min_lanes == 2)\n"
+    assert errors_of(side_by_side("lane(3, at: all)", head=head)) == [
+        "8:18: lane 3 is outside the road's 2 lanes (keep(it.min_lanes == 2) on line 5)"
+    ]
+    twice = PAIR + "    r: route with:\n        keep(it.min_lanes >= 2)\n        keep(it.min_lanes >= 3)\n"
+    assert errors_of(side_by_side("lane(1, at: all)", head=twice)) == [
+        "6:9: keep(it.min_lanes >= 3) bounds the road's lanes again: keep(it.min_lanes >= 2) on line 5"
+    ]
+
+
+def test_the_maps_inner_side_is_the_left_and_its_outer_side_the_right_in_right_hand_traffic():
+    head = PAIR + "    map: map\n"
+    for side, expected in (("inner_side", 0), ("outer_side", 2)):
+        text = side_by_side(f"lane(side_of: b, side: map.{side}(), at: all)", head=head)
+        checked = check_text(text, "t.osc")
+        assert not checked.errors, checked.report()
+        guard = next(t.guard for t in build_automaton(checked.scenarios[0]).transitions if "l(a" in str(t.guard))
+        assert f"l(a) - l(b) = {expected - 1}" in str(guard)

@@ -33,7 +33,14 @@ from .events import EventChecks
 from .field_types import FieldTyping
 from .imports import ImportLoading
 from .inheritance import inherited
-from .invocation import RECURSION, called_scenarios, expand_calls, resolve_actor_aliases, substitute_names
+from .invocation import (
+    RECURSION,
+    called_scenarios,
+    expand_calls,
+    resolve_actor_aliases,
+    substitute_calls,
+    substitute_names,
+)
 from .logical import logical_parameters_of, way_parameters
 from .methods import Methods, inline_methods, inline_scenario
 from .parameters import ParameterSpace, parameter_space
@@ -291,6 +298,7 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks, EnvironmentAc
                 continue  # the call left in place would only be reported again as an unknown action
             scenario = resolve_actor_aliases(scenario, is_actor)
             scenario = self._string_constants(scenario, globals_)
+            scenario = _map_sides(scenario)
             checked, space, lanes = self._scenario(scenario, globals_)
             try:
                 parameters = logical_parameters_of(checked, space, self.registry) + way_parameters(
@@ -362,6 +370,14 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks, EnvironmentAc
                 members.append(member)
             self.enums[enum.name] = tuple(members)
         for declared in osc.types:
+            if declared.condition is not None:
+                declared = self._category_parent(declared)
+                if declared is None:
+                    continue
+                if declared.name == declared.parent and not (
+                    declared.fields or declared.constraints or declared.methods
+                ):
+                    continue  # the standard's way of declaring a car: the built-in car restated
             if (
                 declared.name in self.types
                 or declared.name in self.enums
@@ -371,6 +387,32 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks, EnvironmentAc
                 self.error(declared.location, f"type {declared.name!r} is already declared", "rename the declaration")
                 continue
             self.types[declared.name] = declared
+
+    def _category_parent(self, declared: model.TypeDeclaration) -> model.TypeDeclaration | None:
+        """``actor car inherits vehicle(vehicle_category == vehicle_category!car)``, as the standard's
+        examples declare a car: a vehicle of the category car is this tool's car (truck: truck), so
+        the declaration derives from that type. Any other condition is refused at its place (None)."""
+        condition = declared.condition
+        category = None
+        if (
+            declared.parent == "vehicle"
+            and isinstance(condition, model.Binary)
+            and condition.operator == "=="
+            and isinstance(condition.left, model.Name)
+            and condition.left.name == "vehicle_category"
+            and isinstance(condition.right, model.Name)
+            and condition.right.enum in (None, "vehicle_category")
+        ):
+            category = condition.right.name
+        if category in ("car", "truck"):
+            return replace(declared, parent=category, condition=None)
+        self.error(
+            condition.left.location if isinstance(condition, model.Binary) else condition.location,
+            "not supported: conditional inheritance",
+            "derive the type from car or truck (actor x inherits car); the tool reads "
+            "inherits vehicle(vehicle_category == vehicle_category!car) as that",
+        )
+        return None
 
     def _extend_enum(self, extension: model.EnumDeclaration) -> None:
         """``extend e: [a, b]``: members added to an enum this file or an import declares."""
@@ -524,6 +566,19 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks, EnvironmentAc
         valueless = {p.name for p in parameters if p.default is not None and p.default.location in self.refused_calls}
         for name, domain in space.domains.items():
             if name in used_names and not domain.bounded and name not in valueless:
+                interval = domain.interval
+                if math.isfinite(interval.low) or math.isfinite(interval.high):
+                    known, missing = (
+                        (f"at least {interval.low:g}{_unit_of(domain.type)}", "upper")
+                        if math.isfinite(interval.low)
+                        else (f"at most {interval.high:g}{_unit_of(domain.type)}", "lower")
+                    )
+                    self.error(
+                        domain.location,
+                        f"parameter {name!r} is {known} but has no {missing} bound: a sample needs both ends",
+                        "bound it on the other side too, e.g. keep(it in [a..b])",
+                    )
+                    continue
                 self.error(
                     domain.location,
                     f"parameter {name!r} has no range or value",
@@ -705,6 +760,7 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks, EnvironmentAc
                 what=f"{modifier.name}()",
             )
             construct.check(binding, replace(context, location=modifier.location))
+            construct.check_movement_options(binding, replace(context, location=modifier.location))
             self._not_relative_to_itself(construct.signature, binding, actor, modifier.name)
         local = dict(env)
         local["it.duration"] = Interval(0.0, math.inf, TIME)
@@ -896,7 +952,12 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks, EnvironmentAc
                 self.error(value.location, f"unknown name {result.name!r}", "declare it as a parameter of the scenario")
             return
         if not isinstance(result, Interval):
-            self.error(value.location, f"{parameter.name}: takes {describe(expected)}, e.g. {example}")
+            listed = isinstance(value, model.ListValue)
+            self.error(
+                value.location,
+                f"{parameter.name}: takes {describe(expected)}, e.g. {example}",
+                "[a, b] is a list; a range of values is written [a..b]" if listed else None,
+            )
             return
         if result.dimension != expected:
             if expected is None:
@@ -971,3 +1032,30 @@ def _extend(scenario: model.Scenario, extra: model.Scenario) -> model.Scenario:
         coverage=scenario.coverage + extra.coverage,
         samples=scenario.samples + extra.samples,
     )
+
+
+def _map_sides(scenario: model.Scenario) -> model.Scenario:
+    """The scenario with ``m.inner_side()`` and ``m.outer_side()`` of its map ``m`` written out as
+    the side they name: the tool's roads have right-hand traffic, so the inner side (toward
+    oncoming traffic) is the left and the outer side the right (the standard's swerving example
+    writes ``lane(side_of: x, side: map.inner_side())``)."""
+    members = {}
+    for item in scenario.fields:
+        if item.type in library.ROAD_TYPES:
+            members[f"{item.name}.inner_side"] = "left"
+            members[f"{item.name}.outer_side"] = "right"
+    if not members:
+        return scenario
+    return replace(
+        scenario,
+        behavior=substitute_calls(scenario.behavior, members),
+        behaviors=substitute_calls(scenario.behaviors, members),
+        modifiers=substitute_calls(scenario.modifiers, members),
+    )
+
+
+def _unit_of(type_name: str) -> str:
+    """The SI unit a bound of a parameter of ``type_name`` is shown in (`` m``, `` s``, ...; none for a number)."""
+    dimension = library.PHYSICAL_TYPES.get(type_name)
+    unit = {"length": "m", "time": "s", "speed": "m/s", "acceleration": "m/s^2"}.get(dimension)
+    return f" {unit}" if unit else ""

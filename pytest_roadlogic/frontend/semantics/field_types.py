@@ -21,12 +21,18 @@ class FieldTyping:
         if item.is_list:
             self.error(location, "not supported: list parameters", "use one parameter per value")
             return None
-        if item.type in library.ROAD_TYPES:
-            if item.constraints or item.default is not None:
+        road_with_lanes = (
+            item.type == "road" and item.constraints and all(isinstance(c, model.Keep) for c in item.constraints)
+        )
+        if item.type in library.ROAD_TYPES or road_with_lanes:
+            # a road with its lanes kept (`r1: road with: keep(it.min_lanes == 2)`, the standard's
+            # examples) is the scenario's road, as a route is
+            # its keep(it.min_lanes ...) / keep(it.max_lanes ...) are lane bounds (road_lanes)
+            if item.default is not None or any(not isinstance(c, model.Keep) for c in item.constraints):
                 self.error(
                     location,
-                    "a road takes no value or keep()",
-                    "constrain it with path_min_driving_lanes(n) or path_max_lanes(n)",
+                    "a road takes no value",
+                    "constrain its lanes with keep(it.min_lanes >= n), path_min_driving_lanes(n) or path_max_lanes(n)",
                 )
             return "road"
         if item.type in library.MAP_ELEMENT_TYPES:

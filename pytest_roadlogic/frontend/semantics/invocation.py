@@ -231,6 +231,27 @@ def _substitute(node, substitution: Mapping[str, model.Expression], owner: str |
     return dataclasses.replace(node, **changes) if changes else node
 
 
+def substitute_calls(node, members: Mapping[str, str]):
+    """``node`` with each call ``f()`` of no arguments whose ``f`` is in ``members`` replaced by
+    the name ``members[f]`` at the call's place (``map.inner_side()`` -> ``left``)."""
+    if isinstance(node, model.Call):
+        if node.function in members and not node.arguments:
+            return model.Name(members[node.function], node.location)
+        return node
+    if isinstance(node, tuple):
+        return tuple(substitute_calls(item, members) for item in node)
+    if not dataclasses.is_dataclass(node) or isinstance(node, type) or isinstance(node, model.Name):
+        return node
+    changes = {}
+    for field in dataclasses.fields(node):
+        value = getattr(node, field.name)
+        if isinstance(value, tuple) or (dataclasses.is_dataclass(value) and not isinstance(value, type)):
+            changed = substitute_calls(value, members)
+            if changed is not value:
+                changes[field.name] = changed
+    return dataclasses.replace(node, **changes) if changes else node
+
+
 def _relabel(behavior, prefix: str):
     """The callee's labels as ``prefix.label``: a scenario called twice keeps its phases apart."""
     label = f"{prefix}.{behavior.label}" if behavior.label else None

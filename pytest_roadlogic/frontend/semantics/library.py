@@ -12,7 +12,7 @@ are refused by the checker.
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 from .. import model
 from ..syntax.standard_library import LazyTable
@@ -42,8 +42,9 @@ UNSUPPORTED_ACTOR_TYPES = ("person", "pedestrian", "animal", "cyclist", "bicycle
 # The road a scenario runs on, in the dialect of public OS2 scenario runners: a field of this type,
 # constrained by modifiers applied to the whole scenario (`path: Path`, `path.path_min_driving_lanes(4)`).
 ROAD_TYPE = "Path"
-# the same, as the standard declares it (`map: map`, `map.roads_follow_in_junction(...)`)
-ROAD_TYPES = (ROAD_TYPE, "map")
+# the same, as the standard declares it (`map: map`, `map.roads_follow_in_junction(...)`, and a
+# `route` a vehicle drives along, its lanes kept with `keep(it.min_lanes == 2)`)
+ROAD_TYPES = (ROAD_TYPE, "map", "route")
 
 # the map's elements a scenario names as fields of its own (`j: junction`, `r1: road`): the tool
 # picks each from the map where roads_follow_in_junction names it (docs/junctions.md)
@@ -150,6 +151,22 @@ def bind(signature: Signature, arguments: tuple[model.Argument, ...]) -> Binding
 
 
 AT = Parameter("at", "enum:at")
+# the parameters the standard gives every movement modifier besides ``at`` (its domain model,
+# "common parameters"): how physically it moves, whether a reference is tracked as it actually
+# moves or as projected, and a shape of the change (not read: the motion planner shapes it)
+MOVEMENT_OPTIONS = (
+    Parameter("movement_mode", "enum:movement_mode"),
+    Parameter("track", "enum:track"),
+    Parameter("shape", "shape", supported=False),
+)
+
+
+def with_movement_options(signature: Signature) -> Signature:
+    """``signature`` with the standard's common movement-modifier parameters it does not declare itself."""
+    missing = tuple(p for p in MOVEMENT_OPTIONS if signature.parameter(p.name) is None)
+    return replace(signature, parameters=signature.parameters + missing) if missing else signature
+
+
 DURATION = Parameter("duration", "time")
 # a lane change's rate: its lateral speed, which the motion planner chooses
 RATE = (

@@ -90,7 +90,7 @@ class RoadLanes:
             self.lanes_origin = ""
             if most and lanes > most[0]:
                 lanes = most[0]
-                self.lanes_origin = f" ({_written(most, 'path_max_lanes')}({lanes}) on line {most[1].line})"
+                self.lanes_origin = f" ({_written(most, 'path_max_lanes')} on line {most[1].line})"
             if lanes > MAX_LANES:
                 # the one error for it: the road keeps the lanes asked for, so the lane checks stay quiet
                 self.error(
@@ -172,7 +172,7 @@ class RoadLanes:
         if most and lanes > most[0]:
             self.error(
                 most[1],
-                f"the route on {self.route.name} has {lanes} driving lanes, more than {_written(most, 'path_max_lanes')}({most[0]})",
+                f"the route on {self.route.name} has {lanes} driving lanes, more than {_written(most, 'path_max_lanes')}",
                 f"leave out {_written(most, 'path_max_lanes')}, or give a map whose road has that many lanes",
             )
         if self.requested_lanes is not None and self.requested_lanes != lanes:
@@ -448,7 +448,67 @@ class RoadLanes:
                 )
             else:
                 bounds[modifier.name] = (int(value.low), modifier.location)
+        for item in scenario.fields:
+            if item.name in roads:
+                for keep in item.constraints:
+                    if isinstance(keep, model.Keep):
+                        self._route_lanes_kept(keep, env, bounds)
         return bounds
+
+    def _route_lanes_kept(self, keep: model.Keep, env: dict, bounds: dict) -> None:
+        """``route: route with: keep(it.min_lanes == 2)`` (the standard's example): a bound on the
+        road's driving lanes one way, kept in ``bounds`` as path_min_driving_lanes / path_max_lanes
+        would be. The tool's road keeps its lane count along the route, so ``min_lanes`` and
+        ``max_lanes`` both are that count: ``== n`` fixes it, ``>= n`` / ``> n`` bound it below,
+        ``<= n`` / ``< n`` above."""
+        comparison = keep.expression
+        flipped = {">=": "<=", ">": "<", "<=": ">=", "<": ">", "==": "=="}
+        if isinstance(comparison, model.Binary) and comparison.operator in flipped:
+            operator, field, other = comparison.operator, comparison.left, comparison.right
+            if not _lanes_field(field):
+                operator, field, other = flipped[operator], other, field
+        else:
+            field = None
+        if not _lanes_field(field):
+            self.error(
+                keep.location,
+                "not supported: this keep() of a road",
+                "a road's lanes are kept with keep(it.min_lanes >= n), keep(it.max_lanes <= n) or keep(it.min_lanes == n)",
+            )
+            return
+        try:
+            value = evaluate(other, env)
+        except EvaluationError as error:
+            self.error(error.location, error.message, error.hint)
+            return
+        if isinstance(value, model.Name):
+            self.error(value.location, f"unknown name {value.name!r}", "give a number of lanes, e.g. 2")
+            return
+        if not (isinstance(value, Interval) and value.is_point and float(value.low).is_integer() and value.low >= 1):
+            self.error(other.location, f"{field.name} is compared with one whole number of lanes from 1 up, e.g. 2")
+            return
+        lanes = {">": int(value.low) + 1, "<": int(value.low) - 1}.get(operator, int(value.low))
+        if lanes < 1:
+            self.error(keep.location, "a road has at least one lane", "compare with 2 or more, e.g. it.max_lanes < 3")
+            return
+        written = f"keep({field.name} {comparison.operator} {int(value.low)})"
+        asked = {
+            "==": ("path_min_driving_lanes", "path_max_lanes"),
+            ">=": ("path_min_driving_lanes",),
+            ">": ("path_min_driving_lanes",),
+            "<=": ("path_max_lanes",),
+            "<": ("path_max_lanes",),
+        }[operator]
+        for name in asked:
+            if name in bounds:
+                self.error(
+                    keep.location,
+                    f"{written} bounds the road's lanes again: {_written(bounds[name], name)} on line {bounds[name][1].line}",
+                    "give the road's lanes once",
+                )
+                return
+        for name in asked:
+            bounds[name] = (lanes, keep.location, written)
 
     def _number_of_lanes(self, modifier: model.Modifier, binding, env: dict, before: int, bounds: dict) -> None:
         """``number_of_lanes(route, n)``: the road has ``n`` driving lanes one way, kept in ``bounds``
@@ -480,7 +540,7 @@ class RoadLanes:
                 )
                 return
         for name in ("path_min_driving_lanes", "path_max_lanes"):
-            bounds[name] = (lanes, modifier.location, "number_of_lanes")
+            bounds[name] = (lanes, modifier.location, f"number_of_lanes({lanes})")
 
     def _turn_ask(self, modifier: model.Modifier, binding, env: dict, before: int) -> None:
         """``roads_follow_in_junction``: the path it is applied to turns at a junction, kept in
@@ -630,6 +690,16 @@ _RELATION_EXAMPLE = {
 }
 
 
+def _lanes_field(expression) -> bool:
+    """Whether ``expression`` names a road's lane count as a keep() of it does (``it.min_lanes``)."""
+    return (
+        isinstance(expression, model.Name)
+        and expression.parts[-1] in ("min_lanes", "max_lanes")
+        and len(expression.parts) <= 2
+    )
+
+
 def _written(bound: tuple, name: str) -> str:
-    """The modifier a lane bound was written with: ``name``, or the one that gave it (number_of_lanes)."""
-    return bound[2] if len(bound) > 2 else name
+    """A lane bound as it was written: ``name(n)``, or the text that gave it (``number_of_lanes(3)``,
+    ``keep(it.min_lanes == 2)``)."""
+    return bound[2] if len(bound) > 2 else f"{name}({bound[0]})"

@@ -428,7 +428,13 @@ class _Builder:
         """An actor or struct declaration, and the constructs in it that the checker must refuse."""
         name = self.name(ctx.identifier())
         body = self.scenario_body(name, None, self.loc(ctx.identifier()), ctx.structMember(), "type")
-        parent = self.name(ctx.inheritance().parent.name) if ctx.inheritance() is not None else None
+        inheritance = ctx.inheritance()
+        parent = self.name(inheritance.parent.name) if inheritance is not None else None
+        condition = (
+            self.expression(inheritance.condition)
+            if inheritance is not None and inheritance.condition is not None
+            else None
+        )
         kind = "actor" if isinstance(ctx, P.ActorDeclarationContext) else "struct"
         refused = (
             body.unsupported
@@ -449,7 +455,7 @@ class _Builder:
             )
         )
         declaration = model.TypeDeclaration(
-            kind, name, parent, body.fields, body.constraints, body.location, body.methods
+            kind, name, parent, body.fields, body.constraints, body.location, body.methods, condition
         )
         return declaration, refused
 
