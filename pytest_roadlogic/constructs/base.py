@@ -230,7 +230,10 @@ class AnchoredModifier(Modifier):
         raise NotImplementedError
 
     def held_throughout(self, binding: Binding) -> bool:
-        return self.anchor(binding) == "all"
+        """Its ranges bound the plan, not chosen as logical parameters: held throughout (``at:
+        all``), or given as the standard's range-typed ``<name>_range`` (an interval the value
+        stays within, at whichever instant)."""
+        return self.anchor(binding) == "all" or bool(binding.ranged)
 
     def asked_within(self, binding: Binding) -> bool:
         """Asked per instant (docs/language.md, "What a vehicle is asked to do"): a lane or a

@@ -141,12 +141,12 @@ class Lateral(AnchoredModifier):
     signature = Signature(
         "lateral",
         (
-            Parameter("distance", "length", positional=True),
+            Parameter("distance", "length", positional=True, ranged=True),
             Parameter("side_of", "actor"),
             Parameter("side", "enum:side"),
             Parameter("left_of", "actor"),
             Parameter("right_of", "actor"),
-            Parameter("measure_by", "enum:lateral_measure_by"),
+            Parameter("measure_by", "enum:lat_measure_by"),
             AT,
         ),
         exclusive=(("side_of", "left_of", "right_of"),),
@@ -189,14 +189,13 @@ class Lateral(AnchoredModifier):
         side = side_named(use, keyword)
         distance = use.interval("distance")
         measure = use.name("measure_by") or "center_to_center"
-        between = [_centre_distance(measure, side, value) for value in (distance.low, distance.high)]
+        # the vehicle's centre off x's, positive to the left (a negative distance: the other side)
+        offsets = sorted(_centre_offset(measure, side, value) for value in (distance.low, distance.high))
         tolerance = LANE_WIDTH / 4  # a car off its lane's centre by up to a quarter lane is in it
-        low = max(0, math.ceil((min(between) - tolerance) / LANE_WIDTH))
-        high = math.floor((max(between) + tolerance) / LANE_WIDTH)
-        if low > high or high >= use.lanes:
-            measured = (
-                "" if measure == "center_to_center" else f", {min(between):g}..{max(between):g} m centre to centre"
-            )
+        left_low = math.ceil((offsets[0] - tolerance) / LANE_WIDTH)  # whole lanes to the left of x's
+        left_high = math.floor((offsets[1] + tolerance) / LANE_WIDTH)
+        if left_low > left_high or max(abs(left_low), abs(left_high)) >= use.lanes:
+            measured = "" if measure == "center_to_center" else f", {offsets[0]:g}..{offsets[1]:g} m centre to centre"
             raise error_at(
                 use.argument("distance").location,
                 f"a lateral distance of {shown_metres(distance)}{measured} is no whole number of lanes "
@@ -204,9 +203,9 @@ class Lateral(AnchoredModifier):
                 "this tool places vehicles in lanes: give a multiple of the lane width, or use lane(k, side_of: x)",
             )
         measured = "" if measure == "center_to_center" else f" ({measure})"
-        return lanes_to_the_side(
-            use, other, side, low, high, f"{use.actor} {shown_metres(distance)}{measured} {side} of {other}"
-        )
+        written = f"{use.actor} {shown_metres(distance)}{measured} {side} of {other}"
+        # internally lane 0 is the leftmost: a lane k to the left of x's is x's minus k
+        return Bound(Term(LANE, use.actor, other), -left_high, -left_low, use.location, written)
 
 
 def _referenced(binding: Binding) -> bool:
@@ -244,15 +243,16 @@ def _sides(measure: str) -> tuple[float, float]:
     return _SIDE_OFFSET[mine] * CAR_WIDTH, _SIDE_OFFSET[theirs] * CAR_WIDTH
 
 
-def _centre_distance(measure: str, side: str, distance: float) -> float:
-    """The distance between centres of a vehicle ``distance`` to ``side`` of another, measured by
-    ``measure``: with the vehicle at lateral offset ``sign * d`` from the other (sign +1 to the
-    left), the measured sides lie ``sign * d + mine - theirs`` apart."""
-    if measure == "closest":
-        return distance + CAR_WIDTH  # the free space between two boxes side by side
+def _centre_offset(measure: str, side: str, distance: float) -> float:
+    """Where the centre of a vehicle ``distance`` to ``side`` of another lies from the other's
+    centre, positive to the left, measured by ``measure``. With its centre at ``o``, the measured
+    sides lie ``o + mine - theirs`` apart, ``distance`` on ``side`` (sign +1 left, -1 right); a
+    negative distance is the other side, as the standard reads it."""
     sign = 1 if side == "left" else -1
+    if measure == "closest":
+        return sign * (distance + CAR_WIDTH)  # the free space between two boxes side by side
     mine, theirs = _sides(measure)
-    return distance - sign * (mine - theirs)
+    return sign * distance - (mine - theirs)
 
 
 def _offset_in_lane(measure: str, distance: float) -> float:
@@ -410,7 +410,11 @@ class ChangeLaneModifier(_LaneChange, Modifier):
     asks = ASKS_LANE
     signature = Signature(
         "change_lane",
-        (Parameter("num_of_lanes", "uint", positional=True), Parameter("side", "enum:side", positional=True)),
+        (
+            # the standard's 2.2 names it lane (change_lane(lane: 2, side: left)), 2.0 num_of_lanes
+            Parameter("num_of_lanes", "uint", positional=True, aliases=("lane",)),
+            Parameter("side", "enum:side", positional=True),
+        ),
         description="change lanes during the phase",
     )
 

@@ -74,7 +74,13 @@ class Along(Modifier):
 
     signature = Signature(
         "along",
-        (Parameter("route", "road", positional=True),),
+        (
+            Parameter("route", "road", positional=True),
+            # where on the route the motion starts and ends: not read (vehicles are placed by
+            # the scenario's own position() and lane() constraints)
+            Parameter("start_offset", "length", supported=False),
+            Parameter("end_offset", "length", supported=False),
+        ),
         required=(("route",),),
         description="follow the road (there is one)",
     )

@@ -15,7 +15,7 @@ from .base import ASKS_SPEED, AnchoredModifier, Use
 
 class Position(AnchoredModifier):
     """``position(d, behind: x)``: x is ahead by d; ``position(d, ahead_of: x)``: this actor is.
-    A single distance is read as d +- the tolerance (never below 0); a range may span 0 (beside x). ``position(time: t, behind:
+    A single distance is read as d +- the tolerance (not across 0); a negative one is the other side. ``position(time: t, behind:
     x)``: a time headway, the gap over the speed of the actor behind (this one; x with
     ``ahead_of``): it reaches where x is now in t seconds; a single t is read as t +- 0.2 s."""
 
@@ -23,8 +23,8 @@ class Position(AnchoredModifier):
     signature = Signature(
         "position",
         (
-            Parameter("distance", "length", positional=True),
-            Parameter("time", "time"),
+            Parameter("distance", "length", positional=True, ranged=True),
+            Parameter("time", "time", ranged=True),
             Parameter("ahead_of", "actor"),
             Parameter("behind", "actor"),
             AT,
@@ -72,15 +72,20 @@ GAPS = {
 
 def gap_bound(use: Use, argument: str, gap: Gap, ahead: str, behind: str, hint: str, what: str | None = None) -> Bound:
     """``ahead`` is ahead of ``behind`` by the value of ``argument`` (+- the gap's tolerance for a
-    single value, never below 0). A range of distances that spans 0 (``position([-1m..1m],
-    ahead_of: x)``, the standard's "beside x") holds as written, either one ahead; a value wholly
-    below 0, and a negative time headway, are errors at their place, with ``hint``."""
+    single value, not across 0). A negative distance is the other side, as the standard reads it:
+    ``position(-5m, ahead_of: x)`` is 5 m behind x, and ``position([-1m..1m], ahead_of: x)``
+    beside it. A negative time headway is an error at its place, with ``hint``: a headway is the
+    time the one behind needs to reach the other."""
     low, high = use.range(argument, gap.dimension, gap.example)
-    if low < 0 and (high < 0 or gap.quantity != POSITION):
+    if low < 0 and gap.quantity != POSITION:
         raise error_at(use.argument(argument).location, f"{what or gap.what} must not be negative", hint=hint)
-    floor = low if low < 0 else 0.0
-    low, high = widened(low, high, gap.tolerance)
-    return Bound(Term(gap.quantity, ahead, behind), max(floor, low), high, use.location)
+    widened_low, widened_high = widened(low, high, gap.tolerance)
+    # a single value is widened by the tolerance on its own side of 0 only
+    if low >= 0:
+        widened_low = max(0.0, widened_low)
+    elif high <= 0:
+        widened_high = min(0.0, widened_high)
+    return Bound(Term(gap.quantity, ahead, behind), widened_low, widened_high, use.location)
 
 
 CONSTRUCTS = (Position(),)

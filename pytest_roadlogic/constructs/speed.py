@@ -53,7 +53,7 @@ class Speed(AnchoredModifier):
     asks = ASKS_SPEED
     signature = Signature(
         "speed",
-        (Parameter("speed", "speed", positional=True), *(Parameter(r, "actor") for r in RELATIONS), AT),
+        (Parameter("speed", "speed", positional=True, ranged=True), *(Parameter(r, "actor") for r in RELATIONS), AT),
         exclusive=(RELATIONS,),
         required=(("speed", "same_as"),),
         description="absolute speed, or relative to another actor's",
@@ -239,7 +239,7 @@ class Acceleration(Modifier):
     asks = ASKS_SPEED
     signature = Signature(
         "acceleration",
-        (Parameter("acceleration", "acceleration", positional=True), AT),
+        (Parameter("acceleration", "acceleration", positional=True, ranged=True), AT),
         required=(("acceleration",),),
         description="the mean acceleration over the phase",
     )

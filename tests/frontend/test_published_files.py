@@ -335,7 +335,7 @@ def test_another_condition_on_inheritance_is_refused_at_the_condition():
     assert _lines(check_text(text, "t.osc"))[:1] == ["t.osc:1:29: not supported: conditional inheritance"]
 
 
-def test_a_distance_range_spanning_zero_puts_the_vehicle_beside_the_other_and_one_wholly_negative_is_refused():
+def test_a_negative_distance_is_the_other_side_and_a_range_spanning_zero_puts_the_vehicle_beside_the_other():
     def position(distance: str):
         text = (
             "scenario s:\n    a: car\n    b: car\n    do parallel(duration: 3s):\n        b.drive()\n"
@@ -349,8 +349,9 @@ def test_a_distance_range_spanning_zero_puts_the_vehicle_beside_the_other_and_on
     assert not beside.errors, beside.report()
     guards = " and ".join(str(t.guard) for t in build_automaton(beside.scenarios[0]).transitions)
     assert "-1 <= p(a) - p(b) <= 1" in guards
-    with pytest.raises(Exception, match="a distance must not be negative"):
-        build_automaton(position("[-3m..-1m]").scenarios[0])
+    # a negative distance is the other side, as the standard reads it
+    behind = " and ".join(str(t.guard) for t in build_automaton(position("-5m").scenarios[0]).transitions)
+    assert "-6 <= p(a) - p(b) <= -4" in behind
 
 
 def test_a_parameter_bounded_on_one_side_only_says_which_bound_is_missing():
@@ -374,3 +375,46 @@ def test_the_standards_common_movement_modifier_parameters_are_read_and_projecte
     assert [w.message.split(":")[0] for w in projected.warnings] == ["track"]
     assert [e.message for e in checked("shape: s").errors] == ["not supported: argument 'shape' of position()"]
     assert checked("movement_mode: wobbly").errors
+
+
+@pytest.mark.parametrize(
+    "modifier, parameters",
+    [
+        ("position(distance_range: [10m..20m], behind: a, at: start)", []),
+        ("position(distance: [10m..20m], behind: a, at: start)", ["b.drive.position.distance"]),
+        ("position(time_range: [1s..2s], behind: a, at: end)", []),
+        ("speed(speed_range: [10kph..20kph], at: end)", []),
+        ("lateral(distance_range: [3m..4m], side_of: a)", []),
+    ],
+)
+def test_a_range_typed_argument_of_the_standard_2_2_is_an_interval_the_plan_keeps_never_a_value_sampled(
+    modifier, parameters
+):
+    text = (
+        "scenario s:\n    a: car\n    b: car\n    do parallel(duration: 3s):\n        a.drive()\n"
+        f"        b.drive() with:\n            {modifier}\n"
+    )
+    checked = check_text(text, "t.osc")
+    assert not checked.errors, checked.report()
+    assert [p.name for p in checked.scenarios[0].parameters] == parameters
+
+
+def test_a_value_and_its_range_typed_counterpart_together_are_refused():
+    text = (
+        "scenario s:\n    a: car\n    do a.drive(duration: 3s) with:\n"
+        "        speed(speed: 10kph, speed_range: [1kph..2kph])\n"
+    )
+    assert _lines(check_text(text, "t.osc")) == ["t.osc:4:29: speed() takes one of speed and speed_range"]
+
+
+def test_change_lane_takes_its_count_as_lane_as_the_standard_2_2_names_it():
+    from pytest_roadlogic.automaton import build_automaton
+
+    def ends(arguments: str):
+        text = f"scenario s:\n    a: car\n    do a.drive(duration: 6s) with:\n        change_lane({arguments})\n"
+        checked = check_text(text, "t.osc")
+        assert not checked.errors, checked.report()
+        automaton = build_automaton(checked.scenarios[0])
+        return sorted(str(t.guard) for t in automaton.transitions if t.target == automaton.final)
+
+    assert ends("lane: 2, side: left") == ends("num_of_lanes: 2, side: left") == ends("2, left")

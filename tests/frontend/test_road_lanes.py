@@ -262,3 +262,10 @@ def test_the_maps_inner_side_is_the_left_and_its_outer_side_the_right_in_right_h
         assert not checked.errors, checked.report()
         guard = next(t.guard for t in build_automaton(checked.scenarios[0]).transitions if "l(a" in str(t.guard))
         assert f"l(a) - l(b) = {expected - 1}" in str(guard)
+
+
+def test_a_road_driven_along_and_named_by_no_map_modifier_is_the_scenarios_road():
+    text = side_by_side("along(my_road)", head=PAIR + "    my_road: road\n")
+    checked = check_text(text, "t.osc")
+    assert not checked.errors, checked.report()
+    assert checked.scenarios[0].lanes == 3

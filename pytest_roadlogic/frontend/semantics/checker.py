@@ -504,6 +504,8 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks, EnvironmentAc
                 parameters.append(item)
             elif kind == "road":
                 roads.append(item.name)
+            elif kind == "map_element" and item.type == "road" and _only_driven_along(scenario, item.name):
+                roads.append(item.name)  # `my_road: road` driven along(my_road): the scenario's road
             elif kind == "map_element":
                 self.map_elements[item.name] = item.type
             elif kind == "environment":
@@ -811,6 +813,17 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks, EnvironmentAc
                 argument.location, f"unknown argument {argument.name!r} of {what}", f"usage: {signature.usage()}"
             )
         for argument, parameter in binding.repeated:
+            if (
+                parameter.ranged
+                and argument.name in (f"{parameter.name}_range", parameter.name)
+                and (parameter.name in binding.ranged or argument.name.endswith("_range"))
+            ):
+                self.error(
+                    argument.location,
+                    f"{what} takes one of {parameter.name} and {parameter.name}_range",
+                    f"{parameter.name}: a value (a range: one value within it), {parameter.name}_range: an interval the value stays within",
+                )
+                continue
             self.error(argument.location, f"{what} is given {parameter.name!r} twice")
         given: dict[str, model.Argument] = {}
         for name, argument in binding.arguments.items():
@@ -1059,3 +1072,24 @@ def _unit_of(type_name: str) -> str:
     dimension = library.PHYSICAL_TYPES.get(type_name)
     unit = {"length": "m", "time": "s", "speed": "m/s", "acceleration": "m/s^2"}.get(dimension)
     return f" {unit}" if unit else ""
+
+
+def _only_driven_along(scenario: model.Scenario, name: str) -> bool:
+    """Whether the field ``name`` is driven ``along(name)`` and named by no map modifier of the
+    scenario: the standard's "move along a road" (``my_road: road``, ``along(my_road)``) is the
+    road the scenario runs on, not a road of a junction for the map's relations to pick."""
+    named_by_map = any(
+        isinstance(argument.value, model.Name) and argument.value.name == name
+        for modifier in scenario.modifiers
+        for argument in modifier.arguments
+    )
+    driven = any(
+        isinstance(argument.value, model.Name) and argument.value.name == name
+        for behavior in scenario.behaviors
+        for node in model.walk(behavior)
+        if isinstance(node, model.Invocation)
+        for modifier in node.modifiers
+        if modifier.name == "along"
+        for argument in modifier.arguments
+    )
+    return driven and not named_by_map

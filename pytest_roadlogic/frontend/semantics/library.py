@@ -85,6 +85,11 @@ class Parameter:
     kind: str
     positional: bool = False
     supported: bool = True
+    # also given as ``<name>_range`` (the standard's 2.2 range-typed counterpart: an interval the
+    # value stays within, never a value chosen once)
+    ranged: bool = False
+    # other names it is given by (the standard's 2.2 change_lane(lane: n) for num_of_lanes)
+    aliases: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -99,8 +104,12 @@ class Signature:
     description: str = ""
 
     def parameter(self, name: str) -> Parameter | None:
+        """The parameter called ``name``, or given by it as an alias."""
         for parameter in self.parameters:
             if parameter.name == name:
+                return parameter
+        for parameter in self.parameters:
+            if name in parameter.aliases:
                 return parameter
         return None
 
@@ -121,6 +130,7 @@ class Binding:
     unknown: list[model.Argument] = field(default_factory=list)  # named, but no such parameter
     surplus: list[model.Argument] = field(default_factory=list)  # positional, beyond the signature's
     repeated: list[tuple[model.Argument, Parameter]] = field(default_factory=list)  # a parameter given again
+    ranged: set[str] = field(default_factory=set)  # parameters given by their ``_range`` name
 
     def __getitem__(self, name: str) -> model.Argument | None:
         return self.arguments.get(name)
@@ -138,6 +148,12 @@ def bind(signature: Signature, arguments: tuple[model.Argument, ...]) -> Binding
             parameter = positional.pop(0)
         else:
             parameter = signature.parameter(argument.name)
+            if parameter is None and argument.name.endswith("_range"):
+                counterpart = signature.parameter(argument.name.removesuffix("_range"))
+                if counterpart is not None and counterpart.ranged:
+                    parameter = counterpart
+                    if parameter.name not in binding.arguments:
+                        binding.ranged.add(parameter.name)
             if parameter is None:
                 binding.unknown.append(argument)
                 continue
