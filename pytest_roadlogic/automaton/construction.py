@@ -5,8 +5,10 @@
   f_A is fused with every transition out of i_B into one transition guarded by both (the end of A
   and the start of B happen at the same split point, as the semantics demands).
 - parallel A || B: the product, built only over reachable locations. All components leave their
-  initial locations together and reach their final locations together (``parallel`` without
-  ``overlap:`` starts and ends its members together); in between they move alone or jointly.
+  initial locations together; a component that ends of itself (a duration, an until, a wait) may
+  reach its final location before the others and stays there (the standard's default ``overlap:
+  start``), the others reach theirs with the last of those, or when the parallel's own duration is
+  over (all together with ``overlap: equal``); in between they move alone or jointly.
 - one_of A | B: the union, with a fresh initial and final location.
 - events: ``emit e`` is no phase but a mark on the instant between its serial neighbours;
   ``wait @e`` and ``until @e`` end their phase on an edge that *awaits* e. The product of a
@@ -88,6 +90,8 @@ class _Fragment:
     listening: dict[Key, frozenset[str]] = field(default_factory=dict)
     # (actor, "lane" | "speed"): what the actors' own constructs ask of them here (Location.asks)
     asks: dict[Key, frozenset[tuple[str, Ask]]] = field(default_factory=dict)
+    # it ends of itself (a duration, an until, a wait): in a parallel it may end before the others
+    ends_itself: bool = False
 
     def outgoing(self, key: Key) -> list[_Edge]:
         return [e for e in self.edges if e.source == key]
@@ -166,6 +170,8 @@ class _Builder:
             fragment = self.timed(fragment, name, low, high, duration.location, rates)
         elif rates:  # timed for its start and end only
             fragment = self.timed(fragment, name, 0.0, math.inf, None, rates)
+        if duration is not None or (isinstance(behavior, model.Invocation) and behavior.until is not None):
+            fragment.ends_itself = True
         return fragment
 
     def composition(self, behavior: model.Composition) -> _Fragment:
@@ -176,12 +182,18 @@ class _Builder:
             return self.serial(behavior)
         if behavior.operator == "parallel":
             return self.parallel(behavior)
-        return _one_of([self.translate(child) for child in behavior.children], next(self.counter))
+        children = [self.translate(child) for child in behavior.children]
+        fragment = _one_of(children, next(self.counter))
+        fragment.ends_itself = all(child.ends_itself for child in children)
+        return fragment
 
     def parallel(self, behavior: model.Composition) -> _Fragment:
-        """Members that start together and end together; an ``emit`` among them is emitted at
-        their start, the one instant it shares with every member (the standard allows emit in any
-        composition)."""
+        """Members that start together. With ``overlap: start`` (the standard's default, and what
+        CARLA's runner does) each member that ends of itself (a duration, an until, a wait) ends
+        when it ends, and the others end with the last one: a member with nothing to end it lasts
+        as long as the parallel, as its author means it. With ``overlap: equal`` all end together.
+        An ``emit`` among them is emitted at their start, the one instant it shares with every
+        member (the standard allows emit in any composition)."""
         events = [child.event for child in behavior.children if isinstance(child, model.Emit)]
         children = [self.translate(child) for child in behavior.children if not isinstance(child, model.Emit)]
         if not children:
@@ -190,7 +202,13 @@ class _Builder:
                 "a parallel of only emit has no instant to emit at",
                 hint="emit beside a phase, or between two phases of a serial",
             )
-        fragment = _parallel(children, behavior.location) if len(children) > 1 else children[0]
+        overlap = behavior.argument("overlap")
+        together = overlap is not None and isinstance(overlap.value, model.Name) and overlap.value.name == "equal"
+        # a parallel with a duration of its own ends when that is over: a member with nothing to
+        # end it lasts until then, even after those that end of themselves
+        timed = behavior.argument("duration") is not None
+        fragment = _parallel(children, behavior.location, together, timed) if len(children) > 1 else children[0]
+        fragment.ends_itself = all(child.ends_itself for child in children)
         if events:
             _emit(fragment.outgoing(fragment.initial), events)
         return fragment
@@ -204,6 +222,7 @@ class _Builder:
                 pending.append(child.event)
                 continue
             fragment = self.translate(child)
+            last_ends_itself = fragment.ends_itself
             if pending and result is None:
                 _emit(fragment.outgoing(fragment.initial), pending)
             elif pending:
@@ -217,6 +236,7 @@ class _Builder:
                 hint="emit between two phases, or after one",
             )
         _emit([e for e in result.edges if e.target == result.final], pending)
+        result.ends_itself = last_ends_itself
         return result
 
     def wait(self, wait: model.Wait) -> _Fragment:
@@ -225,6 +245,7 @@ class _Builder:
         fragment = _phase(
             next(self.counter), name, wait.label is not None, Variant(), frozenset(), frozenset(), frozenset()
         )
+        fragment.ends_itself = True
         return self.end_on(fragment, wait.condition, name, wait.location)
 
     def end_on(
@@ -410,7 +431,12 @@ def _check_size(transitions: int, location, composition: str) -> None:
         )
 
 
-def _parallel(children: list[_Fragment], location=None) -> _Fragment:
+def _parallel(children: list[_Fragment], location=None, together: bool = False, timed: bool = False) -> _Fragment:
+    """The product of a parallel's members. They start together; a member that ends of itself
+    (``_Fragment.ends_itself``) may end before the others and then stays at its end, unless
+    ``together`` (``overlap: equal``); every other member ends with the last of those (with the
+    last of all when none ends of itself), or, ``timed`` (the parallel's own duration), when the
+    parallel ends."""
     initial = tuple(c.initial for c in children)
     final = tuple(c.final for c in children)
     edges: list[_Edge] = []
@@ -418,22 +444,33 @@ def _parallel(children: list[_Fragment], location=None) -> _Fragment:
     frontier = [initial]
     while frontier:
         current = frontier.pop()
-        # members of a parallel end together: each member's moves split into those that leave it
-        # final and those that do not, and only all-final or none-final combinations are made
-        # (never the product of all moves, 2^n for n members, filtered afterwards)
+        # each member's moves split into those that leave it final and those that do not: the
+        # combinations made are the all-final ones, and those in which only members that end of
+        # themselves become final (never the product of all moves, 2^n for n members, filtered)
         ending: list[list[_Edge | None]] = []
         going_on: list[list[_Edge | None]] = []
         for child, key in zip(children, current):
             moves: list[_Edge | None] = list(child.outgoing(key))
             if current != initial:
                 moves.append(None)  # this component stays
-            ending.append([m for m in moves if (m.target if m is not None else key) == child.final])
-            going_on.append([m for m in moves if (m.target if m is not None else key) != child.final])
+            ends = [m for m in moves if (m.target if m is not None else key) == child.final]
+            ending.append(ends)
+            early = child.ends_itself and not together and key != child.final
+            going_on.append(
+                [m for m in moves if (m.target if m is not None else key) != child.final or (early and m in ends)]
+            )
         for options in (going_on, ending):
             _check_size(
                 math.prod(len(o) for o in options) - 1, location, "parallel"
             )  # an upper bound of the edges it makes, before making them
-        for combination in itertools.chain(itertools.product(*going_on), itertools.product(*ending)):
+        # a member with nothing to end it lasts as long as the parallel: it ends with the last
+        # member that ends of itself, so no combination leaves only such members going on
+        mixed = (
+            c
+            for c in itertools.product(*going_on)
+            if not _all_final(c, current, children) and (timed or _one_ending_itself_goes_on(c, current, children))
+        )
+        for combination in itertools.chain(mixed, itertools.product(*ending)):
             if all(m is None for m in combination):
                 continue
             target = tuple(m.target if m is not None else key for m, key in zip(combination, current))
@@ -469,6 +506,18 @@ def _parallel(children: list[_Fragment], location=None) -> _Fragment:
         if waiting:
             listening[key] = waiting
     return _Fragment(initial, final, edges, names, drivers, invariants, listening, asks)
+
+
+def _all_final(combination, current, children) -> bool:
+    """Whether ``combination`` (a move or None per member) leaves every member at its end."""
+    return all((m.target if m is not None else key) == c.final for m, key, c in zip(combination, current, children))
+
+
+def _one_ending_itself_goes_on(combination, current, children) -> bool:
+    """Whether, after ``combination``, a member that ends of itself is still going on (or none
+    of the members ends of itself, and all go on together)."""
+    selfending = [(m, key, c) for m, key, c in zip(combination, current, children) if c.ends_itself]
+    return not selfending or any((m.target if m is not None else key) != c.final for m, key, c in selfending)
 
 
 def _one_of(children: list[_Fragment], uid: int) -> _Fragment:

@@ -252,3 +252,38 @@ def test_durations_and_waits_become_timed_phases():
     serial = next(p for p, t in a.timings.items() if t.name == "serial")
     assert [t.id for t in a.transitions if serial in t.starts] == [a.outgoing(a.initial)[0].id]
     assert all(serial in t.ends for t in a.transitions if t.target == a.final)
+
+
+def _phase_ends(text: str) -> list[tuple[str, ...]]:
+    """The phases each transition of the scenario's automaton ends, in the order they can happen."""
+    automaton = build_automaton(check_text(text).scenarios[0])
+    return sorted({tuple(sorted(e for e in t.events if e.endswith(" end"))) for t in automaton.transitions} - {()})
+
+
+def test_a_parallels_members_start_together_and_one_with_its_own_duration_ends_when_it_ends():
+    text = "scenario s:\n  a: car\n  b: car\n  do parallel:\n    a.drive(duration: 3s)\n    b.drive(duration: 5s)\n"
+    # the standard's default overlap (start), as CARLA's runner executes it: either may end first
+    assert _phase_ends(text) == [("a.drive end",), ("a.drive end", "b.drive end"), ("b.drive end",)]
+
+
+def test_with_overlap_equal_a_parallels_members_end_together():
+    text = "scenario s:\n  a: car\n  b: car\n  do parallel(overlap: equal):\n    a.drive(duration: 3s)\n    b.drive(duration: 5s)\n"
+    assert _phase_ends(text) == [("a.drive end", "b.drive end")]
+
+
+def test_a_member_with_nothing_to_end_it_lasts_as_long_as_the_members_that_end_of_themselves():
+    text = "scenario s:\n  a: car\n  b: car\n  do parallel:\n    a.drive(duration: 3s)\n    b.drive()\n"
+    # b's drive never goes on alone after a's has ended: it ends with it
+    assert _phase_ends(text) == [("a.drive end", "b.drive end")]
+    alone = "scenario s:\n  a: car\n  b: car\n  do parallel:\n    a.drive()\n    b.drive()\n"
+    assert _phase_ends(alone) == [("a.drive end", "b.drive end")]
+
+
+def test_in_a_parallel_with_its_own_duration_a_member_with_nothing_to_end_it_lasts_until_that_is_over():
+    text = "scenario s:\n  a: car\n  b: car\n  do parallel(duration: 6s):\n    a.drive(duration: 3s)\n    b.drive()\n"
+    assert ("a.drive end",) in _phase_ends(text)  # b drives on after a's 3 s
+    plan = "scenario s:\n  a: car\n  b: car\n  do parallel(duration: 6s):\n    a.drive(duration: 3s)\n    b.drive()\n"
+    from pytest_roadlogic.planning import ContinuousPlanner
+
+    first = next(ContinuousPlanner(build_automaton(check_text(plan).scenarios[0])).plans(limit=1))
+    assert first.horizon == 6
