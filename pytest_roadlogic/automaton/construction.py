@@ -191,7 +191,8 @@ class _Builder:
         """Members that start together. With ``overlap: start`` (the standard's default, and what
         CARLA's runner does) each member that ends of itself (a duration, an until, a wait) ends
         when it ends, and the others end with the last one: a member with nothing to end it lasts
-        as long as the parallel, as its author means it. With ``overlap: equal`` all end together.
+        as long as the parallel, as its author means it. With ``overlap: equal`` all end together;
+        with ``overlap: end`` all end together and a member that ends of itself may start late.
         An ``emit`` among them is emitted at their start, the one instant it shares with every
         member (the standard allows emit in any composition)."""
         events = [child.event for child in behavior.children if isinstance(child, model.Emit)]
@@ -203,11 +204,15 @@ class _Builder:
                 hint="emit beside a phase, or between two phases of a serial",
             )
         overlap = behavior.argument("overlap")
-        together = overlap is not None and isinstance(overlap.value, model.Name) and overlap.value.name == "equal"
+        kind = overlap.value.name if overlap is not None and isinstance(overlap.value, model.Name) else "start"
         # a parallel with a duration of its own ends when that is over: a member with nothing to
         # end it lasts until then, even after those that end of themselves
         timed = behavior.argument("duration") is not None
-        fragment = _parallel(children, behavior.location, together, timed) if len(children) > 1 else children[0]
+        fragment = (
+            _parallel(children, behavior.location, kind in ("equal", "end"), timed, late=kind == "end")
+            if len(children) > 1
+            else children[0]
+        )
         fragment.ends_itself = all(child.ends_itself for child in children)
         if events:
             _emit(fragment.outgoing(fragment.initial), events)
@@ -431,12 +436,15 @@ def _check_size(transitions: int, location, composition: str) -> None:
         )
 
 
-def _parallel(children: list[_Fragment], location=None, together: bool = False, timed: bool = False) -> _Fragment:
+def _parallel(
+    children: list[_Fragment], location=None, together: bool = False, timed: bool = False, late: bool = False
+) -> _Fragment:
     """The product of a parallel's members. They start together; a member that ends of itself
     (``_Fragment.ends_itself``) may end before the others and then stays at its end, unless
-    ``together`` (``overlap: equal``); every other member ends with the last of those (with the
-    last of all when none ends of itself), or, ``timed`` (the parallel's own duration), when the
-    parallel ends."""
+    ``together`` (``overlap: equal`` and ``end``); every other member ends with the last of those
+    (with the last of all when none ends of itself), or, ``timed`` (the parallel's own duration),
+    when the parallel ends. With ``late`` (``overlap: end``) a member that ends of itself may
+    also start after the others, staying at its start until then."""
     initial = tuple(c.initial for c in children)
     final = tuple(c.final for c in children)
     edges: list[_Edge] = []
@@ -451,8 +459,8 @@ def _parallel(children: list[_Fragment], location=None, together: bool = False, 
         going_on: list[list[_Edge | None]] = []
         for child, key in zip(children, current):
             moves: list[_Edge | None] = list(child.outgoing(key))
-            if current != initial:
-                moves.append(None)  # this component stays
+            if current != initial or (late and child.ends_itself):
+                moves.append(None)  # this component stays (or, late, has not started yet)
             ends = [m for m in moves if (m.target if m is not None else key) == child.final]
             ending.append(ends)
             early = child.ends_itself and not together and key != child.final

@@ -76,9 +76,9 @@ def check_behavior_arguments(composition: model.Composition) -> None:
         if (
             argument.name == "overlap"
             and isinstance(argument.value, model.Name)
-            and argument.value.name in ("start", "equal")
+            and argument.value.name in ("start", "equal", "end")
         ):
-            continue  # members start (and here also end) together: what the product builds
+            continue  # members start together, end together, or both: what the product builds
         if argument.name == "duration":
             continue  # a timed phase, handled by the construction
         raise error_at(

@@ -37,7 +37,8 @@ def refuse_negative_speed(binding: Binding, argument: str, context: CheckContext
     speed(-20kph) as 0 kph and only ``run`` say "no plan"."""
     given = binding[argument]
     value = context.evaluate(given) if given is not None else None
-    if value is not None and value.low < 0:
+    # an unbounded parameter (-inf) is reported as such where it is declared
+    if value is not None and value.low < 0 and math.isfinite(value.low):
         hint = (
             "a relative speed is by how much: swap faster_than and slower_than"
             if relative

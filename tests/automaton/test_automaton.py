@@ -66,14 +66,16 @@ def test_lane_without_arguments_is_lane_1_as_the_standards_default():
     assert (start.low, start.high) == (end.low, end.high) == (2, 2)
 
 
-def test_a_lateral_distance_is_the_whole_lanes_it_spans_to_that_side_and_another_is_a_located_error():
-    def lateral(arguments: str):
-        text = f"scenario s:\n  a: car\n  b: car\n  do a.drive() with:\n    lateral({arguments}, at: start)\n"
-        checked = check_text(text, "d.osc")
-        assert not checked.errors, checked.report()
-        start, _ = [t.guard for t in build_automaton(checked.scenarios[0]).transitions]
-        return start.term.reference, start.low, start.high
+def lateral(arguments: str):
+    """(reference, low, high) of the lane bound that ``lateral(arguments, at: start)`` of a beside b makes."""
+    text = f"scenario s:\n  a: car\n  b: car\n  do a.drive() with:\n    lateral({arguments}, at: start)\n"
+    checked = check_text(text, "d.osc")
+    assert not checked.errors, checked.report()
+    start, _ = [t.guard for t in build_automaton(checked.scenarios[0]).transitions]
+    return start.term.reference, start.low, start.high
 
+
+def test_a_lateral_distance_is_the_whole_lanes_it_spans_to_that_side_and_another_is_a_located_error():
     # internally lane 0 is the leftmost: a lane to the left of b's has the smaller number
     assert lateral("3.5m, side_of: b, side: right") == ("b", 1, 1)
     assert lateral("3.5m, side_of: b") == ("b", -1, -1)  # side: left, as for lane(side_of: b)
@@ -88,13 +90,6 @@ def test_a_lateral_distance_is_the_whole_lanes_it_spans_to_that_side_and_another
 
 
 def test_a_lateral_distance_measured_between_sides_is_read_between_centres_of_two_cars_1_8_m_wide():
-    def lateral(arguments: str):
-        text = f"scenario s:\n  a: car\n  b: car\n  do a.drive() with:\n    lateral({arguments}, at: start)\n"
-        checked = check_text(text, "d.osc")
-        assert not checked.errors, checked.report()
-        start, _ = [t.guard for t in build_automaton(checked.scenarios[0]).transitions]
-        return start.term.reference, start.low, start.high
-
     # 1.7 m between a's right side and b's left side: centres 3.5 m apart, the next lane left
     assert lateral("1.7m, side_of: b, side: left, measure_by: right_to_left") == ("b", -1, -1)
     # the free space between the two boxes, to the right: the same
@@ -287,3 +282,11 @@ def test_in_a_parallel_with_its_own_duration_a_member_with_nothing_to_end_it_las
 
     first = next(ContinuousPlanner(build_automaton(check_text(plan).scenarios[0])).plans(limit=1))
     assert first.horizon == 6
+
+
+def test_with_overlap_end_a_parallels_members_end_together_and_one_with_its_own_duration_may_start_late():
+    text = "scenario s:\n  a: car\n  b: car\n  do parallel(overlap: end):\n    a.drive(duration: 3s)\n    b.drive(duration: 5s)\n"
+    assert _phase_ends(text) == [("a.drive end", "b.drive end")]
+    automaton = build_automaton(check_text(text).scenarios[0])
+    starts = {tuple(sorted(e for e in t.events if e.endswith(" start"))) for t in automaton.transitions}
+    assert {("a.drive start",), ("b.drive start",), ("a.drive start", "b.drive start")} <= starts

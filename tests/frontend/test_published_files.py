@@ -418,3 +418,29 @@ def test_change_lane_takes_its_count_as_lane_as_the_standard_2_2_names_it():
         return sorted(str(t.guard) for t in automaton.transitions if t.target == automaton.final)
 
     assert ends("lane: 2, side: left") == ends("num_of_lanes: 2, side: left") == ends("2, left")
+
+
+def test_a_scenario_of_a_vehicle_drives_that_vehicle_where_an_invocation_names_no_actor():
+    # the standard's semantics chapter: scenario vehicle.two_phases, its phases drive() of "the
+    # parent actor of this scenario"
+    text = (
+        "scenario vehicle.two_phases:\n    do serial(duration: [10s..30s]):\n"
+        "        phase1: drive() with:\n            speed(speed: 0kph, at: start)\n"
+        "            speed(speed: 10kph, at: end)\n"
+        "        phase2: drive() with:\n            speed(speed: [10kph..15kph])\n"
+    )
+    checked = check_text(text, "t.osc")
+    assert not checked.errors, checked.report()
+    assert [(a.name, a.base) for a in checked.scenarios[0].scenario.actors] == [("vehicle", "vehicle")]
+
+
+def test_a_behavior_may_be_named_after_a_composition_keyword_as_the_standards_example_names_one_of():
+    text = "scenario vehicle.one_of:\n    do drive(duration: 3s)\n"
+    checked = check_text(text, "t.osc")
+    assert not checked.errors, checked.report()
+    assert checked.scenarios[0].scenario.name == "one_of"
+
+
+def test_a_parameter_without_a_range_is_one_error_not_also_a_negative_speed():
+    text = "scenario vehicle.accelerate:\n    v: speed\n    do drive(duration: [2s..4s]) with:\n        speed(speed: v, at: end)\n"
+    assert _lines(check_text(text, "t.osc")) == ["t.osc:2:5: parameter 'v' has no range or value"]

@@ -37,6 +37,7 @@ from .invocation import (
     RECURSION,
     called_scenarios,
     expand_calls,
+    owned_by,
     resolve_actor_aliases,
     substitute_calls,
     substitute_names,
@@ -299,6 +300,7 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks, EnvironmentAc
             scenario = resolve_actor_aliases(scenario, is_actor)
             scenario = self._string_constants(scenario, globals_)
             scenario = _map_sides(scenario)
+            scenario = self._owner_drives(scenario)
             checked, space, lanes = self._scenario(scenario, globals_)
             try:
                 parameters = logical_parameters_of(checked, space, self.registry) + way_parameters(
@@ -327,6 +329,22 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks, EnvironmentAc
         )
         checked_file = replace(main, scenarios=tuple(c.scenario for c in scenarios))
         return CheckedFile(checked_file, self.diagnostics, self.sources, tuple(scenarios))
+
+    def _owner_drives(self, scenario: model.Scenario) -> model.Scenario:
+        """A scenario that belongs to a road user (``scenario vehicle.two_phases:``, the standard's
+        examples) run as the main scenario: its invocations that name no actor are that vehicle's,
+        an actor named after its type (``vehicle``) that ``_scenario`` adds."""
+        owner = scenario.actor_type
+        if (
+            owner is None
+            or owner in library.SCENARIO_OWNERS
+            or self._actor_base(owner) is None
+            or any(item.name == owner for item in scenario.fields)
+        ):
+            return scenario
+        return replace(
+            scenario, behavior=owned_by(scenario.behavior, owner), behaviors=owned_by(scenario.behaviors, owner)
+        )
 
     def _string_constants(self, scenario: model.Scenario, globals_: tuple[model.Field, ...]) -> model.Scenario:
         """The scenario with each string parameter that is a constant (a value, no constraint)
@@ -515,6 +533,12 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks, EnvironmentAc
         self.turn_labels = {
             m.label for m in scenario.modifiers if m.label is not None and m.name == "roads_follow_in_junction"
         }
+        owner = scenario.actor_type
+        if owner not in declared and owner not in library.SCENARIO_OWNERS and _mentions(scenario, owner or ""):
+            base = self._actor_base(owner)
+            if base is not None:  # the vehicle the scenario belongs to, which drives its actor-less invocations
+                actors.append(model.Actor(owner, owner, scenario.location, base))
+                declared[owner] = scenario.location
         for implicit in library.IMPLICIT_VEHICLES:
             if implicit not in declared and _mentions(scenario, implicit):
                 actors.append(model.Actor(implicit, "vehicle", scenario.location, "vehicle"))
@@ -643,12 +667,12 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks, EnvironmentAc
             if (
                 overlap is not None
                 and isinstance(overlap.value, model.Name)
-                and overlap.value.name not in ("start", "equal")
+                and overlap.value.name not in ("start", "equal", "end")
             ):
                 self.error(
                     overlap.location,
                     f"not supported: overlap: {overlap.value.name}",
-                    "parallel supports overlap: start (the default) and equal",
+                    "parallel supports overlap: start (the default), equal and end",
                 )
             return
         if isinstance(node, model.Invocation):

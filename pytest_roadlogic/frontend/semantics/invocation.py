@@ -231,6 +231,12 @@ def _substitute(node, substitution: Mapping[str, model.Expression], owner: str |
     return dataclasses.replace(node, **changes) if changes else node
 
 
+def owned_by(node, owner: str):
+    """``node`` with every invocation that names no actor given to ``owner`` (a scenario's
+    behaviors, invoked on the actor the scenario belongs to)."""
+    return _substitute(node, {}, owner)
+
+
 def substitute_calls(node, members: Mapping[str, str]):
     """``node`` with each call ``f()`` of no arguments whose ``f`` is in ``members`` replaced by
     the name ``members[f]`` at the call's place (``map.inner_side()`` -> ``left``)."""

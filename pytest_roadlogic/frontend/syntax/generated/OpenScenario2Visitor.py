@@ -34,6 +34,11 @@ class OpenScenario2Visitor(ParseTreeVisitor):
         return self.visitChildren(ctx)
 
 
+    # Visit a parse tree produced by OpenScenario2Parser#behaviorIdentifier.
+    def visitBehaviorIdentifier(self, ctx:OpenScenario2Parser.BehaviorIdentifierContext):
+        return self.visitChildren(ctx)
+
+
     # Visit a parse tree produced by OpenScenario2Parser#inheritance.
     def visitInheritance(self, ctx:OpenScenario2Parser.InheritanceContext):
         return self.visitChildren(ctx)

@@ -51,7 +51,15 @@ scenarioDeclaration
     ;
 
 behaviorName
-    : (actorType=identifier DOT)? name=identifier
+    : (actorType=identifier DOT)? name=behaviorIdentifier
+    ;
+
+// a behavior's own name may be a composition keyword (the standard's example `scenario vehicle.one_of:`)
+behaviorIdentifier
+    : identifier
+    | SERIAL
+    | PARALLEL
+    | ONE_OF
     ;
 
 inheritance
