@@ -342,9 +342,7 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks, EnvironmentAc
             or any(item.name == owner for item in scenario.fields)
         ):
             return scenario
-        return replace(
-            scenario, behavior=owned_by(scenario.behavior, owner), behaviors=owned_by(scenario.behaviors, owner)
-        )
+        return _rewritten(scenario, lambda node: owned_by(node, owner))
 
     def _string_constants(self, scenario: model.Scenario, globals_: tuple[model.Field, ...]) -> model.Scenario:
         """The scenario with each string parameter that is a constant (a value, no constraint)
@@ -366,12 +364,7 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks, EnvironmentAc
         constants = {name: value for name, value in constants.items() if name not in mentioned}
         if not constants:
             return scenario
-        return replace(
-            scenario,
-            behavior=substitute_names(scenario.behavior, constants),
-            behaviors=substitute_names(scenario.behaviors, constants),
-            modifiers=substitute_names(scenario.modifiers, constants),
-        )
+        return _rewritten(scenario, lambda node: substitute_names(node, constants))
 
     def _declarations(self, osc: model.OscFile) -> None:
         for enum in osc.enums:
@@ -1083,11 +1076,16 @@ def _map_sides(scenario: model.Scenario) -> model.Scenario:
             members[f"{item.name}.outer_side"] = "right"
     if not members:
         return scenario
+    return _rewritten(scenario, lambda node: substitute_calls(node, members))
+
+
+def _rewritten(scenario: model.Scenario, rewrite) -> model.Scenario:
+    """The scenario with ``rewrite`` applied to its behaviors and its scenario-wide modifiers."""
     return replace(
         scenario,
-        behavior=substitute_calls(scenario.behavior, members),
-        behaviors=substitute_calls(scenario.behaviors, members),
-        modifiers=substitute_calls(scenario.modifiers, members),
+        behavior=rewrite(scenario.behavior),
+        behaviors=rewrite(scenario.behaviors),
+        modifiers=rewrite(scenario.modifiers),
     )
 
 
