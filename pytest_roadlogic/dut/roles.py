@@ -12,12 +12,14 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 
+from ..frontend.semantics.library import DUT_NAMES
 from ..oracles import Thresholds
 from ..registries.drivers import DEFAULT, reference_driver
 
 AUTO, NONE = "auto", "none"
-# the spellings of the vehicle under test in scenario files: the standard library's dut.car, and dut
-STANDARD_NAMES = ("dut.car", "dut")
+# the spellings of the vehicle under test in scenario files (the standard's dut.car and
+# dut.vehicle, CARLA's dut), declared once with the front end's implicit vehicles
+STANDARD_NAMES = DUT_NAMES
 
 
 class NoSuchVehicle(ValueError):

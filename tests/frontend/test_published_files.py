@@ -444,3 +444,16 @@ def test_a_behavior_may_be_named_after_a_composition_keyword_as_the_standards_ex
 def test_a_parameter_without_a_range_is_one_error_not_also_a_negative_speed():
     text = "scenario vehicle.accelerate:\n    v: speed\n    do drive(duration: [2s..4s]) with:\n        speed(speed: v, at: end)\n"
     assert _lines(check_text(text, "t.osc")) == ["t.osc:2:5: parameter 'v' has no range or value"]
+
+
+def test_the_standards_dut_vehicle_and_labelled_modifiers_are_read_as_its_domain_model_writes_them():
+    # the domain model's "track" example: dut.vehicle undeclared, each modifier named (l1: lane(...))
+    text = (
+        "scenario dut.cut_in_late:\n    vehicle1: vehicle\n    do parallel(duration: [1.5s..3s]):\n"
+        "        d3: dut.vehicle.drive()\n        d4: vehicle1.drive() with:\n"
+        "            l1: lane(side_of: dut.vehicle, at: start)\n"
+        "            p2: position(time: [1.5s..2s], ahead_of: dut.vehicle, at: end)\n"
+    )
+    checked = check_text(text, "t.osc")
+    assert not checked.errors, checked.report()
+    assert sorted(a.name for a in checked.scenarios[0].scenario.actors) == ["dut.vehicle", "vehicle1"]

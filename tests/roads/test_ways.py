@@ -201,10 +201,6 @@ def test_a_labelled_roads_follow_in_junction_is_a_way_its_resulting_route_is_dri
             r"ego_turn.resulting_route",
         ),
         (
-            ("            speed([30kph", "            fast: speed([30kph"),
-            r"turns.osc:15:19: error: not supported: a label on speed\(\) in a with: block",
-        ),
-        (
             ("ego_turn: map.roads", "approach: map.roads"),
             r"turns.osc:6:\d+: error: approach is already a field of the scenario",
         ),
@@ -212,7 +208,6 @@ def test_a_labelled_roads_follow_in_junction_is_a_way_its_resulting_route_is_dri
     ids=[
         "a label on another map modifier",
         "a route the tool does not read",
-        "a label in a with block",
         "a label that is a field",
     ],
 )

@@ -749,13 +749,8 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks, EnvironmentAc
                         "declare it as a car if it should move",
                     )
         for modifier in node.modifiers:
-            if modifier.label is not None:
-                self.error(
-                    modifier.location,
-                    f"not supported: a label on {modifier.name}() in a with: block",
-                    "leave the label out; a label names a map modifier's results: "
-                    "my_turn: map.roads_follow_in_junction(...), then along(my_turn.resulting_route)",
-                )
+            # a label on a modifier (`l1: lane(...)`, as the standard's examples name them) only
+            # names the use: read, with nothing to refer to it
             if modifier.actor is not None and modifier.actor != actor:
                 self.error(
                     modifier.location,
