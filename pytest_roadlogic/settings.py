@@ -210,6 +210,9 @@ ROAD_SPEED = speed_band(ROAD_SPEED_TEXT)  # m/s
 
 # the vehicle under test (dut.roles): the scenario's own dut, none (every vehicle follows its plan), or a name
 DUT_AUTO, DUT_NONE = "auto", "none"
+# how scenario files spell the vehicle under test: the standard's dut.car and dut.vehicle, CARLA's
+# dut; the front end reads them without a declaration, and auto takes the first a scenario has
+DUT_NAMES = ("dut.car", "dut.vehicle", "dut")
 
 
 def dut_driver(text: str) -> str:
@@ -421,7 +424,7 @@ OPTIONS = (
         "dut",
         name,
         DUT_AUTO,
-        "the vehicle under test, which drives itself and is judged by the oracles: auto (the scenario's dut.car or dut), "
+        "the vehicle under test, which drives itself and is judged by the oracles: auto (the scenario's dut.car, dut.vehicle or dut), "
         "none (every vehicle follows its plan: conformance only), or a vehicle's name",
         before=DUT_NONE,  # case files from before vehicles under test: every vehicle followed its plan
     ),

@@ -12,13 +12,13 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 
-from ..frontend.semantics.library import DUT_NAMES
 from ..oracles import Thresholds
 from ..registries.drivers import DEFAULT, reference_driver
+from ..settings import DUT_NAMES
 
 AUTO, NONE = "auto", "none"
 # the spellings of the vehicle under test in scenario files (the standard's dut.car and
-# dut.vehicle, CARLA's dut), declared once with the front end's implicit vehicles
+# dut.vehicle, CARLA's dut), declared once in settings for the front end and this module
 STANDARD_NAMES = DUT_NAMES
 
 

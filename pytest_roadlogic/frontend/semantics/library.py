@@ -14,6 +14,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
 
+from ...settings import DUT_NAMES
 from .. import model
 from ..syntax.standard_library import LazyTable
 
@@ -21,13 +22,9 @@ from ..syntax.standard_library import LazyTable
 ACTOR_TYPES = ("car", "truck", "vehicle", "stationary_object")
 # Standard actors that own scenarios (`scenario traffic.overtake:`) but do not drive.
 SCENARIO_OWNERS = ("traffic", "env", "osc_actor", "dut")
-# The standard library's device under test, as the standard's own examples spell it
-# (`dut.car.drive()`, `dut.vehicle.drive()`) and CARLA's (`dut`): usable without a declaration,
-# and the vehicle under test when a scenario has one of them (dut.roles)
-DUT_NAMES = ("dut.car", "dut.vehicle", "dut")
 # Vehicles that CARLA's scenario runner (and suites written for it) use without declaring them:
 # read as vehicles, the last two with a warning asking for a declaration.
-IMPLICIT_VEHICLES = (*DUT_NAMES, "ego", "npc")
+IMPLICIT_VEHICLES = (*DUT_NAMES, "ego", "npc")  # the device under test as files spell it (settings), first
 # The standard library's actors above the road users (stdlib/osc/actors.osc): a type a file derives
 # from one of them is driven as a vehicle, with a warning, as a bare actor type is.
 ABSTRACT_ACTOR_TYPES: Mapping[str, None] = LazyTable(
