@@ -22,7 +22,7 @@ from .. import model
 from ..errors import Diagnostic, OscError, SourceLocation
 from ..syntax.parser import parse_text
 from ..syntax.standard_library import UNITS, standard_library
-from ..syntax.units import SPEED, TIME
+from ..syntax.units import SI_UNIT, SPEED, TIME
 from . import library
 from .builtin_events import with_builtin_events
 from .checked import CheckedFile, CheckedScenario, Registry
@@ -46,7 +46,7 @@ from .logical import logical_parameters_of, way_parameters
 from .methods import Methods, inline_methods, inline_scenario
 from .parameters import ParameterSpace, parameter_space
 from .physical import declared_physics, parse_with_declared_units
-from .road_lanes import DEFAULT_LANES, RoadLanes
+from .road_lanes import DEFAULT_LANES, RoadLanes, driven_along_only
 from .values import EvaluationError, Interval, calls_in, describe, evaluate, names_in
 
 
@@ -515,7 +515,7 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks, EnvironmentAc
                 parameters.append(item)
             elif kind == "road":
                 roads.append(item.name)
-            elif kind == "map_element" and item.type == "road" and _only_driven_along(scenario, item.name):
+            elif kind == "map_element" and item.type == "road" and driven_along_only(scenario, item.name):
                 roads.append(item.name)  # `my_road: road` driven along(my_road): the scenario's road
             elif kind == "map_element":
                 self.map_elements[item.name] = item.type
@@ -1086,27 +1086,5 @@ def _rewritten(scenario: model.Scenario, rewrite) -> model.Scenario:
 
 def _unit_of(type_name: str) -> str:
     """The SI unit a bound of a parameter of ``type_name`` is shown in (`` m``, `` s``, ...; none for a number)."""
-    dimension = library.PHYSICAL_TYPES.get(type_name)
-    unit = {"length": "m", "time": "s", "speed": "m/s", "acceleration": "m/s^2"}.get(dimension)
+    unit = SI_UNIT.get(library.PHYSICAL_TYPES.get(type_name), "")
     return f" {unit}" if unit else ""
-
-
-def _only_driven_along(scenario: model.Scenario, name: str) -> bool:
-    """Whether the field ``name`` is driven ``along(name)`` and named by no map modifier of the
-    scenario: the standard's "move along a road" (``my_road: road``, ``along(my_road)``) is the
-    road the scenario runs on, not a road of a junction for the map's relations to pick."""
-    named_by_map = any(
-        isinstance(argument.value, model.Name) and argument.value.name == name
-        for modifier in scenario.modifiers
-        for argument in modifier.arguments
-    )
-    driven = any(
-        isinstance(argument.value, model.Name) and argument.value.name == name
-        for behavior in scenario.behaviors
-        for node in model.walk(behavior)
-        if isinstance(node, model.Invocation)
-        for modifier in node.modifiers
-        if modifier.name == "along"
-        for argument in modifier.arguments
-    )
-    return driven and not named_by_map

@@ -10,6 +10,7 @@ from ...settings import STANDARD_DIALECT
 from .. import model
 from ..errors import SourceLocation
 from . import library
+from .parameters import MIRRORED
 from .values import EvaluationError, Interval, evaluate
 
 DEFAULT_LANES = 3  # a road whose scenario says nothing of its lanes
@@ -462,11 +463,10 @@ class RoadLanes:
         ``max_lanes`` both are that count: ``== n`` fixes it, ``>= n`` / ``> n`` bound it below,
         ``<= n`` / ``< n`` above."""
         comparison = keep.expression
-        flipped = {">=": "<=", ">": "<", "<=": ">=", "<": ">", "==": "=="}
-        if isinstance(comparison, model.Binary) and comparison.operator in flipped:
+        if isinstance(comparison, model.Binary) and comparison.operator in MIRRORED:
             operator, field, other = comparison.operator, comparison.left, comparison.right
             if not _lanes_field(field):
-                operator, field, other = flipped[operator], other, field
+                operator, field, other = MIRRORED[operator], other, field
         else:
             field = None
         if not _lanes_field(field):
@@ -662,6 +662,18 @@ class RoadLanes:
                         if lanes > needed:
                             needed, where = lanes, location
         return needed, where
+
+
+def driven_along_only(scenario: model.Scenario, name: str) -> bool:
+    """Whether the field ``name`` is driven ``along(name)`` and named by no map modifier of the
+    scenario: the standard's "move along a road" (``my_road: road``, ``along(my_road)``) is the
+    road the scenario runs on, not a road of a junction for the map's relations to pick."""
+
+    def names(arguments) -> bool:
+        return any(isinstance(a.value, model.Name) and a.value.name == name for a in arguments)
+
+    named_by_map = any(names(modifier.arguments) for modifier in scenario.modifiers)
+    return not named_by_map and any(names(modifier.arguments) for _, modifier in _alongs(scenario))
 
 
 def _alongs(scenario: model.Scenario) -> list[tuple[str, model.Modifier]]:
