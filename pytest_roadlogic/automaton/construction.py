@@ -461,11 +461,11 @@ def _parallel(
             moves: list[_Edge | None] = list(child.outgoing(key))
             if current != initial or (late and child.ends_itself):
                 moves.append(None)  # this component stays (or, late, has not started yet)
-            ends = [m for m in moves if (m.target if m is not None else key) == child.final]
-            ending.append(ends)
+            ending.append([m for m in moves if (m.target if m is not None else key) == child.final])
+            # a member that ends of itself may end while others go on: all its moves go on with them
             early = child.ends_itself and not together and key != child.final
             going_on.append(
-                [m for m in moves if (m.target if m is not None else key) != child.final or (early and m in ends)]
+                moves if early else [m for m in moves if (m.target if m is not None else key) != child.final]
             )
         for options in (going_on, ending):
             _check_size(

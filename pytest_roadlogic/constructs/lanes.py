@@ -117,8 +117,8 @@ class Lane(AnchoredModifier):
         return int(value.low), int(value.high)
 
 
-# where on each vehicle's side a lateral() distance is measured from (its ``measure_by``): the
-# offset of the named side from the vehicle's centre, positive to the left, in vehicle widths
+# where on a vehicle (or a lane) a lateral() distance is measured from (its ``measure_by``): the
+# offset of the named side from the centre, positive to the left, in widths
 _SIDE_OFFSET = {"left": 0.5, "center": 0.0, "right": -0.5}
 
 
@@ -263,7 +263,7 @@ def _offset_in_lane(measure: str, distance: float) -> float:
     if measure == "closest":
         return (LANE_WIDTH - CAR_WIDTH) / 2 - distance
     mine, _, marking = measure.partition("_to_")
-    edge = {"left": LANE_WIDTH / 2, "center": 0.0, "right": -LANE_WIDTH / 2}[marking]
+    edge = _SIDE_OFFSET[marking] * LANE_WIDTH  # the marking (or centre line) off the lane's centre
     inward = -1 if marking == "left" else 1  # from the marking into the lane
     return edge + inward * distance - _SIDE_OFFSET[mine] * CAR_WIDTH
 

@@ -825,11 +825,8 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks, EnvironmentAc
                 argument.location, f"unknown argument {argument.name!r} of {what}", f"usage: {signature.usage()}"
             )
         for argument, parameter in binding.repeated:
-            if (
-                parameter.ranged
-                and argument.name in (f"{parameter.name}_range", parameter.name)
-                and (parameter.name in binding.ranged or argument.name.endswith("_range"))
-            ):
+            # a value and its range-typed counterpart (one of them given by its _range name)
+            if parameter.ranged and (parameter.name in binding.ranged or (argument.name or "").endswith("_range")):
                 self.error(
                     argument.location,
                     f"{what} takes one of {parameter.name} and {parameter.name}_range",
