@@ -4,11 +4,11 @@
 - serial A . B: A's final and B's initial location are one instant, so every transition into
   f_A is fused with every transition out of i_B into one transition guarded by both (the end of A
   and the start of B happen at the same split point, as the semantics demands).
-- parallel A || B: the product, built only over reachable locations. All components leave their
-  initial locations together; a component that ends of itself (a duration, an until, a wait) may
-  reach its final location before the others and stays there (the standard's default ``overlap:
-  start``), the others reach theirs with the last of those, or when the parallel's own duration is
-  over (all together with ``overlap: equal``); in between they move alone or jointly.
+- parallel A || B: the product, built only over reachable locations. A component that ends of
+  itself (a duration, an until, a wait) may, as the parallel's ``overlap:`` allows, stay at its
+  initial location while others move (a late start) or reach its final location before them and
+  stay there (an early end); the others leave theirs together and reach theirs with the last of
+  those, or when the parallel's own duration is over; in between they move alone or jointly.
 - one_of A | B: the union, with a fresh initial and final location.
 - events: ``emit e`` is no phase but a mark on the instant between its serial neighbours;
   ``wait @e`` and ``until @e`` end their phase on an edge that *awaits* e. The product of a
@@ -188,13 +188,13 @@ class _Builder:
         return fragment
 
     def parallel(self, behavior: model.Composition) -> _Fragment:
-        """Members that start together. With ``overlap: start`` (the standard's default, and what
-        CARLA's runner does) each member that ends of itself (a duration, an until, a wait) ends
-        when it ends, and the others end with the last one: a member with nothing to end it lasts
-        as long as the parallel, as its author means it. With ``overlap: equal`` all end together;
-        with ``overlap: end`` all end together and a member that ends of itself may start late.
-        An ``emit`` among them is emitted at their start, the one instant it shares with every
-        member (the standard allows emit in any composition)."""
+        """Members that run side by side, placed in time by the parallel's ``overlap:`` (``_Overlap``).
+        With ``overlap: start`` (the standard's default, and what CARLA's runner does) they start
+        together, each member that ends of itself (a duration, an until, a wait) ends when it ends,
+        and the others end with the last one: a member with nothing to end it lasts as long as the
+        parallel, as its author means it. An ``emit`` among them is emitted at the parallel's
+        start, an instant it shares with every member that starts then (the standard allows emit
+        in any composition)."""
         events = [child.event for child in behavior.children if isinstance(child, model.Emit)]
         children = [self.translate(child) for child in behavior.children if not isinstance(child, model.Emit)]
         if not children:
@@ -208,11 +208,7 @@ class _Builder:
         # a parallel with a duration of its own ends when that is over: a member with nothing to
         # end it lasts until then, even after those that end of themselves
         timed = behavior.argument("duration") is not None
-        fragment = (
-            _parallel(children, behavior.location, kind in ("equal", "end"), timed, late=kind == "end")
-            if len(children) > 1
-            else children[0]
-        )
+        fragment = _parallel(children, _Overlap(kind), behavior.location, timed) if len(children) > 1 else children[0]
         fragment.ends_itself = all(child.ends_itself for child in children)
         if events:
             _emit(fragment.outgoing(fragment.initial), events)
@@ -436,15 +432,48 @@ def _check_size(transitions: int, location, composition: str) -> None:
         )
 
 
-def _parallel(
-    children: list[_Fragment], location=None, together: bool = False, timed: bool = False, late: bool = False
-) -> _Fragment:
-    """The product of a parallel's members. They start together; a member that ends of itself
-    (``_Fragment.ends_itself``) may end before the others and then stays at its end, unless
-    ``together`` (``overlap: equal`` and ``end``); every other member ends with the last of those
-    (with the last of all when none ends of itself), or, ``timed`` (the parallel's own duration),
-    when the parallel ends. With ``late`` (``overlap: end``) a member that ends of itself may
-    also start after the others, staying at its start until then."""
+@dataclass(frozen=True)
+class _Overlap:
+    """How a parallel's members sit in time (the standard, 7.6.2.1.4), the first member being the
+    primary: which may start after the parallel starts, which may end before it ends, and the
+    order of starts and ends the kind asks. Only a member that ends of itself (a duration, an
+    until, a wait) starts late or ends early: one with nothing to end it spans the parallel, since
+    nothing its author wrote says when it would start or stop otherwise."""
+
+    kind: str
+
+    def may_start_late(self, index: int, child: _Fragment) -> bool:
+        if not child.ends_itself or self.kind in ("equal", "start"):
+            return False
+        return {"inside": index > 0, "full": index == 0}.get(self.kind, True)
+
+    def may_end_early(self, index: int, child: _Fragment) -> bool:
+        if not child.ends_itself or self.kind in ("equal", "end"):
+            return False
+        return {"inside": index > 0, "full": index == 0}.get(self.kind, True)
+
+    def keeps_order(self, target: tuple[Key, ...], children: list[_Fragment]) -> bool:
+        """Whether members at ``target`` (each at its start, inside, or at its end) have started
+        and ended in the order the kind asks: ``initial``, each secondary starts no later than the
+        primary and ends no earlier than the primary starts; ``final``, each secondary starts no
+        later than the primary ends and ends no earlier; ``any``, all have started before any ends."""
+        waiting = [key == c.initial for key, c in zip(target, children)]
+        done = [key == c.final for key, c in zip(target, children)]
+        if self.kind == "initial":
+            return not any(not waiting[0] and w or waiting[0] and d for w, d in zip(waiting[1:], done[1:]))
+        if self.kind == "final":
+            return not any(done[0] and w or d and not done[0] for w, d in zip(waiting[1:], done[1:]))
+        if self.kind == "any":
+            return not (any(done) and any(waiting))
+        return True
+
+
+def _parallel(children: list[_Fragment], overlap: _Overlap, location=None, timed: bool = False) -> _Fragment:
+    """The product of a parallel's members, as ``overlap`` places them: a member that may start
+    late stays at its start until it starts, one that may end early stays at its end after it
+    ended, and no move breaks the order of starts and ends the overlap asks. Every other member
+    ends with the last that ends of itself (with the last of all when none ends of itself), or,
+    ``timed`` (the parallel's own duration), when the parallel ends."""
     initial = tuple(c.initial for c in children)
     final = tuple(c.final for c in children)
     edges: list[_Edge] = []
@@ -457,13 +486,13 @@ def _parallel(
         # themselves become final (never the product of all moves, 2^n for n members, filtered)
         ending: list[list[_Edge | None]] = []
         going_on: list[list[_Edge | None]] = []
-        for child, key in zip(children, current):
+        for index, (child, key) in enumerate(zip(children, current)):
             moves: list[_Edge | None] = list(child.outgoing(key))
-            if current != initial or (late and child.ends_itself):
+            if current != initial or overlap.may_start_late(index, child):
                 moves.append(None)  # this component stays (or, late, has not started yet)
             ending.append([m for m in moves if (m.target if m is not None else key) == child.final])
-            # a member that ends of itself may end while others go on: all its moves go on with them
-            early = child.ends_itself and not together and key != child.final
+            # a member that may end early may end while others go on: all its moves go on with them
+            early = overlap.may_end_early(index, child) and key != child.final
             going_on.append(
                 moves if early else [m for m in moves if (m.target if m is not None else key) != child.final]
             )
@@ -482,6 +511,8 @@ def _parallel(
             if all(m is None for m in combination):
                 continue
             target = tuple(m.target if m is not None else key for m, key in zip(combination, current))
+            if not overlap.keeps_order(target, children):
+                continue
             moving = [m for m in combination if m is not None]
             staying = frozenset().union(
                 *(c.listening.get(k, frozenset()) for m, c, k in zip(combination, children, current) if m is None)

@@ -73,12 +73,8 @@ def duration_interval(argument: model.Argument, env: dict) -> tuple[float, float
 
 def check_behavior_arguments(composition: model.Composition) -> None:
     for argument in composition.arguments:
-        if (
-            argument.name == "overlap"
-            and isinstance(argument.value, model.Name)
-            and argument.value.name in ("start", "equal", "end")
-        ):
-            continue  # members start together, end together, or both: what the product builds
+        if argument.name == "overlap" and isinstance(argument.value, model.Name):
+            continue  # how the members sit in time: what the product builds
         if argument.name == "duration":
             continue  # a timed phase, handled by the construction
         raise error_at(

@@ -1,5 +1,6 @@
 """The automaton of the overtake has the shape of the paper's Figure 4."""
 
+import itertools
 import math
 
 import pytest
@@ -290,3 +291,69 @@ def test_with_overlap_end_a_parallels_members_end_together_and_one_with_its_own_
     automaton = build_automaton(check_text(text).scenarios[0])
     starts = {tuple(sorted(e for e in t.events if e.endswith(" start"))) for t in automaton.transitions}
     assert {("a.drive start",), ("b.drive start",), ("a.drive start", "b.drive start")} <= starts
+
+
+def _orders_of_starts_and_ends(automaton) -> set[tuple[frozenset[str], ...]]:
+    """Every run's starts and ends of ``a.drive`` and ``b.drive``, as the sets of them that happen
+    at one instant, in order."""
+    runs: set[tuple[frozenset[str], ...]] = set()
+
+    def walk(location, so_far):
+        if location == automaton.final:
+            runs.add(so_far)
+        for t in automaton.outgoing(location):
+            marks = frozenset(e for e in t.events if e.startswith(("a.drive", "b.drive")))
+            walk(t.target, so_far + ((marks,) if marks else ()))
+
+    walk(automaton.initial, ())
+    return runs
+
+
+def _orders_the_standard_accepts(kind: str) -> set[tuple[frozenset[str], ...]]:
+    """The orders of a's and b's starts and ends (a the primary) that the standard's definition of
+    parallel (7.6.2.1.4) accepts for ``overlap: kind``, found by trying every order of the four."""
+    marks = ("a.drive start", "a.drive end", "b.drive start", "b.drive end")
+    accepted = set()
+    for ranks in itertools.product(range(4), repeat=4):
+        if set(ranks) != set(range(max(ranks) + 1)):
+            continue  # instants are numbered without gaps
+        s0, e0, s1, e1 = ranks
+        first, last = min(ranks), max(ranks)
+        holds = {
+            "equal": s0 == s1 == first and e0 == e1 == last,
+            "start": s0 == s1 == first,
+            "end": e0 == e1 == last,
+            "inside": s0 <= s1 and e0 >= e1,
+            "full": s0 >= s1 and e0 <= e1,
+            "initial": s1 <= s0 <= e1,
+            "final": s1 <= e0 <= e1,
+            "any": max(s0, s1) <= min(e0, e1),
+        }[kind]
+        if s0 < e0 and s1 < e1 and holds:
+            accepted.add(tuple(frozenset(m for m, r in zip(marks, ranks) if r == i) for i in range(last + 1)))
+    return accepted
+
+
+@pytest.mark.parametrize("kind", ["equal", "start", "end", "inside", "full", "initial", "final", "any"])
+def test_each_overlap_kind_orders_two_timed_members_exactly_as_the_standards_definition_of_parallel(kind):
+    text = (
+        f"scenario s:\n  a: car\n  b: car\n  do parallel(overlap: {kind}):\n"
+        "    a.drive(duration: [2..6]s)\n    b.drive(duration: [2..6]s)\n"
+    )
+    automaton = build_automaton(check_text(text).scenarios[0])
+    assert _orders_of_starts_and_ends(automaton) == _orders_the_standard_accepts(kind)
+
+
+def test_a_member_with_nothing_to_end_it_spans_the_parallel_whatever_the_overlap():
+    for kind in ("inside", "initial", "final", "any"):
+        text = f"scenario s:\n  a: car\n  b: car\n  do parallel(overlap: {kind}):\n    a.drive()\n    b.drive(duration: 3s)\n"
+        orders = _orders_of_starts_and_ends(build_automaton(check_text(text).scenarios[0]))
+        assert all("a.drive start" in run[0] and "a.drive end" in run[-1] for run in orders), kind
+
+
+def test_overlap_inside_with_a_secondary_longer_than_the_primary_has_no_plan_and_says_which_durations():
+    from pytest_roadlogic.planning import ContinuousPlanner, UnsatisfiableScenario
+
+    text = "scenario s:\n  a: car\n  b: car\n  do parallel(overlap: inside):\n    a.drive(duration: 3s)\n    b.drive(duration: 5s)\n"
+    with pytest.raises(UnsatisfiableScenario, match=r"a\.drive lasts 2\.5\.\.3\.5 s .* b\.drive lasts 4\.5\.\.5\.5 s"):
+        next(ContinuousPlanner(build_automaton(check_text(text).scenarios[0])).plans(limit=1))

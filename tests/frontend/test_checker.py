@@ -349,9 +349,9 @@ CASES = [
         "6:14: error: unknown function 'later'",
     ),
     (
-        "overlap",
-        HEAD + "    do parallel(overlap: inside):\n        a.drive()\n        b.drive()\n",
-        "4:17: error: not supported: overlap: inside",
+        "start_to_start",
+        HEAD + "    do parallel(start_to_start: 2s):\n        a.drive()\n        b.drive()\n",
+        "4:17: error: not supported: start_to_start (an offset between the primary member and the others)",
     ),
     (
         "duration_length",

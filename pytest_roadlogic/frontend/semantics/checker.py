@@ -656,16 +656,11 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks, EnvironmentAc
             )
             if not node.children:
                 self.error(node.location, f"{node.operator} has no members")
-            overlap = node.argument("overlap")
-            if (
-                overlap is not None
-                and isinstance(overlap.value, model.Name)
-                and overlap.value.name not in ("start", "equal", "end")
-            ):
+            for offset in (a for a in node.arguments if a.name in ("start_to_start", "end_to_end")):
                 self.error(
-                    overlap.location,
-                    f"not supported: overlap: {overlap.value.name}",
-                    "parallel supports overlap: start (the default), equal and end",
+                    offset.location,
+                    f"not supported: {offset.name} (an offset between the primary member and the others)",
+                    "give the members durations, or put a wait before the later one in a serial",
                 )
             return
         if isinstance(node, model.Invocation):
