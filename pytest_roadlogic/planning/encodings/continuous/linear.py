@@ -248,6 +248,7 @@ class LazyLinearPropagator:
         # each atom read with as few foreign calls as it takes: its printed form names its theory
         # term (``&sum{...}<=b``), and the assignment is fetched once
         program, assignment = self.program, init.assignment
+        earlier = [literal for literal in (*program.switched, *program.preferred) if literal]
         for atom in init.theory_atoms:
             text = str(atom)
             name = text[1 : text.find("{")]
@@ -267,15 +268,31 @@ class LazyLinearPropagator:
             elif not assignment.is_false(literal):
                 program.switched[literal].append(row)
         init.check_mode = clingo.PropagatorCheckMode.Total
+        # which switching literals are true, kept per solver thread by propagate and undo: a check
+        # reads a set instead of asking the solver literal by literal (a foreign call each, a
+        # third of a check's time). Those read now are undecided (a true one always holds); one
+        # read for an earlier solve may have been decided since
+        for literal in (*program.switched, *program.preferred):
+            if literal:
+                init.add_watch(literal)
+        true = {literal for literal in earlier if assignment.is_true(literal)}
+        self.true = [set(true) for _ in range(init.number_of_threads)]
+
+    def propagate(self, control: clingo.PropagateControl, changes) -> None:
+        self.true[control.thread_id].update(changes)
+
+    def undo(self, thread_id: int, assignment: clingo.Assignment, changes) -> None:
+        self.true[thread_id].difference_update(changes)
 
     def check(self, control: clingo.PropagateControl) -> None:
         if not control.assignment.is_total:
             # clingo also calls a Total-mode check on some partial fixpoints; the check of the total assignment that
             # follows decides, and a solution found here would not be the model's
             return
-        on = [literal for literal in self.program.switched if control.assignment.is_true(literal)]
+        true = self.true[control.thread_id]
+        on = [literal for literal in self.program.switched if literal in true]
         # a preference's literal is its own (its body's), not always one that switches a constraint
-        preferring = [literal for literal in self.program.preferred if literal and control.assignment.is_true(literal)]
+        preferring = [literal for literal in self.program.preferred if literal in true]
         conflict, smoothed = check_rows(self.program, on, preferring)
         if conflict is None:
             self.solution[control.thread_id] = smoothed
@@ -362,9 +379,10 @@ class SwitchedCheck:
         self.column: list[int] = []  # per variable of the program: its column
         self.hard = 0  # rows of ``program.always`` added so far
         self.synced: dict[int, int] = {}  # rows added so far per switching literal
-        self.literal: list[int] = []  # per switched half-row: its literal
-        self.row: list[int] = []  # per switched half-row: its row in the model
-        self.bound: list[float] = []  # per switched half-row: its bound when on
+        self.switched_rows = 0  # of ``program.switched``, all of them: the model syncs when they grow
+        self.literal = np.zeros(0, dtype=np.int64)  # per switched half-row: its literal
+        self.row = np.zeros(0, dtype=np.int32)  # per switched half-row: its row in the model
+        self.bound = np.zeros(0)  # per switched half-row: its bound when on
         self.on = np.zeros(0, dtype=bool)  # per switched half-row: on in the model now
 
     def _sync(self, program: LinearProgram) -> None:
@@ -387,6 +405,10 @@ class SwitchedCheck:
             rows = program.always[self.hard :]
             self._add_rows(rows, [row.bound if row.equal else -inf for row in rows], [row.bound for row in rows])
             self.hard = len(program.always)
+        switched_rows = sum(map(len, program.switched.values()))
+        if switched_rows == self.switched_rows:
+            return
+        self.switched_rows = switched_rows
         halves: list[tuple[Row, int]] = []
         for literal, rows in program.switched.items():
             done = self.synced.get(literal, 0)
@@ -396,9 +418,9 @@ class SwitchedCheck:
         if halves:
             m, first = len(halves), highs.getNumRow()
             self._add_rows([half for half, _ in halves], [-inf] * m, [inf] * m)
-            self.literal += [literal for _, literal in halves]
-            self.bound += [half.bound for half, _ in halves]
-            self.row += range(first, first + m)
+            self.literal = np.concatenate([self.literal, [literal for _, literal in halves]]).astype(np.int64)
+            self.bound = np.concatenate([self.bound, [half.bound for half, _ in halves]])
+            self.row = np.concatenate([self.row, np.arange(first, first + m, dtype=np.int32)])
             self.on = np.concatenate([self.on, np.zeros(m, dtype=bool)])
 
     def _add_rows(self, rows: list[Row], lower: list[float], upper: list[float]) -> None:
@@ -418,13 +440,12 @@ class SwitchedCheck:
         """The literals of ``on`` whose rows cannot hold together with those that always hold,
         None when they can, False when HiGHS gave no certificate (the caller decides another way)."""
         self._sync(program)
-        switched_on = set(on)
-        wanted = np.array([literal in switched_on for literal in self.literal], dtype=bool)
+        wanted = np.isin(self.literal, np.asarray(on, dtype=np.int64))
         changed = np.flatnonzero(wanted != self.on)
         if len(changed):
             inf = highspy.kHighsInf
-            rows = np.array(self.row, dtype=np.int32)[changed]
-            upper = np.where(wanted[changed], np.array(self.bound)[changed], inf)
+            rows = self.row[changed]
+            upper = np.where(wanted[changed], self.bound[changed], inf)
             self.highs.changeRowsBounds(len(changed), rows, np.full(len(changed), -inf), upper)
             self.on = wanted
         self.highs.run()
@@ -437,7 +458,7 @@ class SwitchedCheck:
         if not exists:
             return False
         ray = np.asarray(ray)[self.row]
-        conflict = {self.literal[i] for i in np.flatnonzero(np.abs(ray) > 1e-9) if wanted[i]}
+        conflict = {int(literal) for literal in self.literal[(np.abs(ray) > 1e-9) & wanted]}
         return sorted(conflict) if conflict else False
 
 
