@@ -141,7 +141,7 @@ def run_instances(
             simulation = simulator.simulate(plan, limits, drivers, **({"react": react} if react else {}))
             seconds["simulation"] += time.perf_counter() - start
             start = time.perf_counter()
-            verdict = monitor(specification, simulation.trace)
+            verdict = monitor(specification, simulation.trace, begins_by=plan.begins_by)
             if missed := simulation.turns_not_taken(frozenset({dut}) if dut is not None else frozenset()):
                 # along(path) on a route that turns: the car drives through the junction
                 verdict = dataclasses.replace(verdict, accepted=False, incidents=verdict.incidents + missed)

@@ -5,9 +5,10 @@ takes its transitions at strictly increasing sample instants, each when its guar
 run stays in a location, the location's invariant holds at every sample and every actor driving
 there makes forward progress (its position increases from each sample to the next); a timed phase
 lasts within its bounds from the transition that starts it to the one that ends it, and the
-margin to those bounds (in seconds) counts in the robustness like a guard's. The scenario may start after the trace does (vehicles start from
-standstill and need a run-up), so the initial location may be left at any sample. The trace is
-accepted when some run reaches the final location and no incident (collision, off-road) occurred.
+margin to those bounds (in seconds) counts in the robustness like a guard's. The scenario may
+start after the trace does (vehicles start from standstill and need a run-up): the initial location
+may be left at any sample up to ``begins_by`` (``monitor``). The trace is accepted when some run
+reaches the final location and no incident (collision, off-road) occurred.
 
 One forward pass computes, for every location, the best run into it: the one whose smallest guard
 robustness so far is largest. That value at the final location is the verdict's robustness; it is
@@ -116,8 +117,17 @@ class Verdict:
         }
 
 
-def monitor(automaton: SymbolicAutomaton, trace: Trace, floors: tuple[float, ...] | None = None) -> Verdict:
+def monitor(
+    automaton: SymbolicAutomaton, trace: Trace, floors: tuple[float, ...] | None = None, begins_by: float = math.inf
+) -> Verdict:
     """Whether ``trace`` is a run of ``automaton``, with its robustness and, when it is not, why.
+
+    ``begins_by``: the latest time of the trace (s) at which the scenario may begin, that is leave
+    its initial location (default: any). A simulation that starts in its plan's first state begins
+    the scenario at its first sample (0), as the standard's main scenario accepts the whole trace;
+    after a run-up, by the end of the run-up and one planning step. Why it matters beyond meaning:
+    a timed phase that may begin at any sample keeps a run per start, and with a second such phase
+    (a parallel member that may start late, a repeated one_of of timed serials) a run per pair.
 
     The search keeps, per location and timed-phase state, the best run so far; what makes it slow
     is keeping runs that cannot matter, so it keeps only the runs at or above a floor and proves
@@ -136,7 +146,7 @@ def monitor(automaton: SymbolicAutomaton, trace: Trace, floors: tuple[float, ...
     ``floors``: for the tests and the benchmark, which compare with a single pass that keeps every
     run, ``(-math.inf,)``.
     """
-    margins = _Margins(automaton, trace)
+    margins = _Margins(automaton, trace, begins_by)
     if floors is not None:
         for floor in floors:
             verdict = _RunSearch(automaton, trace, floor, margins).run().verdict()
@@ -186,6 +196,7 @@ class _Untimed:
         # moved[q, k]: every actor driving in q moved forward over (k, k+1]; the initial location
         # holds a fresh run at every sample
         self.moved = margins.moved.copy()
+        self.begins = margins.begins
         self.moved[automaton.initial] = True
 
     def bound(self) -> float:
@@ -195,7 +206,8 @@ class _Untimed:
         best = -math.inf
         for k in range(self.samples):
             staying = np.where(self.moved[:, k - 1], values, -math.inf) if k > 0 else np.full_like(values, -math.inf)
-            staying[init] = math.inf
+            if self.begins[k]:
+                staying[init] = math.inf
             values = np.minimum(staying, self.invariants[:, k])
             np.maximum.at(values, self.targets, np.minimum(staying[self.sources], self.guards[:, k]))
             best = max(best, float(values[final]))
@@ -223,11 +235,14 @@ class _Untimed:
 
 class _Margins:
     """What every search of one trace reads, computed once, column-wise: each guard's and
-    invariant's robustness at every sample, whether each actor moved forward over each step, and
-    the columns the phases' two-end bounds read (speed for a mean acceleration, x for a distance)."""
+    invariant's robustness at every sample, whether each actor moved forward over each step, the
+    columns the phases' two-end bounds read (speed for a mean acceleration, x for a distance), and
+    the samples at which the scenario may begin."""
 
-    def __init__(self, automaton: SymbolicAutomaton, trace: Trace) -> None:
+    def __init__(self, automaton: SymbolicAutomaton, trace: Trace, begins_by: float = math.inf) -> None:
         memo: dict = {}  # each bound's series, shared by the guards and invariants that use it
+        # begins[k]: the initial location may be left at sample k (the scenario begins by ``begins_by`` s)
+        self.begins = (trace.times <= begins_by + 1e-9).tolist()
         guards = [t.guard.robustness_series(trace.actors, memo) for t in automaton.transitions]
         self.guard = dict(zip([t.id for t in automaton.transitions], np.array(guards).tolist(), strict=True))
         held = [q for q in range(len(automaton.locations)) if not automaton.location(q).invariant.is_true]
@@ -295,6 +310,7 @@ class _RunSearch:
         self.invariant_locations = sorted(margins.invariant)
         self.guard_margin, self.invariant_margin = margins.guard, margins.invariant
         self.progress, self.columns = margins.progress, margins.columns
+        self.begins = margins.begins
         self.moved = margins.moved_lists
         # the bound over a phase's two ends that came closest to its range where all else held, for
         # the report: (margin, sample, location, rate)
@@ -350,7 +366,8 @@ class _RunSearch:
         """The runs that stay: in q at k-1, q's drivers progressed over (k-1, k], no timed phase overran."""
         init, times = self.automaton.initial, self.times
         surviving: list[dict[Key, tuple[float, tuple]]] = [{} for _ in range(self.n_loc)]
-        surviving[init] = {(): (math.inf, ())}
+        if self.begins[k]:
+            surviving[init] = {(): (math.inf, ())}
         for q in range(self.n_loc):
             if q == init or not self.states[q] or k == 0:
                 continue

@@ -57,6 +57,13 @@ class Plan:
     side_routes: dict[str, tuple[Route, float]] = field(default_factory=dict, compare=False, repr=False)
 
     @property
+    def begins_by(self) -> float:
+        """The latest time of its simulation's trace (s) at which the scenario begins: 0 without
+        a run-up (the simulation starts in the plan's first state); after one, the run-up and one
+        step (the vehicles reach their first states only as closely as they track the run-up)."""
+        return self.runup + self.dt if self.runup > 0 else 0.0
+
+    @property
     def horizon(self) -> int:
         return len(next(iter(self.states.values()))) - 1
 

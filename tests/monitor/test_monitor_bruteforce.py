@@ -58,12 +58,14 @@ def paths(automaton: SymbolicAutomaton):
     return list(walk(automaton.initial, []))
 
 
-def brute_force_robustness(automaton: SymbolicAutomaton, trace: Trace) -> float:
+def brute_force_robustness(automaton: SymbolicAutomaton, trace: Trace, begins_by: float = math.inf) -> float:
     snapshots = trace.snapshots()
     x = {name: trace.actors[name]["x"] for name in trace.names}
     best = -math.inf
     for path in paths(automaton):
         for samples in itertools.combinations(range(len(snapshots)), len(path)):
+            if trace.times[samples[0]] > begins_by + 1e-9:
+                continue  # the scenario begins too late
             margin = math.inf
             is_run = True
             started = {}
@@ -186,10 +188,13 @@ def test_the_monitor_agrees_with_the_brute_force_semantics(path):
     assert monitor(automaton, planned).accepted, "a plan, read as a trace, meets its scenario"
 
     @settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
-    @given(st.one_of(traces(automaton.actors, automaton.stationary, n_max), perturbed(planned, n_max)))
-    def check(trace):
-        expected = brute_force_robustness(automaton, trace)
-        verdict = monitor(automaton, trace)
+    @given(
+        st.one_of(traces(automaton.actors, automaton.stationary, n_max), perturbed(planned, n_max)),
+        st.sampled_from([math.inf, 0.0, 2 * DT]),  # the scenario begins at any sample, the first, or by the third
+    )
+    def check(trace, begins_by):
+        expected = brute_force_robustness(automaton, trace, begins_by)
+        verdict = monitor(automaton, trace, begins_by=begins_by)
         if expected == -math.inf:
             assert verdict.robustness == -math.inf
         else:
@@ -200,7 +205,14 @@ def test_the_monitor_agrees_with_the_brute_force_semantics(path):
         if verdict.robustness < 0:
             assert not verdict.accepted
         # the monitor's passes with a floor drop runs below it: the verdict is the one that keeps them all
-        every_run = monitor(automaton, trace, floors=(-math.inf,))
+        every_run = monitor(automaton, trace, floors=(-math.inf,), begins_by=begins_by)
         assert (verdict.furthest, verdict.run, verdict.miss) == (every_run.furthest, every_run.run, every_run.miss)
 
     check()
+
+
+def test_a_plan_without_a_run_up_begins_its_scenario_at_the_first_sample_and_one_with_a_run_up_by_its_end():
+    from pytest_roadlogic.planning.plan import Plan
+
+    assert Plan(dt=1.0, lanes=3, states={}, transitions=[], runup=0.0).begins_by == 0.0
+    assert Plan(dt=1.0, lanes=3, states={}, transitions=[], runup=7.0).begins_by == 8.0
