@@ -393,6 +393,7 @@ class _LaneChange:
 
 class ChangeLaneAction(_LaneChange, Action):
     asks = ASKS_LANE
+    ends_at_target = True
     signature = Signature(
         "change_lane",
         (
