@@ -5,11 +5,10 @@
   f_A is fused with every transition out of i_B into one transition guarded by both (the end of A
   and the start of B happen at the same split point, as the semantics demands).
 - parallel A || B: the product, built only over reachable locations. A component that ends of
-  itself (a duration, an until, a wait, ``Action.ends_at_target``) may, as the parallel's
-  ``overlap:`` allows, stay at its initial location while others move (a late start) or reach its
-  final location before them and stay there (an early end); the others leave theirs together and
-  reach theirs with the last of those, or when the parallel's own duration is over; in between
-  they move alone or jointly.
+  itself (a duration, an until, a wait, ``Action.ends_at_target``) may, as the parallel's ``overlap:`` allows, stay at its
+  initial location while others move (a late start) or reach its final location before them and
+  stay there (an early end); the others leave theirs together and reach theirs with the last of
+  those, or when the parallel's own duration is over; in between they move alone or jointly.
 - one_of A | B: the union, with a fresh initial and final location.
 - events: ``emit e`` is no phase but a mark on the instant between its serial neighbours;
   ``wait @e`` and ``until @e`` end their phase on an edge that *awaits* e. The product of a
@@ -446,8 +445,8 @@ class _Overlap:
     """How a parallel's members sit in time (the standard, 7.6.2.1.4), the first member being the
     primary: which may start after the parallel starts, which may end before it ends, and the
     order of starts and ends the kind asks. Only a member that ends of itself (a duration, an
-    until, a wait, a change_lane) starts late or ends early: one with nothing to end it spans the
-    parallel, since nothing its author wrote says when it would start or stop otherwise."""
+    until, a wait) starts late or ends early: one with nothing to end it spans the parallel, since
+    nothing its author wrote says when it would start or stop otherwise."""
 
     kind: str
 
