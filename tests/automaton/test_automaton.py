@@ -359,9 +359,11 @@ def test_overlap_inside_with_a_secondary_longer_than_the_primary_has_no_plan_and
         next(ContinuousPlanner(build_automaton(check_text(text).scenarios[0])).plans(limit=1))
 
 
-def test_a_change_lane_action_ends_of_itself_beside_a_timed_drive():
-    # as OpenSCENARIO 1.x's lane change and CARLA's runner end it: once the lane is reached
-    text = "scenario s:\n  a: car\n  b: car\n  do parallel:\n    a.drive(duration: 8s)\n    b.change_lane(1, left)\n"
-    assert ("b.change_lane end",) in _phase_ends(text)  # it may end while a drives on
+def test_a_change_lane_or_change_speed_action_ends_of_itself_beside_a_timed_drive():
+    # as OpenSCENARIO 1.x's actions and CARLA's runner end them: once the lane or speed is reached
+    for action in ("b.change_lane(1, left)", "b.change_speed(20mps)"):
+        text = f"scenario s:\n  a: car\n  b: car\n  do parallel:\n    a.drive(duration: 8s)\n    {action}\n"
+        name = action.split("(")[0]
+        assert (f"{name} end",) in _phase_ends(text), action  # it may end while a drives on
     drive = "scenario s:\n  a: car\n  b: car\n  do parallel:\n    a.drive(duration: 8s)\n    b.drive()\n"
     assert _phase_ends(drive) == [("a.drive end", "b.drive end")]  # a drive has no end of its own
