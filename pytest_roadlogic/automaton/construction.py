@@ -5,7 +5,7 @@
   f_A is fused with every transition out of i_B into one transition guarded by both (the end of A
   and the start of B happen at the same split point, as the semantics demands).
 - parallel A || B: the product, built only over reachable locations. A component that ends of
-  itself (a duration, an until, a wait, ``Action.ends_at_target``) may, as the parallel's ``overlap:`` allows, stay at its
+  itself (a duration, an until, a wait) may, as the parallel's ``overlap:`` allows, stay at its
   initial location while others move (a late start) or reach its final location before them and
   stay there (an early end); the others leave theirs together and reach theirs with the last of
   those, or when the parallel's own duration is over; in between they move alone or jointly.
@@ -90,8 +90,7 @@ class _Fragment:
     listening: dict[Key, frozenset[str]] = field(default_factory=dict)
     # (actor, "lane" | "speed"): what the actors' own constructs ask of them here (Location.asks)
     asks: dict[Key, frozenset[tuple[str, Ask]]] = field(default_factory=dict)
-    # it ends of itself (a duration, an until, a wait, an action that ends at its target): in a
-    # parallel it may end before the others
+    # it ends of itself (a duration, an until, a wait): in a parallel it may end before the others
     ends_itself: bool = False
 
     def outgoing(self, key: Key) -> list[_Edge]:
@@ -171,16 +170,9 @@ class _Builder:
             fragment = self.timed(fragment, name, low, high, duration.location, rates)
         elif rates:  # timed for its start and end only
             fragment = self.timed(fragment, name, 0.0, math.inf, None, rates)
-        if duration is not None or (
-            isinstance(behavior, model.Invocation) and (behavior.until is not None or self._ends_at_target(behavior))
-        ):
+        if duration is not None or (isinstance(behavior, model.Invocation) and behavior.until is not None):
             fragment.ends_itself = True
         return fragment
-
-    def _ends_at_target(self, invocation: model.Invocation) -> bool:
-        """Whether the invoked action ends of itself once its actor has what it asks (``Action.ends_at_target``)."""
-        action = self.checked.registry.action(invocation.action)
-        return action is not None and action.ends_at_target
 
     def composition(self, behavior: model.Composition) -> _Fragment:
         check_behavior_arguments(behavior)

@@ -184,11 +184,6 @@ class Action(Construct):
     # False: the actor stands still in the phase (it need not make progress); the only kind of
     # action a stationary object may take
     moves: ClassVar[bool] = True
-    # True: the action ends of itself once its actor has what it asks (a lane change made, a speed
-    # reached), as OpenSCENARIO 1.x's actions and CARLA's runner end them, so that in a parallel
-    # it may end before the others (``automaton.construction``); False: it lasts as its
-    # composition says (a drive has no end of its own)
-    ends_at_target: ClassVar[bool] = False
 
 
 class Modifier(Construct):

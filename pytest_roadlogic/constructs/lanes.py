@@ -393,7 +393,6 @@ class _LaneChange:
 
 class ChangeLaneAction(_LaneChange, Action):
     asks = ASKS_LANE
-    ends_at_target = True
     signature = Signature(
         "change_lane",
         (

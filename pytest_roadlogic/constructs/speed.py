@@ -142,7 +142,6 @@ class ChangeSpeed(Action):
     bounds the acceleration within -p..p on every step (the monitor judges the mean)."""
 
     asks = ASKS_SPEED
-    ends_at_target = True
     signature = Signature(
         "change_speed",
         (

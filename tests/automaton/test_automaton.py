@@ -357,13 +357,3 @@ def test_overlap_inside_with_a_secondary_longer_than_the_primary_has_no_plan_and
     text = "scenario s:\n  a: car\n  b: car\n  do parallel(overlap: inside):\n    a.drive(duration: 3s)\n    b.drive(duration: 5s)\n"
     with pytest.raises(UnsatisfiableScenario, match=r"a\.drive lasts 2\.5\.\.3\.5 s .* b\.drive lasts 4\.5\.\.5\.5 s"):
         next(ContinuousPlanner(build_automaton(check_text(text).scenarios[0])).plans(limit=1))
-
-
-def test_a_change_lane_or_change_speed_action_ends_of_itself_beside_a_timed_drive():
-    # as OpenSCENARIO 1.x's actions and CARLA's runner end them: once the lane or speed is reached
-    for action in ("b.change_lane(1, left)", "b.change_speed(20mps)"):
-        text = f"scenario s:\n  a: car\n  b: car\n  do parallel:\n    a.drive(duration: 8s)\n    {action}\n"
-        name = action.split("(")[0]
-        assert (f"{name} end",) in _phase_ends(text), action  # it may end while a drives on
-    drive = "scenario s:\n  a: car\n  b: car\n  do parallel:\n    a.drive(duration: 8s)\n    b.drive()\n"
-    assert _phase_ends(drive) == [("a.drive end", "b.drive end")]  # a drive has no end of its own
