@@ -194,7 +194,7 @@ class _Untimed:
         for q, series in margins.invariant.items():
             self.invariants[q] = series
         # moved[q, k]: every actor driving in q moved forward over (k, k+1]; the initial location
-        # holds a fresh run at every sample
+        # holds a fresh run at every sample the scenario may begin at
         self.moved = margins.moved.copy()
         self.begins = margins.begins
         self.moved[automaton.initial] = True
