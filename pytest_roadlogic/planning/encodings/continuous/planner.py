@@ -43,12 +43,12 @@ BACKGROUND = (
     ASP_DIR / "guards.lp",
     ASP_CONTINUOUS / "dynamics.lp",
     ASP_CONTINUOUS / "guards.lp",
-    ASP_CONTINUOUS / "rates.lp",
     ASP_CONTINUOUS / "steer.lp",
     LEAST_ACTION,
 )
 # read only by the scenarios that use them (each is inert without its facts, and every file
 # grounded costs each ground call its statements)
+RATES = ASP_CONTINUOUS / "rates.lp"  # a bound over a timed phase (an acceleration, a distance, a kept speed)
 TOWARD = ASP_CONTINUOUS / "toward.lp"  # a target speed (CARLA's speed(v))
 REPLAN = ASP_CONTINUOUS / "replan.lp"  # a replan's facts (reactive/replanner.py)
 ROUTE = ASP_CONTINUOUS / "route.lp"  # a map's route (roads/route.py)
@@ -124,8 +124,10 @@ class ContinuousPlanner(IncrementalPlanner):
         """The encoding's files this planner grounds: ``BACKGROUND`` and those of the extensions
         its scenario, settings and replan use, in one order for every control."""
         toward = any(location.targets() for location in self.automaton.locations)
+        rates = any(timing.rates for timing in self.automaton.timings.values())
         return (
             *BACKGROUND,
+            *((RATES,) if rates else ()),
             *((TOWARD,) if toward else ()),
             *((REPLAN,) if self.past else ()),
             *((ROUTE,) if self.settings.route_span is not None else ()),
