@@ -193,6 +193,12 @@ class IncrementalPlanner:
             self._own_window.wait, self._own_window.deadline = self._waiter(deadline), deadline
             return self._own_window
         floor = shortest_run(self.automaton, self.settings.dt) if instance is None else 0
+        automaton = self.automaton
+        untimed = (
+            instance is None
+            and not automaton.timings
+            and not any(t.source == automaton.initial and t.target == automaton.final for t in automaton.transitions)
+        )
         window = DurationWindow(
             AUTOMATON,
             instance or self.instance,
@@ -200,6 +206,7 @@ class IncrementalPlanner:
             assumptions,
             floor,
             deadline,
+            untimed,
         )
         if instance is None:
             self._own_window = window

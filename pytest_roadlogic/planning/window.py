@@ -43,7 +43,10 @@ class DurationWindow:
 
     ``base_program`` holds the automaton's facts (and, for the diagnosis, ``relaxed(K)``
     externals: ``assumptions`` are those kept, and a relaxed duration leaves its phase open).
-    ``wait(handle, message)`` waits for a solve and raises when time is up.
+    ``wait(handle, message)`` waits for a solve and raises when time is up. ``untimed``: the
+    automaton has no timed phase and no transition from its initial location straight into its
+    final one, so a run can end at any step from ``floor`` on and still be under way at any step:
+    the window answers so without a solver, and a plain scenario's every sample saves one.
     """
 
     def __init__(
@@ -54,8 +57,18 @@ class DurationWindow:
         assumptions: list | None = None,
         floor: int = 0,
         deadline: float = math.inf,
+        untimed: bool = False,
     ) -> None:
         self.deadline = deadline
+        self.untimed = untimed
+        self.wait = wait
+        self.assumptions = assumptions or []
+        self.grounded = -1
+        self.floor = floor  # no run ends before this step (the caller's proof: shortest_run)
+        self.answers: dict[tuple[str, int], bool] = {}
+        self.grounding = 0.0  # seconds spent grounding
+        if untimed:
+            return
         # --eq=0: no equivalence preprocessing, which cannot be interrupted and answers no
         # question the window asks (whether a run ends by, or is open at, a step): 200 one-second
         # phases spent 6.7 s in it before a solve could be cancelled, 2.4 s without
@@ -71,12 +84,6 @@ class DurationWindow:
             + "\n"
             + OPEN,
         )
-        self.wait = wait
-        self.assumptions = assumptions or []
-        self.grounded = -1
-        self.floor = floor  # no run ends before this step (the caller's proof: shortest_run)
-        self.answers: dict[tuple[str, int], bool] = {}
-        self.grounding = 0.0  # seconds spent grounding
 
     def _ground_to(self, horizon: int) -> None:
         if horizon <= self.grounded:
@@ -109,6 +116,8 @@ class DurationWindow:
         self.grounding += time.perf_counter() - start
 
     def _holds(self, external: str, horizon: int) -> bool:
+        if self.untimed:
+            return horizon >= self.floor if external == "query" else True
         if (external, horizon) not in self.answers:
             self.answers[(external, horizon)] = self._solve(external, horizon)
         return self.answers[(external, horizon)]

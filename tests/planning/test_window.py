@@ -77,3 +77,16 @@ def test_a_plan_may_need_one_step_after_the_last_end_and_no_more():
     assert window.last_open(120) == 2, "under way at step 2, ended at 3"
     assert window.last_horizon(120) == 4, "the last end, and one step for the checks of a plan's last state"
     assert [window.past_end(h) for h in range(2, 7)] == [False, False, False, True, True]
+
+
+@pytest.mark.parametrize("path", [p for p in FILES if not automaton_of(p).timings], ids=lambda path: path.stem)
+def test_a_window_without_timed_phases_answers_as_its_solver_would(path):
+    # the scenario's own window of an automaton without durations answers without a solver
+    automaton = automaton_of(path)
+    planner = ContinuousPlanner(automaton, ContinuousSettings(), 1)
+    own = planner.window(time.monotonic() + 60)
+    assert own.untimed
+    solved = window_without_floor(automaton, 1.0)
+    for horizon in range(0, 30):
+        assert own.ends_by(horizon) == solved.ends_by(horizon), f"ends by step {horizon}"
+        assert own.open_at(horizon) == solved.open_at(horizon), f"under way at step {horizon}"
