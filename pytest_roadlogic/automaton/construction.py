@@ -500,17 +500,17 @@ def _parallel(children: list[_Fragment], overlap: _Overlap, location=None, timed
             _check_size(
                 math.prod(len(o) for o in options) - 1, location, "parallel"
             )  # an upper bound of the edges it makes, before making them
-        # a member with nothing to end it lasts as long as the parallel: it ends with the last
-        # member that ends of itself, so no combination leaves only such members going on
-        mixed = (
-            c
-            for c in itertools.product(*going_on)
-            if not _all_final(c, current, children) and (timed or _one_ending_itself_goes_on(c, current, children))
+        combinations = itertools.chain(
+            ((c, True) for c in itertools.product(*going_on)), ((c, False) for c in itertools.product(*ending))
         )
-        for combination in itertools.chain(mixed, itertools.product(*ending)):
+        for combination, mixed in combinations:
             if all(m is None for m in combination):
                 continue
             target = tuple(m.target if m is not None else key for m, key in zip(combination, current))
+            # a member with nothing to end it lasts as long as the parallel: it ends with the last
+            # member that ends of itself, so no combination leaves only such members going on
+            if mixed and (_all_final(target, children) or not (timed or _one_ending_itself_goes_on(target, children))):
+                continue
             if not overlap.keeps_order(target, children):
                 continue
             moving = [m for m in combination if m is not None]
@@ -547,16 +547,16 @@ def _parallel(children: list[_Fragment], overlap: _Overlap, location=None, timed
     return _Fragment(initial, final, edges, names, drivers, invariants, listening, asks)
 
 
-def _all_final(combination, current, children) -> bool:
-    """Whether ``combination`` (a move or None per member) leaves every member at its end."""
-    return all((m.target if m is not None else key) == c.final for m, key, c in zip(combination, current, children))
+def _all_final(target: tuple[Key, ...], children: list[_Fragment]) -> bool:
+    """Whether members at ``target`` are all at their ends."""
+    return all(key == c.final for key, c in zip(target, children))
 
 
-def _one_ending_itself_goes_on(combination, current, children) -> bool:
-    """Whether, after ``combination``, a member that ends of itself is still going on (or none
-    of the members ends of itself, and all go on together)."""
-    selfending = [(m, key, c) for m, key, c in zip(combination, current, children) if c.ends_itself]
-    return not selfending or any((m.target if m is not None else key) != c.final for m, key, c in selfending)
+def _one_ending_itself_goes_on(target: tuple[Key, ...], children: list[_Fragment]) -> bool:
+    """Whether, with members at ``target``, a member that ends of itself is still going on (or
+    none of the members ends of itself, and all go on together)."""
+    selfending = [(key, c) for key, c in zip(target, children) if c.ends_itself]
+    return not selfending or any(key != c.final for key, c in selfending)
 
 
 def _one_of(children: list[_Fragment], uid: int) -> _Fragment:

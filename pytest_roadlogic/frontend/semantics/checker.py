@@ -13,6 +13,7 @@ their signatures, and what each validates beyond its arguments' kinds, live ther
 from __future__ import annotations
 
 import math
+from collections.abc import Collection
 from dataclasses import dataclass, replace
 from pathlib import Path
 
@@ -334,15 +335,19 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks, EnvironmentAc
         """A scenario that belongs to a road user (``scenario vehicle.two_phases:``, the standard's
         examples) run as the main scenario: its invocations that name no actor are that vehicle's,
         an actor named after its type (``vehicle``) that ``_scenario`` adds."""
-        owner = scenario.actor_type
-        if (
-            owner is None
-            or owner in library.SCENARIO_OWNERS
-            or self._actor_base(owner) is None
-            or any(item.name == owner for item in scenario.fields)
-        ):
+        owner = self._implicit_owner(scenario, {item.name for item in scenario.fields})
+        if owner is None:
             return scenario
         return _rewritten(scenario, lambda node: owned_by(node, owner))
+
+    def _implicit_owner(self, scenario: model.Scenario, declared: Collection[str]) -> str | None:
+        """The road user ``scenario`` belongs to (``scenario vehicle.two_phases:``) when no field
+        of that name is ``declared``: the actor that drives its invocations naming none. None for
+        an owner that does not drive (traffic, dut, ...) or a type that is no road user."""
+        owner = scenario.actor_type
+        if owner is None or owner in library.SCENARIO_OWNERS or owner in declared or self._actor_base(owner) is None:
+            return None
+        return owner
 
     def _string_constants(self, scenario: model.Scenario, globals_: tuple[model.Field, ...]) -> model.Scenario:
         """The scenario with each string parameter that is a constant (a value, no constraint)
@@ -526,12 +531,11 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks, EnvironmentAc
         self.turn_labels = {
             m.label for m in scenario.modifiers if m.label is not None and m.name == "roads_follow_in_junction"
         }
-        owner = scenario.actor_type
-        if owner not in declared and owner not in library.SCENARIO_OWNERS and _mentions(scenario, owner or ""):
-            base = self._actor_base(owner)
-            if base is not None:  # the vehicle the scenario belongs to, which drives its actor-less invocations
-                actors.append(model.Actor(owner, owner, scenario.location, base))
-                declared[owner] = scenario.location
+        owner = self._implicit_owner(scenario, declared)
+        if owner is not None and _mentions(scenario, owner):
+            # the vehicle the scenario belongs to, which drives its actor-less invocations
+            actors.append(model.Actor(owner, owner, scenario.location, self._actor_base(owner)))
+            declared[owner] = scenario.location
         for implicit in library.IMPLICIT_VEHICLES:
             if implicit not in declared and _mentions(scenario, implicit):
                 actors.append(model.Actor(implicit, "vehicle", scenario.location, "vehicle"))
