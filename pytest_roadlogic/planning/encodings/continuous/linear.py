@@ -33,11 +33,9 @@ from fractions import Fraction
 
 import clingo
 
-# imported here, never first inside clingo's solving thread: scipy imported there leaves a thread
-# that makes the interpreter hang at exit
+# imported here, never first inside clingo's solving thread
 import highspy
 import numpy as np
-from scipy.sparse import csr_matrix, hstack, identity, vstack
 
 from ...core import ASP_DIR, read_programs
 from ...highs import quiet_highs
@@ -302,16 +300,34 @@ class LazyLinearPropagator:
         control.propagate()
 
 
-def _matrix(rows: list[tuple[Row, int]], n: int):
-    data, indices, pointers, bounds = [], [], [0], []
-    for row, _ in rows:
-        for variable, coefficient in row.coefficients.items():
-            if coefficient:
-                indices.append(variable)
-                data.append(coefficient)
-        pointers.append(len(indices))
-        bounds.append(row.bound)
-    return csr_matrix((data, indices, pointers), shape=(len(rows), n)), np.array(bounds)
+@dataclass(frozen=True)
+class SparseRows:
+    """Rows in compressed sparse row form, as HiGHS reads a matrix row-wise: row ``i``'s
+    coefficients are ``value[start[i]:start[i + 1]]`` on the columns ``index[...]``."""
+
+    start: np.ndarray
+    index: np.ndarray
+    value: np.ndarray
+    bound: np.ndarray
+
+    @classmethod
+    def of(cls, rows: list[Row]) -> SparseRows:
+        """The rows' non-zero coefficients and their bounds."""
+        index, value, start = [], [], [0]
+        for row in rows:
+            for variable, coefficient in row.coefficients.items():
+                if coefficient:
+                    index.append(variable)
+                    value.append(coefficient)
+            start.append(len(index))
+        bound = np.array([row.bound for row in rows], dtype=float)
+        return cls(
+            np.array(start, dtype=np.int32), np.array(index, dtype=np.int32), np.array(value, dtype=float), bound
+        )
+
+    @property
+    def nnz(self) -> int:
+        return len(self.index)
 
 
 @dataclass
@@ -325,37 +341,37 @@ class LinearResult:
     duals: np.ndarray
 
 
-def solve_linear(cost: np.ndarray, a_ub, b_ub: np.ndarray, a_eq, b_eq: np.ndarray, lower: np.ndarray) -> LinearResult:
-    """min cost.x subject to a_ub x <= b_ub, a_eq x = b_eq, x >= lower (-inf: free), with HiGHS.
+def solve_linear(cost: np.ndarray, upper: list[Row], equal: list[Row], lower: np.ndarray) -> LinearResult:
+    """min cost.x subject to the rows ``upper`` (sum <= bound) and ``equal`` (sum = bound),
+    x >= lower (-inf: free), with HiGHS. The duals are those of the ``upper`` rows.
 
     Why highspy and not scipy's linprog (the same HiGHS inside): linprog's checks and conversions
     cost several times what HiGHS's own solve does on a small program (docs/decisions.md).
     """
-    n = len(cost)
-    matrix = vstack([a_ub, a_eq], format="csc")
-    inf = highspy.kHighsInf
+    n, inf = len(cost), highspy.kHighsInf
+    matrix = SparseRows.of(upper + equal)
     lp = highspy.HighsLp()
-    lp.num_col_, lp.num_row_ = n, matrix.shape[0]
+    lp.num_col_, lp.num_row_ = n, len(upper) + len(equal)
     lp.col_cost_ = np.asarray(cost, dtype=float)
     lp.col_lower_ = np.where(np.isinf(lower), -inf, lower)
     lp.col_upper_ = np.full(n, inf)
-    lp.row_lower_ = np.concatenate([np.full(a_ub.shape[0], -inf), b_eq])
-    lp.row_upper_ = np.concatenate([b_ub, b_eq])
-    lp.a_matrix_.format_ = highspy.MatrixFormat.kColwise
-    lp.a_matrix_.start_ = matrix.indptr
-    lp.a_matrix_.index_ = matrix.indices
-    lp.a_matrix_.value_ = matrix.data
+    lp.row_lower_ = np.concatenate([np.full(len(upper), -inf), matrix.bound[len(upper) :]])
+    lp.row_upper_ = matrix.bound
+    lp.a_matrix_.format_ = highspy.MatrixFormat.kRowwise
+    lp.a_matrix_.start_ = matrix.start
+    lp.a_matrix_.index_ = matrix.index
+    lp.a_matrix_.value_ = matrix.value
     solver = quiet_highs()
     solver.passModel(lp)
     solver.run()
     if solver.getModelStatus() != highspy.HighsModelStatus.kOptimal:
-        return LinearResult(False, np.zeros(n), math.inf, np.zeros(a_ub.shape[0]))
+        return LinearResult(False, np.zeros(n), math.inf, np.zeros(len(upper)))
     solution = solver.getSolution()
     return LinearResult(
         True,
         np.array(solution.col_value),
         solver.getInfo().objective_function_value,
-        np.array(solution.row_dual[: a_ub.shape[0]]),
+        np.array(solution.row_dual[: len(upper)]),
     )
 
 
@@ -384,6 +400,7 @@ class SwitchedCheck:
         self.row = np.zeros(0, dtype=np.int32)  # per switched half-row: its row in the model
         self.bound = np.zeros(0)  # per switched half-row: its bound when on
         self.on = np.zeros(0, dtype=bool)  # per switched half-row: on in the model now
+        self.halves_of: dict[int, list[int]] = defaultdict(list)  # per literal: its half-rows
 
     def _sync(self, program: LinearProgram) -> None:
         highs, inf = self.highs, highspy.kHighsInf
@@ -422,25 +439,30 @@ class SwitchedCheck:
             self.bound = np.concatenate([self.bound, [half.bound for half, _ in halves]])
             self.row = np.concatenate([self.row, np.arange(first, first + m, dtype=np.int32)])
             self.on = np.concatenate([self.on, np.zeros(m, dtype=bool)])
+            for offset, (_, literal) in enumerate(halves):
+                self.halves_of[literal].append(len(self.on) - m + offset)
 
     def _add_rows(self, rows: list[Row], lower: list[float], upper: list[float]) -> None:
-        matrix, _ = _matrix([(row, 0) for row in rows], len(self.column))
-        columns = np.asarray(self.column, dtype=np.int32)[matrix.indices]  # the model's columns
+        matrix = SparseRows.of(rows)
+        columns = np.asarray(self.column, dtype=np.int32)[matrix.index]  # the model's columns
         self.highs.addRows(
             len(rows),
             np.array(lower, dtype=float),
             np.array(upper, dtype=float),
             matrix.nnz,
-            matrix.indptr[:-1].astype(np.int32),
+            matrix.start[:-1],
             columns,
-            matrix.data.astype(float),
+            matrix.value,
         )
 
     def conflict(self, program: LinearProgram, on: list[int]) -> list[int] | None | bool:
         """The literals of ``on`` whose rows cannot hold together with those that always hold,
         None when they can, False when HiGHS gave no certificate (the caller decides another way)."""
         self._sync(program)
-        wanted = np.isin(self.literal, np.asarray(on, dtype=np.int64))
+        wanted = np.zeros(len(self.on), dtype=bool)
+        for literal in on:
+            if literal in self.halves_of:
+                wanted[self.halves_of[literal]] = True
         changed = np.flatnonzero(wanted != self.on)
         if len(changed):
             inf = highspy.kHighsInf
@@ -470,22 +492,18 @@ def _elastic_conflict(program: LinearProgram, on: list[int]) -> list[int] | None
         return None
     n = len(program.symbols)
     inequalities, equalities = program.hard()
-    (hard_ub, hard_b), (eq, eq_b) = _matrix(inequalities, n), _matrix(equalities, n)
-    soft, soft_b = _matrix(elastic, n)
-    m = len(elastic)
     # min sum(s): soft x - s <= b, s >= 0
-    a_ub = vstack(
-        [hstack([hard_ub, csr_matrix((hard_ub.shape[0], m))]), hstack([soft, -identity(m, format="csr")])], format="csr"
-    )
-    b_ub = np.concatenate([hard_b, soft_b])
-    a_eq = hstack([eq, csr_matrix((eq.shape[0], m))], format="csr")
+    soft = [Row({**half.coefficients, n + j: -1.0}, half.bound) for j, (half, _) in enumerate(elastic)]
+    m = len(elastic)
     cost = np.concatenate([np.zeros(n), np.ones(m)])
-    result = solve_linear(cost, a_ub, b_ub, a_eq, eq_b, np.concatenate([np.full(n, -np.inf), np.zeros(m)]))
+    upper = [row for row, _ in inequalities] + soft
+    lower = np.concatenate([np.full(n, -np.inf), np.zeros(m)])
+    result = solve_linear(cost, upper, [row for row, _ in equalities], lower)
     if not result.optimal:
         return sorted(set(on))
     if result.cost <= INFEASIBLE:
         return None
-    duals = result.duals[hard_ub.shape[0] :]
+    duals = result.duals[len(inequalities) :]
     conflict = sorted({literal for (_, literal), dual in zip(elastic, duals) if abs(dual) > 1e-9})
     return conflict or sorted(set(on))
 
@@ -546,27 +564,22 @@ def smooth(
     expressions = [{i: 1.0} for i, _ in accelerations]
     expressions += [{i: 1.0, index[(v, t - 1)]: -1.0} for (v, t), i in index.items() if (v, t - 1) in index]
     absolutes = len(expressions)
-    ub, b = _matrix(inequalities, n)
-    eq, eq_b = _matrix(equalities, n)
     extra = []
     for j, expression in enumerate(expressions):
         for sign in (1.0, -1.0):
             coefficients = {i: sign * c for i, c in expression.items()}
             coefficients[n + j] = -1.0
-            extra.append((Row(coefficients, 0.0), 0))
+            extra.append(Row(coefficients, 0.0))
     # a preference row r: r.x - s <= r.bound with s >= 0 at the preference's weight
     halves = [(half, weight) for row, weight in preferred for half in _split([row])]
     for j, (row, _) in enumerate(halves):
-        extra.append((Row({**row.coefficients, n + absolutes + j: -1.0}, row.bound), 0))
+        extra.append(Row({**row.coefficients, n + absolutes + j: -1.0}, row.bound))
     weights = [1.0] * absolutes + [weight for _, weight in halves]  # one per extra variable
     slacks = len(weights)
-    extra_ub, extra_b = _matrix(extra, n + slacks)
-    a_ub = vstack([hstack([ub, csr_matrix((ub.shape[0], slacks))]), extra_ub], format="csr")
-    a_eq = hstack([eq, csr_matrix((eq.shape[0], slacks))], format="csr")
     cost = np.concatenate([np.zeros(n), weights])
-    result = solve_linear(
-        cost, a_ub, np.concatenate([b, extra_b]), a_eq, eq_b, np.concatenate([np.full(n, -np.inf), np.zeros(slacks)])
-    )
+    upper = [row for row, _ in inequalities] + extra
+    lower = np.concatenate([np.full(n, -np.inf), np.zeros(slacks)])
+    result = solve_linear(cost, upper, [row for row, _ in equalities], lower)
     return Smoothed(result.x[:n], result.cost) if result.optimal else None
 
 
