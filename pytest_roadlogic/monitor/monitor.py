@@ -28,6 +28,10 @@ from ..logic.automaton import SymbolicAutomaton
 from ..logic.guards import Bound, Guard
 from ..simulation.trace import Incident, Trace
 
+# the depth-first searches for a run above a floor (``_Witness``) give up after this many states
+# per sample of the trace, all together, on a trace whose runs branch more than a run's path does
+WITNESS_BUDGET = 20
+
 
 @dataclass(frozen=True)
 class GuardMiss:
@@ -137,11 +141,10 @@ def monitor(
        and its robustness is exact. The report of a rejected trace (the furthest location, the
        closest miss) reads only these runs.
     2. A rejected trace's robustness, the best of the runs below 0, is bracketed: above by the
-       same search with the phases' durations and two-end bounds dropped (``_untimed_bound``: one
-       state per location, vectorised over transitions), below by a run found keeping the single
-       best state per location (a beam of one). When a search at the upper bound's floor finds a
-       run there, or the bounds meet, that is the robustness; else a search above the lower bound
-       keeps only the runs that could beat it.
+       same search with the phases' durations and two-end bounds dropped (``_Untimed``: one
+       state per location, vectorised over transitions), below by a run found depth first
+       (``_Witness``). When a run keeps every margin at the upper bound, that is the robustness;
+       else a search above the lower bound keeps only the runs that could beat it.
 
     ``floors``: for the tests and the benchmark, which compare with a single pass that keeps every
     run, ``(-math.inf,)``.
@@ -160,20 +163,90 @@ def monitor(
 
 
 def _rejected_robustness(automaton: SymbolicAutomaton, trace: Trace, margins: _Margins) -> float:
-    """The best robustness of any run of a trace no run meets (the largest smallest margin)."""
+    """The best robustness of any run of a trace no run meets (the largest smallest margin).
+
+    Bounded above by the untimed search; a depth-first search (``_Witness``) looks for a run at
+    that bound, which most often exists (what binds is a guard, not a duration), and else for any
+    run, whose robustness bounds the answer below. The runs that could beat that one are then
+    searched sample by sample. Should the depth-first searches give up, a beam of one gives the
+    bound below."""
     untimed = _Untimed(automaton, trace, margins)
     upper = untimed.bound()
     if upper == -math.inf:
         return upper  # not even without the durations does a run reach the end
     ahead = untimed.ahead()
-    at_upper = _RunSearch(automaton, trace, upper, margins, beam=1, ahead=ahead).run().best_final
-    if at_upper >= upper:
-        return at_upper  # most often: what binds is a guard, not a duration
-    lower = _RunSearch(automaton, trace, -math.inf, margins, beam=1, ahead=ahead).run().best_final
+    witness = _Witness(automaton, margins, ahead)
+    found = witness.above(upper)
+    if found is not None and found >= upper:
+        return found
+    lower = witness.above(-math.inf) if found is not None else None
+    if lower is None:
+        lower = _RunSearch(automaton, trace, -math.inf, margins, beam=1, ahead=ahead).run().best_final
     if lower >= upper:
         return lower
     floor = math.nextafter(lower, math.inf) if lower > -math.inf else -math.inf
     return max(lower, _RunSearch(automaton, trace, floor, margins, ahead=ahead).run().best_final)
+
+
+class _Witness:
+    """Depth-first searches for a run (durations and two-end bounds read, as ``_RunSearch``
+    reads them) that keeps every margin at or above a floor into the final location.
+
+    Above a floor, only whether a run's margins stay above it matters, not by how much: so a run
+    is its location, sample and timed-phase state, and a state searched once from is never
+    searched again. Taking a transition before staying, a search follows one run forward, at the
+    cost of its path where the sample-by-sample search steps every location's runs; proving that
+    no run keeps above a floor costs every state above it, which the sample-by-sample search does
+    better (it keeps one run per state and sample). The searches of one trace share a budget of
+    ``WITNESS_BUDGET`` states per sample, after which they give up."""
+
+    def __init__(self, automaton: SymbolicAutomaton, margins: _Margins, ahead: np.ndarray) -> None:
+        self.automaton, self.margins = automaton, margins
+        self.ahead = ahead.tolist()
+        self.budget = WITNESS_BUDGET * len(margins.times)
+
+    def above(self, floor: float) -> float | None:
+        """The robustness of a run that keeps every margin at or above ``floor`` (-inf: none);
+        None when the budget ran out."""
+        automaton, margins = self.automaton, self.margins
+        times, timings, columns = margins.times, automaton.timings, margins.columns
+        init, final, samples = automaton.initial, automaton.final, len(times)
+        ahead, moved = self.ahead, margins.moved_lists
+        guard, invariant = margins.guard, margins.invariant
+        # a run to extend: (location, sample, key, its robustness so far, whether it may stay:
+        # a fresh run in the initial location only takes a transition at its sample)
+        stack = [(init, k, (), math.inf, False) for k in reversed(range(samples)) if margins.begins[k]]
+        seen: set[tuple[int, int, tuple]] = set()
+        while stack:
+            q, k, key, value, stays = stack.pop()
+            if q == final:
+                return value
+            if (q, k, key) in seen:
+                continue
+            seen.add((q, k, key))
+            self.budget -= 1
+            if self.budget < 0:
+                return None
+            if stays:
+                # the run stays over (k, k+1]: its drivers progressed and no phase overran
+                k += 1
+                if k >= samples or not moved[q][k - 1]:
+                    continue
+                if any(not timings[p].admits_start(times[k] - times[start]) for p, start in key):
+                    continue
+                held = min(value, invariant[q][k]) if q in invariant else value
+                if held >= floor and ahead[q][k] >= floor:
+                    stack.append((q, k, key, held, True))
+            for (starts, ends), transitions in margins.effects[q]:
+                stepped = _advance(key, starts, ends, k, times, timings, columns)
+                if stepped is None or isinstance(stepped, _Broken) or stepped[1] < floor:
+                    continue
+                timed = min(value, stepped[1])
+                for transition in transitions:
+                    target, margin = transition.target, guard[transition.id][k]
+                    if margin >= floor and ahead[target][k] >= floor:
+                        stack.append((target, k, stepped[0], min(timed, margin), True))
+        return -math.inf
 
 
 class _Untimed:
@@ -233,6 +306,27 @@ class _Untimed:
         return ahead
 
 
+def _effects(automaton: SymbolicAutomaton) -> list[list[tuple[tuple[tuple, tuple], list]]]:
+    """Per location, its outgoing transitions grouped by what they do to the timed phases (starts,
+    ends). The step of the phases' clocks is the same for the whole group, and a guard's margin is
+    the same for every key, so min(value, margin) keeps the order of the values and the best key
+    per group is the best key per transition. Why: five_vehicle_minute's 481 transitions all start
+    or end a timed phase, 12 of them leave each location with one effect, and stepping every key
+    for each of them is far slower (docs/decisions.md)."""
+    timings = automaton.timings
+    effects = []
+    for q in range(len(automaton.locations)):
+        grouped: dict[tuple[tuple, tuple], list] = {}
+        for transition in automaton.outgoing(q):
+            effect = (
+                tuple(sorted(p for p in transition.starts if p in timings)),
+                tuple(sorted(p for p in transition.ends if p in timings)),
+            )
+            grouped.setdefault(effect, []).append(transition)
+        effects.append(list(grouped.items()))
+    return effects
+
+
 class _Margins:
     """What every search of one trace reads, computed once, column-wise: each guard's and
     invariant's robustness at every sample, whether each actor moved forward over each step, the
@@ -260,6 +354,8 @@ class _Margins:
         self.columns = {
             column: {a: trace.actors[a][column].tolist() for a in trace.names} for column in _end_columns(automaton)
         }
+        self.effects = _effects(automaton)
+        self.times = trace.times
 
 
 # A run's state in a location: the samples at which its open timed phases started (empty when the
@@ -290,23 +386,8 @@ class _RunSearch:
         self.times = trace.times
         self.n_loc = n_loc = len(automaton.locations)
         self.drivers = [sorted(loc.drivers) for loc in automaton.locations]
-        self.timings = timings = automaton.timings
-        # a location's outgoing transitions grouped by what they do to the timed phases (starts, ends):
-        # the step of the phases' clocks is the same for the whole group, and a guard's margin is the
-        # same for every key, so min(value, margin) keeps the order of the values and the best key per
-        # group is the best key per transition. Why: five_vehicle_minute's 481 transitions all start
-        # or end a timed phase, 12 of them leave each location with one effect, and stepping every
-        # key for each of them is far slower (docs/decisions.md)
-        self.effects: list[list[tuple[tuple[tuple, tuple], list]]] = []
-        for q in range(n_loc):
-            grouped: dict[tuple[tuple, tuple], list] = {}
-            for transition in automaton.outgoing(q):
-                effect = (
-                    tuple(sorted(p for p in transition.starts if p in timings)),
-                    tuple(sorted(p for p in transition.ends if p in timings)),
-                )
-                grouped.setdefault(effect, []).append(transition)
-            self.effects.append(list(grouped.items()))
+        self.timings = automaton.timings
+        self.effects = margins.effects
         self.invariant_locations = sorted(margins.invariant)
         self.guard_margin, self.invariant_margin = margins.guard, margins.invariant
         self.progress, self.columns = margins.progress, margins.columns
@@ -321,8 +402,8 @@ class _RunSearch:
         # the report of the location the best run got stuck in
         self.timing_miss: dict[int, tuple[float, int, object, int, float]] = {}
         self.overrun: dict[int, tuple[int, int, float]] = {}  # location -> (sample, phase, seconds it had lasted)
-        # states[q]: a key -> (smallest robustness so far, run)
-        self.states: list[dict[Key, tuple[float, tuple]]] = [{} for _ in range(n_loc)]
+        # states[q], for the locations that hold runs: a key -> (smallest robustness so far, run)
+        self.states: dict[int, dict[Key, tuple[float, tuple]]] = {}
         self.first_met: list[int | None] = [None] * n_loc  # first sample at which a run with all guards met is in q
         self.met_run: list = [None] * n_loc  # that run's transitions, (sample, transition id)
         self.best_final, self.best_final_run = -math.inf, ()
@@ -335,66 +416,70 @@ class _RunSearch:
 
     def step(self, k: int) -> None:
         """The runs after sample ``k``: staying where their drivers progressed, meeting the
-        invariants, taking the transitions whose guards hold."""
+        invariants, taking the transitions whose guards hold. Only the locations that hold runs
+        are stepped, in the order of their numbers."""
         surviving = self._staying(k)
-        new_states = [dict(s) for s in surviving]
+        new_states = {q: dict(runs) for q, runs in surviving.items()}
         self._invariants(k, new_states)
-        for q in range(self.n_loc):
-            if surviving[q]:
-                self._transitions(k, q, surviving[q], new_states)
+        for q, runs in surviving.items():
+            self._transitions(k, q, runs, new_states)
         if self.ahead is not None:
-            for q, runs in enumerate(new_states):
-                if runs and self.ahead[q][k] < self.floor:
-                    new_states[q] = {}
+            for q in [q for q in new_states if self.ahead[q][k] < self.floor]:
+                del new_states[q]
         if self.beam is not None:
-            for q, runs in enumerate(new_states):
+            for q, runs in new_states.items():
                 if len(runs) > self.beam:
                     # the runs that can still end best first (what they have met, and what is ahead)
                     ahead = self.ahead[q][k] if self.ahead is not None else math.inf
                     kept = sorted(runs.items(), key=lambda item: (-min(item[1][0], ahead), item[0]))[: self.beam]
                     new_states[q] = dict(kept)
-        self.states = new_states
-        for q in range(self.n_loc):
-            if self.states[q] and self.first_met[q] is None and max(v for v, _ in self.states[q].values()) >= 0:
+        self.states = {q: new_states[q] for q in sorted(new_states) if new_states[q]}
+        for q, runs in self.states.items():
+            if self.first_met[q] is None and max(v for v, _ in runs.values()) >= 0:
                 self.first_met[q] = k
-                self.met_run[q] = max(self.states[q].values(), key=lambda state: state[0])[1]
-        for value, run in self.states[self.automaton.final].values():
+                self.met_run[q] = max(runs.values(), key=lambda state: state[0])[1]
+        for value, run in self.states.get(self.automaton.final, {}).values():
             if value > self.best_final:
                 self.best_final, self.best_final_run = value, run
 
-    def _staying(self, k: int) -> list[dict[Key, tuple[float, tuple]]]:
-        """The runs that stay: in q at k-1, q's drivers progressed over (k-1, k], no timed phase overran."""
+    def _staying(self, k: int) -> dict[int, dict[Key, tuple[float, tuple]]]:
+        """The runs that stay, by location: in q at k-1, q's drivers progressed over (k-1, k], no
+        timed phase overran."""
         init, times = self.automaton.initial, self.times
-        surviving: list[dict[Key, tuple[float, tuple]]] = [{} for _ in range(self.n_loc)]
+        surviving: dict[int, dict[Key, tuple[float, tuple]]] = {}
         if self.begins[k]:
             surviving[init] = {(): (math.inf, ())}
-        for q in range(self.n_loc):
-            if q == init or not self.states[q] or k == 0:
+        if k == 0:
+            return surviving
+        for q, runs in self.states.items():
+            if q == init or not self.moved[q][k - 1]:
                 continue
-            if not self.moved[q][k - 1]:
-                continue
-            for key, entry in self.states[q].items():
+            kept = {}
+            for key, entry in runs.items():
                 over = next((p for p, start in key if not self.timings[p].admits_start(times[k] - times[start])), None)
                 if over is None:
-                    surviving[q][key] = entry
+                    kept[key] = entry
                 elif entry[0] >= 0:
                     # the last run with every guard met that a phase's overrun ended, for the report
                     self.overrun[q] = (k, over, float(times[k - 1] - times[dict(key)[over]]))
-        return surviving
+            if kept:
+                surviving[q] = kept
+        return dict(sorted(surviving.items()))
 
-    def _invariants(self, k: int, states: list[dict[Key, tuple[float, tuple]]]) -> None:
+    def _invariants(self, k: int, states: dict[int, dict[Key, tuple[float, tuple]]]) -> None:
         """Each location's invariant at sample ``k``: its robustness bounds its runs', or ends them."""
         for q in self.invariant_locations:
-            if not states[q]:
+            if q not in states:
                 continue
             margin = self.invariant_margin[q][k]
             if margin >= self.floor:
-                for key, (value, run) in states[q].items():
-                    states[q][key] = (min(value, margin), run)
+                runs = states[q]
+                for key, (value, run) in runs.items():
+                    runs[key] = (min(value, margin), run)
             else:
-                states[q] = {}
+                del states[q]
 
-    def _transitions(self, k: int, q: int, runs: dict, states: list[dict[Key, tuple[float, tuple]]]) -> None:
+    def _transitions(self, k: int, q: int, runs: dict, states: dict[int, dict[Key, tuple[float, tuple]]]) -> None:
         """The runs in ``q`` that take one of its transitions at sample ``k``, into ``states``."""
         for (starts, ends), transitions in self.effects[q]:
             # the timed phases after the step, once for every transition with this effect:
@@ -420,11 +505,13 @@ class _RunSearch:
                     continue
                 if next_key not in advanced or candidate > advanced[next_key][0]:
                     advanced[next_key] = (candidate, run)
+            if not advanced:
+                continue
             for transition in transitions:
                 margin = self.guard_margin[transition.id][k]
                 if margin < self.floor:
                     continue
-                target = states[transition.target]
+                target = states.setdefault(transition.target, {})
                 for next_key, (value, run) in advanced.items():
                     candidate = min(value, margin)
                     if next_key not in target or candidate > target[next_key][0]:
