@@ -31,10 +31,11 @@ from ..frontend import model
 from ..frontend.errors import error_at
 from ..frontend.semantics.checked import CheckedScenario
 from ..frontend.semantics.logical import names_by_place
+from ..frontend.semantics.tolerances import DURATION_TOLERANCE
 from ..logic.automaton import Ask, Location, PhaseBound, SymbolicAutomaton, Timing, Transition
 from ..logic.guards import LANE, TRUE, Guard, Not, conjunction
 from ..logic.phase import Variant
-from .translation import check_behavior_arguments, duration_interval, phase_guards
+from .translation import check_behavior_arguments, duration_interval, offset_interval, phase_guards
 
 Key = Hashable
 
@@ -205,14 +206,54 @@ class _Builder:
             )
         overlap = behavior.argument("overlap")
         kind = overlap.value.name if overlap is not None and isinstance(overlap.value, model.Name) else "start"
+        members = [c for c in behavior.children if not isinstance(c, model.Emit)]
+        offsets = [self.offset(behavior, which, kind, members) for which in ("start_to_start", "end_to_end")]
         # a parallel with a duration of its own ends when that is over: a member with nothing to
         # end it lasts until then, even after those that end of themselves
         timed = behavior.argument("duration") is not None
-        fragment = _parallel(children, _Overlap(kind), behavior.location, timed) if len(children) > 1 else children[0]
+        placement = _Overlap(kind, *offsets)
+        fragment = _parallel(children, placement, behavior.location, timed) if len(children) > 1 else children[0]
         fragment.ends_itself = all(child.ends_itself for child in children)
         if events:
             _emit(fragment.outgoing(fragment.initial), events)
         return fragment
+
+    def offset(self, behavior: model.Composition, which: str, kind: str, members: list) -> _Offset | None:
+        """The parallel's ``start_to_start:`` or ``end_to_end:`` (``which``) as timed phases, one
+        per secondary member and order: from the primary's instant to the secondary's when the
+        primary's comes first, from the secondary's to the primary's when it comes second. None
+        when the parallel has none; refused when its overlap puts those instants together and the
+        offset cannot be 0."""
+        argument = behavior.argument(which)
+        if argument is None:
+            return None
+        low, high = offset_interval(argument, self.env)
+        together = ("equal", "start") if which == "start_to_start" else ("equal", "end")
+        if kind in together and not low <= 0 <= high:
+            instant = "start" if which == "start_to_start" else "end"
+            raise error_at(
+                argument.location,
+                f"overlap: {kind} {instant}s every member with the primary, so a {which} of "
+                f"{_seconds(low, high)} cannot hold",
+                hint=f"give overlap: any (or initial, final, inside, full) for members that {instant} apart",
+            )
+        instant = "start" if which == "start_to_start" else "end"
+        primary = _member_name(members[0])
+        after: dict[int, int] = {}
+        before: dict[int, int] = {}
+        for index, member in enumerate(members[1:], start=1):
+            name = _member_name(member)
+            if high > 0:
+                after[index] = phase = next(self.counter)
+                self.timings[phase] = Timing(
+                    phase, f"from {primary}'s {instant} to {name}'s", max(low, 0.0), high, argument.location
+                )
+            if low < 0:
+                before[index] = phase = next(self.counter)
+                self.timings[phase] = Timing(
+                    phase, f"from {name}'s {instant} to {primary}'s", max(-high, 0.0), -low, argument.location
+                )
+        return _Offset(low, high, after, before)
 
     def serial(self, behavior: model.Composition) -> _Fragment:
         """Members one after another; an ``emit`` marks the junction it stands at."""
@@ -316,6 +357,18 @@ class _Builder:
             if edge.target == fragment.final:
                 edge.ends = edge.ends | {phase}
         return fragment
+
+
+def _seconds(low: float, high: float) -> str:
+    """An offset as its author wrote it: a single value (widened by the tolerance) or a range."""
+    if math.isclose(high - low, 2 * DURATION_TOLERANCE):
+        return f"{(low + high) / 2:g} s"
+    return f"{low:g}..{high:g} s"
+
+
+def _member_name(behavior: model.Behavior) -> str:
+    """How a message names a member of a composition: its label, else its phase's name."""
+    return getattr(behavior, "label", None) or _phase_name(behavior)
 
 
 def _phase_name(behavior: model.Behavior) -> str:
@@ -433,24 +486,94 @@ def _check_size(transitions: int, location, composition: str) -> None:
 
 
 @dataclass(frozen=True)
+class _Offset:
+    """A parallel's ``start_to_start:`` (or ``end_to_end:``): the seconds from the primary member's
+    start (end) to each secondary's, ``low..high``, negative when the secondary's comes first. Each
+    secondary's offset is a timed phase of the product, one per order (``after``: the primary's
+    instant first; ``before``: the secondary's first), from secondary index to phase; both at one
+    instant is an offset of 0."""
+
+    low: float
+    high: float
+    after: dict[int, int]
+    before: dict[int, int]
+
+    def marks(self, now: list[bool], done: list[bool]) -> tuple[frozenset[int], frozenset[int]] | None:
+        """The offset phases a move starts and ends, given which members reach their instant in
+        it (``now``) and which had before it (``done``); None when it breaks an offset."""
+        starts: set[int] = set()
+        ends: set[int] = set()
+        for j in range(1, len(now)):
+            if now[0] and now[j]:
+                if not self.low <= 0 <= self.high:
+                    return None
+            elif now[0] and not done[j]:
+                if j not in self.after:
+                    return None
+                starts.add(self.after[j])
+            elif now[j] and not done[0]:
+                if j not in self.before:
+                    return None
+                starts.add(self.before[j])
+            elif now[j]:
+                ends.add(self.after[j])
+            elif now[0]:
+                ends.add(self.before[j])
+        return frozenset(starts), frozenset(ends)
+
+
+@dataclass(frozen=True)
 class _Overlap:
     """How a parallel's members sit in time (the standard, 7.6.2.1.4), the first member being the
     primary: which may start after the parallel starts, which may end before it ends, and the
-    order of starts and ends the kind asks. Only a member that ends of itself (a duration, an
-    until, a wait) starts late or ends early: one with nothing to end it spans the parallel, since
-    nothing its author wrote says when it would start or stop otherwise."""
+    order of starts and ends the kind asks, with the offsets between the primary's start (end) and
+    the others' (``start_to_start``, ``end_to_end``). Only a member that ends of itself (a
+    duration, an until, a wait) starts late or ends early, or one whose instant an offset gives:
+    one with nothing to end it and no offset spans the parallel, since nothing its author wrote
+    says when it would start or stop otherwise."""
 
     kind: str
+    start_offset: _Offset | None = None
+    end_offset: _Offset | None = None
 
     def may_start_late(self, index: int, child: _Fragment) -> bool:
-        if not child.ends_itself or self.kind in ("equal", "start"):
+        if self.kind in ("equal", "start") or not {"inside": index > 0, "full": index == 0}.get(self.kind, True):
             return False
-        return {"inside": index > 0, "full": index == 0}.get(self.kind, True)
+        offset = self.start_offset
+        return child.ends_itself or (offset is not None and (offset.high > 0 if index else offset.low < 0))
 
     def may_end_early(self, index: int, child: _Fragment) -> bool:
-        if not child.ends_itself or self.kind in ("equal", "end"):
+        if self.kind in ("equal", "end") or not {"inside": index > 0, "full": index == 0}.get(self.kind, True):
             return False
-        return {"inside": index > 0, "full": index == 0}.get(self.kind, True)
+        offset = self.end_offset
+        return child.ends_itself or (offset is not None and (offset.low < 0 if index else offset.high > 0))
+
+    def ends_itself(self, child: _Fragment) -> bool:
+        """Whether the member ends of itself in this parallel: its own duration, until or wait, or
+        an end offset that times it against the primary's end."""
+        return child.ends_itself or self.end_offset is not None
+
+    def marks(
+        self, current: tuple[Key, ...], target: tuple[Key, ...], children: list[_Fragment]
+    ) -> tuple[frozenset[int], frozenset[int]] | None:
+        """The offset phases the move from ``current`` to ``target`` starts and ends (none without
+        offsets); None when it breaks one."""
+        starts: frozenset[int] = frozenset()
+        ends: frozenset[int] = frozenset()
+        for offset, reached in ((self.start_offset, False), (self.end_offset, True)):
+            if offset is None:
+                continue
+            if reached:
+                done = [key == c.final for key, c in zip(current, children)]
+                now = [k != t and t == c.final for k, t, c in zip(current, target, children)]
+            else:
+                done = [key != c.initial for key, c in zip(current, children)]
+                now = [k == c.initial and t != k for k, t, c in zip(current, target, children)]
+            marked = offset.marks(now, done)
+            if marked is None:
+                return None
+            starts, ends = starts | marked[0], ends | marked[1]
+        return starts, ends
 
     def keeps_order(self, target: tuple[Key, ...], children: list[_Fragment]) -> bool:
         """Whether members at ``target`` (each at its start, inside, or at its end) have started
@@ -509,10 +632,15 @@ def _parallel(children: list[_Fragment], overlap: _Overlap, location=None, timed
             target = tuple(m.target if m is not None else key for m, key in zip(combination, current))
             # a member with nothing to end it lasts as long as the parallel: it ends with the last
             # member that ends of itself, so no combination leaves only such members going on
-            if mixed and (_all_final(target, children) or not (timed or _one_ending_itself_goes_on(target, children))):
+            if mixed and (
+                _all_final(target, children) or not (timed or _one_ending_itself_goes_on(target, children, overlap))
+            ):
                 continue
             if not overlap.keeps_order(target, children):
                 continue
+            marked = overlap.marks(current, target, children)
+            if marked is None:
+                continue  # it breaks a start_to_start or an end_to_end
             moving = [m for m in combination if m is not None]
             staying = frozenset().union(
                 *(c.listening.get(k, frozenset()) for m, c, k in zip(combination, children, current) if m is None)
@@ -520,6 +648,7 @@ def _parallel(children: list[_Fragment], overlap: _Overlap, location=None, timed
             edge = _simultaneous(current, moving, target, staying)
             if edge.deaf & edge.emits:
                 continue  # a member waiting for the event would miss it
+            edge.starts, edge.ends = edge.starts | marked[0], edge.ends | marked[1]
             edges.append(edge)
             _check_size(len(edges), location, "parallel")
             if target not in seen:
@@ -552,10 +681,10 @@ def _all_final(target: tuple[Key, ...], children: list[_Fragment]) -> bool:
     return all(key == c.final for key, c in zip(target, children))
 
 
-def _one_ending_itself_goes_on(target: tuple[Key, ...], children: list[_Fragment]) -> bool:
+def _one_ending_itself_goes_on(target: tuple[Key, ...], children: list[_Fragment], overlap: _Overlap) -> bool:
     """Whether, with members at ``target``, a member that ends of itself is still going on (or
     none of the members ends of itself, and all go on together)."""
-    selfending = [(key, c) for key, c in zip(target, children) if c.ends_itself]
+    selfending = [(key, c) for key, c in zip(target, children) if overlap.ends_itself(c)]
     return not selfending or any(key != c.final for key, c in selfending)
 
 

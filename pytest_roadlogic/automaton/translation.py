@@ -71,12 +71,21 @@ def duration_interval(argument: model.Argument, env: dict) -> tuple[float, float
     return max(0.0, low), high
 
 
+def offset_interval(argument: model.Argument, env: dict) -> tuple[float, float]:
+    """A parallel's ``start_to_start:`` or ``end_to_end:`` in seconds, from the primary member's
+    start (end) to each other member's (negative: before it); a single value gets the tolerance."""
+    low, high = argument_range(argument, TIME, "a time such as 2s, -1s or [-1..3]s", env)
+    return widened(low, high, DURATION_TOLERANCE)
+
+
 def check_behavior_arguments(composition: model.Composition) -> None:
     for argument in composition.arguments:
         if argument.name == "overlap" and isinstance(argument.value, model.Name):
             continue  # how the members sit in time: what the product builds
         if argument.name == "duration":
             continue  # a timed phase, handled by the construction
+        if argument.name in ("start_to_start", "end_to_end") and composition.operator == "parallel":
+            continue  # offsets between the members, timed phases the product marks
         raise error_at(
             argument.location,
             f"not supported yet by the automaton: {argument.name or 'arguments'} on {composition.operator}",

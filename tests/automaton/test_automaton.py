@@ -357,3 +357,91 @@ def test_overlap_inside_with_a_secondary_longer_than_the_primary_has_no_plan_and
     text = "scenario s:\n  a: car\n  b: car\n  do parallel(overlap: inside):\n    a.drive(duration: 3s)\n    b.drive(duration: 5s)\n"
     with pytest.raises(UnsatisfiableScenario, match=r"a\.drive lasts 2\.5\.\.3\.5 s .* b\.drive lasts 4\.5\.\.5\.5 s"):
         next(ContinuousPlanner(build_automaton(check_text(text).scenarios[0])).plans(limit=1))
+
+
+def _accepts_timed(automaton, instants: list[tuple[float, frozenset[str]]]) -> bool:
+    """Whether some run of ``automaton`` takes its transitions at ``instants`` (time, the starts
+    and ends of a.drive and b.drive then), every timed phase lasting within its range."""
+    timings = automaton.timings
+
+    def walk(location, i, started) -> bool:
+        if i == len(instants):
+            return location == automaton.final
+        time, marks = instants[i]
+        for t in automaton.outgoing(location):
+            if frozenset(e for e in t.events if e.startswith(("a.drive", "b.drive"))) != marks:
+                continue
+            opened = {**started, **dict.fromkeys(t.starts, time)}
+            if all(timings[p].admits(time - opened.pop(p)) for p in t.ends if p in timings) and walk(
+                t.target, i + 1, opened
+            ):
+                return True
+        return False
+
+    return walk(automaton.initial, 0, {})
+
+
+OFFSET_CASES = [
+    ("any", "start_to_start: 2s", (1.5, 2.5), None),
+    ("any", "start_to_start: [-2s..1s]", (-2, 1), None),
+    ("end", "start_to_start: -1s", (-1.5, -0.5), None),
+    ("inside", "start_to_start: [0s..3s]", (0, 3), None),
+    ("any", "end_to_end: -1s", None, (-1.5, -0.5)),
+    ("start", "end_to_end: [1s..2s]", None, (1, 2)),
+    ("final", "start_to_start: [-3s..0s], end_to_end: [0s..2s]", (-3, 0), (0, 2)),
+]
+
+
+@pytest.mark.parametrize("kind, offsets, starts, ends", OFFSET_CASES)
+def test_start_to_start_and_end_to_end_place_two_members_exactly_as_the_standards_definition_of_parallel(
+    kind, offsets, starts, ends
+):
+    # every placement of two members' starts and ends on whole seconds 0..6, judged by the
+    # standard's formulas (7.6.2.1.4: the overlap kind, the offsets from the primary's start and
+    # end, the members' durations) and by the automaton's runs with their timed phases
+    text = (
+        f"scenario s:\n  a: car\n  b: car\n  do parallel(overlap: {kind}, {offsets}):\n"
+        "    a.drive(duration: [1..6]s)\n    b.drive(duration: [1..6]s)\n"
+    )
+    automaton = build_automaton(check_text(text).scenarios[0])
+    within = {
+        "any": lambda s0, e0, s1, e1: max(s0, s1) <= min(e0, e1),
+        "end": lambda s0, e0, s1, e1: e0 == e1,
+        "start": lambda s0, e0, s1, e1: s0 == s1,
+        "inside": lambda s0, e0, s1, e1: s0 <= s1 and e0 >= e1,
+        "final": lambda s0, e0, s1, e1: s1 <= e0 <= e1,
+    }[kind]
+    checked = 0
+    for s0, e0, s1, e1 in itertools.product(range(7), repeat=4):
+        if min(s0, s1) != 0 or not (1 <= e0 - s0 <= 6 and 1 <= e1 - s1 <= 6):
+            continue
+        standard = (
+            within(s0, e0, s1, e1)
+            and (starts is None or starts[0] <= s1 - s0 <= starts[1])
+            and (ends is None or ends[0] <= e1 - e0 <= ends[1])
+        )
+        at = {}
+        for time, mark in ((s0, "a.drive start"), (e0, "a.drive end"), (s1, "b.drive start"), (e1, "b.drive end")):
+            at.setdefault(time, set()).add(mark)
+        instants = [(float(time), frozenset(marks)) for time, marks in sorted(at.items())]
+        assert _accepts_timed(automaton, instants) == standard, (s0, e0, s1, e1)
+        checked += standard
+    assert checked, "some placement meets the offsets"
+
+
+def test_an_offset_gives_a_member_with_nothing_to_end_it_its_start_and_its_end():
+    text = (
+        "scenario s:\n  a: car\n  b: car\n  do parallel(overlap: any, start_to_start: 2s, end_to_end: 1s):\n"
+        "    a.drive(duration: 5s)\n    b.drive()\n"
+    )
+    automaton = build_automaton(check_text(text).scenarios[0])
+    placed = [(0.0, {"a.drive start"}), (2.0, {"b.drive start"}), (5.0, {"a.drive end"}), (6.0, {"b.drive end"})]
+    assert _accepts_timed(automaton, [(t, frozenset(m)) for t, m in placed])
+    together = [(0.0, {"a.drive start", "b.drive start"}), (5.0, {"a.drive end", "b.drive end"})]
+    assert not _accepts_timed(automaton, [(t, frozenset(m)) for t, m in together])
+
+
+def test_a_start_to_start_that_the_overlap_kind_forbids_is_refused_at_its_argument():
+    text = "scenario s:\n  a: car\n  b: car\n  do parallel(start_to_start: 2s):\n    a.drive(duration: 5s)\n    b.drive()\n"
+    with pytest.raises(OscError, match=r"overlap: start starts every member with the primary, so a start_to_start"):
+        build_automaton(check_text(text).scenarios[0])

@@ -349,9 +349,9 @@ CASES = [
         "6:14: error: unknown function 'later'",
     ),
     (
-        "start_to_start",
-        HEAD + "    do parallel(start_to_start: 2s):\n        a.drive()\n        b.drive()\n",
-        "4:17: error: not supported: start_to_start (an offset between the primary member and the others)",
+        "start_to_start_length",
+        HEAD + "    do parallel(overlap: any, start_to_start: 2m):\n        a.drive()\n        b.drive()\n",
+        "4:47: error: parallel expects a time for start_to_start, got a length",
     ),
     (
         "duration_length",

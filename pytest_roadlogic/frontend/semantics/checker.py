@@ -660,12 +660,6 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks, EnvironmentAc
             )
             if not node.children:
                 self.error(node.location, f"{node.operator} has no members")
-            for offset in (a for a in node.arguments if a.name in ("start_to_start", "end_to_end")):
-                self.error(
-                    offset.location,
-                    f"not supported: {offset.name} (an offset between the primary member and the others)",
-                    "give the members durations, or put a wait before the later one in a serial",
-                )
             return
         if isinstance(node, model.Invocation):
             self._invocation(node, scenario, env, used_actors, used_names)
