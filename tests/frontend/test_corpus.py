@@ -230,6 +230,7 @@ RUNNABLE = [
     ("112_overtake_ego_returns.osc", None),
     ("113_carla_targets_in_sequence.osc", "carla"),
     ("114_gap_methods_and_casts.osc", None),
+    ("116_delayed_cut_in_start_to_start.osc", None),
 ]
 
 
