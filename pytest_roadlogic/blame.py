@@ -22,6 +22,7 @@ from .outcomes import CANNOT_INSTANTIATE
 from .pipeline import guided_planning
 from .planning import PlannerSettings, settings_for
 from .planning.fallbacks import planned
+from .sampling import on_ways
 from .settings import RunSettings
 
 
@@ -41,6 +42,7 @@ def has_plan(
     from .planning import HorizonTooShort, NoPlanError, PlanningTimeout
 
     settings = dataclasses.replace(settings or settings_for(RunSettings()), explain_unsatisfiable=False)
+    scenario = on_ways(scenario, values)  # the ways through the map the sample takes
     guide, settings, seed = guided_planning(scenario, build_automaton(scenario), values, settings, seed)
     try:
         return next(planned(guide, settings, seed, 1, fallbacks, beyond_limits), None) is not None

@@ -208,7 +208,8 @@ def guided_planning(
 ) -> tuple[Guide, object, int]:
     """The automaton a planner solves for a sample, as a function of that planner's settings
     (``specification`` without a sample), and the settings and seed it solves with: each sample is
-    its own random concrete scenario, fixed by the run's seed and the values.
+    its own random concrete scenario, fixed by the run's seed and the values. ``scenario`` is on
+    the ways through the map the sample takes (``sampling.on_ways``).
 
     Why a function: a sample is narrowed to a band that keeps the planner's margins inside its
     parameter's range, which moves a value near an edge inward by the margin. A fallback planner
@@ -218,7 +219,6 @@ def guided_planning(
     On a map, the settings are the encoding's for the scenario's route (``on_route``); an
     encoding that cannot plan on a map (the grid's) says so (``CannotPlanOnMap``) rather than plan
     a straight road the simulation would then drive on the map."""
-    scenario = on_ways(scenario, values or {})  # the ways through the map the sample takes
     if scenario.route is not None:
         # CannotPlanOnMap from an encoding that cannot
         settings = settings.on_route(scenario.route, scenario.routes[1:])

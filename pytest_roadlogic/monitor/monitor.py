@@ -314,17 +314,14 @@ def _effects(automaton: SymbolicAutomaton) -> list[list[tuple[tuple[tuple, tuple
     or end a timed phase, 12 of them leave each location with one effect, and stepping every key
     for each of them is far slower (docs/decisions.md)."""
     timings = automaton.timings
-    effects = []
-    for q in range(len(automaton.locations)):
-        grouped: dict[tuple[tuple, tuple], list] = {}
-        for transition in automaton.outgoing(q):
-            effect = (
-                tuple(sorted(p for p in transition.starts if p in timings)),
-                tuple(sorted(p for p in transition.ends if p in timings)),
-            )
-            grouped.setdefault(effect, []).append(transition)
-        effects.append(list(grouped.items()))
-    return effects
+    grouped: list[dict[tuple[tuple, tuple], list]] = [{} for _ in automaton.locations]
+    for transition in automaton.transitions:
+        effect = (
+            tuple(sorted(p for p in transition.starts if p in timings)),
+            tuple(sorted(p for p in transition.ends if p in timings)),
+        )
+        grouped[transition.source].setdefault(effect, []).append(transition)
+    return [list(groups.items()) for groups in grouped]
 
 
 class _Margins:

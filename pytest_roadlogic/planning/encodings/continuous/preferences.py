@@ -24,9 +24,12 @@ def start_preferences(automaton: SymbolicAutomaton, settings: ContinuousSettings
 
     As the grid planner's random start does (asp/grid/preferences.lp), a driving vehicle keeps one
     drawn acceleration (-drift, 0 or +drift, an ``&drift`` preference of the linear program, within
-    ``drift_speeds``) and keeps its lane unless the scenario needs a change (asp/keep_lane.lp):
-    else the smoothest plan holds every vehicle the scenario leaves free at its start speed, and
-    the solver's random signs move vehicles across lanes and back for nothing.
+    ``drift_speeds``) where it may change its speed (a construct of its own asks for a speed, or
+    no plan holds it to what it is asked), and keeps its lane unless the scenario needs a change
+    (asp/keep_lane.lp): else the smoothest plan holds every such vehicle at its start speed, and
+    the solver's random signs move vehicles across lanes and back for nothing. A vehicle holding
+    its speed that may brake for a vehicle ahead brakes only as much as that asks, not at its
+    drawn rate.
 
     A transition whose guard pins a driving vehicle to a place (``pins``: dodge_obstacle's end,
     5-20 m past the parked car) is tried at its earliest step first; every other transition is
