@@ -31,6 +31,8 @@ from ..simulation.trace import Incident, Trace
 # the depth-first searches for a run above a floor (``_Witness``) give up after this many states
 # per sample of the trace, all together, on a trace whose runs branch more than a run's path does
 WITNESS_BUDGET = 20
+# of which the climb from the first run found to better ones may spend this many
+CLIMB_BUDGET = 3
 
 
 @dataclass(frozen=True)
@@ -180,6 +182,17 @@ def _rejected_robustness(automaton: SymbolicAutomaton, trace: Trace, margins: _M
     if found is not None and found >= upper:
         return found
     lower = witness.above(-math.inf) if found is not None else None
+    # each better run found raises the bound below; none above it is the answer. Proving there is
+    # none visits every state above the bound, which the search keeping one run per state and
+    # sample does better: the climb stops at CLIMB_BUDGET states per sample
+    witness.budget = min(witness.budget, CLIMB_BUDGET * len(trace.times))
+    while lower is not None and (better := witness.above(math.nextafter(lower, math.inf))) != -math.inf:
+        if better is None:
+            break
+        lower = better
+    else:
+        if lower is not None:
+            return lower
     if lower is None:
         lower = _RunSearch(automaton, trace, -math.inf, margins, beam=1, ahead=ahead).run().best_final
     if lower >= upper:
