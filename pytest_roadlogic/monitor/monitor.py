@@ -169,7 +169,8 @@ def _rejected_robustness(automaton: SymbolicAutomaton, trace: Trace, margins: _M
 
     Bounded above by the untimed search; a depth-first search (``_Witness``) looks for a run at
     that bound, which most often exists (what binds is a guard, not a duration), and else for any
-    run, whose robustness bounds the answer below. The runs that could beat that one are then
+    run, whose robustness bounds the answer below, and then for better ones (``_Witness.climb``);
+    when none lies above the best, that is the answer. Else the runs that could beat it are
     searched sample by sample. Should the depth-first searches give up, a beam of one gives the
     bound below."""
     untimed = _Untimed(automaton, trace, margins)
@@ -182,18 +183,11 @@ def _rejected_robustness(automaton: SymbolicAutomaton, trace: Trace, margins: _M
     if found is not None and found >= upper:
         return found
     lower = witness.above(-math.inf) if found is not None else None
-    # each better run found raises the bound below; none above it is the answer. Proving there is
-    # none visits every state above the bound, which the search keeping one run per state and
-    # sample does better: the climb stops at CLIMB_BUDGET states per sample
-    witness.budget = min(witness.budget, CLIMB_BUDGET * len(trace.times))
-    while lower is not None and (better := witness.above(math.nextafter(lower, math.inf))) != -math.inf:
-        if better is None:
-            break
-        lower = better
-    else:
-        if lower is not None:
+    if lower is not None:
+        lower, exact = witness.climb(lower, CLIMB_BUDGET * len(trace.times))
+        if exact:
             return lower
-    if lower is None:
+    else:
         lower = _RunSearch(automaton, trace, -math.inf, margins, beam=1, ahead=ahead).run().best_final
     if lower >= upper:
         return lower
@@ -217,6 +211,20 @@ class _Witness:
         self.automaton, self.margins = automaton, margins
         self.ahead = ahead.tolist()
         self.budget = WITNESS_BUDGET * len(margins.times)
+
+    def climb(self, lower: float, budget: int) -> tuple[float, bool]:
+        """From a run of robustness ``lower``, better runs found one after another, each a higher
+        bound below, within ``budget`` more states: (the best robustness found, whether no run lies
+        above it). Proving there is none visits every state above the bound, which the search that
+        keeps one run per state and sample does better: hence a budget of its own."""
+        self.budget = min(self.budget, budget)
+        while True:
+            better = self.above(math.nextafter(lower, math.inf))
+            if better is None:
+                return lower, False
+            if better == -math.inf:
+                return lower, True
+            lower = better
 
     def above(self, floor: float) -> float | None:
         """The robustness of a run that keeps every margin at or above ``floor`` (-inf: none);
