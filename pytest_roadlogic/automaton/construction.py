@@ -218,26 +218,27 @@ class _Builder:
             _emit(fragment.outgoing(fragment.initial), events)
         return fragment
 
-    def offset(self, behavior: model.Composition, which: str, kind: str, members: list) -> _Offset | None:
+    def offset(
+        self, behavior: model.Composition, which: str, kind: str, members: list[model.Behavior]
+    ) -> _Offset | None:
         """The parallel's ``start_to_start:`` or ``end_to_end:`` (``which``) as timed phases, one
         per secondary member and order: from the primary's instant to the secondary's when the
         primary's comes first, from the secondary's to the primary's when it comes second. None
-        when the parallel has none; refused when its overlap puts those instants together and the
+        when the parallel has none (or one member); refused when its overlap puts those instants together and the
         offset cannot be 0."""
         argument = behavior.argument(which)
-        if argument is None:
+        if argument is None or len(members) < 2:
             return None
         low, high = offset_interval(argument, self.env)
         together = ("equal", "start") if which == "start_to_start" else ("equal", "end")
+        instant = "start" if which == "start_to_start" else "end"
         if kind in together and not low <= 0 <= high:
-            instant = "start" if which == "start_to_start" else "end"
             raise error_at(
                 argument.location,
                 f"overlap: {kind} {instant}s every member with the primary, so a {which} of "
                 f"{_seconds(low, high)} cannot hold",
                 hint=f"give overlap: any (or initial, final, inside, full) for members that {instant} apart",
             )
-        instant = "start" if which == "start_to_start" else "end"
         primary = _member_name(members[0])
         after: dict[int, int] = {}
         before: dict[int, int] = {}
