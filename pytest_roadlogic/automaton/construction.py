@@ -224,8 +224,8 @@ class _Builder:
         """The parallel's ``start_to_start:`` or ``end_to_end:`` (``which``) as timed phases, one
         per secondary member and order: from the primary's instant to the secondary's when the
         primary's comes first, from the secondary's to the primary's when it comes second. None
-        when the parallel has none (or one member); refused when its overlap puts those instants together and the
-        offset cannot be 0."""
+        when the parallel has none (or one member); refused when its overlap puts those instants
+        together and the offset cannot be 0."""
         argument = behavior.argument(which)
         if argument is None or len(members) < 2:
             return None
