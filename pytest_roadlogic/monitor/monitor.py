@@ -253,7 +253,7 @@ class _Witness:
                 k += 1
                 if k >= samples or not moved[q][k - 1]:
                     continue
-                if any(not timings[p].admits_start(times[k] - times[start]) for p, start in key):
+                if _overrun(key, k, times, timings) is not None:
                     continue
                 held = min(value, invariant[q][k]) if q in invariant else value
                 if held >= floor and ahead[q][k] >= floor:
@@ -474,7 +474,7 @@ class _RunSearch:
                 continue
             kept = {}
             for key, entry in runs.items():
-                over = next((p for p, start in key if not self.timings[p].admits_start(times[k] - times[start])), None)
+                over = _overrun(key, k, times, self.timings)
                 if over is None:
                     kept[key] = entry
                 elif entry[0] >= 0:
@@ -598,6 +598,12 @@ class _RunSearch:
             miss,
             list(trace.incidents),
         )
+
+
+def _overrun(key: Key, k: int, times, timings) -> int | None:
+    """The first timed phase of ``key`` (open phases, by start sample) that has run past its
+    range by sample ``k``, so that a run staying there is no run; None when none has."""
+    return next((p for p, start in key if not timings[p].admits_start(times[k] - times[start])), None)
 
 
 @dataclass(frozen=True)

@@ -115,8 +115,8 @@ class LinearProgram:
         """The constraints that always hold, as (inequality rows, equality rows). Split once per
         growth of the program, not on every check (they are most of its rows)."""
         if self._hard is None or self._hard[0] != len(self.always):
-            inequalities = [(row, 0) for row in self.always if not row.equal]
-            equalities = [(row, 0) for row in self.always if row.equal]
+            inequalities = [row for row in self.always if not row.equal]
+            equalities = [row for row in self.always if row.equal]
             self._hard = (len(self.always), (inequalities, equalities))
         return self._hard[1]
 
@@ -496,9 +496,8 @@ def _elastic_conflict(program: LinearProgram, on: list[int]) -> list[int] | None
     soft = [Row({**half.coefficients, n + j: -1.0}, half.bound) for j, (half, _) in enumerate(elastic)]
     m = len(elastic)
     cost = np.concatenate([np.zeros(n), np.ones(m)])
-    upper = [row for row, _ in inequalities] + soft
     lower = np.concatenate([np.full(n, -np.inf), np.zeros(m)])
-    result = solve_linear(cost, upper, [row for row, _ in equalities], lower)
+    result = solve_linear(cost, inequalities + soft, equalities, lower)
     if not result.optimal:
         return sorted(set(on))
     if result.cost <= INFEASIBLE:
@@ -532,7 +531,7 @@ def check_rows(
     if conflict is not None:
         return conflict, None
     elastic = [(half, literal) for literal in on for half in _split(program.switched[literal])]
-    rows = inequalities + [(row, 0) for row, _ in elastic]
+    rows = inequalities + [row for row, _ in elastic]
     preferred = [
         row
         for literal in (0, *(on if preferring is None else preferring))
@@ -552,7 +551,7 @@ def _split(rows: list[Row]) -> list[Row]:
 
 
 def smooth(
-    program: LinearProgram, inequalities, equalities, preferred: list[tuple[Row, float]] = ()
+    program: LinearProgram, inequalities: list[Row], equalities: list[Row], preferred: list[tuple[Row, float]] = ()
 ) -> Smoothed | None:
     """A solution that minimises the absolute accelerations and their changes (variables named
     ``a(V,t)``) and what the preferences are missed by (``PREFERENCE_WEIGHT`` each), among all
@@ -577,9 +576,8 @@ def smooth(
     weights = [1.0] * absolutes + [weight for _, weight in halves]  # one per extra variable
     slacks = len(weights)
     cost = np.concatenate([np.zeros(n), weights])
-    upper = [row for row, _ in inequalities] + extra
     lower = np.concatenate([np.full(n, -np.inf), np.zeros(slacks)])
-    result = solve_linear(cost, upper, [row for row, _ in equalities], lower)
+    result = solve_linear(cost, inequalities + extra, equalities, lower)
     return Smoothed(result.x[:n], result.cost) if result.optimal else None
 
 
