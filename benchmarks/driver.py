@@ -26,8 +26,8 @@ sys.path.insert(0, str(ROOT))
 from pytest_roadlogic.automaton import build_automaton  # noqa: E402
 from pytest_roadlogic.frontend import OscError, load_file  # noqa: E402
 from pytest_roadlogic.monitor import monitor  # noqa: E402
-from pytest_roadlogic.pipeline import guided_planning  # noqa: E402
 from pytest_roadlogic.planning import NoPlanError, planner_for, settings_for  # noqa: E402
+from pytest_roadlogic.problem import problem_for  # noqa: E402
 from pytest_roadlogic.sampling import drawn  # noqa: E402
 from pytest_roadlogic.settings import RunSettings  # noqa: E402
 from pytest_roadlogic.simulation import SimulationLimits  # noqa: E402
@@ -46,9 +46,11 @@ def plans(scenario, values: list[dict], seed: int):
     specification = build_automaton(scenario)
     found = []
     for sample in values:
-        guide, guided_settings, sample_seed = guided_planning(scenario, specification, sample, settings, seed)
+        problem = problem_for(scenario, sample, settings, seed)
         try:
-            found.append(next(planner_for(guide(guided_settings), guided_settings, sample_seed).plans(limit=1), None))
+            found.append(
+                next(planner_for(problem.guide(problem.settings), problem.settings, problem.seed).plans(limit=1), None)
+            )
         except NoPlanError:
             found.append(None)
     return specification, found

@@ -87,7 +87,7 @@ def main() -> int:
             print(f"{name:<22} automaton: {first_error(error.report())}")
             continue
         if args.refined:
-            refined_row(name, scenario, automaton, args.refined)
+            refined_row(name, scenario, args.refined)
             continue
         medians = {}
         for encoding in encodings:
@@ -103,22 +103,22 @@ def main() -> int:
     return 0
 
 
-def refined_row(name: str, scenario, automaton, count: int, seed: int = 11) -> None:
+def refined_row(name: str, scenario, count: int, seed: int = 11) -> None:
     """Prints the seconds to the first plan of ``count`` samples (median, max) and how many have none."""
     from driver import samples
 
-    from pytest_roadlogic.pipeline import guided_planning
     from pytest_roadlogic.planning import settings_for
     from pytest_roadlogic.planning.fallbacks import planned
+    from pytest_roadlogic.problem import problem_for
     from pytest_roadlogic.settings import RunSettings
 
     settings = settings_for(RunSettings(), explain_unsatisfiable=False)
     seconds, without, slowest = [], 0, None
     for values in samples(scenario, count, seed):
         started = time.perf_counter()
-        guide, guided, sample_seed = guided_planning(scenario, automaton, values, settings, seed)
+        problem = problem_for(scenario, values, settings, seed)
         try:
-            found = next(planned(guide, guided, sample_seed, 1), None) is not None
+            found = next(planned(problem.guide, problem.settings, problem.seed, 1), None) is not None
         except NoPlanError:
             found = False
         elapsed = time.perf_counter() - started

@@ -14,15 +14,13 @@ import dataclasses
 from collections.abc import Callable
 from typing import Any
 
-from .automaton import build_automaton
 from .case import Case
 from .frontend import CheckedScenario
 from .frontend.semantics.logical import WAY
 from .outcomes import CANNOT_INSTANTIATE
-from .pipeline import guided_planning
 from .planning import PlannerSettings, settings_for
 from .planning.fallbacks import planned
-from .sampling import on_ways
+from .problem import problem_for
 from .settings import RunSettings
 
 
@@ -42,10 +40,11 @@ def has_plan(
     from .planning import HorizonTooShort, NoPlanError, PlanningTimeout
 
     settings = dataclasses.replace(settings or settings_for(RunSettings()), explain_unsatisfiable=False)
-    scenario = on_ways(scenario, values)  # the ways through the map the sample takes
-    guide, settings, seed = guided_planning(scenario, build_automaton(scenario), values, settings, seed)
+    problem = problem_for(scenario, values, settings, seed)
     try:
-        return next(planned(guide, settings, seed, 1, fallbacks, beyond_limits), None) is not None
+        return (
+            next(planned(problem.guide, problem.settings, problem.seed, 1, fallbacks, beyond_limits), None) is not None
+        )
     except (PlanningTimeout, HorizonTooShort):
         return True
     except NoPlanError:

@@ -4,7 +4,7 @@ the rest of the scenario solved again from the observed state (``Replanner``,
 ``asp/continuous/replan.lp``). Between planning and simulation: it asks the planner, and the
 lockstep loop asks it."""
 
-from .execution import ReactiveExecution, replanning_seconds
+from .execution import ReactiveExecution, execution_for, replanning_seconds
 from .replanner import Replan, Replanner
 
-__all__ = ["ReactiveExecution", "Replan", "Replanner", "replanning_seconds"]
+__all__ = ["ReactiveExecution", "Replan", "Replanner", "execution_for", "replanning_seconds"]

@@ -175,3 +175,36 @@ def replanning_seconds(replans: list[Replan]) -> tuple[float, float]:
     if not seconds:
         return math.nan, math.nan
     return seconds[len(seconds) // 2], seconds[min(len(seconds) - 1, math.ceil(0.95 * len(seconds)) - 1)]
+
+
+def execution_for(plan: Plan, guide, settings, seed: int, dut: str, period: float) -> ReactiveExecution | None:
+    """The reactive execution of ``plan`` around the vehicle under test ``dut``, replanned every
+    ``period`` seconds with the planner that planned it (``guide`` and ``settings`` as
+    ``planning.fallbacks.planned`` had them); None where the plan is driven as it is: a period
+    of 0, an encoding that cannot replan from a state (the grid's), or a route laid onto none of
+    the others, which has an origin of its own that a replan would move under its cars
+    (docs/junctions.md)."""
+    if not period or not settings.replanning:
+        return None
+    if plan.side_routes and not _laid_together(plan):
+        return None
+    from ..planning.fallbacks import settings_of
+
+    planned_with = settings_of(plan, settings)
+    if plan.origin is not None:
+        # on a map the scenario stays where the simulation has it: a replan's positions are the
+        # plan's, from the same place on the route
+        planned_with = planned_with.at_origin(plan.origin)
+    replanner = Replanner(guide(planned_with), planned_with, seed, dut)
+    # vehicles on other ways through a junction meet the vehicle under test only where the ways do
+    return ReactiveExecution(replanner, plan, period, on_course_only=bool(plan.side_routes))
+
+
+def _laid_together(plan: Plan) -> bool:
+    """Whether every route of ``plan`` is laid onto the first where they meet (``roads.conflicts.alignments``):
+    a replan keeps the routes where the simulation has them through route 0's origin and the
+    routes laid onto it."""
+    from ..roads.conflicts import alignments
+
+    routes = (plan.route, *dict.fromkeys(route for route, _ in plan.side_routes.values()))
+    return {a.route for a in alignments(routes)} == set(range(1, len(routes)))

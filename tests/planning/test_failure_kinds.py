@@ -72,7 +72,7 @@ def test_a_sample_whose_values_clash_only_together_blames_none_of_them(tmp_path)
     runner = Runner(load_scenario(two_parameters(tmp_path)), RunSettings())
     end = "ego.drive.position.distance"
     # a fallback plans the value itself, not the value moved inward by the first planner's margins
-    # (pipeline._guided): 34 m is the last whole metre its thinner margins close to 12 m
+    # (problem.problem_for): 34 m is the last whole metre its thinner margins close to 12 m
     assert runner.blame.without_plan_alone({"start_gap": 34.0, end: 8.0}) == [], "34 m closes to 12 m, only not to 8 m"
     assert runner.blame.without_plan_alone({"start_gap": 38.0, end: 12.0}) == ["start_gap"], "38 m closes to no end gap"
 

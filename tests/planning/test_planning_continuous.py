@@ -453,9 +453,9 @@ def test_a_gap_in_one_lane_that_the_scenario_asks_closer_than_the_tools_spacing_
     centres. A sample of 6 m had no plan until the fallbacks relaxed the gap, after searches that
     each proved there was none: now the first planner plans it, with the gap the file asks for,
     and a scenario asking for no close gap keeps the tool's (its plans are unchanged)."""
-    from pytest_roadlogic.pipeline import guided_planning
     from pytest_roadlogic.planning import planner_for, settings_for
     from pytest_roadlogic.planning.encodings.continuous.instance import spacing
+    from pytest_roadlogic.problem import problem_for
     from pytest_roadlogic.settings import RunSettings
 
     scenario = load_scenario(Path(__file__).resolve().parents[2] / "benchmarks" / "scenarios" / "follow_close.osc")
@@ -463,7 +463,8 @@ def test_a_gap_in_one_lane_that_the_scenario_asks_closer_than_the_tools_spacing_
     settings = settings_for(RunSettings(), explain_unsatisfiable=False)
     assert spacing(specification, settings) == settings.min_gap, "the range 5-15 m holds gaps of 8 m"
     values = {"start_gap": 20.0, "end_gap": 6.0, "lead_speed": 10.0}
-    guide, guided, seed = guided_planning(scenario, specification, values, settings, 1)
+    problem = problem_for(scenario, values, settings, 1)
+    guide, guided, seed = problem.guide, problem.settings, problem.seed
     assert 5.0 <= spacing(guide(guided), guided) < settings.min_gap
     plan = next(planner_for(guide(guided), guided, seed).plans(limit=1))
     gap = plan.states["lead"][-1].position - plan.states["tail"][-1].position

@@ -11,11 +11,12 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from pytest_roadlogic.automaton import build_automaton
-from pytest_roadlogic.pipeline import guided_planning, load_scenario
+from pytest_roadlogic.pipeline import load_scenario
 from pytest_roadlogic.planning import NoPlanError, UnsatisfiableScenario, planner_for
 from pytest_roadlogic.planning import settings_for as planner_settings
 from pytest_roadlogic.planning.fallbacks import fallback_settings, planned
 from pytest_roadlogic.planning.relaxation import provably_unplannable
+from pytest_roadlogic.problem import problem_for
 from pytest_roadlogic.settings import RunSettings
 from tests.conftest import ROOT
 
@@ -24,8 +25,8 @@ FASTEST = 100.0  # m/s: the relaxed fallback's top speed (ContinuousSettings.rel
 
 
 def guided(path, values):
-    scenario = load_scenario(path)
-    return guided_planning(scenario, build_automaton(scenario), values, planner_settings(RunSettings()), 1)
+    problem = problem_for(load_scenario(path), values, planner_settings(RunSettings()), 1)
+    return problem.guide, problem.settings, problem.seed
 
 
 def test_a_gap_no_allowed_speed_closes_in_time_is_refused_before_any_search_naming_what_clashes():

@@ -442,22 +442,22 @@ def test_the_lane_drop_runs_conformant_and_no_car_is_in_the_ending_lane_past_its
 
 
 def test_on_a_map_the_planner_knows_the_curve_speed_the_speed_limit_and_where_each_lane_is(tmp_path):
-    from pytest_roadlogic.automaton import build_automaton
-    from pytest_roadlogic.pipeline import guided_planning, load_scenario
+    from pytest_roadlogic.pipeline import load_scenario
     from pytest_roadlogic.planning import settings_for
+    from pytest_roadlogic.problem import problem_for
     from pytest_roadlogic.roads.route import MAX_LATERAL_ACCELERATION
     from pytest_roadlogic.settings import RunSettings
 
     (tmp_path / "s.xodr").write_bytes((MAPS / "s_curve.xodr").read_bytes())
     scenario = load_scenario(scenario_file(tmp_path, "s.xodr"))
-    _, settings, _ = guided_planning(scenario, build_automaton(scenario), None, settings_for(RunSettings()), 1)
+    settings = problem_for(scenario, None, settings_for(RunSettings()), 1).settings
     assert settings.max_speed == pytest.approx(math.sqrt(MAX_LATERAL_ACCELERATION * 400.0))
     # a message naming the top speed says where it comes from
     assert dict(settings.limit_reasons)["max_speed"].startswith("the sharpest curve of road 1 of s.xodr, radius 400 m")
     assert settings.road_speed[1] == pytest.approx(100 / 3.6)  # the map's limit, 100 km/h
     assert settings.route_span == (30.0, 970.0) and settings.lane_spans == ()
     ramp = load_scenario(ROOT / "scenarios" / "roads" / "merge_from_ramp.osc")
-    _, settings, _ = guided_planning(ramp, build_automaton(ramp), None, settings_for(RunSettings()), 1)
+    settings = problem_for(ramp, None, settings_for(RunSettings()), 1).settings
     ((lane, first, last),) = settings.lane_spans
     assert lane == 3 and 180.0 < first < 200.0 and 395.0 < last < 410.0
 

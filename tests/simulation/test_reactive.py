@@ -13,10 +13,11 @@ import pytest
 from pytest_roadlogic.automaton import build_automaton
 from pytest_roadlogic.dut import UnderTest
 from pytest_roadlogic.dut.reference_drivers import AdaptiveCruiseControl
-from pytest_roadlogic.pipeline import guided_planning, load_scenario, run_instances
+from pytest_roadlogic.pipeline import load_scenario, run_instances
 from pytest_roadlogic.planning import settings_for
 from pytest_roadlogic.planning.fallbacks import planned
 from pytest_roadlogic.planning.plan import PlanState
+from pytest_roadlogic.problem import problem_for
 from pytest_roadlogic.reactive import ReactiveExecution, Replanner
 from pytest_roadlogic.reactive.replanner import Replan
 from pytest_roadlogic.settings import RunSettings
@@ -35,10 +36,16 @@ VALUES = {
 }
 
 
+def _problem(scenario, values, settings):
+    """The guide, settings and seed a sample of ``scenario`` is planned with (``problem.problem_for``)."""
+    problem = problem_for(scenario, values, settings, 1)
+    return problem.guide, problem.settings, problem.seed
+
+
 @pytest.fixture(scope="module")
 def first_plan():
     scenario = load_scenario(CUT_IN)
-    guide, settings, seed = guided_planning(scenario, build_automaton(scenario), VALUES, settings_for(RunSettings()), 1)
+    guide, settings, seed = _problem(scenario, VALUES, settings_for(RunSettings()))
     return guide, settings, seed, next(planned(guide, settings, seed, 1))
 
 
@@ -141,7 +148,7 @@ def test_a_cut_in_seen_not_to_have_happened_when_planned_is_replanned_to_end_lat
     # step its plan ended it may still end later
     values = {k: v for k, v in VALUES.items() if k != "cut_in.duration"}
     scenario = load_scenario(CUT_IN)
-    guide, settings, seed = guided_planning(scenario, build_automaton(scenario), values, settings_for(RunSettings()), 1)
+    guide, settings, seed = _problem(scenario, values, settings_for(RunSettings()))
     plan = next(planned(guide, settings, seed, 1))
     replanner = Replanner(guide(settings), settings, seed, "dut.car")
     end, cut_in_ends = plan.transitions[2]  # start, approach -> cut-in, cut-in -> brake, end
@@ -244,7 +251,7 @@ def test_an_observed_state_is_held_to_the_scenario_as_written_not_to_the_plans_m
     # the scenario is still planned: it had timed out, and the case ended not exercised
     scenario = load_scenario(ROOT / "scenarios" / "dut" / "ccr_braking_close.osc")
     settings = settings_for(RunSettings()).with_self_driven("dut.car")
-    guide, settings, seed = guided_planning(scenario, build_automaton(scenario), {}, settings, 1)
+    guide, settings, seed = _problem(scenario, {}, settings)
     plan = next(planned(guide, settings, seed, 1))
     observed = observed_at(plan, 2)
     observed["target"] = PlanState(observed["target"].position, observed["target"].lane, 14.3)
