@@ -23,7 +23,6 @@ from .oracles import DutReport, judge
 from .planning import Plan, PlannerSettings, settings_for
 from .planning.fallbacks import planned, tool_limit
 from .problem import problem_for
-from .reactive import execution_for
 from .settings import DEFAULT_SIM_TIMEOUT, RunSettings
 from .simulation import DriverFactory, Simulation, SimulationLimits, Simulator
 
@@ -121,6 +120,8 @@ def run_instances(
     problem = problem_for(scenario, values, settings, seed, under_test.vehicle if under_test is not None else None)
     dut = problem.self_driven
     if dut is not None:
+        from .reactive import execution_for  # replanning loads with a vehicle under test only
+
         drivers = under_test.drivers(dut, drivers)
     automaton_seconds = time.perf_counter() - start
     plans = planned(problem.guide, problem.settings, problem.seed, count * max_tries, fallbacks)

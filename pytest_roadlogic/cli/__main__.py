@@ -1,5 +1,5 @@
 """``python -m pytest_roadlogic.cli``: the ``roadlogic`` command."""
 
-from . import main
+from . import command
 
-raise SystemExit(main())
+command()

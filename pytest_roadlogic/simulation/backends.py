@@ -8,7 +8,6 @@ session pays for none it does not use.
 
 from __future__ import annotations
 
-from importlib import metadata
 from typing import TYPE_CHECKING
 
 from ..registries.entry_points import registered_names
@@ -50,6 +49,8 @@ def simulator(name: str = DEFAULT) -> Simulator:
 
     if name in BUILT_IN:
         return BUILT_IN[name]()
+    from importlib import metadata  # read when a package's is asked for: not at start-up
+
     for point in metadata.entry_points(group=ENTRY_POINT_GROUP):
         if point.name == name:
             backend = point.load()()

@@ -1,38 +1,45 @@
 """The construct registries by dialect name: what ``check_file(..., dialect=...)`` checks with.
 
 A registry (``checked.Registry``) says what a dialect's actions and modifiers are; the constructs
-provide them (``pytest_roadlogic.constructs``: ``standard`` and ``carla``), and any package may add
-a dialect with an entry point in the ``pytest_roadlogic.dialects`` group whose object is a
-registry. Looked up by name, as the simulators are (``simulation/backends.py``), so that the front
-end, which the constructs are written in terms of, does not import them.
+provide the built-in ones (``pytest_roadlogic.constructs``: ``standard`` and ``carla``), and any
+package may add a dialect with an entry point in the ``pytest_roadlogic.dialects`` group whose
+object is a registry. Looked up by name, as the simulators are (``simulation/backends.py``), so
+that the front end, which the constructs are written in terms of, does not import them; the
+installed packages' entry points are read only for a name that is not built in (reading them
+costs every run tens of milliseconds).
 """
 
 from __future__ import annotations
 
 import functools
-from importlib import metadata
+from importlib import import_module
 
-from ...settings import STANDARD_DIALECT
+from ...registries.entry_points import registered_names
+from ...settings import CARLA_DIALECT, STANDARD_DIALECT
 from .checked import Registry
 
 ENTRY_POINT_GROUP = "pytest_roadlogic.dialects"
+# the built-in ones, as "module:attribute" in this package, imported when a file is read with one
+BUILT_IN = {
+    STANDARD_DIALECT: "pytest_roadlogic.constructs:STANDARD",
+    CARLA_DIALECT: "pytest_roadlogic.constructs:CARLA",
+}
 
 
 def names() -> list[str]:
-    """Every dialect a package registers, the standard first."""
-    found = sorted({point.name for point in metadata.entry_points(group=ENTRY_POINT_GROUP)})
-    return sorted(found, key=lambda name: name != STANDARD_DIALECT)
+    """Every dialect's name: the built-in ones (the standard first), then those packages register."""
+    return list(registered_names(BUILT_IN, ENTRY_POINT_GROUP))
 
 
 @functools.cache
 def registry(name: str = STANDARD_DIALECT) -> Registry:
     """The registry of dialect ``name``; ``ValueError`` naming the known ones when there is none."""
+    if name in BUILT_IN:
+        module, _, attribute = BUILT_IN[name].partition(":")
+        return getattr(import_module(module), attribute)
+    from importlib import metadata  # read when a package's dialect is asked for: not at start-up
+
     for point in metadata.entry_points(group=ENTRY_POINT_GROUP):
         if point.name == name:
             return point.load()
-    known = names()
-    if not known:
-        raise ValueError(
-            f"no dialect is registered (not even {STANDARD_DIALECT!r}): install pytest-roadlogic, e.g. pip install -e ."
-        )
-    raise ValueError(f"unknown dialect {name!r}; give one of {', '.join(known)}")
+    raise ValueError(f"unknown dialect {name!r}; give one of {', '.join(names())}")

@@ -8,8 +8,6 @@ its planner, and with it the solver, on first use.
 
 from __future__ import annotations
 
-from importlib import metadata
-
 from ...settings import ENCODING_ENTRY_POINTS, encoding_names
 from ..protocol import Encoding
 from .continuous import ENCODING as CONTINUOUS
@@ -32,6 +30,8 @@ def encoding(name: str) -> Encoding:
     """The encoding called ``name``; ``UnknownEncoding`` (with the known names) when there is none."""
     if name in BUILT_IN:
         return BUILT_IN[name]
+    from importlib import metadata  # read when a package's is asked for: not at start-up
+
     for point in metadata.entry_points(group=ENTRY_POINT_GROUP):
         if point.name == name:
             found = point.load()
