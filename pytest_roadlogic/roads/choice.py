@@ -74,6 +74,15 @@ def curve_stretch(road: MapRoad, curve: tuple[float | None, float | None, str | 
     return best
 
 
+class NoFittingTurn(MapError):
+    """The map has turns of the kind a path asks for, none with the lanes or the room the scenario
+    needs; ``asked_by``: the scenario's path that asks."""
+
+    def __init__(self, path, message: str, hint: str = "", asked_by: str = "") -> None:
+        super().__init__(path, message, hint)
+        self.asked_by = asked_by
+
+
 MIN_ROUTE_LENGTH = 200.0  # m of route a scenario that names no path_length is given at least
 # m of road a turn's road in and road out need each: the planner keeps every car ROUTE_MARGIN from
 # a route's ends, and a car driving through the junction approaches it and leaves it on them
@@ -163,17 +172,25 @@ def fitting_turns(road_map: RoadMap, lanes: int, length: float, ask: TurnAsk) ->
         if t.lanes >= lanes and t.length >= length and min(t.into.length, t.out_of.length) >= MIN_APPROACH
     ]
     if asked_for and not offered:
-        # the map has the turn, but not with the lanes or the room the scenario needs: say so
-        longest = max(t.length for t in asked_for)
-        most = max(t.lanes for t in asked_for)
-        raise MapError(
+        # the map has the turn, but not with the lanes or the room the scenario needs: say which
+        with_lanes = [t for t in asked_for if t.lanes >= lanes]
+        long_enough = [t for t in with_lanes if t.length >= length]
+        approach = max(min(t.into.length, t.out_of.length) for t in (long_enough or with_lanes or asked_for))
+        count = len(asked_for)
+        if not with_lanes:
+            most = max(t.lanes for t in asked_for)
+            short = f"none has {lanes} driving lanes in and out (at most {most})"
+        elif not long_enough:
+            short = f"{len(with_lanes)} have {lanes} driving lane{'' if lanes == 1 else 's'} in and out, none {length:g} m of road in all (at most {max(t.length for t in with_lanes):.0f} m)"
+        else:
+            short = f"{len(long_enough)} have the lanes and {length:g} m of road in all, none {MIN_APPROACH:g} m of road both in and out of the junction (at most {approach:.0f} m)"
+        raise NoFittingTurn(
             road_map.path,
-            f"the map's {len(asked_for)} turn{'' if len(asked_for) == 1 else 's'} of the kind asked "
-            f"({', '.join(t.describe() for t in asked_for[:6])}{', ...' if len(asked_for) > 6 else ''}) "
-            f"{'has' if len(asked_for) == 1 else 'have'} at most {most} driving lane{'' if most == 1 else 's'} in and out "
-            f"and {longest:.0f} m of road at most; the scenario needs "
-            f"{lanes} and {length:g} m, with at least {MIN_APPROACH:g} m of road in and out of the junction",
+            f"of the map's {count} turn{'' if count == 1 else 's'} of the kind {ask.path} asks "
+            f"({', '.join(t.describe() for t in asked_for[:6])}{', ...' if count > 6 else ''}), {short}; "
+            f"a car approaches and leaves the junction on the roads in and out, and stays {ROUTE_MARGIN:g} m from a route's ends",
             "ask for less (the lanes it names, path_length), or give a map whose junction has longer roads",
+            asked_by=ask.path,
         )
     if not offered:
         where = f"a junction of {roads} roads" if roads else "a junction"

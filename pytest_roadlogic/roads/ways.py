@@ -111,10 +111,11 @@ def choose_ways(
     """Every way ``asks``' paths may take together in ``road_map`` (``asp/map/ways.lp``): a turn per
     ask of the kind it names with ``lanes`` driving lanes and ``length`` metres in all
     (``choice.fitting_turns``), the junction and roads agreeing with the fields the asks share,
-    and, where some choice allows it, every two paths on different turns whose ways meet; else
-    only the first answer that agrees (two paths in sequence are not there to meet); and the
-    standard's map ``relations`` between the paths' routes. Answers whose routes' lanes differ from the first's are
-    left out (a scenario has one lane count). ``MapError`` when an ask has no turn of its kind, or
+    and, where some choice allows it, every path's way with as many driving lanes and every two
+    paths on different turns whose ways meet; else only the first answer that agrees (two paths in
+    sequence are not there to meet); and the standard's map ``relations`` between the paths'
+    routes. Answers whose routes' lanes differ from the first's are left out (a scenario has one
+    lane count). ``MapError`` when an ask has no turn of its kind, or
     no turns of their kinds go together."""
     length = length or MIN_ROUTE_LENGTH  # room to drive, as pick_route gives a single route
     fitting = [{_key(t) for t in fitting_turns(road_map, lanes, length, ask)} for ask in asks]
@@ -141,9 +142,18 @@ def choose_ways(
             facts.append(f"relation({r.first},{r.second},{r.relation}).")
         if r.road is not None:
             facts.append(f"on_road({r.first},{r.second},{r.relation},{fields.setdefault(r.road, len(fields))}).")
+    lanes_of = [min(through_lanes(t.into)[1], through_lanes(t.out_of)[1]) for t in offered]
+    facts += [f"lanes({index},{lanes})." for index, lanes in enumerate(lanes_of)]
     partial = Ways(road_map, tuple(a.path for a in asks), tuple(offered), (), (), crossers)
     facts += [f"meets({t},{u})." for t, u in _meeting(partial, asks, fitting)]
-    answers = _solve(facts, together=True) or _solve(facts, together=False)[:1]
+    # ways of as many lanes first (a scenario plans one number of lanes: other ways are refused
+    # naming their lanes), then ways that meet
+    answers = (
+        _solve(facts, together=True, same_lanes=True)
+        or _solve(facts, together=False, same_lanes=True)[:1]
+        or _solve(facts, together=True, same_lanes=False)[:1]
+        or _solve(facts, together=False, same_lanes=False)[:1]
+    )
     if not answers:
         raise MapError(
             road_map.path,
@@ -152,7 +162,6 @@ def choose_ways(
             + f"): {describe_junctions(road_map)}",
             "name in roads_follow_in_junction only the junction and roads two turns must share, or give a map with such a junction",
         )
-    lanes_of = [min(through_lanes(t.into)[1], through_lanes(t.out_of)[1]) for t in offered]
     answers = [a for a in answers if [lanes_of[t] for t in a] == [lanes_of[t] for t in answers[0]]]
     return Ways(road_map, partial.paths, partial.turns, _labels(offered), tuple(answers), crossers, partial.built)
 
@@ -197,14 +206,16 @@ def _agree(ask: TurnAsk, turn: Turn, other_ask: TurnAsk, other: Turn) -> bool:
     return all(theirs.get(name, value) == value for name, value in mine.items())
 
 
-def _solve(facts: list[str], together: bool) -> list[tuple[int, ...]]:
-    """The answers of ``asp/map/ways.lp`` on ``facts`` (each path's turn index), in the map's order."""
+def _solve(facts: list[str], together: bool, same_lanes: bool) -> list[tuple[int, ...]]:
+    """The answers of ``asp/map/ways.lp`` on ``facts`` (each path's turn index), in the map's order,
+    with its externals ``together`` and ``same_lanes`` set as given."""
     # projected on the ways: a road field named only by a relation may be any road it holds on
     control = clingo.Control([str(MAX_WAYS), "--project", "--warn=none"])
     control.load(str(ENCODING))
     control.add("base", [], "\n".join(facts))
     control.ground([("base", [])])
     control.assign_external(clingo.Function("together"), together)
+    control.assign_external(clingo.Function("same_lanes"), same_lanes)
     answers = []
     with control.solve(yield_=True) as handle:
         for model in handle:

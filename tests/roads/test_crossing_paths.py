@@ -244,7 +244,7 @@ def test_cars_taking_different_ways_through_the_junction_run_conformant_and_neve
 
 
 def test_a_turn_whose_road_in_or_out_is_too_short_to_approach_the_junction_on_is_not_offered(tmp_path):
-    from pytest_roadlogic.roads.choice import MIN_APPROACH, fitting_turns
+    from pytest_roadlogic.roads.choice import MIN_APPROACH, NoFittingTurn, fitting_turns
     from tests.roads.map_files import recipe
 
     maps = recipe(MAPS)
@@ -252,8 +252,14 @@ def test_a_turn_whose_road_in_or_out_is_too_short_to_approach_the_junction_on_is
     written = next(p for p in maps.write(tmp_path) if p.name == "crossing.xodr")
     road_map = read_map(written)
     assert all(t.length >= 100.0 for t in turns(road_map))
-    with pytest.raises(MapError, match=f"with at least {MIN_APPROACH:g} m of road in and out of the junction"):
-        fitting_turns(road_map, 1, 100.0, TurnAsk("left"))
+    with pytest.raises(
+        NoFittingTurn, match=f"none {MIN_APPROACH:g} m of road both in and out of the junction"
+    ) as refused:
+        fitting_turns(road_map, 1, 100.0, TurnAsk("left", path="ego_path"))
+    # refused at the path that asks for the turn, saying how long the longest approach is
+    assert refused.value.asked_by == "ego_path"
+    longest = float(refused.value.message.split("(at most ")[1].split(" m)")[0])
+    assert longest < MIN_APPROACH
 
 
 def test_the_first_vehicle_declared_may_drive_another_route_than_the_first_path(tmp_path):

@@ -57,6 +57,43 @@ def test_the_solver_answers_every_pair_of_turns_at_one_junction_whose_ways_meet_
     assert list(ways.combinations) == sorted(ways.combinations)  # in the map's order, the first the default
 
 
+def test_paths_take_ways_of_as_many_lanes_where_the_map_has_them(monkeypatch):
+    """A scenario plans one number of lanes, so of the ways that go together the solver answers
+    those whose lanes agree, where there are any (in CARLA's Town04 the first answer had a turn
+    off a two-lane road beside a one-lane way, and the scenario was refused). Checked against the
+    answers without lanes, filtered by the definition."""
+    import pytest_roadlogic.roads.ways as ways_module
+
+    road_map = read_map(TOWN)
+    asks = (TurnAsk(junction="j", path="a"), TurnAsk(junction="j", path="b"))
+    crossers = (frozenset(), frozenset())
+    every = choose_ways(road_map, 1, 200.0, asks, crossers)  # the town's roads have one lane each
+
+    def lanes(road):  # roads of odd ids have two lanes one way; a turn keeps its fewer
+        return 1, 1 + int(road.id) % 2
+
+    monkeypatch.setattr(ways_module, "through_lanes", lanes)
+    agreeing = choose_ways(road_map, 1, 200.0, asks, crossers)
+
+    def of(turn):
+        return min(lanes(turn.into)[1], lanes(turn.out_of)[1])
+
+    expected = {
+        tuple(every.turns[t].describe() for t in answer)
+        for answer in every.combinations
+        if of(every.turns[answer[0]]) == of(every.turns[answer[1]])
+    }
+    answered = {tuple(agreeing.turns[t].describe() for t in answer) for answer in agreeing.combinations}
+    first = {of(agreeing.turns[t]) for t in agreeing.combinations[0]}
+    assert expected and len(first) == 1
+    # of those, the ones with the first answer's lanes (a scenario has one lane count)
+    assert answered == {
+        answer
+        for answer in expected
+        if {of(next(t for t in every.turns if t.describe() == d)) for d in answer} == first
+    }
+
+
 def test_a_path_that_may_take_several_ways_is_a_logical_parameter_at_its_roads_follow_in_junction(town):
     ways = {p.name: p for p in town.parameters if p.kind == WAY}
     assert set(ways) == {"ego_way", "other_way"}

@@ -112,7 +112,7 @@ class RoadLanes:
         """The lanes of the route the scenario runs on in the map it asked for (``self.map_asked``):
         the map's road that has the ``needed`` lanes; an error at ``set_map`` (or at the scenario,
         for the map option) saying why no road fits, or why the map cannot be read."""
-        from ...roads.choice import pick_route
+        from ...roads.choice import NoFittingTurn, pick_route
         from ...roads.opendrive_in import MapError, read_map
 
         path, location = self.map_asked
@@ -161,6 +161,8 @@ class RoadLanes:
                 return needed
             try:
                 self._routes_of_map(scenario, road_map, needed, length, at)
+            except NoFittingTurn as error:  # at the path whose turns lack the lanes or the room
+                return refused(self.turn_asks.get(error.asked_by, (None, turn_at))[1], error)
             except MapError as error:
                 return refused(turn_at, error)
         else:
