@@ -33,12 +33,13 @@ JUNCTIONS = sorted((ROOT / "scenarios" / "junctions").glob("*.osc"))
 
 
 def _reason(error: BaseException) -> str:
-    """The first line of an error's message, with the map's path and numbers that differ between
-    maps (ids, metres, line and column) made general, so that equal reasons group."""
+    """The first line of an error's message, with the map's path, its roads' and junctions' ids and
+    names made general, so that equal reasons group; lengths and lane counts are kept."""
     text = str(error).strip().splitlines()[0] if str(error).strip() else type(error).__name__
     text = re.sub(r"\S+\.xodr(:\d+:\d+)?:?", "MAP:", text)
-    text = re.sub(r"(?<![A-Za-z])-?\d+(\.\d+)?", "N", text)
-    return text[:150]
+    text = re.sub(r"\b(road|junction) -?\d+", r"\1 #", text)
+    text = re.sub(r"'[^']*'", "'...'", text)
+    return text[:240]
 
 
 def _map_summary(path: Path) -> tuple[str, str | None]:

@@ -169,6 +169,10 @@ class ReferenceLine:
         return float(np.abs(curvature[inside]).max()) if inside.any() else 0.0
 
 
+JOINED = 1e-3  # m between a line's end and the next one's start within which they are one point
+STEP_APART = 1e-6  # m along a joined line between the two points of a step sideways
+
+
 @dataclass(frozen=True)
 class JoinedLine(ReferenceLine):
     """Reference lines one after another (a route over several roads: each road's line as the
@@ -189,8 +193,18 @@ class JoinedLine(ReferenceLine):
             parts, start = [], 0.0
             for k, part in enumerate(self.parts):
                 s, x, y, heading, curvature = part.sampled()
-                keep = slice(1, None) if k else slice(None)  # a part's start is its predecessor's end
-                parts.append((s[keep] - s[0] + start, x[keep], y[keep], heading[keep], curvature[keep]))
+                s = s - s[0] + start
+                if k and math.hypot(x[0] - parts[-1][1][-1], y[0] - parts[-1][2][-1]) <= JOINED:
+                    keep = slice(1, None)  # a part's start is its predecessor's end
+                else:
+                    # the first line, or one that starts beside its predecessor's end (two roads whose
+                    # lanes continue one another with lane offsets of their own): the line steps
+                    # sideways in the micrometre before the joint, where it is the next road's, as
+                    # the lane offsets and sections of a route are
+                    keep = slice(None)
+                    if k:
+                        parts[-1][0][-1] -= STEP_APART
+                parts.append((s[keep], x[keep], y[keep], heading[keep], curvature[keep]))
                 start += part.length
             s, x, y, heading, curvature = (np.concatenate([p[i] for p in parts]) for i in range(5))
             self.samples["all"] = (s, x, y, np.unwrap(heading), curvature)

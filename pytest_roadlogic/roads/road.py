@@ -60,8 +60,7 @@ class Road:
 
     def inner_edge(self, x) -> np.ndarray:
         """Metres left of the route's reference line at which its driving lanes begin, at ``x`` (0
-        on the straight road): the simulator's frame runs along the reference line, so a lateral
-        position in it is ``y`` less the lanes' width plus this."""
+        on the straight road)."""
         if self.route is None:
             return np.zeros_like(np.asarray(x, dtype=float))
         return self.route.inner_edge(np.asarray(x, dtype=float) + self.route_shift)

@@ -603,3 +603,70 @@ def test_the_grid_encoding_on_a_map_has_no_plan_and_says_why_rather_than_plan_a_
     with pytest.raises(NoPlanError) as caught:
         run_scenario(scenario, seed=1, settings=settings_for(RunSettings(encoding="grid")))
     assert "needs the continuous encoding" in str(caught.value)
+
+
+def stepped_map(path: Path) -> Path:
+    """Two straight roads along +x, 300 m each, one lane each way, the second's reference line
+    1.75 m right of the first's end, its lanes moved back by a lane offset of 1.75 m: their lanes
+    continue one another while their lines step sideways (as esmini's fabriksgatan's roads into
+    its junction do)."""
+    lanes = (
+        '<laneSection s="0"><left><lane id="1" type="driving"><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane>'
+        '</left><right><lane id="-1" type="driving"><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane></right></laneSection>'
+    )
+    return write(
+        path,
+        f"""
+        <?xml version="1.0"?>
+        <OpenDRIVE><header/>
+        <road id="1" length="300" junction="-1"><link><successor elementType="road" elementId="2" contactPoint="start"/></link>
+        <planView><geometry s="0" x="0" y="0" hdg="0" length="300"><line/></geometry></planView>
+        <lanes>{lanes}</lanes></road>
+        <road id="2" length="300" junction="-1"><link><predecessor elementType="road" elementId="1" contactPoint="end"/></link>
+        <planView><geometry s="0" x="300" y="-1.75" hdg="0" length="300"><line/></geometry></planView>
+        <lanes><laneOffset s="0" a="1.75" b="0" c="0" d="0"/>{lanes}</lanes></road>
+        </OpenDRIVE>
+        """,
+    )
+
+
+def test_a_route_over_roads_whose_lines_step_sideways_where_their_lanes_meet_runs_in_the_lanes(tmp_path):
+    """Just past the step the route's line is the second road's, not a line drawn across the step
+    from the first road's end (the lanes' edge was put 0.7 m out there, a kink no car followed:
+    the cars stopped at fabriksgatan's junction), and a scenario runs through it in its lane."""
+    from pytest_roadlogic.pipeline import load_scenario, run_scenario
+
+    (tmp_path / "maps").mkdir()
+    route = pick_route(read_map(stepped_map(tmp_path / "maps" / "stepped.xodr")), 1)
+    assert route.length == pytest.approx(600.0)
+    along = np.array([299.0, 300.2, 300.4, 301.0])
+    _, line_y, _ = route.reference_line.pose(along)
+    assert line_y == pytest.approx([0.0, -1.75, -1.75, -1.75])
+    # the lanes' right edge (y = 0 in road coordinates) lies 3.5 m right of the first road's line all along
+    _, edge_y, _ = route.pose(along, np.zeros_like(along))
+    assert edge_y == pytest.approx([-3.5] * 4)
+    scenario = load_scenario(
+        write(
+            tmp_path / "stepped.osc",
+            """
+            import osc.standard
+
+            scenario stepped:
+                ego: car
+                npc: car
+                path: Path
+                path.set_map("maps/stepped.xodr")
+                do parallel(duration: [20s..22s]):
+                    ego.drive() with:
+                        speed([18mps..20mps])
+                    npc.drive() with:
+                        position(distance: [20m..30m], ahead_of: ego, at: start)
+                        speed([18mps..20mps])
+            """,
+        )
+    )
+    outcome = run_scenario(scenario, seed=1)
+    assert outcome.simulation.road.route_shift < 300.0 < outcome.simulation.road.route_shift + 360.0  # over the step
+    assert outcome.verdict.accepted, outcome.verdict.explain()
+    for name, columns in outcome.simulation.trace.actors.items():
+        assert np.all(np.abs(np.asarray(columns["world_y"]) + 1.75) < 0.6), name  # the lane's centre

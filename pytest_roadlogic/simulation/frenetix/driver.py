@@ -9,6 +9,7 @@ that importing the backend stays cheap.
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -17,18 +18,57 @@ from ..driver import DriverBase, Trajectory, VehicleState
 from ..geometry import CAR_LENGTH, CAR_WIDTH, WHEELBASE
 from ..reference import Reference
 
-_COORDINATE_SYSTEMS: dict[tuple, object] = {}
+
+@dataclass(frozen=True)
+class _Frame:
+    """The frame the drivers of a road sample in: frenetix's coordinate system along ``path``, and
+    how its s and d relate to road coordinates. On a map the path runs along the route's lanes'
+    left edge, where a lateral position in it is ``y`` less the lanes' width (``d_origin``); its s
+    at road x is read from ``route_s`` (x plus the route's shift) against ``frame_s``, which equals
+    ``route_s`` less its first value where that edge is the route's reference line (a lane offset
+    or a median moves it: in a curve the edge is longer or shorter than the line, and where two
+    roads of a route meet their reference lines may not, though their lanes do). ``turn``: the angle
+    by which the world is turned in it."""
+
+    coordinates: object
+    route_s: np.ndarray
+    frame_s: np.ndarray
+    d_origin: float
+    turn: float
+    route_shift: float
+    along_line: bool  # the path is the route's reference line (or the straight road's edge): s is x shifted
+
+    @property
+    def x_at_start(self) -> float:
+        """Road x where the path begins."""
+        return float(self.route_s[0]) - self.route_shift
+
+    def s(self, x) -> np.ndarray:
+        """The frame's s at road x."""
+        if self.along_line:
+            return np.asarray(x, dtype=float) - self.x_at_start
+        return np.interp(np.asarray(x, dtype=float) + self.route_shift, self.route_s, self.frame_s)
+
+    def x(self, s) -> np.ndarray:
+        """Road x at the frame's s."""
+        if self.along_line:
+            return np.asarray(s, dtype=float) + self.x_at_start
+        return np.interp(np.asarray(s, dtype=float), self.frame_s, self.route_s) - self.route_shift
 
 
-def _coordinate_system(road: Road):
-    """The frame the drivers of a road sample in: (frenetix's coordinate system, the frame's s at
-    x = 0 negated, its d at y = 0 negated, the angle by which the world is turned in it).
+_FRAMES: dict[tuple, _Frame] = {}
+
+
+def _frame(road: Road) -> _Frame:
+    """The frame of ``road`` (``_Frame``); building one costs tens of milliseconds, so it is built
+    once per road extent.
 
     On the straight road, the line y = 0 (the right road edge), d being y. On a map, the route's
-    reference line (its lanes' left edge), sampled every metre and run on straight 100 m before its
+    lanes' left edge, sampled every metre along the route and run on straight 100 m before its
     start and 500 m past its end (a run goes on a few seconds past its plan), d being y less the
-    lanes' width. Building one costs tens of
-    milliseconds, so it is built once per road extent.
+    lanes' width. The edge, not the route's reference line: where two roads of a route meet, their
+    reference lines may lie a metre or two apart while their lanes continue one another
+    (esmini's fabriksgatan), and frenetix projects nothing onto a line with a gap in it.
 
     frenetix's yaw-rate check differences its trajectories' headings without wrapping them: a
     trajectory whose heading crosses pi turns by 2 pi in a step and is infeasible (on a road
@@ -38,12 +78,12 @@ def _coordinate_system(road: Road):
     import frenetix
 
     key = (road.x_start, road.x_end, id(road.route), road.route_shift)
-    if key not in _COORDINATE_SYSTEMS:
-        _COORDINATE_SYSTEMS.clear()
+    if key not in _FRAMES:
+        _FRAMES.clear()
         if road.route is None:
             xs = np.arange(road.x_start - 100.0, road.x_end + 200.0, 1.0)
             path = np.stack([xs, np.zeros_like(xs)], axis=1)
-            _COORDINATE_SYSTEMS[key] = (frenetix.CoordinateSystemWrapper(path), float(xs[0]), 0.0, 0.0)
+            _FRAMES[key] = _Frame(frenetix.CoordinateSystemWrapper(path), xs, xs - xs[0], 0.0, 0.0, 0.0, True)
         else:
             route = road.route
             before, after = 100.0, 500.0
@@ -53,19 +93,23 @@ def _coordinate_system(road: Road):
                 # to the lap, from where the road begins to where it ends
                 before = max(0.0, -math.floor(road.x_start + road.route_shift))
                 after = 0.0
-            x, y, _ = route.reference_line.pose(np.arange(-before, route.length + after + 0.5, 1.0))
+            along = np.arange(-before, route.length + after + 0.5, 1.0)
+            edge = route.inner_edge(along)
+            x, y, _ = route.reference_line.pose(along, edge)
+            along_line = not np.any(edge != 0.0)
+            # frenetix's s is the length along its path: the route's where the path is its line
+            frame_s = (
+                along - along[0] if along_line else np.concatenate([[0.0], np.cumsum(np.hypot(np.diff(x), np.diff(y)))])
+            )
             _, _, heading = route.reference_line.pose(
                 np.arange(road.x_start - 100.0, road.x_end + 100.0, 1.0) + road.route_shift
             )
             turn = float(heading.min() + heading.max()) / 2
             path = np.stack(_turned(x, y, -turn), axis=1)
-            _COORDINATE_SYSTEMS[key] = (
-                frenetix.CoordinateSystemWrapper(path),
-                -(road.route_shift + before),
-                route.width,
-                turn,
+            _FRAMES[key] = _Frame(
+                frenetix.CoordinateSystemWrapper(path), along, frame_s, route.width, turn, road.route_shift, along_line
             )
-    return _COORDINATE_SYSTEMS[key]
+    return _FRAMES[key]
 
 
 def _turned(x, y, angle: float) -> tuple[np.ndarray, np.ndarray]:
@@ -121,7 +165,8 @@ class FrenetixDriver(DriverBase):
         self.reference = reference
         self.road = road
         self.dt = dt
-        self.coordinates, self.s_origin, self.d_origin, self.turn = _coordinate_system(road)
+        self.frame = _frame(road)
+        self.coordinates, self.d_origin, self.turn = self.frame.coordinates, self.frame.d_origin, self.frame.turn
         handler = frenetix.TrajectoryHandler(dt=dt)
         handler.add_feasability_function(
             ff.CheckYawRateConstraint(deltaMax=0.4, wheelbase=WHEELBASE, wholeTrajectory=False)
@@ -233,8 +278,8 @@ class FrenetixDriver(DriverBase):
         times = time + np.arange(1, tracked) * self.dt
         along = self.reference.s(times)
         target = (
-            along - self.s_origin - WHEELBASE / 2,
-            self._frame_d(times, along),
+            self.frame.s(along) - WHEELBASE / 2,
+            self._frame_d(times),
             self.reference.v(times),
         )
         costs = self._tracking_costs(
@@ -360,11 +405,9 @@ class FrenetixDriver(DriverBase):
             acceleration=acceleration,
         )
 
-    def _frame_d(self, times: np.ndarray, along: np.ndarray | None = None) -> np.ndarray:
-        """The reference's lateral position in the frame at ``times``: its y less the lanes' width,
-        plus their inner edge where it is (``along``: its x then, when already known)."""
-        along = self.reference.s(times) if along is None else along
-        return self.reference.d(times) - self.d_origin + self.road.inner_edge(along)
+    def _frame_d(self, times: np.ndarray) -> np.ndarray:
+        """The reference's lateral position in the frame at ``times``: its y less the lanes' width."""
+        return self.reference.d(times) - self.d_origin
 
     def _lateral_weight(self, along: np.ndarray) -> float:
         """The weight of the lateral error over the tracked window whose centres are ``along``
@@ -385,8 +428,8 @@ class FrenetixDriver(DriverBase):
     def _along_route(self, candidate) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """A candidate's rear axle in road coordinates (its s and d in the frame) and its heading
         less the route's there: on a map, the centre is then half a wheelbase ahead along it."""
-        s = np.array(candidate.curvilinear.s, copy=True) + self.s_origin
-        d = np.array(candidate.curvilinear.d, copy=True) + self.d_origin - self.road.inner_edge(s)
+        s = self.frame.x(np.array(candidate.curvilinear.s, copy=True))
+        d = np.array(candidate.curvilinear.d, copy=True) + self.d_origin
         _, _, along = self.road.world(s, d)
         heading = np.array(candidate.cartesian.theta, copy=True) + self.turn - along
         return s, d, (heading + np.pi) % (2 * np.pi) - np.pi
