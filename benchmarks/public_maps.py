@@ -38,7 +38,7 @@ def _reason(error: BaseException) -> str:
     text = str(error).strip().splitlines()[0] if str(error).strip() else type(error).__name__
     text = re.sub(r"\S+\.xodr(:\d+:\d+)?:?", "MAP:", text)
     text = re.sub(r"\b(road|junction) -?\d+", r"\1 #", text)
-    text = re.sub(r"'[^']*'", "'...'", text)
+    text = re.sub(r"\('[^']*'\)", "('...')", text)
     return text[:240]
 
 
