@@ -169,7 +169,10 @@ class FrenetixDriver(DriverBase):
         self.coordinates, self.d_origin, self.turn = self.frame.coordinates, self.frame.d_origin, self.frame.turn
         handler = frenetix.TrajectoryHandler(dt=dt)
         handler.add_feasability_function(
-            ff.CheckYawRateConstraint(deltaMax=0.4, wheelbase=WHEELBASE, wholeTrajectory=False)
+            # the steering angle a car has (0.6 rad: a 4 m radius at this wheelbase), as the curvature
+            # check's; 0.4 allows no bend under 6.4 m, and a town corner (6.5 m at the lane's centre)
+            # left no trajectory to a car a few centimetres inside it
+            ff.CheckYawRateConstraint(deltaMax=0.6, wheelbase=WHEELBASE, wholeTrajectory=False)
         )
         handler.add_feasability_function(
             ff.CheckAccelerationConstraint(switchingVelocity=7.3, maxAcceleration=8.0, wholeTrajectory=False)
