@@ -43,7 +43,7 @@ def command() -> None:
     The process then ends as soon as what it owes is done, without the interpreter's teardown:
     every exit handler runs (the interpreter has joined its threads before them) and the standard
     streams are flushed; freeing every module's objects one by one (numpy's, CommonRoad's,
-    clingo's) would add about a tenth of a second to every command and change nothing it wrote.
+    clingo's) would lengthen every command and change nothing it wrote (docs/decisions.md).
     In a process of its own only: ``main`` returns to a Python caller (a test) as usual."""
     import atexit
 
