@@ -15,28 +15,24 @@ import functools
 from importlib import import_module
 
 from ...registries.entry_points import registered_names
-from ...settings import CARLA_DIALECT, STANDARD_DIALECT
+from ...settings import DIALECTS, STANDARD_DIALECT
 from .checked import Registry
 
 ENTRY_POINT_GROUP = "pytest_roadlogic.dialects"
-# the built-in ones, as "module:attribute" in this package, imported when a file is read with one
-BUILT_IN = {
-    STANDARD_DIALECT: "pytest_roadlogic.constructs:STANDARD",
-    CARLA_DIALECT: "pytest_roadlogic.constructs:CARLA",
-}
+# the package whose DIALECTS holds the built-in registries by name, imported when a file is read
+CONSTRUCTS = "pytest_roadlogic.constructs"
 
 
 def names() -> list[str]:
     """Every dialect's name: the built-in ones (the standard first), then those packages register."""
-    return list(registered_names(BUILT_IN, ENTRY_POINT_GROUP))
+    return list(registered_names(DIALECTS, ENTRY_POINT_GROUP))
 
 
 @functools.cache
 def registry(name: str = STANDARD_DIALECT) -> Registry:
     """The registry of dialect ``name``; ``ValueError`` naming the known ones when there is none."""
-    if name in BUILT_IN:
-        module, _, attribute = BUILT_IN[name].partition(":")
-        return getattr(import_module(module), attribute)
+    if name in DIALECTS:
+        return import_module(CONSTRUCTS).DIALECTS[name]
     from importlib import metadata  # read when a package's dialect is asked for: not at start-up
 
     for point in metadata.entry_points(group=ENTRY_POINT_GROUP):
