@@ -183,7 +183,17 @@ def encoding(text: str) -> str:
     return one_of(encoding_names(), "a planning encoding")(text)
 
 
-dialect = one_of(DIALECTS, "a dialect")
+DIALECT_ENTRY_POINTS = "pytest_roadlogic.dialects"
+
+
+def dialect(text: str) -> str:
+    """A dialect's name: a built-in one, or one a package registers (the installed packages' entry
+    points are read only for a name that is not built in)."""
+    if text in DIALECTS:
+        return text
+    return one_of(registered_names(DIALECTS, DIALECT_ENTRY_POINTS), "a dialect")(text)
+
+
 strategy = one_of(STRATEGIES, "a strategy")
 no_plan_policy = one_of(NO_PLAN_POLICIES, "what to do with a sample without a plan")
 search = one_of(SEARCHES, "a search")

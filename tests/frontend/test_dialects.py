@@ -103,3 +103,52 @@ def test_carlas_follow_trajectory_is_refused_where_it_is_written_and_its_log_is_
     report = check_text(text, "t.osc", dialect="carla").report()
     assert "t.osc:4:5: error: not supported: follow_trajectory() replays a recorded log" in report, report
     assert "secret" not in report
+
+
+PACKAGED_DIALECT = """
+from pytest_roadlogic.constructs import STANDARD
+
+# a runner that reads every file as the standard does, under a name of its own
+MINE = STANDARD
+"""
+
+
+def test_a_dialect_plugs_in_from_an_installed_package_through_its_entry_point_alone(tmp_path):
+    """A package on the path with its module and its metadata only: `--dialect` takes its name
+    (the entry points are read for a name that is not built in), and a name nobody registers is
+    refused naming every dialect there is."""
+    import os
+    import subprocess
+    import sys
+
+    site = tmp_path / "site"
+    (site / "my_runner-1.0.dist-info").mkdir(parents=True)
+    (site / "my_runner.py").write_text(PACKAGED_DIALECT)
+    (site / "my_runner-1.0.dist-info" / "METADATA").write_text("Metadata-Version: 2.1\nName: my-runner\nVersion: 1.0\n")
+    (site / "my_runner-1.0.dist-info" / "entry_points.txt").write_text(
+        "[pytest_roadlogic.dialects]\nmine = my_runner:MINE\n"
+    )
+    env = {**os.environ, "PYTHONPATH": str(site)}
+
+    def check(dialect: str):
+        return subprocess.run(
+            [
+                sys.executable,
+                "-m",
+                "pytest_roadlogic.cli",
+                "check",
+                str(ROOT / "scenarios" / "overtake.osc"),
+                "--dialect",
+                dialect,
+            ],
+            capture_output=True,
+            text=True,
+            env=env,
+        )
+
+    mine = check("mine")
+    assert mine.returncode == 0, mine.stdout + mine.stderr
+    assert "1 ok" in mine.stdout
+    unknown = check("theirs")
+    assert unknown.returncode == 2
+    assert "'theirs' is not a dialect; give standard or carla or mine" in unknown.stderr

@@ -15,10 +15,10 @@ import functools
 from importlib import import_module
 
 from ...registries.entry_points import registered_names
-from ...settings import DIALECTS, STANDARD_DIALECT
+from ...settings import DIALECT_ENTRY_POINTS, DIALECTS, STANDARD_DIALECT
 from .checked import Registry
 
-ENTRY_POINT_GROUP = "pytest_roadlogic.dialects"
+ENTRY_POINT_GROUP = DIALECT_ENTRY_POINTS
 # the package whose DIALECTS holds the built-in registries by name, imported when a file is read
 CONSTRUCTS = "pytest_roadlogic.constructs"
 
