@@ -166,7 +166,6 @@ class FrenetixDriver(DriverBase):
         self.road = road
         self.dt = dt
         self.frame = _frame(road)
-        self.coordinates, self.d_origin, self.turn = self.frame.coordinates, self.frame.d_origin, self.frame.turn
         handler = frenetix.TrajectoryHandler(dt=dt)
         handler.add_feasability_function(
             # the steering angle a car has (0.6 rad: a 4 m radius at this wheelbase), as the curvature
@@ -241,14 +240,14 @@ class FrenetixDriver(DriverBase):
             rear_x = state.x - np.cos(state.heading) * WHEELBASE / 2
             rear_y = state.y - np.sin(state.heading) * WHEELBASE / 2
             x, y, heading = (float(v) for v in self.road.world(rear_x, rear_y, state.heading))
-            rear = np.array(_turned(x, y, -self.turn))  # in the frame's turned world
-            heading = (heading - self.turn + math.pi) % (2 * math.pi) - math.pi
+            rear = np.array(_turned(x, y, -self.frame.turn))  # in the frame's turned world
+            heading = (heading - self.frame.turn + math.pi) % (2 * math.pi) - math.pi
             factor = self._own_speed_factor(rear_x, rear_y, state.heading)
             speed, acceleration = speed * factor, acceleration * factor
         cartesian = frenetix.CartesianPlannerState(rear, float(heading), float(speed), float(acceleration), 0.0)
         try:
             initial = frenetix.compute_initial_state(
-                coordinate_system=self.coordinates, x_0=cartesian, wheelbase=WHEELBASE, low_velocity_mode=low
+                coordinate_system=self.frame.coordinates, x_0=cartesian, wheelbase=WHEELBASE, low_velocity_mode=low
             )
         except ValueError:
             # the car is where the frame has no projection (inside a bend tighter than its distance
@@ -261,7 +260,7 @@ class FrenetixDriver(DriverBase):
             tf.FillCoordinates(
                 lowVelocityMode=low,
                 initialOrientation=float(heading),
-                coordinateSystem=self.coordinates,
+                coordinateSystem=self.frame.coordinates,
                 horizon=self.horizon,
             )
         )
@@ -410,7 +409,7 @@ class FrenetixDriver(DriverBase):
 
     def _frame_d(self, times: np.ndarray) -> np.ndarray:
         """The reference's lateral position in the frame at ``times``: its y less the lanes' width."""
-        return self.reference.d(times) - self.d_origin
+        return self.reference.d(times) - self.frame.d_origin
 
     def _lateral_weight(self, along: np.ndarray) -> float:
         """The weight of the lateral error over the tracked window whose centres are ``along``
@@ -432,9 +431,9 @@ class FrenetixDriver(DriverBase):
         """A candidate's rear axle in road coordinates (its s and d in the frame) and its heading
         less the route's there: on a map, the centre is then half a wheelbase ahead along it."""
         s = self.frame.x(np.array(candidate.curvilinear.s, copy=True))
-        d = np.array(candidate.curvilinear.d, copy=True) + self.d_origin
+        d = np.array(candidate.curvilinear.d, copy=True) + self.frame.d_origin
         _, _, along = self.road.world(s, d)
-        heading = np.array(candidate.cartesian.theta, copy=True) + self.turn - along
+        heading = np.array(candidate.cartesian.theta, copy=True) + self.frame.turn - along
         return s, d, (heading + np.pi) % (2 * np.pi) - np.pi
 
     def _steps(self, trajectory: Trajectory) -> int:
