@@ -263,9 +263,9 @@ class IncrementalPlanner:
         """Set the externals of asp/least_action.lp as this search holds vehicles to what they are asked."""
         control.assign_external(clingo.Function("least_action"), self.least_action)
         control.assign_external(clingo.Function("least_change"), self.least_action and self.least_change)
-        if self.least_action and self.least_change:
-            # an optimising search: past the first model to the best (--models=1 stops at the first)
-            control.configuration.solve.models = "0"
+        # an optimising search goes past the first model to the best (--models=1 stops at the
+        # first); the two searches may take turns on one control
+        control.configuration.solve.models = "0" if self.least_action and self.least_change else "1"
 
     _deadline = math.inf  # of the planning under way (_renewed): what grounding keeps to
 

@@ -187,6 +187,29 @@ def test_when_no_plan_keeps_to_what_is_asked_one_vehicle_makes_the_fewest_and_sm
     assert max(state.speed for state in plan.states["slow"]) < 90 / 3.6, "kept smallest"
 
 
+def test_the_fewest_unasked_changes_found_beside_the_search_for_asked_ones_are_those_it_finds_alone(tmp_path):
+    # the search that allows unasked changes is solved beside the one that does not, on its
+    # control: its first plan is at the horizon a search of its own finds, with the same changes
+    # in count and vehicle; the plans after it come from a control of their own without it
+    automaton = automaton_of(tmp_path, FOLLOW_THEN_OVERTAKE_EXACT)
+    planner = ContinuousPlanner(automaton, SETTINGS, 1)
+    plans = list(planner.plans(limit=3))
+    assert planner.stats["least_action"] == 0.0
+    alone = ContinuousPlanner(automaton, SETTINGS, 1)
+    alone.least_action, alone.least_change = True, True
+    first_alone = next(alone._search(limit=1))
+    assert plans[0].horizon == first_alone.horizon
+    changes, changes_alone = unasked_changes(plans[0], automaton), unasked_changes(first_alone, automaton)
+    assert {c.vehicle for c in changes} == {c.vehicle for c in changes_alone} == {"slow"}
+    assert len(changes) == len(changes_alone), (changes, changes_alone)
+    assert len(plans) == 3
+    runs = {(tuple(plan.transitions), tuple(s.lane for v in plan.vehicles for s in plan.states[v])) for plan in plans}
+    assert len(runs) == 3, "a plan came twice"
+    for plan in plans:
+        check_continuous_plan(plan, automaton)
+        assert unasked_changes(plan, automaton), "a later plan with only asked changes: the first search missed it"
+
+
 # the same follow-then-overtake with exact values, its pass 6 s at 90 kph: short of the gain
 SHORT_OF_THE_GAIN = (
     FOLLOW_THEN_OVERTAKE_EXACT.replace("follow: parallel(duration: 12s)", "follow: parallel(duration: 10s)")

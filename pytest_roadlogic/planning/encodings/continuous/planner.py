@@ -18,6 +18,7 @@ import functools
 import math
 import random
 from collections.abc import Iterator
+from dataclasses import dataclass
 
 import clingo
 from clingo.ast import ASTType, ProgramBuilder, parse_string
@@ -73,6 +74,22 @@ LEAST_ACTION_HORIZONS = 12
 SIDE = 1e-4
 # how many times a model's idle guards are set aside (a new model may hold others idle)
 IDLE_ROUNDS = 3
+
+
+@dataclass
+class _Beside:
+    """What the search that holds every vehicle to what it is asked learns for the search that
+    allows unasked changes, which it asks beside itself, at each horizon it proves empty, on its
+    own shortest-first control (``plans``): the control, grounded up to ``grounded``; the first
+    horizon at which the second search has a plan (``found_at``), or else the first it has not
+    been asked at (it has none at any before), or that it has none at any (``exhausted``)."""
+
+    control: clingo.Control | None = None
+    grounded: int = -1
+    found_at: int | None = None
+    untried: int | None = None
+    exhausted: bool = False
+    earliest: int = 0  # the first horizon the durations allow, as the first search found it
 
 
 def exact_rows(statement, add) -> None:
@@ -174,22 +191,33 @@ class ContinuousPlanner(IncrementalPlanner):
         transition fires or in a lane (the linear program then gives its smoothest motion).
         Every vehicle does only what its own constructs ask (``least_action``) unless no plan
         does: then plans with the fewest and smallest changes nothing asks (``least_change``),
-        which say so in their stats. The first plan is due by ``deadline`` (default: the time
-        limit from now), both searches together."""
+        which say so in their stats. The second search is asked beside the first, at each
+        horizon the first proves empty, on the first's control: where the first finds none, the
+        second starts at the horizon of its shortest plan, grounded in one call, or past every
+        horizon already asked, instead of grounding them again one step at a time (docs/
+        decisions.md). The first plan is due by ``deadline`` (default: the time limit from
+        now), both searches together."""
         check_satisfiable(self.automaton)
         self.least_action, self.least_change = True, False
+        beside = _Beside()
         try:
-            yield from self._search(limit, deadline)
+            yield from self._search(limit, deadline, beside)
         except (PlanningTimeout, HorizonTooShort):
             raise  # the time is spent, or a setting binds: a search allowing unasked changes fares no better
         except NoPlanError:
             self.least_change = True
-            yield from self._search(limit, self._deadline)  # no plan yet: the first one's deadline holds
+            yield from self._search(limit, self._deadline, beside)  # no plan yet: the first one's deadline holds
 
-    def _search(self, limit: int | None, deadline: float | None = None) -> Iterator[Plan]:
-        """The plans of one search (``plans``), with ``least_action`` and ``least_change`` as they are set."""
+    def _search(
+        self, limit: int | None, deadline: float | None = None, beside: _Beside | None = None
+    ) -> Iterator[Plan]:
+        """The plans of one search (``plans``), with ``least_action`` and ``least_change`` as they
+        are set. The first search fills ``beside`` (what it learnt of the second on its
+        control); the second starts from it."""
+        beside = _Beside() if beside is None else beside
         deadline = self._renewed(deadline)
-        self.stats["least_action"] = float(self.least_action and not self.least_change)
+        strict = self.least_action and not self.least_change
+        self.stats["least_action"] = float(strict)
         found = 0
         places: list[float] = []  # where in the start band each plan after the first was steered
         try:
@@ -202,6 +230,21 @@ class ContinuousPlanner(IncrementalPlanner):
             earliest = max(earliest, self.shortest)
             control = None  # the shortest-first search's, grounded when first asked
             horizon = earliest
+            exhausted = False  # no horizon left to the shortest-first search
+            if not strict and beside.control is not None:
+                # what the first search learnt beside itself: a plan's first horizon (grounded
+                # afresh, in one call, for its best plan: the first's control is grounded past
+                # it), or the horizons left, on the first's control
+                checked, earliest = True, beside.earliest
+                if beside.found_at is not None:
+                    horizon = beside.found_at
+                elif beside.exhausted:
+                    exhausted = True
+                else:
+                    control, horizon = beside.control, beside.untried
+                    self._assign_action(control)
+                    if horizon > beside.grounded:
+                        self.advance_to(control, horizon, beside.grounded)
             # a random start's plans come from a search of their own at a drawn, longer horizon as
             # long as it answers within STRETCH_CONFLICTS (as the grid planner's do: _plans). The
             # first is drawn from the durations' floor and tried before any shorter horizon is
@@ -209,7 +252,7 @@ class ContinuousPlanner(IncrementalPlanner):
             stretched = None  # (control, horizon)
             # the conflicts left to the shortest-first search (LEAST_ACTION_CONFLICTS): for the
             # search that holds every vehicle to what it is asked, when another search follows it
-            budget = LEAST_ACTION_CONFLICTS if self.least_action and not self.least_change else None
+            budget = LEAST_ACTION_CONFLICTS if strict else None
             empty = 0  # horizons the shortest-first search proved empty
             target = self._stretch_target(earliest)
             if target > earliest and window.open_at(target):
@@ -223,6 +266,8 @@ class ContinuousPlanner(IncrementalPlanner):
                         continue
                     source, plan_horizon = stretched
                 else:
+                    if exhausted:
+                        break
                     if control is None:
                         control = self.control_for(self.instance)
                         self.advance_to(control, horizon)
@@ -233,6 +278,9 @@ class ContinuousPlanner(IncrementalPlanner):
                         budget -= int(control.statistics["solving"]["solvers"]["conflicts"])
                         empty += 1
                         if budget <= 0 or empty >= LEAST_ACTION_HORIZONS:
+                            if found == 0:
+                                beside.control, beside.grounded, beside.untried = control, horizon, horizon
+                                beside.earliest = earliest
                             raise NoPlanError(
                                 f"no plan in which every vehicle does only what it is asked within "
                                 f"{LEAST_ACTION_CONFLICTS} conflicts and {LEAST_ACTION_HORIZONS} horizons, "
@@ -245,10 +293,14 @@ class ContinuousPlanner(IncrementalPlanner):
                             self.advance_to(control, horizon, grounded)
                             continue
                     if answer is None:
+                        if strict and found == 0:
+                            beside.earliest = earliest
+                            self._solve_beside(control, deadline, horizon, beside)
                         # one question, not the whole window's bisection (5 solves, a fifth of
                         # change_lane's first plan): open_at is monotone, so a run not under way at
                         # this horizon is under way at no later one
                         if horizon >= self.settings.max_horizon or window.past_end(horizon + 1):
+                            beside.exhausted = strict and found == 0 and beside.found_at is None
                             break  # no run of the automaton lasts longer: no longer plan either
                         horizon += 1
                         self.advance(control, horizon)
@@ -284,9 +336,34 @@ class ContinuousPlanner(IncrementalPlanner):
         except (PlanningTimeout, HorizonTooShort):
             raise
         except NoPlanError as error:
-            if (self.least_action and not self.least_change) or not self.settings.explain_unsatisfiable:
+            if strict or not self.settings.explain_unsatisfiable:
                 raise
             diagnosis.raise_reason(self, error, deadline, window)
+
+    def _solve_beside(self, control, deadline: float, horizon: int, beside: _Beside) -> None:
+        """Ask whether the search that allows unasked changes has a plan at ``horizon``, on the
+        control of the one that does not, which has just proved the horizon empty (``plans``),
+        unless it has one at a shorter horizon already; record the answer in ``beside``. Its
+        first model answers: the best one is the second search's to find, if it runs."""
+        beside.control, beside.grounded = control, horizon
+        if beside.found_at is not None:
+            return
+        message = f"planning ran out of its time limit ({self.settings.time_limit:g} s) at horizon {horizon}"
+        self._time_to_prepare(control, deadline, message)
+        self.least_change = True
+        self._assign_action(control)
+        control.configuration.solve.models = "1"
+        try:
+            with control.solve(yield_=True, async_=True) as handle:
+                self.wait(handle, deadline, message)
+                has_plan = handle.model() is not None
+        finally:
+            self.least_change = False
+            self._assign_action(control)
+        if has_plan:
+            beside.found_at = horizon
+        else:
+            beside.untried = horizon + 1
 
     def replan(self, past: Past, shortest: int) -> Plan | None:
         """The first plan from ``past`` on (``asp/continuous/replan.lp`` reads its facts, the
