@@ -188,9 +188,10 @@ def test_when_no_plan_keeps_to_what_is_asked_one_vehicle_makes_the_fewest_and_sm
 
 
 def test_the_fewest_unasked_changes_found_beside_the_search_for_asked_ones_are_those_it_finds_alone(tmp_path):
-    # the search that allows unasked changes is solved beside the one that does not, on its
-    # control: its first plan is at the horizon a search of its own finds, with the same changes
-    # in count and vehicle; the plans after it come from a control of their own without it
+    # the search with only asked changes asks, at each horizon, whether the one that allows
+    # unasked changes has a plan there, and that one then steps over the horizons known empty:
+    # its first plan is at the horizon a search of its own finds, with the same changes in count
+    # and vehicle, and the plans after it differ from it
     automaton = automaton_of(tmp_path, FOLLOW_THEN_OVERTAKE_EXACT)
     planner = ContinuousPlanner(automaton, SETTINGS, 1)
     plans = list(planner.plans(limit=3))

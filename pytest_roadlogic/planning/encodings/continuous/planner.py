@@ -18,7 +18,7 @@ import functools
 import math
 import random
 from collections.abc import Iterator
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import clingo
 from clingo.ast import ASTType, ProgramBuilder, parse_string
@@ -78,18 +78,14 @@ IDLE_ROUNDS = 3
 
 @dataclass
 class _Beside:
-    """What the search that holds every vehicle to what it is asked learns for the search that
-    allows unasked changes, which it asks beside itself, at each horizon it proves empty, on its
-    own shortest-first control (``plans``): the control, grounded up to ``grounded``; the first
-    horizon at which the second search has a plan (``found_at``), or else the first it has not
-    been asked at (it has none at any before), or that it has none at any (``exhausted``)."""
+    """What the search that holds every vehicle to what it is asked learns, beside itself, of the
+    search that allows unasked changes (``plans``): the horizons at which that one has no plan,
+    whether it has one at the last horizon asked (nothing more to ask), and the first horizon
+    the durations allow."""
 
-    control: clingo.Control | None = None
-    grounded: int = -1
-    found_at: int | None = None
-    untried: int | None = None
-    exhausted: bool = False
-    earliest: int = 0  # the first horizon the durations allow, as the first search found it
+    empty: set[int] = field(default_factory=set)
+    has_plan: bool = False
+    earliest: int | None = None
 
 
 def exact_rows(statement, add) -> None:
@@ -191,12 +187,12 @@ class ContinuousPlanner(IncrementalPlanner):
         transition fires or in a lane (the linear program then gives its smoothest motion).
         Every vehicle does only what its own constructs ask (``least_action``) unless no plan
         does: then plans with the fewest and smallest changes nothing asks (``least_change``),
-        which say so in their stats. The second search is asked beside the first, at each
-        horizon the first proves empty, on the first's control: where the first finds none, the
-        second starts at the horizon of its shortest plan, grounded in one call, or past every
-        horizon already asked, instead of grounding them again one step at a time (docs/
-        decisions.md). The first plan is due by ``deadline`` (default: the time limit from
-        now), both searches together."""
+        which say so in their stats. Past its first horizon, the first search asks at each
+        horizon, on its own control, whether the second has a plan there, until one has: where
+        the second has none, neither has the first, and the second, if it runs, steps over those
+        horizons in one ground call instead of one call and one solve each (docs/decisions.md).
+        The first plan is due by
+        ``deadline`` (default: the time limit from now), both searches together."""
         check_satisfiable(self.automaton)
         self.least_action, self.least_change = True, False
         beside = _Beside()
@@ -212,8 +208,8 @@ class ContinuousPlanner(IncrementalPlanner):
         self, limit: int | None, deadline: float | None = None, beside: _Beside | None = None
     ) -> Iterator[Plan]:
         """The plans of one search (``plans``), with ``least_action`` and ``least_change`` as they
-        are set. The first search fills ``beside`` (what it learnt of the second on its
-        control); the second starts from it."""
+        are set. The first search fills ``beside`` (what it learnt of the second); the second
+        reads it."""
         beside = _Beside() if beside is None else beside
         deadline = self._renewed(deadline)
         strict = self.least_action and not self.least_change
@@ -230,21 +226,9 @@ class ContinuousPlanner(IncrementalPlanner):
             earliest = max(earliest, self.shortest)
             control = None  # the shortest-first search's, grounded when first asked
             horizon = earliest
-            exhausted = False  # no horizon left to the shortest-first search
-            if not strict and beside.control is not None:
-                # what the first search learnt beside itself: a plan's first horizon (grounded
-                # afresh, in one call, for its best plan: the first's control is grounded past
-                # it), or the horizons left, on the first's control
-                checked, earliest = True, beside.earliest
-                if beside.found_at is not None:
-                    horizon = beside.found_at
-                elif beside.exhausted:
-                    exhausted = True
-                else:
-                    control, horizon = beside.control, beside.untried
-                    self._assign_action(control)
-                    if horizon > beside.grounded:
-                        self.advance_to(control, horizon, beside.grounded)
+            if not strict and beside.earliest is not None:
+                checked, earliest = True, beside.earliest  # as the first search found it
+            skipped = beside.empty if not strict else set()  # horizons known to have no plan
             # a random start's plans come from a search of their own at a drawn, longer horizon as
             # long as it answers within STRETCH_CONFLICTS (as the grid planner's do: _plans). The
             # first is drawn from the durations' floor and tried before any shorter horizon is
@@ -255,7 +239,7 @@ class ContinuousPlanner(IncrementalPlanner):
             budget = LEAST_ACTION_CONFLICTS if strict else None
             empty = 0  # horizons the shortest-first search proved empty
             target = self._stretch_target(earliest)
-            if target > earliest and window.open_at(target):
+            if target > earliest and target not in skipped and window.open_at(target):
                 stretched = (self.control_for(self.instance), target)
                 self.advance_to(stretched[0], target)
             while limit is None or found < limit:
@@ -266,21 +250,29 @@ class ContinuousPlanner(IncrementalPlanner):
                         continue
                     source, plan_horizon = stretched
                 else:
-                    if exhausted:
-                        break
+                    if control is None and horizon in skipped:
+                        horizon = _first_not_in(skipped, horizon)
+                        if horizon > self.settings.max_horizon or window.past_end(horizon):
+                            break
                     if control is None:
                         control = self.control_for(self.instance)
                         self.advance_to(control, horizon)
                     # each solve unlimited (a solve limit set on the control changes its later
-                    # searches, hence the plans): the budget is read between them
-                    answer = self._model(control, deadline, f"at horizon {horizon}")
+                    # searches, hence the plans): the budget is read between them. Past its first
+                    # horizon, the search with only asked changes first asks whether the one that
+                    # allows unasked changes has a plan at this one: where it has none, neither
+                    # has this one
+                    if strict and found == 0 and empty and not beside.has_plan:
+                        beside.earliest = earliest
+                        asked_empty = not self._ask_beside(control, deadline, horizon, beside)
+                    else:
+                        asked_empty = False
+                    answer = None if asked_empty else self._model(control, deadline, f"at horizon {horizon}")
                     if answer is None and budget is not None:
                         budget -= int(control.statistics["solving"]["solvers"]["conflicts"])
                         empty += 1
                         if budget <= 0 or empty >= LEAST_ACTION_HORIZONS:
-                            if found == 0:
-                                beside.control, beside.grounded, beside.untried = control, horizon, horizon
-                                beside.earliest = earliest
+                            beside.earliest = earliest
                             raise NoPlanError(
                                 f"no plan in which every vehicle does only what it is asked within "
                                 f"{LEAST_ACTION_CONFLICTS} conflicts and {LEAST_ACTION_HORIZONS} horizons, "
@@ -295,15 +287,17 @@ class ContinuousPlanner(IncrementalPlanner):
                     if answer is None:
                         if strict and found == 0:
                             beside.earliest = earliest
-                            self._solve_beside(control, deadline, horizon, beside)
                         # one question, not the whole window's bisection (5 solves, a fifth of
                         # change_lane's first plan): open_at is monotone, so a run not under way at
                         # this horizon is under way at no later one
-                        if horizon >= self.settings.max_horizon or window.past_end(horizon + 1):
-                            beside.exhausted = strict and found == 0 and beside.found_at is None
+                        later = _first_not_in(skipped, horizon + 1)
+                        if later > self.settings.max_horizon or window.past_end(later):
                             break  # no run of the automaton lasts longer: no longer plan either
-                        horizon += 1
-                        self.advance(control, horizon)
+                        if later == horizon + 1:
+                            self.advance(control, later)
+                        else:
+                            self.advance_to(control, later, horizon)  # in one call past those known empty
+                        horizon = later
                         continue
                     source, plan_horizon = control, horizon
                     target = self._stretch_target(horizon)
@@ -340,14 +334,10 @@ class ContinuousPlanner(IncrementalPlanner):
                 raise
             diagnosis.raise_reason(self, error, deadline, window)
 
-    def _solve_beside(self, control, deadline: float, horizon: int, beside: _Beside) -> None:
-        """Ask whether the search that allows unasked changes has a plan at ``horizon``, on the
-        control of the one that does not, which has just proved the horizon empty (``plans``),
-        unless it has one at a shorter horizon already; record the answer in ``beside``. Its
-        first model answers: the best one is the second search's to find, if it runs."""
-        beside.control, beside.grounded = control, horizon
-        if beside.found_at is not None:
-            return
+    def _ask_beside(self, control, deadline: float, horizon: int, beside: _Beside) -> bool:
+        """Whether the search that allows unasked changes has a plan at ``horizon``, asked on the
+        control of the one that does not (``plans``); recorded in ``beside``. Its first model
+        answers: the best one is the second search's to find, if it runs."""
         message = f"planning ran out of its time limit ({self.settings.time_limit:g} s) at horizon {horizon}"
         self._time_to_prepare(control, deadline, message)
         self.least_change = True
@@ -356,14 +346,13 @@ class ContinuousPlanner(IncrementalPlanner):
         try:
             with control.solve(yield_=True, async_=True) as handle:
                 self.wait(handle, deadline, message)
-                has_plan = handle.model() is not None
+                beside.has_plan = handle.model() is not None
         finally:
             self.least_change = False
             self._assign_action(control)
-        if has_plan:
-            beside.found_at = horizon
-        else:
-            beside.untried = horizon + 1
+        if not beside.has_plan:
+            beside.empty.add(horizon)
+        return beside.has_plan
 
     def replan(self, past: Past, shortest: int) -> Plan | None:
         """The first plan from ``past`` on (``asp/continuous/replan.lp`` reads its facts, the
@@ -531,3 +520,10 @@ def _cheaper(found: tuple, kept: list, chosen: tuple, other: tuple, solve) -> tu
     if tried is not None and tried[2] < found[2]:
         return tried, [*kept, other]
     return found, [*kept, chosen]
+
+
+def _first_not_in(skipped: set[int], horizon: int) -> int:
+    """The first horizon from ``horizon`` on that is not in ``skipped``."""
+    while horizon in skipped:
+        horizon += 1
+    return horizon
