@@ -28,6 +28,7 @@ from ... import diagnosis
 from ...core import ASP_DIR, AUTOMATON, KEEP_LANE, LEAST_ACTION, IncrementalPlanner, read_programs
 from ...diagnosis import check_satisfiable
 from ...errors import HorizonTooShort, NoPlanError, PlanningTimeout
+from ...live_rules import Annotated, live_statements, names_in, program_gives
 from ...plan import Plan
 from ...protocol import Past
 from .decode import decode_plan
@@ -111,6 +112,12 @@ def parsed_encoding(paths: tuple, with_theory: bool = False) -> tuple:
     return tuple(statements)
 
 
+@functools.cache
+def annotated_encoding(paths: tuple, with_theory: bool = False) -> Annotated:
+    """``parsed_encoding`` with what each statement needs and gives (``live_rules``), read once."""
+    return Annotated.of(parsed_encoding(paths, with_theory))
+
+
 class ContinuousPlanner(IncrementalPlanner):
     """Plans for one automaton with the continuous encoding; ``plans()`` yields them lazily,
     shortest first (a random start's first at a drawn horizon)."""
@@ -155,14 +162,19 @@ class ContinuousPlanner(IncrementalPlanner):
             theory = LazyLinearTheory()
             theory.register(control)
             self._theories[control] = theory
+            # the encoding is the same for every control: parsed once per process; its rules
+            # that cannot fire for this instance are left out (live_rules)
+            start = annotated_encoding(RANDOM_START) if self.settings.random_start else Annotated.of(())
+            own_names = names_in(own)
+            encoding = live_statements(
+                annotated_encoding(self.encoding_files(), with_theory=True), own_names.union(*start.given)
+            )
             with ProgramBuilder(control) as builder:
-                # the encoding is the same for every control: parsed once per process
-                for statement in parsed_encoding(self.encoding_files(), with_theory=True):
+                for statement in encoding:
                     builder.add(statement)
                 parse_string(own, builder.add)
-                if self.settings.random_start:
-                    for statement in parsed_encoding(RANDOM_START):
-                        builder.add(statement)
+                for statement in live_statements(start, own_names | program_gives(encoding)):
+                    builder.add(statement)
             return control
         from clingolpx import ClingoLPXTheory
 
