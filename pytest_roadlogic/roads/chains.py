@@ -114,11 +114,12 @@ def next_ways(road_map: RoadMap, current: MapRoad) -> Iterator[tuple[MapRoad, ..
             yield (inside, after)
 
 
-def chains(road_map: RoadMap, starts: list[MapRoad], lanes: int) -> list[tuple[MapRoad, ...]]:
+def chains(road_map: RoadMap, starts: list[MapRoad], lanes: int, gentle: bool = True) -> list[tuple[MapRoad, ...]]:
     """Every route of two or more roads from one of ``starts`` on which each road has ``lanes``
     driving lanes all along (a connecting road inside a junction: at least one) and continues the
     last: the longest ones, each as far as it goes (as far as ``MAX_CHAINS`` routes and ``MAX_STEPS``
-    continuations looked at find them)."""
+    continuations looked at find them). Without ``gentle``, a route also goes on into roads whose
+    curves are sharper than its own so far and a highway's (for a map that has no other route)."""
     found: list[tuple[MapRoad, ...]] = []
     onward: dict[tuple[str, bool], list[tuple[tuple[MapRoad, ...], float]]] = {}
 
@@ -147,7 +148,7 @@ def chains(road_map: RoadMap, starts: list[MapRoad], lanes: int) -> list[tuple[M
                 looked += 1
                 if looked > MAX_STEPS:
                     break
-                if bends <= max(sharpest, GENTLE) and not any(road.id in taken for road in step):
+                if (not gentle or bends <= max(sharpest, GENTLE)) and not any(road.id in taken for road in step):
                     stack.append((route + step, max(sharpest, bends)))
                     grown = True
         if not grown and len(route) > 1:

@@ -123,6 +123,11 @@ def pick_route(
         one_way = ways + [chained(c) for c in chains(road_map, ways, 1)]
         fitting = [joined for way in one_way if (joined := with_oncoming(way)) is not None and fits(joined)]
     if not fitting:
+        # a route through a sharper bend than a highway's: the planner holds the cars to its
+        # speed, and a scenario that needs more is told so by name (the curve's speed limit)
+        fitting = [chained(c) for c in chains(road_map, ways, lanes, gentle=False)]
+        fitting = [way for way in fitting if fits(way)]
+    if not fitting:
         lines = "; ".join(describe(road) for road in road_map.roads.values())
         need = f"{lanes} driving lane{'' if lanes == 1 else 's'}" + (f" over {length:g} m" if length else "")
         if curve is not None:

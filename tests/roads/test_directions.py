@@ -243,3 +243,44 @@ def test_a_route_does_not_turn_at_a_junction_nor_go_on_where_the_lanes_do_not_me
     # the quarter circle inside the junction is never part of a route: road 1 goes on into 3 and 2 only
     route = pick_route(read_map(linked_map(tmp_path / "linked.xodr")), 2, length=300.0)
     assert "4" not in route.road.id.split("+") and "5" not in route.road.id.split("+")
+
+
+def kinked_map(path: Path, turn_degrees: float = 15.0) -> Path:
+    """Two 150 m roads with two lanes each way, joined through junction 9 by a 20 m arc that
+    turns ``turn_degrees`` to the left (straight on for a route, but sharper than a highway's
+    curves: about 76 m of radius at 15 degrees)."""
+    both = lane(1) + lane(2), lane(-1) + lane(-2)
+    sections = f"<laneSection s='0'><left>{both[0]}</left><right>{both[1]}</right></laneSection>"
+    turn = np.radians(turn_degrees)
+    curvature = turn / 20.0
+    x, y = 150.0 + np.sin(turn) / curvature, (1.0 - np.cos(turn)) / curvature
+    return write(
+        path,
+        f"""
+        <?xml version="1.0"?>
+        <OpenDRIVE><header/>
+        <road id="1" length="150" junction="-1"><link><successor elementType="junction" elementId="9"/></link>
+        <planView><geometry s="0" x="0" y="0" hdg="0" length="150"><line/></geometry></planView>
+        <lanes>{sections}</lanes></road>
+        <road id="3" length="20" junction="9"><link><predecessor elementType="road" elementId="1" contactPoint="end"/>
+        <successor elementType="road" elementId="2" contactPoint="start"/></link>
+        <planView><geometry s="0" x="150" y="0" hdg="0" length="20"><arc curvature="{curvature}"/></geometry></planView>
+        <lanes>{sections}</lanes></road>
+        <road id="2" length="150" junction="-1"><link><predecessor elementType="junction" elementId="9"/></link>
+        <planView><geometry s="0" x="{x}" y="{y}" hdg="{turn}" length="150"><line/></geometry></planView>
+        <lanes>{sections}</lanes></road>
+        <junction id="9" name="kink">
+        <connection id="0" incomingRoad="1" connectingRoad="3" contactPoint="start"/>
+        </junction>
+        </OpenDRIVE>
+        """,
+    )
+
+
+def test_where_no_route_keeps_to_a_highways_curves_one_goes_through_a_sharper_bend_and_keeps_its_curve(tmp_path):
+    road_map = read_map(kinked_map(tmp_path / "kinked.xodr"))
+    route = pick_route(road_map, 2)
+    assert route.road.id == "1+3+2" and route.lanes == 2
+    assert route.road.reference_line.sharpest() == pytest.approx(np.radians(15.0) / 20.0, rel=0.01)
+    # a road of its own long enough is still preferred to the bend
+    assert pick_route(road_map, 2, length=120.0).road.id in ("1", "2")
