@@ -246,35 +246,25 @@ def test_a_route_does_not_turn_at_a_junction_nor_go_on_where_the_lanes_do_not_me
 
 
 def kinked_map(path: Path, turn_degrees: float = 15.0) -> Path:
-    """Two 150 m roads with two lanes each way, joined through junction 9 by a 20 m arc that
-    turns ``turn_degrees`` to the left (straight on for a route, but sharper than a highway's
-    curves: about 76 m of radius at 15 degrees)."""
-    both = lane(1) + lane(2), lane(-1) + lane(-2)
-    sections = f"<laneSection s='0'><left>{both[0]}</left><right>{both[1]}</right></laneSection>"
+    """``linked_map`` with the connecting road a 20 m arc that turns ``turn_degrees`` to the
+    left, road 2 going on from its end, and no turn out of the junction: straight on for a
+    route, but sharper than a highway's curves (about 76 m of radius at 15 degrees)."""
     turn = np.radians(turn_degrees)
     curvature = turn / 20.0
     x, y = 150.0 + np.sin(turn) / curvature, (1.0 - np.cos(turn)) / curvature
-    return write(
-        path,
-        f"""
-        <?xml version="1.0"?>
-        <OpenDRIVE><header/>
-        <road id="1" length="150" junction="-1"><link><successor elementType="junction" elementId="9"/></link>
-        <planView><geometry s="0" x="0" y="0" hdg="0" length="150"><line/></geometry></planView>
-        <lanes>{sections}</lanes></road>
-        <road id="3" length="20" junction="9"><link><predecessor elementType="road" elementId="1" contactPoint="end"/>
-        <successor elementType="road" elementId="2" contactPoint="start"/></link>
-        <planView><geometry s="0" x="150" y="0" hdg="0" length="20"><arc curvature="{curvature}"/></geometry></planView>
-        <lanes>{sections}</lanes></road>
-        <road id="2" length="150" junction="-1"><link><predecessor elementType="junction" elementId="9"/></link>
-        <planView><geometry s="0" x="{x}" y="{y}" hdg="{turn}" length="150"><line/></geometry></planView>
-        <lanes>{sections}</lanes></road>
-        <junction id="9" name="kink">
-        <connection id="0" incomingRoad="1" connectingRoad="3" contactPoint="start"/>
-        </junction>
-        </OpenDRIVE>
-        """,
+    text = linked_map(path).read_text()
+    text = text.replace(
+        '<geometry s="0" x="150" y="0" hdg="0" length="20"><line/></geometry>',
+        f'<geometry s="0" x="150" y="0" hdg="0" length="20"><arc curvature="{curvature}"/></geometry>',
     )
+    text = text.replace(
+        "<geometry s='0' x='170' y='0.0' hdg='0' length='150'><line/></geometry>",
+        f"<geometry s='0' x='{x}' y='{y}' hdg='{turn}' length='150'><line/></geometry>",
+    )
+    turning = text.index('<road id="4"')
+    text = text[:turning] + text[text.index('<road id="2"') :]
+    text = text.replace('<connection id="1" incomingRoad="1" connectingRoad="4" contactPoint="start"/>', "")
+    return write(path, text)
 
 
 def test_where_no_route_keeps_to_a_highways_curves_one_goes_through_a_sharper_bend_and_keeps_its_curve(tmp_path):
