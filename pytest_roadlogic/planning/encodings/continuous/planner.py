@@ -203,8 +203,8 @@ class ContinuousPlanner(IncrementalPlanner):
         horizon, on its own control, whether the second has a plan there, until one has: where
         the second has none, neither has the first, and the second, if it runs, steps over those
         horizons in one ground call instead of one call and one solve each (docs/decisions.md).
-        The first plan is due by
-        ``deadline`` (default: the time limit from now), both searches together."""
+        The first plan is due by ``deadline`` (default: the time limit from now), both searches
+        together."""
         check_satisfiable(self.automaton)
         self.least_action, self.least_change = True, False
         beside = _Beside()
@@ -236,10 +236,10 @@ class ContinuousPlanner(IncrementalPlanner):
             checked = window.floor > self.settings.max_horizon
             earliest = self._earliest(deadline, window) if checked else window.floor
             earliest = max(earliest, self.shortest)
-            control = None  # the shortest-first search's, grounded when first asked
-            horizon = earliest
             if not strict and beside.earliest is not None:
                 checked, earliest = True, beside.earliest  # as the first search found it
+            control = None  # the shortest-first search's, grounded when first asked
+            horizon = earliest
             skipped = beside.empty if not strict else set()  # horizons known to have no plan
             # a random start's plans come from a search of their own at a drawn, longer horizon as
             # long as it answers within STRETCH_CONFLICTS (as the grid planner's do: _plans). The
