@@ -275,7 +275,6 @@ class ContinuousPlanner(IncrementalPlanner):
                     # allows unasked changes has a plan at this one: where it has none, neither
                     # has this one
                     if strict and found == 0 and empty and not beside.has_plan:
-                        beside.earliest = earliest
                         asked_empty = not self._ask_beside(control, deadline, horizon, beside)
                     else:
                         asked_empty = False
@@ -284,7 +283,8 @@ class ContinuousPlanner(IncrementalPlanner):
                         budget -= int(control.statistics["solving"]["solvers"]["conflicts"])
                         empty += 1
                         if budget <= 0 or empty >= LEAST_ACTION_HORIZONS:
-                            beside.earliest = earliest
+                            if checked:  # else the second search asks the durations itself
+                                beside.earliest = earliest
                             raise NoPlanError(
                                 f"no plan in which every vehicle does only what it is asked within "
                                 f"{LEAST_ACTION_CONFLICTS} conflicts and {LEAST_ACTION_HORIZONS} horizons, "
