@@ -15,12 +15,14 @@ and each actor's position and speed. It keeps only what every plan of every plan
 instants in order; each transition's guard at its instant, its conjunction of bounds on positions
 and speeds (headways, distances travelled and disjunctions are dropped); each phase's duration;
 between two instants each actor's travel within its speed envelope times the time between them (a
-plan's position advances by the mean of its speeds at consecutive steps, and every speed there
-lies in the location's invariant band or at the instants in their guards' bands, within
-0..``max_speed``); a stationary object stays; and two vehicles an invariant keeps in one lane
-(``l(a) - l(b) = 0`` throughout consecutive locations) keep their order over those instants, for
-no plan passes one car through another in its lane: one linear program per choice of who is
-ahead in each such stretch (at most ``MAX_ORDERS`` of them; past that, the order is dropped).
+plan's position advances by the mean of its speeds at consecutive steps; the run is in a location
+from the instant it enters it, so every speed there lies in the location's invariant band but the
+last, at the next instant, which lies in that instant's guard's band and in the invariant of the
+location entered then; all within 0..``max_speed``); a stationary object stays; and two vehicles
+an invariant keeps in one lane (``l(a) - l(b) = 0`` throughout consecutive locations) keep their
+order over those instants, for no plan passes one car through another in its lane: one linear
+program per choice of who is ahead in each such stretch (at most ``MAX_ORDERS`` of them; past
+that, the order is dropped).
 Dropping constraints only adds solutions, so a relaxation with none on every path proves there is
 no plan. The group named is minimal on the paths (one constraint taken out at a time, kept out
 when the rest still fail on every path).
@@ -143,7 +145,9 @@ class _PathRelaxation:
                 lows[var("v", actor, i)] = 0.0
                 highs[var("v", actor, i)] = 0.0 if actor in self.automaton.stationary else self.max_speed
                 lows[var("p", actor, i)] = -math.inf
-        envelope_at = [self._speed_bands(self.at[i], on) for i in range(n)]
+        # each actor's speed band at each instant: its transition's guard's and the invariant of
+        # the location it enters (the run is there from that instant on)
+        envelope_at = [self._speed_bands(self.at[i] + (self.during[i] if i < n - 1 else []), on) for i in range(n)]
         for i in range(n):
             for bound in self.at[i]:
                 if on(bound):
@@ -159,14 +163,11 @@ class _PathRelaxation:
                 if actor in self.automaton.stationary:
                     rows.append((travel, 0.0, 0.0))
                     continue
-                low = min(
-                    bands.get(actor, (0.0, self.max_speed))[0],
-                    *(e.get(actor, (0.0,))[0] for e in envelope_at[i : i + 2]),
-                )
-                high = max(
-                    bands.get(actor, (0.0, self.max_speed))[1],
-                    *(e.get(actor, (0.0, self.max_speed))[1] for e in envelope_at[i : i + 2]),
-                )
+                # the speeds of the interval's steps lie in its location's band but the last, at
+                # the next instant, which lies in that instant's envelope
+                band = bands.get(actor, (0.0, self.max_speed))
+                then = envelope_at[i + 1].get(actor, (0.0, self.max_speed))
+                low, high = min(band[0], then[0]), max(band[1], then[1])
                 low, high = max(low, 0.0), min(high, self.max_speed)
                 dt = {var("t", i + 1): 1.0, var("t", i): -1.0}
                 # travel >= low * (t[i+1] - t[i]) and travel <= high * (t[i+1] - t[i])

@@ -21,6 +21,7 @@ from pytest_roadlogic.settings import RunSettings
 from tests.conftest import ROOT
 
 CATCH_UP = ROOT / "scenarios" / "realistic" / "catch_up_band.osc"
+OVERTAKE_GAP = ROOT / "benchmarks" / "scenarios" / "overtake_gap_band.osc"
 FASTEST = 100.0  # m/s: the relaxed fallback's top speed (ContinuousSettings.relaxed())
 
 
@@ -44,12 +45,27 @@ def test_a_gap_the_ego_can_close_is_left_to_the_planner():
     assert provably_unplannable(guide(settings.thinned()), FASTEST) is None
 
 
-@settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.too_slow])
-@given(gap=st.floats(170.0, 230.0))
-def test_the_relaxation_never_refuses_a_gap_that_some_planner_plans(gap):
+def test_a_gap_no_pass_at_the_allowed_speeds_closes_is_refused_though_the_lead_s_speed_is_named_only_throughout():
+    """The overtaken car's speed is held by its phase throughout (an invariant), never in a guard of
+    the ego's phases' ends: its travel between them is still bounded by that speed."""
+    guide, settings, _ = guided(OVERTAKE_GAP, {"gap": 240.0})
+    conflict = provably_unplannable(guide(settings.thinned()), FASTEST)
+    assert conflict is not None
+    # the lead's speed, the gap at the start, then per phase before the pass's end its duration
+    # and the ego's speed, and the gap at the pass's end
+    assert sorted(c.source.line for c in conflict) == [19, 21, 22, 24, 26, 27, 28]
+
+
+@pytest.mark.parametrize(
+    "path, name, low, high", [(CATCH_UP, "lead_gap", 170.0, 230.0), (OVERTAKE_GAP, "gap", 215.0, 235.0)]
+)
+@settings(max_examples=8, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(fraction=st.floats(0.0, 1.0))
+def test_the_relaxation_never_refuses_a_gap_that_some_planner_plans(path, name, low, high, fraction):
     """Near the edge, where the relaxation and the planners part: whenever the relaxation refuses
     a sample, no fallback planner (the widest margins, half steps, limits beyond a car's) plans it."""
-    guide, settings, seed = guided(CATCH_UP, {"lead_gap": gap})
+    gap = low + fraction * (high - low)
+    guide, settings, seed = guided(path, {name: gap})
     if provably_unplannable(guide(settings.thinned()), FASTEST) is None:
         return
     for fallback, _ in fallback_settings(settings):
@@ -58,7 +74,7 @@ def test_the_relaxation_never_refuses_a_gap_that_some_planner_plans(gap):
             plan = next(planner_for(guide(quiet), quiet, seed).plans(limit=1), None)
         except NoPlanError:
             plan = None
-        assert plan is None, f"the relaxation refused lead_gap {gap:.1f} m, which {fallback} plans"
+        assert plan is None, f"the relaxation refused {name} {gap:.1f} m, which {fallback} plans"
 
 
 SWAP = """scenario swap:
