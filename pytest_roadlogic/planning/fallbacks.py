@@ -142,6 +142,8 @@ def planned(
     vehicle limits (``settings.limits()``, ``stats["relaxed_limits"]``; without ``beyond_limits`` only
     the spacing between cars is relaxed, never a car's limits). Each planner solves the sample
     narrowed with its own margins (``guide``). Without ``fallbacks``, the planner's own plans only.
+    A sample whose linear relaxation has no solution has no plan of any of them, and is refused
+    before any search.
 
     Why: the margins and the limits are the planner's guesses at what the vehicles can track, not
     the scenario's constraints; a plan nearer the scenario's edges is simulated and monitored like
@@ -152,10 +154,10 @@ def planned(
     # one deadline for the first plan, however many planners and searches it takes, not the whole
     # limit for each
     deadline = time.monotonic() + settings.time_limit
+    _refuse_what_the_relaxation_proves(guide, settings, beyond_limits)
     if not fallbacks:
         yield from _planner_for(guide(settings), settings, seed).plans(limit=limit, deadline=deadline)
         return
-    _refuse_what_the_relaxation_proves(guide, settings, beyond_limits)
     quiet = dataclasses.replace(settings, explain_unsatisfiable=False)
     first = _planner_for(guide(quiet), quiet, seed)
     plans = first.plans(limit=limit, deadline=deadline)
