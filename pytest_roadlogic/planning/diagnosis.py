@@ -16,34 +16,46 @@ import time
 import clingo
 
 from ..logic.automaton import SymbolicAutomaton, Timing
-from ..logic.guards import contradiction, lanes_conflict
+from ..logic.guards import conjunction, contradiction, lanes_conflict, required_bounds
 from .errors import NoPlanError, PlanningTimeout, UnsatisfiableScenario, conflict_message
 from .facts import relaxable_constraints
 
 
 def check_satisfiable(automaton: SymbolicAutomaton) -> None:
-    """Raise ``UnsatisfiableScenario`` when every path to the end crosses a self-contradicting guard
-    (two bounds no state meets, or lanes no placement on the road's lanes meets)."""
+    """Raise ``UnsatisfiableScenario`` when every path to the end crosses a transition whose instant
+    no state meets: two bounds of its guard and of the invariant of the location it enters (the
+    run is there from that instant) that contradict each other, or lanes no placement on the road's
+    lanes meets (a car kept in the leftmost lane and another left of it). The groups named are
+    those of the blocked transitions the run reaches furthest from its start: of a scenario's
+    alternatives (a lane kept, read as one per lane), the one that came closest to the end."""
     blocked = {}
     for transition in automaton.transitions:
-        group = contradiction(transition.guard) or lanes_conflict(transition.guard, automaton.lanes)
+        invariant = automaton.location(transition.target).invariant
+        at_its_instant = conjunction([*required_bounds(transition.guard), *required_bounds(invariant)])
+        group = contradiction(at_its_instant) or lanes_conflict(at_its_instant, automaton.lanes)
         if group is not None:
             blocked[transition.id] = group
     if not blocked:
         return
-    reachable = {automaton.initial}
+    depth = {automaton.initial: 0}  # locations the run reaches by unblocked transitions, breadth first
     frontier = [automaton.initial]
     while frontier:
-        location = frontier.pop()
+        location = frontier.pop(0)
         for transition in automaton.outgoing(location):
-            if transition.id not in blocked and transition.target not in reachable:
-                reachable.add(transition.target)
+            if transition.id not in blocked and transition.target not in depth:
+                depth[transition.target] = depth[location] + 1
                 frontier.append(transition.target)
-    if automaton.final in reachable:
+    if automaton.final in depth:
         return
-    conflicts = list(dict.fromkeys(blocked.values()))
+    reached = [t for t in automaton.transitions if t.id in blocked and t.source in depth]
+    furthest = max((depth[t.source] for t in reached), default=0)
+    conflicts = list(dict.fromkeys(blocked[t.id] for t in reached if depth[t.source] == furthest))
+    conflicts = conflicts or list(dict.fromkeys(blocked.values()))
     raise UnsatisfiableScenario(
-        conflict_message(conflicts, automaton.parameters), conflicts, parameters=automaton.parameters
+        conflict_message(conflicts, automaton.parameters),
+        conflicts,
+        parameters=automaton.parameters,
+        lanes=automaton.lanes,
     )
 
 

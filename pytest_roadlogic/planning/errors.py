@@ -107,13 +107,22 @@ class UnsatisfiableScenario(NoPlanError):
     constraints (bounds, durations) that cannot hold together, each with its source location; a
     group of one cannot hold on its own under the domain rules (speed limits, lanes, no collision).
     ``parameters``: the logical parameters used at each place (``SymbolicAutomaton.parameters``),
-    so that a constraint is named with the parameters behind it."""
+    so that a constraint is named with the parameters behind it. ``lanes``: the road's driving lanes,
+    said with a group of lanes that no placement on them meets."""
 
-    def __init__(self, message: str, conflicts: list[tuple], rules: str = "", parameters: dict | None = None) -> None:
+    def __init__(
+        self,
+        message: str,
+        conflicts: list[tuple],
+        rules: str = "",
+        parameters: dict | None = None,
+        lanes: int | None = None,
+    ) -> None:
         super().__init__(message)
         self.conflicts = conflicts
         self.rules = rules
         self.parameters = parameters or {}
+        self.lanes = lanes
 
     def _named(self, constraint) -> str:
         return _named(self.parameters.get(constraint.source, ()))
@@ -146,6 +155,8 @@ class UnsatisfiableScenario(NoPlanError):
                 hint = None
                 if member is group[0]:
                     hint = "the scenario can never be met; widen or remove one of them"
+                    if self.lanes is not None and any(_places_in_a_lane(other) for other in group):
+                        hint += f"; the road has {self.lanes} driving lane{'' if self.lanes == 1 else 's'}"
                     if any(_numbers_a_lane(other) for other in group):
                         hint += f"; {LANE_NUMBERS}"
                 diagnostics.append(Diagnostic(member.source, message, hint))
@@ -157,6 +168,11 @@ LANE_NUMBERS = (
     "lane numbers are read in the file's dialect: the standard's lane(1) is the rightmost lane, "
     "CARLA's (--dialect carla) the leftmost"
 )
+
+
+def _places_in_a_lane(constraint) -> bool:
+    """Whether ``constraint`` is about a vehicle's lane (its number, or one beside another's)."""
+    return isinstance(constraint, Bound) and constraint.term.quantity == LANE
 
 
 def _numbers_a_lane(constraint) -> bool:

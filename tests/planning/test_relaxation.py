@@ -156,3 +156,21 @@ def test_lanes_that_some_placement_meets_are_left_to_the_planner():
     assert lanes_conflict(conjunction([rightmost, left_of]), 3) is None
     assert lanes_conflict(conjunction([right_of, left_of]), 3) == (right_of, left_of)
     assert lanes_conflict(right_of, 1) == (right_of,)  # no lane beside another on a one-lane road
+
+
+def test_a_car_kept_in_the_leftmost_lane_that_another_must_pass_on_its_left_is_refused_before_any_search_with_the_road_s_lanes():
+    """overtake_obstacle on a road of two lanes (a country road with its oncoming lane): v2 keeps
+    lane 2, the leftmost, so v1 has no lane left of it. The run is in a location from the instant
+    it enters it, so the lane kept (an invariant) and the side asked at that instant (the guard)
+    hold together: refused at once, where the planner had searched every horizon."""
+    from pytest_roadlogic.planning.diagnosis import check_satisfiable
+
+    path = ROOT / "scenarios" / "overtake_obstacle.osc"
+    automaton = build_automaton(load_scenario(path, lanes=2))
+    with pytest.raises(UnsatisfiableScenario) as raised:
+        check_satisfiable(automaton)
+    report = raised.value.report()
+    named = {line.split(": error:")[0] for line in report.splitlines() if ": error:" in line}
+    assert named == {f"{path}:23:7", f"{path}:27:9"}, report  # keep_lane() and lane(left_of: v2)
+    assert "the road has 2 driving lanes" in report
+    check_satisfiable(build_automaton(load_scenario(path, lanes=3)))  # three lanes: left to the planner
