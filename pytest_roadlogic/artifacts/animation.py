@@ -149,8 +149,8 @@ def _frames_on_map(simulation: Simulation, verdict: Verdict | None, frames: list
         image.putpalette(palette)
         draw = ImageDraw.Draw(image)
         along = np.linspace(middle - view * 0.6, middle + view * 0.6, 120)
-        edge = road.right_edge(along)
-        left_x, left_y = to_pixels(*road.world(along, np.full_like(along, road.width))[:2])
+        edge, left = road.right_edge(along), road.left_edge(along)
+        left_x, left_y = to_pixels(*road.world(along, left)[:2])
         right_x, right_y = to_pixels(*road.world(along, edge)[:2])
         outline = list(zip(left_x.tolist(), left_y.tolist())) + list(
             zip(right_x.tolist()[::-1], right_y.tolist()[::-1])
@@ -163,7 +163,7 @@ def _frames_on_map(simulation: Simulation, verdict: Verdict | None, frames: list
             px, py = to_pixels(*road.world(along, y)[:2])
             # dashed: 3 m marks every 9 m along the road, only where the lane below the line is there
             for i in range(len(along) - 1):
-                if y[i] >= edge[i] + 0.5 and (along[i] % 9.0) < 3.0:
+                if edge[i] + 0.5 <= y[i] <= left[i] - 0.5 and (along[i] % 9.0) < 3.0:
                     draw.line((float(px[i]), float(py[i]), float(px[i + 1]), float(py[i + 1])), fill=LINE, width=1)
         for lane in range(road.lanes):
             lx, ly = to_pixels(*road.world(middle - view / 2 + 2.0, road.center_y(lane))[:2])

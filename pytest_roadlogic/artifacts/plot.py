@@ -41,14 +41,15 @@ def _top_on_map(top, simulation: Simulation, x_min: float, x_max: float, run_ind
     trace, road = simulation.trace, simulation.road
     _junction_roads(top, road.route)
     xs = np.linspace(x_min, x_max, 400)
-    edge = road.right_edge(xs)
-    wx, wy, _ = road.world(xs, edge)
-    top.plot(wx, wy, "-", color="grey", linewidth=0.8)  # the right edge, moving where lanes begin or end
-    for boundary in range(1, road.lanes + 1):
+    edge, left = road.right_edge(xs), road.left_edge(xs)
+    for side in (edge, left):  # the edges, moving where lanes begin or end
+        wx, wy, _ = road.world(xs, side)
+        top.plot(wx, wy, "-", color="grey", linewidth=0.8)
+    for boundary in range(1, road.lanes):
         y = np.full_like(xs, boundary * road.lane_width)
         wx, wy, _ = road.world(xs, y)
-        wx[y < edge + 0.5] = np.nan  # only where the lane below the line is there
-        top.plot(wx, wy, "-" if boundary == road.lanes else "--", color="grey", linewidth=0.8)
+        wx[(y < edge + 0.5) | (y > left - 0.5)] = np.nan  # only where the lanes either side are there
+        top.plot(wx, wy, "--", color="grey", linewidth=0.8)
     for lane in range(road.lanes):
         number = lane_number(lane) if lane_number is not None else road.lanes - lane
         wx, wy, _ = road.world(x_min + 1, road.center_y(lane))

@@ -43,20 +43,26 @@ class Road:
         return min(self.lanes - 1, max(0, index))
 
     def on_road(self, corners: np.ndarray) -> bool:
-        """Whether a box's ``corners`` lie between the road's edges (the right one moves where a
-        map's lanes begin or end)."""
+        """Whether a box's ``corners`` lie between the road's edges (which move where a map's lanes
+        begin or end)."""
         ys = corners[:, 1]
-        if ys.max() > self.width + 0.05:
-            return False
-        if self.route is None:  # the straight road's right edge is y = 0 throughout
-            return bool(ys.min() >= -0.05)
-        return bool((ys >= self.right_edge(corners[:, 0]) - 0.05).all())
+        if self.route is None:  # the straight road's edges are y = 0 and its width throughout
+            return bool(ys.min() >= -0.05 and ys.max() <= self.width + 0.05)
+        xs = corners[:, 0]
+        return bool((ys >= self.right_edge(xs) - 0.05).all() and (ys <= self.left_edge(xs) + 0.05).all())
 
     def right_edge(self, x) -> np.ndarray:
         """``y`` of the right edge of the driving lanes at ``x`` (0 but where a map's lanes begin or end)."""
         if self.route is None:
             return np.zeros_like(np.asarray(x, dtype=float))
         return self.route.right_edge(np.asarray(x, dtype=float) + self.route_shift)
+
+    def left_edge(self, x) -> np.ndarray:
+        """``y`` of the left edge of the driving lanes at ``x`` (the road's width but where a map's
+        lanes on the left begin or end: a road of 2+1 lanes)."""
+        if self.route is None:
+            return np.full_like(np.asarray(x, dtype=float), self.width)
+        return self.route.left_edge(np.asarray(x, dtype=float) + self.route_shift)
 
     def inner_edge(self, x) -> np.ndarray:
         """Metres left of the route's reference line at which its driving lanes begin, at ``x`` (0

@@ -1,12 +1,18 @@
 """The road a scenario runs on (``Route``): a road of a map (``MapRoad``) as a route drives it.
 
 A route runs along a road in the direction of its reference line (right-hand traffic: the road's
-right lanes), its lanes numbered as the planner numbers them: 0 nearest the reference
-line (the leftmost), then rightward. Its driving lanes begin at their inner edge: the road's lane
-offset, and right of the lanes that are not for driving between it and them (a motorway's median
-border, e6mini's). Its coordinates are the ones every stage reads: ``x`` metres along the
-reference line from the route's start and ``y`` metres left of the right edge of its lanes (on the
-straight road, exactly the coordinates the tool has always used). ``pose`` maps them to the world.
+right lanes), its lanes numbered as the planner numbers them: 0 the leftmost, then rightward. Its
+driving lanes begin at their inner edge: the road's lane offset, and right of the lanes that are
+not for driving between it and them (a motorway's median border, e6mini's). Its coordinates are
+the ones every stage reads: ``x`` metres along the reference line from the route's start and ``y``
+metres left of the right edge of its lanes where they are most (on the straight road, exactly the
+coordinates the tool has always used). ``pose`` maps them to the world.
+
+A lane keeps its number all along the route, also where lanes begin or end beside it: where a
+lane section has fewer driving lanes than the route, its lanes are those that continue the
+neighbouring section's where they meet (a road of 2+1 lanes opens its passing lane on the inside,
+left of the lane that runs on, which stays lane 1 from the left; a slip road ends on the outside).
+``y`` is laid from the left edge of the leftmost lane that runs the whole route.
 
 A route is one road driven one way (``directions``) or roads that continue one another
 (``chains``); ``choice.pick_route`` picks the one a scenario runs on.
@@ -27,6 +33,7 @@ DRIVING = "driving"
 USABLE_WIDTH = 2.8  # m: a lane at least this wide takes a car (1.8 m) with half a metre each side
 STEP = 1.0  # m along the route at which lane widths are read
 HALF_CAR = 3.0  # m: half a car's 4.5 m and some
+NARROW = 0.5  # m: a lane narrower than this where two lane sections meet is beginning or ending there
 # m kept between every planned vehicle and the route's ends: the simulation starts its road 30 m
 # behind the rearmost vehicle, and a car's half length and its driver's look-ahead need road
 ROUTE_MARGIN = 30.0
@@ -103,8 +110,61 @@ class Route:
 
     def lateral(self, x, y) -> np.ndarray:
         """Metres left of the reference line of the route's points (``x`` along, ``y`` left of its
-        lanes' right edge): ``y`` less the lanes' width, from their inner edge."""
-        return self.inner_edge(x) + np.asarray(y, dtype=float) - self.width
+        lanes' right edge): from the left edge of the leftmost lane that runs the whole route
+        (``y`` = the lanes' width less those left of it), ``y`` less that."""
+        _, anchor = self._numbering
+        return (
+            self._left_edge_of(anchor, np.asarray(x, dtype=float))
+            + np.asarray(y, dtype=float)
+            - (self.lanes - anchor) * self.lane_width
+        )
+
+    @cached_property
+    def _numbering(self) -> tuple[tuple[int, ...], int]:
+        """Per lane section, the route's number of its first driving lane (from the left); and
+        the leftmost lane of the route that every section has. Sections are numbered from the
+        one with the most lanes outwards, each lane that continues a neighbour's lane where the
+        two meet (within half a lane's width) taking its number. Where that leaves the numbers
+        ambiguous (no lane continues, or more lanes than the route's), every section's lanes are
+        numbered from the left, and the anchor is lane 0."""
+        fallback = (tuple(0 for _ in self.sections), 0)
+        counts = [len(driving_lanes(section)[1]) for section in self.sections]
+        if len(set(counts)) <= 1:
+            return fallback
+        first: dict[int, int] = {counts.index(max(counts)): 0}
+        order = sorted(range(len(counts)), key=lambda i: abs(i - counts.index(max(counts))))
+        for i in order[1:]:
+            known = i - 1 if i - 1 in first else i + 1
+            shift = _continued(self.road, self.sections[min(i, known)], self.sections[max(i, known)])
+            if shift is None:
+                return fallback
+            # a lane continued is one number: the later section's first lane is ``shift`` lanes left
+            # of the earlier one's
+            first[i] = first[known] + (-shift if i > known else shift)
+        low = min(first.values())
+        numbers = tuple(first[i] - low for i in range(len(counts)))
+        if max(n + c for n, c in zip(numbers, counts)) > self.lanes:
+            return fallback
+        everywhere = [k for k in range(self.lanes) if all(n <= k < n + c for n, c in zip(numbers, counts))]
+        return (numbers, everywhere[0]) if everywhere else fallback
+
+    def _left_edge_of(self, lane: int, s) -> np.ndarray:
+        """Metres left of the reference line of ``lane``'s left edge, at lengths ``s`` along the
+        route (where a section lacks the lanes left of it: as if they were there at no width)."""
+        s = np.clip(np.asarray(s, dtype=float), 0.0, self.length)
+        edge = self.inner_edge(s)
+        sections, _ = self._numbering
+        for section, number in zip(self.sections, sections):
+            if lane <= number:
+                continue
+            last = section is self.sections[-1]
+            inside = (s >= section.s - 1e-9) & ((s < section.end - 1e-9) | last)
+            if not inside.any():
+                continue
+            _, driving = driving_lanes(section)
+            left = sum(driving[k].width(s - section.s) for k in range(min(lane - number, len(driving))))
+            edge = edge - np.where(inside, left, 0.0)
+        return edge
 
     def inner_edge(self, s) -> np.ndarray:
         """Metres left of the reference line at which the driving lanes begin, at lengths ``s`` along
@@ -119,7 +179,10 @@ class Route:
     def spans(self) -> dict[int, tuple[float, float]]:
         """Where a car's centre may be in each lane that begins or ends on the route: where the lane
         is at least ``USABLE_WIDTH`` wide, less half a car (``HALF_CAR``) at each end: lane ->
-        (first, last) metres along the route. A lane that runs the whole route at that width has none."""
+        (first, last) metres along the route. A lane that runs the whole route at that width has none.
+        A lane wide enough in several stretches (parking bays drawn as a driving lane that widens
+        and narrows again, esmini's parking_demo) is kept to the longest of them: a car between two
+        stretches would be off the road."""
         s = np.arange(0.0, self.length + STEP / 2, STEP)
         result = {}
         for lane in range(self.lanes):
@@ -129,8 +192,10 @@ class Route:
             if not usable.any():
                 result[lane] = (0.0, -1.0)  # nowhere
                 continue
-            inside = s[usable]
-            result[lane] = (float(inside[0]) + HALF_CAR, float(inside[-1]) - HALF_CAR)
+            # runs of consecutive usable samples: (first index, index past the last)
+            edges = np.flatnonzero(np.diff(np.concatenate([[0], usable.astype(int), [0]])))
+            first, past = max(zip(edges[::2], edges[1::2]), key=lambda run: run[1] - run[0])
+            result[lane] = (float(s[first]) + HALF_CAR, float(s[past - 1]) - HALF_CAR)
         return result
 
     def lane_width_at(self, lane: int, s) -> np.ndarray:
@@ -140,20 +205,31 @@ class Route:
         take it past the end of the map)."""
         s = np.clip(np.atleast_1d(np.asarray(s, dtype=float)), 0.0, self.length)
         width = np.zeros_like(s)
-        for section in self.sections:
+        sections, _ = self._numbering
+        for section, number in zip(self.sections, sections):
             inside = (s >= section.s - 1e-9) & (s <= section.end + 1e-9)
             _, driving = driving_lanes(section)
-            if not inside.any() or lane >= len(driving):
+            if not inside.any() or not 0 <= lane - number < len(driving):
                 continue
-            width = np.where(inside, driving[lane].width(s - section.s), width)
+            width = np.where(inside, driving[lane - number].width(s - section.s), width)
         return width
 
     def right_edge(self, s) -> np.ndarray:
         """``y`` of the right edge of the driving lanes at lengths ``s`` along the route (0 where every
-        lane is there at full width; above 0 where lanes have ended or not yet begun)."""
+        lane is there at full width; above 0 where lanes on the right have ended or not yet begun)."""
         s = np.atleast_1d(np.asarray(s, dtype=float))
-        total = sum(self.lane_width_at(lane, s) for lane in range(self.lanes))
-        return self.width - total
+        _, anchor = self._numbering
+        total = sum(self.lane_width_at(lane, s) for lane in range(anchor, self.lanes))
+        return (self.lanes - anchor) * self.lane_width - total
+
+    def left_edge(self, s) -> np.ndarray:
+        """``y`` of the left edge of the driving lanes at lengths ``s`` along the route (the lanes'
+        width where every lane is there at full width; below it where lanes on the left have ended
+        or not yet begun: a road of 2+1 lanes outside its passing stretch)."""
+        s = np.atleast_1d(np.asarray(s, dtype=float))
+        _, anchor = self._numbering
+        total = sum((self.lane_width_at(lane, s) for lane in range(anchor)), np.zeros_like(s))
+        return (self.lanes - anchor) * self.lane_width + total
 
     def greatest_curvature(self, start: float = 0.0, end: float | None = None) -> float:
         """The greatest curvature (1/m, either side) between ``start`` and ``end`` metres along it."""
@@ -240,6 +316,33 @@ def driving_lanes(section: LaneSection) -> tuple[tuple[MapLane, ...], tuple[MapL
             break
         driving.append(lane)
     return section.right[:first], tuple(driving)
+
+
+def _continued(road: MapRoad, before: LaneSection, after: LaneSection) -> int | None:
+    """Where two consecutive lane sections meet: the index among ``after``'s driving lanes of the
+    lane that continues ``before``'s first one that is there (wider than ``NARROW``), less that
+    lane's index in ``before``; None when no lane continues one of ``before``'s."""
+
+    def centres(section: LaneSection, at: float) -> list[tuple[float, float]]:
+        inner, driving = driving_lanes(section)
+        ds = np.array([at - section.s])
+        edge = float(road.offset(np.array([at]))[0]) - sum(float(lane.width(ds)[0]) for lane in inner)
+        found = []
+        for lane in driving:
+            width = float(lane.width(ds)[0])
+            found.append((edge - width / 2, width))
+            edge -= width
+        return found
+
+    at = after.s
+    old, new = centres(before, at), centres(after, at)
+    for k, (centre, width) in enumerate(old):
+        if width < NARROW:
+            continue
+        for j, (other, other_width) in enumerate(new):
+            if other_width >= NARROW and abs(other - centre) < min(width, other_width) / 2:
+                return j - k
+    return None
 
 
 def through_lanes(road: MapRoad) -> tuple[int, int]:

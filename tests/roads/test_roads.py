@@ -670,3 +670,73 @@ def test_a_route_over_roads_whose_lines_step_sideways_where_their_lanes_meet_run
     assert outcome.verdict.accepted, outcome.verdict.explain()
     for name, columns in outcome.simulation.trace.actors.items():
         assert np.all(np.abs(np.asarray(columns["world_y"]) + 1.75) < 0.6), name  # the lane's centre
+
+
+def two_plus_one_map(path: Path) -> Path:
+    """A straight 600 m road along +x of one lane each way, with a passing lane for its own
+    direction from 200 m to 400 m: it opens on the inside (left of the lane that runs on) over the
+    50 m before, as the lane offset moves the road's centre over by a lane, and closes over the 50 m
+    after (a 2+1 road: ids are counted from the centre, so the lane that runs on is -1 at the ends
+    and -2 along the passing stretch)."""
+    step_c, step_d = 3 * 3.5 / 50**2, -2 * 3.5 / 50**3  # a smooth step of 3.5 m over 50 m
+
+    def lane(number: int, *widths: tuple[float, float, float, float, float]) -> str:
+        records = "".join(f'<width sOffset="{o}" a="{a}" b="{b}" c="{c}" d="{d}"/>' for o, a, b, c, d in widths)
+        return f'<lane id="{number}" type="driving">{records}</lane>'
+
+    full = (0, 3.5, 0, 0, 0)
+    oncoming = f"<left>{lane(1, full)}</left>"
+    sections = [
+        (0, f"<right>{lane(-1, full)}</right>"),
+        (150, f"<right>{lane(-1, (0, 0, 0, step_c, step_d))}{lane(-2, full)}</right>"),
+        (200, f"<right>{lane(-1, full)}{lane(-2, full)}</right>"),
+        (400, f"<right>{lane(-1, (0, 3.5, 0, -step_c, -step_d))}{lane(-2, full)}</right>"),
+        (450, f"<right>{lane(-1, full)}</right>"),
+    ]
+    offsets = (
+        f'<laneOffset s="0" a="0" b="0" c="0" d="0"/><laneOffset s="150" a="0" b="0" c="{step_c}" d="{step_d}"/>'
+        f'<laneOffset s="200" a="3.5" b="0" c="0" d="0"/><laneOffset s="400" a="3.5" b="0" c="{-step_c}" d="{-step_d}"/>'
+        '<laneOffset s="450" a="0" b="0" c="0" d="0"/>'
+    )
+    return one_road_map(
+        path,
+        600,
+        '<geometry s="0" x="0" y="0" hdg="0" length="600"><line/></geometry>',
+        offsets + "".join(f'<laneSection s="{s}">{oncoming}{right}</laneSection>' for s, right in sections),
+    )
+
+
+def test_a_passing_lane_that_opens_on_the_inside_is_lane_2_and_the_lane_that_runs_on_keeps_its_place(tmp_path):
+    """On a 2+1 road the lane that runs the whole way is the right one, also where it is the road's
+    only lane: the passing lane exists only along its stretch, and the lanes' right edge stays where
+    the road's is."""
+    route = pick_route(read_map(two_plus_one_map(tmp_path / "two_plus_one.xodr")), 2)
+    assert route.lanes == 2
+    spans = route.spans()
+    # lane 0, the passing lane: where it is a car's width wide (2.8 m, 35 m into its 50 m opening),
+    # less half a car
+    assert set(spans) == {0} and spans[0] == pytest.approx((188.0, 412.0), abs=1.5)
+    along = np.array([50.0, 175.0, 300.0, 425.0, 550.0])
+    _, right, _ = route.pose(along, np.zeros_like(along))
+    assert right == pytest.approx([-3.5] * 5)  # the right edge: where the road's is, all along
+    assert route.left_edge(along) == pytest.approx([3.5, 5.25, 7.0, 5.25, 3.5])
+    assert route.lane_width_at(1, along) == pytest.approx([3.5] * 5)
+
+
+def test_an_overtake_on_a_2_plus_1_road_passes_in_the_passing_lane(tmp_path):
+    from pytest_roadlogic.pipeline import load_scenario, run_scenario
+
+    (tmp_path / "maps").mkdir()
+    two_plus_one_map(tmp_path / "maps" / "two_plus_one.xodr")
+    text = (ROOT / "scenarios" / "overtake.osc").read_text()
+    scenario = load_scenario(write(tmp_path / "overtake.osc", text), road_map=tmp_path / "maps" / "two_plus_one.xodr")
+    outcome = run_scenario(scenario, seed=1)
+    assert outcome.verdict.accepted, outcome.verdict.explain()
+    trace, road = outcome.simulation.trace, outcome.simulation.road
+    passing = road.center_y(0)
+    for name, columns in trace.actors.items():
+        in_passing_lane = np.abs(columns["y"] - passing) < 1.0
+        # a car is in the passing lane only where the road has it
+        assert (columns["x"][in_passing_lane] + road.route_shift > 150.0).all(), name
+        assert (columns["x"][in_passing_lane] + road.route_shift < 450.0).all(), name
+    assert (np.abs(trace.actors["v1"]["y"] - passing) < 1.0).any(), "v1 passes in the passing lane"

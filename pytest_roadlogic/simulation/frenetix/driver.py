@@ -94,7 +94,7 @@ def _frame(road: Road) -> _Frame:
                 before = max(0.0, -math.floor(road.x_start + road.route_shift))
                 after = 0.0
             along = np.arange(-before, route.length + after + 0.5, 1.0)
-            edge = route.inner_edge(along)
+            edge = route.lateral(along, route.width)  # the lanes' left edge where they are most
             x, y, _ = route.reference_line.pose(along, edge)
             along_line = not np.any(edge != 0.0)
             # frenetix's s is the length along its path: the route's where the path is its line
@@ -445,9 +445,9 @@ class FrenetixDriver(DriverBase):
         heading = trajectory.heading[:steps]
         half = CAR_WIDTH / 2 * np.abs(np.cos(heading)) + CAR_LENGTH / 2 * np.abs(np.sin(heading)) + 0.1
         y = trajectory.y[:steps]
-        # the right edge moves where a map's lanes begin or end (0 on the straight road)
-        edge = self.road.right_edge(trajectory.x[:steps])
-        return float(max(0.0, (half - (y - edge)).max(), (y + half - self.road.width).max()))
+        # the edges move where a map's lanes begin or end (0 and the width on the straight road)
+        right, left = self.road.right_edge(trajectory.x[:steps]), self.road.left_edge(trajectory.x[:steps])
+        return float(max(0.0, (half - (y - right)).max(), (y + half - left).max()))
 
     def _collides(self, trajectory: Trajectory, others: dict[str, Trajectory]) -> bool:
         """Whether ``trajectory`` comes within the clearances of another's predicted trajectory at
