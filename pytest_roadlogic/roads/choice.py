@@ -21,6 +21,7 @@ from .junctions import (
     number_of_roads,
     turn_route,
     turns,
+    with_room,
 )
 from .opendrive_in import MapError, MapRoad, RoadMap
 from .route import ROUTE_MARGIN, Route, driving_lanes, holding_speed, through_lanes
@@ -171,16 +172,15 @@ def fitting_turns(road_map: RoadMap, lanes: int, length: float, ask: TurnAsk) ->
         for t in turns(road_map)
         if direction in (None, t.direction) and roads in (None, number_of_roads(road_map, t.junction))
     ]
+    asked_for = [roomy(road_map, t) for t in asked_for]
     offered = [
-        t
-        for t in asked_for
-        if t.lanes >= lanes and t.length >= length and min(t.into.length, t.out_of.length) >= MIN_APPROACH
+        t for t in asked_for if t.lanes >= lanes and t.length >= length and min(t.approach, t.leave) >= MIN_APPROACH
     ]
     if asked_for and not offered:
         # the map has the turn, but not with the lanes or the room the scenario needs: say which
         with_lanes = [t for t in asked_for if t.lanes >= lanes]
         long_enough = [t for t in with_lanes if t.length >= length]
-        approach = max(min(t.into.length, t.out_of.length) for t in (long_enough or with_lanes or asked_for))
+        approach = max(min(t.approach, t.leave) for t in (long_enough or with_lanes or asked_for))
         count = len(asked_for)
         if not with_lanes:
             most = max(t.lanes for t in asked_for)
@@ -213,9 +213,19 @@ def fitting_turns(road_map: RoadMap, lanes: int, length: float, ask: TurnAsk) ->
     return offered
 
 
+def roomy(road_map: RoadMap, turn: Turn) -> Turn:
+    """``turn`` with the roads straight on before and after it that give a car room to approach and
+    leave the junction (``MIN_APPROACH`` each side) and a scenario room to drive
+    (``MIN_ROUTE_LENGTH`` in all), where its own roads in and out are shorter
+    (``junctions.with_room``)."""
+    return with_room(road_map, turn, MIN_APPROACH, MIN_ROUTE_LENGTH)
+
+
 def turn_as_route(road_map: RoadMap, chosen: Turn, crossers: frozenset[str] = frozenset()) -> Route:
-    """The route of the turn ``chosen``: its three roads as one (``junctions.turn_route``), as many
-    lanes as the roads in and out both have all along, the junction where it lies along it."""
+    """The route of the turn ``chosen``: its roads as one (``junctions.turn_route``, with the roads
+    before and after it that ``roomy`` adds), as many lanes as the roads in and out both have all
+    along, the junction where it lies along it."""
+    chosen = roomy(road_map, chosen)
     return Route(
         road_map.path,
         turn_route(chosen),

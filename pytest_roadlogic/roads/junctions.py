@@ -15,10 +15,12 @@ connecting road's driving lane continues the road in and the road out, lane cent
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass
 
-from .chains import chained, continues, heading_change, way
+from .chains import chained, continues, heading_change, next_ways, way
+from .directions import against
 from .opendrive_in import MapRoad, RoadMap
 from .route import through_lanes
 
@@ -38,10 +40,29 @@ class Turn:
     out_of: MapRoad
     angle: float
     direction: str
+    # the roads its route drives straight on before the road in and after the road out, where those
+    # are short (``with_room``): the turn is the same, its route longer
+    before: tuple[MapRoad, ...] = ()
+    after: tuple[MapRoad, ...] = ()
 
     @property
     def roads(self) -> tuple[MapRoad, MapRoad, MapRoad]:
         return (self.into, self.inside, self.out_of)
+
+    @property
+    def route_roads(self) -> tuple[MapRoad, ...]:
+        """The roads of its route, in the order driven."""
+        return (*self.before, *self.roads, *self.after)
+
+    @property
+    def approach(self) -> float:
+        """Metres of its route before the junction."""
+        return sum(road.length for road in (*self.before, self.into))
+
+    @property
+    def leave(self) -> float:
+        """Metres of its route past the junction."""
+        return sum(road.length for road in (self.out_of, *self.after))
 
     @property
     def lanes(self) -> int:
@@ -50,8 +71,9 @@ class Turn:
 
     @property
     def length(self) -> float:
-        """Metres of its route: the road in, the connecting road and the road out."""
-        return sum(road.length for road in self.roads)
+        """Metres of its route: the road in, the connecting road and the road out, and the roads
+        before and after them."""
+        return sum(road.length for road in self.route_roads)
 
     def describe(self) -> str:
         return f"{self.direction} from road {self.into.id} into road {self.out_of.id}"
@@ -132,14 +154,73 @@ def describe_junctions(road_map: RoadMap) -> str:
 
 
 def turn_route(turn: Turn) -> MapRoad:
-    """The route of ``turn``: the road in, the connecting road and the road out as one road
-    (``chains.chained``), s from the road in's start."""
-    return chained(turn.roads)
+    """The route of ``turn``: the roads before, the road in, the connecting road, the road out and
+    the roads after as one road (``chains.chained``), s from the first one's start."""
+    return chained(turn.route_roads)
 
 
 def junction_span(turn: Turn) -> tuple[float, float]:
     """Where the junction lies along ``turn_route(turn)``: its connecting road's first and last metre."""
-    return (turn.into.length, turn.into.length + turn.inside.length)
+    return (turn.approach, turn.approach + turn.inside.length)
+
+
+MAX_ROOM_STEPS = 4  # roads (or junctions crossed straight on) added before or after a turn, each way
+
+
+def with_room(road_map: RoadMap, turn: Turn, side: float, length: float) -> Turn:
+    """``turn`` with the roads straight on before its road in and after its road out
+    (``chains.next_ways``: the next road, or through a junction straight on) added while the route
+    has less than ``side`` metres before or past the junction, then, one side after the other,
+    while it has less than ``length`` metres in all. Each road added has the turn's lanes all along
+    (a connecting road: one) and continues the last; the first such in the map's order, at most
+    ``MAX_ROOM_STEPS`` each way. Why: in a town the roads between two junctions are short (CARLA's
+    Town04: 44 m), and a car approaching a turn comes from the road before, as a driver does."""
+    lanes = turn.lanes
+    taken = {road.id for road in turn.roads}
+
+    def step_from(road: MapRoad) -> tuple[MapRoad, ...] | None:
+        for step in next_ways(road_map, road):
+            if any(r.id in taken for r in step) or through_lanes(step[-1])[0] < lanes:
+                continue
+            if all(continues(a, b) for a, b in zip((road, *step), step)):
+                taken.update(r.id for r in step)
+                return step
+        return None
+
+    before, after = list(turn.before), list(turn.after)
+
+    def grow_before() -> bool:
+        if len(before) >= 2 * MAX_ROOM_STEPS:
+            return False
+        step = step_from(against((before or [turn.into])[0]))
+        if step is None:
+            return False
+        before[:0] = [against(road) for road in reversed(step)]
+        return True
+
+    def grow_after() -> bool:
+        if len(after) >= 2 * MAX_ROOM_STEPS:
+            return False
+        step = step_from((after or [turn.out_of])[-1])
+        if step is None:
+            return False
+        after.extend(step)
+        return True
+
+    def metres(roads) -> float:
+        return sum(road.length for road in roads)
+
+    while metres(before) + turn.into.length < side and grow_before():
+        pass
+    while turn.out_of.length + metres(after) < side and grow_after():
+        pass
+    growing = [grow_before, grow_after]
+    while growing and metres(before) + metres(turn.roads) + metres(after) < length:
+        if not growing[0]():
+            growing.pop(0)
+        else:
+            growing.append(growing.pop(0))
+    return dataclasses.replace(turn, before=tuple(before), after=tuple(after))
 
 
 def junction_roads(road_map: RoadMap, junction: str) -> tuple[MapRoad, ...]:
