@@ -88,6 +88,9 @@ MIN_ROUTE_LENGTH = 200.0  # m of route a scenario that names no path_length is g
 # m of road a turn's road in and road out need each: the planner keeps every car ROUTE_MARGIN from
 # a route's ends, and a car driving through the junction approaches it and leaves it on them
 MIN_APPROACH = ROUTE_MARGIN + 20.0
+# m before and past the junction a turn's route is given when its own roads give less than
+# MIN_APPROACH (``roomy``): a town's roads between two junctions
+ROOM = ROUTE_MARGIN + 120.0
 
 
 def pick_route(
@@ -214,11 +217,13 @@ def fitting_turns(road_map: RoadMap, lanes: int, length: float, ask: TurnAsk) ->
 
 
 def roomy(road_map: RoadMap, turn: Turn) -> Turn:
-    """``turn`` with the roads straight on before and after it that give a car room to approach and
-    leave the junction (``MIN_APPROACH`` each side) and a scenario room to drive
-    (``MIN_ROUTE_LENGTH`` in all), where its own roads in and out are shorter
-    (``junctions.with_room``)."""
-    return with_room(road_map, turn, MIN_APPROACH, MIN_ROUTE_LENGTH)
+    """``turn`` as it is when its roads give a car room to approach and leave the junction
+    (``MIN_APPROACH`` each side) and a scenario room to drive (``MIN_ROUTE_LENGTH`` in all); else
+    with the roads straight on before and after it (``junctions.with_room``) up to ``ROOM`` each
+    side: two cars approaching one after the other need more than one car's room."""
+    if min(turn.approach, turn.leave) >= MIN_APPROACH and turn.length >= MIN_ROUTE_LENGTH:
+        return turn
+    return with_room(road_map, turn, ROOM, MIN_ROUTE_LENGTH)
 
 
 def turn_as_route(road_map: RoadMap, chosen: Turn, crossers: frozenset[str] = frozenset()) -> Route:

@@ -246,20 +246,21 @@ def test_a_turn_whose_road_in_is_short_is_approached_from_the_road_before_it_str
     """with_room: the roads a car comes from are added before the road in (through the town's
     other junction straight on), the turn itself stays the same, and the junction lies as far
     along the longer route as the roads before it add. A turn with room enough is left as it is."""
-    from pytest_roadlogic.roads.choice import MIN_APPROACH, MIN_ROUTE_LENGTH
+    from pytest_roadlogic.roads.choice import MIN_APPROACH, MIN_ROUTE_LENGTH, roomy
     from pytest_roadlogic.roads.junctions import junction_span, turn_route, with_room
 
     town = read_map(MAPS / "town.xodr")
     turn = next(t for t in turns(town) if t.describe() == "straight from road 3 into road 1")
-    roomy = with_room(town, turn, turn.into.length + 20.0, 0.0)
-    assert [road.id for road in roomy.before] == ["6", "201"] and roomy.after == ()
-    assert roomy.roads == turn.roads and roomy.describe() == turn.describe()
-    added = sum(road.length for road in roomy.before)
-    assert roomy.approach == pytest.approx(turn.into.length + added)
-    assert junction_span(roomy) == pytest.approx((turn.approach + added, turn.approach + added + turn.inside.length))
+    longer = with_room(town, turn, turn.into.length + 20.0, 0.0)
+    assert [road.id for road in longer.before] == ["6", "201"] and longer.after == ()
+    assert longer.roads == turn.roads and longer.describe() == turn.describe()
+    added = sum(road.length for road in longer.before)
+    assert longer.approach == pytest.approx(turn.into.length + added)
+    assert junction_span(longer) == pytest.approx((turn.approach + added, turn.approach + added + turn.inside.length))
     # the route starts where road 6 is driven from, and reaches the junction where the turn's own does
-    route, own = turn_route(roomy), turn_route(turn)
+    route, own = turn_route(longer), turn_route(turn)
     x, y, _ = route.reference_line.pose(np.array([added]))
     x0, y0, _ = own.reference_line.pose(np.array([0.0]))
     assert (float(x[0]), float(y[0])) == pytest.approx((float(x0[0]), float(y0[0])), abs=0.05)
     assert with_room(town, turn, MIN_APPROACH, MIN_ROUTE_LENGTH) == turn  # 200 m in and out: room enough
+    assert roomy(town, turn) == turn
