@@ -76,6 +76,13 @@ def raise_reason(planner, error: NoPlanError, deadline: float, window=None) -> N
             planner.settings.summary(planner.automaton.lanes),
             planner.automaton.parameters,
         ) from None
+    if conflict == ():
+        raise NoPlanError(
+            f"{error}: none even with every constraint of the scenario relaxed, so no group of them is to "
+            f"blame; the planner's bounds are ({planner.settings.summary(planner.automaton.lanes)}): on a map, "
+            "give the scenario a road with more room (path_length, a longer road or junction approach) or ask "
+            "the vehicles to travel less (shorter durations, lower speeds)"
+        ) from None
     raise error
 
 
@@ -88,8 +95,8 @@ def smallest_conflict(planner, deadline: float | None = None) -> tuple | None:
     one member at a time, and keeping it out whenever the rest still fail at every horizon,
     makes the group minimal; with a ``removal_time_limit`` setting, a member whose removal is not
     decided within it stays (the group still cannot hold together, it may name one constraint
-    too many). None when relaxing everything still leaves no plan (the settings
-    alone forbid one), or when time runs out.
+    too many). ``()`` when relaxing everything still leaves no plan (the settings, or the road,
+    alone forbid one); None when time runs out.
     """
     constraints = relaxable_constraints(planner.automaton)
     if not constraints:
@@ -99,7 +106,7 @@ def smallest_conflict(planner, deadline: float | None = None) -> tuple | None:
     program = planner.instance_for(settings, relaxable=True)
     try:
         if _failing(planner, program, settings, [], len(constraints), deadline) is not None:
-            return None  # no plan even with every constraint relaxed
+            return ()  # no plan even with every constraint relaxed
         core = _failing(planner, program, settings, list(range(len(constraints))), len(constraints), deadline)
         if not core:
             return None

@@ -259,3 +259,36 @@ def test_a_value_that_only_a_car_beyond_a_real_cars_limits_meets_is_blamed_namin
     assert "no concrete scenario within a real car's limits" in result.message and "relaxed to" in result.message, (
         result.message
     )
+
+
+def test_no_plan_with_every_constraint_relaxed_blames_no_constraint_and_names_the_planners_bounds_and_the_route(
+    monkeypatch,
+):
+    """When the diagnosis finds no plan even with all of the scenario's constraints relaxed (its
+    answer ``()``), no group of them is to blame: the message says so and names the bounds that
+    are left, on a map the route's room (where vehicles stay, and the junction those along a path
+    drive through), with what to do."""
+    import dataclasses
+    import time
+
+    from pytest_roadlogic.automaton import build_automaton
+    from pytest_roadlogic.pipeline import load_scenario
+    from pytest_roadlogic.planning import NoPlanError, diagnosis, planner_for, settings_for
+    from pytest_roadlogic.settings import RunSettings
+
+    automaton = build_automaton(load_scenario(ROOT / "scenarios" / "follow.osc"))
+    settings = dataclasses.replace(
+        settings_for(RunSettings()),
+        route_span=(30.0, 370.0),
+        junction_span=(180.0, 196.0),
+        crossers=frozenset({"ego"}),
+    )
+    planner = planner_for(automaton, settings, 1)
+    monkeypatch.setattr(diagnosis, "smallest_conflict", lambda planner, deadline=None: ())
+    with pytest.raises(NoPlanError) as raised:
+        diagnosis.raise_reason(planner, NoPlanError("no plan at all"), time.monotonic() + 30.0)
+    message = str(raised.value)
+    assert message.startswith("no plan at all: none even with every constraint of the scenario relaxed")
+    assert "every vehicle between 30 and 370 m along its route" in message
+    assert "ego from before its junction at 180 m to past it at 196 m" in message
+    assert "path_length" in message  # what to do

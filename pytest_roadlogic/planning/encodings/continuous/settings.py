@@ -291,7 +291,14 @@ class ContinuousSettings:
 
     def summary(self, lanes: int) -> str:
         """The vehicle limits and bounds on a road of ``lanes`` lanes, for messages that blame them."""
+        road = ""
+        if self.route_span is not None:
+            first, last = self.route_span
+            road = f", every vehicle between {first:g} and {last:.0f} m along its route"
+            if self.junction_span is not None and self.crossers:
+                start, end = self.junction_span
+                road += f" ({', '.join(sorted(self.crossers))} from before its junction at {start:.0f} m to past it at {end:.0f} m)"
         return (
             f"speeds {self.min_speed:g}..{self.max_speed:g} m/s, accelerations {self.min_acceleration:g}..{self.max_acceleration:g} m/s^2, "
-            f"{lanes} lanes, {self.min_gap:g} m gaps, at most {self.max_horizon} steps of {self.dt:g} s"
+            f"{lanes} lane{'' if lanes == 1 else 's'}, {self.min_gap:g} m gaps, at most {self.max_horizon} steps of {self.dt:g} s{road}"
         )

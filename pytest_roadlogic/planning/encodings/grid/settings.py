@@ -94,7 +94,7 @@ class GridSettings:
         """The domain rules' numbers on a road of ``lanes`` lanes, for messages that blame them."""
         return (
             f"speeds {self.min_speed:g}..{self.max_speed:g} m/s, accelerations {min(self.accelerations):g}..{max(self.accelerations):g} m/s^2, "
-            f"{lanes} lanes, {self.min_gap:g} m gaps, at most {self.max_horizon} steps of {self.dt:g} s"
+            f"{lanes} lane{'' if lanes == 1 else 's'}, {self.min_gap:g} m gaps, at most {self.max_horizon} steps of {self.dt:g} s"
         )
 
     def resolution(self) -> dict[str | None, float]:
