@@ -64,13 +64,6 @@ class Road:
             return np.full_like(np.asarray(x, dtype=float), self.width)
         return self.route.left_edge(np.asarray(x, dtype=float) + self.route_shift)
 
-    def inner_edge(self, x) -> np.ndarray:
-        """Metres left of the route's reference line at which its driving lanes begin, at ``x`` (0
-        on the straight road)."""
-        if self.route is None:
-            return np.zeros_like(np.asarray(x, dtype=float))
-        return self.route.inner_edge(np.asarray(x, dtype=float) + self.route_shift)
-
     def world(self, x, y, heading=0.0) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """World x, y and heading of road coordinates (on the straight road, the same). On a map the
         heading is within -pi..pi (a route's own runs on unwrapped: 7.9 rad along a long one, which
