@@ -12,7 +12,7 @@ import numpy as np
 
 from .asks import TurnAsk
 from .chains import chained, chains
-from .directions import against, with_oncoming
+from .directions import against, left_hand, with_oncoming
 from .junctions import (
     Turn,
     describe_junctions,
@@ -35,11 +35,10 @@ def describe(road: MapRoad) -> str:
     """A road as a refusal lists it: its lanes each way, length and curves, or why it is no route."""
     if road.junction not in ("", "-1"):
         return f"{road.label}: inside junction {road.junction} (a route goes through a junction straight on, never begins in one)"
-    if road.rule == "LHT":
-        return f"{road.label}: left-hand traffic (rule LHT), which this tool does not drive yet"
-    through, most = through_lanes(road)
+    one_way, other_way = ways_of(road)
+    through, most = through_lanes(one_way)
     extra = f", {most} in parts" if most > through else ""
-    back, back_most = through_lanes(against(road))
+    back, back_most = through_lanes(other_way)
     if back_most:
         extra += f", {back}{f' ({back_most} in parts)' if back_most > back else ''} the other way"
     _, _, _, _, curvature = road.reference_line.sampled()
@@ -50,7 +49,17 @@ def describe(road: MapRoad) -> str:
             curves.append(f"{side} {1 / sharpest:.0f} m")
     bends = f", curves of radius down to {' and '.join(curves)}" if curves else ", straight"
     plural = "" if through == 1 else "s"
-    return f"{road.label}: {through} driving lane{plural} over {road.length:g} m{extra}{bends}"
+    traffic = " (left-hand traffic)" if road.rule == "LHT" else ""
+    return f"{road.label}{traffic}: {through} driving lane{plural} over {road.length:g} m{extra}{bends}"
+
+
+def ways_of(road: MapRoad) -> tuple[MapRoad, MapRoad]:
+    """A road outside junctions driven each way, as a route reads it: along its reference line and
+    against it, on the lanes that carry each direction (its right lanes along it in right-hand
+    traffic, its left lanes in left-hand traffic, ``directions.left_hand``)."""
+    if road.rule == "LHT":
+        return left_hand(road), left_hand(against(road))
+    return road, against(road)
 
 
 def curve_stretch(road: MapRoad, curve: tuple[float | None, float | None, str | None]) -> tuple[float, float] | None:
@@ -108,12 +117,7 @@ def pick_route(
     # a scenario that names no path_length still needs room to drive: a route too short for it
     # would be reported as a scenario without a plan, blaming the scenario for the map
     length = length or MIN_ROUTE_LENGTH
-    ways = [
-        way
-        for road in road_map.roads.values()
-        if road.junction in ("", "-1") and road.rule != "LHT"  # a route drives a road's right lanes: RHT
-        for way in (road, against(road))
-    ]
+    ways = [way for road in road_map.roads.values() if road.junction in ("", "-1") for way in ways_of(road)]
 
     def fits(way: MapRoad) -> bool:
         _, most = through_lanes(way)
@@ -157,12 +161,14 @@ def pick_route(
 
 
 def _lane_width(road: MapRoad) -> float:
-    """The width of a route's lanes: its innermost lane's, where the road has the most lanes (a
-    route's lanes are as wide as one another; the outer ones of a published map may be a parking
-    bay 5 m wide here and there)."""
+    """The width of a route's lanes: its innermost lane's (beside the centre line: the first of its
+    lanes, the last on a road of left-hand traffic), where the road has the most lanes (a route's
+    lanes are as wide as one another; the outer ones of a published map may be a parking bay 5 m
+    wide here and there)."""
     widest = max(road.sections, key=lambda section: len(driving_lanes(section)[1]))
     within = np.linspace(0.0, widest.end - widest.s, 9)
-    return float(np.max(driving_lanes(widest)[1][0].width(within)))
+    lanes = driving_lanes(widest)[1]
+    return float(np.max(lanes[-1 if road.left_hand else 0].width(within)))
 
 
 def fitting_turns(road_map: RoadMap, lanes: int, length: float, ask: TurnAsk) -> list[Turn]:

@@ -48,6 +48,27 @@ def against(road: MapRoad) -> MapRoad:
     )
 
 
+def left_hand(road: MapRoad) -> MapRoad:
+    """A road of left-hand traffic driven along its reference line, as a route reads any road: its
+    left lanes, which carry that direction there, as its right lanes listed from the road's edge
+    in (lane 0, the leftmost, by the edge; the last beside the centre line), its lane offset moved
+    out to their outer edge (the lane offset plus their widths, up to the outermost driving lane).
+    Nothing is mirrored: left and right stay the world's, as a driver there sees them, and the
+    lane beside the centre line is the rightmost. No oncoming lanes are joined. Driven against its
+    reference line, the road is ``left_hand(against(road))``."""
+    sections = []
+    widths = [(0.0, road.length, road.lane_offset)]
+    for section in road.sections:
+        outermost = max((k for k, lane in enumerate(section.left) if lane.type == DRIVING), default=-1)
+        kept = section.left[: outermost + 1]
+        right = tuple(MapLane(-(k + 1), lane.type, lane.widths) for k, lane in enumerate(reversed(kept)))
+        sections.append(LaneSection(section.s, section.end, right))
+        widths += [(section.s, section.end, lane.widths) for lane in kept]
+    return dataclasses.replace(
+        road, sections=tuple(sections), lane_offset=summed(widths, road.length), left_hand=True, oncoming=0
+    )
+
+
 def oncoming_lanes(section: LaneSection) -> int:
     """How many of the section's left lanes, side by side from the reference line, are for driving
     and adjoin its first right lane (itself for driving): the lanes an overtake may pass in. A

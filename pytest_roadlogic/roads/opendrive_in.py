@@ -184,6 +184,9 @@ class MapRoad:
     against: bool = False
     # its first right lanes that carry the other direction's traffic (``directions.with_oncoming``)
     oncoming: int = 0
+    # a road of left-hand traffic as a route drives it: its left lanes as right ones, from the
+    # road's edge in (``directions.left_hand``)
+    left_hand: bool = False
     # roads one after another (``chains.chained``): their labels, in order; () for a road of the map
     chain: tuple[str, ...] = ()
 

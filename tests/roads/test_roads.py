@@ -9,7 +9,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from pytest_roadlogic.roads.choice import pick_route
+from pytest_roadlogic.roads.choice import describe, pick_route
 from pytest_roadlogic.roads.opendrive_in import MapError, read_map
 from pytest_roadlogic.roads.reference_line import Geometry, ReferenceLine
 from pytest_roadlogic.roads.route import curve_speed
@@ -251,12 +251,54 @@ def test_a_lane_offset_and_a_median_move_a_routes_lanes_off_the_reference_line(t
     assert y == pytest.approx([1.0 - 1.75])
 
 
-def test_a_left_hand_traffic_road_is_no_route_and_is_named_so(tmp_path):
-    # its right lanes run against the reference line: driving them along it would be the wrong way
-    text = offset_map(tmp_path / "lht.xodr").read_text().replace('junction="-1"', 'junction="-1" rule="LHT"')
-    with pytest.raises(MapError) as caught:
-        pick_route(read_map(write(tmp_path / "lht.xodr", text)), 2)
-    assert "road 1: left-hand traffic (rule LHT), which this tool does not drive yet" in caught.value.message
+def left_hand_map(path: Path) -> Path:
+    """A straight 600 m road along +x of left-hand traffic: a 2 m median border beside the centre
+    line, then three 3.5 m driving lanes on the left (those going along +x), and one lane on the
+    right (the other way)."""
+    lane = "<lane id='{id}' type='{type}'><width sOffset='0' a='{width}' b='0' c='0' d='0'/></lane>"
+    left = "".join(
+        lane.format(id=i, type=t, width=w)
+        for i, t, w in ((4, "driving", 3.5), (3, "driving", 3.5), (2, "driving", 3.5), (1, "border", 2.0))
+    )
+    text = one_road_map(
+        path,
+        600,
+        '<geometry s="0" x="0" y="0" hdg="0" length="600"><line/></geometry>',
+        f'<laneSection s="0"><left>{left}</left><right>{lane.format(id=-1, type="driving", width=3.5)}</right></laneSection>',
+    ).read_text()
+    return write(path, text.replace('junction="-1"', 'junction="-1" rule="LHT"'))
+
+
+def test_a_left_hand_traffic_road_is_driven_on_its_left_lanes_with_left_and_right_as_a_driver_there_sees_them(tmp_path):
+    """Nothing is mirrored: along +x the road's left lanes carry the traffic; the leftmost of the
+    route's lanes (lane 0) is by the road's edge, the rightmost beside the median."""
+    road_map = read_map(left_hand_map(tmp_path / "lht.xodr"))
+    route = pick_route(road_map, 3)
+    assert route.lanes == 3 and route.lane_width == 3.5 and route.road.left_hand
+    assert not route.reference_line.against  # driven along its line: +x
+    centres = [route.width - (lane + 0.5) * route.lane_width for lane in range(3)]
+    _, y, heading = route.pose([300.0] * 3, centres)
+    assert y == pytest.approx([2.0 + 8.75, 2.0 + 5.25, 2.0 + 1.75])  # left of the line, lane 2 by the median
+    assert heading == pytest.approx([0.0] * 3)
+    # the other way, against the line, is the right side's one lane
+    assert "road 1 (left-hand traffic): 3 driving lanes over 600 m, 1 the other way" in describe(road_map.roads["1"])
+
+
+def test_an_overtake_on_a_left_hand_traffic_road_passes_on_the_left_as_written(tmp_path):
+    from pytest_roadlogic.pipeline import load_scenario, run_scenario
+
+    (tmp_path / "maps").mkdir()
+    left_hand_map(tmp_path / "maps" / "lht.xodr")
+    text = (ROOT / "scenarios" / "overtake.osc").read_text()
+    scenario = load_scenario(write(tmp_path / "overtake.osc", text), road_map=tmp_path / "maps" / "lht.xodr")
+    outcome = run_scenario(scenario, seed=1)
+    assert outcome.verdict.accepted, outcome.verdict.explain()
+    trace = outcome.simulation.trace
+    passer, passed = trace.actors["v1"], trace.actors["v2"]
+    widest = int(np.argmax(passer["world_y"] - passed["world_y"]))
+    # lane(left_of: v2): v1 passes further from the centre line, on the world's left of v2
+    assert passer["world_y"][widest] - passed["world_y"][widest] > 2.5
+    assert (passer["world_y"] > 0).all() and (passed["world_y"] > 0).all()  # on the road's left side
 
 
 def with_outer_lane(path: Path, kind: str, width: float) -> str:

@@ -196,6 +196,16 @@ class RoadLanes:
                 f"{'lane' if oncoming == 1 else 'lanes'} (a car there drives on the other direction's side of the road)",
                 "give a map with a road of that many lanes one way, unless the scenario passes in the oncoming lane",
             )
+        if self.route.road.left_hand:
+            # said plainly: nothing is mirrored, so a scenario written for right-hand traffic
+            # passes on the side it names, which there is the road's edge
+            self.warning(
+                at,
+                f"the route on {self.route.name} is of left-hand traffic: left and right are as a driver "
+                f"there sees them: the rightmost lane is the one beside the centre line, and a car left_of "
+                f"another is nearer the road's edge",
+                "write the sides as they are on this road (an overtake there passes on the right)",
+            )
         self.lanes = lanes
         self.lanes_origin = (
             f" (the route on {self.route.name})"
