@@ -284,16 +284,22 @@ def test_a_left_hand_traffic_road_is_driven_on_its_left_lanes_with_left_and_righ
     assert "road 1 (left-hand traffic): 3 driving lanes over 600 m, 1 the other way" in describe(road_map.roads["1"])
 
 
-def test_an_overtake_on_a_left_hand_traffic_road_passes_on_the_left_as_written(tmp_path):
+def overtake_on(tmp_path: Path, make_map, name: str):
+    """The paper's overtake run at seed 1 on the map ``make_map`` writes (as maps/NAME in
+    ``tmp_path``), accepted; its outcome."""
     from pytest_roadlogic.pipeline import load_scenario, run_scenario
 
     (tmp_path / "maps").mkdir()
-    left_hand_map(tmp_path / "maps" / "lht.xodr")
+    road_map = make_map(tmp_path / "maps" / name)
     text = (ROOT / "scenarios" / "overtake.osc").read_text()
-    scenario = load_scenario(write(tmp_path / "overtake.osc", text), road_map=tmp_path / "maps" / "lht.xodr")
+    scenario = load_scenario(write(tmp_path / "overtake.osc", text), road_map=road_map)
     outcome = run_scenario(scenario, seed=1)
     assert outcome.verdict.accepted, outcome.verdict.explain()
-    trace = outcome.simulation.trace
+    return outcome
+
+
+def test_an_overtake_on_a_left_hand_traffic_road_passes_on_the_left_as_written(tmp_path):
+    trace = overtake_on(tmp_path, left_hand_map, "lht.xodr").simulation.trace
     passer, passed = trace.actors["v1"], trace.actors["v2"]
     widest = int(np.argmax(passer["world_y"] - passed["world_y"]))
     # lane(left_of: v2): v1 passes further from the centre line, on the world's left of v2
@@ -766,14 +772,7 @@ def test_a_passing_lane_that_opens_on_the_inside_is_lane_2_and_the_lane_that_run
 
 
 def test_an_overtake_on_a_2_plus_1_road_passes_in_the_passing_lane(tmp_path):
-    from pytest_roadlogic.pipeline import load_scenario, run_scenario
-
-    (tmp_path / "maps").mkdir()
-    two_plus_one_map(tmp_path / "maps" / "two_plus_one.xodr")
-    text = (ROOT / "scenarios" / "overtake.osc").read_text()
-    scenario = load_scenario(write(tmp_path / "overtake.osc", text), road_map=tmp_path / "maps" / "two_plus_one.xodr")
-    outcome = run_scenario(scenario, seed=1)
-    assert outcome.verdict.accepted, outcome.verdict.explain()
+    outcome = overtake_on(tmp_path, two_plus_one_map, "two_plus_one.xodr")
     trace, road = outcome.simulation.trace, outcome.simulation.road
     passing = road.center_y(0)
     for name, columns in trace.actors.items():
