@@ -22,7 +22,7 @@ from collections.abc import Iterator
 import numpy as np
 
 from .cubic_records import summed
-from .directions import against
+from .directions import against, left_hand
 from .opendrive_in import LaneSection, MapRoad, RoadMap
 from .reference_line import JoinedLine
 from .route import driving_lanes, inner_edge, through_lanes
@@ -39,12 +39,13 @@ MAX_STEPS = 50_000
 
 def way(road_map: RoadMap, road_id: str, contact: str) -> MapRoad | None:
     """The road ``road_id`` entered at its ``contact`` end, as a route drives it: along its
-    reference line from its start, against it from its end; None for a road the map lacks or
-    one of left-hand traffic."""
+    reference line from its start, against it from its end, on the lanes of that direction (of
+    left-hand traffic: ``directions.left_hand``); None for a road the map lacks."""
     road = road_map.roads.get(road_id)
-    if road is None or road.rule == "LHT":
+    if road is None:
         return None
-    return against(road) if contact == "end" else road
+    driven = against(road) if contact == "end" else road
+    return left_hand(driven) if road.rule == "LHT" else driven
 
 
 def _lane_centres(road: MapRoad, s: float) -> np.ndarray:

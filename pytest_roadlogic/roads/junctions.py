@@ -92,10 +92,10 @@ def _into(road_map: RoadMap, road_id: str, junction: str) -> MapRoad | None:
     """Road ``road_id`` as driven into ``junction``: along its reference line when the junction is
     its successor, against it when its predecessor; None when neither (or no such road)."""
     road = road_map.roads.get(road_id)
-    if road is None or road.rule == "LHT":
+    if road is None:
         return None
     if road.successor is not None and road.successor.type == "junction" and road.successor.id == junction:
-        return road
+        return way(road_map, road_id, "start")
     if road.predecessor is not None and road.predecessor.type == "junction" and road.predecessor.id == junction:
         return way(road_map, road_id, "end")
     return None

@@ -781,3 +781,17 @@ def test_an_overtake_on_a_2_plus_1_road_passes_in_the_passing_lane(tmp_path):
         assert (columns["x"][in_passing_lane] + road.route_shift > 150.0).all(), name
         assert (columns["x"][in_passing_lane] + road.route_shift < 450.0).all(), name
     assert (np.abs(trace.actors["v1"]["y"] - passing) < 1.0).any(), "v1 passes in the passing lane"
+
+
+def test_a_route_of_left_hand_traffic_goes_on_over_the_next_road_on_its_left_lanes(tmp_path):
+    """The stepped map's two roads with rule LHT: driven along +x on their left lanes, which
+    continue one another where the roads meet (the second's line 1.75 m to the right, its lanes
+    moved back by its lane offset), the route is both roads; its lane lies left of the first
+    road's line all along."""
+    text = stepped_map(tmp_path / "stepped.xodr").read_text().replace('junction="-1"', 'junction="-1" rule="LHT"')
+    route = pick_route(read_map(write(tmp_path / "lht_stepped.xodr", text)), 1)
+    assert route.length == pytest.approx(600.0) and route.road.left_hand
+    along = np.array([100.0, 299.0, 301.0, 500.0])
+    x, y, heading = route.pose(along, np.full_like(along, route.width - route.lane_width / 2))
+    assert x == pytest.approx(along, abs=0.01) and heading == pytest.approx([0.0] * 4)
+    assert y == pytest.approx([1.75] * 4)  # the left lane's centre, on both roads
