@@ -177,7 +177,7 @@ def _places_in_a_lane(constraint) -> bool:
 
 def _numbers_a_lane(constraint) -> bool:
     """Whether ``constraint`` places a vehicle in a lane by its number (``lane(1)``)."""
-    return isinstance(constraint, Bound) and constraint.term.quantity == LANE and constraint.term.reference is None
+    return _places_in_a_lane(constraint) and constraint.term.reference is None
 
 
 def conflict_message(conflicts: list[tuple], parameters: dict | None = None) -> str:

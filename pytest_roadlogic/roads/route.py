@@ -131,8 +131,9 @@ class Route:
         counts = [len(driving_lanes(section)[1]) for section in self.sections]
         if len(set(counts)) <= 1:
             return fallback
-        first: dict[int, int] = {counts.index(max(counts)): 0}
-        order = sorted(range(len(counts)), key=lambda i: abs(i - counts.index(max(counts))))
+        most = counts.index(max(counts))
+        first: dict[int, int] = {most: 0}
+        order = sorted(range(len(counts)), key=lambda i: abs(i - most))
         for i in order[1:]:
             known = i - 1 if i - 1 in first else i + 1
             shift = _continued(self.road, self.sections[min(i, known)], self.sections[max(i, known)])
@@ -153,6 +154,8 @@ class Route:
         route (where a section lacks the lanes left of it: as if they were there at no width)."""
         s = np.clip(np.asarray(s, dtype=float), 0.0, self.length)
         edge = self.inner_edge(s)
+        if lane == 0:  # nothing left of it (every route but one whose lanes open on the inside)
+            return edge
         sections, _ = self._numbering
         for section, number in zip(self.sections, sections):
             if lane <= number:
