@@ -24,7 +24,7 @@ from .junctions import (
     with_room,
 )
 from .opendrive_in import MapError, MapRoad, RoadMap
-from .route import ROUTE_MARGIN, Route, driving_lanes, holding_speed, through_lanes
+from .route import ROUTE_MARGIN, SLOW_CURVE, Route, driving_lanes, holding_speed, through_lanes
 
 # m/s a route's sharpest curve should let a car hold (90 kph): a longer route with a town's bend
 # (26 m, 26 kph) lost to a shorter one without
@@ -183,26 +183,29 @@ def fitting_turns(road_map: RoadMap, lanes: int, length: float, ask: TurnAsk) ->
     ]
     asked_for = [roomy(road_map, t) for t in asked_for]
     offered = [
-        t for t in asked_for if t.lanes >= lanes and t.length >= length and min(t.approach, t.leave) >= MIN_APPROACH
+        t
+        for t in asked_for
+        if t.lanes >= lanes and t.room >= length and min(t.clear_before, t.clear_after) >= MIN_APPROACH
     ]
     if asked_for and not offered:
         # the map has the turn, but not with the lanes or the room the scenario needs: say which
         with_lanes = [t for t in asked_for if t.lanes >= lanes]
-        long_enough = [t for t in with_lanes if t.length >= length]
-        approach = max(min(t.approach, t.leave) for t in (long_enough or with_lanes or asked_for))
+        long_enough = [t for t in with_lanes if t.room >= length]
+        approach = max(min(t.clear_before, t.clear_after) for t in (long_enough or with_lanes or asked_for))
         count = len(asked_for)
         if not with_lanes:
             most = max(t.lanes for t in asked_for)
             short = f"none has {lanes} driving lanes in and out (at most {most})"
         elif not long_enough:
-            short = f"{len(with_lanes)} have {lanes} driving lane{'' if lanes == 1 else 's'} in and out, none {length:g} m of road in all (at most {max(t.length for t in with_lanes):.0f} m)"
+            short = f"{len(with_lanes)} have {lanes} driving lane{'' if lanes == 1 else 's'} in and out, none {length:g} m of road in all (at most {max(t.room for t in with_lanes):.0f} m)"
         else:
             short = f"{len(long_enough)} have the lanes and {length:g} m of road in all, none {MIN_APPROACH:g} m of road both in and out of the junction (at most {approach:.0f} m)"
         raise NoFittingTurn(
             road_map.path,
             f"of the map's {count} turn{'' if count == 1 else 's'} of the kind {ask.path} asks "
             f"({', '.join(t.describe() for t in asked_for[:6])}{', ...' if count > 6 else ''}), {short}; "
-            f"a car approaches and leaves the junction on the roads in and out, and stays {ROUTE_MARGIN:g} m from a route's ends",
+            f"a car approaches and leaves the junction on the roads in and out, and stays {ROUTE_MARGIN:g} m from a route's ends "
+            f"and from a corner before or after the junction (a bend sharper than a {1 / SLOW_CURVE:g} m radius)",
             "ask for less (the lanes it names, path_length), or give a map whose junction has longer roads",
             asked_by=ask.path,
         )
@@ -227,7 +230,7 @@ def roomy(road_map: RoadMap, turn: Turn) -> Turn:
     (``MIN_APPROACH`` each side) and a scenario room to drive (``MIN_ROUTE_LENGTH`` in all); else
     with the roads straight on before and after it (``junctions.with_room``) up to ``ROOM`` each
     side: two cars approaching one after the other need more than one car's room."""
-    if min(turn.approach, turn.leave) >= MIN_APPROACH and turn.length >= MIN_ROUTE_LENGTH:
+    if min(turn.clear_before, turn.clear_after) >= MIN_APPROACH and turn.room >= MIN_ROUTE_LENGTH:
         return turn
     return with_room(road_map, turn, ROOM, MIN_ROUTE_LENGTH)
 
@@ -244,6 +247,7 @@ def turn_as_route(road_map: RoadMap, chosen: Turn, crossers: frozenset[str] = fr
         _lane_width(chosen.into),
         road_map.data,
         junction_span=junction_span(chosen),
+        within=chosen.within,
         turn=f"{chosen.describe()} at junction {chosen.junction}",
         crossers=crossers,
         junction_roads=junction_roads(road_map, chosen.junction),

@@ -18,11 +18,12 @@ from __future__ import annotations
 import dataclasses
 import math
 from dataclasses import dataclass
+from functools import cached_property
 
 from .chains import chained, continues, heading_change, next_ways, way
 from .directions import against
 from .opendrive_in import MapRoad, RoadMap
-from .route import through_lanes
+from .route import SLOW_CURVE, through_lanes
 
 STRAIGHT = math.radians(30.0)  # a turn of less is straight on
 UTURN = math.radians(150.0)  # a turn of this or more is a U-turn
@@ -64,6 +65,29 @@ class Turn:
         """Metres of its route past the junction."""
         return sum(road.length for road in (self.out_of, *self.after))
 
+    @cached_property
+    def clear_before(self) -> float:
+        """Metres of its route before the junction that bend nowhere more sharply than
+        ``SLOW_CURVE``: back to the last such bend (a town's corner), else all of ``approach``."""
+        return _clear(tuple(against(road) for road in reversed((*self.before, self.into))))
+
+    @cached_property
+    def clear_after(self) -> float:
+        """Metres of its route past the junction up to the first bend sharper than ``SLOW_CURVE``,
+        else all of ``leave``."""
+        return _clear((self.out_of, *self.after))
+
+    @property
+    def room(self) -> float:
+        """Metres of its route around the junction, between the corners before and after it: where
+        a scenario's cars drive (``Route.within``)."""
+        return self.clear_before + self.inside.length + self.clear_after
+
+    @property
+    def within(self) -> tuple[float, float]:
+        """Where ``room`` lies along its route (``turn_route``): first and last metre."""
+        return (self.approach - self.clear_before, self.approach + self.inside.length + self.clear_after)
+
     @property
     def lanes(self) -> int:
         """The driving lanes it has all along on the road in and the road out, the fewer."""
@@ -77,6 +101,19 @@ class Turn:
 
     def describe(self) -> str:
         return f"{self.direction} from road {self.into.id} into road {self.out_of.id}"
+
+
+def _clear(roads: tuple[MapRoad, ...]) -> float:
+    """Metres along ``roads``, driven one after another, up to the first point whose reference line
+    bends more sharply than ``SLOW_CURVE``; all their metres where none does."""
+    metres = 0.0
+    for road in roads:
+        s, _, _, _, curvature = road.reference_line.sampled()
+        sharp = s[abs(curvature) > SLOW_CURVE]
+        if sharp.size:
+            return metres + float(sharp.min())
+        metres += road.length
+    return metres
 
 
 def direction(angle: float) -> str:
@@ -170,17 +207,22 @@ MAX_ROOM_STEPS = 4  # roads (or junctions crossed straight on) added before or a
 def with_room(road_map: RoadMap, turn: Turn, side: float, length: float) -> Turn:
     """``turn`` with the roads straight on before its road in and after its road out
     (``chains.next_ways``: the next road, or through a junction straight on) added while the route
-    has less than ``side`` metres before or past the junction, then, one side after the other,
-    while it has less than ``length`` metres in all. Each road added has the turn's lanes all along
-    (a connecting road: one) and continues the last; the first such in the map's order, at most
+    has less than ``side`` metres of ``Turn.room`` before or past the junction, then, one side after
+    the other, while it has less than ``length`` metres of room in all (a corner on the road in or
+    out ends the room on its side: nothing is added beyond it). Each road added has the turn's lanes all along
+    (a connecting road: one), continues the last and bends nowhere more sharply than ``SLOW_CURVE``
+    (a town's corner is a turn of its own); the first such in the map's order, at most
     ``MAX_ROOM_STEPS`` each way. Why: in a town the roads between two junctions are short (CARLA's
-    Town04: 44 m), and a car approaching a turn comes from the road before, as a driver does."""
+    Town04: 44 m), and a car approaching a turn comes from the road before, as a driver does; a
+    corner on the way would be a second turn and a slowing down the scenario never asked for."""
     lanes = turn.lanes
     taken = {road.id for road in turn.roads}
 
     def step_from(road: MapRoad) -> tuple[MapRoad, ...] | None:
         for step in next_ways(road_map, road):
             if any(r.id in taken for r in step) or through_lanes(step[-1])[0] < lanes:
+                continue
+            if any(r.reference_line.sharpest() > SLOW_CURVE for r in step):
                 continue
             if all(continues(a, b) for a, b in zip((road, *step), step)):
                 taken.update(r.id for r in step)
@@ -189,8 +231,15 @@ def with_room(road_map: RoadMap, turn: Turn, side: float, length: float) -> Turn
 
     before, after = list(turn.before), list(turn.after)
 
+    def clear_before() -> float:
+        return _clear(tuple(against(road) for road in reversed((*before, turn.into))))
+
+    def clear_after() -> float:
+        return _clear((turn.out_of, *after))
+
     def grow_before() -> bool:
-        if len(before) >= 2 * MAX_ROOM_STEPS:
+        # a corner before the junction ends the room there: the roads before it would not be driven
+        if len(before) >= 2 * MAX_ROOM_STEPS or clear_before() < metres(before) + turn.into.length:
             return False
         step = step_from(against((before or [turn.into])[0]))
         if step is None:
@@ -199,7 +248,7 @@ def with_room(road_map: RoadMap, turn: Turn, side: float, length: float) -> Turn
         return True
 
     def grow_after() -> bool:
-        if len(after) >= 2 * MAX_ROOM_STEPS:
+        if len(after) >= 2 * MAX_ROOM_STEPS or clear_after() < turn.out_of.length + metres(after):
             return False
         step = step_from((after or [turn.out_of])[-1])
         if step is None:
@@ -210,12 +259,12 @@ def with_room(road_map: RoadMap, turn: Turn, side: float, length: float) -> Turn
     def metres(roads) -> float:
         return sum(road.length for road in roads)
 
-    while metres(before) + turn.into.length < side and grow_before():
+    while clear_before() < side and grow_before():
         pass
-    while turn.out_of.length + metres(after) < side and grow_after():
+    while clear_after() < side and grow_after():
         pass
     growing = [grow_before, grow_after]
-    while growing and metres(before) + metres(turn.roads) + metres(after) < length:
+    while growing and clear_before() + turn.inside.length + clear_after() < length:
         if not growing[0]():
             growing.pop(0)
         else:

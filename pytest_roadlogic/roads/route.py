@@ -67,6 +67,9 @@ class Route:
     # metre along it, the turn as a message says it, and the vehicles that drive through it
     # (``along(path)`` on their drive): each starts short of it and ends past it
     junction_span: tuple[float, float] | None = None
+    # the stretch of it a scenario's cars drive on (first and last metre along it): around a
+    # junction, between the corners before and after it (``junctions.Turn.room``); None: all of it
+    within: tuple[float, float] | None = None
     turn: str = ""
     crossers: frozenset[str] = frozenset()
     # the roads of that junction and those meeting it, as the map has them (the plot draws them)

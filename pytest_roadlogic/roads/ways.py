@@ -5,8 +5,8 @@ Each path asks for a turn of some kind (direction, roads at the junction) and ma
 the scenario as its junction, its road in and its road out: two paths that name one field take
 the same junction or road. Which turns satisfy that is a constraint problem over the map's graph;
 every answer is a way the scenario may run, and the choice among them is a logical parameter of
-the scenario, one per path (``Ways.choices``): sampled, shrunk to the first in the map's order,
-written into the case file by its label ("left from road 2 into road 1 at junction 100") and
+the scenario, one per path (``Ways.choices``): sampled, shrunk to the first (the roomiest ways
+first: ``choose_ways``), written into the case file by its label ("left from road 2 into road 1 at junction 100") and
 replayed.
 """
 
@@ -19,7 +19,7 @@ import clingo
 
 from ..asp_dir import ASP_DIR
 from .asks import RouteRelation, TurnAsk
-from .choice import MIN_ROUTE_LENGTH, fitting_turns, turn_as_route
+from .choice import MIN_ROUTE_LENGTH, ROOM, fitting_turns, turn_as_route
 from .junctions import Turn, describe_junctions, turns
 from .opendrive_in import MapError, RoadMap
 from .route import Route, through_lanes
@@ -42,7 +42,8 @@ def _key(turn: Turn) -> tuple[str, str, str, str]:
 class Ways:
     """The ways ``paths`` may take together in ``road_map``: ``combinations`` holds, per answer, the
     index in ``turns`` (the map's turns that fit some path, in the map's order) of each path's
-    turn, in the map's order; the first is the one a scenario runs when nothing is sampled.
+    turn, the roomiest first (``choose_ways``); the first is the one a scenario runs when nothing
+    is sampled.
     ``crossers``: per path, the vehicles that drive it."""
 
     road_map: RoadMap
@@ -55,16 +56,17 @@ class Ways:
     built: dict = field(default_factory=dict, compare=False, hash=False, repr=False)
 
     def choices(self, path: str) -> tuple[str, ...]:
-        """The ways ``path`` takes in some answer, in the map's order."""
+        """The ways ``path`` takes in some answer, in the answers' order."""
         return self.options(path, {})
 
     def options(self, path: str, drawn: dict[str, str]) -> tuple[str, ...]:
-        """The ways ``path`` may take together with the ways ``drawn`` for other paths."""
+        """The ways ``path`` may take together with the ways ``drawn`` for other paths, in the
+        order of the first answer each is in (the roomiest first)."""
         k = self.paths.index(path)
-        return tuple(self.labels[t] for t in sorted({c[k] for c in self._agreeing(drawn)}))
+        return tuple(self.labels[t] for t in dict.fromkeys(c[k] for c in self._agreeing(drawn)))
 
     def chosen(self, given: dict[str, str]) -> tuple[int, ...]:
-        """The first answer (in the map's order) whose ways are those ``given`` (path -> label; a
+        """The first answer (the roomiest) whose ways are those ``given`` (path -> label; a
         path not given: any); ``WaysError`` when the ways given do not go together."""
         for combination in self._agreeing(given):
             return combination
@@ -118,7 +120,14 @@ def choose_ways(
     lane count). ``MapError`` when an ask has no turn of its kind, or
     no turns of their kinds go together."""
     length = length or MIN_ROUTE_LENGTH  # room to drive, as pick_route gives a single route
-    fitting = [{_key(t) for t in fitting_turns(road_map, lanes, length, ask)} for ask in asks]
+    fitting_by_ask = [fitting_turns(road_map, lanes, length, ask) for ask in asks]
+    fitting = [{_key(t) for t in turns_of_ask} for turns_of_ask in fitting_by_ask]
+    # room enough is ROOM each side of the junction (what ``choice.roomy`` gives a short turn)
+    room = {
+        _key(t): min(t.clear_before, ROOM) + min(t.clear_after, ROOM)
+        for turns_of_ask in fitting_by_ask
+        for t in turns_of_ask
+    }
     offered = [t for t in turns(road_map) if any(_key(t) in keys for keys in fitting)]
     facts = [f"path({k})." for k in range(len(asks))]
     # the map's junctions and roads by number: their ids are the map's text, never the program's
@@ -163,6 +172,10 @@ def choose_ways(
             "name in roads_follow_in_junction only the junction and roads two turns must share, or give a map with such a junction",
         )
     answers = [a for a in answers if [lanes_of[t] for t in a] == [lanes_of[t] for t in answers[0]]]
+    # the roomiest first: the least room any of its routes has around its junction, the most (a
+    # scenario's cars need room to approach and leave, and a town's short roads have little); ways
+    # with room enough, and equal ones, in the map's order
+    answers.sort(key=lambda answer: -min(room[_key(offered[t])] for t in answer))
     return Ways(road_map, partial.paths, partial.turns, _labels(offered), tuple(answers), crossers, partial.built)
 
 

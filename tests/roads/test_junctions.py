@@ -264,3 +264,58 @@ def test_a_turn_whose_road_in_is_short_is_approached_from_the_road_before_it_str
     assert (float(x[0]), float(y[0])) == pytest.approx((float(x0[0]), float(y0[0])), abs=0.05)
     assert with_room(town, turn, MIN_APPROACH, MIN_ROUTE_LENGTH) == turn  # 200 m in and out: room enough
     assert roomy(town, turn) == turn
+
+
+def _crossing_with_a_corner(folder: Path, straight: float) -> Path:
+    """The recipe's four-way crossing, its west arm (road 1) coming round a town's corner: 100 m,
+    a 90-degree bend of 20 m radius, then ``straight`` metres into the junction."""
+    from scenariogeneration import xodr
+
+    module = recipe(MAPS)
+    arms = {number: module._arm(number) for number in (2, 3, 4)}
+    bent = xodr.create_road(
+        [xodr.Line(100.0), xodr.Arc(1 / 20.0, angle=math.pi / 2), xodr.Line(straight)],
+        id=1,
+        left_lanes=1,
+        right_lanes=1,
+        lane_width=module.LANE_WIDTH,
+    )
+    bent.add_elevation(0.0, 0.0, 0.0, 0.0, 0.0)
+    bent.add_type(xodr.RoadType.town, 0, speed=50, speed_unit="km/h")
+    arms[1] = bent
+    angles = {1: 0.0, 2: math.pi / 2, 3: math.pi, 4: 3 * math.pi / 2}
+    creator = module._creator(100, "crossing", {n: (road, angles[n], "successor") for n, road in arms.items()})
+    opendrive = module._opendrive("corner", [arms[n] for n in sorted(arms)], [creator])
+    path = folder / "corner.xodr"
+    opendrive.write_xml(str(path))
+    return path
+
+
+def test_a_turns_room_ends_at_a_corner_before_it_and_no_car_is_planned_round_that_corner(tmp_path):
+    """A town's corner on the road in is a turn of its own: the route's room (``Turn.room``,
+    ``Route.within``) ends there, the planner keeps every car ROUTE_MARGIN short of it, and a
+    scenario's cars never slow down for a bend nobody asked for."""
+    from pytest_roadlogic.planning.encodings.continuous.settings import RouteFacts
+    from pytest_roadlogic.roads.choice import MIN_APPROACH, fitting_turns, roomy, turn_as_route
+    from pytest_roadlogic.roads.route import ROUTE_MARGIN
+
+    road_map = read_map(_crossing_with_a_corner(tmp_path, 80.0))
+    turn = roomy(road_map, next(t for t in turns(road_map) if t.describe() == "straight from road 1 into road 3"))
+    arc = math.pi / 2 * 20.0
+    assert turn.approach == pytest.approx(100.0 + arc + 80.0, abs=0.5)
+    assert turn.clear_before == pytest.approx(80.0, abs=1.0)  # back to the bend's end
+    assert turn.clear_after == pytest.approx(turn.leave)  # road 3 is straight
+    route = turn_as_route(road_map, turn)
+    first, last = route.within
+    assert first == pytest.approx(turn.approach - turn.clear_before) and last == pytest.approx(route.length)
+    facts = RouteFacts.of(route)
+    assert facts.route_span == pytest.approx((first + ROUTE_MARGIN, last - ROUTE_MARGIN))
+    # the corner is a slow stretch of the route, and every car stays past it
+    assert any(end <= facts.route_span[0] for _, end, _ in route.slow_stretches[:1])
+    # with the corner 40 m before the junction, road 1 leaves too little room to approach on
+    short = read_map(_crossing_with_a_corner(tmp_path, 40.0))
+    bent = roomy(short, next(t for t in turns(short) if t.describe() == "straight from road 1 into road 3"))
+    assert bent.clear_before < MIN_APPROACH
+    offered = [t.describe() for t in fitting_turns(short, 1, 0.0, TurnAsk("straight", 4))]
+    assert "straight from road 1 into road 3" not in offered and "straight from road 3 into road 1" not in offered
+    assert "straight from road 2 into road 4" in offered

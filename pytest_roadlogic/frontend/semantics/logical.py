@@ -116,7 +116,8 @@ def way_parameters(ways, asked_at: dict[str, SourceLocation]) -> tuple[LogicalPa
     """A parameter per path of ``ways`` (``roads.ways.Ways``; None: the scenario's paths do not
     turn) that may take more than one way through the map, named after the path and placed at
     the ``roads_follow_in_junction`` that ``asked_at`` says asks for its turn: its choices are the
-    ways' labels in the map's order, the first what a run takes when nothing is sampled."""
+    ways' labels, the roomiest first (``roads.ways.choose_ways``), the first what a run takes
+    when nothing is sampled."""
     if ways is None:
         return ()
     return tuple(

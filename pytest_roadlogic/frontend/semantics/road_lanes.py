@@ -220,7 +220,7 @@ class RoadLanes:
         """The routes of a scenario whose paths turn at junctions of ``road_map``
         (``roads_follow_in_junction``, one per path), in ``self.route``/``self.routes``: of the ways
         the paths may take together (``roads.ways.choose_ways``, kept in ``self.ways``: a logical
-        parameter per path that may take several), the first in the map's order. Each route is
+        parameter per path that may take several), the first (the roomiest). Each route is
         driven by the vehicles whose drive goes ``along`` its path; with one path, by every vehicle
         that goes ``along`` a path; with several, the first also by those that name none.
         ``MapError`` from the choice; errors where a vehicle drives along two paths, along a path
