@@ -13,8 +13,13 @@ import numpy as np
 
 from ..dimensions import CAR_LENGTH, CAR_WIDTH
 
-__all__ = ["CAR_LENGTH", "CAR_WIDTH", "WHEELBASE", "boxes_overlap", "corners"]
+__all__ = ["CAR_LENGTH", "CAR_WIDTH", "MAX_STEER", "WHEELBASE", "boxes_overlap", "corners"]
 WHEELBASE = 2.7  # m, for the kinematic checks of motion planners
+# rad: a car's front wheels at full lock (40 degrees: a 3.2 m radius at the rear axle at this
+# wheelbase, a turning circle of about 10 m, a compact car's). A town's corner drawn for such a
+# car (CARLA's Town04: 4.5 m at the lane's centre) needs 0.56 rad; a car steering at most that
+# could not correct the least drift there
+MAX_STEER = 0.7
 
 
 def boxes_overlap(a, b, margin: float = 0.0) -> bool:

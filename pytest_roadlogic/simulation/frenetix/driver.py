@@ -15,7 +15,7 @@ import numpy as np
 
 from ...roads.road import Road
 from ..driver import DriverBase, Trajectory, VehicleState
-from ..geometry import CAR_LENGTH, CAR_WIDTH, WHEELBASE
+from ..geometry import CAR_LENGTH, CAR_WIDTH, MAX_STEER, WHEELBASE
 from ..reference import Reference
 
 
@@ -168,16 +168,16 @@ class FrenetixDriver(DriverBase):
         self.frame = _frame(road)
         handler = frenetix.TrajectoryHandler(dt=dt)
         handler.add_feasability_function(
-            # the steering angle a car has (0.6 rad: a 4 m radius at this wheelbase), as the curvature
-            # check's; 0.4 allows no bend under 6.4 m, and a town corner (6.5 m at the lane's centre)
-            # left no trajectory to a car a few centimetres inside it
-            ff.CheckYawRateConstraint(deltaMax=0.6, wheelbase=WHEELBASE, wholeTrajectory=False)
+            # the steering angle a car has (MAX_STEER), as the curvature check's; frenetix's 0.4
+            # allows no bend under 6.4 m, and a town corner (6.5 m at the lane's centre) left no
+            # trajectory to a car a few centimetres inside it
+            ff.CheckYawRateConstraint(deltaMax=MAX_STEER, wheelbase=WHEELBASE, wholeTrajectory=False)
         )
         handler.add_feasability_function(
             ff.CheckAccelerationConstraint(switchingVelocity=7.3, maxAcceleration=8.0, wholeTrajectory=False)
         )
         handler.add_feasability_function(
-            ff.CheckCurvatureConstraint(deltaMax=0.6, wheelbase=WHEELBASE, wholeTrajectory=False)
+            ff.CheckCurvatureConstraint(deltaMax=MAX_STEER, wheelbase=WHEELBASE, wholeTrajectory=False)
         )
         handler.add_cost_function(cf.CalculateLateralJerkCost("lateral_jerk", 0.02))
         handler.add_cost_function(cf.CalculateLongitudinalJerkCost("longitudinal_jerk", 0.02))

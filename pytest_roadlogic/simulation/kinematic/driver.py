@@ -18,7 +18,7 @@ import numpy as np
 
 from ...roads.road import Road
 from ..driver import DriverBase, Trajectory, VehicleState
-from ..geometry import WHEELBASE
+from ..geometry import MAX_STEER, WHEELBASE
 from ..reference import Reference
 
 HORIZON = 3.0  # s of prediction
@@ -27,7 +27,6 @@ SPEED_GAIN = 1.5  # 1/s
 MAX_ACCELERATION = 4.0  # m/s^2
 MAX_DECELERATION = 9.0  # m/s^2
 HEADING_GAIN = 2.5  # 1/s
-MAX_STEER = 0.5  # rad
 LOOK_AHEAD_TIME = 1.0  # s: the pursued point is this far ahead at the current speed, at least
 LOOK_AHEAD_MIN = 4.0  # m
 
