@@ -52,6 +52,7 @@ def problem_for(scenario: CheckedScenario, values, settings, seed: int, self_dri
     dut = self_driven(specification.actors) if self_driven is not None else None
     if dut is not None:
         settings = settings.with_self_driven(dut)
+        specification = specification.driving_itself(dut)
     guide = _guide(scenario, values) if values else (lambda planner_settings: specification)
     if values:
         settings, seed = dataclasses.replace(settings, random_start=True), sample_seed(seed, values)

@@ -355,6 +355,16 @@ class SymbolicAutomaton:
     def outgoing(self, location_id: int) -> list[Transition]:
         return [t for t in self.transitions if t.source == location_id]
 
+    def driving_itself(self, vehicle: str) -> SymbolicAutomaton:
+        """This automaton with ``vehicle`` among no location's ``drivers``: a vehicle that drives
+        itself (the vehicle under test) is not asked forward progress; it may stop where its own
+        driving asks (giving way at a junction, behind a car that stopped), as its plan lets it.
+        Every guard and invariant still judges where it is and how fast."""
+        import dataclasses
+
+        locations = [dataclasses.replace(q, drivers=q.drivers - {vehicle}) for q in self.locations]
+        return dataclasses.replace(self, locations=locations)
+
     def depth(self) -> dict[int, int]:
         """Fewest transitions from the initial location; used to say how far a run got."""
         depth = {self.initial: 0}

@@ -172,3 +172,17 @@ def test_a_run_stuck_because_a_vehicle_stood_still_says_so_not_that_a_guard_that
     assert "never held" not in verdict.explain()
     # both moving on, the same guard and duration: accepted
     assert monitor(automaton, _two_cars([5.0 * k for k in range(20)])).accepted
+
+
+def test_a_vehicle_under_test_that_stops_for_a_while_in_its_drive_is_not_stuck_the_others_still_are():
+    """A vehicle that drives itself may stop where its own driving asks (giving way at a junction):
+    its drive asks it no forward progress; the scenario's other vehicles' drives still do."""
+    from pytest_roadlogic.automaton import build_automaton
+    from pytest_roadlogic.frontend import check_text
+
+    automaton = build_automaton(check_text(STANDING).scenarios[0])
+    waits = _two_cars([5.0 * k if k < 4 else 15.0 + 5.0 * max(k - 8, 0) for k in range(20)])  # stands 2 s
+    # the scenario begins with the trace: the stop lies inside its drive
+    assert "v1 stood still from t = 1.5 s" in monitor(automaton, waits, begins_by=0.0).explain()
+    assert monitor(automaton.driving_itself("v1"), waits, begins_by=0.0).accepted
+    assert not monitor(automaton.driving_itself("v2"), waits, begins_by=0.0).accepted
