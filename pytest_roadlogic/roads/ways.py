@@ -52,6 +52,10 @@ class Ways:
     labels: tuple[str, ...]  # one per turn, as reports, case files and --values name it
     combinations: tuple[tuple[int, ...], ...]
     crossers: tuple[frozenset[str], ...]
+    # whether every two paths' ways meet (cross, join or part; paths in sequence apart) in every
+    # answer: False where the map has no such ways of the kinds asked, and the paths take ways
+    # that never meet
+    meet: bool = True
     # (path index, turn index) -> its route, built when first asked for (``route_of``)
     built: dict = field(default_factory=dict, compare=False, hash=False, repr=False)
 
@@ -157,12 +161,17 @@ def choose_ways(
     facts += [f"meets({t},{u})." for t, u in _meeting(partial, asks, fitting)]
     # ways of as many lanes first (a scenario plans one number of lanes: other ways are refused
     # naming their lanes), then ways that meet
-    answers = (
-        _solve(facts, together=True, same_lanes=True)
-        or _solve(facts, together=False, same_lanes=True)[:1]
-        or _solve(facts, together=True, same_lanes=False)[:1]
-        or _solve(facts, together=False, same_lanes=False)[:1]
-    )
+    answers, together = [], True
+    for together, same_lanes, every in (
+        (True, True, True),
+        (False, True, False),
+        (True, False, False),
+        (False, False, False),
+    ):
+        answers = _solve(facts, together=together, same_lanes=same_lanes)
+        if answers:
+            answers = answers if every else answers[:1]
+            break
     if not answers:
         raise MapError(
             road_map.path,
@@ -176,7 +185,9 @@ def choose_ways(
     # scenario's cars need room to approach and leave, and a town's short roads have little); ways
     # with room enough, and equal ones, in the map's order
     answers.sort(key=lambda answer: -min(room[_key(offered[t])] for t in answer))
-    return Ways(road_map, partial.paths, partial.turns, _labels(offered), tuple(answers), crossers, partial.built)
+    return Ways(
+        road_map, partial.paths, partial.turns, _labels(offered), tuple(answers), crossers, together, partial.built
+    )
 
 
 def _meeting(ways: Ways, asks: tuple[TurnAsk, ...], fitting: list[set]) -> list[tuple[int, int]]:

@@ -288,6 +288,23 @@ def test_a_path_no_vehicle_drives_along_is_a_warning_at_its_turn(tmp_path):
     assert warning.location.line == 8 and "no vehicle drives along npc_path" in warning.message
 
 
+def test_two_paths_whose_ways_cannot_meet_take_two_different_ways_and_check_says_they_never_meet(tmp_path):
+    """Straight over and straight back: no answer has the two ways meet, so the paths take ways
+    that do not (never one way twice: that is one path), and check says so at the second path."""
+    from pytest_roadlogic.frontend import check_file
+
+    _copy_maps(tmp_path)
+    text = SEVERAL.format(extra="", npc_path="npc_path").replace("south, direction: left", "south, direction: straight")
+    checked = check_file(write(tmp_path / "two.osc", text))
+    (scenario,) = checked.scenarios
+    assert not scenario.ways.meet and all(len(set(c)) == 2 for c in scenario.ways.combinations)
+    (warning,) = [d for d in checked.diagnostics if d.severity == "warning"]
+    assert warning.location.line == 8 and "whose cars never meet" in warning.message
+    # the two ways that do meet (the left turn across the way straight on) are said nothing of
+    met = check_file(write(tmp_path / "met.osc", SEVERAL.format(extra="", npc_path="npc_path")))
+    assert met.scenarios[0].ways.meet and not [d for d in met.diagnostics if d.severity == "warning"]
+
+
 def test_routes_that_meet_are_laid_onto_each_other_where_the_meeting_begins_or_along_the_lane_they_share():
     from pytest_roadlogic.roads.conflicts import alignments
 

@@ -256,6 +256,14 @@ class RoadLanes:
                     "add along(path) to the drive of each vehicle that takes the turn",
                 )
             return
+        if not self.ways.meet:
+            # two paths through a junction are there to meet; said where the map has no such ways
+            self.warning(
+                self.turn_asks[paths[-1]][1],
+                f"no ways of the kinds {', '.join(paths)} ask cross, join or part anywhere in the map with room "
+                f"for the scenario: they take {' and '.join(route.turn for route in routes)}, whose cars never meet",
+                "give a map with a junction where such ways meet, or ask for other turns",
+            )
         lanes = {route.lanes for route in routes}
         if len(lanes) > 1:
             self.error(
