@@ -24,7 +24,7 @@ from .junctions import (
     with_room,
 )
 from .opendrive_in import MapError, MapRoad, RoadMap
-from .route import ROUTE_MARGIN, SLOW_CURVE, Route, driving_lanes, holding_speed, through_lanes
+from .route import ROUTE_MARGIN, SLOW_CURVE, Route, driving_lanes, holding_speed, lane_opens_between, through_lanes
 
 # m/s a route's sharpest curve should let a car hold (90 kph): a longer route with a town's bend
 # (26 m, 26 kph) lost to a shorter one without
@@ -119,9 +119,16 @@ def pick_route(
     length = length or MIN_ROUTE_LENGTH
     ways = [way for road in road_map.roads.values() if road.junction in ("", "-1") for way in ways_of(road)]
 
+    split: list[MapRoad] = []  # routes that would fit but for a lane opening between two others
+
     def fits(way: MapRoad) -> bool:
         _, most = through_lanes(way)
-        return most >= lanes and way.length >= length and (curve is None or curve_stretch(way, curve) is not None)
+        if not (most >= lanes and way.length >= length and (curve is None or curve_stretch(way, curve) is not None)):
+            return False
+        if lane_opens_between(way):
+            split.append(way)
+            return False
+        return True
 
     # the lanes of one direction first, on one road or on roads that continue one another; a road
     # of too few, with its oncoming lanes joined, only when no route has enough (an overtake on a
@@ -142,6 +149,12 @@ def pick_route(
             low, high, side = curve
             radius = f"{low or 0:g}..{high:g} m" if high else f"at least {low:g} m"
             need += f" and a curve{' to the ' + side if side else ''} of radius {radius}"
+        if split:
+            lines += (
+                f"; {len(split)} route{'s' if len(split) > 1 else ''} with the lanes ({split[0].label}, ...) "
+                "not supported: a lane there opens between two that run on (a turn pocket between a road's "
+                "lane and its oncoming one), and a lane keeps no one number along it"
+            )
         raise MapError(
             road_map.path,
             f"no road of the map has {need}: {lines}",

@@ -328,6 +328,14 @@ def _continued(road: MapRoad, before: LaneSection, after: LaneSection) -> int | 
     """Where two consecutive lane sections meet: the index among ``after``'s driving lanes of the
     lane that continues ``before``'s first one that is there (wider than ``NARROW``), less that
     lane's index in ``before``; None when no lane continues one of ``before``'s."""
+    shifts = _shifts(road, before, after)
+    return shifts[0] if shifts else None
+
+
+def _shifts(road: MapRoad, before: LaneSection, after: LaneSection) -> list[int]:
+    """For each of ``before``'s driving lanes that is there where the two sections meet (wider
+    than ``NARROW``) and that a lane of ``after`` continues (centres within half a lane), the
+    index of that lane in ``after`` less its own, in ``before``'s order."""
 
     def centres(section: LaneSection, at: float) -> list[tuple[float, float]]:
         inner, driving = driving_lanes(section)
@@ -342,13 +350,23 @@ def _continued(road: MapRoad, before: LaneSection, after: LaneSection) -> int | 
 
     at = after.s
     old, new = centres(before, at), centres(after, at)
+    shifts = []
     for k, (centre, width) in enumerate(old):
         if width < NARROW:
             continue
         for j, (other, other_width) in enumerate(new):
             if other_width >= NARROW and abs(other - centre) < min(width, other_width) / 2:
-                return j - k
-    return None
+                shifts.append(j - k)
+                break
+    return shifts
+
+
+def lane_opens_between(road: MapRoad) -> bool:
+    """Whether a driving lane begins or ends between two lanes that run on where two of ``road``'s
+    lane sections meet (a turn pocket opening between a road's lane and its oncoming one): the
+    lanes that run on then move apart by a lane, and no one numbering of the route's lanes holds
+    all along (``Route._numbering`` numbers each section's lanes side by side)."""
+    return any(len(set(_shifts(road, before, after))) > 1 for before, after in zip(road.sections, road.sections[1:]))
 
 
 def through_lanes(road: MapRoad) -> tuple[int, int]:

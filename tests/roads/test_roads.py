@@ -795,3 +795,40 @@ def test_a_route_of_left_hand_traffic_goes_on_over_the_next_road_on_its_left_lan
     x, y, heading = route.pose(along, np.full_like(along, route.width - route.lane_width / 2))
     assert x == pytest.approx(along, abs=0.01) and heading == pytest.approx([0.0] * 4)
     assert y == pytest.approx([1.75] * 4)  # the left lane's centre, on both roads
+
+
+def pocket_map(path: Path) -> Path:
+    """A straight 600 m road along +x of one 3.5 m lane each way; from 300 m on, a lane beside the
+    centre line opens on the right (0 to 3.5 m over 100 m: a turn pocket), between the lane that
+    runs on and the oncoming one."""
+    lane = "<lane id='{id}' type='driving'>{widths}</lane>"
+    full = "<width sOffset='0' a='3.5' b='0' c='0' d='0'/>"
+    opening = (
+        "<width sOffset='0' a='0' b='0' c='0.00105' d='-0.000007'/><width sOffset='100' a='3.5' b='0' c='0' d='0'/>"
+    )
+    left = lane.format(id=1, widths=full)
+    return one_road_map(
+        path,
+        600,
+        '<geometry s="0" x="0" y="0" hdg="0" length="600"><line/></geometry>',
+        f"<laneSection s='0'><left>{left}</left><right>{lane.format(id=-1, widths=full)}</right></laneSection>"
+        f"<laneSection s='300'><left>{left}</left>"
+        f"<right>{lane.format(id=-1, widths=opening)}{lane.format(id=-2, widths=full)}</right></laneSection>",
+    )
+
+
+def test_a_lane_that_opens_between_a_roads_lane_and_the_oncoming_one_is_refused_saying_so(tmp_path):
+    """Joined with its oncoming lane, the road's lanes are [oncoming, own] and then [oncoming,
+    pocket, own]: the lanes that run on move apart by a lane where the sections meet, and no one
+    numbering holds all along. Its own lanes alone number one way (the pocket opens at their left)."""
+    from pytest_roadlogic.roads.directions import with_oncoming
+    from pytest_roadlogic.roads.route import lane_opens_between
+
+    road_map = read_map(pocket_map(tmp_path / "pocket.xodr"))
+    road = road_map.roads["1"]
+    assert not lane_opens_between(road) and lane_opens_between(with_oncoming(road))
+    with pytest.raises(MapError) as refused:
+        pick_route(road_map, 3)
+    assert "a lane there opens between two that run on" in refused.value.message
+    # where the pocket is wide enough for a car, lane 0 (the leftmost of the two)
+    assert pick_route(road_map, 2).spans() == {0: pytest.approx((375.0, 597.0), abs=3.0)}
