@@ -319,3 +319,35 @@ def test_a_turns_room_ends_at_a_corner_before_it_and_no_car_is_planned_round_tha
     offered = [t.describe() for t in fitting_turns(short, 1, 0.0, TurnAsk("straight", 4))]
     assert "straight from road 1 into road 3" not in offered and "straight from road 3 into road 1" not in offered
     assert "straight from road 2 into road 4" in offered
+
+
+def test_on_a_crossing_of_left_hand_traffic_the_right_turn_crosses_the_oncoming_way_and_the_left_does_not(tmp_path):
+    """The recipe's crossing with every road of left-hand traffic: cars drive on the left, nothing
+    is mirrored. A left turn is the short turn there and never meets the oncoming car going
+    straight on (the scenario written for right-hand traffic is said to have ways that never
+    meet); the right turn crosses its way."""
+    from scenariogeneration import xodr
+
+    opendrive = recipe(MAPS).maps()["crossing.xodr"]
+    for road in opendrive.roads.values():
+        road.rule = xodr.TrafficRule.LHT
+    path = tmp_path / "crossing_lht.xodr"
+    opendrive.write_xml(str(path))
+    road_map = read_map(path)
+
+    def ways(direction: str):
+        asks = (
+            TurnAsk(direction, junction="j", in_road="approach", path="turn"),
+            TurnAsk("straight", junction="j", out_road="approach", path="oncoming"),
+        )
+        return choose_ways(road_map, 1, 0.0, asks, (frozenset({"ego"}), frozenset({"npc"})))
+
+    assert not ways("left").meet and ways("right").meet
+    # the left turn's route keeps to the left of its roads' reference lines: cars drive on the left
+    route = ways("left").routes()[0]
+    s = np.array([20.0, route.length - 20.0])
+    _, _, heading = route.reference_line.pose(s)
+    x, y, _ = route.pose(s, np.full(2, route.width / 2))
+    x0, y0, _ = route.reference_line.pose(s)
+    left_of_line = -np.sin(heading) * (x - x0) + np.cos(heading) * (y - y0)
+    assert (left_of_line > 1.0).all()
