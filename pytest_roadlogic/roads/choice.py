@@ -97,6 +97,10 @@ MIN_ROUTE_LENGTH = 200.0  # m of route a scenario that names no path_length is g
 # m of road a turn's road in and road out need each: the planner keeps every car ROUTE_MARGIN from
 # a route's ends, and a car driving through the junction approaches it and leaves it on them
 MIN_APPROACH = ROUTE_MARGIN + 20.0
+# m of a route along which the lanes a scenario needs are there side by side, at least: lanes
+# together for less are a row of parking bays drawn as a driving lane (esmini's parking_demo: 48 m),
+# not a road of that many lanes (a 2+1 road's passing stretch: 130-170 m)
+MIN_SIDE_BY_SIDE = 100.0
 # m before and past the junction a turn's route is given when its own roads give less than
 # MIN_APPROACH (``roomy``): a town's roads between two junctions
 ROOM = ROUTE_MARGIN + 120.0
@@ -128,7 +132,8 @@ def pick_route(
         if lane_opens_between(way):
             split.append(way)
             return False
-        return True
+        # the lanes are there together too briefly (parking bays drawn as a lane)
+        return _side_by_side(road_map, way, lanes) >= MIN_SIDE_BY_SIDE
 
     # the lanes of one direction first, on one road or on roads that continue one another; a road
     # of too few, with its oncoming lanes joined, only when no route has enough (an overtake on a
@@ -171,6 +176,23 @@ def pick_route(
     road = max(fitting, key=rank)
     stretch = curve_stretch(road, curve) if curve is not None else None
     return Route(road_map.path, road, through_lanes(road)[1], _lane_width(road), road_map.data, stretch)
+
+
+def _side_by_side(road_map: RoadMap, road: MapRoad, lanes: int) -> float:
+    """Metres of the longest stretch of ``road`` along which ``lanes`` of its driving lanes are
+    there side by side, a car's width wide (``Route.spans``): all of it where they run its whole
+    length."""
+    route = Route(road_map.path, road, through_lanes(road)[1], _lane_width(road))
+    spans = route.spans()
+    if not spans:
+        return road.length
+    s = np.arange(0.0, road.length + 1.0, 1.0)
+    present = np.full(len(s), route.lanes - len(spans))
+    for first, last in spans.values():
+        present += (s >= first) & (s <= last)
+    enough = np.concatenate([[0], (present >= lanes).astype(int), [0]])
+    edges = np.flatnonzero(np.diff(enough))
+    return max((float(s[end - 1] - s[begin]) for begin, end in zip(edges[::2], edges[1::2])), default=0.0)
 
 
 def _lane_width(road: MapRoad) -> float:

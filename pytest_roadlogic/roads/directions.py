@@ -13,9 +13,11 @@ from __future__ import annotations
 
 import dataclasses
 
+import numpy as np
+
 from .cubic_records import reversed_records, summed
 from .opendrive_in import LaneSection, MapLane, MapRoad
-from .route import DRIVING
+from .route import DRIVING, USABLE_WIDTH
 
 
 def _mirrored(lanes: tuple[MapLane, ...], length: float) -> tuple[MapLane, ...]:
@@ -70,14 +72,17 @@ def left_hand(road: MapRoad) -> MapRoad:
 
 
 def oncoming_lanes(section: LaneSection) -> int:
-    """How many of the section's left lanes, side by side from the reference line, are for driving
-    and adjoin its first right lane (itself for driving): the lanes an overtake may pass in. A
-    median (a lane not for driving) between the directions leaves none."""
+    """How many of the section's left lanes, side by side from the reference line, are for driving,
+    a car's width wide all along it, and adjoin its first right lane (itself for driving): the
+    lanes an overtake may pass in. A median (a lane not for driving) between the directions leaves
+    none; a lane that narrows to nothing (a row of parking bays drawn as a driving lane, esmini's
+    parking_demo) ends them."""
     if not section.right or section.right[0].type != DRIVING:
         return 0
+    along = np.linspace(0.0, section.end - section.s, 65)
     count = 0
     for lane in section.left:
-        if lane.type != DRIVING:
+        if lane.type != DRIVING or float(np.min(lane.width(along))) < USABLE_WIDTH:
             break
         count += 1
     return count

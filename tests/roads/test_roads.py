@@ -832,3 +832,42 @@ def test_a_lane_that_opens_between_a_roads_lane_and_the_oncoming_one_is_refused_
     assert "a lane there opens between two that run on" in refused.value.message
     # where the pocket is wide enough for a car, lane 0 (the leftmost of the two)
     assert pick_route(road_map, 2).spans() == {0: pytest.approx((375.0, 597.0), abs=3.0)}
+
+
+def bays_map(path: Path) -> Path:
+    """A straight 300 m road along +x of one 3.5 m lane each way, and beyond the left one a row of
+    parking bays drawn as one driving lane: 0 m wide, then 3.5 m for 40 m, then 0 again, every 60 m
+    (as esmini's parking_demo draws them)."""
+    bays = "".join(
+        f"<width sOffset='{start}' a='0' b='0.7' c='0' d='0'/><width sOffset='{start + 5}' a='3.5' b='0' c='0' d='0'/>"
+        f"<width sOffset='{start + 45}' a='3.5' b='-0.7' c='0' d='0'/><width sOffset='{start + 50}' a='0' b='0' c='0' d='0'/>"
+        for start in range(0, 300, 60)
+    )
+    full = "<width sOffset='0' a='3.5' b='0' c='0' d='0'/>"
+    left = f"<lane id='2' type='driving'>{bays}</lane><lane id='1' type='driving'>{full}</lane>"
+    right = f"<lane id='-1' type='driving'>{full}</lane>"
+    return one_road_map(
+        path,
+        300,
+        '<geometry s="0" x="0" y="0" hdg="0" length="300"><line/></geometry>',
+        f"<laneSection s='0'><left>{left}</left><right>{right}</right></laneSection>",
+    )
+
+
+def test_a_row_of_parking_bays_drawn_as_a_driving_lane_is_no_lane_to_overtake_in():
+    """A bay beyond the oncoming lane is no lane to pass in (it had been joined as a second
+    oncoming lane, a car's width wide 40 m at a time): a scenario of two lanes runs in the road's
+    own lane and its oncoming one, as on a road of one lane each way. Driven the other way, the
+    bays are the road's own lanes beside its one: two lanes side by side for 40 m at a time are no
+    road of two lanes (MIN_SIDE_BY_SIDE)."""
+    import tempfile
+
+    from pytest_roadlogic.roads.directions import oncoming_lanes
+
+    with tempfile.TemporaryDirectory() as folder:
+        road_map = read_map(bays_map(Path(folder) / "bays.xodr"))
+    (section,) = road_map.roads["1"].sections
+    assert oncoming_lanes(section) == 1
+    route = pick_route(road_map, 2)
+    assert route.road.oncoming == 1 and route.lanes == 2 and route.spans() == {}
+    assert not route.road.against
