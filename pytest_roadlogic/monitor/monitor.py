@@ -4,9 +4,9 @@ Semantics (the paper's, on a sampled trace with constant interpolation): a run o
 takes its transitions at strictly increasing sample instants, each when its guard holds; while the
 run stays in a location, the location's invariant holds at every sample and every actor driving
 there makes forward progress (its position increases from each sample to the next; the vehicle
-under test is no driver of the automaton it is judged by: ``SymbolicAutomaton.driving_itself``); a timed phase
-lasts within its bounds from the transition that starts it to the one that ends it, and the
-margin to those bounds (in seconds) counts in the robustness like a guard's. The scenario may
+under test is no driver of the automaton it is judged by: ``SymbolicAutomaton.driving_itself``);
+a timed phase lasts within its bounds from the transition that starts it to the one that ends it,
+and the margin to those bounds (in seconds) counts in the robustness like a guard's. The scenario may
 start after the trace does (vehicles start from standstill and need a run-up): the initial location
 may be left at any sample up to ``begins_by`` (``monitor``). The trace is accepted when some run
 reaches the final location and no incident (collision, off-road) occurred.

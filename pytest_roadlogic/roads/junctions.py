@@ -69,7 +69,7 @@ class Turn:
     def clear_before(self) -> float:
         """Metres of its route before the junction that bend nowhere more sharply than
         ``SLOW_CURVE``: back to the last such bend (a town's corner), else all of ``approach``."""
-        return _clear(tuple(against(road) for road in reversed((*self.before, self.into))))
+        return _clear_back((*self.before, self.into))
 
     @cached_property
     def clear_after(self) -> float:
@@ -101,6 +101,11 @@ class Turn:
 
     def describe(self) -> str:
         return f"{self.direction} from road {self.into.id} into road {self.out_of.id}"
+
+
+def _clear_back(roads: tuple[MapRoad, ...]) -> float:
+    """``_clear`` from the end of ``roads`` back: each driven the other way, the last first."""
+    return _clear(tuple(against(road) for road in reversed(roads)))
 
 
 def _clear(roads: tuple[MapRoad, ...]) -> float:
@@ -209,10 +214,10 @@ def with_room(road_map: RoadMap, turn: Turn, side: float, length: float) -> Turn
     (``chains.next_ways``: the next road, or through a junction straight on) added while the route
     has less than ``side`` metres of ``Turn.room`` before or past the junction, then, one side after
     the other, while it has less than ``length`` metres of room in all (a corner on the road in or
-    out ends the room on its side: nothing is added beyond it). Each road added has the turn's lanes all along
-    (a connecting road: one), continues the last and bends nowhere more sharply than ``SLOW_CURVE``
-    (a town's corner is a turn of its own); the first such in the map's order, at most
-    ``MAX_ROOM_STEPS`` each way. Why: in a town the roads between two junctions are short (CARLA's
+    out ends the room on its side: nothing is added beyond it). Each road added has the turn's
+    lanes all along (a connecting road: one), continues the last and bends nowhere more sharply
+    than ``SLOW_CURVE`` (a town's corner is a turn of its own); the first such in the map's order,
+    at most ``MAX_ROOM_STEPS`` each way. Why: in a town the roads between two junctions are short (CARLA's
     Town04: 44 m), and a car approaching a turn comes from the road before, as a driver does; a
     corner on the way would be a second turn and a slowing down the scenario never asked for."""
     lanes = turn.lanes
@@ -232,7 +237,7 @@ def with_room(road_map: RoadMap, turn: Turn, side: float, length: float) -> Turn
     before, after = list(turn.before), list(turn.after)
 
     def clear_before() -> float:
-        return _clear(tuple(against(road) for road in reversed((*before, turn.into))))
+        return _clear_back((*before, turn.into))
 
     def clear_after() -> float:
         return _clear((turn.out_of, *after))

@@ -48,10 +48,10 @@ class RouteFacts:
     def of(cls, route: Route) -> RouteFacts:
         from ....roads.route import ROUTE_MARGIN
 
-        first, last = route.within or (0.0, route.length)
+        start, end = route.within or (0.0, route.length)
         return cls(
             route.crossers,
-            (first + ROUTE_MARGIN, last - ROUTE_MARGIN),
+            (start + ROUTE_MARGIN, end - ROUTE_MARGIN),
             tuple((lane, first, last) for lane, (first, last) in sorted(route.spans().items())),
             route.slow_stretches,
             route.junction_span,
