@@ -333,12 +333,16 @@ OPPOSITE = """scenario left_turn_across_oncoming:
 """
 
 
-@pytest.mark.parametrize("bound", [False, True], ids=["any road", "the ego's road in"])
+@pytest.mark.parametrize(
+    "bound", [None, "approach", "ego_turn.in_road"], ids=["any road", "the ego's road in", "the label's road in"]
+)
 def test_routes_are_opposite_keeps_exactly_the_ways_that_drive_a_road_in_opposite_directions(tmp_path, bound):
     text = OPPOSITE
-    if bound:  # the road both drive is the one the left turn comes in on: the oncoming car's way out
-        text = text.replace("(direction: left)", "(direction: left, in_road: approach)").replace(
-            "oncoming_way.resulting_route)\n", "oncoming_way.resulting_route, containing_road: approach)\n", 1
+    if bound == "approach":  # the road both drive is the one the left turn comes in on: the oncoming car's way out
+        text = text.replace("(direction: left)", "(direction: left, in_road: approach)")
+    if bound:  # the label's in_road is the road its turn comes in on, as a field bound to it is
+        text = text.replace(
+            "oncoming_way.resulting_route)\n", f"oncoming_way.resulting_route, containing_road: {bound})\n", 1
         )
     ways = load_file(_town_file(tmp_path, text)).scenario_to_run(None).ways
     answered = {(ways.turns[a].describe(), ways.turns[b].describe()) for a, b in ways.combinations}
@@ -442,3 +446,21 @@ def test_a_routes_overlap_the_tool_cannot_read_is_refused_at_its_line(tmp_path, 
 
     with pytest.raises(OscError, match=message):
         load_scenario(_standard_file(tmp_path, MERGING.replace(*change)))
+
+
+def test_a_labels_junction_and_roads_name_what_its_turn_takes_wherever_the_scenario_names_them(tmp_path):
+    """my_turn.junction, .in_road and .out_road are the map elements my_turn's way takes, as fields
+    bound to them would be: a right turn at ego_turn's junction into the road it leaves on."""
+    from pytest_roadlogic.frontend import OscError
+
+    text = OPPOSITE.replace(
+        "    ego: car\n",
+        "    other_turn: map.roads_follow_in_junction(direction: right, junction: ego_turn.junction, "
+        "out_road: ego_turn.out_road)\n    ego: car\n",
+    )
+    ways = load_file(_town_file(tmp_path, text)).scenario_to_run(None).ways
+    assert ways.combinations
+    for left, _, right in ((ways.turns[a], ways.turns[b], ways.turns[c]) for a, b, c in ways.combinations):
+        assert right.junction == left.junction and right.out_of.id == left.out_of.id
+    with pytest.raises(OscError, match=r"the road of ego_turn's turn is ego_turn.in_road or ego_turn.out_road"):
+        load_file(_town_file(tmp_path, text.replace("out_road: ego_turn.out_road", "out_road: ego_turn.out")))

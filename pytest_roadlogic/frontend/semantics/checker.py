@@ -47,7 +47,7 @@ from .logical import logical_parameters_of, way_parameters
 from .methods import Methods, inline_methods, inline_scenario
 from .parameters import ParameterSpace, parameter_space
 from .physical import declared_physics, parse_with_declared_units
-from .road_lanes import DEFAULT_LANES, RoadLanes, driven_along_only
+from .road_lanes import DEFAULT_LANES, TURN_RESULTS, RoadLanes, driven_along_only
 from .values import EvaluationError, Interval, calls_in, describe, evaluate, names_in
 
 
@@ -196,6 +196,8 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks, EnvironmentAc
         # the labels of its map modifiers (``my_turn: map.roads_follow_in_junction(...)``): each a
         # path, driven as ``along(my_turn.resulting_route)``
         self.turn_labels: set[str] = set()
+        # label.member of a labelled roads_follow_in_junction -> the field it binds (road_lanes)
+        self.turn_results: dict[str, str] = {}
         # its fields of the map's elements (``j: junction``, ``r1: road``): name -> type
         self.map_elements: dict[str, str] = {}
         self.shadowed: set[tuple[str, str]] = set()  # (parameter, enum) already warned of, once each
@@ -531,6 +533,8 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks, EnvironmentAc
         self.turn_labels = {
             m.label for m in scenario.modifiers if m.label is not None and m.name == "roads_follow_in_junction"
         }
+        for label in self.turn_labels:  # the map elements its turn takes: my_turn.in_road, ...
+            self.map_elements.update({f"{label}.{member}": element for member, element in TURN_RESULTS.items()})
         owner = self._implicit_owner(scenario, declared)
         if owner is not None and _mentions(scenario, owner):
             # the vehicle the scenario belongs to, which drives its actor-less invocations
@@ -888,10 +892,15 @@ class _Checker(ImportLoading, FieldTyping, RoadLanes, EventChecks, EnvironmentAc
         if kind.startswith("map:"):
             element = kind[4:]
             if not isinstance(value, model.Name) or self.map_elements.get(value.name) != element:
+                owner = value.name.split(".")[0] if isinstance(value, model.Name) else ""
+                members = [f"{owner}.{m}" for m, kind in TURN_RESULTS.items() if kind == element]
+                hint = (
+                    f"the {element} of {owner}'s turn is {' or '.join(members)}"
+                    if owner in self.turn_labels
+                    else f"declare one: {value.name if isinstance(value, model.Name) else 'x'}: {element}"
+                )
                 self.error(
-                    value.location,
-                    f"{parameter.name}: takes a {element} of the map, a field of the scenario",
-                    f"declare one: {value.name if isinstance(value, model.Name) else 'x'}: {element}",
+                    value.location, f"{parameter.name}: takes a {element} of the map, a field of the scenario", hint
                 )
             return
         if kind == "road":

@@ -15,6 +15,10 @@ from .values import EvaluationError, Interval, evaluate
 
 DEFAULT_LANES = 3  # a road whose scenario says nothing of its lanes
 
+# what a labelled map.roads_follow_in_junction(...) names of the turn its path takes, as a field of
+# that kind would: my_turn.in_road is the road it comes in on, wherever the scenario names it
+TURN_RESULTS = {"junction": "junction", "in_road": "road", "out_road": "road"}
+
 # the default driver's Frenet frame reaches 25 m from the road's right edge (frenetix's projection
 # domain): past 7 lanes of 3.5 m it fails inside the simulation
 MAX_LANES = 6
@@ -363,6 +367,7 @@ class RoadLanes:
         """The lane bounds the scenario's road modifiers state, by modifier name; other scenario-wide modifiers are refused."""
         bounds: dict[str, tuple[int, SourceLocation]] = {}
         fields = {f.name for f in scenario.fields}
+        self.turn_results = _turn_results(scenario)
         for modifier in scenario.modifiers:
             if modifier.label is not None and modifier.name != "roads_follow_in_junction":
                 self.error(
@@ -578,7 +583,11 @@ class RoadLanes:
 
         def field(parameter: str) -> str | None:
             given = binding[parameter]
-            return given.value.name if given is not None and isinstance(given.value, model.Name) else None
+            if given is not None and isinstance(given.value, model.Name):
+                return self.turn_results.get(given.value.name, given.value.name)
+            # a label's result the scenario names elsewhere stands for the element the turn takes
+            named = f"{modifier.label}.{parameter}"
+            return named if modifier.label and parameter in TURN_RESULTS and named in self.turn_results else None
 
         roads = None
         argument = binding["number_of_roads"]
@@ -628,6 +637,7 @@ class RoadLanes:
             )
             return
         road = binding[road_name].value.name if road_name and binding[road_name] is not None else None
+        road = self.turn_results.get(road, road) if road is not None else None
         self.relation_asks.append((modifier.name, relation, first, second, kind, road, modifier.location))
 
     def _route_ask(self, modifier: model.Modifier, binding, env: dict, before: int) -> None:
@@ -682,6 +692,28 @@ class RoadLanes:
                         if lanes > needed:
                             needed, where = lanes, location
         return needed, where
+
+
+def _turn_results(scenario: model.Scenario) -> dict[str, str]:
+    """``label.member`` (``TURN_RESULTS``) of each labelled ``roads_follow_in_junction`` that the
+    scenario's map modifiers name -> the field that modifier binds the member to (``in_road:
+    approach``: both names are one map element), or itself when it binds none (``_turn_ask``)."""
+    named = {
+        argument.value.name
+        for modifier in scenario.modifiers
+        for argument in modifier.arguments
+        if isinstance(argument.value, model.Name)
+    }
+    results = {}
+    for modifier in scenario.modifiers:
+        if modifier.label is None or modifier.name != "roads_follow_in_junction":
+            continue
+        bound = {a.name: a.value.name for a in modifier.arguments if isinstance(a.value, model.Name)}
+        for member in TURN_RESULTS:
+            result = f"{modifier.label}.{member}"
+            if result in named:
+                results[result] = bound.get(member, result)
+    return results
 
 
 def driven_along_only(scenario: model.Scenario, name: str) -> bool:
