@@ -6,6 +6,7 @@ share, and the simulation drives each car on its own route."""
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 import numpy as np
@@ -398,3 +399,38 @@ def test_a_right_turn_as_tight_as_a_town_corner_is_driven_through_in_its_lane(tm
     assert outcome.verdict.accepted, outcome.verdict.explain()
     # it drives through: a step here and there without a fully safe trajectory, not a standstill
     assert outcome.simulation.fallbacks.get("ego", 0) < 20, outcome.simulation.fallbacks
+
+
+@pytest.mark.parametrize("seed", range(1, 9))
+def test_a_car_joining_a_lane_behind_another_is_a_gap_behind_it_from_the_step_before_it_joins(seed):
+    """Where two ways join one lane, the car through second is behind the first by the gap the
+    planner keeps (spacing) at the step it joins and at the step before: ahead at both ends of the
+    step, the first is ahead all through it. Read from the plan itself: positions laid onto one
+    another along the lane they share (the meeting's offset). A random start draws the speeds."""
+    import dataclasses
+
+    from pytest_roadlogic.automaton import build_automaton
+    from pytest_roadlogic.pipeline import load_scenario
+    from pytest_roadlogic.planning import ContinuousPlanner, ContinuousSettings
+    from pytest_roadlogic.planning.encodings.continuous.instance import spacing
+
+    scenario = load_scenario(SUITE / "right_turn_into_traffic.osc")
+    automaton = build_automaton(scenario)
+    settings = ContinuousSettings(time_limit=30.0).on_route(scenario.route, scenario.routes[1:])
+    settings = dataclasses.replace(settings, random_start=True)
+    plan = ContinuousPlanner(automaton, settings, seed).first()
+    (meeting,) = settings.meetings
+    assert meeting.kind == "shared"
+    ego = _inside(plan, "ego", (meeting.first_span[0], math.inf))
+    traffic = _inside(plan, "traffic", (meeting.second_span[0], math.inf))
+    if not (any(ego) and any(traffic)):
+        return
+    (first, first_in), (second, second_in) = sorted(
+        (("ego", ego), ("traffic", traffic)), key=lambda v: v[1].index(True)
+    )
+    joins = second_in.index(True)
+    gap = spacing(automaton, settings)
+    for step in (joins - 1, joins):
+        if step >= 0:
+            ahead = plan.states[first][step].position - plan.states[second][step].position
+            assert ahead >= gap - 1e-6, (step, ahead)
