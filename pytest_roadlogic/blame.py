@@ -23,6 +23,9 @@ from .planning.fallbacks import planned
 from .problem import problem_for
 from .settings import RunSettings
 
+# the ways through the map a value is tried alone on before it is blamed (``Blame.ways_to_try``)
+WAYS_TRIED = 3
+
 
 def has_plan(
     scenario: CheckedScenario,
@@ -79,9 +82,9 @@ class Blame:
         passes from far behind to close ahead)."""
         # A way through the map is never to blame: the file asks for a junction of the map, and a
         # way of it on which the scenario has no plan is no defect of the file; its samples are set
-        # aside, as combinations are. The other values are tried alone on the map's first ways and
-        # on the sample's own: one with no plan on either is taken to have none on any way (trying
-        # every way is the map's size in plans).
+        # aside, as combinations are. The other values are tried alone on the sample's own ways and
+        # on the map's first WAYS_TRIED: one with no plan on any of them is taken to have none on
+        # any way (trying every way is the map's size in plans).
         ways = {p.name for p in self.scenario.parameters if p.kind == WAY}
         values = {name: value for name, value in case.values.items() if name not in ways}
         taken = {name: value for name, value in case.values.items() if name in ways}
@@ -107,6 +110,24 @@ class Blame:
             result.culprit = next(iter(blamed), None)
         return result
 
+    def ways_to_try(self, taken: dict[str, Any]) -> list[dict[str, Any]]:
+        """The ways a value is tried alone on: the sample's own (``taken``; none: the scenario's
+        first), then the map's first answers unlike them, ``WAYS_TRIED`` in all. Why several: the
+        sample's ways may be the map's first, and a value with no plan on one way of a town may
+        have plans on the next junction."""
+        tried = [taken]
+        ways = self.scenario.ways
+        if ways is None:
+            return tried
+        named = {p.name for p in self.scenario.parameters if p.kind == WAY}
+        for combination in ways.combinations:
+            if len(tried) >= WAYS_TRIED:
+                break
+            answer = {path: ways.labels[t] for path, t in zip(ways.paths, combination) if path in named}
+            if answer != taken and answer not in tried:
+                tried.append(answer)
+        return tried
+
     def without_plan_alone(
         self,
         values: dict[str, Any],
@@ -120,14 +141,14 @@ class Blame:
         margins and limits; without ``beyond_limits``, none beyond a real car's limits); empty
         when each has one (then only the combination has none). Planning alone, one parameter at
         a time, in the order of the report. With ``ways`` (the ways through the map a sample
-        took), a value has no plan alone when it has none on the map's first ways nor on those."""
+        took), a value has no plan alone when it has none on those nor on the map's first others
+        (``ways_to_try``)."""
         settings = settings_for(self.settings, False)
         found = []
         for name, value in values.items():
-            if has_plan(self.scenario, {name: value}, self.settings.seed, settings, fallbacks, beyond_limits):
-                continue
-            if ways and has_plan(
-                self.scenario, {name: value, **ways}, self.settings.seed, settings, fallbacks, beyond_limits
+            if any(
+                has_plan(self.scenario, {name: value, **taken}, self.settings.seed, settings, fallbacks, beyond_limits)
+                for taken in self.ways_to_try(ways or {})
             ):
                 continue
             found.append(name)

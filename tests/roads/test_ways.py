@@ -272,6 +272,21 @@ def test_a_way_on_which_the_scenario_has_no_plan_is_set_aside_never_blamed(tmp_p
     assert all(r.outcome == "conformant" for r in ran)
 
 
+def test_a_value_is_blamed_only_with_no_plan_on_the_samples_ways_nor_on_the_maps_first_others(town):
+    """Blame tries a value alone on the sample's own ways and on the map's first answers unlike
+    them (WAYS_TRIED in all): the sample's ways may be the map's first, and a value with no plan on
+    one junction of a town may have plans on the next."""
+    from pytest_roadlogic.blame import WAYS_TRIED, Blame
+
+    ways = town.ways
+    first = {path: ways.labels[t] for path, t in zip(ways.paths, ways.combinations[0])}
+    second = {path: ways.labels[t] for path, t in zip(ways.paths, ways.combinations[1])}
+    tried = Blame(town, RunSettings(seed=1)).ways_to_try(first)
+    assert len(tried) == WAYS_TRIED and tried[0] == first and tried[1] == second
+    assert len({tuple(sorted(t.items())) for t in tried}) == len(tried)  # each way once
+    assert Blame(town, RunSettings(seed=1)).ways_to_try(second)[:2] == [second, first]
+
+
 MERGING = """scenario right_turn_merging_into_traffic:
     map: map
     map.set_map("crossing.xodr")
