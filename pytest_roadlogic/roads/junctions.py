@@ -217,9 +217,10 @@ def with_room(road_map: RoadMap, turn: Turn, side: float, length: float) -> Turn
     out ends the room on its side: nothing is added beyond it). Each road added has the turn's
     lanes all along (a connecting road: one), continues the last and bends nowhere more sharply
     than ``SLOW_CURVE`` (a town's corner is a turn of its own); the first such in the map's order,
-    at most ``MAX_ROOM_STEPS`` each way. Why: in a town the roads between two junctions are short (CARLA's
-    Town04: 44 m), and a car approaching a turn comes from the road before, as a driver does; a
-    corner on the way would be a second turn and a slowing down the scenario never asked for."""
+    at most ``MAX_ROOM_STEPS`` each way. Why: in a town the roads between two junctions are short
+    (CARLA's Town04: 44 m), and a car approaching a turn comes from the road before, as a driver
+    does; a corner on the way would be a second turn and a slowing down the scenario never asked
+    for."""
     lanes = turn.lanes
     taken = {road.id for road in turn.roads}
 
@@ -235,16 +236,19 @@ def with_room(road_map: RoadMap, turn: Turn, side: float, length: float) -> Turn
         return None
 
     before, after = list(turn.before), list(turn.after)
+    # the roads added bend like no corner (step_from): one on the road in or out is the only one
+    # there, and the room on its side is found once
+    into_clear, out_clear = _clear_back((*before, turn.into)), _clear((turn.out_of, *after))
 
     def clear_before() -> float:
-        return _clear_back((*before, turn.into))
+        return into_clear + metres(before[: len(before) - len(turn.before)])
 
     def clear_after() -> float:
-        return _clear((turn.out_of, *after))
+        return out_clear + metres(after[len(turn.after) :])
 
     def grow_before() -> bool:
         # a corner before the junction ends the room there: the roads before it would not be driven
-        if len(before) >= 2 * MAX_ROOM_STEPS or clear_before() < metres(before) + turn.into.length:
+        if len(before) >= 2 * MAX_ROOM_STEPS or into_clear < metres(turn.before) + turn.into.length:
             return False
         step = step_from(against((before or [turn.into])[0]))
         if step is None:
@@ -253,7 +257,7 @@ def with_room(road_map: RoadMap, turn: Turn, side: float, length: float) -> Turn
         return True
 
     def grow_after() -> bool:
-        if len(after) >= 2 * MAX_ROOM_STEPS or clear_after() < turn.out_of.length + metres(after):
+        if len(after) >= 2 * MAX_ROOM_STEPS or out_clear < turn.out_of.length + metres(turn.after):
             return False
         step = step_from((after or [turn.out_of])[-1])
         if step is None:

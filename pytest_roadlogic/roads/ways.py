@@ -6,8 +6,8 @@ the scenario as its junction, its road in and its road out: two paths that name 
 the same junction or road. Which turns satisfy that is a constraint problem over the map's graph;
 every answer is a way the scenario may run, and the choice among them is a logical parameter of
 the scenario, one per path (``Ways.choices``): sampled, shrunk to the first (the roomiest ways
-first: ``choose_ways``), written into the case file by its label ("left from road 2 into road 1 at junction 100") and
-replayed.
+first: ``choose_ways``), written into the case file by its label ("left from road 2 into road 1
+at junction 100") and replayed.
 """
 
 from __future__ import annotations
