@@ -115,6 +115,33 @@ def next_ways(road_map: RoadMap, current: MapRoad) -> Iterator[tuple[MapRoad, ..
             yield (inside, after)
 
 
+def turned(road_map: RoadMap, road: MapRoad) -> MapRoad | None:
+    """``road`` (a road of the map as a route drives it) driven the other way."""
+    return way(road_map, road.id, "start" if road.against else "end")
+
+
+def previous_ways(road_map: RoadMap, current: MapRoad) -> Iterator[tuple[MapRoad, ...]]:
+    """The roads a route may drive before ``current``'s start, in its direction: the road before
+    (one), or the road before a junction and the connecting road from it straight on into
+    ``current`` (two). They are the ways after ``current`` driven the other way, turned round;
+    through a junction the connecting road is this direction's own, found from the road before:
+    a town's connecting roads are one way each (CARLA's are), and the other direction's, driven
+    against its reference line, has no lane."""
+    back_from = turned(road_map, current)
+    if back_from is None:
+        return
+    for step in next_ways(road_map, back_from):
+        before = turned(road_map, step[-1])
+        if before is None:
+            continue
+        if len(step) == 1:
+            yield (before,)
+            continue
+        for onward in next_ways(road_map, before):
+            if len(onward) == 2 and onward[1].id == current.id and onward[1].against == current.against:
+                yield (before, onward[0])
+
+
 def chains(road_map: RoadMap, starts: list[MapRoad], lanes: int, gentle: bool = True) -> list[tuple[MapRoad, ...]]:
     """Every route of two or more roads from one of ``starts`` on which each road has ``lanes``
     driving lanes all along (a connecting road inside a junction: at least one) and continues the

@@ -20,7 +20,7 @@ import math
 from dataclasses import dataclass
 from functools import cached_property
 
-from .chains import chained, continues, heading_change, next_ways, way
+from .chains import chained, continues, heading_change, next_ways, previous_ways, way
 from .directions import against
 from .opendrive_in import MapRoad, RoadMap
 from .route import SLOW_CURVE, through_lanes
@@ -224,13 +224,17 @@ def with_room(road_map: RoadMap, turn: Turn, side: float, length: float) -> Turn
     lanes = turn.lanes
     taken = {road.id for road in turn.roads}
 
-    def step_from(road: MapRoad) -> tuple[MapRoad, ...] | None:
-        for step in next_ways(road_map, road):
-            if any(r.id in taken for r in step) or through_lanes(step[-1])[0] < lanes:
+    def first_fit(steps, joints) -> tuple[MapRoad, ...] | None:
+        """The first of ``steps`` not yet driven whose roads have the lanes (a connecting road:
+        one), bend gently and continue one another at ``joints(step)``."""
+        for step in steps:
+            if any(r.id in taken for r in step):
+                continue
+            if any(through_lanes(r)[0] < (1 if r.junction not in ("", "-1") else lanes) for r in step):
                 continue
             if any(r.reference_line.sharpest() > SLOW_CURVE for r in step):
                 continue
-            if all(continues(a, b) for a, b in zip((road, *step), step)):
+            if all(continues(a, b) for a, b in joints(step)):
                 taken.update(r.id for r in step)
                 return step
         return None
@@ -250,16 +254,18 @@ def with_room(road_map: RoadMap, turn: Turn, side: float, length: float) -> Turn
         # a corner before the junction ends the room there: the roads before it would not be driven
         if len(before) >= 2 * MAX_ROOM_STEPS or into_clear < metres(turn.before) + turn.into.length:
             return False
-        step = step_from(against((before or [turn.into])[0]))
+        first = (before or [turn.into])[0]
+        step = first_fit(previous_ways(road_map, first), lambda step: zip(step, (*step[1:], first)))
         if step is None:
             return False
-        before[:0] = [against(road) for road in reversed(step)]
+        before[:0] = step
         return True
 
     def grow_after() -> bool:
         if len(after) >= 2 * MAX_ROOM_STEPS or out_clear < turn.out_of.length + metres(turn.after):
             return False
-        step = step_from((after or [turn.out_of])[-1])
+        last = (after or [turn.out_of])[-1]
+        step = first_fit(next_ways(road_map, last), lambda step: zip((last, *step), step))
         if step is None:
             return False
         after.extend(step)

@@ -51,6 +51,13 @@ class Road:
         xs = corners[:, 0]
         return bool((ys >= self.right_edge(xs) - 0.05).all() and (ys <= self.left_edge(xs) + 0.05).all())
 
+    def on_junction(self, world_corners: np.ndarray) -> bool:
+        """Whether a box's corners in the world (``world_corners``) lie on the driving lanes of the
+        junction its route turns at, or of the roads meeting it (``Route.junction_surface``): a car
+        sweeping wide of its lane round the turn is on the road there. False off any such route."""
+        surface = self.route.junction_surface if self.route is not None else None
+        return surface is not None and bool(surface.contains(world_corners[:, 0], world_corners[:, 1]).all())
+
     def right_edge(self, x) -> np.ndarray:
         """``y`` of the right edge of the driving lanes at ``x`` (0 but where a map's lanes begin or end)."""
         if self.route is None:

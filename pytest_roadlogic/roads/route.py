@@ -28,6 +28,7 @@ import numpy as np
 
 from .opendrive_in import LaneSection, MapLane, MapRoad
 from .reference_line import ReferenceLine
+from .surface import DrivingSurface
 
 DRIVING = "driving"
 USABLE_WIDTH = 2.8  # m: a lane at least this wide takes a car (1.8 m) with half a metre each side
@@ -78,6 +79,12 @@ class Route:
     @property
     def name(self) -> str:
         return f"{self.road.label} of {self.source.name}"
+
+    @cached_property
+    def junction_surface(self) -> DrivingSurface | None:
+        """The driving lanes of ``junction_roads`` (None: a route that turns at no junction): where
+        a car that sweeps wide of its lane round the turn is still on the road."""
+        return DrivingSurface.of(self.junction_roads) if self.junction_roads else None
 
     @property
     def length(self) -> float:

@@ -139,7 +139,9 @@ class _Lockstep:
                 self.goals[v].update(time, s.x, int(col["lane"][k]))
         names = list(states)
         for i, a in enumerate(names):
-            if not roads[a].on_road(corners(states[a])):
+            if not roads[a].on_road(corners(states[a])) and not roads[a].on_junction(
+                corners(_in_world(states[a], roads[a]))
+            ):
                 self.incidents.append(Incident(time, "off-road", (a,)))
             for b in names[i + 1 :]:
                 if roads[a] is roads[b]:

@@ -245,6 +245,61 @@ def test_a_route_does_not_turn_at_a_junction_nor_go_on_where_the_lanes_do_not_me
     assert "4" not in route.road.id.split("+") and "5" not in route.road.id.split("+")
 
 
+def one_way_junction_map(path: Path) -> Path:
+    """Two 150 m roads along +x, one lane each way, joined through junction 9 as CARLA's towns join
+    them: a connecting road for each direction, each with its one lane on its right (road 3 east
+    from road 1 into road 2, road 4 west from road 2 into road 1, along the same 20 m)."""
+    sections = f"<laneSection s='0'><left>{lane(1)}</left><right>{lane(-1)}</right></laneSection>"
+    one_way = f"<laneSection s='0'><right>{lane(-1)}</right></laneSection>"
+    return write(
+        path,
+        f"""
+        <?xml version="1.0"?>
+        <OpenDRIVE><header/>
+        <road id="1" length="150" junction="-1"><link><successor elementType="junction" elementId="9"/></link>
+        <planView><geometry s="0" x="0" y="0" hdg="0" length="150"><line/></geometry></planView>
+        <lanes>{sections}</lanes></road>
+        <road id="3" length="20" junction="9"><link><predecessor elementType="road" elementId="1" contactPoint="end"/>
+        <successor elementType="road" elementId="2" contactPoint="start"/></link>
+        <planView><geometry s="0" x="150" y="0" hdg="0" length="20"><line/></geometry></planView>
+        <lanes>{one_way}</lanes></road>
+        <road id="4" length="20" junction="9"><link><predecessor elementType="road" elementId="2" contactPoint="start"/>
+        <successor elementType="road" elementId="1" contactPoint="end"/></link>
+        <planView><geometry s="0" x="170" y="0" hdg="{np.pi}" length="20"><line/></geometry></planView>
+        <lanes>{one_way}</lanes></road>
+        <road id="2" length="150" junction="-1"><link><predecessor elementType="junction" elementId="9"/></link>
+        <planView><geometry s="0" x="170" y="0" hdg="0" length="150"><line/></geometry></planView>
+        <lanes>{sections}</lanes></road>
+        <junction id="9" name="crossing">
+        <connection id="0" incomingRoad="1" connectingRoad="3" contactPoint="start"/>
+        <connection id="1" incomingRoad="2" connectingRoad="4" contactPoint="start"/>
+        </junction>
+        </OpenDRIVE>
+        """,
+    )
+
+
+def test_the_roads_before_a_road_through_a_junction_of_one_way_connecting_roads_are_its_own_directions(tmp_path):
+    """Each way through the junction is found on the connecting road that carries it: before road 2
+    eastward lie road 1 and road 3 (not road 4 driven the wrong way, which has no lane that way),
+    and before road 1 westward road 2 and road 4."""
+    from pytest_roadlogic.roads.chains import next_ways, previous_ways, way
+    from pytest_roadlogic.roads.route import through_lanes
+
+    road_map = read_map(one_way_junction_map(tmp_path / "one_way.xodr"))
+
+    def named(steps):
+        return [[(road.id, road.against) for road in step] for step in steps]
+
+    east, west = way(road_map, "2", "start"), way(road_map, "1", "end")
+    assert named(previous_ways(road_map, east)) == [[("1", False), ("3", False)]]
+    assert named(previous_ways(road_map, west)) == [[("2", True), ("4", False)]]
+    for step in (*previous_ways(road_map, east), *previous_ways(road_map, west)):
+        assert all(through_lanes(road)[0] == 1 for road in step)
+    # the same ways forward: from road 1 eastward through road 3 into road 2
+    assert named(next_ways(road_map, way(road_map, "1", "start"))) == [[("3", False), ("2", False)]]
+
+
 def kinked_map(path: Path, turn_degrees: float = 15.0) -> Path:
     """``linked_map`` with the connecting road a 20 m arc that turns ``turn_degrees`` to the
     left, road 2 going on from its end, and no turn out of the junction: straight on for a

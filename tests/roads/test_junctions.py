@@ -351,3 +351,32 @@ def test_on_a_crossing_of_left_hand_traffic_the_right_turn_crosses_the_oncoming_
     x0, y0, _ = route.reference_line.pose(s)
     left_of_line = -np.sin(heading) * (x - x0) + np.cos(heading) * (y - y0)
     assert (left_of_line > 1.0).all()
+
+
+def test_a_car_sweeping_wide_of_its_lane_round_a_turn_is_on_the_road_and_one_beyond_every_lane_is_off_it():
+    from types import SimpleNamespace
+
+    from pytest_roadlogic.roads.road import Road
+    from pytest_roadlogic.simulation.geometry import corners
+
+    route = the_turn(read_map(MAPS / "crossing.xodr"), 1, 0.0, "right", 4)
+    road = Road(lanes=route.lanes, lane_width=route.lane_width, route=route)
+    begin, end = route.junction_span
+    middle = (begin + end) / 2
+
+    def car(y: float) -> tuple[bool, bool]:
+        """Whether a car ``y`` metres left of its lane's right edge, midway round the turn, heading
+        along the lane, is on its lane (road coordinates) and on the junction (world)."""
+        state = SimpleNamespace(x=middle, y=y, heading=0.0)
+        wx, wy, wh = road.world(middle, y)
+        world = SimpleNamespace(x=float(wx), y=float(wy), heading=float(wh))
+        return road.on_road(corners(state)), road.on_junction(corners(world))
+
+    assert car(1.75) == (True, True)  # the lane's centre
+    # a metre out of its lane on the outside of the right turn: over the junction's other lanes
+    assert car(1.75 + 2.6) == (False, True)
+    # beyond the crossing's lanes on the inside of the turn: the kerb
+    assert car(-6.0) == (False, False)
+    # a route that turns at no junction has no junction to be on
+    straight = Road(lanes=1)
+    assert not straight.on_junction(corners(SimpleNamespace(x=0.0, y=1.75, heading=0.0)))
