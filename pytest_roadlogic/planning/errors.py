@@ -108,7 +108,9 @@ class UnsatisfiableScenario(NoPlanError):
     group of one cannot hold on its own under the domain rules (speed limits, lanes, no collision).
     ``parameters``: the logical parameters used at each place (``SymbolicAutomaton.parameters``),
     so that a constraint is named with the parameters behind it. ``lanes``: the road's driving lanes,
-    said with a group of lanes that no placement on them meets."""
+    said with a group of lanes that no placement on them meets; ``partial_lanes``, said with a group
+    about lanes too: the map's lanes that take a car along part of the road only
+    (``PlannerSettings.partial_lanes``)."""
 
     def __init__(
         self,
@@ -117,12 +119,14 @@ class UnsatisfiableScenario(NoPlanError):
         rules: str = "",
         parameters: dict | None = None,
         lanes: int | None = None,
+        partial_lanes: str = "",
     ) -> None:
         super().__init__(message)
         self.conflicts = conflicts
         self.rules = rules
         self.parameters = parameters or {}
         self.lanes = lanes
+        self.partial_lanes = partial_lanes
 
     def _named(self, constraint) -> str:
         return _named(self.parameters.get(constraint.source, ()))
@@ -157,6 +161,8 @@ class UnsatisfiableScenario(NoPlanError):
                     hint = "the scenario can never be met; widen or remove one of them"
                     if self.lanes is not None and any(_places_in_a_lane(other) for other in group):
                         hint += f"; the road has {self.lanes} driving lane{'' if self.lanes == 1 else 's'}"
+                    if self.partial_lanes and any(_places_in_a_lane(other) for other in group):
+                        hint += f"; on the map, a car can be in {self.partial_lanes}"
                     if any(_numbers_a_lane(other) for other in group):
                         hint += f"; {LANE_NUMBERS}"
                 diagnostics.append(Diagnostic(member.source, message, hint))

@@ -187,7 +187,7 @@ def _refuse_what_the_relaxation_proves(guide: Guide, settings, beyond_limits: bo
     widest = settings.thinned() or settings
     automaton = guide(widest)
     fastest = max(settings.relaxed().max_speed, settings.max_speed) if beyond_limits else settings.max_speed
-    conflict = provably_unplannable(automaton, fastest)
+    conflict = provably_unplannable(automaton, fastest, settings.route_extent())
     if conflict:
         raise UnsatisfiableScenario(
             "no plan exists at these values (its linear relaxation has no solution)\n"
@@ -195,6 +195,7 @@ def _refuse_what_the_relaxation_proves(guide: Guide, settings, beyond_limits: bo
             [conflict],
             settings.summary(automaton.lanes),
             automaton.parameters,
+            partial_lanes=settings.partial_lanes(automaton.lanes),
         )
 
 

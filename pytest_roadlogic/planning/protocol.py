@@ -22,6 +22,7 @@ from .plan import Plan, PlanState
 
 if TYPE_CHECKING:
     from ..roads.route import Route
+    from .relaxation import RouteExtent
 
 
 @dataclass(frozen=True)
@@ -129,6 +130,18 @@ class PlannerSettings(Protocol):
 
     def summary(self, lanes: int) -> str:
         """The vehicle limits and bounds on a road of ``lanes`` lanes, for messages that blame them."""
+        ...
+
+    def route_extent(self) -> RouteExtent | None:
+        """Where along the map's route the vehicles may be, for the linear relaxation that proves a
+        sample has no plan (``relaxation.RouteExtent``); None off a map (and for an encoding that
+        plans one straight road)."""
+        ...
+
+    def partial_lanes(self, lanes: int) -> str:
+        """The lanes of a road of ``lanes`` lanes that take a car only along part of it (a map's
+        lane that begins or ends: where), for a message about lanes that cannot hold; "" when
+        every lane runs all along (and off a map)."""
         ...
 
 

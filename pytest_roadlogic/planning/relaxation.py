@@ -23,6 +23,11 @@ an invariant keeps in one lane (``l(a) - l(b) = 0`` throughout consecutive locat
 order over those instants, for no plan passes one car through another in its lane: one linear
 program per choice of who is ahead in each such stretch (at most ``MAX_ORDERS`` of them; past
 that, the order is dropped).
+On a map (``RouteExtent``), each vehicle on the scenario's route stays between the route's first
+and last metres a car may be at, and at an instant whose guard (or the invariant of a location it
+is in) keeps it in lanes that begin or end, within their stretch: a car that must be in an
+acceleration lane 400 m ahead of another where that lane is 215 m long has no plan, said in
+milliseconds rather than after the planner's time limit.
 Dropping constraints only adds solutions, so a relaxation with none on every path proves there is
 no plan. The group named is minimal on the paths (one constraint taken out at a time, kept out
 when the rest still fail on every path).
@@ -32,6 +37,7 @@ from __future__ import annotations
 
 import itertools
 import math
+from dataclasses import dataclass, field
 
 from ..logic.automaton import SymbolicAutomaton, Transition
 from ..logic.guards import LANE, POSITION, SPEED, Bound, required_bounds
@@ -40,12 +46,29 @@ MAX_PATHS = 64  # an automaton with more paths to its end is left to the planner
 MAX_ORDERS = 64  # the most choices of who is ahead tried on one path (2 per stretch shared in a lane)
 
 
-def provably_unplannable(automaton: SymbolicAutomaton, max_speed: float) -> tuple | None:
-    """The constraints that no plan can meet together when the relaxation proves it, else None."""
+@dataclass(frozen=True)
+class RouteExtent:
+    """Where along a map's route the scenario's vehicles may be, as the planner keeps them: each
+    (but those driving other routes, ``elsewhere``) between ``span``'s metres along it; one in a
+    lane of ``lanes`` (lane -> first and last metre: a lane that begins or ends) within those; the
+    plan's position 0 within ``origin`` (None: anywhere). Positions along the route are a plan's
+    plus the origin."""
+
+    span: tuple[float, float]
+    lanes: dict[int, tuple[float, float]] = field(default_factory=dict)
+    origin: tuple[float, float] | None = None
+    elsewhere: frozenset[str] = frozenset()
+
+
+def provably_unplannable(
+    automaton: SymbolicAutomaton, max_speed: float, route: RouteExtent | None = None
+) -> tuple | None:
+    """The constraints that no plan can meet together when the relaxation proves it, else None.
+    ``route``: the map's route the plan lies on (None: the straight road, as long as a plan needs)."""
     paths = _paths(automaton)
     if not paths:
         return None
-    relaxations = [_PathRelaxation(automaton, path, max_speed) for path in paths]
+    relaxations = [_PathRelaxation(automaton, path, max_speed, route) for path in paths]
     named: dict = {}  # source -> the constraint that names it (the first, as the diagnosis names it)
     for relaxation in relaxations:
         for source, constraint in relaxation.constraints.items():
@@ -84,6 +107,11 @@ def _linear(bound: Bound) -> bool:
     return bound.term.quantity in (POSITION, SPEED)
 
 
+def _in_lanes(bound: Bound) -> bool:
+    """Whether ``bound`` keeps a vehicle in lanes by their numbers (``l(a)`` within a range)."""
+    return bound.term.quantity == LANE and bound.term.reference is None
+
+
 def _one_lane(bound: Bound) -> bool:
     """Whether ``bound`` keeps two vehicles in one lane (``l(a) - l(b) = 0``)."""
     return bound.term.quantity == LANE and bound.term.reference is not None and bound.low == bound.high == 0
@@ -93,15 +121,34 @@ class _PathRelaxation:
     """The linear program of one path, built for any subset of the scenario's constraints (``groups``:
     a bound or a duration with a source; bounds of one source go in or out together)."""
 
-    def __init__(self, automaton: SymbolicAutomaton, path: list[Transition], max_speed: float) -> None:
-        self.automaton, self.path, self.max_speed = automaton, path, max_speed
+    def __init__(
+        self, automaton: SymbolicAutomaton, path: list[Transition], max_speed: float, route: RouteExtent | None = None
+    ) -> None:
+        self.automaton, self.path, self.max_speed, self.route = automaton, path, max_speed, route
         self.actors = list(automaton.actors)
         # per instant, the bounds of its transition's guard; per interval, its location's invariant
-        self.at = [[b for b in required_bounds(t.guard) if _linear(b)] for t in path]
+        guards = [required_bounds(t.guard) for t in path]
+        self.at = [[b for b in bounds if _linear(b)] for bounds in guards]
         invariants = [required_bounds(automaton.location(t.target).invariant) for t in path[:-1]]
         self.during = [[b for b in bounds if _linear(b)] for bounds in invariants]
         # per interval, the invariant's bounds that keep two vehicles in one lane
         self.one_lane = [[b for b in bounds if _one_lane(b)] for bounds in invariants]
+        # per instant, the bounds that keep a vehicle in lanes by number: its guard's, and the
+        # invariants of the intervals it begins and ends (only read on a map's route)
+        self.lanes_at = [
+            [
+                b
+                for b in (
+                    *guards[i],
+                    *(invariants[i] if i < len(invariants) else ()),
+                    *(invariants[i - 1] if i else ()),
+                )
+                if _in_lanes(b)
+            ]
+            if route is not None and route.lanes
+            else []
+            for i in range(len(path))
+        ]
         # the timed phases and the instants that start and end them on this path
         started: dict[int, int] = {}
         self.durations: list[tuple[int, int, object]] = []
@@ -114,7 +161,7 @@ class _PathRelaxation:
                     started[phase] = i
         # the scenario's constraints on this path by their place: one modifier's bounds go in or out together
         self.constraints: dict = {}
-        for bound in (b for bounds in (*self.at, *self.during, *self.one_lane) for b in bounds):
+        for bound in (b for bounds in (*self.at, *self.during, *self.one_lane, *self.lanes_at) for b in bounds):
             if bound.source is not None:
                 self.constraints.setdefault(bound.source, bound)
         for _, _, timing in self.durations:
@@ -176,6 +223,8 @@ class _PathRelaxation:
         for start, end, timing in self.durations:
             if on(timing):
                 rows.append(({var("t", end): 1.0, var("t", start): -1.0}, timing.low, timing.high))
+        if self.route is not None:
+            rows += self._on_route(on, var, lows, highs)
         stretches = self._stretches(on)
         if not stretches or 2 ** len(stretches) > MAX_ORDERS:
             return _solvable(len(columns), lows, highs, rows)
@@ -188,6 +237,30 @@ class _PathRelaxation:
             if _solvable(len(columns), lows, highs, rows + ordered):
                 return True
         return False
+
+    def _on_route(self, on, var, lows: dict[int, float], highs: dict[int, float]) -> list:
+        """The rows that keep the route's vehicles on it: each between the route's metres at every
+        instant, and within the stretch of the lanes an instant's bounds (those that are on) keep it
+        in, where each of those lanes begins or ends (metres along the route: its position plus
+        the origin)."""
+        route, rows = self.route, []
+        origin = var("origin")
+        lows[origin], highs[origin] = route.origin if route.origin is not None else (-math.inf, math.inf)
+        for i in range(len(self.path)):
+            for actor in self.actors:
+                if actor in route.elsewhere:
+                    continue
+                along = {var("p", actor, i): 1.0, origin: 1.0}
+                rows.append((along, *route.span))
+                for bound in self.lanes_at[i]:
+                    if bound.term.actor != actor or not on(bound) or not math.isfinite(bound.high - bound.low):
+                        continue
+                    low, high = math.ceil(bound.low - 1e-9), math.floor(bound.high + 1e-9)
+                    if high - low > len(route.lanes) or not all(k in route.lanes for k in range(low, high + 1)):
+                        continue  # a lane of the range runs all along the route
+                    stretches = [route.lanes[k] for k in range(low, high + 1)]
+                    rows.append((along, min(s[0] for s in stretches), max(s[1] for s in stretches)))
+        return rows
 
     def _stretches(self, on) -> list[tuple[str, str, int, int]]:
         """Each pair of vehicles kept in one lane by the invariants (those that are on) of

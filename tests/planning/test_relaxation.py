@@ -174,3 +174,41 @@ def test_a_car_kept_in_the_leftmost_lane_that_another_must_pass_on_its_left_is_r
     assert named == {f"{path}:23:7", f"{path}:27:9"}, report  # keep_lane() and lane(left_of: v2)
     assert "the road has 2 driving lanes" in report
     check_satisfiable(build_automaton(load_scenario(path, lanes=3)))  # three lanes: left to the planner
+
+
+RAMP = ROOT / "scenarios" / "roads" / "merge_from_ramp.osc"
+
+
+def _ramp_with_the_npc_ahead(tmp_path, distance: str):
+    """merge_from_ramp (the acceleration lane, lane 1, takes a car from about 190 to 405 m along
+    its route) with the merging car starting ``distance`` ahead of the ego in it."""
+    (tmp_path / "maps").mkdir()
+    (tmp_path / "maps" / "on_ramp.xodr").write_bytes((RAMP.parent / "maps" / "on_ramp.xodr").read_bytes())
+    text = RAMP.read_text().replace("position(distance: [5m..20m], behind: ego, at: start)", distance)
+    assert text != RAMP.read_text()
+    path = tmp_path / "ramp.osc"
+    path.write_text(text)
+    return path
+
+
+def test_a_car_asked_into_a_lane_where_the_map_has_none_is_refused_before_any_search_naming_the_lane(tmp_path):
+    """On the map, a car in an acceleration lane 400-450 m ahead of another lies past the lane's
+    end: the relaxation reads where the route's lanes take a car, and the refusal says where."""
+    path = _ramp_with_the_npc_ahead(tmp_path, "position(distance: [400m..450m], ahead_of: ego, at: start)")
+    guide, settings, seed = guided(path, {})
+    automaton = guide(settings.thinned())
+    assert provably_unplannable(automaton, FASTEST) is None  # on a straight road of any length
+    conflict = provably_unplannable(automaton, FASTEST, settings.route_extent())
+    assert conflict is not None and sorted(c.source.line for c in conflict) == [19, 20]
+    with pytest.raises(UnsatisfiableScenario) as raised:
+        next(planned(guide, settings, seed, 1))
+    report = raised.value.report()
+    assert "linear relaxation" in str(raised.value)
+    assert "a car can be in the route's lane 1 from the right only from 189 to 404 m along it" in report
+
+
+def test_a_car_the_acceleration_lane_can_hold_is_left_to_the_planner(tmp_path):
+    path = _ramp_with_the_npc_ahead(tmp_path, "position(distance: [100m..150m], ahead_of: ego, at: start)")
+    guide, settings, seed = guided(path, {})
+    assert provably_unplannable(guide(settings.thinned()), FASTEST, settings.route_extent()) is None
+    assert next(planned(guide, settings, seed, 1)) is not None

@@ -10,6 +10,7 @@ from typing import TYPE_CHECKING, ClassVar
 
 from ....settings import CONTINUOUS_HORIZON, ROAD_SPEED
 from ...protocol import Limit
+from ...relaxation import RouteExtent
 
 if TYPE_CHECKING:
     from ....roads.conflicts import Alignment, Meeting
@@ -289,6 +290,31 @@ class ContinuousSettings:
             f"headway_margin {self.headway_margin:g} s, acceleration_margin {self.acceleration_margin:g} m/s^2, "
             f"duration_margin {self.duration_margin:g} s"
         )
+
+    def route_extent(self) -> RouteExtent | None:
+        """Where along the route its vehicles may be (``route_span``, ``lane_spans``,
+        ``origin_span``), those of the side routes left out; None off a map."""
+        if self.route_span is None:
+            return None
+        return RouteExtent(
+            self.route_span,
+            {lane: (first, last) for lane, first, last in self.lane_spans},
+            self.origin_span,
+            frozenset(v for side in self.side_routes for v in side.vehicles),
+        )
+
+    def partial_lanes(self, lanes: int) -> str:
+        """The route's lanes that take a car only along part of it (``lane_spans``), each counted
+        from the right, as a driver names them whatever the file's dialect: "the route's lane 3 from
+        the right only from 1020 to 1100 m along it (80 m)"."""
+        said = []
+        for lane, first, last in self.lane_spans:
+            place = f"the route's lane {lanes - lane} from the right"
+            if last < first:
+                said.append(f"{place} nowhere")
+            else:
+                said.append(f"{place} only from {first:.0f} to {last:.0f} m along it ({last - first:.0f} m)")
+        return "; ".join(said)
 
     def summary(self, lanes: int) -> str:
         """The vehicle limits and bounds on a road of ``lanes`` lanes, for messages that blame them."""

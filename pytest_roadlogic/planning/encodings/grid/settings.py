@@ -97,6 +97,14 @@ class GridSettings:
             f"{lanes} lane{'' if lanes == 1 else 's'}, {self.min_gap:g} m gaps, at most {self.max_horizon} steps of {self.dt:g} s"
         )
 
+    def route_extent(self) -> None:
+        """None: the grid plans one straight road (``on_route`` says it cannot plan on a map)."""
+        return None
+
+    def partial_lanes(self, lanes: int) -> str:
+        """ "": the grid plans one straight road, every lane all along it."""
+        return ""
+
     def resolution(self) -> dict[str | None, float]:
         """The smallest difference the plan can express, per physical dimension (for sampled values)."""
         return {
