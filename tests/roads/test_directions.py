@@ -3,6 +3,7 @@ lane each way whose oncoming lane an overtake passes in (docs/roads.md, "The rou
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 import numpy as np
@@ -246,37 +247,24 @@ def test_a_route_does_not_turn_at_a_junction_nor_go_on_where_the_lanes_do_not_me
 
 
 def one_way_junction_map(path: Path) -> Path:
-    """Two 150 m roads along +x, one lane each way, joined through junction 9 as CARLA's towns join
-    them: a connecting road for each direction, each with its one lane on its right (road 3 east
-    from road 1 into road 2, road 4 west from road 2 into road 1, along the same 20 m)."""
-    sections = f"<laneSection s='0'><left>{lane(1)}</left><right>{lane(-1)}</right></laneSection>"
-    one_way = f"<laneSection s='0'><right>{lane(-1)}</right></laneSection>"
-    return write(
-        path,
-        f"""
-        <?xml version="1.0"?>
-        <OpenDRIVE><header/>
-        <road id="1" length="150" junction="-1"><link><successor elementType="junction" elementId="9"/></link>
-        <planView><geometry s="0" x="0" y="0" hdg="0" length="150"><line/></geometry></planView>
-        <lanes>{sections}</lanes></road>
-        <road id="3" length="20" junction="9"><link><predecessor elementType="road" elementId="1" contactPoint="end"/>
-        <successor elementType="road" elementId="2" contactPoint="start"/></link>
-        <planView><geometry s="0" x="150" y="0" hdg="0" length="20"><line/></geometry></planView>
-        <lanes>{one_way}</lanes></road>
-        <road id="4" length="20" junction="9"><link><predecessor elementType="road" elementId="2" contactPoint="start"/>
-        <successor elementType="road" elementId="1" contactPoint="end"/></link>
-        <planView><geometry s="0" x="170" y="0" hdg="{np.pi}" length="20"><line/></geometry></planView>
-        <lanes>{one_way}</lanes></road>
-        <road id="2" length="150" junction="-1"><link><predecessor elementType="junction" elementId="9"/></link>
-        <planView><geometry s="0" x="170" y="0" hdg="0" length="150"><line/></geometry></planView>
-        <lanes>{sections}</lanes></road>
-        <junction id="9" name="crossing">
-        <connection id="0" incomingRoad="1" connectingRoad="3" contactPoint="start"/>
-        <connection id="1" incomingRoad="2" connectingRoad="4" contactPoint="start"/>
-        </junction>
-        </OpenDRIVE>
-        """,
+    """``linked_map`` with its junction's roads one way each, as CARLA's towns have them: road 3
+    east from road 1 into road 2 with only its right lanes, and in place of the left turn, road 4
+    west from road 2 into road 1 along the same 20 m, its right lanes only."""
+    text = linked_map(path).read_text()
+    right_only = "<laneSection s='0'><right>" + lane(-1) + lane(-2) + "</right></laneSection>"
+    road_3 = re.search(r'<road id="3".*?</road>', text, re.S).group(0)
+    road_4 = re.search(r'<road id="4".*?</road>', text, re.S).group(0)
+    west = (
+        '<road id="4" length="20" junction="9"><link><predecessor elementType="road" elementId="2" '
+        'contactPoint="start"/><successor elementType="road" elementId="1" contactPoint="end"/></link>'
+        f'<planView><geometry s="0" x="170" y="0" hdg="{np.pi}" length="20"><line/></geometry></planView>'
+        f"<lanes>{right_only}</lanes></road>"
     )
+    text = text.replace(road_3, re.sub(r"<lanes>.*</lanes>", f"<lanes>{right_only}</lanes>", road_3, flags=re.S))
+    text = text.replace(road_4, west).replace(
+        'incomingRoad="1" connectingRoad="4"', 'incomingRoad="2" connectingRoad="4"'
+    )
+    return write(path, text)
 
 
 def test_the_roads_before_a_road_through_a_junction_of_one_way_connecting_roads_are_its_own_directions(tmp_path):
@@ -295,7 +283,7 @@ def test_the_roads_before_a_road_through_a_junction_of_one_way_connecting_roads_
     assert named(previous_ways(road_map, east)) == [[("1", False), ("3", False)]]
     assert named(previous_ways(road_map, west)) == [[("2", True), ("4", False)]]
     for step in (*previous_ways(road_map, east), *previous_ways(road_map, west)):
-        assert all(through_lanes(road)[0] == 1 for road in step)
+        assert all(through_lanes(road)[0] == 2 for road in step)
     # the same ways forward: from road 1 eastward through road 3 into road 2
     assert named(next_ways(road_map, way(road_map, "1", "start"))) == [[("3", False), ("2", False)]]
 
