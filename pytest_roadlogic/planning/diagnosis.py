@@ -75,7 +75,7 @@ def raise_reason(planner, error: NoPlanError, deadline: float, window=None) -> N
             [conflict],
             planner.settings.summary(planner.automaton.lanes),
             planner.automaton.parameters,
-            partial_lanes=planner.settings.partial_lanes(planner.automaton.lanes),
+            on_the_map=planner.settings.on_the_map(planner.automaton.lanes),
         ) from None
     if conflict == ():
         raise NoPlanError(

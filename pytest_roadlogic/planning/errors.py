@@ -108,9 +108,9 @@ class UnsatisfiableScenario(NoPlanError):
     group of one cannot hold on its own under the domain rules (speed limits, lanes, no collision).
     ``parameters``: the logical parameters used at each place (``SymbolicAutomaton.parameters``),
     so that a constraint is named with the parameters behind it. ``lanes``: the road's driving lanes,
-    said with a group of lanes that no placement on them meets; ``partial_lanes``, said with a group
-    about lanes too: the map's lanes that take a car along part of the road only
-    (``PlannerSettings.partial_lanes``)."""
+    said with a group of lanes that no placement on them meets; ``on_the_map``, said with every
+    group: where the map's routes let the vehicles be (``PlannerSettings.on_the_map``), which a
+    group of speeds and durations may need more room than."""
 
     def __init__(
         self,
@@ -119,14 +119,14 @@ class UnsatisfiableScenario(NoPlanError):
         rules: str = "",
         parameters: dict | None = None,
         lanes: int | None = None,
-        partial_lanes: str = "",
+        on_the_map: str = "",
     ) -> None:
         super().__init__(message)
         self.conflicts = conflicts
         self.rules = rules
         self.parameters = parameters or {}
         self.lanes = lanes
-        self.partial_lanes = partial_lanes
+        self.on_the_map = on_the_map
 
     def _named(self, constraint) -> str:
         return _named(self.parameters.get(constraint.source, ()))
@@ -161,8 +161,8 @@ class UnsatisfiableScenario(NoPlanError):
                     hint = "the scenario can never be met; widen or remove one of them"
                     if self.lanes is not None and any(_places_in_a_lane(other) for other in group):
                         hint += f"; the road has {self.lanes} driving lane{'' if self.lanes == 1 else 's'}"
-                    if self.partial_lanes and any(_places_in_a_lane(other) for other in group):
-                        hint += f"; on the map, a car can be in {self.partial_lanes}"
+                    if self.on_the_map:
+                        hint += f"; on the map, {self.on_the_map}"
                     if any(_numbers_a_lane(other) for other in group):
                         hint += f"; {LANE_NUMBERS}"
                 diagnostics.append(Diagnostic(member.source, message, hint))

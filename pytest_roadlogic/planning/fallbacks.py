@@ -195,7 +195,7 @@ def _refuse_what_the_relaxation_proves(guide: Guide, settings, beyond_limits: bo
             [conflict],
             settings.summary(automaton.lanes),
             automaton.parameters,
-            partial_lanes=settings.partial_lanes(automaton.lanes),
+            on_the_map=settings.on_the_map(automaton.lanes),
         )
 
 

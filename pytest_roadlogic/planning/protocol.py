@@ -138,10 +138,11 @@ class PlannerSettings(Protocol):
         plans one straight road)."""
         ...
 
-    def partial_lanes(self, lanes: int) -> str:
-        """The lanes of a road of ``lanes`` lanes that take a car only along part of it (a map's
-        lane that begins or ends: where), for a message about lanes that cannot hold; "" when
-        every lane runs all along (and off a map)."""
+    def on_the_map(self, lanes: int) -> str:
+        """Where a map's routes let the vehicles be (on a road of ``lanes`` lanes): the stretch of
+        each route its vehicles stay on, and its lanes that take a car along part of it only (a
+        lane that begins or ends), for a message about constraints that cannot hold together; ""
+        off a map."""
         ...
 
 

@@ -303,17 +303,33 @@ class ContinuousSettings:
             frozenset(v for side in self.side_routes for v in side.vehicles),
         )
 
-    def partial_lanes(self, lanes: int) -> str:
-        """The route's lanes that take a car only along part of it (``lane_spans``), each counted
-        from the right, as a driver names them whatever the file's dialect: "the route's lane 3 from
-        the right only from 1020 to 1100 m along it (80 m)"."""
-        said = []
+    def on_the_map(self, lanes: int) -> str:
+        """The stretch of each route its vehicles stay on (``route_span``, the side routes'), and
+        the route's lanes that take a car only along part of it (``lane_spans``), each counted from
+        the right, as a driver names them whatever the file's dialect: "every vehicle stays from
+        30 to 150 m along its route (120 m); a car can be in the route's lane 1 from the right only
+        from 189 to 404 m along it (215 m)"."""
+        if self.route_span is None:
+            return ""
+
+        def stretch(span: tuple[float, float]) -> str:
+            return f"from {span[0]:.0f} to {span[1]:.0f} m along {{}} ({span[1] - span[0]:.0f} m)"
+
+        if self.side_routes:
+            said = [
+                f"{', '.join(sorted(side.vehicles))} {'stays' if len(side.vehicles) == 1 else 'stay'} "
+                + stretch(side.route_span).format("its route" if len(side.vehicles) == 1 else "their route")
+                for side in self.side_routes
+            ]
+            said.insert(0, "every other vehicle stays " + stretch(self.route_span).format("its route"))
+        else:
+            said = ["every vehicle stays " + stretch(self.route_span).format("its route")]
         for lane, first, last in self.lane_spans:
-            place = f"the route's lane {lanes - lane} from the right"
+            place = f"a car can be in the route's lane {lanes - lane} from the right"
             if last < first:
                 said.append(f"{place} nowhere")
             else:
-                said.append(f"{place} only from {first:.0f} to {last:.0f} m along it ({last - first:.0f} m)")
+                said.append(f"{place} only {stretch((first, last)).format('it')}")
         return "; ".join(said)
 
     def summary(self, lanes: int) -> str:

@@ -101,7 +101,7 @@ class GridSettings:
         """None: the grid plans one straight road (``on_route`` says it cannot plan on a map)."""
         return None
 
-    def partial_lanes(self, lanes: int) -> str:
+    def on_the_map(self, lanes: int) -> str:
         """ "": the grid plans one straight road, every lane all along it."""
         return ""
 
