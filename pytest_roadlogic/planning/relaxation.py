@@ -49,15 +49,16 @@ MAX_ORDERS = 64  # the most choices of who is ahead tried on one path (2 per str
 @dataclass(frozen=True)
 class RouteExtent:
     """Where along a map's route the scenario's vehicles may be, as the planner keeps them: each
-    (but those driving other routes, ``elsewhere``) between ``span``'s metres along it; one in a
-    lane of ``lanes`` (lane -> first and last metre: a lane that begins or ends) within those; the
-    plan's position 0 within ``origin`` (None: anywhere). Positions along the route are a plan's
-    plus the origin."""
+    (but those driving other routes) between ``span``'s metres along it; one in a lane of
+    ``lanes`` (lane -> first and last metre: a lane that begins or ends) within those; the plan's
+    position 0 within ``origin`` (None: anywhere). Positions along the route are a plan's plus the
+    origin. ``sides``: the other routes, each its vehicles and their span, its origin free (how the
+    planner lays routes onto each other is left out: only the road each has is read)."""
 
     span: tuple[float, float]
     lanes: dict[int, tuple[float, float]] = field(default_factory=dict)
     origin: tuple[float, float] | None = None
-    elsewhere: frozenset[str] = frozenset()
+    sides: tuple[tuple[frozenset[str], tuple[float, float]], ...] = ()
 
 
 def provably_unplannable(
@@ -239,16 +240,21 @@ class _PathRelaxation:
         return False
 
     def _on_route(self, on, var, lows: dict[int, float], highs: dict[int, float]) -> list:
-        """The rows that keep the route's vehicles on it: each between the route's metres at every
-        instant, and within the stretch of the lanes an instant's bounds (those that are on) keep it
-        in, where each of those lanes begins or ends (metres along the route: its position plus
-        the origin)."""
+        """The rows that keep the routes' vehicles on them: each between its route's metres at every
+        instant, and, on the scenario's route, within the stretch of the lanes an instant's bounds
+        (those that are on) keep it in, where each of those lanes begins or ends (metres along the
+        route: its position plus the route's origin)."""
         route, rows = self.route, []
         origin = var("origin")
         lows[origin], highs[origin] = route.origin if route.origin is not None else (-math.inf, math.inf)
+        side_of = {actor: k for k, (vehicles, _) in enumerate(route.sides) for actor in vehicles}
+        for k in range(len(route.sides)):
+            lows[var("origin", k)] = -math.inf
         for i in range(len(self.path)):
             for actor in self.actors:
-                if actor in route.elsewhere:
+                if actor in side_of:
+                    k = side_of[actor]
+                    rows.append(({var("p", actor, i): 1.0, var("origin", k): 1.0}, *route.sides[k][1]))
                     continue
                 along = {var("p", actor, i): 1.0, origin: 1.0}
                 rows.append((along, *route.span))

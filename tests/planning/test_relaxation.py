@@ -212,3 +212,28 @@ def test_a_car_the_acceleration_lane_can_hold_is_left_to_the_planner(tmp_path):
     guide, settings, seed = guided(path, {})
     assert provably_unplannable(guide(settings.thinned()), FASTEST, settings.route_extent()) is None
     assert next(planned(guide, settings, seed, 1)) is not None
+
+
+def test_a_car_on_another_way_through_the_junction_asked_to_drive_further_than_its_road_is_refused(tmp_path):
+    """straight_crossing_paths with the crossing car at 30-50 kph for a minute (at least 500 m) and
+    the ego's speed left open: only the crosser's own route (a side route) is too short for it."""
+    suite = ROOT / "scenarios" / "junctions"
+    (tmp_path / "maps").mkdir()
+    (tmp_path / "maps" / "crossing.xodr").write_bytes((suite / "maps" / "crossing.xodr").read_bytes())
+    text = (suite / "straight_crossing_paths.osc").read_text()
+    text = text.replace("parallel(duration: [14s..20s])", "parallel(duration: [60s..61s])")
+    text = text.replace(
+        "            along(ego_path)\n            speed([30kph..50kph])\n", "            along(ego_path)\n"
+    )
+    path = tmp_path / "long_crossing.osc"
+    path.write_text(text)
+    guide, settings, _ = guided(path, {})
+    automaton, extent = guide(settings.thinned()), settings.route_extent()
+    ((vehicles, (first, last)),) = extent.sides
+    assert vehicles == {"crosser"} and last - first < 8.3 * 60.0
+    assert provably_unplannable(automaton, FASTEST) is None  # on a straight road of any length
+    conflict = provably_unplannable(automaton, FASTEST, extent)
+    lines = text.splitlines()
+    duration = next(n for n, line in enumerate(lines, 1) if "duration: [60s..61s]" in line)
+    speed = next(n for n, line in enumerate(lines, 1) if "speed([30kph..50kph])" in line)
+    assert conflict is not None and {c.source.line for c in conflict} == {duration, speed}

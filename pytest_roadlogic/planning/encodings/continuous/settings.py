@@ -292,15 +292,15 @@ class ContinuousSettings:
         )
 
     def route_extent(self) -> RouteExtent | None:
-        """Where along the route its vehicles may be (``route_span``, ``lane_spans``,
-        ``origin_span``), those of the side routes left out; None off a map."""
+        """Where along the routes their vehicles may be (``route_span``, ``lane_spans``,
+        ``origin_span``, each side route's span); None off a map."""
         if self.route_span is None:
             return None
         return RouteExtent(
             self.route_span,
             {lane: (first, last) for lane, first, last in self.lane_spans},
             self.origin_span,
-            frozenset(v for side in self.side_routes for v in side.vehicles),
+            tuple((side.vehicles, side.route_span) for side in self.side_routes),
         )
 
     def on_the_map(self, lanes: int) -> str:
