@@ -248,8 +248,6 @@ class _PathRelaxation:
         origin = var("origin")
         lows[origin], highs[origin] = route.origin if route.origin is not None else (-math.inf, math.inf)
         side_of = {actor: k for k, (vehicles, _) in enumerate(route.sides) for actor in vehicles}
-        for k in range(len(route.sides)):
-            lows[var("origin", k)] = -math.inf
         for i in range(len(self.path)):
             for actor in self.actors:
                 if actor in side_of:

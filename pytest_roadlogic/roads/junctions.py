@@ -240,7 +240,7 @@ def with_room(road_map: RoadMap, turn: Turn, side: float, length: float) -> Turn
         return None
 
     before, after = list(turn.before), list(turn.after)
-    # the roads added bend like no corner (step_from): one on the road in or out is the only one
+    # the roads added bend like no corner (first_fit): one on the road in or out is the only one
     # there, and the room on its side is found once
     into_clear, out_clear = _clear_back((*before, turn.into)), _clear((turn.out_of, *after))
 

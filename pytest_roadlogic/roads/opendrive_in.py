@@ -40,6 +40,7 @@ MAX_LANES = 16  # lanes on one side of one section: 2,000 driving lanes broke th
 MAX_LANE_WIDTH = 20.0  # m: wider is no lane, and 1e300 overflows the simulator's projection
 # m: a lane not for driving may be wider (esmini's crest-curve has 30 m of verge), not without end
 MAX_VERGE_WIDTH = 200.0
+DRIVING = "driving"  # the lane type a car drives in
 
 
 class MapError(Exception):
@@ -480,11 +481,11 @@ def _check_widths(path: Path, lane: _Element, widths: tuple[LaneWidth, ...], len
 
     kind = lane.attributes.get("type", "none")
     if not widths:
-        if kind == "driving":
+        if kind == DRIVING:
             raise MapError(path, "a driving lane without <width>", "give its widths", lane.line, lane.column)
         return kind
     records = lane.findall("width")
-    widest = MAX_LANE_WIDTH if kind == "driving" else MAX_VERGE_WIDTH
+    widest = MAX_LANE_WIDTH if kind == DRIVING else MAX_VERGE_WIDTH
     most = 0.0
     for element, width in zip(records, sampled_records(widths, length)):
         if not np.all(np.isfinite(width)) or np.min(width) < -1e-6 or np.max(width) > widest:
@@ -497,7 +498,7 @@ def _check_widths(path: Path, lane: _Element, widths: tuple[LaneWidth, ...], len
                 element.column,
             )
         most = max(most, float(np.max(width)))
-    if kind == "driving" and most < 0.5:
+    if kind == DRIVING and most < 0.5:
         # no car fits: a lane that exists in other sections of its road is written so in this one
         # (esmini's tunnels): it is no lane for driving here
         return "none"

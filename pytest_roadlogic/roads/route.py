@@ -26,11 +26,10 @@ from pathlib import Path
 
 import numpy as np
 
-from .opendrive_in import LaneSection, MapLane, MapRoad
+from .opendrive_in import DRIVING, LaneSection, MapLane, MapRoad
 from .reference_line import ReferenceLine
 from .surface import DrivingSurface
 
-DRIVING = "driving"
 USABLE_WIDTH = 2.8  # m: a lane at least this wide takes a car (1.8 m) with half a metre each side
 STEP = 1.0  # m along the route at which lane widths are read
 HALF_CAR = 3.0  # m: half a car's 4.5 m and some

@@ -13,9 +13,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .opendrive_in import MapRoad
+from .opendrive_in import DRIVING, MapRoad
 
-DRIVING = "driving"
 SAMPLE = 0.5  # m between the points at which a road's extent across is read
 
 

@@ -312,24 +312,25 @@ class ContinuousSettings:
         if self.route_span is None:
             return ""
 
-        def stretch(span: tuple[float, float]) -> str:
-            return f"from {span[0]:.0f} to {span[1]:.0f} m along {{}} ({span[1] - span[0]:.0f} m)"
+        def stretch(span: tuple[float, float], along: str) -> str:
+            return f"from {span[0]:.0f} to {span[1]:.0f} m along {along} ({span[1] - span[0]:.0f} m)"
 
-        if self.side_routes:
-            said = [
-                f"{', '.join(sorted(side.vehicles))} {'stays' if len(side.vehicles) == 1 else 'stay'} "
-                + stretch(side.route_span).format("its route" if len(side.vehicles) == 1 else "their route")
-                for side in self.side_routes
-            ]
-            said.insert(0, "every other vehicle stays " + stretch(self.route_span).format("its route"))
-        else:
-            said = ["every vehicle stays " + stretch(self.route_span).format("its route")]
+        said = [
+            f"{', '.join(sorted(side.vehicles))} "
+            + (
+                f"stays {stretch(side.route_span, 'its route')}"
+                if len(side.vehicles) == 1
+                else f"stay {stretch(side.route_span, 'their route')}"
+            )
+            for side in self.side_routes
+        ]
+        said.insert(0, f"every {'other ' if said else ''}vehicle stays {stretch(self.route_span, 'its route')}")
         for lane, first, last in self.lane_spans:
             place = f"a car can be in the route's lane {lanes - lane} from the right"
             if last < first:
                 said.append(f"{place} nowhere")
             else:
-                said.append(f"{place} only {stretch((first, last)).format('it')}")
+                said.append(f"{place} only {stretch((first, last), 'it')}")
         return "; ".join(said)
 
     def summary(self, lanes: int) -> str:
